@@ -1,0 +1,68 @@
+#include "common/timer.hpp"
+
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace feticon
+{
+void TimerTable::add(const std::string& phase, double seconds)
+{
+  if (_seconds.find(phase) == _seconds.end())
+    _order.push_back(phase);
+  _seconds[phase] += seconds;
+}
+
+std::vector<std::pair<std::string, double>> TimerTable::entries() const
+{
+  std::vector<std::pair<std::string, double>> out;
+  for (const auto& name : _order)
+    out.emplace_back(name, _seconds.at(name));
+  return out;
+}
+
+double TimerTable::total(const std::string& phase) const
+{
+  auto it = _seconds.find(phase);
+  return it == _seconds.end() ? 0.0 : it->second;
+}
+
+std::string TimerTable::format() const
+{
+  std::ostringstream os;
+  os << std::left << std::setw(28) << "phase" << std::right << std::setw(12) << "seconds\n";
+  for (const auto& [name, seconds] : entries())
+    os << std::left << std::setw(28) << name << std::right << std::setw(11) << std::fixed
+       << std::setprecision(3) << seconds << '\n';
+  return os.str();
+}
+
+ScopedTimer::ScopedTimer(TimerTable& table, std::string phase)
+    : _table(table), _phase(std::move(phase)), _start(std::chrono::steady_clock::now())
+{
+}
+
+ScopedTimer::~ScopedTimer() { _table.add(_phase, seconds_since(_start)); }
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+long peak_memory_bytes()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+  {
+    if (line.rfind("VmHWM:", 0) == 0)
+    {
+      std::istringstream is(line.substr(6));
+      long kib = 0;
+      is >> kib;
+      return kib * 1024;
+    }
+  }
+  return 0;
+}
+} // namespace feticon

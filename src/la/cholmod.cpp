@@ -1,0 +1,59 @@
+#include "la/cholmod.hpp"
+
+#include "common/error.hpp"
+
+#include <Eigen/CholmodSupport>
+
+namespace feticon::la
+{
+struct CholmodFactor::Impl
+{
+  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> solver;
+};
+
+CholmodFactor::CholmodFactor() = default;
+CholmodFactor::~CholmodFactor() = default;
+CholmodFactor::CholmodFactor(CholmodFactor&&) noexcept = default;
+CholmodFactor& CholmodFactor::operator=(CholmodFactor&&) noexcept = default;
+
+void CholmodFactor::factorize(const SparseMatrix& A, const char* what)
+{
+  FETICON_CHECK(A.rows() == A.cols(), what << " is not square (" << A.rows() << " x "
+                                          << A.cols() << ")");
+  _impl = std::make_unique<Impl>();
+  // Supernodal LL^T: the fastest CHOLMOD mode for 3D elasticity factors.
+  _impl->solver.setMode(Eigen::CholmodSupernodalLLt);
+  _impl->solver.compute(A);
+  if (_impl->solver.info() != Eigen::Success)
+  {
+    _impl.reset();
+    FETICON_CHECK(false, "Cholesky factorization of " << what
+                                                      << " failed: the matrix is not positive "
+                                                         "definite (a body or subdomain may be "
+                                                         "unsupported)");
+  }
+}
+
+Vector CholmodFactor::solve(const Vector& b) const
+{
+  FETICON_ASSERT(_impl, "solve before factorize");
+  return _impl->solver.solve(b);
+}
+
+Matrix CholmodFactor::solve(const Matrix& B) const
+{
+  FETICON_ASSERT(_impl, "solve before factorize");
+  return _impl->solver.solve(B);
+}
+
+long CholmodFactor::factor_nonzeros() const
+{
+  if (!_impl)
+    return 0;
+  // Eigen exposes the cholmod_factor; for a supernodal factor xsize counts the entries.
+  auto& factor = const_cast<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>&>(
+      _impl->solver);
+  cholmod_common& common = factor.cholmod();
+  return static_cast<long>(common.lnz);
+}
+} // namespace feticon::la

@@ -1,0 +1,36 @@
+#pragma once
+/// @file The one wrapper around SuiteSparse CHOLMOD (via Eigen's CholmodSupport).
+///
+/// Sparse Cholesky of a symmetric positive definite matrix with a fill-reducing ordering
+/// chosen by CHOLMOD (AMD/METIS). Used for the regularized subdomain stiffnesses of the
+/// generalized inverse and for direct reference solves of undecomposed problems.
+
+#include "la/types.hpp"
+
+#include <memory>
+
+namespace feticon::la
+{
+class CholmodFactor
+{
+public:
+  CholmodFactor();
+  ~CholmodFactor();
+  CholmodFactor(CholmodFactor&&) noexcept;
+  CholmodFactor& operator=(CholmodFactor&&) noexcept;
+
+  /// Factorizes the SPD matrix `A` (full symmetric storage; the lower triangle is read).
+  /// Throws feticon::Error if `A` is not positive definite, naming `what`.
+  void factorize(const SparseMatrix& A, const char* what = "matrix");
+  /// x = A^{-1} b.
+  Vector solve(const Vector& b) const;
+  Matrix solve(const Matrix& B) const;
+  bool factorized() const { return _impl != nullptr; }
+  /// Nonzeros in the Cholesky factor (memory and cost indicator).
+  long factor_nonzeros() const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> _impl;
+};
+} // namespace feticon::la

@@ -1,0 +1,51 @@
+#include "mesh/hex_mesh.hpp"
+
+#include "common/error.hpp"
+
+#include <algorithm>
+
+namespace feticon::mesh
+{
+namespace
+{
+template <class Map>
+std::string available_names(const Map& map)
+{
+  std::string names;
+  for (const auto& [name, value] : map)
+    names += (names.empty() ? "" : ", ") + name;
+  return names.empty() ? "(none)" : names;
+}
+} // namespace
+
+const std::vector<int32_t>& HexMesh::node_set(const std::string& name) const
+{
+  auto it = node_sets.find(name);
+  FETICON_CHECK(it != node_sets.end(),
+                "unknown node set '" << name << "'; the mesh has: " << available_names(node_sets));
+  return it->second;
+}
+
+const std::vector<Face>& HexMesh::face_set(const std::string& name) const
+{
+  auto it = face_sets.find(name);
+  FETICON_CHECK(it != face_sets.end(),
+                "unknown face set '" << name << "'; the mesh has: " << available_names(face_sets));
+  return it->second;
+}
+
+std::vector<int32_t> HexMesh::face_set_nodes(const std::string& name) const
+{
+  std::vector<int32_t> ids;
+  for (const Face& face : face_set(name))
+    ids.insert(ids.end(), face.begin(), face.end());
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+void HexMesh::add_node_set_from_faces(const std::string& name, const std::string& faces_name)
+{
+  node_sets[name] = face_set_nodes(faces_name);
+}
+} // namespace feticon::mesh
