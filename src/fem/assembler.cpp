@@ -1,0 +1,183 @@
+#include "fem/assembler.hpp"
+
+#include "common/error.hpp"
+
+#include <algorithm>
+
+namespace feticon::fem
+{
+namespace
+{
+/// Node-node adjacency of the cells in local numbering, sorted and unique per node.
+std::vector<std::vector<int32_t>> node_adjacency(const mesh::HexMesh& mesh,
+                                                 const AssemblyDomain& domain)
+{
+  std::vector<std::vector<int32_t>> adjacency(domain.n_nodes());
+  for (int32_t c : domain.cells)
+    for (int32_t a : mesh.cells[c])
+      for (int32_t b : mesh.cells[c])
+        adjacency[domain.global_to_local[a]].push_back(domain.global_to_local[b]);
+  for (auto& list : adjacency)
+  {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  return adjacency;
+}
+
+/// CSC pattern where column 3n+j holds rows 3m+i for every neighbour m of n.
+la::SparseMatrix block_pattern(const std::vector<std::vector<int32_t>>& adjacency)
+{
+  const int64_t n_dofs = 3 * static_cast<int64_t>(adjacency.size());
+  int64_t nnz = 0;
+  for (const auto& list : adjacency)
+    nnz += 9 * static_cast<int64_t>(list.size());
+  FETICON_CHECK(nnz < std::numeric_limits<int>::max(),
+                "stiffness has " << nnz << " nonzeros, more than 32-bit indices allow; "
+                                 << "use more subdomains");
+  la::SparseMatrix K(n_dofs, n_dofs);
+  K.resizeNonZeros(nnz);
+  int* outer = K.outerIndexPtr();
+  int* inner = K.innerIndexPtr();
+  int64_t pos = 0;
+  for (size_t n = 0; n < adjacency.size(); ++n)
+    for (int j = 0; j < 3; ++j)
+    {
+      outer[3 * n + j] = static_cast<int>(pos);
+      for (int32_t m : adjacency[n])
+        for (int i = 0; i < 3; ++i)
+          inner[pos++] = 3 * m + i;
+    }
+  outer[n_dofs] = static_cast<int>(pos);
+  std::fill(K.valuePtr(), K.valuePtr() + nnz, 0.0);
+  return K;
+}
+
+/// Adds the element matrix into K (whose pattern contains it).
+void scatter(la::SparseMatrix& K, const std::array<int32_t, 8>& local_nodes,
+             const ElementMatrix& Ke)
+{
+  const int* outer = K.outerIndexPtr();
+  const int* inner = K.innerIndexPtr();
+  double* values = K.valuePtr();
+  for (int b = 0; b < 8; ++b)
+  {
+    const int col0 = 3 * local_nodes[b];
+    const int* begin = inner + outer[col0];
+    const int* end = inner + outer[col0 + 1];
+    for (int a = 0; a < 8; ++a)
+    {
+      // Columns 3n, 3n+1, 3n+2 share one structure, so one search serves all three.
+      const int offset = static_cast<int>(std::lower_bound(begin, end, 3 * local_nodes[a]) - begin);
+      FETICON_ASSERT(begin + offset < end && begin[offset] == 3 * local_nodes[a],
+                     "element entry outside the sparsity pattern");
+      for (int j = 0; j < 3; ++j)
+      {
+        double* column = values + outer[col0 + j] + offset;
+        for (int i = 0; i < 3; ++i)
+          column[i] += Ke(3 * a + i, 3 * b + j);
+      }
+    }
+  }
+}
+} // namespace
+
+AssemblyDomain make_domain(const mesh::HexMesh& mesh, std::vector<int32_t> cells)
+{
+  AssemblyDomain domain;
+  domain.cells = std::move(cells);
+  domain.global_to_local.assign(mesh.n_nodes(), -1);
+  std::vector<char> used(mesh.n_nodes(), 0);
+  for (int32_t c : domain.cells)
+  {
+    FETICON_CHECK(c >= 0 && c < mesh.n_cells(), "cell id " << c << " out of range");
+    for (int32_t node : mesh.cells[c])
+      used[node] = 1;
+  }
+  for (int32_t node = 0; node < mesh.n_nodes(); ++node)
+    if (used[node])
+    {
+      domain.global_to_local[node] = static_cast<int32_t>(domain.local_to_global.size());
+      domain.local_to_global.push_back(node);
+    }
+  return domain;
+}
+
+AssemblyDomain whole_mesh_domain(const mesh::HexMesh& mesh)
+{
+  std::vector<int32_t> cells(mesh.n_cells());
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    cells[c] = c;
+  return make_domain(mesh, std::move(cells));
+}
+
+Assembler::Assembler(const mesh::HexMesh& mesh, AssemblyDomain domain,
+                     std::vector<Material> body_materials, Kinematics kinematics)
+    : _mesh(mesh), _domain(std::move(domain)), _materials(std::move(body_materials)),
+      _kinematics(kinematics)
+{
+  FETICON_CHECK(static_cast<int32_t>(_materials.size()) >= mesh.n_bodies(),
+                "the mesh has " << mesh.n_bodies() << " bodies but " << _materials.size()
+                                << " materials were given");
+  for (size_t b = 0; b < _materials.size(); ++b)
+    _materials[b].check("material of body '" +
+                        (b < mesh.body_names.size() ? mesh.body_names[b] : std::to_string(b)) +
+                        "'");
+  _pattern = block_pattern(node_adjacency(mesh, _domain));
+}
+
+void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatrix* K,
+                         la::Vector* f_int) const
+{
+  FETICON_CHECK(u.size() == _domain.n_dofs(), "displacement has " << u.size()
+                                                                  << " entries, expected "
+                                                                  << _domain.n_dofs());
+  if (K)
+    *K = _pattern;
+  if (f_int)
+    f_int->setZero(_domain.n_dofs());
+  const StiffnessKind element_kind = K ? kind : StiffnessKind::none;
+  NodeCoords X, ue;
+  ElementVector fe;
+  ElementMatrix Ke;
+  std::array<int32_t, 8> local;
+  for (int32_t c : _domain.cells)
+  {
+    const auto& cell = _mesh.cells[c];
+    for (int a = 0; a < 8; ++a)
+    {
+      local[a] = _domain.global_to_local[cell[a]];
+      X.row(a) = _mesh.nodes.row(cell[a]);
+      ue.row(a) = u.segment<3>(3 * local[a]).transpose();
+    }
+    hex8_element(X, ue, _materials[_mesh.cell_body[c]], _kinematics, element_kind, fe, &Ke, c);
+    if (f_int)
+      for (int a = 0; a < 8; ++a)
+        f_int->segment<3>(3 * local[a]) += fe.segment<3>(3 * a);
+    if (K)
+      scatter(*K, local, Ke);
+  }
+}
+
+la::SparseMatrix Assembler::stiffness(const la::Vector& u, StiffnessKind kind) const
+{
+  la::SparseMatrix K;
+  assemble(u, kind, &K, nullptr);
+  return K;
+}
+
+la::Vector Assembler::internal_force(const la::Vector& u) const
+{
+  la::Vector f;
+  assemble(u, StiffnessKind::none, nullptr, &f);
+  return f;
+}
+
+Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> Assembler::local_coordinates() const
+{
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> X(_domain.n_nodes(), 3);
+  for (int32_t n = 0; n < _domain.n_nodes(); ++n)
+    X.row(n) = _mesh.nodes.row(_domain.local_to_global[n]);
+  return X;
+}
+} // namespace feticon::fem

@@ -1,0 +1,62 @@
+#pragma once
+/// @file Sparse assembly of stiffness and internal force over a set of cells.
+///
+/// The same assembler serves the undecomposed mesh (direct reference solves, primal
+/// penalty) and each FETI subdomain (its cells with local node numbering). The sparsity
+/// pattern is built once; element matrices are added in place, so no triplet list of
+/// 576 entries per cell is ever held in memory.
+
+#include "fem/hex8_element.hpp"
+#include "la/types.hpp"
+#include "mesh/hex_mesh.hpp"
+
+#include <vector>
+
+namespace feticon::fem
+{
+/// A set of cells and the local numbering of the nodes they touch.
+struct AssemblyDomain
+{
+  std::vector<int32_t> cells;           ///< cell ids of the mesh
+  std::vector<int32_t> local_to_global; ///< local node -> mesh node
+  std::vector<int32_t> global_to_local; ///< mesh node -> local node, -1 if absent
+
+  int32_t n_nodes() const { return static_cast<int32_t>(local_to_global.size()); }
+  int64_t n_dofs() const { return 3 * static_cast<int64_t>(local_to_global.size()); }
+};
+
+/// Domain of the given cells, local nodes in increasing mesh id order.
+AssemblyDomain make_domain(const mesh::HexMesh& mesh, std::vector<int32_t> cells);
+/// Domain of every cell; local numbering equals mesh numbering.
+AssemblyDomain whole_mesh_domain(const mesh::HexMesh& mesh);
+
+/// Assembles K and f_int of one domain. DOF 3*n + i is component i of local node n.
+class Assembler
+{
+public:
+  /// @param body_materials one material per body of the mesh (indexed by cell_body)
+  Assembler(const mesh::HexMesh& mesh, AssemblyDomain domain, std::vector<Material> body_materials,
+            Kinematics kinematics);
+
+  const AssemblyDomain& domain() const { return _domain; }
+  Kinematics kinematics() const { return _kinematics; }
+
+  /// Stiffness at displacement `u` (local DOFs). Linear kinematics ignore `u` for K.
+  la::SparseMatrix stiffness(const la::Vector& u, StiffnessKind kind) const;
+  /// Internal force at displacement `u`.
+  la::Vector internal_force(const la::Vector& u) const;
+  /// Both in one pass over the cells (either output may be null).
+  void assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatrix* K,
+                la::Vector* f_int) const;
+
+  /// Reference coordinates of the domain's nodes, one row per local node.
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> local_coordinates() const;
+
+private:
+  const mesh::HexMesh& _mesh;
+  AssemblyDomain _domain;
+  std::vector<Material> _materials;
+  Kinematics _kinematics;
+  la::SparseMatrix _pattern; ///< structure of K with zero values
+};
+} // namespace feticon::fem

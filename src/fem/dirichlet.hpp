@@ -1,0 +1,59 @@
+#pragma once
+/// @file Dirichlet conditions on named node sets, per component.
+
+#include "la/types.hpp"
+#include "mesh/hex_mesh.hpp"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace feticon::fem
+{
+/// Prescribed displacement components (m) on the nodes of a named set; components left
+/// empty are free (e.g. {nullopt, nullopt, 0.0} is u_z = 0).
+struct DirichletCondition
+{
+  std::string set;
+  std::array<std::optional<double>, 3> value;
+};
+
+/// Constrained global DOFs (3*node + component), sorted, with their prescribed values.
+struct ConstrainedDofs
+{
+  std::vector<int64_t> dofs;
+  la::Vector values;
+};
+
+/// Collects the DOFs of all conditions; throws if two conditions prescribe different
+/// values on one DOF.
+ConstrainedDofs collect_dirichlet(const mesh::HexMesh& mesh,
+                                  const std::vector<DirichletCondition>& conditions,
+                                  double scale = 1.0);
+
+/// Elimination of constrained DOFs for direct solves of undecomposed problems:
+/// K_ff u_f = f_f - K_fc u_c.
+class DirichletElimination
+{
+public:
+  DirichletElimination(int64_t n_dofs, const ConstrainedDofs& constrained);
+  int64_t n_free() const { return static_cast<int64_t>(_free.size()); }
+  /// K_ff.
+  la::SparseMatrix reduce_matrix(const la::SparseMatrix& K) const;
+  /// f_f - K_fc u_c.
+  la::Vector reduce_rhs(const la::SparseMatrix& K, const la::Vector& f) const;
+  /// Full vector from free values and the prescribed values.
+  la::Vector expand(const la::Vector& u_free) const;
+  /// Free part of a full vector.
+  la::Vector restrict(const la::Vector& full) const;
+  /// Full vector with the free entries zeroed (the prescribed values in place).
+  la::Vector prescribed() const;
+
+private:
+  int64_t _n_dofs;
+  std::vector<int64_t> _free;
+  std::vector<int64_t> _free_index; ///< DOF -> position in _free or -1
+  ConstrainedDofs _constrained;
+};
+} // namespace feticon::fem

@@ -1,0 +1,142 @@
+#include "fem/hex8_element.hpp"
+
+#include "common/error.hpp"
+
+#include <cmath>
+
+namespace feticon::fem
+{
+namespace
+{
+using Voigt = Eigen::Matrix<double, 6, 1>;
+using StrainDisplacement = Eigen::Matrix<double, 6, 24>;
+
+/// B_NL at one Gauss point for deformation gradient Fd (Fd = I gives the linear B).
+StrainDisplacement strain_displacement(const ShapeGradients& dN, const Eigen::Matrix3d& Fd)
+{
+  StrainDisplacement B;
+  for (int a = 0; a < 8; ++a)
+  {
+    const double n1 = dN(a, 0), n2 = dN(a, 1), n3 = dN(a, 2);
+    for (int i = 0; i < 3; ++i)
+    {
+      const int col = 3 * a + i;
+      B(0, col) = Fd(i, 0) * n1;
+      B(1, col) = Fd(i, 1) * n2;
+      B(2, col) = Fd(i, 2) * n3;
+      B(3, col) = Fd(i, 0) * n2 + Fd(i, 1) * n1;
+      B(4, col) = Fd(i, 1) * n3 + Fd(i, 2) * n2;
+      B(5, col) = Fd(i, 2) * n1 + Fd(i, 0) * n3;
+    }
+  }
+  return B;
+}
+
+Eigen::Matrix3d voigt_to_tensor(const Voigt& s)
+{
+  Eigen::Matrix3d t;
+  t << s(0), s(3), s(5), s(3), s(1), s(4), s(5), s(4), s(2);
+  return t;
+}
+
+Voigt tensor_to_voigt(const Eigen::Matrix3d& t)
+{
+  Voigt s;
+  s << t(0, 0), t(1, 1), t(2, 2), t(0, 1), t(1, 2), t(2, 0);
+  return s;
+}
+
+/// Second Piola–Kirchhoff stress (TL) or Cauchy stress (linear) at one Gauss point,
+/// together with the deformation gradient used in B.
+struct PointState
+{
+  Eigen::Matrix3d Fd;
+  Voigt S;
+};
+
+PointState point_state(const ShapeGradients& dN, const NodeCoords& u,
+                       const Eigen::Matrix<double, 6, 6>& D, const Material& material,
+                       Kinematics kinematics)
+{
+  const Eigen::Matrix3d grad_u = u.transpose() * dN; // du_i/dX_j
+  PointState state;
+  if (kinematics == Kinematics::linear)
+  {
+    state.Fd.setIdentity();
+    Voigt eps;
+    eps << grad_u(0, 0), grad_u(1, 1), grad_u(2, 2), grad_u(0, 1) + grad_u(1, 0),
+        grad_u(1, 2) + grad_u(2, 1), grad_u(2, 0) + grad_u(0, 2);
+    state.S = D * eps;
+    return state;
+  }
+  state.Fd = Eigen::Matrix3d::Identity() + grad_u;
+  const Eigen::Matrix3d E = 0.5 * (state.Fd.transpose() * state.Fd - Eigen::Matrix3d::Identity());
+  const Eigen::Matrix3d S =
+      material.lame_lambda() * E.trace() * Eigen::Matrix3d::Identity() + 2 * material.lame_mu() * E;
+  state.S = tensor_to_voigt(S);
+  return state;
+}
+} // namespace
+
+void hex8_element(const NodeCoords& X, const NodeCoords& u, const Material& material,
+                  Kinematics kinematics, StiffnessKind kind, ElementVector& f, ElementMatrix* K,
+                  int64_t cell)
+{
+  const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
+  f.setZero();
+  if (kind != StiffnessKind::none)
+    K->setZero();
+  for (const Eigen::Vector3d& xi : hex8_gauss_points())
+  {
+    const GaussGeometry geo = hex8_gauss_geometry(X, xi, cell);
+    const PointState state = point_state(geo.dN_dX, u, D, material, kinematics);
+    const StrainDisplacement B = strain_displacement(geo.dN_dX, state.Fd);
+    f.noalias() += B.transpose() * state.S * geo.weight_det_j;
+    if (kind == StiffnessKind::none)
+      continue;
+    K->noalias() += B.transpose() * D * B * geo.weight_det_j;
+    if (kind == StiffnessKind::tangent && kinematics == Kinematics::total_lagrangian)
+    {
+      // Geometric stiffness: (grad N_a' S grad N_b) I_3 for every node pair.
+      const Eigen::Matrix<double, 8, 8> G =
+          geo.dN_dX * voigt_to_tensor(state.S) * geo.dN_dX.transpose() * geo.weight_det_j;
+      for (int a = 0; a < 8; ++a)
+        for (int b = 0; b < 8; ++b)
+          for (int i = 0; i < 3; ++i)
+            (*K)(3 * a + i, 3 * b + i) += G(a, b);
+    }
+  }
+}
+
+Eigen::Matrix<double, 6, 1> hex8_cauchy_stress(const NodeCoords& X, const NodeCoords& u,
+                                               const Material& material, Kinematics kinematics,
+                                               int64_t cell)
+{
+  const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
+  Voigt sum = Voigt::Zero();
+  double volume = 0;
+  for (const Eigen::Vector3d& xi : hex8_gauss_points())
+  {
+    const GaussGeometry geo = hex8_gauss_geometry(X, xi, cell);
+    const PointState state = point_state(geo.dN_dX, u, D, material, kinematics);
+    Voigt sigma = state.S;
+    if (kinematics == Kinematics::total_lagrangian)
+    {
+      const double J = state.Fd.determinant();
+      FETICON_CHECK(J > 0, "element " << cell << " is inverted in the deformed configuration "
+                                      << "(det F = " << J << ")");
+      sigma = tensor_to_voigt(state.Fd * voigt_to_tensor(state.S) * state.Fd.transpose() / J);
+    }
+    sum += sigma * geo.weight_det_j;
+    volume += geo.weight_det_j;
+  }
+  return sum / volume;
+}
+
+double von_mises(const Eigen::Matrix<double, 6, 1>& s)
+{
+  const double d01 = s(0) - s(1), d12 = s(1) - s(2), d20 = s(2) - s(0);
+  return std::sqrt(0.5 * (d01 * d01 + d12 * d12 + d20 * d20) +
+                   3 * (s(3) * s(3) + s(4) * s(4) + s(5) * s(5)));
+}
+} // namespace feticon::fem

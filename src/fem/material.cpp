@@ -1,0 +1,26 @@
+#include "fem/material.hpp"
+
+#include "common/error.hpp"
+
+#include <cmath>
+
+namespace feticon::fem
+{
+Eigen::Matrix<double, 6, 6> Material::elasticity_matrix() const
+{
+  const double lambda = lame_lambda(), mu = lame_mu();
+  Eigen::Matrix<double, 6, 6> D = Eigen::Matrix<double, 6, 6>::Zero();
+  D.topLeftCorner<3, 3>().setConstant(lambda);
+  D.topLeftCorner<3, 3>().diagonal().array() += 2 * mu;
+  D.bottomRightCorner<3, 3>().diagonal().setConstant(mu);
+  return D;
+}
+
+void Material::check(const std::string& where) const
+{
+  FETICON_CHECK(std::isfinite(young) && young > 0,
+                where << ": Young's modulus E = " << young << " must be positive");
+  FETICON_CHECK(std::isfinite(poisson) && poisson > -1 && poisson < 0.5,
+                where << ": Poisson's ratio nu = " << poisson << " must lie in (-1, 0.5)");
+}
+} // namespace feticon::fem

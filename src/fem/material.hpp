@@ -1,0 +1,30 @@
+#pragma once
+/// @file Isotropic St Venant–Kirchhoff material (linear elasticity at small strain).
+
+#include <Eigen/Dense>
+#include <string>
+
+namespace feticon::fem
+{
+/// Isotropic elastic constants. In the total Lagrangian setting S = lambda tr(E) I + 2 mu E
+/// (St Venant–Kirchhoff); at small strain the same constants give Hooke's law.
+struct Material
+{
+  double young = 2.0e11; ///< Young's modulus E_Y (Pa)
+  double poisson = 0.3;  ///< Poisson's ratio nu, in (-1, 0.5)
+
+  double lame_lambda() const { return young * poisson / ((1 + poisson) * (1 - 2 * poisson)); }
+  double lame_mu() const { return young / (2 * (1 + poisson)); }
+  /// 6x6 elasticity matrix in Voigt order [11,22,33,12,23,31] with engineering shears.
+  Eigen::Matrix<double, 6, 6> elasticity_matrix() const;
+  /// Throws feticon::Error naming `where` if E <= 0 or nu is outside (-1, 0.5).
+  void check(const std::string& where) const;
+};
+
+/// Small strain (linear) or total Lagrangian (Green–Lagrange strain, finite rotations).
+enum class Kinematics
+{
+  linear,
+  total_lagrangian
+};
+} // namespace feticon::fem

@@ -1,0 +1,42 @@
+#include "fem/stress.hpp"
+
+#include "fem/hex8_element.hpp"
+
+namespace feticon::fem
+{
+std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(
+    const mesh::HexMesh& mesh, const la::Vector& u, const std::vector<Material>& body_materials,
+    Kinematics kinematics)
+{
+  std::vector<Eigen::Matrix<double, 6, 1>> stresses(mesh.n_cells());
+  NodeCoords X, ue;
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+  {
+    for (int a = 0; a < 8; ++a)
+    {
+      X.row(a) = mesh.nodes.row(mesh.cells[c][a]);
+      ue.row(a) = u.segment<3>(3 * mesh.cells[c][a]).transpose();
+    }
+    stresses[c] = hex8_cauchy_stress(X, ue, body_materials[mesh.cell_body[c]], kinematics, c);
+  }
+  return stresses;
+}
+
+std::vector<Eigen::Matrix<double, 6, 1>> nodal_average(
+    const mesh::HexMesh& mesh, const std::vector<Eigen::Matrix<double, 6, 1>>& cell_values)
+{
+  std::vector<Eigen::Matrix<double, 6, 1>> sum(mesh.n_nodes(),
+                                               Eigen::Matrix<double, 6, 1>::Zero());
+  std::vector<int> count(mesh.n_nodes(), 0);
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    for (int32_t node : mesh.cells[c])
+    {
+      sum[node] += cell_values[c];
+      ++count[node];
+    }
+  for (int32_t n = 0; n < mesh.n_nodes(); ++n)
+    if (count[n] > 0)
+      sum[n] /= count[n];
+  return sum;
+}
+} // namespace feticon::fem
