@@ -1,0 +1,156 @@
+#include "mesh/hertz.hpp"
+
+#include "mesh/box.hpp"
+
+#include "common/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace feticon::mesh
+{
+namespace
+{
+void check_parameters(const HertzMeshParameters& p)
+{
+  auto check_positive = [](double value, const char* name)
+  {
+    FETICON_CHECK(std::isfinite(value) && value > 0,
+                  "Hertz mesh: " << name << " = " << value << " must be > 0");
+  };
+  check_positive(p.cylinder_radius, "cylinder_radius");
+  check_positive(p.cylinder_width, "cylinder_width");
+  check_positive(p.block_width, "block_width");
+  check_positive(p.block_depth, "block_depth");
+  check_positive(p.thickness, "thickness");
+  check_positive(p.element_size, "element_size");
+  check_positive(p.master_ratio, "master_ratio");
+  check_positive(p.fine_width, "fine_width");
+  check_positive(p.fine_depth, "fine_depth");
+  check_positive(p.refinement, "refinement");
+  FETICON_CHECK(std::isfinite(p.growth_ratio) && p.growth_ratio >= 1,
+                "Hertz mesh: growth_ratio = " << p.growth_ratio << " must be >= 1");
+  FETICON_CHECK(p.cylinder_width < p.cylinder_radius,
+                "Hertz mesh: cylinder_width = "
+                    << p.cylinder_width << " m must be < cylinder_radius = " << p.cylinder_radius
+                    << " m");
+  FETICON_CHECK(p.fine_width < std::min(p.cylinder_width, p.block_width),
+                "Hertz mesh: fine_width = " << p.fine_width
+                                            << " m must be < cylinder_width and block_width");
+  FETICON_CHECK(p.fine_depth < std::min(p.cylinder_radius, p.block_depth),
+                "Hertz mesh: fine_depth = " << p.fine_depth
+                                            << " m must be < cylinder_radius and block_depth");
+  const double h_max = std::max(1.0, p.master_ratio) * p.element_size / p.refinement;
+  FETICON_CHECK(std::min(p.fine_width, p.fine_depth) >= h_max,
+                "Hertz mesh: the fine region (fine_width, fine_depth >= "
+                    << std::min(p.fine_width, p.fine_depth) << " m) must hold at least one cell of "
+                    << h_max << " m; decrease element_size or master_ratio");
+}
+
+/// Replaces the face sets `sources` by their union `target` (with its node set).
+void merge_sets(HexMesh& mesh, const std::vector<std::string>& sources, const std::string& target)
+{
+  std::vector<Face> faces;
+  for (const std::string& source : sources)
+  {
+    const std::vector<Face>& part = mesh.face_set(source);
+    faces.insert(faces.end(), part.begin(), part.end());
+    mesh.face_sets.erase(source);
+    mesh.node_sets.erase(source);
+  }
+  mesh.face_sets[target] = std::move(faces);
+  mesh.add_node_set_from_faces(target, target);
+}
+} // namespace
+
+HexMesh generate_hertz(const HertzMeshParameters& parameters)
+{
+  const HertzMeshParameters& p = parameters;
+  check_parameters(p);
+  const double radius = p.cylinder_radius;
+  const double h_slave = p.element_size / p.refinement;
+  const double h_master = p.master_ratio * h_slave;
+  const double ratio = std::pow(p.growth_ratio, 1 / p.refinement);
+  const double thickness = p.thickness;
+
+  const std::vector<double> cylinder_x =
+      graded_positions(p.cylinder_width, h_slave, p.fine_width, ratio);
+  const std::vector<double> cylinder_t = graded_positions(radius, h_slave, p.fine_depth, ratio);
+  const std::vector<double> block_x =
+      graded_positions(p.block_width, h_master, p.fine_width, ratio);
+  const std::vector<double> block_d =
+      graded_positions(p.block_depth, h_master, p.fine_depth, ratio);
+  auto n_cells = [](const std::vector<double>& positions)
+  { return static_cast<int32_t>(positions.size()) - 1; };
+
+  // Column at abscissa x spans from the arc to the axis plane, height sqrt(R1^2 - x^2).
+  const HexMesh cylinder = generate_mapped_block(
+      {n_cells(cylinder_x), n_cells(cylinder_t), 1},
+      [&](int32_t i, int32_t j, int32_t k)
+      {
+        const double x = cylinder_x[i];
+        const double height = std::sqrt(radius * radius - x * x);
+        const double y = (radius - height) + cylinder_t[j] / radius * height;
+        return Eigen::Vector3d(x, y, k * thickness);
+      },
+      "cylinder");
+  // j counts upward, while the graded depths start at the contact surface y = 0.
+  const int32_t block_ny = n_cells(block_d);
+  const HexMesh block = generate_mapped_block(
+      {n_cells(block_x), block_ny, 1},
+      [&](int32_t i, int32_t j, int32_t k)
+      { return Eigen::Vector3d(block_x[i], -block_d[block_ny - j], k * thickness); },
+      "block");
+
+  HexMesh mesh;
+  append_mesh(mesh, cylinder, "cylinder_");
+  append_mesh(mesh, block, "block_");
+  const std::vector<std::pair<std::string, std::string>> renames = {
+      {"cylinder_ymin", "cylinder_contact"},  {"cylinder_ymax", "load"},
+      {"cylinder_xmin", "cylinder_symmetry"}, {"cylinder_xmax", "cylinder_side"},
+      {"block_ymax", "block_contact"},        {"block_ymin", "support"},
+      {"block_xmin", "block_symmetry"},       {"block_xmax", "block_side"},
+  };
+  for (const auto& [from, to] : renames)
+    merge_sets(mesh, {from}, to);
+  merge_sets(mesh, {"cylinder_zmin", "block_zmin"}, "zmin");
+  merge_sets(mesh, {"cylinder_zmax", "block_zmax"}, "zmax");
+
+  std::vector<int32_t> symmetry;
+  std::ranges::set_union(mesh.node_set("cylinder_symmetry"), mesh.node_set("block_symmetry"),
+                         std::back_inserter(symmetry));
+  mesh.node_sets["symmetry"] = std::move(symmetry);
+  return mesh;
+}
+
+ContactZoneSummary summarize_contact_zone(const HexMesh& mesh, const std::string& face_set,
+                                          double half_width)
+{
+  ContactZoneSummary summary;
+  summary.min_size = std::numeric_limits<double>::infinity();
+  for (const Face& face : mesh.face_set(face_set))
+  {
+    double min_x = std::numeric_limits<double>::infinity();
+    double size = 0;
+    for (int a = 0; a < 4; ++a)
+    {
+      min_x = std::min(min_x, mesh.nodes(face[a], 0));
+      for (int b = 0; b < a; ++b)
+        size = std::max(
+            size, (mesh.nodes.row(face[a]).head<2>() - mesh.nodes.row(face[b]).head<2>()).norm());
+    }
+    if (min_x >= half_width)
+      continue;
+    ++summary.n_faces;
+    summary.min_size = std::min(summary.min_size, size);
+    summary.max_size = std::max(summary.max_size, size);
+  }
+  FETICON_CHECK(summary.n_faces > 0,
+                "face set '" << face_set << "' has no face with x < " << half_width << " m");
+  return summary;
+}
+} // namespace feticon::mesh

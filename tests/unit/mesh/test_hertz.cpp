@@ -1,0 +1,284 @@
+/// Tests of generate_hertz and summarize_contact_zone.
+/// References: the analytic geometry of ALGORITHMS.md section 9 (circle x^2 + (y - R1)^2 = R1^2,
+/// planes of the block), the Hertz half-width a = 68.08 mm (section 9), the closed-form area of the
+/// cylinder segment, and the area between a circular arc and its chords.
+
+#include "mesh/hertz.hpp"
+
+#include "common/error.hpp"
+
+#include "hex_geometry.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+namespace feticon::mesh
+{
+namespace
+{
+/// Hertz contact half-width of the steel cylinder of section 9 (m).
+constexpr double half_width = 0.068078;
+
+HexMesh hertz(double refinement)
+{
+  HertzMeshParameters p;
+  p.refinement = refinement;
+  return generate_hertz(p);
+}
+
+/// Body of every node (bodies share no nodes).
+std::vector<int32_t> node_bodies(const HexMesh& mesh)
+{
+  std::vector<int32_t> body(mesh.n_nodes(), -1);
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    for (const int32_t id : mesh.cells[c])
+      body[id] = mesh.cell_body[c];
+  return body;
+}
+
+/// Area of the cylinder part of the mesh: volume of its cells / thickness (m^2).
+double cylinder_area(const HexMesh& mesh, double thickness)
+{
+  double volume = 0;
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    if (mesh.cell_body[c] == 0)
+      volume += test::cell_volume(mesh, mesh.cells[c]);
+  return volume / thickness;
+}
+
+/// Area between the arc and the chords of the cylinder_contact faces: each chord of length l cuts
+/// off the circular segment R^2/2 (theta - sin theta), theta = 2 asin(l / (2R)).
+double chord_segments_area(const HexMesh& mesh, double radius)
+{
+  double area = 0;
+  for (const Face& face : mesh.face_set("cylinder_contact"))
+  {
+    double chord = 0;
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < a; ++b)
+        chord = std::max(
+            chord, (mesh.nodes.row(face[a]).head<2>() - mesh.nodes.row(face[b]).head<2>()).norm());
+    const double theta = 2 * std::asin(chord / (2 * radius));
+    area += radius * radius / 2 * (theta - std::sin(theta));
+  }
+  return area; // one face per arc interval: the mesh has a single z layer
+}
+} // namespace
+
+class HertzMesh : public ::testing::TestWithParam<double>
+{
+};
+
+TEST_P(HertzMesh, PositiveJacobianAtAllGaussPoints)
+{
+  const HexMesh mesh = hertz(GetParam());
+  ASSERT_EQ(mesh.n_bodies(), 2);
+  EXPECT_EQ(mesh.body_names, (std::vector<std::string>{"cylinder", "block"}));
+  const auto points = test::gauss_points();
+  int32_t n_bad = 0;
+  for (const Cell& cell : mesh.cells)
+    for (const Eigen::Vector3d& xi : points)
+      n_bad += test::jacobian(mesh, cell, xi).determinant() <= 0;
+  EXPECT_EQ(n_bad, 0);
+}
+
+TEST_P(HertzMesh, SetsLieOnTheirBoundaries)
+{
+  const HertzMeshParameters p;
+  const HexMesh mesh = hertz(GetParam());
+  const double R = p.cylinder_radius;
+  const std::vector<int32_t> body = node_bodies(mesh);
+  // name, body (-1: both), coordinate test
+  struct Expected
+  {
+    std::string name;
+    int32_t body;
+    std::function<double(const Eigen::Vector3d&)> distance;
+  };
+  const std::vector<Expected> expected = {
+      {"cylinder_contact", 0,
+       [&](const Eigen::Vector3d& x) { return std::hypot(x[0], x[1] - R) - R; }},
+      {"block_contact", 1, [](const Eigen::Vector3d& x) { return x[1]; }},
+      {"load", 0, [&](const Eigen::Vector3d& x) { return x[1] - R; }},
+      {"support", 1, [&](const Eigen::Vector3d& x) { return x[1] + p.block_depth; }},
+      {"cylinder_symmetry", 0, [](const Eigen::Vector3d& x) { return x[0]; }},
+      {"block_symmetry", 1, [](const Eigen::Vector3d& x) { return x[0]; }},
+      {"symmetry", -1, [](const Eigen::Vector3d& x) { return x[0]; }},
+      {"cylinder_side", 0, [&](const Eigen::Vector3d& x) { return x[0] - p.cylinder_width; }},
+      {"block_side", 1, [&](const Eigen::Vector3d& x) { return x[0] - p.block_width; }},
+      {"zmin", -1, [](const Eigen::Vector3d& x) { return x[2]; }},
+      {"zmax", -1, [&](const Eigen::Vector3d& x) { return x[2] - p.thickness; }},
+  };
+  for (const Expected& set : expected)
+  {
+    SCOPED_TRACE(set.name);
+    const std::vector<int32_t>& nodes = mesh.node_set(set.name);
+    ASSERT_FALSE(nodes.empty());
+    for (const int32_t id : nodes)
+    {
+      // Rounding of coordinates of size 1 m.
+      EXPECT_NEAR(set.distance(test::point(mesh, id)), 0.0, 1e-14);
+      if (set.body >= 0)
+      {
+        EXPECT_EQ(body[id], set.body);
+      }
+    }
+    if (set.name != "symmetry")
+    {
+      EXPECT_EQ(nodes, mesh.face_set_nodes(set.name));
+    }
+  }
+  // Both z faces and the symmetry plane collect both bodies.
+  for (const char* name : {"symmetry", "zmin", "zmax"})
+  {
+    std::set<int32_t> bodies;
+    for (const int32_t id : mesh.node_set(name))
+      bodies.insert(body[id]);
+    EXPECT_EQ(bodies.size(), 2u) << name;
+  }
+  EXPECT_EQ(mesh.node_set("symmetry").size(),
+            mesh.node_set("cylinder_symmetry").size() + mesh.node_set("block_symmetry").size());
+}
+
+TEST_P(HertzMesh, FacesPointOutward)
+{
+  const HertzMeshParameters p;
+  const HexMesh mesh = hertz(GetParam());
+  const Eigen::Vector3d axis(0, p.cylinder_radius, 0);
+  const auto face_cells = test::faces_to_cells(mesh);
+  const std::map<std::string, Eigen::Vector3d> plane_normals = {
+      {"block_contact", {0, 1, 0}},
+      {"load", {0, 1, 0}},
+      {"support", {0, -1, 0}},
+      {"cylinder_symmetry", {-1, 0, 0}},
+      {"block_symmetry", {-1, 0, 0}},
+      {"cylinder_side", {1, 0, 0}},
+      {"block_side", {1, 0, 0}},
+      {"zmin", {0, 0, -1}},
+      {"zmax", {0, 0, 1}},
+  };
+  for (const auto& [name, faces] : mesh.face_sets)
+  {
+    SCOPED_TRACE(name);
+    for (const Face& face : faces)
+    {
+      const Eigen::Vector3d normal = test::face_normal(mesh, face);
+      const Eigen::Vector3d centroid = test::face_centroid(mesh, face);
+      // Outward from the one cell the face bounds, whatever the set.
+      const auto it = face_cells.find(test::sorted(face));
+      ASSERT_TRUE(it != face_cells.end());
+      ASSERT_EQ(it->second.size(), 1u);
+      EXPECT_GT(normal.dot(centroid - test::cell_centroid(mesh, mesh.cells[it->second[0]])), 0);
+      if (name == "cylinder_contact")
+      {
+        EXPECT_GT(normal.dot(centroid - axis), 0.99 * (centroid - axis).norm());
+        EXPECT_LT(normal[1], 0);
+      }
+      else
+      {
+        EXPECT_LT((normal - plane_normals.at(name)).norm(), 1e-12);
+      }
+    }
+  }
+}
+
+TEST_P(HertzMesh, ContactMeshesDoNotMatch)
+{
+  const HexMesh mesh = hertz(GetParam());
+  std::set<double> master_x;
+  for (const int32_t id : mesh.node_set("block_contact"))
+    master_x.insert(mesh.nodes(id, 0));
+  int n_slave = 0, n_coincident = 0;
+  for (const int32_t id : mesh.node_set("cylinder_contact"))
+  {
+    const double x = mesh.nodes(id, 0);
+    if (x == 0) // the symmetry plane is shared by construction
+      continue;
+    ++n_slave;
+    const auto above = master_x.lower_bound(x);
+    const bool coincident = (above != master_x.end() && *above - x < 1e-9) ||
+                            (above != master_x.begin() && x - *std::prev(above) < 1e-9);
+    n_coincident += coincident;
+  }
+  // master_ratio = 1.3 = 13/10: in the uniform zone one slave node in 13 meets a master node, so
+  // matching meshes would give 100 % and ours about 8 % at most.
+  EXPECT_GT(n_slave, 0);
+  EXPECT_LT(n_coincident, 0.1 * n_slave);
+}
+
+TEST_P(HertzMesh, CylinderAreaIsTheSegmentLessTheChordSegments)
+{
+  const HertzMeshParameters p;
+  const HexMesh mesh = hertz(GetParam());
+  const double R = p.cylinder_radius, Xc = p.cylinder_width;
+  // Integral of sqrt(R^2 - x^2) from 0 to Xc.
+  const double exact = 0.5 * (Xc * std::sqrt(R * R - Xc * Xc) + R * R * std::asin(Xc / R));
+  const double area = cylinder_area(mesh, p.thickness);
+  // The arc nodes are on the circle and the other sides are straight, so the only difference is
+  // the circular segments cut off by the chords; it matches up to rounding.
+  EXPECT_NEAR(exact - area, chord_segments_area(mesh, R), 1e-12);
+  EXPECT_GT(exact - area, 0); // inscribed polygon
+  // Block area W * D, rounding only.
+  double block_volume = 0;
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    if (mesh.cell_body[c] == 1)
+      block_volume += test::cell_volume(mesh, mesh.cells[c]);
+  EXPECT_NEAR(block_volume / p.thickness, p.block_width * p.block_depth, 1e-12);
+}
+
+INSTANTIATE_TEST_SUITE_P(Refinement, HertzMesh, ::testing::Values(1.0, 2.0));
+
+TEST(HertzMeshRefinement, AreaErrorIsSmallAndSecondOrder)
+{
+  const HertzMeshParameters p;
+  const double R = p.cylinder_radius, Xc = p.cylinder_width;
+  const double exact = 0.5 * (Xc * std::sqrt(R * R - Xc * Xc) + R * R * std::asin(Xc / R));
+  const double error1 = (exact - cylinder_area(hertz(1), p.thickness)) / exact;
+  const double error2 = (exact - cylinder_area(hertz(2), p.thickness)) / exact;
+  // Chords of length l lose l^3 / (12 R) each; with cells up to ~0.1 m away from the contact this
+  // is 3.5e-4 relative at refinement 1. Halving every cell size divides it by about 4.
+  EXPECT_LT(error1, 1e-3);
+  EXPECT_LT(error2, 0.3 * error1);
+}
+
+TEST(HertzMeshRefinement, ContactZoneResolution)
+{
+  const ContactZoneSummary slave1 =
+      summarize_contact_zone(hertz(1), "cylinder_contact", half_width);
+  const ContactZoneSummary slave2 =
+      summarize_contact_zone(hertz(2), "cylinder_contact", half_width);
+  const ContactZoneSummary slave4 =
+      summarize_contact_zone(hertz(4), "cylinder_contact", half_width);
+  const ContactZoneSummary master1 = summarize_contact_zone(hertz(1), "block_contact", half_width);
+  // ALGORITHMS.md section 9: cells of at most a/10 in the contact zone, i.e. >= 20 across 2a
+  // (>= 10 across the modelled half); twice as many per refinement.
+  EXPECT_GE(half_width / slave1.max_size, 10);
+  EXPECT_GE(half_width / slave2.max_size, 20);
+  EXPECT_GE(half_width / slave4.max_size, 40);
+  EXPECT_GE(half_width / master1.max_size, 10);
+  EXPECT_GE(slave1.n_faces, 10);
+  EXPECT_GE(slave2.n_faces, 20);
+  EXPECT_LE(slave2.max_size, 0.55 * slave1.max_size);
+  EXPECT_LE(slave4.max_size, 0.55 * slave2.max_size);
+  // The fine zone is uniform: the chords differ only through the arc's slope (< 1 %).
+  EXPECT_LT(slave1.max_size / slave1.min_size, 1.01);
+}
+
+TEST(HertzMeshParametersCheck, RejectsBadValues)
+{
+  auto with = [](auto change)
+  {
+    HertzMeshParameters p;
+    change(p);
+    return p;
+  };
+  EXPECT_THROW(generate_hertz(with([](HertzMeshParameters& p) { p.cylinder_width = 1.0; })), Error);
+  EXPECT_THROW(generate_hertz(with([](HertzMeshParameters& p) { p.refinement = 0; })), Error);
+  EXPECT_THROW(generate_hertz(with([](HertzMeshParameters& p) { p.element_size = 0.2; })), Error);
+  EXPECT_THROW(generate_hertz(with([](HertzMeshParameters& p) { p.growth_ratio = 0.8; })), Error);
+  EXPECT_THROW(generate_hertz(with([](HertzMeshParameters& p) { p.block_depth = -1; })), Error);
+  EXPECT_THROW(summarize_contact_zone(hertz(1), "cylinder_contact", 0.0), Error);
+}
+} // namespace feticon::mesh
