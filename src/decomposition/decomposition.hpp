@@ -1,0 +1,79 @@
+#pragma once
+/// @file Decomposition: the mesh torn into subdomains, each with its own copy of its nodes.
+///
+/// Primal unknowns of all subdomains are stacked: subdomain s owns the index range
+/// [offset(s), offset(s) + n_dofs(s)). Within a subdomain, DOFs are the active components
+/// of its local nodes: every node has 3 components except those eliminated for the whole
+/// problem (plane strain: u_z = 0 everywhere is eliminated, not enforced by multipliers,
+/// which keeps the dual small and the kernel 3-dimensional; ALGORITHMS.md section 7).
+
+#include "decomposition/partition.hpp"
+#include "fem/assembler.hpp"
+#include "la/types.hpp"
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace feticon::decomposition
+{
+struct Subdomain
+{
+  int32_t id = 0;
+  int32_t body = 0;
+  fem::AssemblyDomain domain;           ///< cells and local node numbering
+  std::vector<int32_t> active_of_full;  ///< local full DOF 3n+i -> active DOF, -1 if eliminated
+  std::vector<int32_t> full_of_active;  ///< active DOF -> local full DOF 3n+i
+  int32_t n_dofs() const { return static_cast<int32_t>(full_of_active.size()); }
+};
+
+/// A copy of a mesh node in one subdomain.
+struct NodeCopy
+{
+  int32_t subdomain;
+  int32_t local_node;
+};
+
+class Decomposition
+{
+public:
+  /// @param eliminated components removed from every node (e.g. {false,false,true} for
+  ///        plane strain u_z = 0), so they are neither unknowns nor multipliers.
+  Decomposition(const mesh::HexMesh& mesh, const Partition& partition,
+                std::array<bool, 3> eliminated = {false, false, false});
+
+  const mesh::HexMesh& mesh() const { return _mesh; }
+  int32_t n_subdomains() const { return static_cast<int32_t>(_subdomains.size()); }
+  const Subdomain& subdomain(int32_t s) const { return _subdomains[s]; }
+  const std::vector<Subdomain>& subdomains() const { return _subdomains; }
+  const std::array<bool, 3>& eliminated() const { return _eliminated; }
+
+  /// Total stacked primal DOFs and the start of subdomain s.
+  int64_t n_primal() const { return _offsets.back(); }
+  int64_t offset(int32_t s) const { return _offsets[s]; }
+  /// Copies of mesh node `node` (one per subdomain that touches it).
+  const std::vector<NodeCopy>& copies(int32_t node) const { return _copies[node]; }
+  /// Subdomain id of every cell.
+  const std::vector<int32_t>& cell_subdomain() const { return _partition.cell_subdomain; }
+
+  /// Stacked vector holding the global (3 per mesh node) values at every copy.
+  la::Vector scatter_copy(const la::Vector& global) const;
+  /// Stacked vector with each global value split equally among the copies (forces).
+  la::Vector scatter_split(const la::Vector& global) const;
+  /// Global vector: mean over copies (displacements); eliminated components are 0.
+  la::Vector gather_mean(const la::Vector& stacked) const;
+  /// Global vector: sum over copies (forces).
+  la::Vector gather_sum(const la::Vector& stacked) const;
+  /// Segment of a stacked vector for subdomain s.
+  Eigen::VectorBlock<la::Vector> segment(la::Vector& stacked, int32_t s) const;
+  Eigen::VectorBlock<const la::Vector> segment(const la::Vector& stacked, int32_t s) const;
+
+private:
+  const mesh::HexMesh& _mesh;
+  Partition _partition;
+  std::array<bool, 3> _eliminated;
+  std::vector<Subdomain> _subdomains;
+  std::vector<int64_t> _offsets;
+  std::vector<std::vector<NodeCopy>> _copies;
+};
+} // namespace feticon::decomposition

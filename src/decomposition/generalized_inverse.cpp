@@ -1,0 +1,134 @@
+#include "decomposition/generalized_inverse.hpp"
+
+#include "common/error.hpp"
+
+#include <algorithm>
+
+namespace feticon::decomposition
+{
+std::vector<int32_t> choose_fixing_nodes(
+    const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& coords)
+{
+  const la::Index n = coords.rows();
+  FETICON_CHECK(n >= 3, "a subdomain needs at least 3 nodes, it has " << n);
+  const Eigen::RowVector3d centroid = coords.colwise().mean();
+  la::Index a = 0, b = 0, c = 0;
+  (coords.rowwise() - centroid).rowwise().squaredNorm().maxCoeff(&a);
+  (coords.rowwise() - coords.row(a)).rowwise().squaredNorm().maxCoeff(&b);
+  double best = -1;
+  for (la::Index k = 0; k < n; ++k)
+  {
+    const double area = (coords.row(k) - coords.row(a)).cross(coords.row(b) - coords.row(a)).norm();
+    if (area > best)
+    {
+      best = area;
+      c = k;
+    }
+  }
+  return {static_cast<int32_t>(a), static_cast<int32_t>(b), static_cast<int32_t>(c)};
+}
+
+namespace
+{
+/// K restricted to the rows and columns with position[i] >= 0, renumbered to position[i].
+la::SparseMatrix submatrix(const la::SparseMatrix& K, const std::vector<int32_t>& position)
+{
+  std::vector<la::Triplet> triplets;
+  triplets.reserve(K.nonZeros());
+  int n_kept = 0;
+  for (int32_t p : position)
+    n_kept += p >= 0;
+  for (int col = 0; col < K.outerSize(); ++col)
+    if (position[col] >= 0)
+      for (la::SparseMatrix::InnerIterator it(K, col); it; ++it)
+        if (position[it.row()] >= 0)
+          triplets.emplace_back(position[it.row()], position[col], it.value());
+  la::SparseMatrix A(n_kept, n_kept);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  return A;
+}
+} // namespace
+
+void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
+                               const std::vector<int32_t>& fixing_candidates,
+                               GeneralizedInverseMethod method, const std::string& what)
+{
+  _method = method;
+  _n = K.rows();
+  const la::Index k = R.cols();
+  FETICON_CHECK(static_cast<la::Index>(fixing_candidates.size()) >= k,
+                what << ": " << fixing_candidates.size() << " fixing DOFs cannot remove a kernel of "
+                     << "dimension " << k);
+  // Rows of R at the candidate DOFs; a column-pivoted QR of its transpose picks the k
+  // candidates whose k x k block of R is best conditioned.
+  la::Matrix R_fix(static_cast<la::Index>(fixing_candidates.size()), k);
+  for (size_t i = 0; i < fixing_candidates.size(); ++i)
+    R_fix.row(static_cast<la::Index>(i)) = R.row(fixing_candidates[i]);
+
+  if (method == GeneralizedInverseMethod::fixing_dofs)
+  {
+    std::vector<int32_t> position(_n, 0);
+    if (k > 0)
+    {
+      Eigen::ColPivHouseholderQR<la::Matrix> qr(R_fix.transpose());
+      la::Matrix block(k, k);
+      for (la::Index j = 0; j < k; ++j)
+      {
+        const int32_t dof = fixing_candidates[qr.colsPermutation().indices()(j)];
+        position[dof] = -1;
+        block.row(j) = R.row(dof);
+      }
+      Eigen::JacobiSVD<la::Matrix> svd(block);
+      const auto& sv = svd.singularValues();
+      FETICON_CHECK(sv(k - 1) > 1e-8 * sv(0), what << ": fixing nodes do not determine the "
+                                                   << "rigid-body modes (degenerate subdomain?)");
+    }
+    _kept.clear();
+    for (la::Index i = 0; i < _n; ++i)
+      if (position[i] >= 0)
+      {
+        position[i] = static_cast<int32_t>(_kept.size());
+        _kept.push_back(static_cast<int32_t>(i));
+      }
+    _factor.factorize(submatrix(K, position), what.c_str());
+    return;
+  }
+
+  // Regularization: K + rho C C' with C = R on the fixing DOFs.
+  double rho = 0;
+  for (la::Index i = 0; i < _n; ++i)
+    rho = std::max(rho, K.coeff(i, i));
+  const la::Matrix CCt = R_fix * R_fix.transpose();
+  std::vector<la::Triplet> triplets;
+  for (size_t i = 0; i < fixing_candidates.size(); ++i)
+    for (size_t j = 0; j < fixing_candidates.size(); ++j)
+      triplets.emplace_back(fixing_candidates[i], fixing_candidates[j],
+                            rho * CCt(static_cast<la::Index>(i), static_cast<la::Index>(j)));
+  la::SparseMatrix C(_n, _n);
+  C.setFromTriplets(triplets.begin(), triplets.end());
+  _factor.factorize(K + C, what.c_str());
+}
+
+la::Vector GeneralizedInverse::apply(const la::Vector& b) const
+{
+  FETICON_ASSERT(b.size() == _n, "K+ applied to a vector of the wrong size");
+  if (_method == GeneralizedInverseMethod::regularization)
+    return _factor.solve(b);
+  la::Vector b_kept(static_cast<la::Index>(_kept.size()));
+  for (size_t i = 0; i < _kept.size(); ++i)
+    b_kept(static_cast<la::Index>(i)) = b(_kept[i]);
+  const la::Vector x_kept = _factor.solve(b_kept);
+  la::Vector x = la::Vector::Zero(_n);
+  for (size_t i = 0; i < _kept.size(); ++i)
+    x(_kept[i]) = x_kept(static_cast<la::Index>(i));
+  return x;
+}
+
+la::Matrix GeneralizedInverse::apply(const la::Matrix& B) const
+{
+  la::Matrix X(B.rows(), B.cols());
+  for (la::Index j = 0; j < B.cols(); ++j)
+    X.col(j) = apply(la::Vector(B.col(j)));
+  return X;
+}
+} // namespace feticon::decomposition

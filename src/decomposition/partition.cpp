@@ -1,0 +1,206 @@
+#include "decomposition/partition.hpp"
+
+#include "common/error.hpp"
+
+#include <metis.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace feticon::decomposition
+{
+namespace
+{
+/// Cells sharing a face (4 common nodes) with each cell: CSR adjacency.
+void cell_face_graph(const mesh::HexMesh& mesh, std::vector<idx_t>& xadj,
+                     std::vector<idx_t>& adjncy)
+{
+  std::map<std::array<int32_t, 4>, std::vector<int32_t>> face_cells;
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    for (const auto& local : mesh::hex_faces)
+    {
+      std::array<int32_t, 4> key;
+      for (int k = 0; k < 4; ++k)
+        key[k] = mesh.cells[c][local[k]];
+      std::sort(key.begin(), key.end());
+      face_cells[key].push_back(c);
+    }
+  std::vector<std::vector<int32_t>> neighbours(mesh.n_cells());
+  for (const auto& [key, cells] : face_cells)
+    if (cells.size() == 2)
+    {
+      neighbours[cells[0]].push_back(cells[1]);
+      neighbours[cells[1]].push_back(cells[0]);
+    }
+  xadj.assign(1, 0);
+  adjncy.clear();
+  for (const auto& list : neighbours)
+  {
+    adjncy.insert(adjncy.end(), list.begin(), list.end());
+    xadj.push_back(static_cast<idx_t>(adjncy.size()));
+  }
+}
+
+/// Renumbers ids to 0..k-1 in order of first appearance.
+Partition compact(std::vector<int32_t> ids)
+{
+  std::map<int32_t, int32_t> renumber;
+  for (int32_t& id : ids)
+  {
+    auto [it, inserted] = renumber.emplace(id, static_cast<int32_t>(renumber.size()));
+    id = it->second;
+  }
+  return {std::move(ids), static_cast<int32_t>(renumber.size())};
+}
+} // namespace
+
+Partition partition_structured(const mesh::HexMesh& mesh, std::array<int, 3> parts)
+{
+  for (int p : parts)
+    FETICON_CHECK(p >= 1, "structured partition: parts per direction must be >= 1, got " << p);
+  std::vector<Eigen::Vector3d> centroid(mesh.n_cells());
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+  {
+    centroid[c].setZero();
+    for (int32_t node : mesh.cells[c])
+      centroid[c] += mesh.nodes.row(node).transpose() / 8.0;
+  }
+  const int per_body = parts[0] * parts[1] * parts[2];
+  std::vector<int32_t> ids(mesh.n_cells());
+  for (int32_t body = 0; body < mesh.n_bodies(); ++body)
+  {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+    for (int32_t c = 0; c < mesh.n_cells(); ++c)
+      if (mesh.cell_body[c] == body)
+      {
+        lo = lo.cwiseMin(centroid[c]);
+        hi = hi.cwiseMax(centroid[c]);
+      }
+    for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    {
+      if (mesh.cell_body[c] != body)
+        continue;
+      int box = 0;
+      for (int d = 2; d >= 0; --d)
+      {
+        const double extent = hi(d) - lo(d);
+        int k = extent > 0 ? static_cast<int>(std::floor((centroid[c](d) - lo(d)) / extent * parts[d]))
+                           : 0;
+        k = std::clamp(k, 0, parts[d] - 1);
+        box = box * parts[d] + k;
+      }
+      ids[c] = body * per_body + box;
+    }
+  }
+  return split_disconnected(mesh, compact(std::move(ids)));
+}
+
+Partition partition_metis(const mesh::HexMesh& mesh, int n_subdomains)
+{
+  FETICON_CHECK(n_subdomains >= mesh.n_bodies(),
+                "METIS partition: " << n_subdomains << " subdomains requested but the mesh has "
+                                    << mesh.n_bodies() << " bodies (at least one each)");
+  FETICON_CHECK(n_subdomains <= mesh.n_cells(), "METIS partition: " << n_subdomains
+                                                                    << " subdomains requested for "
+                                                                    << mesh.n_cells() << " cells");
+  std::vector<idx_t> xadj, adjncy;
+  cell_face_graph(mesh, xadj, adjncy);
+
+  // Parts per body in proportion to its cells (largest remainder), at least one each.
+  std::vector<int32_t> body_cells(mesh.n_bodies(), 0);
+  for (int32_t b : mesh.cell_body)
+    ++body_cells[b];
+  std::vector<int> body_parts(mesh.n_bodies(), 1);
+  int remaining = n_subdomains - mesh.n_bodies();
+  while (remaining-- > 0)
+  {
+    int best = 0;
+    for (int b = 1; b < mesh.n_bodies(); ++b)
+      if (static_cast<double>(body_cells[b]) / body_parts[b] >
+          static_cast<double>(body_cells[best]) / body_parts[best])
+        best = b;
+    ++body_parts[best];
+  }
+
+  std::vector<int32_t> ids(mesh.n_cells(), 0);
+  int offset = 0;
+  for (int32_t body = 0; body < mesh.n_bodies(); ++body)
+  {
+    // Subgraph of this body's cells.
+    std::vector<int32_t> cells, local(mesh.n_cells(), -1);
+    for (int32_t c = 0; c < mesh.n_cells(); ++c)
+      if (mesh.cell_body[c] == body)
+      {
+        local[c] = static_cast<int32_t>(cells.size());
+        cells.push_back(c);
+      }
+    idx_t nparts = body_parts[body];
+    if (nparts == 1)
+    {
+      for (int32_t c : cells)
+        ids[c] = offset;
+      offset += 1;
+      continue;
+    }
+    std::vector<idx_t> sub_xadj(1, 0), sub_adjncy;
+    for (int32_t c : cells)
+    {
+      for (idx_t k = xadj[c]; k < xadj[c + 1]; ++k)
+        if (local[adjncy[k]] >= 0)
+          sub_adjncy.push_back(local[adjncy[k]]);
+      sub_xadj.push_back(static_cast<idx_t>(sub_adjncy.size()));
+    }
+    idx_t nvtxs = static_cast<idx_t>(cells.size()), ncon = 1, objval = 0;
+    std::vector<idx_t> part(cells.size());
+    idx_t options[METIS_NOPTIONS];
+    METIS_SetDefaultOptions(options);
+    options[METIS_OPTION_CONTIG] = 1; // connected parts: 6 rigid modes each
+    options[METIS_OPTION_SEED] = 1;   // reproducible partitions
+    const int status = METIS_PartGraphKway(&nvtxs, &ncon, sub_xadj.data(), sub_adjncy.data(),
+                                           nullptr, nullptr, nullptr, &nparts, nullptr, nullptr,
+                                           options, &objval, part.data());
+    FETICON_CHECK(status == METIS_OK, "METIS failed to partition body '"
+                                          << mesh.body_names[body] << "' into " << nparts
+                                          << " parts (status " << status << ")");
+    for (size_t k = 0; k < cells.size(); ++k)
+      ids[cells[k]] = offset + static_cast<int32_t>(part[k]);
+    offset += static_cast<int>(nparts);
+  }
+  return split_disconnected(mesh, compact(std::move(ids)));
+}
+
+Partition split_disconnected(const mesh::HexMesh& mesh, const Partition& partition)
+{
+  std::vector<idx_t> xadj, adjncy;
+  cell_face_graph(mesh, xadj, adjncy);
+  std::vector<int32_t> component(mesh.n_cells(), -1);
+  int32_t next = 0;
+  std::vector<int32_t> stack;
+  for (int32_t seed = 0; seed < mesh.n_cells(); ++seed)
+  {
+    if (component[seed] >= 0)
+      continue;
+    component[seed] = next;
+    stack.assign(1, seed);
+    while (!stack.empty())
+    {
+      const int32_t c = stack.back();
+      stack.pop_back();
+      for (idx_t k = xadj[c]; k < xadj[c + 1]; ++k)
+      {
+        const int32_t nb = adjncy[k];
+        if (component[nb] < 0 &&
+            partition.cell_subdomain[nb] == partition.cell_subdomain[c])
+        {
+          component[nb] = next;
+          stack.push_back(nb);
+        }
+      }
+    }
+    ++next;
+  }
+  return compact(std::move(component));
+}
+} // namespace feticon::decomposition

@@ -1,0 +1,25 @@
+#pragma once
+/// @file Kernel R of a floating subdomain stiffness from node coordinates.
+///
+/// For node (x,y,z) relative to the centroid the 3x6 block is
+///   [1 0 0   0   z  -y]
+///   [0 1 0  -z   0   x]
+///   [0 0 1   y  -x   0]
+/// (translations, then rotations about x, y, z; ALGORITHMS.md section 2). Components
+/// eliminated for the whole problem (plane strain) remove the modes that move them:
+/// the kernel is the subspace of rigid modes vanishing on eliminated DOFs (3 modes in
+/// plane strain). Columns are orthonormalized (R' R = I).
+
+#include "la/types.hpp"
+
+#include <array>
+#include <vector>
+
+namespace feticon::decomposition
+{
+/// @param coords           one row per local node: reference X for K_0, current x for K_M(u)
+/// @param full_of_active   active DOF -> local full DOF 3n+i
+/// @return n_active x k orthonormal basis of the kernel (k = 6 without eliminations)
+la::Matrix rigid_body_modes(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& coords,
+                            const std::vector<int32_t>& full_of_active);
+} // namespace feticon::decomposition

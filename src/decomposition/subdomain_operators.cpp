@@ -1,0 +1,86 @@
+#include "decomposition/subdomain_operators.hpp"
+
+#include "common/error.hpp"
+#include "decomposition/rigid_body_modes.hpp"
+
+namespace feticon::decomposition
+{
+SubdomainSystem::SubdomainSystem(const Decomposition& decomposition,
+                                 std::vector<fem::Material> materials, fem::Kinematics kinematics,
+                                 GeneralizedInverseMethod method)
+    : _decomposition(decomposition), _method(method), _operators(decomposition.n_subdomains())
+{
+  for (const Subdomain& sub : decomposition.subdomains())
+    _assemblers.push_back(std::make_unique<fem::Assembler>(decomposition.mesh(), sub.domain,
+                                                           materials, kinematics));
+}
+
+la::Vector SubdomainSystem::full_local(int32_t s, const la::Vector& u_stacked) const
+{
+  const Subdomain& sub = _decomposition.subdomain(s);
+  la::Vector full = la::Vector::Zero(sub.domain.n_dofs());
+  const auto seg = _decomposition.segment(u_stacked, s);
+  for (int32_t k = 0; k < sub.n_dofs(); ++k)
+    full(sub.full_of_active[k]) = seg(k);
+  return full;
+}
+
+void SubdomainSystem::update(const la::Vector& u_stacked)
+{
+  FETICON_CHECK(u_stacked.size() == _decomposition.n_primal(), "stacked displacement size");
+  _kernel_offsets.assign(1, 0);
+  for (const Subdomain& sub : _decomposition.subdomains())
+  {
+    const fem::Assembler& assembler = *_assemblers[sub.id];
+    const la::Vector u_full = full_local(sub.id, u_stacked);
+    const la::SparseMatrix K_full = assembler.stiffness(u_full, fem::StiffnessKind::material);
+    // Restrict to active DOFs (plane strain eliminates z).
+    std::vector<int32_t> position(sub.active_of_full);
+    std::vector<la::Triplet> triplets;
+    triplets.reserve(K_full.nonZeros());
+    for (int col = 0; col < K_full.outerSize(); ++col)
+      if (position[col] >= 0)
+        for (la::SparseMatrix::InnerIterator it(K_full, col); it; ++it)
+          if (position[it.row()] >= 0)
+            triplets.emplace_back(position[it.row()], position[col], it.value());
+    SubdomainOperators& op = _operators[sub.id];
+    op.K.resize(sub.n_dofs(), sub.n_dofs());
+    op.K.setFromTriplets(triplets.begin(), triplets.end());
+
+    // Kernel from the current coordinates x = X + u (the kernel of K_M(u)).
+    Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> x = assembler.local_coordinates();
+    for (int32_t n = 0; n < sub.domain.n_nodes(); ++n)
+      x.row(n) += u_full.segment<3>(3 * n).transpose();
+    op.R = rigid_body_modes(x, sub.full_of_active);
+
+    std::vector<int32_t> candidates;
+    for (int32_t node : choose_fixing_nodes(x))
+      for (int i = 0; i < 3; ++i)
+        if (sub.active_of_full[3 * node + i] >= 0)
+          candidates.push_back(sub.active_of_full[3 * node + i]);
+    op.K_plus.setup(op.K, op.R, candidates, _method, "subdomain " + std::to_string(sub.id));
+    _kernel_offsets.push_back(_kernel_offsets.back() + op.R.cols());
+  }
+}
+
+la::Vector SubdomainSystem::internal_force(const la::Vector& u_stacked) const
+{
+  la::Vector f(_decomposition.n_primal());
+  for (const Subdomain& sub : _decomposition.subdomains())
+  {
+    const la::Vector f_full = _assemblers[sub.id]->internal_force(full_local(sub.id, u_stacked));
+    auto seg = _decomposition.segment(f, sub.id);
+    for (int32_t k = 0; k < sub.n_dofs(); ++k)
+      seg(k) = f_full(sub.full_of_active[k]);
+  }
+  return f;
+}
+
+long SubdomainSystem::factor_nonzeros() const
+{
+  long total = 0;
+  for (const auto& op : _operators)
+    total += op.K_plus.factor_nonzeros();
+  return total;
+}
+} // namespace feticon::decomposition

@@ -1,0 +1,54 @@
+#pragma once
+/// @file Per-subdomain FETI data: stiffness K_s, kernel R_s and generalized inverse K_s^+.
+
+#include "decomposition/decomposition.hpp"
+#include "decomposition/generalized_inverse.hpp"
+#include "fem/assembler.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace feticon::decomposition
+{
+struct SubdomainOperators
+{
+  la::SparseMatrix K;       ///< stiffness on active DOFs
+  la::Matrix R;             ///< orthonormal kernel basis (n_dofs x k)
+  GeneralizedInverse K_plus;
+};
+
+/// Assembles and factorizes every subdomain.
+class SubdomainSystem
+{
+public:
+  /// @param kinematics linear: K_0; total_lagrangian: see update()
+  SubdomainSystem(const Decomposition& decomposition, std::vector<fem::Material> materials,
+                  fem::Kinematics kinematics, GeneralizedInverseMethod method);
+
+  /// Assembles K_s at the stacked displacement `u` (material part K_M(u) in TL, K_0 when
+  /// u = 0 or linear), computes R_s from the coordinates X + u and factorizes.
+  void update(const la::Vector& u_stacked);
+
+  /// Internal force of every subdomain at stacked displacement `u` (stacked).
+  la::Vector internal_force(const la::Vector& u_stacked) const;
+
+  const Decomposition& decomposition() const { return _decomposition; }
+  const SubdomainOperators& operators(int32_t s) const { return _operators[s]; }
+  int32_t n_subdomains() const { return static_cast<int32_t>(_operators.size()); }
+  /// Kernel dimension of subdomain s and the start of its block in the kernel vector.
+  int32_t kernel_dim(int32_t s) const { return static_cast<int32_t>(_operators[s].R.cols()); }
+  int64_t kernel_offset(int32_t s) const { return _kernel_offsets[s]; }
+  int64_t n_kernel() const { return _kernel_offsets.back(); }
+  /// Sum of the nonzeros of all Cholesky factors.
+  long factor_nonzeros() const;
+
+private:
+  la::Vector full_local(int32_t s, const la::Vector& u_stacked) const;
+
+  const Decomposition& _decomposition;
+  GeneralizedInverseMethod _method;
+  std::vector<std::unique_ptr<fem::Assembler>> _assemblers;
+  std::vector<SubdomainOperators> _operators;
+  std::vector<int64_t> _kernel_offsets;
+};
+} // namespace feticon::decomposition

@@ -1,0 +1,61 @@
+#include "dual/projector.hpp"
+
+#include "common/error.hpp"
+
+namespace feticon::dual
+{
+CoarseProjector::CoarseProjector(const la::SparseMatrix& G) : _G(G)
+{
+  const la::Matrix GGt = la::Matrix(G * G.transpose());
+  _llt.compute(GGt);
+  bool full_rank = _llt.info() == Eigen::Success;
+  if (full_rank && GGt.rows() > 0)
+  {
+    const auto d = _llt.matrixLLT().diagonal().cwiseAbs();
+    full_rank = d.minCoeff() > 1e-7 * d.maxCoeff();
+  }
+  FETICON_CHECK(full_rank, "the constraints do not suppress every rigid-body motion (G G' is "
+                           "singular): a body is free to move; add supports or symmetry conditions");
+}
+
+la::Vector CoarseProjector::coarse_solve(const la::Vector& y) const { return _llt.solve(y); }
+
+la::Vector CoarseProjector::apply_Q(const la::Vector& lambda) const
+{
+  return _G.transpose() * coarse_solve(_G * lambda);
+}
+
+la::Vector CoarseProjector::apply_G_tilde(const la::Vector& lambda) const
+{
+  return _llt.matrixL().solve(_G * lambda);
+}
+
+la::Vector CoarseProjector::apply_G_tilde_t(const la::Vector& omega) const
+{
+  return _G.transpose() * la::Vector(_llt.matrixU().solve(omega));
+}
+
+la::Vector CoarseProjector::particular_solution(const la::Vector& e) const
+{
+  return _G.transpose() * coarse_solve(e);
+}
+
+double CoarseProjector::coarse_condition_estimate() const
+{
+  if (_llt.matrixLLT().rows() == 0)
+    return 1.0;
+  const auto d = _llt.matrixLLT().diagonal().cwiseAbs();
+  const double r = d.maxCoeff() / d.minCoeff();
+  return r * r;
+}
+
+void ProjectedOperator::apply(const la::Vector& x, la::Vector& y) const
+{
+  const la::Vector q = _projector.apply_Q(x);
+  la::Vector Apx;
+  _A.apply(x - q, Apx);
+  y = _projector.apply_P(Apx);
+  if (_rho != 0.0)
+    y += _rho * q;
+}
+} // namespace feticon::dual

@@ -1,0 +1,64 @@
+#pragma once
+/// @file Coarse space projectors Q = G'(GG')^{-1}G and P = I - Q (ALGORITHMS.md section 1).
+///
+/// GG' (dense, n_kernel x n_kernel) is factorized once, GG' = L L'; the orthonormalized
+/// G~ = L^{-1} G is applied implicitly (two triangular solves), so Q = G~' G~.
+
+#include "la/operator.hpp"
+
+namespace feticon::dual
+{
+class CoarseProjector
+{
+public:
+  /// Factorizes G G'. Throws feticon::Error if G has dependent rows, i.e. some rigid
+  /// motion is not suppressed by any constraint (a body that can fly away).
+  explicit CoarseProjector(const la::SparseMatrix& G);
+
+  la::Vector apply_Q(const la::Vector& lambda) const;
+  la::Vector apply_P(const la::Vector& lambda) const { return lambda - apply_Q(lambda); }
+  /// G~ lambda = L^{-1} G lambda and G~' omega.
+  la::Vector apply_G_tilde(const la::Vector& lambda) const;
+  la::Vector apply_G_tilde_t(const la::Vector& omega) const;
+  /// (G G')^{-1} y.
+  la::Vector coarse_solve(const la::Vector& y) const;
+  /// Minimal-norm solution of G lambda = e: G'(GG')^{-1} e.
+  la::Vector particular_solution(const la::Vector& e) const;
+  /// Condition number estimate of G G' (ratio of extreme diagonal entries of L, squared).
+  double coarse_condition_estimate() const;
+
+private:
+  const la::SparseMatrix& _G;
+  Eigen::LLT<la::Matrix> _llt;
+};
+
+/// P as a LinearOperator.
+class ProjectorP : public la::LinearOperator
+{
+public:
+  explicit ProjectorP(const CoarseProjector& projector, la::Index n) : _projector(projector), _n(n) {}
+  la::Index size() const override { return _n; }
+  void apply(const la::Vector& x, la::Vector& y) const override { y = _projector.apply_P(x); }
+
+private:
+  const CoarseProjector& _projector;
+  la::Index _n;
+};
+
+/// P A P + rho Q for a symmetric operator A (rho = 0 gives P A P).
+class ProjectedOperator : public la::LinearOperator
+{
+public:
+  ProjectedOperator(const la::LinearOperator& A, const CoarseProjector& projector, double rho)
+      : _A(A), _projector(projector), _rho(rho)
+  {
+  }
+  la::Index size() const override { return _A.size(); }
+  void apply(const la::Vector& x, la::Vector& y) const override;
+
+private:
+  const la::LinearOperator& _A;
+  const CoarseProjector& _projector;
+  double _rho;
+};
+} // namespace feticon::dual

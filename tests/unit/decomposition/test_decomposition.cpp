@@ -1,0 +1,165 @@
+/// Decomposition layer: partitions, kernels, generalized inverses, gluing rows
+/// (ALGORITHMS.md sections 2 and 3).
+
+#include "common/error.hpp"
+#include "decomposition/constraint_rows.hpp"
+#include "decomposition/subdomain_operators.hpp"
+#include "mesh/box.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+using namespace feticon;
+using decomposition::GeneralizedInverseMethod;
+
+namespace
+{
+/// A box whose interior nodes are displaced, so that elements are distorted.
+mesh::HexMesh distorted_box(int n)
+{
+  mesh::BoxParameters p;
+  p.lengths = Eigen::Vector3d(2, 1, 1);
+  p.nx = 2 * n;
+  p.ny = n;
+  p.nz = n;
+  mesh::HexMesh m = mesh::generate_box(p);
+  for (int32_t i = 0; i < m.n_nodes(); ++i)
+  {
+    Eigen::Vector3d x = m.nodes.row(i).transpose();
+    const bool interior = x(0) > 1e-12 && x(0) < 2 - 1e-12 && x(1) > 1e-12 && x(1) < 1 - 1e-12 &&
+                          x(2) > 1e-12 && x(2) < 1 - 1e-12;
+    if (interior)
+      x += 0.25 / n * Eigen::Vector3d(std::sin(3.1 * i), std::cos(1.7 * i), std::sin(0.7 * i + 1));
+    m.nodes.row(i) = x.transpose();
+  }
+  return m;
+}
+
+la::Matrix dense(const la::SparseMatrix& A) { return la::Matrix(A); }
+} // namespace
+
+// Reference: K R = 0 for the rigid-body modes, and K K+ K = K (definition of a generalized
+// inverse), for floating subdomains of a distorted mesh, with both K+ variants.
+TEST(GeneralizedInverse, KernelAndDefiningIdentityOnDistortedSubdomains)
+{
+  const auto m = distorted_box(2);
+  const auto partition = decomposition::partition_structured(m, {2, 1, 1});
+  const decomposition::Decomposition decomp(m, partition);
+  for (auto method : {GeneralizedInverseMethod::fixing_dofs, GeneralizedInverseMethod::regularization})
+  {
+    decomposition::SubdomainSystem system(decomp, {fem::Material{2e11, 0.3}}, fem::Kinematics::linear,
+                                          method);
+    system.update(la::Vector::Zero(decomp.n_primal()));
+    for (int32_t s = 0; s < decomp.n_subdomains(); ++s)
+    {
+      const auto& op = system.operators(s);
+      const la::Matrix K = dense(op.K);
+      ASSERT_EQ(op.R.cols(), 6);
+      EXPECT_LT((K * op.R).norm() / K.norm(), 1e-10);
+      EXPECT_LT((op.R.transpose() * op.R - la::Matrix::Identity(6, 6)).norm(), 1e-12);
+      const la::Matrix KpK = op.K_plus.apply(K);
+      EXPECT_LT((K * KpK - K).norm() / K.norm(), 1e-10) << "subdomain " << s;
+      // For f in Im K (R'f = 0), K+ f solves K u = f.
+      la::Vector f = la::Vector::Random(K.rows());
+      f -= op.R * (op.R.transpose() * f);
+      EXPECT_LT((K * op.K_plus.apply(f) - f).norm() / f.norm(), 1e-10);
+    }
+  }
+}
+
+// Reference: with u_z eliminated on every node (plane strain), only the in-plane rigid
+// modes remain: x and y translations and the rotation about z (ALGORITHMS.md 7).
+TEST(GeneralizedInverse, PlaneStrainKernelIsThreeDimensional)
+{
+  mesh::BoxParameters p;
+  p.lengths = Eigen::Vector3d(2, 1, 0.1);
+  p.nx = 4;
+  p.ny = 2;
+  p.nz = 1;
+  const auto m = mesh::generate_box(p);
+  const decomposition::Decomposition decomp(m, decomposition::partition_structured(m, {2, 1, 1}),
+                                            {false, false, true});
+  decomposition::SubdomainSystem system(decomp, {fem::Material{}}, fem::Kinematics::linear,
+                                        GeneralizedInverseMethod::fixing_dofs);
+  system.update(la::Vector::Zero(decomp.n_primal()));
+  for (int32_t s = 0; s < 2; ++s)
+  {
+    const auto& op = system.operators(s);
+    EXPECT_EQ(op.R.cols(), 3);
+    const la::Matrix K = dense(op.K);
+    EXPECT_LT((K * op.R).norm() / K.norm(), 1e-10);
+    EXPECT_LT((K * op.K_plus.apply(K) - K).norm() / K.norm(), 1e-10);
+    // Exactly 3 zero eigenvalues: the 4th smallest is far from zero.
+    Eigen::SelfAdjointEigenSolver<la::Matrix> eig(K);
+    EXPECT_LT(std::abs(eig.eigenvalues()(2)), 1e-9 * eig.eigenvalues().maxCoeff());
+    EXPECT_GT(eig.eigenvalues()(3), 1e-6 * eig.eigenvalues().maxCoeff());
+  }
+}
+
+// Reference: ALGORITHMS.md 3. Orthonormal Helmert rows: B_E B_E' = I; every gluing row sums
+// to zero and annihilates a rigid motion of the whole body; Dirichlet rows are unit rows.
+// A 2x2x2 partition has nodes shared by 8 subdomains.
+TEST(GluingMatrix, OrthonormalRowsAndRigidMotions)
+{
+  const auto m = distorted_box(2);
+  const auto partition = decomposition::partition_structured(m, {2, 2, 2});
+  ASSERT_EQ(partition.n_subdomains, 8);
+  const decomposition::Decomposition decomp(m, partition);
+  size_t max_copies = 0;
+  for (int32_t n = 0; n < m.n_nodes(); ++n)
+    max_copies = std::max(max_copies, decomp.copies(n).size());
+  EXPECT_EQ(max_copies, 8u);
+
+  const auto dirichlet = fem::collect_dirichlet(m, {{"xmin", {0.0, 0.0, 0.0}}});
+  const auto eq = decomposition::build_equality_rows(decomp, dirichlet);
+  // The 3x3 xmin nodes have 16 copies (4 corners x 1, 4 edge midpoints x 2, centre x 4);
+  // a unit row on every copy, 3 components each.
+  EXPECT_EQ(eq.n_dirichlet, 48);
+  la::Matrix B = la::Matrix::Zero(eq.rows.n_rows(), decomp.n_primal());
+  for (int64_t r = 0; r < eq.rows.n_rows(); ++r)
+    for (const auto& e : eq.rows.row(r))
+      B(r, decomp.offset(e.subdomain) + e.dof) += e.value;
+  EXPECT_LT((B * B.transpose() - la::Matrix::Identity(B.rows(), B.rows())).norm(), 1e-12);
+
+  // A rigid motion of the glued body, copied to every subdomain, satisfies the gluing rows.
+  la::Vector rigid(3 * m.n_nodes());
+  const Eigen::Vector3d omega(0.3, -0.2, 0.5), t(1, 2, 3);
+  for (int32_t n = 0; n < m.n_nodes(); ++n)
+    rigid.segment<3>(3 * n) = t + omega.cross(Eigen::Vector3d(m.nodes.row(n).transpose()));
+  const la::Vector Bu = B * decomp.scatter_copy(rigid);
+  EXPECT_LT(Bu.head(eq.n_gluing).norm(), 1e-12 * rigid.norm());
+  for (int64_t r = 0; r < eq.n_gluing; ++r)
+  {
+    double sum = 0;
+    for (const auto& e : eq.rows.row(r))
+      sum += e.value;
+    EXPECT_NEAR(sum, 0.0, 1e-14);
+  }
+}
+
+// Reference: METIS with the contiguity option and the connectivity split give face-
+// connected subdomains, each in one body, covering every cell.
+TEST(Partition, MetisGivesConnectedSubdomainsPerBody)
+{
+  auto m = distorted_box(3);
+  mesh::BoxParameters p;
+  p.origin = Eigen::Vector3d(0, 0, 1.5);
+  p.nx = 3;
+  p.ny = 3;
+  p.nz = 3;
+  p.body_name = "upper";
+  mesh::append_mesh(m, mesh::generate_box(p), "upper_");
+  ASSERT_EQ(m.n_bodies(), 2);
+  const auto partition = decomposition::partition_metis(m, 9);
+  EXPECT_GE(partition.n_subdomains, 9);
+  const auto split = decomposition::split_disconnected(m, partition);
+  EXPECT_EQ(split.n_subdomains, partition.n_subdomains); // already connected
+  std::vector<std::set<int32_t>> bodies(partition.n_subdomains);
+  for (int32_t c = 0; c < m.n_cells(); ++c)
+    bodies[partition.cell_subdomain[c]].insert(m.cell_body[c]);
+  for (const auto& b : bodies)
+    EXPECT_EQ(b.size(), 1u);
+  EXPECT_THROW(decomposition::partition_metis(m, 1), feticon::Error);
+}

@@ -1,0 +1,156 @@
+/// Linear Total FETI against an independent direct CHOLMOD solve of the undecomposed
+/// problem, and numerical scalability with H/h fixed (issue 3).
+
+#include "decomposition/constraint_rows.hpp"
+#include "decomposition/subdomain_operators.hpp"
+#include "dual/equality_feti.hpp"
+#include "fem/loads.hpp"
+#include "la/cholmod.hpp"
+#include "mesh/box.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+using namespace feticon;
+
+namespace
+{
+/// Clamped at x = 0, loaded by a traction on x = L: load and supports on different
+/// subdomains for every partition used below.
+struct BeamProblem
+{
+  mesh::HexMesh mesh;
+  fem::Material material{2e11, 0.3};
+  fem::ConstrainedDofs dirichlet;
+  la::Vector f;
+};
+
+BeamProblem beam(int nx, int ny, int nz, Eigen::Vector3d lengths)
+{
+  BeamProblem p;
+  mesh::BoxParameters bp;
+  bp.lengths = lengths;
+  bp.nx = nx;
+  bp.ny = ny;
+  bp.nz = nz;
+  p.mesh = mesh::generate_box(bp);
+  p.dirichlet = fem::collect_dirichlet(p.mesh, {{"xmin", {0.0, 0.0, 0.0}}});
+  p.f = la::Vector::Zero(3 * p.mesh.n_nodes());
+  fem::add_face_traction(p.mesh, p.mesh.face_set("xmax"), Eigen::Vector3d(1e7, -3e7, 2e7), p.f);
+  return p;
+}
+
+/// Reference: direct solve of the undecomposed problem with Dirichlet elimination.
+la::Vector direct_solution(const BeamProblem& p)
+{
+  fem::Assembler assembler(p.mesh, fem::whole_mesh_domain(p.mesh), {p.material},
+                           fem::Kinematics::linear);
+  const la::SparseMatrix K = assembler.stiffness(la::Vector::Zero(p.f.size()),
+                                                 fem::StiffnessKind::tangent);
+  const fem::DirichletElimination elim(p.f.size(), p.dirichlet);
+  la::CholmodFactor factor;
+  factor.factorize(elim.reduce_matrix(K));
+  return elim.expand(factor.solve(elim.reduce_rhs(K, p.f)));
+}
+
+struct FetiRun
+{
+  la::Vector u_global;
+  double gluing_jump;
+  qp::QpReport report;
+};
+
+FetiRun feti_solution(const BeamProblem& p, const decomposition::Partition& partition,
+                      double rtol, decomposition::GeneralizedInverseMethod method =
+                                       decomposition::GeneralizedInverseMethod::fixing_dofs)
+{
+  const decomposition::Decomposition decomp(p.mesh, partition);
+  decomposition::SubdomainSystem system(decomp, {p.material}, fem::Kinematics::linear, method);
+  system.update(la::Vector::Zero(decomp.n_primal()));
+  const auto rows = decomposition::build_equality_rows(decomp, p.dirichlet);
+  const dual::FetiOperators feti(system, rows.rows);
+  qp::CgOptions options;
+  options.rtol = rtol;
+  const auto solution = dual::solve_equality_feti(feti, rows.rows.c_vector(),
+                                                  decomp.scatter_split(p.f), options);
+  EXPECT_TRUE(solution.report.converged) << solution.report.reason;
+  const la::Vector Bu = feti.apply_B(solution.u) - rows.rows.c_vector();
+  return {decomp.gather_mean(solution.u), Bu.norm() / solution.u.norm(), solution.report};
+}
+} // namespace
+
+// Reference: direct CHOLMOD solve of the same undecomposed problem. Tolerance 1e-8 relative
+// (issue 3); projected CG stopped at ||P r|| <= 1e-11 ||P b||, so the dual error and with it
+// the displacement error are well below that.
+TEST(FetiLinear, MatchesDirectSolveStructuredAndMetis)
+{
+  const BeamProblem p = beam(6, 6, 6, Eigen::Vector3d(3, 1, 1));
+  const la::Vector u_ref = direct_solution(p);
+  struct Case
+  {
+    const char* name;
+    decomposition::Partition partition;
+  };
+  std::vector<Case> cases = {
+      {"structured 1", decomposition::partition_structured(p.mesh, {1, 1, 1})},
+      {"structured 2", decomposition::partition_structured(p.mesh, {2, 1, 1})},
+      {"structured 8", decomposition::partition_structured(p.mesh, {2, 2, 2})},
+      {"structured 27", decomposition::partition_structured(p.mesh, {3, 3, 3})},
+      {"metis 2", decomposition::partition_metis(p.mesh, 2)},
+      {"metis 8", decomposition::partition_metis(p.mesh, 8)},
+      {"metis 27", decomposition::partition_metis(p.mesh, 27)},
+  };
+  for (const Case& c : cases)
+  {
+    const FetiRun run = feti_solution(p, c.partition, 1e-11);
+    const double error = (run.u_global - u_ref).norm() / u_ref.norm();
+    std::printf("%-14s subdomains %3d  CG iterations %4d  |u - u_direct|/|u_direct| = %.2e  "
+                "|Bu - c|/|u| = %.1e\n",
+                c.name, c.partition.n_subdomains, run.report.iterations, error, run.gluing_jump);
+    EXPECT_LT(error, 1e-8) << c.name;
+    EXPECT_LT(run.gluing_jump, 1e-8) << c.name;
+  }
+  // The regularized generalized inverse gives the same answer.
+  const FetiRun reg = feti_solution(p, decomposition::partition_structured(p.mesh, {2, 2, 2}), 1e-11,
+                                    decomposition::GeneralizedInverseMethod::regularization);
+  EXPECT_LT((reg.u_global - u_ref).norm() / u_ref.norm(), 1e-8);
+}
+
+// Reference: Total FETI theory (Dostál, Horák, Kučera 2006): kappa(PFP | Im P) <= C H/h, so
+// with H/h fixed the CG iteration count is bounded independently of h. Issue 3 asks for
+// less than 20% growth from h to h/4. Unit cube, H/h = 4, h = 1/8, 1/16, 1/32.
+TEST(FetiLinear, NumericalScalabilityWithFixedHOverSmallH)
+{
+  std::vector<int> iterations;
+  std::printf("\n%8s %12s %12s %10s %14s %10s\n", "1/h", "subdomains", "dual size", "CG iter",
+              "time/iter (s)", "rel. res.");
+  for (int n : {8, 16, 32})
+  {
+    const BeamProblem p = beam(n, n, n, Eigen::Vector3d(1, 1, 1));
+    const int parts = n / 4;
+    const decomposition::Decomposition decomp(
+        p.mesh, decomposition::partition_structured(p.mesh, {parts, parts, parts}));
+    decomposition::SubdomainSystem system(decomp, {p.material}, fem::Kinematics::linear,
+                                          decomposition::GeneralizedInverseMethod::fixing_dofs);
+    system.update(la::Vector::Zero(decomp.n_primal()));
+    const auto rows = decomposition::build_equality_rows(decomp, p.dirichlet);
+    const dual::FetiOperators feti(system, rows.rows);
+    qp::CgOptions options;
+    options.rtol = 1e-6;
+    const auto start = std::chrono::steady_clock::now();
+    const auto solution = dual::solve_equality_feti(feti, rows.rows.c_vector(),
+                                                    decomp.scatter_split(p.f), options);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_TRUE(solution.report.converged);
+    iterations.push_back(solution.report.iterations);
+    std::printf("%8d %12d %12ld %10d %14.2e %10.1e\n", n, decomp.n_subdomains(),
+                static_cast<long>(feti.n_dual()), solution.report.iterations,
+                seconds / std::max(1, solution.report.iterations),
+                solution.report.projected_gradient_norm);
+  }
+  EXPECT_LT(iterations.back(), 1.2 * iterations.front());
+}
