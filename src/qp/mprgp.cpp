@@ -1,0 +1,312 @@
+#include "qp/mprgp.hpp"
+
+#include "common/error.hpp"
+#include "common/log.hpp"
+#include "common/timer.hpp"
+#include "qp/norm_estimate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <utility>
+
+namespace feticon::qp
+{
+namespace
+{
+using la::Index;
+using la::Vector;
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+/// Squared norms of phi and beta and the product phi~'phi at a feasible x.
+struct GradientSplit
+{
+  double free_norm2 = 0.0;
+  double chopped_norm2 = 0.0;
+  double reduced_free_dot_free = 0.0;
+};
+
+GradientSplit split_gradient(const Vector& x, const Vector& g, const Vector& lower,
+                             double alpha_bar)
+{
+  GradientSplit split;
+  for (Index i = 0; i < x.size(); ++i)
+  {
+    if (x[i] > lower[i])
+    {
+      split.free_norm2 += g[i] * g[i];
+      split.reduced_free_dot_free += std::min((x[i] - lower[i]) / alpha_bar, g[i]) * g[i];
+    }
+    else if (g[i] < 0.0)
+      split.chopped_norm2 += g[i] * g[i];
+  }
+  return split;
+}
+
+/// phi: g on the free set, 0 on the active set.
+void free_gradient(const Vector& x, const Vector& g, const Vector& lower, Vector& phi)
+{
+  phi = (x.array() > lower.array()).select(g, 0.0);
+}
+
+/// beta: min(g, 0) on the active set, 0 on the free set.
+void chopped_gradient(const Vector& x, const Vector& g, const Vector& lower, Vector& beta)
+{
+  beta = (x.array() > lower.array()).select(0.0, g.cwiseMin(0.0));
+}
+
+/// Largest step along -p that keeps x >= lower, and the component that blocks it (-1 if
+/// none does).
+double feasible_step(const Vector& x, const Vector& p, const Vector& lower, Index& blocking)
+{
+  double alpha = infinity;
+  blocking = -1;
+  for (Index i = 0; i < x.size(); ++i)
+  {
+    if (p[i] > 0.0 && std::isfinite(lower[i]))
+    {
+      const double step = (x[i] - lower[i]) / p[i];
+      if (step < alpha)
+      {
+        alpha = step;
+        blocking = i;
+      }
+    }
+  }
+  return alpha;
+}
+
+void check_input(const la::LinearOperator& A, const Vector& b, const Vector& lower,
+                 const Vector& x)
+{
+  const Index n = A.size();
+  FETICON_CHECK(b.size() == n, "Mprgp::solve: b has size " << b.size()
+                                   << " but the operator has size " << n);
+  FETICON_CHECK(lower.size() == n, "Mprgp::solve: the lower bound has size "
+                                       << lower.size() << " but the operator has size " << n);
+  FETICON_CHECK(x.size() == n, "Mprgp::solve: the initial guess has size "
+                                   << x.size() << " but the operator has size " << n);
+  for (Index i = 0; i < n; ++i)
+  {
+    FETICON_CHECK(std::isfinite(b[i]), "Mprgp::solve: b[" << i << "] = " << b[i]
+                                           << " is not finite; check the right-hand side");
+    FETICON_CHECK(!std::isnan(lower[i]) && lower[i] != infinity,
+                  "Mprgp::solve: lower bound l[" << i << "] = " << lower[i]
+                                                 << "; bounds must be finite or -inf");
+    FETICON_CHECK(std::isfinite(x[i]), "Mprgp::solve: initial guess x[" << i << "] = "
+                                           << x[i] << " is not finite");
+  }
+}
+
+void log_iterate(const MprgpIterate& it, double tolerance, bool custom_stop)
+{
+  char line[160];
+  if (custom_stop)
+    std::snprintf(line, sizeof line,
+                  "mprgp %6d %-13s |g_P| %.3e |phi| %.3e |beta| %.3e tol caller  f %.9e",
+                  it.iteration, to_string(it.step), it.projected_gradient_norm,
+                  it.free_gradient_norm, it.chopped_gradient_norm, it.cost);
+  else
+    std::snprintf(line, sizeof line,
+                  "mprgp %6d %-13s |g_P| %.3e |phi| %.3e |beta| %.3e tol %.3e f %.9e",
+                  it.iteration, to_string(it.step), it.projected_gradient_norm,
+                  it.free_gradient_norm, it.chopped_gradient_norm, tolerance, it.cost);
+  log::iteration(line);
+}
+
+std::string format_number(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3e", value);
+  return text;
+}
+} // namespace
+
+const char* to_string(MprgpStep step)
+{
+  switch (step)
+  {
+  case MprgpStep::start:
+    return "start";
+  case MprgpStep::cg:
+    return "cg";
+  case MprgpStep::expansion:
+    return "expansion";
+  case MprgpStep::proportioning:
+    return "proportioning";
+  }
+  return "unknown";
+}
+
+Mprgp::Mprgp(const la::LinearOperator& A, MprgpOptions options)
+    : _A(A), _options(std::move(options)), _alpha_bar(_options.alpha_bar)
+{
+  FETICON_CHECK(_options.rtol >= 0.0, "Mprgp: rtol = " << _options.rtol << " must be >= 0");
+  FETICON_CHECK(_options.gamma > 0.0, "Mprgp: gamma = " << _options.gamma << " must be > 0");
+  FETICON_CHECK(_options.max_iterations >= 0,
+                "Mprgp: max_iterations = " << _options.max_iterations << " must be >= 0");
+  FETICON_CHECK(_options.alpha_bar >= 0.0 && std::isfinite(_options.alpha_bar),
+                "Mprgp: alpha_bar = " << _options.alpha_bar
+                                      << " must be > 0 (or 0 to estimate 1.8/||A||)");
+  FETICON_CHECK(_options.power_iterations >= 1,
+                "Mprgp: power_iterations = " << _options.power_iterations << " must be >= 1");
+  FETICON_CHECK(_options.gradient_refresh >= 1,
+                "Mprgp: gradient_refresh = " << _options.gradient_refresh << " must be >= 1");
+}
+
+QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
+{
+  const auto start_time = std::chrono::steady_clock::now();
+  check_input(_A, b, lower, x);
+  QpReport report;
+  auto finish = [&](bool converged, std::string reason) {
+    report.converged = converged;
+    report.reason = std::move(reason);
+    report.seconds = seconds_since(start_time);
+    return report;
+  };
+  if (_A.size() == 0)
+    return finish(true, "empty problem");
+
+  if (_alpha_bar == 0.0)
+  {
+    const NormEstimate norm = estimate_norm(_A, _options.power_iterations);
+    report.hessian_multiplications += norm.applications;
+    if (!std::isfinite(norm.value))
+      return finish(false, "power iteration for ||A|| gave a non-finite Rayleigh quotient "
+                           "v'Av = " + format_number(norm.value));
+    if (!(norm.value > 0.0))
+      return finish(false, "operator is not positive definite: power iteration Rayleigh "
+                           "quotient v'Av = " + format_number(norm.value) + " <= 0");
+    _alpha_bar = 1.8 / norm.value;
+  }
+
+  x = x.cwiseMax(lower);
+  Vector g;
+  _A.apply(x, g);
+  g -= b;
+  ++report.hessian_multiplications;
+
+  const double b_norm = b.norm();
+  const double tolerance = _options.rtol * (b_norm > 0.0 ? b_norm : 1.0);
+  const bool custom_stop = static_cast<bool>(_options.stop);
+  Vector p, q, phi, beta, y;
+  free_gradient(x, g, lower, p);
+  MprgpStep step = MprgpStep::start;
+
+  for (;;)
+  {
+    const GradientSplit split = split_gradient(x, g, lower, _alpha_bar);
+    const double cost = 0.5 * (x.dot(g) - x.dot(b));
+    const double gp_norm = std::sqrt(split.free_norm2 + split.chopped_norm2);
+    report.projected_gradient_norm = gp_norm;
+    report.cost = cost;
+    const MprgpIterate iterate{report.iterations, step, gp_norm, std::sqrt(split.free_norm2),
+                               std::sqrt(split.chopped_norm2), cost};
+    if (_options.monitor)
+      _options.monitor(iterate);
+    if (log::enabled(log::Level::iterations))
+      log_iterate(iterate, tolerance, custom_stop);
+
+    // Stopping tests, in this order: a NaN must not pass as converged.
+    if (!std::isfinite(gp_norm))
+      return finish(false, "projected gradient norm is not finite (" + format_number(gp_norm) +
+                               ") at iteration " + std::to_string(report.iterations));
+    if (custom_stop && _options.stop(x, g, gp_norm))
+      return finish(true, "caller's stopping test met, |g_P| = " + format_number(gp_norm));
+    if (!custom_stop && gp_norm <= tolerance)
+      return finish(true, "|g_P| = " + format_number(gp_norm) + " <= " +
+                              (b_norm > 0.0 ? "rtol |b| = " : "rtol (b = 0) = ") +
+                              format_number(tolerance));
+    if (gp_norm == 0.0)
+      return finish(true, "projected gradient is exactly zero (KKT conditions hold)");
+    if (report.iterations >= _options.max_iterations)
+      return finish(false, "maximum number of iterations (" +
+                               std::to_string(_options.max_iterations) + ") reached, |g_P| = " +
+                               format_number(gp_norm));
+
+    const double gamma2 = _options.gamma * _options.gamma;
+    if (split.chopped_norm2 <= gamma2 * split.reduced_free_dot_free)
+    {
+      // Proportional x: CG direction p in the current face.
+      _A.apply(p, q);
+      ++report.hessian_multiplications;
+      const double pq = p.dot(q);
+      if (!(pq > 0.0))
+        return finish(false, "operator is not positive definite on the search direction: "
+                             "p'Ap = " + format_number(pq) + " <= 0 at iteration " +
+                                 std::to_string(report.iterations));
+      const double alpha_cg = g.dot(p) / pq;
+      Index blocking = -1;
+      const double alpha_f = feasible_step(x, p, lower, blocking);
+      // A NaN alpha_cg takes the CG branch and is caught by the finiteness test.
+      if (!(alpha_cg > alpha_f))
+      {
+        // CG step. alpha_cg <= alpha_f keeps x feasible up to round-off, which the clamp
+        // removes so that x >= l holds exactly.
+        x -= alpha_cg * p;
+        x = x.cwiseMax(lower);
+        g -= alpha_cg * q;
+        free_gradient(x, g, lower, phi);
+        p = phi - (phi.dot(q) / pq) * p;
+        ++report.cg_steps;
+        step = MprgpStep::cg;
+      }
+      else
+      {
+        // Expansion step: feasible half step to the blocking bound, then the projected
+        // gradient step y = P(x - alpha_bar phi) = x - alpha_bar phi~ (the identity of
+        // ALGORITHMS.md section 5); the projection puts active components exactly on l.
+        x -= alpha_f * p;
+        x[blocking] = lower[blocking];
+        x = x.cwiseMax(lower);
+        g -= alpha_f * q;
+        free_gradient(x, g, lower, phi);
+        y = (x - _alpha_bar * phi).cwiseMax(lower);
+        _A.apply(y - x, q);
+        ++report.hessian_multiplications;
+        g += q;
+        x.swap(y);
+        free_gradient(x, g, lower, p);
+        ++report.expansion_steps;
+        step = MprgpStep::expansion;
+        // f is monotone only for alpha_bar <= 2/||A||, and the power estimate of ||A|| is
+        // from below; the margin ignores round-off of the cost evaluation.
+        const double new_cost = 0.5 * (x.dot(g) - x.dot(b));
+        if (new_cost > cost + 1e-12 * std::abs(cost))
+          _alpha_bar *= 0.5;
+      }
+    }
+    else
+    {
+      // Proportioning step along beta: releases active components with negative gradient.
+      chopped_gradient(x, g, lower, beta);
+      _A.apply(beta, q);
+      ++report.hessian_multiplications;
+      const double beta_q = beta.dot(q);
+      if (!(beta_q > 0.0))
+        return finish(false, "operator is not positive definite on the search direction: "
+                             "beta'A beta = " + format_number(beta_q) + " <= 0 at iteration " +
+                                 std::to_string(report.iterations));
+      const double alpha = g.dot(beta) / beta_q;
+      x -= alpha * beta;
+      g -= alpha * q;
+      free_gradient(x, g, lower, p);
+      ++report.proportioning_steps;
+      step = MprgpStep::proportioning;
+    }
+    ++report.iterations;
+
+    if (report.iterations % _options.gradient_refresh == 0)
+    {
+      _A.apply(x, g);
+      g -= b;
+      ++report.hessian_multiplications;
+    }
+  }
+}
+} // namespace feticon::qp

@@ -1,0 +1,128 @@
+#pragma once
+/// @file MPRGP: modified proportioning with reduced gradient projections.
+///
+/// Solves the bound-constrained quadratic program
+///
+///     min f(x) = 1/2 x'Ax - b'x   subject to   x >= l,
+///
+/// with A symmetric positive definite (on the iterates' span) and l_i possibly -infinity,
+/// by the algorithm of Dostal & Schoberl (2005), "Minimizing quadratic functions subject to
+/// bound constraints with the rate of convergence and finite termination", Comput. Optim.
+/// Appl. 30, exactly as written in ALGORITHMS.md section 5. At a feasible x with gradient
+/// g = Ax - b, free set F = {i : x_i > l_i} and active set the rest:
+///   phi   free gradient,        phi_i = g_i on F, 0 elsewhere;
+///   beta  chopped gradient,     beta_i = min(g_i, 0) on the active set, 0 elsewhere;
+///   g_P   projected gradient,   g_P = phi + beta;
+///   phi~  reduced free gradient, phi~_i = min((x_i - l_i)/alpha_bar, phi_i) on F.
+/// x is proportional when ||beta||^2 <= gamma^2 phi~'phi; then MPRGP takes a CG step, or, if
+/// that leaves the feasible set, an expansion step (feasible half step + projected gradient
+/// step of length alpha_bar); otherwise a proportioning step along beta.
+///
+/// Operator products (QpReport::hessian_multiplications) are counted exactly:
+///
+///     power iterations (first solve only, when alpha_bar is estimated)
+///   + 1                                   initial gradient g = Ax - b
+///   + cg_steps + 2 expansion_steps + proportioning_steps
+///   + floor(iterations / gradient_refresh) gradient refreshes g = Ax - b
+///
+/// Usage:
+///   qp::Mprgp mprgp(A, {.rtol = 1e-6});
+///   la::Vector x = la::Vector::Zero(n);          // projected onto x >= l by solve()
+///   const qp::QpReport report = mprgp.solve(b, lower, x);
+///   if (!report.converged) log::warning(report.reason);
+
+#include "la/operator.hpp"
+#include "qp/qp_report.hpp"
+
+#include <functional>
+
+namespace feticon::qp
+{
+/// What produced an MPRGP iterate.
+enum class MprgpStep
+{
+  start,        ///< the projected initial guess
+  cg,           ///< conjugate gradient step inside the current face
+  expansion,    ///< feasible half step + gradient projection with alpha_bar
+  proportioning ///< step along the chopped gradient, releasing active components
+};
+
+/// Lower-case name of a step kind, for logs and monitors.
+const char* to_string(MprgpStep step);
+
+/// The state handed to MprgpOptions::monitor after every step (and for the start point).
+struct MprgpIterate
+{
+  /// Steps taken so far (0 for the start point).
+  int iteration = 0;
+  /// The step that produced this iterate.
+  MprgpStep step = MprgpStep::start;
+  /// ||g_P||.
+  double projected_gradient_norm = 0.0;
+  /// ||phi||.
+  double free_gradient_norm = 0.0;
+  /// ||beta||.
+  double chopped_gradient_norm = 0.0;
+  /// f(x) = 1/2 x'Ax - b'x, evaluated as 1/2 x'(g - b) from the recursive gradient.
+  double cost = 0.0;
+};
+
+/// Parameters of Mprgp, with the defaults of ALGORITHMS.md section 5.
+struct MprgpOptions
+{
+  /// Default stopping test ||g_P|| <= rtol ||b||; absolute ||g_P|| <= rtol when b = 0.
+  double rtol = 1e-5;
+  /// Proportioning parameter Gamma > 0 of the test ||beta||^2 <= Gamma^2 phi~'phi.
+  double gamma = 1.0;
+  /// Steps allowed before the solve stops unconverged.
+  int max_iterations = 10000;
+  /// Expansion step length in (0, 2/||A||]; 0 means 1.8/nu with nu from estimate_norm().
+  /// Halved whenever an expansion step increases f.
+  double alpha_bar = 0.0;
+  /// Power iterations for the ||A|| estimate when alpha_bar = 0.
+  int power_iterations = 30;
+  /// Recompute g = Ax - b every this many steps to remove drift of the recursive update.
+  int gradient_refresh = 50;
+  /// If set, replaces the default stopping test: the solve stops (converged) as soon as it
+  /// returns true for the current x, recursive gradient g and ||g_P||. SMALBE-M uses it for
+  /// its inner rule ||g_P|| <= min(M ||G mu||, eta).
+  std::function<bool(const la::Vector& x, const la::Vector& g, double projected_gradient_norm)>
+      stop{};
+  /// If set, called for the start point and after every step.
+  std::function<void(const MprgpIterate&)> monitor{};
+};
+
+/// Bound-constrained QP solver; see the file comment for the problem and the algorithm.
+///
+/// The object keeps alpha_bar between solves, so that repeated solves with the same A (the
+/// inner solves of SMALBE-M) pay for the norm estimate once; the power iterations are
+/// counted in the report of the solve that ran them. With log level `iterations` every step
+/// is logged: iteration, step kind, ||g_P||, ||phi||, ||beta||, tolerance, cost.
+class Mprgp
+{
+public:
+  /// @param[in] A        symmetric operator, positive definite on the iterates' span; it
+  ///                     is referenced, not copied, and must outlive the Mprgp object.
+  /// @param[in] options  parameters; checked here (FETICON_CHECK).
+  Mprgp(const la::LinearOperator& A, MprgpOptions options);
+
+  /// @brief Minimizes 1/2 x'Ax - b'x subject to x >= lower.
+  /// @param[in]     b      right-hand side, finite, size A.size().
+  /// @param[in]     lower  bounds l, size A.size(); -infinity for unbounded components,
+  ///                       never NaN or +infinity.
+  /// @param[in,out] x      on input the initial guess (finite, size A.size()), projected
+  ///                       onto x >= l; on output the last iterate, always feasible.
+  /// @return counters and state; converged = false with a reason on max_iterations, a
+  ///         non-finite gradient norm or p'Ap <= 0 (A not positive definite).
+  /// Throws feticon::Error for sizes or values that violate the above.
+  QpReport solve(const la::Vector& b, const la::Vector& lower, la::Vector& x);
+
+  /// The current expansion step length (0 before the first solve when it is estimated).
+  double alpha_bar() const { return _alpha_bar; }
+
+private:
+  const la::LinearOperator& _A;
+  MprgpOptions _options;
+  double _alpha_bar;
+};
+} // namespace feticon::qp

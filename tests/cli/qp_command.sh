@@ -1,0 +1,121 @@
+#!/usr/bin/env bash
+# CLI test of `feticon qp` (app/qp_command.cpp).
+# Usage: bash qp_command.sh <path-to-feticon> <source-dir>
+#
+# Problem: the 1D obstacle problem -u'' = -15 on (0,1), u(0) = u(1) = 0,
+# u >= sin(4 pi x - pi/6)/2 - 2 at n = 20 interior points, A = tridiag(-1,2,-1)/h^2
+# (stored as a symmetric lower triangle), b = -15. Checks: exit status 0, one JSON line with
+# the nine report keys and converged = true, x written and x >= l exactly; an unconstrained
+# run (l = -inf) converges; an iteration limit gives exit status 3 with the JSON still
+# printed; malformed input gives a non-zero status and exactly one line on stderr.
+set -euo pipefail
+
+feticon=$1
+python=/usr/bin/python3 # Debian's python3 (the first one on PATH may be a different build)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+
+fail() {
+  echo "FAIL: $*" >&2
+  exit 1
+}
+
+n=20
+awk -v n="$n" 'BEGIN {
+  h = 1.0 / (n + 1)
+  print "%%MatrixMarket matrix coordinate real symmetric"
+  print n, n, 2 * n - 1
+  for (i = 1; i <= n; ++i) {
+    printf "%d %d %.17g\n", i, i, 2.0 / (h * h)
+    if (i < n) printf "%d %d %.17g\n", i + 1, i, -1.0 / (h * h)
+  }
+}' >A.mtx
+awk -v n="$n" 'BEGIN {
+  print "%%MatrixMarket matrix array real general"
+  print n, 1
+  for (i = 1; i <= n; ++i) print -15
+}' >b.mtx
+awk -v n="$n" 'BEGIN {
+  pi = atan2(0, -1)
+  h = 1.0 / (n + 1)
+  print "%%MatrixMarket matrix array real general"
+  print n, 1
+  for (i = 1; i <= n; ++i) printf "%.17g\n", 0.5 * sin(4 * pi * i * h - pi / 6) - 2
+}' >l.mtx
+
+# Checks that $1 holds one JSON object with the nine keys and converged == $2.
+check_json() {
+  "$python" - "$1" "$2" <<'PY'
+import json, sys
+lines = open(sys.argv[1]).read().splitlines()
+assert len(lines) == 1, f"expected one line on stdout, got {len(lines)}: {lines}"
+report = json.loads(lines[0])
+assert isinstance(report, dict), "stdout is not a JSON object"
+keys = ["converged", "iterations", "cg_steps", "expansion_steps", "proportioning_steps",
+        "hessian_multiplications", "projected_gradient_norm", "cost", "seconds"]
+missing = [k for k in keys if k not in report]
+assert not missing, f"missing keys {missing}"
+assert report["converged"] is (sys.argv[2] == "true"), f"converged = {report['converged']}"
+steps = report["cg_steps"] + report["expansion_steps"] + report["proportioning_steps"]
+assert steps == report["iterations"], "step counts do not add up to iterations"
+assert report["hessian_multiplications"] > report["iterations"], "too few products"
+PY
+}
+
+# 1. The obstacle problem converges; x is written and feasible.
+status=0
+"$feticon" qp --A A.mtx --b b.mtx --lower l.mtx --rtol 1e-8 --out x.mtx >out.json 2>err.txt ||
+  status=$?
+[ "$status" -eq 0 ] || fail "obstacle run: exit status $status: $(cat err.txt)"
+check_json out.json true || fail "obstacle run: bad JSON: $(cat out.json)"
+[ -s x.mtx ] || fail "x.mtx not written"
+"$python" - <<'PY' || fail "x violates x >= l or has the wrong size"
+def read(path):
+    lines = [s for s in open(path).read().splitlines() if s.strip() and not s.startswith("%")]
+    rows, cols = map(int, lines[0].split())
+    assert cols == 1 and len(lines) == rows + 1
+    return [float(s) for s in lines[1:]]
+x, lower = read("x.mtx"), read("l.mtx")
+assert len(x) == len(lower) == 20
+assert all(xi >= li for xi, li in zip(x, lower)), "x < l somewhere"
+assert any(xi == li for xi, li in zip(x, lower)), "no contact, but the obstacle is active"
+PY
+
+# 2. Without finite bounds (l = -inf parsed from the file) MPRGP is plain CG.
+awk -v n="$n" 'BEGIN {
+  print "%%MatrixMarket matrix array real general"
+  print n, 1
+  for (i = 1; i <= n; ++i) print "-inf"
+}' >free.mtx
+status=0
+"$feticon" qp --A A.mtx --b b.mtx --lower free.mtx >free.json 2>err.txt || status=$?
+[ "$status" -eq 0 ] || fail "unbounded run: exit status $status: $(cat err.txt)"
+check_json free.json true || fail "unbounded run: bad JSON: $(cat free.json)"
+
+# 3. An iteration limit is a result: exit status 3, JSON still printed, x still written.
+status=0
+"$feticon" qp --A A.mtx --b b.mtx --lower l.mtx --rtol 1e-12 --max-iterations 2 \
+  --out x2.mtx >limit.json 2>err.txt || status=$?
+[ "$status" -eq 3 ] || fail "iteration limit: expected exit status 3, got $status"
+check_json limit.json false || fail "iteration limit: bad JSON: $(cat limit.json)"
+[ -s x2.mtx ] || fail "iteration limit: x2.mtx not written"
+
+# 4. Malformed input: non-zero status, exactly one line on stderr naming the file and line.
+printf '%%%%MatrixMarket matrix coordinate real general\n2 2 1\n1 3 1.0\n' >bad.mtx
+status=0
+"$feticon" qp --A bad.mtx --b b.mtx >bad.out 2>bad.err || status=$?
+[ "$status" -ne 0 ] || fail "malformed A accepted"
+[ "$(wc -l <bad.err)" -eq 1 ] || fail "expected one line on stderr, got: $(cat bad.err)"
+grep -q 'bad.mtx:3:' bad.err || fail "stderr does not name bad.mtx line 3: $(cat bad.err)"
+
+# 5. A nonsymmetric A is rejected the same way.
+printf '%%%%MatrixMarket matrix coordinate real general\n2 2 3\n1 1 2\n2 2 2\n1 2 1\n' >asym.mtx
+printf '%%%%MatrixMarket matrix array real general\n2 1\n1\n1\n' >b2.mtx
+status=0
+"$feticon" qp --A asym.mtx --b b2.mtx >asym.out 2>asym.err || status=$?
+[ "$status" -ne 0 ] || fail "nonsymmetric A accepted"
+[ "$(wc -l <asym.err)" -eq 1 ] || fail "expected one line on stderr, got: $(cat asym.err)"
+grep -q 'not symmetric' asym.err || fail "stderr does not say 'not symmetric': $(cat asym.err)"
+
+echo "qp_command: all checks passed"

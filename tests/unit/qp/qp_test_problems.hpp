@@ -1,0 +1,111 @@
+#pragma once
+/// Small hand-built operators and bound-constrained QPs for the qp unit tests.
+
+#include "la/operator.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+
+namespace feticon::test
+{
+/// A dense symmetric matrix as a LinearOperator that counts its applications, so that the
+/// solvers' product counters can be checked against what really happened.
+class CountingOperator : public la::LinearOperator
+{
+public:
+  explicit CountingOperator(const la::Matrix& matrix) : _matrix(matrix) {}
+  la::Index size() const override { return _matrix.rows(); }
+  void apply(const la::Vector& x, la::Vector& y) const override
+  {
+    ++applications;
+    y = _matrix * x;
+  }
+  mutable int applications = 0;
+
+private:
+  const la::Matrix& _matrix;
+};
+
+/// min 1/2 x'Ax - b'x subject to x >= lower.
+struct BoundQp
+{
+  la::Matrix A;
+  la::Vector b;
+  la::Vector lower;
+};
+
+/// A random n x n orthogonal matrix (Q factor of a Gaussian matrix).
+inline la::Matrix random_orthogonal(int n, std::mt19937& generator)
+{
+  std::normal_distribution<double> normal;
+  la::Matrix M(n, n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      M(i, j) = normal(generator);
+  return Eigen::HouseholderQR<la::Matrix>(M).householderQ();
+}
+
+/// Random SPD A = V diag(lambda) V' with eigenvalues log-spaced in [1, condition]; random b;
+/// about `unbounded_fraction` of the bounds are -inf, the others scattered around the
+/// unconstrained minimizer A^{-1} b so that a good fraction becomes active.
+inline BoundQp random_bound_qp(int n, unsigned seed, double condition = 100.0,
+                               double unbounded_fraction = 0.2)
+{
+  std::mt19937 generator(seed);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const la::Matrix V = random_orthogonal(n, generator);
+  la::Vector lambda(n);
+  for (int i = 0; i < n; ++i)
+    lambda[i] = std::pow(condition, n > 1 ? static_cast<double>(i) / (n - 1) : 0.0);
+  BoundQp qp;
+  qp.A = V * lambda.asDiagonal() * V.transpose();
+  qp.A = (0.5 * (qp.A + qp.A.transpose())).eval();
+  qp.b.resize(n);
+  for (int i = 0; i < n; ++i)
+    qp.b[i] = normal(generator);
+  const la::Vector unconstrained = qp.A.ldlt().solve(qp.b);
+  const double spread = std::sqrt(unconstrained.squaredNorm() / n);
+  qp.lower.resize(n);
+  for (int i = 0; i < n; ++i)
+    qp.lower[i] = uniform(generator) < unbounded_fraction
+                      ? -std::numeric_limits<double>::infinity()
+                      : unconstrained[i] + 0.5 * spread * normal(generator);
+  return qp;
+}
+
+/// The 1D obstacle problem -u'' = -15 on (0,1), u(0) = u(1) = 0, u >= sin(4 pi x - pi/6)/2 - 2
+/// at n interior points x_i = i h, h = 1/(n+1): A = tridiag(-1, 2, -1)/h^2, b = -15.
+inline BoundQp obstacle_problem(int n)
+{
+  const double h = 1.0 / (n + 1);
+  BoundQp qp;
+  qp.A = la::Matrix::Zero(n, n);
+  qp.b = la::Vector::Constant(n, -15.0);
+  qp.lower.resize(n);
+  for (int i = 0; i < n; ++i)
+  {
+    qp.A(i, i) = 2.0 / (h * h);
+    if (i > 0)
+      qp.A(i, i - 1) = qp.A(i - 1, i) = -1.0 / (h * h);
+    const double x = (i + 1) * h;
+    qp.lower[i] = 0.5 * std::sin(4.0 * std::numbers::pi * x - std::numbers::pi / 6.0) - 2.0;
+  }
+  return qp;
+}
+
+/// sqrt(sum of squares) of the projected gradient g_P of x (x >= lower assumed).
+inline double projected_gradient_norm(const la::Vector& x, const la::Vector& g,
+                                      const la::Vector& lower)
+{
+  double sum = 0.0;
+  for (la::Index i = 0; i < x.size(); ++i)
+  {
+    const double gp = x[i] > lower[i] ? g[i] : std::min(g[i], 0.0);
+    sum += gp * gp;
+  }
+  return std::sqrt(sum);
+}
+} // namespace feticon::test
