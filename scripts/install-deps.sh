@@ -7,6 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev          # dense/sparse containers, element algebra
   libsuitesparse-dev     # CHOLMOD factorizations
+  libopenblas0-pthread   # optimized BLAS behind CHOLMOD (else netlib reference BLAS)
   libmetis-dev           # graph partitioning
   libyaml-cpp-dev        # problem files
   libcli11-dev           # command line

@@ -6,7 +6,8 @@
 namespace feticon::dual
 {
 FetiSolution solve_equality_feti(const FetiOperators& feti, const la::Vector& c,
-                                 const la::Vector& f_stacked, const qp::CgOptions& options)
+                                 const la::Vector& f_stacked, const qp::CgOptions& options,
+                                 FetiPreconditioner preconditioner)
 {
   const CoarseProjector projector(feti.G());
   const la::Vector e = feti.apply_Rt(f_stacked);
@@ -19,7 +20,11 @@ FetiSolution solve_equality_feti(const FetiOperators& feti, const la::Vector& c,
   const ProjectorP P(projector, feti.n_dual());
   la::Vector mu = la::Vector::Zero(feti.n_dual());
   FetiSolution out;
-  out.report = qp::conjugate_gradient(PFP, b, mu, options, &P);
+  const LumpedPreconditioner lumped(feti);
+  qp::CgOptions cg = options;
+  if (preconditioner == FetiPreconditioner::lumped)
+    cg.preconditioner = &lumped;
+  out.report = qp::conjugate_gradient(PFP, b, mu, cg, &P);
   out.lambda = lambda_tilde + mu;
   const std::vector<char> all_rows(feti.n_dual(), 1);
   PrimalSolution primal = recover_primal(feti, f_stacked, c, out.lambda, all_rows);

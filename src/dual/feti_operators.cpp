@@ -128,6 +128,23 @@ la::Vector FetiOperators::apply_F(const la::Vector& lambda) const
   return y;
 }
 
+la::Vector FetiOperators::apply_lumped(const la::Vector& lambda) const
+{
+  la::Vector y = la::Vector::Zero(_n_dual);
+  for (int32_t s = 0; s < _system.n_subdomains(); ++s)
+  {
+    if (_rows[s].empty())
+      continue;
+    la::Vector local(static_cast<la::Index>(_rows[s].size()));
+    for (size_t j = 0; j < _rows[s].size(); ++j)
+      local(static_cast<la::Index>(j)) = lambda(_rows[s][j]);
+    const la::Vector out = _B[s] * (_system.operators(s).K * (_B[s].transpose() * local));
+    for (size_t j = 0; j < _rows[s].size(); ++j)
+      y(_rows[s][j]) += out(static_cast<la::Index>(j));
+  }
+  return y;
+}
+
 la::SparseMatrix FetiOperators::G_columns(const std::vector<char>& keep) const
 {
   FETICON_ASSERT(static_cast<int64_t>(keep.size()) == _n_dual, "mask size");

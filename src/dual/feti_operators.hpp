@@ -31,6 +31,9 @@ public:
   la::Vector apply_Rt(const la::Vector& u_stacked) const;
   /// F lambda = B K+ B' lambda.
   la::Vector apply_F(const la::Vector& lambda) const;
+  /// Lumped preconditioner B K B' lambda (Farhat, Mandel, Roux 1994): cheap, one sparse
+  /// product per subdomain.
+  la::Vector apply_lumped(const la::Vector& lambda) const;
   /// G lambda = R' B' lambda and G' alpha = B R alpha.
   la::Vector apply_G(const la::Vector& lambda) const { return _G * lambda; }
   la::Vector apply_Gt(const la::Vector& alpha) const { return _G.transpose() * alpha; }
@@ -47,6 +50,18 @@ private:
   std::vector<std::vector<int64_t>> _rows;  ///< per subdomain: global row ids of B_s
   std::vector<la::SparseMatrix> _B;         ///< per subdomain: |rows_s| x n_s
   la::SparseMatrix _G;
+};
+
+/// The lumped preconditioner B K B' as a LinearOperator.
+class LumpedPreconditioner : public la::LinearOperator
+{
+public:
+  explicit LumpedPreconditioner(const FetiOperators& feti) : _feti(feti) {}
+  la::Index size() const override { return _feti.n_dual(); }
+  void apply(const la::Vector& x, la::Vector& y) const override { y = _feti.apply_lumped(x); }
+
+private:
+  const FetiOperators& _feti;
 };
 
 /// F as a LinearOperator, optionally scaled by `scale` (F / ||PFP|| in the dual penalty).

@@ -6,12 +6,13 @@ namespace feticon::dual
 {
 CoarseProjector::CoarseProjector(const la::SparseMatrix& G) : _G(G)
 {
-  const la::Matrix GGt = la::Matrix(G * G.transpose());
+  const la::SparseMatrix GGt = G * G.transpose();
   _llt.compute(GGt);
   bool full_rank = _llt.info() == Eigen::Success;
   if (full_rank && GGt.rows() > 0)
   {
-    const auto d = _llt.matrixLLT().diagonal().cwiseAbs();
+    // Dependent rows of G show up as a (nearly) zero pivot of the factor.
+    const la::Vector d = _llt.matrixL().nestedExpression().diagonal().cwiseAbs();
     full_rank = d.minCoeff() > 1e-7 * d.maxCoeff();
   }
   FETICON_CHECK(full_rank, "the constraints do not suppress every rigid-body motion (G G' is "
@@ -27,26 +28,17 @@ la::Vector CoarseProjector::apply_Q(const la::Vector& lambda) const
 
 la::Vector CoarseProjector::apply_G_tilde(const la::Vector& lambda) const
 {
-  return _llt.matrixL().solve(_G * lambda);
+  return _llt.matrixL().solve(_llt.permutationP() * la::Vector(_G * lambda));
 }
 
 la::Vector CoarseProjector::apply_G_tilde_t(const la::Vector& omega) const
 {
-  return _G.transpose() * la::Vector(_llt.matrixU().solve(omega));
+  return _G.transpose() * la::Vector(_llt.permutationPinv() * la::Vector(_llt.matrixU().solve(omega)));
 }
 
 la::Vector CoarseProjector::particular_solution(const la::Vector& e) const
 {
   return _G.transpose() * coarse_solve(e);
-}
-
-double CoarseProjector::coarse_condition_estimate() const
-{
-  if (_llt.matrixLLT().rows() == 0)
-    return 1.0;
-  const auto d = _llt.matrixLLT().diagonal().cwiseAbs();
-  const double r = d.maxCoeff() / d.minCoeff();
-  return r * r;
 }
 
 void ProjectedOperator::apply(const la::Vector& x, la::Vector& y) const

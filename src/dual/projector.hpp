@@ -1,10 +1,13 @@
 #pragma once
 /// @file Coarse space projectors Q = G'(GG')^{-1}G and P = I - Q (ALGORITHMS.md section 1).
 ///
-/// GG' (dense, n_kernel x n_kernel) is factorized once, GG' = L L'; the orthonormalized
-/// G~ = L^{-1} G is applied implicitly (two triangular solves), so Q = G~' G~.
+/// GG' (sparse: subdomains couple only with neighbours) is factorized once by a sparse
+/// Cholesky with fill-reducing ordering, P_o GG' P_o' = L L'; the orthonormalized
+/// G~ = L^{-1} P_o G is applied implicitly (G~ G~' = I), so Q = G~' G~ = G'(GG')^{-1}G.
 
 #include "la/operator.hpp"
+
+#include <Eigen/SparseCholesky>
 
 namespace feticon::dual
 {
@@ -24,12 +27,9 @@ public:
   la::Vector coarse_solve(const la::Vector& y) const;
   /// Minimal-norm solution of G lambda = e: G'(GG')^{-1} e.
   la::Vector particular_solution(const la::Vector& e) const;
-  /// Condition number estimate of G G' (ratio of extreme diagonal entries of L, squared).
-  double coarse_condition_estimate() const;
-
 private:
   const la::SparseMatrix& _G;
-  Eigen::LLT<la::Matrix> _llt;
+  Eigen::SimplicialLLT<la::SparseMatrix> _llt;
 };
 
 /// P as a LinearOperator.

@@ -21,8 +21,8 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what)
   FETICON_CHECK(A.rows() == A.cols(), what << " is not square (" << A.rows() << " x "
                                           << A.cols() << ")");
   _impl = std::make_unique<Impl>();
-  // Supernodal LL^T: the fastest CHOLMOD mode for 3D elasticity factors.
-  _impl->solver.setMode(Eigen::CholmodSupernodalLLt);
+  // CHOLMOD picks simplicial (small subdomains: no BLAS call overhead) or supernodal.
+  _impl->solver.setMode(Eigen::CholmodAuto);
   _impl->solver.compute(A);
   if (_impl->solver.info() != Eigen::Success)
   {

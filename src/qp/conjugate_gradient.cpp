@@ -72,7 +72,20 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
   const double tolerance = options.rtol * (pb_norm > 0.0 ? pb_norm : 1.0);
   project(s, r);
   double rr = r.squaredNorm();
-  Vector p = r;
+  // Preconditioned direction z = P M P r (P M P is symmetric on Im P); z = r without M.
+  Vector z, mz;
+  auto precondition = [&](const Vector& residual, Vector& out) {
+    if (!options.preconditioner)
+    {
+      out = residual;
+      return;
+    }
+    options.preconditioner->apply(residual, mz);
+    project(mz, out);
+  };
+  precondition(r, z);
+  double rz = r.dot(z);
+  Vector p = z;
 
   auto finish = [&](bool converged, std::string reason) {
     report.converged = converged;
@@ -115,13 +128,15 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
       return finish(false, "operator is not positive definite on the search direction: "
                            "p'Ap = " + format_number(pq) + " <= 0 at iteration " +
                                std::to_string(report.iterations));
-    const double alpha = rr / pq;
+    const double alpha = rz / pq;
     x += alpha * p;
     s -= alpha * q;
     project(s, r);
-    const double rr_new = r.squaredNorm();
-    p = r + (rr_new / rr) * p;
-    rr = rr_new;
+    rr = r.squaredNorm();
+    precondition(r, z);
+    const double rz_new = r.dot(z);
+    p = z + (rz_new / rz) * p;
+    rz = rz_new;
     ++report.iterations;
   }
 }

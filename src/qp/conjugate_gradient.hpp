@@ -33,6 +33,9 @@ struct CgOptions
   int max_iterations = 10000;
   /// If set, called with (iteration, ||P r||) at the start and after every iteration.
   std::function<void(int iteration, double residual_norm)> monitor{};
+  /// Optional symmetric positive (semi)definite preconditioner M: directions are
+  /// z = P M P r. Not owned; must outlive the solve. Stopping stays on ||P r||.
+  const la::LinearOperator* preconditioner = nullptr;
 };
 
 /// @brief Solves A x = b by (projected) conjugate gradients.

@@ -1,0 +1,224 @@
+/// `feticon run`: solve a problem and write its results folder.
+
+#include "app/commands.hpp"
+#include "app/run_output.hpp"
+#include "common/error.hpp"
+#include "common/log.hpp"
+#include "io/atomic_file.hpp"
+#include "io/settings.hpp"
+#include "nonlinear/feti_contact_solver.hpp"
+#include "nonlinear/primal_penalty_solver.hpp"
+#include "problems/hertz.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+namespace feticon::app
+{
+namespace
+{
+struct RunOptions
+{
+  std::string problem_file;
+  std::string output = "results";
+  std::vector<std::string> overrides;
+  bool quiet = false;
+  bool verbose = false;
+};
+
+problems::HertzParameters hertz_parameters(const io::Settings& s)
+{
+  problems::HertzParameters p;
+  p.line_load = s.number("hertz.line_load");
+  p.mesh.refinement = s.number("hertz.refinement");
+  p.mesh.element_size = s.number("hertz.element_size");
+  p.mesh.master_ratio = s.number("hertz.master_ratio");
+  p.mesh.block_width = s.number("hertz.block_width");
+  p.mesh.block_depth = s.number("hertz.block_depth");
+  p.material = {s.number("material.young"), s.number("material.poisson")};
+  return p;
+}
+
+nonlinear::SolverSettings solver_settings(const io::Settings& s)
+{
+  nonlinear::SolverSettings out;
+  const std::string& method = s.text("method");
+  out.method = method == "smalbe"         ? nonlinear::ContactMethod::smalbe
+               : method == "dual_penalty" ? nonlinear::ContactMethod::dual_penalty
+                                          : nonlinear::ContactMethod::primal_penalty;
+  out.dual.method = out.method == nonlinear::ContactMethod::dual_penalty ? dual::DualMethod::dual_penalty
+                                                                        : dual::DualMethod::smalbe;
+  out.dual.rho = s.number("rho");
+  out.dual.rtol = s.number("qp.rtol");
+  out.dual.max_iterations = s.integer("qp.max_iterations");
+  out.eps_n_factor = s.number("eps_n");
+  const bool large = s.text("displacements") == "large";
+  out.kinematics = large ? fem::Kinematics::total_lagrangian : fem::Kinematics::linear;
+  out.load_steps = large ? s.integer("load_steps") : 1;
+  out.subdomains = s.integer("subdomains");
+  out.metis = s.text("partitioner") == "metis";
+  return out;
+}
+
+nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution)
+{
+  int iterations = 0, products = 0, smalbe = 0;
+  for (const auto& it : solution.history)
+  {
+    iterations += it.qp_iterations;
+    products += it.hessian_multiplications;
+    smalbe += it.smalbe_outer;
+  }
+  return {{"iterations", iterations},
+          {"hessian_multiplications", products},
+          {"smalbe_outer_iterations", smalbe},
+          {"outer_iterations", solution.history.size()}};
+}
+
+void run(const RunOptions& options)
+{
+  if (options.quiet)
+    log::set_level(log::Level::warning);
+  if (options.verbose)
+    log::set_level(log::Level::iterations);
+  io::Settings settings;
+  if (!options.problem_file.empty())
+    settings.load_yaml(options.problem_file);
+  for (const auto& o : options.overrides)
+    settings.set_override(o);
+
+  const std::filesystem::path out_dir(options.output);
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  FETICON_CHECK(!ec, "cannot create the output folder " << out_dir.string() << ": " << ec.message());
+  io::write_file_atomically(out_dir / "problem.yaml", settings.to_yaml());
+
+  TimerTable timers;
+  const problems::HertzParameters hertz = hertz_parameters(settings);
+  std::unique_ptr<fem::Problem> problem;
+  {
+    ScopedTimer t(timers, "mesh");
+    problem = std::make_unique<fem::Problem>(problems::hertz_problem(hertz));
+  }
+  const nonlinear::SolverSettings solver = solver_settings(settings);
+  const int64_t n_dofs = 3 * static_cast<int64_t>(problem->mesh.n_nodes());
+  log::info("feticon: problem " + problem->name + ", " + std::to_string(problem->mesh.n_cells()) +
+            " hex8 cells, " + std::to_string(n_dofs) + " DOFs, method " + settings.text("method") +
+            ", " + settings.text("displacements") + " displacements");
+
+  const bool write_vtu = settings.flag("output.vtu");
+  io::PvdWriter pvd(out_dir / "solution.pvd");
+  auto on_step = [&](int step, const nonlinear::ContactSolution& solution)
+  {
+    if (!write_vtu)
+      return;
+    ScopedTimer t(timers, "output");
+    char name[64];
+    std::snprintf(name, sizeof name, "step_%03d.vtu", step);
+    write_step_vtu(out_dir / name, *problem, solution, solver.kinematics);
+    pvd.add(solution.steps.back().load_factor, name);
+  };
+  nonlinear::ContactSolution solution;
+  if (solver.method == nonlinear::ContactMethod::primal_penalty)
+  {
+    solution = nonlinear::solve_primal_penalty(*problem, solver, timers);
+    if (solution.converged)
+      on_step(static_cast<int>(solution.steps.size()), solution);
+  }
+  else
+    solution = nonlinear::solve_feti_contact(*problem, solver, timers, on_step);
+
+  nlohmann::ordered_json summary;
+  summary["problem"] = problem->name;
+  summary["method"] = settings.text("method");
+  summary["displacements"] = settings.text("displacements");
+  summary["converged"] = solution.converged;
+  if (!solution.converged)
+    summary["reason"] = solution.reason;
+  summary["degrees_of_freedom"] = n_dofs;
+  summary["nodes"] = problem->mesh.n_nodes();
+  summary["elements"] = problem->mesh.n_cells();
+  summary["subdomains"] = solution.n_subdomains;
+  summary["dual_size"] = solution.n_dual;
+  summary["coarse_size"] = solution.n_kernel;
+  summary["rho"] = settings.number("rho");
+  if (solver.method == nonlinear::ContactMethod::primal_penalty)
+    summary["eps_n"] = solution.penalty;
+
+  if (solution.contact_lambda.size() > 0)
+  {
+    ScopedTimer t(timers, "post-processing");
+    auto samples = nonlinear::slave_pressure_by_x(*problem, solution, solver.kinematics);
+    const nonlinear::HertzComparison h = nonlinear::compare_with_hertz(hertz, samples);
+    write_pressure_csv(out_dir / "contact_pressure.csv", samples);
+    int64_t active = 0;
+    for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)
+      active += solution.contact_lambda(i) > 0;
+    summary["contact"] = {{"total_normal_force", nonlinear::total_normal_force(solution)},
+                          {"applied_load", h.applied_load},
+                          {"active_constraints", active},
+                          {"feasibility_error", solution.feasibility_error}};
+    summary["hertz"] = {{"a_analytic", h.a_analytic},
+                        {"p0_analytic", h.p0_analytic},
+                        {"a_computed", h.a_computed},
+                        {"p_peak_computed", h.p_peak_computed},
+                        {"rms_error_over_p0", h.rms_error_over_p0},
+                        {"contact_element_size", h.element_size}};
+  }
+  summary["qp"] = qp_json(solution);
+  nlohmann::ordered_json steps = nlohmann::ordered_json::array();
+  for (const auto& s : solution.steps)
+    steps.push_back({{"load_factor", s.load_factor},
+                     {"outer_iterations", s.outer_iterations},
+                     {"inner_iterations", s.inner_iterations},
+                     {"converged", s.converged},
+                     {"relative_displacement_change", s.displacement_change},
+                     {"residual_norm", s.residual_norm}});
+  summary["steps"] = steps;
+  write_history_csv(out_dir / "history.csv", solution.history);
+  nlohmann::ordered_json timing;
+  for (const auto& [phase, seconds] : timers.entries())
+    timing[phase] = seconds;
+  summary["timings_seconds"] = timing;
+  summary["peak_memory_bytes"] = peak_memory_bytes();
+  write_json(out_dir / "summary.json", summary);
+
+  log::info("\n" + timers.format());
+  if (summary.contains("hertz"))
+  {
+    char line[512];
+    const auto& h = summary["hertz"];
+    std::snprintf(line, sizeof line,
+                  "Hertz: p_peak %.4g MPa (McEwen p0 %.4g MPa, %+.2f%%), a %.2f mm (analytic %.2f mm), "
+                  "RMS error %.2f%% of p0; contact force %.6g N / load %.6g N",
+                  h["p_peak_computed"].get<double>() / 1e6, h["p0_analytic"].get<double>() / 1e6,
+                  100 * (h["p_peak_computed"].get<double>() / h["p0_analytic"].get<double>() - 1),
+                  1e3 * h["a_computed"].get<double>(), 1e3 * h["a_analytic"].get<double>(),
+                  100 * h["rms_error_over_p0"].get<double>(),
+                  summary["contact"]["total_normal_force"].get<double>(),
+                  summary["contact"]["applied_load"].get<double>());
+    log::info(line);
+  }
+  log::info("results written to " + out_dir.string());
+  FETICON_CHECK(solution.converged, "the solve did not converge: " << solution.reason
+                                                                   << " (converged steps are in "
+                                                                   << out_dir.string() << ")");
+}
+} // namespace
+
+void register_run_command(CLI::App& app)
+{
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* cmd = app.add_subcommand("run", "Solve a contact problem (default: the seed's Hertz "
+                                            "benchmark) and write a results folder");
+  cmd->add_option("problem", options->problem_file, "problem file (YAML); omit for the built-in Hertz problem")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--output,-o", options->output, "results folder")->capture_default_str();
+  cmd->add_option("--set,-s", options->overrides, "override a setting, KEY=VALUE (repeatable)");
+  cmd->add_flag("--quiet,-q", options->quiet, "only warnings and errors");
+  cmd->add_flag("--verbose,-v", options->verbose, "also one line per QP iteration");
+  cmd->footer("Settings (KEY for --set or the problem file):\n" + io::Settings::help());
+  cmd->callback([options] { run(*options); });
+}
+} // namespace feticon::app

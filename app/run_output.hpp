@@ -1,0 +1,31 @@
+#pragma once
+/// @file Writing a run's results folder: VTU/PVD per converged step, CSV, summary.json.
+
+#include "common/timer.hpp"
+#include "fem/problem.hpp"
+#include "io/vtu.hpp"
+#include "nonlinear/contact_pressure.hpp"
+#include "nonlinear/contact_solution.hpp"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+namespace feticon::app
+{
+/// VTU of one converged load step: displacement, Cauchy and von Mises stress per cell,
+/// contact pressure at the slave nodes; deformed points for large displacements.
+void write_step_vtu(const std::filesystem::path& path, const fem::Problem& problem,
+                    const nonlinear::ContactSolution& solution, fem::Kinematics kinematics);
+
+/// contact_pressure.csv: x, pressure from multipliers, from stresses, McEwen.
+void write_pressure_csv(const std::filesystem::path& path,
+                        const std::vector<nonlinear::PressureSample>& samples);
+
+/// history.csv: one line per outer iteration.
+void write_history_csv(const std::filesystem::path& path,
+                       const std::vector<nonlinear::OuterIteration>& history);
+
+/// Writes JSON atomically with 2-space indentation.
+void write_json(const std::filesystem::path& path, const nlohmann::ordered_json& json);
+} // namespace feticon::app

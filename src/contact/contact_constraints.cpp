@@ -1,0 +1,299 @@
+#include "contact/contact_constraints.hpp"
+
+#include "common/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+#include <utility>
+
+namespace feticon::contact
+{
+namespace
+{
+/// The closest master point chosen for one slave node.
+struct ClosestPoint
+{
+  int32_t face = -1;
+  Eigen::Vector2d xi{0, 0};
+  Eigen::Vector3d normal{0, 0, 0};
+  double gap = 0;
+  ProjectionKind kind = ProjectionKind::face;
+};
+
+/// Which master edges lie on the boundary of the master surface: those of only one master face.
+class SurfaceBoundary
+{
+public:
+  explicit SurfaceBoundary(const std::vector<mesh::Face>& faces)
+  {
+    for (const mesh::Face& face : faces)
+      for (int a = 0; a < 4; ++a)
+        ++_edge_faces[key(face[a], face[(a + 1) % 4])];
+  }
+  bool edge_on_boundary(int32_t a, int32_t b) const { return _edge_faces.at(key(a, b)) == 1; }
+
+private:
+  static std::pair<int32_t, int32_t> key(int32_t a, int32_t b) { return std::minmax(a, b); }
+  std::map<std::pair<int32_t, int32_t>, int32_t> _edge_faces;
+};
+
+/// Distance beyond a boundary side, relative to the face size, from which a node is beyond the rim
+/// of the master surface: the same 1e-6 as the acceptance tolerance of a projection.
+constexpr double rim_tolerance = 1e-6;
+
+bool has_corner(const mesh::Face& face, int32_t node)
+{
+  return std::ranges::find(face, node) != face.end();
+}
+
+/// Accepted face projection with the smallest |g| among the candidates, if any. An accepted
+/// projection is a stationary point, so |g| = |x_s - x(xi_bar)| is at least the distance from x_s
+/// to the face's box: candidates are visited by increasing box distance (then id) and the visit
+/// stops once that distance exceeds the best |g| found, which leaves the result unchanged.
+std::optional<ClosestPoint> closest_face_projection(const std::vector<QuadCoordinates>& quads,
+                                                    const std::vector<BoundingBox>& face_boxes,
+                                                    const std::vector<mesh::Face>& faces,
+                                                    const std::vector<int32_t>& candidates,
+                                                    int32_t slave, const Eigen::Vector3d& x_s)
+{
+  std::vector<std::pair<double, int32_t>> order;
+  order.reserve(candidates.size());
+  for (const int32_t f : candidates)
+    if (!has_corner(faces[f], slave))
+      order.emplace_back(face_boxes[f].distance(x_s), f);
+  std::ranges::sort(order);
+  std::optional<ClosestPoint> best;
+  for (const auto& [box_distance, f] : order)
+  {
+    if (best && box_distance > std::abs(best->gap))
+      break;
+    const QuadProjection p = project_to_quad(quads[f], x_s);
+    if (p.accepted() && (!best || std::abs(p.gap) < std::abs(best->gap)))
+      best = ClosestPoint{f, p.xi, p.normal, p.gap, ProjectionKind::face};
+  }
+  return best;
+}
+
+/// Fallback of the file comment when no projection is accepted: the closest point x_e on the
+/// candidate faces' edges, on face f. Beyond a boundary side of f: the projection on f if it lies
+/// within the rim extension, else nothing (overhanging). Otherwise the node-to-edge point x_e.
+std::optional<ClosestPoint> outside_point(const std::vector<QuadCoordinates>& quads,
+                                          const std::vector<mesh::Face>& faces,
+                                          const std::vector<int32_t>& candidates,
+                                          const SurfaceBoundary& boundary, int32_t slave,
+                                          const Eigen::Vector3d& x_s, double rim_extension)
+{
+  double best_distance = std::numeric_limits<double>::infinity();
+  int32_t best_face = -1;
+  int best_edge = 0;
+  double best_t = 0;
+  for (const int32_t f : candidates)
+  {
+    if (has_corner(faces[f], slave))
+      continue;
+    for (int a = 0; a < 4; ++a)
+    {
+      const Eigen::Vector3d start = quads[f].row(a).transpose();
+      const Eigen::Vector3d end = quads[f].row((a + 1) % 4).transpose();
+      const double t = closest_on_segment(start, end, x_s);
+      const double distance = (start + t * (end - start) - x_s).norm();
+      if (distance < best_distance)
+      {
+        best_distance = distance;
+        best_face = f;
+        best_edge = a;
+        best_t = t;
+      }
+    }
+  }
+  if (best_face < 0)
+    return std::nullopt;
+
+  const mesh::Face& face = faces[best_face];
+  const QuadCoordinates& quad = quads[best_face];
+  const double face_size = std::max((quad.row(2) - quad.row(0)).norm(),
+                                    (quad.row(3) - quad.row(1)).norm());
+  // Beyond a boundary side k of the face, i.e. on the outer side of the side's line in the face's
+  // tangent plane; the outward in-plane normal of side k is (x_k+1 - x_k) x n_f (counter-clockwise
+  // sides seen from outside).
+  bool beyond_rim = false;
+  for (int k = 0; k < 4; ++k)
+  {
+    const int next = (k + 1) % 4;
+    if (!boundary.edge_on_boundary(face[k], face[next]))
+      continue;
+    const Eigen::Vector3d start = quad.row(k).transpose();
+    const Eigen::Vector3d side = quad.row(next).transpose() - start;
+    const Eigen::Vector2d mid = 0.5 * (quad_corner(k) + quad_corner(next));
+    const Eigen::Vector3d outward = side.cross(quad_normal(quad, mid)).normalized();
+    beyond_rim = beyond_rim || outward.dot(x_s - start) > rim_tolerance * face_size;
+  }
+  if (beyond_rim)
+  {
+    const QuadProjection p = project_to_quad(quad, x_s);
+    if (p.converged && p.xi.lpNorm<Eigen::Infinity>() <= 1 + rim_extension)
+      return ClosestPoint{best_face, p.xi, p.normal, p.gap, ProjectionKind::rim};
+    return std::nullopt;
+  }
+
+  const int b = (best_edge + 1) % 4;
+  ClosestPoint point;
+  point.face = best_face;
+  point.kind = ProjectionKind::edge;
+  point.xi = (1 - best_t) * quad_corner(best_edge) + best_t * quad_corner(b);
+  const Eigen::Vector3d face_normal = quad_normal(quad, point.xi);
+  const Eigen::Vector3d distance = x_s - quad_point(quad, point.xi);
+  if (distance.norm() <= 1e-12 * face_size)
+  {
+    point.normal = face_normal;
+    point.gap = 0;
+    return point;
+  }
+  const double side = distance.dot(face_normal) < 0 ? -1.0 : 1.0;
+  point.normal = side * distance.normalized();
+  point.gap = side * distance.norm();
+  return point;
+}
+} // namespace
+
+QuadCoordinates current_face_coordinates(const mesh::HexMesh& mesh, const la::Vector& u,
+                                         const mesh::Face& face)
+{
+  QuadCoordinates quad;
+  for (int a = 0; a < 4; ++a)
+  {
+    quad.row(a) = mesh.nodes.row(face[a]);
+    if (u.size() > 0)
+      quad.row(a) += u.segment<3>(3 * static_cast<la::Index>(face[a])).transpose();
+  }
+  return quad;
+}
+
+double largest_face_diagonal(const mesh::HexMesh& mesh, const la::Vector& u,
+                             const std::vector<mesh::Face>& faces)
+{
+  double diagonal = 0;
+  for (const mesh::Face& face : faces)
+  {
+    const QuadCoordinates quad = current_face_coordinates(mesh, u, face);
+    diagonal = std::max({diagonal, (quad.row(2) - quad.row(0)).norm(),
+                         (quad.row(3) - quad.row(1)).norm()});
+  }
+  return diagonal;
+}
+
+ContactConstraints build_contact_constraints(const mesh::HexMesh& mesh, const la::Vector& u,
+                                             const ContactPair& pair, const ContactOptions& options)
+{
+  const la::Index n_dofs = 3 * static_cast<la::Index>(mesh.n_nodes());
+  FETICON_CHECK(u.size() == 0 || u.size() == n_dofs,
+                "contact: displacement has " << u.size() << " entries, expected 3 * n_nodes = "
+                                             << n_dofs << " (or 0 for u = 0)");
+  FETICON_CHECK(std::isfinite(options.search_distance) && options.search_distance >= 0,
+                "contact: search_distance = " << options.search_distance
+                                              << " m must be >= 0 (0 = automatic)");
+  FETICON_CHECK(std::isfinite(options.rim_extension) && options.rim_extension >= 0,
+                "contact: rim_extension = " << options.rim_extension << " must be >= 0");
+  const std::vector<mesh::Face>& faces = mesh.face_set(pair.master);
+  FETICON_CHECK(!faces.empty(), "contact: master face set '" << pair.master << "' is empty");
+  const std::vector<int32_t> slave_nodes = mesh.face_set_nodes(pair.slave);
+
+  std::vector<QuadCoordinates> quads;
+  quads.reserve(faces.size());
+  for (const mesh::Face& face : faces)
+    quads.push_back(current_face_coordinates(mesh, u, face));
+
+  ContactConstraints out;
+  out.n_slave_nodes = static_cast<int32_t>(slave_nodes.size());
+  out.search_distance = options.search_distance > 0 ? options.search_distance
+                                                    : largest_face_diagonal(mesh, u, faces);
+  FETICON_CHECK(out.search_distance > 0,
+                "contact: master face set '" << pair.master << "' has only degenerate faces");
+
+  std::vector<BoundingBox> face_boxes(faces.size());
+  for (size_t f = 0; f < faces.size(); ++f)
+    for (int a = 0; a < 4; ++a)
+      face_boxes[f].extend(quads[f].row(a).transpose());
+  std::vector<BoundingBox> search_boxes = face_boxes;
+  for (BoundingBox& box : search_boxes)
+    box.inflate(out.search_distance);
+  const SurfaceSearch search(std::move(search_boxes));
+  const SurfaceBoundary boundary(faces);
+
+  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<int32_t> candidates;
+  for (const int32_t s : slave_nodes)
+  {
+    Eigen::Vector3d x_s = mesh.nodes.row(s).transpose();
+    if (u.size() > 0)
+      x_s += u.segment<3>(3 * static_cast<la::Index>(s));
+    search.candidates(x_s, candidates);
+    std::optional<ClosestPoint> closest =
+        closest_face_projection(quads, face_boxes, faces, candidates, s, x_s);
+    if (!closest && !candidates.empty())
+    {
+      closest = outside_point(quads, faces, candidates, boundary, s, x_s, options.rim_extension);
+      if (!closest)
+        ++out.n_overhanging;
+    }
+    if (!closest || !(closest->gap < out.search_distance))
+      continue;
+
+    const auto row = static_cast<int>(out.slave_node.size());
+    const Eigen::Vector4d shape = quad_shape_functions(closest->xi);
+    const double norm = std::sqrt(1 + shape.squaredNorm());
+    const Eigen::Vector3d n = closest->normal;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (n(k) == 0)
+        continue;
+      triplets.emplace_back(row, 3 * s + k, -n(k) / norm);
+      for (int a = 0; a < 4; ++a)
+        if (shape(a) != 0)
+          triplets.emplace_back(row, 3 * faces[closest->face][a] + k, shape(a) * n(k) / norm);
+    }
+    out.slave_node.push_back(s);
+    out.normal.push_back(n);
+    out.gap.push_back(closest->gap);
+    out.row_norm.push_back(norm);
+    out.master_face.push_back(closest->face);
+    out.xi.push_back(closest->xi);
+    out.kind.push_back(closest->kind);
+  }
+
+  const auto n_rows = static_cast<la::Index>(out.slave_node.size());
+  out.B.resize(n_rows, n_dofs);
+  out.B.setFromTriplets(triplets.begin(), triplets.end());
+  out.c.resize(n_rows);
+  for (la::Index i = 0; i < n_rows; ++i)
+    out.c(i) = out.gap[i] / out.row_norm[i];
+  return out;
+}
+
+la::Vector contact_forces(const ContactConstraints& constraints, const la::Vector& lambda_hat,
+                          int64_t n_global_dofs)
+{
+  FETICON_CHECK(lambda_hat.size() == constraints.n_rows(),
+                "contact_forces: " << lambda_hat.size() << " multipliers for "
+                                   << constraints.n_rows() << " contact rows");
+  FETICON_CHECK(n_global_dofs == constraints.B.cols(),
+                "contact_forces: n_global_dofs = " << n_global_dofs << " but the rows have "
+                                                   << constraints.B.cols() << " columns");
+  return -(constraints.B.transpose() * lambda_hat);
+}
+
+la::Vector slave_normal_forces(const ContactConstraints& constraints,
+                               const la::Vector& lambda_hat)
+{
+  FETICON_CHECK(lambda_hat.size() == constraints.n_rows(),
+                "slave_normal_forces: " << lambda_hat.size() << " multipliers for "
+                                        << constraints.n_rows() << " contact rows");
+  la::Vector forces(lambda_hat.size());
+  for (la::Index i = 0; i < lambda_hat.size(); ++i)
+    forces(i) = lambda_hat(i) / constraints.row_norm[i];
+  return forces;
+}
+} // namespace feticon::contact

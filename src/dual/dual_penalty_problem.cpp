@@ -1,0 +1,107 @@
+#include "dual/dual_penalty_problem.hpp"
+
+#include "common/error.hpp"
+#include "dual/primal_recovery.hpp"
+#include "dual/projector.hpp"
+#include "qp/norm_estimate.hpp"
+
+#include <limits>
+
+namespace feticon::dual
+{
+namespace
+{
+/// G~ = L^{-1} G as the equality operator of SMALBE-M.
+class GTildeOperator : public qp::EqualityOperator
+{
+public:
+  explicit GTildeOperator(const CoarseProjector& projector) : _projector(projector) {}
+  la::Vector apply(const la::Vector& x) const override { return _projector.apply_G_tilde(x); }
+  la::Vector apply_transpose(const la::Vector& y) const override
+  {
+    return _projector.apply_G_tilde_t(y);
+  }
+
+private:
+  const CoarseProjector& _projector;
+};
+} // namespace
+
+DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
+                                const la::Vector& f_stacked, int64_t n_equality,
+                                const DualPenaltyOptions& options, const la::Vector& lambda_start)
+{
+  const int64_t m = feti.n_dual();
+  FETICON_CHECK(c.size() == m && n_equality <= m, "dual problem: sizes do not match");
+  FETICON_CHECK(options.rho > 0, "rho = " << options.rho << " must be positive");
+  const CoarseProjector projector(feti.G());
+  const la::Vector e = feti.apply_Rt(f_stacked);
+  const la::Vector lambda_tilde = projector.particular_solution(e);
+  const la::Vector d = feti.apply_B(feti.apply_K_plus(f_stacked)) - c;
+
+  DualSolution out;
+  const FOperator F_raw(feti);
+  const ProjectedOperator PFP_raw(F_raw, projector, 0.0);
+  const qp::NormEstimate norm = qp::estimate_norm(PFP_raw, options.power_iterations);
+  FETICON_CHECK(norm.value > 0 && std::isfinite(norm.value), "||PFP|| estimate " << norm.value
+                                                                                 << " is not positive");
+  out.pfp_norm = norm.value;
+  const double scale = 1.0 / norm.value;
+  const FOperator F(feti, scale);
+  const ProjectedOperator H(F, projector, options.rho);
+  const la::Vector b = projector.apply_P(scale * (d - feti.apply_F(lambda_tilde)));
+
+  la::Vector lower = la::Vector::Constant(m, -std::numeric_limits<double>::infinity());
+  for (int64_t i = n_equality; i < m; ++i)
+    lower(i) = -lambda_tilde(i);
+  la::Vector mu = lambda_start.size() == m ? la::Vector(lambda_start - lambda_tilde)
+                                           : la::Vector(la::Vector::Zero(m));
+
+  qp::MprgpOptions mprgp;
+  mprgp.rtol = options.rtol;
+  mprgp.max_iterations = options.max_iterations;
+  // After scaling, ||H|| = max(||P F^ P||, rho) ~ max(1, rho): no second power iteration.
+  mprgp.alpha_bar = 1.8 / std::max(1.0, options.rho);
+  if (options.method == DualMethod::dual_penalty)
+  {
+    qp::Mprgp solver(H, mprgp);
+    out.report = solver.solve(b, lower, mu);
+    out.outer_iterations = 1;
+  }
+  else
+  {
+    const GTildeOperator C(projector);
+    qp::SmalbeOptions smalbe;
+    smalbe.rtol = options.rtol;
+    smalbe.rho = options.rho;
+    smalbe.max_inner_iterations = options.max_iterations;
+    smalbe.mprgp = mprgp;
+    qp::Smalbe solver(H, C, smalbe);
+    const qp::SmalbeReport r = solver.solve(b, lower, mu);
+    out.report = r;
+    out.outer_iterations = r.outer_iterations;
+  }
+  out.report.hessian_multiplications += norm.applications;
+  out.lambda = lambda_tilde + mu;
+  const double e_norm = e.norm();
+  out.feasibility_error =
+      (feti.apply_G(out.lambda) - e).norm() / (e_norm > 0 ? e_norm : 1.0);
+
+  // Active rows: equalities and contact rows with a positive multiplier. MPRGP keeps
+  // bound components exactly at the bound, so lambda_i = 0 there up to round-off; the
+  // threshold only guards against round-off-sized values.
+  double lambda_max = 0;
+  for (int64_t i = n_equality; i < m; ++i)
+    lambda_max = std::max(lambda_max, out.lambda(i));
+  std::vector<char> active(m, 1);
+  for (int64_t i = n_equality; i < m; ++i)
+  {
+    active[i] = out.lambda(i) > 1e-12 * lambda_max;
+    out.active_contacts += active[i];
+  }
+  PrimalSolution primal = recover_primal(feti, f_stacked, c, out.lambda, active);
+  out.u = std::move(primal.u);
+  out.alpha = std::move(primal.alpha);
+  return out;
+}
+} // namespace feticon::dual

@@ -1,0 +1,55 @@
+#pragma once
+/// @file The seed's contact dual: problem (9) solved by MPRGP (dual penalty), or the same
+/// problem with G lambda = e enforced exactly by SMALBE-M (ALGORITHMS.md section 1).
+///
+///   lambda = lambda~ + mu,  lambda~ = G'(GG')^{-1} e   (minimal norm: the Hertz cylinder
+///                                                      is held only by contact),
+///   min 1/2 mu' H mu - mu' b^   s.t.  mu_I >= -lambda~_I   [and G~ mu = 0 for SMALBE-M],
+///   H = P F^ P + rho Q,  b^ = P (d^ - F^ lambda~),  F^ = F / ||PFP||,  d^ = d / ||PFP||.
+/// Scaling by ||PFP|| (power iterations) leaves the minimizer unchanged and makes rho and the
+/// tolerances dimensionless. Rows 0..n_equality-1 are equalities (mu free), the rest contact
+/// rows. The primal solution follows from the active rows (primal_recovery.hpp).
+
+#include "dual/feti_operators.hpp"
+#include "qp/smalbe.hpp"
+
+#include <string>
+
+namespace feticon::dual
+{
+enum class DualMethod
+{
+  dual_penalty, ///< MPRGP on problem (9): G lambda = e holds up to O(1/rho)
+  smalbe        ///< SMALBE-M with MPRGP inside: G lambda = e to the tolerance
+};
+
+struct DualPenaltyOptions
+{
+  DualMethod method = DualMethod::smalbe;
+  double rho = 1.0;           ///< dimensionless penalty (after scaling by ||PFP||)
+  double rtol = 1e-8;         ///< QP tolerance on ||g_P|| (and ||G~ mu||) relative to ||b^||
+  int max_iterations = 20000; ///< MPRGP steps in total
+  int power_iterations = 30;  ///< for ||PFP||
+};
+
+struct DualSolution
+{
+  la::Vector lambda;             ///< multipliers (equality rows then contact rows)
+  la::Vector u;                  ///< stacked primal displacement
+  la::Vector alpha;              ///< rigid-body amplitudes
+  qp::QpReport report;           ///< MPRGP counters (summed over SMALBE-M outer steps)
+  int outer_iterations = 0;      ///< SMALBE-M outer iterations (1 for the dual penalty)
+  double feasibility_error = 0;  ///< ||G lambda - e|| / ||e||
+  double pfp_norm = 0;           ///< ||PFP|| estimate used for scaling
+  int64_t active_contacts = 0;   ///< contact rows with lambda_i > 0
+};
+
+/// @param c             right-hand sides of all rows (B u = c_E, B u <= c_I)
+/// @param f_stacked     stacked load
+/// @param n_equality    number of equality rows (they come first)
+/// @param lambda_start  initial multipliers (warm start), or empty for mu = 0
+DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
+                                const la::Vector& f_stacked, int64_t n_equality,
+                                const DualPenaltyOptions& options,
+                                const la::Vector& lambda_start = {});
+} // namespace feticon::dual

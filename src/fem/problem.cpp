@@ -1,0 +1,70 @@
+#include "fem/problem.hpp"
+
+#include "common/error.hpp"
+#include "fem/loads.hpp"
+
+#include <map>
+
+namespace feticon::fem
+{
+la::Vector Problem::external_force() const
+{
+  la::Vector f = la::Vector::Zero(3 * mesh.n_nodes());
+  for (const FaceTraction& t : tractions)
+    add_face_traction(mesh, mesh.face_set(t.set), t.traction, f);
+  for (int i = 0; i < 3; ++i)
+    if (eliminated[i])
+      for (int32_t n = 0; n < mesh.n_nodes(); ++n)
+        f(3 * n + i) = 0;
+  return f;
+}
+
+ConstrainedDofs Problem::all_constrained_dofs() const
+{
+  const ConstrainedDofs prescribed = collect_dirichlet(mesh, dirichlet);
+  std::map<int64_t, double> merged;
+  for (size_t k = 0; k < prescribed.dofs.size(); ++k)
+    merged[prescribed.dofs[k]] = prescribed.values(static_cast<la::Index>(k));
+  for (int i = 0; i < 3; ++i)
+    if (eliminated[i])
+      for (int32_t n = 0; n < mesh.n_nodes(); ++n)
+      {
+        auto [it, inserted] = merged.emplace(3 * static_cast<int64_t>(n) + i, 0.0);
+        FETICON_CHECK(it->second == 0.0, "node " << n << " prescribes " << it->second
+                                                 << " for component " << i
+                                                 << ", which plane strain fixes to zero");
+      }
+  ConstrainedDofs out;
+  out.values.resize(static_cast<la::Index>(merged.size()));
+  for (const auto& [dof, value] : merged)
+  {
+    out.values(static_cast<la::Index>(out.dofs.size())) = value;
+    out.dofs.push_back(dof);
+  }
+  return out;
+}
+
+void Problem::validate() const
+{
+  FETICON_CHECK(mesh.n_cells() > 0, "problem '" << name << "': the mesh has no cells");
+  FETICON_CHECK(static_cast<int32_t>(materials.size()) == mesh.n_bodies(),
+                "problem '" << name << "': " << mesh.n_bodies() << " bodies but " << materials.size()
+                            << " materials");
+  for (size_t b = 0; b < materials.size(); ++b)
+    materials[b].check("body '" + mesh.body_names[b] + "'");
+  for (const auto& d : dirichlet)
+    FETICON_CHECK(!mesh.node_set(d.set).empty(), "Dirichlet set '" << d.set << "' is empty");
+  for (const auto& t : tractions)
+  {
+    FETICON_CHECK(!mesh.face_set(t.set).empty(), "traction face set '" << t.set << "' is empty");
+    FETICON_CHECK(t.traction.allFinite(), "traction on '" << t.set << "' is not finite");
+  }
+  for (const auto& c : contacts)
+  {
+    FETICON_CHECK(!mesh.face_set(c.slave).empty(), "contact slave surface '" << c.slave
+                                                                             << "' is empty");
+    FETICON_CHECK(!mesh.face_set(c.master).empty(), "contact master surface '" << c.master
+                                                                               << "' is empty");
+  }
+}
+} // namespace feticon::fem

@@ -1,0 +1,179 @@
+#include "io/settings.hpp"
+
+#include "common/error.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace feticon::io
+{
+namespace
+{
+using Type = SettingSpec::Type;
+
+std::vector<SettingSpec> make_specs()
+{
+  const double inf = 1e300;
+  return {
+      {"problem", "hertz", "built-in problem to run", Type::text, {"hertz"}, 0, 0, false},
+      {"hertz.line_load", "4e8", "line load Q on the cylinder (N/m)", Type::number, {}, 0, inf, true},
+      {"hertz.refinement", "1", "scales every element size by 1/refinement", Type::number, {}, 0.05, 64, false},
+      {"hertz.element_size", "0.005", "element size in the contact zone at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
+      {"hertz.master_ratio", "1.3", "block (master) / cylinder (slave) contact element size", Type::number, {}, 0.2, 5, false},
+      {"hertz.block_width", "1.5", "half-width of the block (m)", Type::number, {}, 0.2, 100, false},
+      {"hertz.block_depth", "1.5", "depth of the block (m)", Type::number, {}, 0.2, 100, false},
+      {"material.young", "2e11", "Young's modulus E (Pa) of every body", Type::number, {}, 0, inf, true},
+      {"material.poisson", "0.3", "Poisson's ratio nu of every body, in (-1, 0.5)", Type::number, {}, -1, 0.5, true},
+      {"method", "smalbe", "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "
+                           "(seed's problem (9)), primal_penalty (undecomposed, CHOLMOD)",
+       Type::text, {"smalbe", "dual_penalty", "primal_penalty"}, 0, 0, false},
+      {"rho", "1", "dual penalty rho, dimensionless (F and d scaled by ||PFP||)", Type::number, {}, 0, inf, true},
+      {"eps_n", "100", "primal penalty eps_n as a multiple of max diag K", Type::number, {}, 0, inf, true},
+      {"displacements", "small", "small (linear elasticity) or large (total Lagrangian)", Type::text, {"small", "large"}, 0, 0, false},
+      {"load_steps", "2", "load steps for large displacements", Type::integer, {}, 1, 1000, false},
+      {"subdomains", "8", "number of FETI subdomains", Type::integer, {}, 1, 1e6, false},
+      {"partitioner", "metis", "metis or structured", Type::text, {"metis", "structured"}, 0, 0, false},
+      {"qp.rtol", "1e-8", "QP stopping tolerance ||g_P|| <= rtol ||b||", Type::number, {}, 0, 1, true},
+      {"qp.max_iterations", "20000", "MPRGP iteration limit", Type::integer, {}, 1, 1e9, false},
+      {"output.vtu", "true", "write VTU/PVD files", Type::boolean, {}, 0, 0, false},
+  };
+}
+
+std::string trim(const std::string& s)
+{
+  const auto b = s.find_first_not_of(" \t");
+  const auto e = s.find_last_not_of(" \t");
+  return b == std::string::npos ? "" : s.substr(b, e - b + 1);
+}
+
+void flatten(const YAML::Node& node, const std::string& prefix, Settings& settings,
+             const std::string& source)
+{
+  if (node.IsMap())
+  {
+    for (const auto& kv : node)
+      flatten(kv.second, prefix.empty() ? kv.first.as<std::string>()
+                                        : prefix + "." + kv.first.as<std::string>(),
+              settings, source);
+    return;
+  }
+  FETICON_CHECK(node.IsScalar(), source << ": key '" << prefix << "' must be a single value");
+  settings.set(prefix, node.as<std::string>(), source);
+}
+} // namespace
+
+const std::vector<SettingSpec>& Settings::specs()
+{
+  static const std::vector<SettingSpec> all = make_specs();
+  return all;
+}
+
+Settings::Settings()
+{
+  for (const auto& s : specs())
+    _values[s.key] = s.default_value;
+}
+
+std::string Settings::help()
+{
+  std::ostringstream os;
+  for (const auto& s : specs())
+    os << "  " << s.key << " (default " << s.default_value << "): " << s.help << '\n';
+  return os.str();
+}
+
+const SettingSpec& Settings::spec(const std::string& key, const std::string& source) const
+{
+  for (const auto& s : specs())
+    if (s.key == key)
+      return s;
+  FETICON_CHECK(false, source << ": unknown key '" << key << "'; run 'feticon run --help' for "
+                                                            "the list of keys");
+  throw; // unreachable: FETICON_CHECK(false, ...) throws
+}
+
+void Settings::set(const std::string& key, const std::string& raw, const std::string& source)
+{
+  const SettingSpec& s = spec(key, source);
+  const std::string value = trim(raw);
+  switch (s.type)
+  {
+  case Type::number:
+  case Type::integer:
+  {
+    char* end = nullptr;
+    const double v = std::strtod(value.c_str(), &end);
+    FETICON_CHECK(!value.empty() && end && *end == '\0' && std::isfinite(v),
+                  source << ": " << key << " = '" << value << "' is not a finite number");
+    if (s.type == Type::integer)
+      FETICON_CHECK(v == std::floor(v), source << ": " << key << " = " << value
+                                               << " must be an integer");
+    const bool below = s.min_exclusive ? v <= s.min : v < s.min;
+    FETICON_CHECK(!below && v <= s.max, source << ": " << key << " = " << value << " is out of range "
+                                               << (s.min_exclusive ? "(" : "[") << s.min << ", "
+                                               << s.max << "]: " << s.help);
+    break;
+  }
+  case Type::text:
+    if (!s.choices.empty())
+    {
+      bool ok = false;
+      std::string list;
+      for (const auto& c : s.choices)
+      {
+        ok = ok || c == value;
+        list += (list.empty() ? "" : ", ") + c;
+      }
+      FETICON_CHECK(ok, source << ": " << key << " = '" << value << "' must be one of: " << list);
+    }
+    break;
+  case Type::boolean:
+    FETICON_CHECK(value == "true" || value == "false",
+                  source << ": " << key << " = '" << value << "' must be true or false");
+    break;
+  }
+  _values[key] = value;
+}
+
+void Settings::set_override(const std::string& assignment)
+{
+  const auto eq = assignment.find('=');
+  FETICON_CHECK(eq != std::string::npos && eq > 0,
+                "--set '" << assignment << "' must have the form KEY=VALUE");
+  set(trim(assignment.substr(0, eq)), assignment.substr(eq + 1), "--set");
+}
+
+void Settings::load_yaml(const std::filesystem::path& path)
+{
+  FETICON_CHECK(std::filesystem::exists(path), "problem file " << path.string() << " does not exist");
+  YAML::Node root;
+  try
+  {
+    root = YAML::LoadFile(path.string());
+  }
+  catch (const YAML::Exception& e)
+  {
+    FETICON_CHECK(false, path.string() << ": invalid YAML at line " << e.mark.line + 1 << ", column "
+                                       << e.mark.column + 1 << ": " << e.msg);
+  }
+  FETICON_CHECK(root.IsMap() || root.IsNull(), path.string() << ": the top level must be a map of keys");
+  if (root.IsMap())
+    flatten(root, "", *this, path.string());
+}
+
+double Settings::number(const std::string& key) const { return std::stod(_values.at(key)); }
+int Settings::integer(const std::string& key) const { return static_cast<int>(std::stod(_values.at(key))); }
+const std::string& Settings::text(const std::string& key) const { return _values.at(key); }
+bool Settings::flag(const std::string& key) const { return _values.at(key) == "true"; }
+
+std::string Settings::to_yaml() const
+{
+  std::ostringstream os;
+  os << "# effective settings of this run (defaults, problem file, --set overrides)\n";
+  for (const auto& s : specs())
+    os << s.key << ": " << _values.at(s.key) << '\n';
+  return os.str();
+}
+} // namespace feticon::io

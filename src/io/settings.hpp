@@ -1,0 +1,61 @@
+#pragma once
+/// @file Run settings: documented keys with defaults and ranges, filled from a YAML file
+/// (nested maps flatten to dotted keys, e.g. qp: {rtol: 1e-6} is qp.rtol) and from
+/// command-line overrides KEY=VALUE. Unknown keys and bad values are errors that name the
+/// key, the source and what is expected.
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace feticon::io
+{
+struct SettingSpec
+{
+  std::string key;
+  std::string default_value;
+  std::string help;
+  enum class Type
+  {
+    number,
+    integer,
+    text,
+    boolean
+  } type = Type::number;
+  std::vector<std::string> choices; ///< for text: allowed values (empty = any)
+  double min = -1e300;              ///< for numbers: inclusive range
+  double max = 1e300;
+  bool min_exclusive = false;
+};
+
+class Settings
+{
+public:
+  /// All settings at their defaults.
+  Settings();
+  /// Every key feticon knows, in documentation order.
+  static const std::vector<SettingSpec>& specs();
+  /// Help text listing every key with default and meaning.
+  static std::string help();
+
+  /// Reads a YAML problem file; `source` names it in errors.
+  void load_yaml(const std::filesystem::path& path);
+  /// Sets `key` from text; `source` (e.g. "--set" or a file name) names it in errors.
+  void set(const std::string& key, const std::string& value, const std::string& source);
+  /// Parses "KEY=VALUE".
+  void set_override(const std::string& assignment);
+
+  double number(const std::string& key) const;
+  int integer(const std::string& key) const;
+  const std::string& text(const std::string& key) const;
+  bool flag(const std::string& key) const;
+
+  /// The effective settings as YAML (written to the results folder).
+  std::string to_yaml() const;
+
+private:
+  const SettingSpec& spec(const std::string& key, const std::string& source) const;
+  std::map<std::string, std::string> _values;
+};
+} // namespace feticon::io

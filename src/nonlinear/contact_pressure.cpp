@@ -1,0 +1,108 @@
+#include "nonlinear/contact_pressure.hpp"
+
+#include "common/error.hpp"
+#include "fem/loads.hpp"
+#include "fem/stress.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace feticon::nonlinear
+{
+double total_normal_force(const ContactSolution& solution)
+{
+  double total = 0;
+  for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)
+    total += solution.contact_lambda(i) / solution.constraints.row_norm[i];
+  return total;
+}
+
+std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
+                                                const ContactSolution& solution,
+                                                fem::Kinematics kinematics)
+{
+  const auto& rows = solution.constraints;
+  FETICON_CHECK(static_cast<la::Index>(rows.slave_node.size()) == solution.contact_lambda.size(),
+                "contact multipliers do not match the contact rows");
+  // Tributary areas integral(N_a dA) in the current configuration: the x-component of the
+  // consistent load of a unit x-traction.
+  mesh::HexMesh deformed = problem.mesh;
+  for (int32_t n = 0; n < deformed.n_nodes(); ++n)
+    deformed.nodes.row(n) += solution.u.segment<3>(3 * n).transpose();
+  la::Vector tributary = la::Vector::Zero(3 * deformed.n_nodes());
+  fem::add_face_traction(deformed, deformed.face_set(problem.contacts[0].slave),
+                         Eigen::Vector3d(1, 0, 0), tributary);
+
+  const auto stresses = fem::nodal_average(
+      problem.mesh, fem::cell_cauchy_stresses(problem.mesh, solution.u, problem.materials, kinematics));
+
+  // Group the slave nodes of a node line (same reference x) together.
+  std::map<long, PressureSample> by_x;
+  const double key_scale = 1e9; // nm resolution groups nodes through the thickness
+  for (int32_t node : problem.mesh.face_set_nodes(problem.contacts[0].slave))
+  {
+    auto& s = by_x[std::lround(problem.mesh.nodes(node, 0) * key_scale)];
+    s.x = problem.mesh.nodes(node, 0);
+    s.area += tributary(3 * node);
+  }
+  for (size_t i = 0; i < rows.slave_node.size(); ++i)
+  {
+    const int32_t node = rows.slave_node[i];
+    auto& s = by_x[std::lround(problem.mesh.nodes(node, 0) * key_scale)];
+    s.force += solution.contact_lambda(static_cast<la::Index>(i)) / rows.row_norm[i];
+    const Eigen::Vector3d& n = rows.normal[i];
+    const auto& v = stresses[node];
+    Eigen::Matrix3d sigma;
+    sigma << v(0), v(3), v(5), v(3), v(1), v(4), v(5), v(4), v(2);
+    // Average over the nodes of the line (weights: equal).
+    s.stress_pressure += -n.dot(sigma * n);
+    s.analytic += 1; // temporary count of rows at this x
+  }
+  std::vector<PressureSample> out;
+  for (auto& [key, s] : by_x)
+  {
+    if (s.analytic > 0)
+      s.stress_pressure /= s.analytic;
+    s.analytic = 0;
+    s.pressure = s.area > 0 ? s.force / s.area : 0;
+    out.push_back(s);
+  }
+  return out;
+}
+
+HertzComparison compare_with_hertz(const problems::HertzParameters& parameters,
+                                   std::vector<PressureSample>& samples)
+{
+  const problems::HertzAnalytic analytic = problems::hertz_analytic(parameters);
+  HertzComparison h;
+  h.a_analytic = analytic.half_width;
+  h.p0_analytic = analytic.peak_pressure;
+  h.applied_load = 0.5 * parameters.line_load * parameters.mesh.thickness;
+  double sum_sq = 0;
+  int count = 0;
+  size_t last_loaded = 0;
+  for (size_t i = 0; i < samples.size(); ++i)
+  {
+    auto& s = samples[i];
+    s.analytic = analytic.pressure(s.x);
+    h.p_peak_computed = std::max(h.p_peak_computed, s.pressure);
+    if (s.force > 0)
+      last_loaded = i;
+    if (s.x <= analytic.half_width)
+    {
+      sum_sq += (s.pressure - s.analytic) * (s.pressure - s.analytic);
+      ++count;
+    }
+  }
+  h.rms_error_over_p0 = count > 0 ? std::sqrt(sum_sq / count) / analytic.peak_pressure : 0;
+  if (!samples.empty())
+  {
+    const double x_in = samples[last_loaded].x;
+    const double x_out = last_loaded + 1 < samples.size() ? samples[last_loaded + 1].x : x_in;
+    h.a_computed = 0.5 * (x_in + x_out);
+    h.element_size = x_out - x_in;
+  }
+  return h;
+}
+} // namespace feticon::nonlinear

@@ -1,0 +1,51 @@
+#pragma once
+/// @file Contact pressure at the slave nodes, from the multipliers and from the stresses,
+/// and the comparison with the Hertz / McEwen solution.
+///
+/// From multipliers: row i (normalized by ||b_i||) carries the normal force
+/// lambda_i / ||b_i|| on its slave node (ALGORITHMS.md section 4); the nodal pressure is that
+/// force over the node's tributary area integral(N_a dA) on the slave surface, taken in the
+/// current configuration. In plane strain the nodes through the thickness at one x are
+/// summed: p(x) = sum F / sum A.
+/// From stresses: p = -n' sigma n with the nodally averaged Cauchy stress of the slave body.
+
+#include "fem/problem.hpp"
+#include "nonlinear/contact_solution.hpp"
+#include "problems/hertz.hpp"
+
+#include <vector>
+
+namespace feticon::nonlinear
+{
+struct PressureSample
+{
+  double x = 0;              ///< reference x-coordinate of the node line (m)
+  double force = 0;          ///< normal contact force of the nodes at x (N)
+  double area = 0;           ///< their tributary area (m^2)
+  double pressure = 0;       ///< force / area (Pa)
+  double stress_pressure = 0; ///< -n' sigma n from the averaged stress (Pa)
+  double analytic = 0;       ///< McEwen p(x) (Pa), when compared with Hertz
+};
+
+/// Pressure along x on the slave surface of pair 0, sorted by x.
+std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
+                                                const ContactSolution& solution,
+                                                fem::Kinematics kinematics);
+
+/// Total normal contact force (N): sum of lambda_i / ||b_i||.
+double total_normal_force(const ContactSolution& solution);
+
+struct HertzComparison
+{
+  double a_analytic = 0, p0_analytic = 0;
+  double a_computed = 0;        ///< midway between the last loaded and first unloaded node
+  double p_peak_computed = 0;   ///< largest nodal pressure from the multipliers
+  double rms_error_over_p0 = 0; ///< RMS of p - p_McEwen over nodes with x <= a, over p0
+  double element_size = 0;      ///< slave element size at the contact edge (m)
+  double applied_load = 0;      ///< Q/2 * thickness (N) carried by the half model
+};
+
+/// Fills `analytic` in `samples` and returns the figures.
+HertzComparison compare_with_hertz(const problems::HertzParameters& parameters,
+                                   std::vector<PressureSample>& samples);
+} // namespace feticon::nonlinear

@@ -1,0 +1,54 @@
+#pragma once
+/// @file What a contact solve returns: displacement, contact multipliers and history.
+
+#include "contact/contact_constraints.hpp"
+#include "la/types.hpp"
+
+#include <string>
+#include <vector>
+
+namespace feticon::nonlinear
+{
+/// One outer iteration (one QP or linear solve).
+struct OuterIteration
+{
+  int load_step = 0;
+  int iteration = 0;
+  int qp_iterations = 0;          ///< MPRGP steps (or penalty active-set solves)
+  int hessian_multiplications = 0;
+  int smalbe_outer = 0;
+  double residual_norm = 0;       ///< ||f_ext - f_int - B' lambda|| / ||f_ext|| after the update
+  double displacement_change = 0; ///< ||du|| / ||u||
+  int64_t active_contacts = 0;
+  double feasibility_error = 0;
+  double seconds = 0;
+};
+
+struct LoadStep
+{
+  double load_factor = 0;
+  int outer_iterations = 0;
+  bool converged = false;
+  double displacement_change = 0;
+  double residual_norm = 0;
+  std::vector<int> inner_iterations;
+};
+
+struct ContactSolution
+{
+  la::Vector u;                              ///< global displacement, 3 per mesh node
+  contact::ContactConstraints constraints;   ///< contact rows of the last solve
+  la::Vector contact_lambda;                 ///< their (row-normalized) multipliers
+  std::vector<OuterIteration> history;
+  std::vector<LoadStep> steps;
+  bool converged = false;
+  std::string reason;
+  // Figures of the last solve:
+  int64_t n_dual = 0;
+  int64_t n_kernel = 0;
+  int32_t n_subdomains = 0;
+  double feasibility_error = 0;
+  double pfp_norm = 0;
+  double penalty = 0; ///< eps_n (N/m) for the primal penalty
+};
+} // namespace feticon::nonlinear

@@ -1,0 +1,27 @@
+#pragma once
+/// @file Contact by Total FETI with the dual penalty / SMALBE-M, inside the seed's
+/// modified Newton–Raphson outer loop (seed section 5; ALGORITHMS.md section 8).
+///
+/// Per load step t_n and outer iteration k:
+///   r = t_n f_ext - f_int(u)  (no contact forces),  contact rows B_I, c_I = g(u) built in
+///   the current configuration x = X + u,  c_E = target - B_E u,
+///   solve the dual QP for du with lambda the total multipliers (warm-started),
+///   u <- u + du,  stop when ||du|| <= tol ||u||.
+/// K (and so F, K+, R) is assembled and factorized once (K_0, the seed's initial step) and
+/// kept; only B_I, c_I and G change. With linear kinematics one solve is exact.
+
+#include "common/timer.hpp"
+#include "fem/problem.hpp"
+#include "nonlinear/contact_solution.hpp"
+#include "nonlinear/solver_settings.hpp"
+
+#include <functional>
+
+namespace feticon::nonlinear
+{
+/// Called after every converged load step with the solution so far (for output).
+using StepCallback = std::function<void(int load_step, const ContactSolution&)>;
+
+ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings,
+                                   TimerTable& timers, const StepCallback& on_step = {});
+} // namespace feticon::nonlinear

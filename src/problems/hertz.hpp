@@ -1,0 +1,38 @@
+#pragma once
+/// @file The seed's Hertz benchmark (section 6): a cylinder of radius R1 = 1 m on a
+/// half-space, both steel (E = 2e11 Pa, nu = 0.3), line load Q = 4e8 N/m, plane strain,
+/// modelled with symmetry about x = 0. Analytic reference: Hertz / McEwen (Johnson 1985,
+/// ch. 4; ALGORITHMS.md section 9).
+///
+/// Boundary conditions of the half model: u_x = 0 on the symmetry plane x = 0 (both
+/// bodies), the block's bottom fixed, u_z = 0 everywhere (eliminated), and the half load
+/// Q/2 per unit length as a uniform downward traction on the cylinder's top face y = R1.
+/// The cylinder is held vertically only by contact.
+
+#include "fem/problem.hpp"
+#include "mesh/hertz.hpp"
+
+namespace feticon::problems
+{
+struct HertzParameters
+{
+  mesh::HertzMeshParameters mesh;
+  double line_load = 4.0e8; ///< Q (N/m) on the whole cylinder; the half model carries Q/2
+  fem::Material material{2.0e11, 0.3};
+};
+
+/// The problem: bodies "cylinder" (slave surface "cylinder_contact") and "block" (master
+/// surface "block_contact").
+fem::Problem hertz_problem(const HertzParameters& parameters);
+
+/// Analytic plane-strain Hertz line contact of two bodies of one material.
+struct HertzAnalytic
+{
+  double effective_modulus; ///< E* (Pa): 1/E* = 2 (1 - nu^2) / E
+  double half_width;        ///< a = sqrt(4 Q R / (pi E*)) (m)
+  double peak_pressure;     ///< p0 = 2 Q / (pi a) (Pa)
+  /// p(x) = p0 sqrt(1 - x^2/a^2) for |x| <= a, else 0 (Pa).
+  double pressure(double x) const;
+};
+HertzAnalytic hertz_analytic(const HertzParameters& parameters);
+} // namespace feticon::problems
