@@ -63,15 +63,21 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s)
 
 nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution)
 {
-  int iterations = 0, products = 0, smalbe = 0;
+  int iterations = 0, products = 0, smalbe = 0, cg = 0, expansion = 0, proportioning = 0;
   for (const auto& it : solution.history)
   {
+    cg += it.cg_steps;
+    expansion += it.expansion_steps;
+    proportioning += it.proportioning_steps;
     iterations += it.qp_iterations;
     products += it.hessian_multiplications;
     smalbe += it.smalbe_outer;
   }
   return {{"iterations", iterations},
           {"hessian_multiplications", products},
+          {"cg_steps", cg},
+          {"expansion_steps", expansion},
+          {"proportioning_steps", proportioning},
           {"smalbe_outer_iterations", smalbe},
           {"outer_iterations", solution.history.size()}};
 }

@@ -15,6 +15,9 @@ struct OuterIteration
   int load_step = 0;
   int iteration = 0;
   int qp_iterations = 0;          ///< MPRGP steps (or penalty active-set solves)
+  int cg_steps = 0;
+  int expansion_steps = 0;
+  int proportioning_steps = 0;
   int hessian_multiplications = 0;
   int smalbe_outer = 0;
   double residual_norm = 0;       ///< ||f_ext - f_int - B' lambda|| / ||f_ext|| after the update

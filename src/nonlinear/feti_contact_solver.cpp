@@ -119,6 +119,9 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       it.load_step = step;
       it.iteration = k;
       it.qp_iterations = solution.report.iterations;
+      it.cg_steps = solution.report.cg_steps;
+      it.expansion_steps = solution.report.expansion_steps;
+      it.proportioning_steps = solution.report.proportioning_steps;
       it.hessian_multiplications = solution.report.hessian_multiplications;
       it.smalbe_outer = solution.outer_iterations;
       it.active_contacts = solution.active_contacts;

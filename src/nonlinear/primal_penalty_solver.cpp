@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "fem/assembler.hpp"
+#include "fem/loads.hpp"
 #include "la/cholmod.hpp"
 
 #include <algorithm>
@@ -15,23 +16,39 @@ namespace
 {
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
-/// eps_n B_A' B_A and eps_n B_A' c_A for the rows flagged in `active`.
+/// Penalty of each row: eps_n times the slave node's tributary area over the mean one, so
+/// that a uniform penetration gives a uniform pressure (a node-wise spring would give the
+/// half-area node on a symmetry plane twice the pressure of its neighbours).
+la::Vector row_penalties(const fem::Problem& problem, const contact::ContactConstraints& rows,
+                         double eps_n)
+{
+  la::Vector area = la::Vector::Zero(3 * problem.mesh.n_nodes());
+  fem::add_face_traction(problem.mesh, problem.mesh.face_set(problem.contacts[0].slave),
+                         Eigen::Vector3d(1, 0, 0), area);
+  la::Vector eps(static_cast<la::Index>(rows.slave_node.size()));
+  for (size_t i = 0; i < rows.slave_node.size(); ++i)
+    eps(static_cast<la::Index>(i)) = area(3 * rows.slave_node[i]);
+  const double mean = eps.size() > 0 ? eps.mean() : 1.0;
+  return eps * (eps_n / mean);
+}
+
+/// B_A' E B_A and B_A' E c_A (E = diag of row penalties) for the rows flagged in `active`.
 void penalty_terms(const contact::ContactConstraints& rows, const std::vector<char>& active,
-                   double eps_n, la::SparseMatrix& K_pen, la::Vector& f_pen)
+                   const la::Vector& eps, la::SparseMatrix& K_pen, la::Vector& f_pen)
 {
   std::vector<la::Triplet> triplets;
   la::Vector c_A = la::Vector::Zero(rows.c.size());
   for (int r = 0; r < rows.B.outerSize(); ++r)
     if (active[r])
     {
-      c_A(r) = rows.c(r);
+      c_A(r) = eps(r) * rows.c(r);
       for (RowMatrix::InnerIterator it(rows.B, r); it; ++it)
         triplets.emplace_back(r, static_cast<int>(it.col()), it.value());
     }
   la::SparseMatrix B_A(rows.B.rows(), rows.B.cols());
   B_A.setFromTriplets(triplets.begin(), triplets.end());
-  K_pen = eps_n * la::SparseMatrix(B_A.transpose() * B_A);
-  f_pen = eps_n * (B_A.transpose() * c_A);
+  K_pen = la::SparseMatrix(B_A.transpose() * eps.asDiagonal() * B_A);
+  f_pen = B_A.transpose() * c_A;
 }
 
 void log_iteration(const OuterIteration& it)
@@ -113,7 +130,8 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
         if (out.penalty == 0)
           out.penalty = settings.eps_n_factor * K.diagonal().maxCoeff();
       }
-      penalty_terms(rows, active, out.penalty, K_pen, f_pen);
+      const la::Vector eps = row_penalties(problem, rows, out.penalty);
+      penalty_terms(rows, active, eps, K_pen, f_pen);
       OuterIteration it;
       {
         ScopedTimer t(timers, "factorization + solve");
@@ -126,7 +144,7 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
           const la::Vector u_new = elim.expand(factor.solve(elim.reduce_rhs(A, t_n * f_ext + f_pen)));
           it.displacement_change = (u_new - u).norm() / std::max(u_new.norm(), 1e-300);
           u = u_new;
-          out.contact_lambda = (out.penalty * (rows.B * u - rows.c)).cwiseMax(0.0);
+          out.contact_lambda = eps.cwiseProduct(rows.B * u - rows.c).cwiseMax(0.0);
         }
         else
         {
@@ -139,7 +157,7 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
           const la::Vector du = elim.expand(factor.solve(elim.restrict(t_n * f_ext - f_int + f_pen)));
           u += du;
           it.displacement_change = du.norm() / std::max(u.norm(), 1e-300);
-          out.contact_lambda = (out.penalty * (rows.B * du - rows.c)).cwiseMax(0.0);
+          out.contact_lambda = eps.cwiseProduct(rows.B * du - rows.c).cwiseMax(0.0);
         }
       }
       FETICON_CHECK(u.allFinite(), "primal penalty: the solution is not finite");

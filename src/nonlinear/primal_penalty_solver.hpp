@@ -4,8 +4,9 @@
 /// with CHOLMOD; iterated until the active set {violated rows} stops changing.
 ///
 /// For row i (normalized, B_I u <= c_I) the violation is v_i = b_i u - c_i; the penalty
-/// energy 1/2 eps_n sum <v_i>^2 adds eps_n B_A'B_A to K and eps_n B_A'c_A to the load.
-/// The penalty multiplier lambda_i = eps_n <v_i> is comparable with the FETI multipliers.
+/// energy 1/2 sum eps_i <v_i>^2 adds B_A' E B_A to K and B_A' E c_A to the load, with
+/// eps_i = eps_n A_i / mean(A) (A_i the slave node's tributary area: a per-area penalty).
+/// The penalty multiplier lambda_i = eps_i <v_i> is comparable with the FETI multipliers.
 /// With total Lagrangian kinematics each outer iteration is a full Newton step with K_T
 /// and contact rebuilt in the current configuration (an independent reference for FETI).
 /// The problem must be coercive once contact springs act (the seed: "the primal penalty
