@@ -134,6 +134,30 @@ void SurfaceSearch::candidates(const Eigen::Vector3d& point, std::vector<int32_t
       ids.push_back(_entries[e]);
 }
 
+void SurfaceSearch::candidates(const BoundingBox& query, std::vector<int32_t>& ids) const
+{
+  ids.clear();
+  if (_boxes.empty() || !_bounds.intersects(query))
+    return;
+  // Clamp the query to the grid bounds: the cells outside hold no box, and the clamp keeps the
+  // cell indices of a huge query from overflowing.
+  const std::array<int64_t, 3> lo = cell_of(query.lower.cwiseMax(_bounds.lower));
+  const std::array<int64_t, 3> hi = cell_of(query.upper.cwiseMin(_bounds.upper));
+  for (int64_t i = lo[0]; i <= hi[0]; ++i)
+    for (int64_t j = lo[1]; j <= hi[1]; ++j)
+      for (int64_t k = lo[2]; k <= hi[2]; ++k)
+      {
+        const int64_t bucket = bucket_of({i, j, k});
+        for (int64_t e = _offsets[bucket]; e < _offsets[bucket + 1]; ++e)
+          if (_boxes[_entries[e]].intersects(query))
+            ids.push_back(_entries[e]);
+      }
+  // A box spanning several visited cells (or reached through hash collisions) appears repeatedly.
+  std::ranges::sort(ids);
+  const auto duplicates = std::ranges::unique(ids);
+  ids.erase(duplicates.begin(), duplicates.end());
+}
+
 std::vector<int32_t> SurfaceSearch::candidates(const Eigen::Vector3d& point) const
 {
   std::vector<int32_t> ids;

@@ -50,6 +50,12 @@ struct BoundingBox
   {
     return (point.array() >= lower.array()).all() && (point.array() <= upper.array()).all();
   }
+  /// Whether the two closed boxes share at least a point.
+  bool intersects(const BoundingBox& other) const
+  {
+    return (lower.array() <= other.upper.array()).all() &&
+           (other.lower.array() <= upper.array()).all();
+  }
   /// Euclidean distance from `point` to the box, 0 inside (m).
   double distance(const Eigen::Vector3d& point) const
   {
@@ -69,6 +75,10 @@ public:
   void candidates(const Eigen::Vector3d& point, std::vector<int32_t>& ids) const;
   /// Convenience overload of candidates() that allocates.
   std::vector<int32_t> candidates(const Eigen::Vector3d& point) const;
+  /// @brief Ids of the boxes intersecting the box `query` (closed boxes: touching counts), sorted
+  /// ascending, into `ids` (cleared first). Visits every bucket of the cells `query` overlaps, so
+  /// it is meant for queries of about the size of the stored boxes (e.g. one slave face).
+  void candidates(const BoundingBox& query, std::vector<int32_t>& ids) const;
 
   int32_t n_boxes() const { return static_cast<int32_t>(_boxes.size()); }
   const std::vector<BoundingBox>& boxes() const { return _boxes; }
