@@ -1,5 +1,7 @@
 #include "contact/contact_constraints.hpp"
 
+#include "contact/mortar_constraints.hpp"
+
 #include "common/error.hpp"
 
 #include <algorithm>
@@ -188,6 +190,16 @@ double largest_face_diagonal(const mesh::HexMesh& mesh, const la::Vector& u,
 ContactConstraints build_contact_constraints(const mesh::HexMesh& mesh, const la::Vector& u,
                                              const ContactPair& pair, const ContactOptions& options)
 {
+  if (options.formulation == ContactFormulation::mortar)
+    return build_mortar_constraints(mesh, u, pair, options);
+  return build_node_to_segment_constraints(mesh, u, pair, options);
+}
+
+ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh,
+                                                     const la::Vector& u,
+                                                     const ContactPair& pair,
+                                                     const ContactOptions& options)
+{
   const la::Index n_dofs = 3 * static_cast<la::Index>(mesh.n_nodes());
   FETICON_CHECK(u.size() == 0 || u.size() == n_dofs,
                 "contact: displacement has " << u.size() << " entries, expected 3 * n_nodes = "
@@ -197,6 +209,9 @@ ContactConstraints build_contact_constraints(const mesh::HexMesh& mesh, const la
                                               << " m must be >= 0 (0 = automatic)");
   FETICON_CHECK(std::isfinite(options.rim_extension) && options.rim_extension >= 0,
                 "contact: rim_extension = " << options.rim_extension << " must be >= 0");
+  FETICON_CHECK(options.mortar_min_overlap > 0 && options.mortar_min_overlap <= 1,
+                "contact: mortar_min_overlap = " << options.mortar_min_overlap
+                                                 << " must be in (0, 1]");
   const std::vector<mesh::Face>& faces = mesh.face_set(pair.master);
   FETICON_CHECK(!faces.empty(), "contact: master face set '" << pair.master << "' is empty");
   const std::vector<int32_t> slave_nodes = mesh.face_set_nodes(pair.slave);
@@ -270,6 +285,10 @@ ContactConstraints build_contact_constraints(const mesh::HexMesh& mesh, const la
   out.c.resize(n_rows);
   for (la::Index i = 0; i < n_rows; ++i)
     out.c(i) = out.gap[i] / out.row_norm[i];
+  const SlaveNodalAreas areas = slave_nodal_areas(mesh, u, pair.slave);
+  out.slave_area.reserve(out.slave_node.size());
+  for (const int32_t s : out.slave_node)
+    out.slave_area.push_back(areas.of(s));
   return out;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-/// @file Node-to-segment contact rows B_I, c_I (ALGORITHMS.md sections 0 and 4).
+/// @file Node-to-segment contact rows B_I, c_I (ALGORITHMS.md sections 0 and 4). The dual mortar
+/// rows of mortar_constraints.hpp share this data layout (ContactOptions::formulation).
 ///
 /// For every slave node s (a node of the slave face set) and its closest point xi_bar on a master
 /// face with corners a = 0..3, in the current configuration x = X + u:
@@ -80,6 +81,15 @@ struct ContactPair
   std::string master;
 };
 
+/// How the rows are built: one closest point per slave node (node_to_segment, this file) or
+/// integrated dual mortar weights (mortar, mortar_constraints.hpp). Both give rows of the same
+/// form -n' on the slave node and +w_a n' on master nodes a with sum_a w_a = 1.
+enum class ContactFormulation : uint8_t
+{
+  node_to_segment = 0, ///< w_a = N_a(xi_bar) at the closest point (ALGORITHMS.md section 4)
+  mortar = 1,          ///< w_a = M_ja / D_j, segment-to-segment dual mortar integrals
+};
+
 struct ContactOptions
 {
   /// Search distance d_s (m): candidate faces are those whose box inflated by d_s contains the
@@ -89,9 +99,16 @@ struct ContactOptions
   /// surface still gets a row on the nearest face if its projection there has
   /// |xi|, |eta| <= 1 + rim_extension (see file comment). 0.05 is 2.5 % of the face width.
   double rim_extension = 0.05;
+  /// Row formulation; node_to_segment until the mortar rows are validated on the solvers.
+  ContactFormulation formulation = ContactFormulation::node_to_segment;
+  /// Mortar only, in (0, 1]: a slave node gets a row only if the part of its support that
+  /// projects onto the master surface carries sum_a M_ja >= mortar_min_overlap * D_j (1 for full
+  /// overlap, 0.5 for a node on a straight master rim, 0.25 on a master corner); the weights are
+  /// then divided by that fraction, so at most 1 / 0.2 = 5 times amplified (mortar_constraints.hpp).
+  double mortar_min_overlap = 0.2;
 };
 
-/// How the closest point of a row was found.
+/// How the closest point of a row (for mortar rows: of its slave node) was found.
 enum class ProjectionKind : uint8_t
 {
   face = 0, ///< accepted projection inside a master face
@@ -112,9 +129,12 @@ struct ContactConstraints
   std::vector<Eigen::Vector3d> normal;
   /// Unnormalized geometric gap g_i (m): >= 0 open, < 0 penetration.
   std::vector<double> gap;
-  /// |b_i| = sqrt(1 + sum_a N_a^2) before normalization, in [sqrt(5)/2, sqrt(2)] (up to the
-  /// slightly negative N_a of rim rows).
+  /// |b_i| = sqrt(1 + sum_a w_a^2) before normalization; for node-to-segment rows w_a = N_a and
+  /// |b_i| is in [sqrt(5)/2, sqrt(2)] (up to the slightly negative N_a of rim rows).
   std::vector<double> row_norm;
+  /// Slave nodal area D_j = int N_j dA over the slave faces of the row's node, in the current
+  /// configuration (m^2): the nodal contact pressure is slave_normal_forces / slave_area.
+  std::vector<double> slave_area;
   /// Index of the master face (into the master face set) of each row.
   std::vector<int32_t> master_face;
   /// Reference coordinates (xi, eta) of the closest point on that face.
@@ -140,17 +160,25 @@ QuadCoordinates current_face_coordinates(const mesh::HexMesh& mesh, const la::Ve
 double largest_face_diagonal(const mesh::HexMesh& mesh, const la::Vector& u,
                              const std::vector<mesh::Face>& faces);
 
-/// @brief Node-to-segment contact rows of `pair` at the displacement `u` (see file comment).
+/// @brief Contact rows of `pair` at the displacement `u`: build_node_to_segment_constraints or
+/// build_mortar_constraints (mortar_constraints.hpp) according to options.formulation.
 /// @param[in] mesh    mesh holding both face sets (faces oriented outward of their bodies)
 /// @param[in] u       global displacement (m), 3 per node (3 * node + component), or empty for 0
 /// @param[in] pair    slave and master face-set names
-/// @param[in] options search distance
+/// @param[in] options search distance, rim extension, formulation
 /// @return rows sorted by slave node id
 /// @throws feticon::Error for an unknown face set, an empty master set, a wrong size of u or a
-///         negative search distance or rim extension.
+///         negative search distance or rim extension, or mortar_min_overlap outside (0, 1].
 ContactConstraints build_contact_constraints(const mesh::HexMesh& mesh, const la::Vector& u,
                                              const ContactPair& pair,
                                              const ContactOptions& options = {});
+
+/// @brief Node-to-segment rows of `pair` (see file comment); options.formulation is ignored.
+/// Arguments, result and errors as build_contact_constraints.
+ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh,
+                                                     const la::Vector& u,
+                                                     const ContactPair& pair,
+                                                     const ContactOptions& options = {});
 
 /// @brief Constraint forces -B' lambda_hat on the structure (N, per global DOF), with lambda_hat
 /// the multipliers of the normalized rows.

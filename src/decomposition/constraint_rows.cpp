@@ -105,13 +105,10 @@ ConstraintRows rows_from_global(const Decomposition& decomposition,
       FETICON_CHECK(!copies.empty(), "constraint on node " << node << " outside every subdomain");
       const Subdomain& sub = decomposition.subdomain(copies.front().subdomain);
       const int32_t dof = sub.active_of_full[3 * copies.front().local_node + component];
+      // An eliminated component is identically zero, so its entry contributes nothing
+      // (in the deformed configuration normals pick up round-off out of plane).
       if (dof < 0)
-      {
-        FETICON_CHECK(std::abs(it.value()) < 1e-12,
-                      "constraint row " << r << " acts on eliminated component " << component
-                                        << " of node " << node);
         continue;
-      }
       entries.push_back({copies.front().subdomain, dof, it.value()});
     }
     rows.add_row(entries, c(r));

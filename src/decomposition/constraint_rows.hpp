@@ -53,7 +53,8 @@ EqualityRows build_equality_rows(const Decomposition& decomposition,
 
 /// Converts rows over global mesh DOFs (3*node + component; `B_global` row-major, one row
 /// per constraint) to subdomain rows. A DOF shared by several subdomains is put on its
-/// first copy (the copies are glued). Coefficients on eliminated components must vanish.
+/// first copy (the copies are glued). Entries on eliminated components are dropped: those
+/// components are identically zero.
 ConstraintRows rows_from_global(const Decomposition& decomposition,
                                 const Eigen::SparseMatrix<double, Eigen::RowMajor>& B_global,
                                 const la::Vector& c);
