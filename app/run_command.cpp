@@ -50,6 +50,8 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s)
   out.dual.method = out.method == nonlinear::ContactMethod::dual_penalty ? dual::DualMethod::dual_penalty
                                                                         : dual::DualMethod::smalbe;
   out.dual.rho = s.number("rho");
+  out.dual.smalbe_M0 = s.number("smalbe.M0");
+  out.dual.smalbe_beta = s.number("smalbe.beta");
   out.dual.rtol = s.number("qp.rtol");
   out.dual.max_iterations = s.integer("qp.max_iterations");
   out.eps_n_factor = s.number("eps_n");
@@ -57,6 +59,12 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s)
   out.kinematics = large ? fem::Kinematics::total_lagrangian : fem::Kinematics::linear;
   out.load_steps = large ? s.integer("load_steps") : 1;
   out.subdomains = s.integer("subdomains");
+  const std::string& stiffness = s.text("newton.stiffness");
+  out.stiffness = stiffness == "initial" ? nonlinear::StiffnessUpdate::initial
+                  : stiffness == "step"  ? nonlinear::StiffnessUpdate::load_step
+                                         : nonlinear::StiffnessUpdate::iteration;
+  out.max_outer_iterations = s.integer("newton.max_iterations");
+  out.displacement_tolerance = s.number("newton.tolerance");
   out.metis = s.text("partitioner") == "metis";
   return out;
 }

@@ -36,7 +36,18 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   FETICON_CHECK(options.rho > 0, "rho = " << options.rho << " must be positive");
   const CoarseProjector projector(feti.G());
   const la::Vector e = feti.apply_Rt(f_stacked);
-  const la::Vector lambda_tilde = projector.particular_solution(e);
+  // Particular solution of G lambda = e (ALGORITHMS.md 1): variant B, lambda~ = [lambda~_E; 0]
+  // from the equality rows alone, when they fix every rigid mode; then the contact bounds
+  // are simply lambda_I >= 0 and mu = 0 is feasible. Otherwise (a body held only by
+  // contact, like the Hertz cylinder) variant A, the minimal-norm G'(GG')^{-1} e.
+  std::vector<char> equality_mask(m, 0);
+  std::fill(equality_mask.begin(), equality_mask.begin() + n_equality, 1);
+  const la::SparseMatrix G_E = feti.G_columns(equality_mask);
+  la::Vector lambda_tilde;
+  if (n_equality < m && CoarseProjector::has_full_row_rank(G_E))
+    lambda_tilde = CoarseProjector(G_E).particular_solution(e);
+  else
+    lambda_tilde = projector.particular_solution(e);
   const la::Vector d = feti.apply_B(feti.apply_K_plus(f_stacked)) - c;
 
   DualSolution out;
@@ -54,7 +65,10 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   la::Vector lower = la::Vector::Constant(m, -std::numeric_limits<double>::infinity());
   for (int64_t i = n_equality; i < m; ++i)
     lower(i) = -lambda_tilde(i);
-  la::Vector mu = lambda_start.size() == m ? la::Vector(lambda_start - lambda_tilde)
+  // Warm start projected onto Ker G: when K_M(u) or the contact rows change, G changes and
+  // lambda_start - lambda~ is far from Ker G, which SMALBE-M would then repair slowly
+  // through its multiplier (the inner stop ||g_P|| <= M ||G~ mu|| passes at once).
+  la::Vector mu = lambda_start.size() == m ? projector.apply_P(lambda_start - lambda_tilde)
                                            : la::Vector(la::Vector::Zero(m));
 
   qp::MprgpOptions mprgp;
@@ -74,6 +88,8 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
     qp::SmalbeOptions smalbe;
     smalbe.rtol = options.rtol;
     smalbe.rho = options.rho;
+    smalbe.M0 = options.smalbe_M0;
+    smalbe.beta = options.smalbe_beta;
     smalbe.max_inner_iterations = options.max_iterations;
     smalbe.mprgp = mprgp;
     qp::Smalbe solver(H, C, smalbe);

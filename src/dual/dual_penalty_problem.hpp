@@ -2,8 +2,9 @@
 /// @file The seed's contact dual: problem (9) solved by MPRGP (dual penalty), or the same
 /// problem with G lambda = e enforced exactly by SMALBE-M (ALGORITHMS.md section 1).
 ///
-///   lambda = lambda~ + mu,  lambda~ = G'(GG')^{-1} e   (minimal norm: the Hertz cylinder
-///                                                      is held only by contact),
+///   lambda = lambda~ + mu,  lambda~ = [G_E'(G_E G_E')^{-1} e; 0] when the equality rows fix
+///   every rigid mode, else G'(GG')^{-1} e (minimal norm: the Hertz cylinder is held only by
+///   contact),
 ///   min 1/2 mu' H mu - mu' b^   s.t.  mu_I >= -lambda~_I   [and G~ mu = 0 for SMALBE-M],
 ///   H = P F^ P + rho Q,  b^ = P (d^ - F^ lambda~),  F^ = F / ||PFP||,  d^ = d / ||PFP||.
 /// Scaling by ||PFP|| (power iterations) leaves the minimizer unchanged and makes rho and the
@@ -30,6 +31,8 @@ struct DualPenaltyOptions
   double rtol = 1e-8;         ///< QP tolerance on ||g_P|| (and ||G~ mu||) relative to ||b^||
   int max_iterations = 20000; ///< MPRGP steps in total
   int power_iterations = 30;  ///< for ||PFP||
+  double smalbe_M0 = 1.0;     ///< SMALBE-M initial M (scaled units)
+  double smalbe_beta = 2.0;   ///< SMALBE-M: M <- M / beta when L increases too little
 };
 
 struct DualSolution

@@ -4,17 +4,32 @@
 
 namespace feticon::dual
 {
-CoarseProjector::CoarseProjector(const la::SparseMatrix& G) : _G(G)
+namespace
+{
+/// Factorizes G G' and tells whether G has full row rank: dependent rows show up as a
+/// (nearly) zero pivot of the factor.
+bool factorize_full_rank(const la::SparseMatrix& G, Eigen::SimplicialLLT<la::SparseMatrix>& llt)
 {
   const la::SparseMatrix GGt = G * G.transpose();
-  _llt.compute(GGt);
-  bool full_rank = _llt.info() == Eigen::Success;
-  if (full_rank && GGt.rows() > 0)
-  {
-    // Dependent rows of G show up as a (nearly) zero pivot of the factor.
-    const la::Vector d = _llt.matrixL().nestedExpression().diagonal().cwiseAbs();
-    full_rank = d.minCoeff() > 1e-7 * d.maxCoeff();
-  }
+  llt.compute(GGt);
+  if (llt.info() != Eigen::Success)
+    return false;
+  if (GGt.rows() == 0)
+    return true;
+  const la::Vector d = llt.matrixL().nestedExpression().diagonal().cwiseAbs();
+  return d.minCoeff() > 1e-7 * d.maxCoeff();
+}
+} // namespace
+
+bool CoarseProjector::has_full_row_rank(const la::SparseMatrix& G)
+{
+  Eigen::SimplicialLLT<la::SparseMatrix> llt;
+  return factorize_full_rank(G, llt);
+}
+
+CoarseProjector::CoarseProjector(const la::SparseMatrix& G) : _G(G)
+{
+  const bool full_rank = factorize_full_rank(G, _llt);
   FETICON_CHECK(full_rank, "the constraints do not suppress every rigid-body motion (G G' is "
                            "singular): a body is free to move; add supports or symmetry conditions");
 }

@@ -17,6 +17,8 @@ public:
   /// Factorizes G G'. Throws feticon::Error if G has dependent rows, i.e. some rigid
   /// motion is not suppressed by any constraint (a body that can fly away).
   explicit CoarseProjector(const la::SparseMatrix& G);
+  /// True if G has full row rank (G G' factorizes with no vanishing pivot).
+  static bool has_full_row_rank(const la::SparseMatrix& G);
 
   la::Vector apply_Q(const la::Vector& lambda) const;
   la::Vector apply_P(const la::Vector& lambda) const { return lambda - apply_Q(lambda); }

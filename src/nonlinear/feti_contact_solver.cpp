@@ -6,6 +6,7 @@
 #include "decomposition/subdomain_operators.hpp"
 
 #include <chrono>
+#include <map>
 #include <cstdio>
 
 namespace feticon::nonlinear
@@ -64,6 +65,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
   contact_options.search_distance = settings.search_distance;
 
   la::Vector lambda_previous;
+  std::map<int32_t, double> previous_contact; ///< contact multiplier by slave node
   const bool linear = settings.kinematics == fem::Kinematics::linear;
   for (int step = 1; step <= settings.load_steps; ++step)
   {
@@ -77,6 +79,13 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
     for (int k = 1; k <= settings.max_outer_iterations; ++k)
     {
       const auto iteration_start = std::chrono::steady_clock::now();
+      const bool refresh = !linear && ((settings.stiffness == StiffnessUpdate::load_step && k == 1 && step > 1) ||
+                                       (settings.stiffness == StiffnessUpdate::iteration && (step > 1 || k > 1)));
+      if (refresh)
+      {
+        ScopedTimer t(timers, "assembly + factorization");
+        system.update(u); // K_M(u) and R(X + u)
+      }
       const la::Vector u_global = decomp->gather_mean(u);
       contact::ContactConstraints contact_rows;
       la::Vector residual;
@@ -100,12 +109,19 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       // c_E = target - B_E u (gluing 0, Dirichlet t_n u_D); c_I = current gaps.
       la::Vector c = rows.c_vector();
       c.head(n_equality) = c_target - feti->apply_B(u).head(n_equality);
+      // Warm start: equality rows keep their numbering; contact rows are matched by slave
+      // node (rows are rebuilt every iteration), new rows start at 0.
       la::Vector warm;
       if (lambda_previous.size() > 0)
       {
-        // Equality rows keep their numbering; contact rows may change, so they restart at 0.
         warm = la::Vector::Zero(rows.n_rows());
         warm.head(n_equality) = lambda_previous.head(n_equality);
+        for (size_t i = 0; i < contact_rows.slave_node.size(); ++i)
+        {
+          const auto it = previous_contact.find(contact_rows.slave_node[i]);
+          if (it != previous_contact.end())
+            warm(n_equality + static_cast<la::Index>(i)) = it->second;
+        }
       }
       dual::DualSolution solution;
       {
@@ -114,6 +130,9 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       }
       u += solution.u;
       lambda_previous = solution.lambda;
+      previous_contact.clear();
+      for (size_t i = 0; i < contact_rows.slave_node.size(); ++i)
+        previous_contact[contact_rows.slave_node[i]] = solution.lambda(n_equality + static_cast<la::Index>(i));
 
       OuterIteration it;
       it.load_step = step;

@@ -7,8 +7,9 @@
 ///   the current configuration x = X + u,  c_E = target - B_E u,
 ///   solve the dual QP for du with lambda the total multipliers (warm-started),
 ///   u <- u + du,  stop when ||du|| <= tol ||u||.
-/// K (and so F, K+, R) is assembled and factorized once (K_0, the seed's initial step) and
-/// kept; only B_I, c_I and G change. With linear kinematics one solve is exact.
+/// By default K (and so F, K+, R) is assembled and factorized once (K_0, the seed's initial
+/// step) and kept; only B_I, c_I and G change. Optionally K_M(u) with R(X + u) is refreshed
+/// per load step or per iteration. With linear kinematics one solve is exact.
 
 #include "common/timer.hpp"
 #include "fem/problem.hpp"

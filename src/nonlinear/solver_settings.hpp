@@ -16,6 +16,15 @@ enum class ContactMethod
   primal_penalty ///< undecomposed, penalty springs eps_n <g>, CHOLMOD
 };
 
+/// Which stiffness the FETI outer loop uses (ALGORITHMS.md section 8). Never the full
+/// tangent K_T: for a stressed floating subdomain its kernel is not the rigid modes.
+enum class StiffnessUpdate
+{
+  initial,   ///< K_0 assembled and factorized once (the seed's modified Newton–Raphson)
+  load_step, ///< K_M(u) with R from x = X + u, refreshed at the start of every load step
+  iteration  ///< K_M(u) refreshed at every outer iteration
+};
+
 struct SolverSettings
 {
   ContactMethod method = ContactMethod::smalbe;
@@ -23,6 +32,7 @@ struct SolverSettings
   int load_steps = 1;                  ///< equal load increments
   int max_outer_iterations = 15;       ///< outer (Newton) iterations per load step
   double displacement_tolerance = 1e-6; ///< ||du|| <= tol ||u|| ends a load step
+  StiffnessUpdate stiffness = StiffnessUpdate::initial;
   int subdomains = 8;
   bool metis = true;                   ///< METIS, else structured partition
   decomposition::GeneralizedInverseMethod generalized_inverse =
