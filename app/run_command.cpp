@@ -36,6 +36,7 @@ problems::HertzParameters hertz_parameters(const io::Settings& s)
   p.mesh.master_ratio = s.number("hertz.master_ratio");
   p.mesh.block_width = s.number("hertz.block_width");
   p.mesh.block_depth = s.number("hertz.block_depth");
+  p.mesh.cylinder_width = s.number("hertz.cylinder_width");
   p.material = {s.number("material.young"), s.number("material.poisson")};
   return p;
 }
@@ -55,6 +56,8 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s)
   out.dual.rtol = s.number("qp.rtol");
   out.dual.max_iterations = s.integer("qp.max_iterations");
   out.eps_n_factor = s.number("eps_n");
+  out.formulation = s.text("contact.formulation") == "mortar" ? contact::ContactFormulation::mortar
+                                                               : contact::ContactFormulation::node_to_segment;
   const bool large = s.text("displacements") == "large";
   out.kinematics = large ? fem::Kinematics::total_lagrangian : fem::Kinematics::linear;
   out.load_steps = large ? s.integer("load_steps") : 1;

@@ -101,10 +101,10 @@ struct ContactOptions
   double rim_extension = 0.05;
   /// Row formulation; node_to_segment until the mortar rows are validated on the solvers.
   ContactFormulation formulation = ContactFormulation::node_to_segment;
-  /// Mortar only, in (0, 1]: a slave node gets a row only if the part of its support that
-  /// projects onto the master surface carries sum_a M_ja >= mortar_min_overlap * D_j (1 for full
-  /// overlap, 0.5 for a node on a straight master rim, 0.25 on a master corner); the weights are
-  /// then divided by that fraction, so at most 1 / 0.2 = 5 times amplified (mortar_constraints.hpp).
+  /// Mortar only, in (0, 1]: a slave node j gets a row only if the part of its support that
+  /// projects onto the master surface has the overlap o_j = sum_a M_ja / D_j >= this (1 for full
+  /// overlap; about 0.5 for a node on a straight master rim, 0.25 on a master corner). The
+  /// weights M_ja / D_j are divided by o_j (mortar_constraints.hpp), at most 1 / 0.2 = 5 times.
   double mortar_min_overlap = 0.2;
 };
 

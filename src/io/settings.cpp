@@ -23,6 +23,7 @@ std::vector<SettingSpec> make_specs()
       {"hertz.element_size", "0.005", "element size in the contact zone at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
       {"hertz.master_ratio", "1.3", "block (master) / cylinder (slave) contact element size", Type::number, {}, 0.2, 5, false},
       {"hertz.block_width", "1.5", "half-width of the block (m)", Type::number, {}, 0.2, 100, false},
+      {"hertz.cylinder_width", "0.6", "half-width of the modelled cylinder segment (m), < radius", Type::number, {}, 0.1, 0.99, false},
       {"hertz.block_depth", "1.5", "depth of the block (m)", Type::number, {}, 0.2, 100, false},
       {"material.young", "2e11", "Young's modulus E (Pa) of every body", Type::number, {}, 0, inf, true},
       {"material.poisson", "0.3", "Poisson's ratio nu of every body, in (-1, 0.5)", Type::number, {}, -1, 0.5, true},
@@ -32,6 +33,9 @@ std::vector<SettingSpec> make_specs()
       {"rho", "1", "dual penalty rho, dimensionless (F and d scaled by ||PFP||)", Type::number, {}, 0, inf, true},
       {"smalbe.M0", "1", "SMALBE-M initial M (scaled units: ||PFP|| = 1)", Type::number, {}, 0, 1e6, true},
       {"smalbe.beta", "2", "SMALBE-M: M <- M / beta when the Lagrangian increases too little", Type::number, {}, 1, 1e6, true},
+      {"contact.formulation", "mortar", "contact rows: node_to_segment (slave node on master "
+                                                 "face) or mortar (dual mortar, segment-to-segment)",
+       Type::text, {"node_to_segment", "mortar"}, 0, 0, false},
       {"eps_n", "100", "primal penalty eps_n as a multiple of max diag K", Type::number, {}, 0, inf, true},
       {"displacements", "small", "small (linear elasticity) or large (total Lagrangian)", Type::text, {"small", "large"}, 0, 0, false},
       {"newton.stiffness", "initial", "FETI outer-loop stiffness: initial (K_0 kept, the seed's "

@@ -63,6 +63,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
   const contact::ContactPair pair{problem.contacts[0].slave, problem.contacts[0].master};
   contact::ContactOptions contact_options;
   contact_options.search_distance = settings.search_distance;
+  contact_options.formulation = settings.formulation;
 
   la::Vector lambda_previous;
   std::map<int32_t, double> previous_contact; ///< contact multiplier by slave node

@@ -75,6 +75,7 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
   const contact::ContactPair pair{problem.contacts[0].slave, problem.contacts[0].master};
   contact::ContactOptions contact_options;
   contact_options.search_distance = settings.search_distance;
+  contact_options.formulation = settings.formulation;
   const bool linear = settings.kinematics == fem::Kinematics::linear;
 
   ContactSolution out;

@@ -1,6 +1,7 @@
 #pragma once
 /// @file Settings of the contact solvers (plain struct with documented defaults).
 
+#include "contact/contact_constraints.hpp"
 #include "decomposition/generalized_inverse.hpp"
 #include "dual/dual_penalty_problem.hpp"
 #include "fem/material.hpp"
@@ -39,6 +40,7 @@ struct SolverSettings
       decomposition::GeneralizedInverseMethod::fixing_dofs;
   dual::DualPenaltyOptions dual{};
   double search_distance = 0;          ///< 0: automatic (about one master element)
+  contact::ContactFormulation formulation = contact::ContactFormulation::mortar;
   double eps_n_factor = 100;           ///< primal penalty eps_n = factor * max diag K
 };
 } // namespace feticon::nonlinear

@@ -1,0 +1,227 @@
+#include "contact/mortar_constraints.hpp"
+
+#include "contact/surface_search.hpp"
+
+#include "common/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace feticon::contact
+{
+namespace
+{
+/// Sparse row of M under assembly: (master node, M_ja) pairs, a few per slave node.
+using CouplingRow = std::vector<std::pair<int32_t, double>>;
+
+/// |M_ja| <= this * D_j is integration round-off (biorthogonality zeros such as the far
+/// through-thickness master node of a matching layer) or a sliver without effect: such entries
+/// are left out of the row, and the renormalization uses the entries kept.
+constexpr double negligible_coupling = 1e-13;
+
+void add_to_row(CouplingRow& row, int32_t master_node, double value)
+{
+  for (auto& [node, sum] : row)
+    if (node == master_node)
+    {
+      sum += value;
+      return;
+    }
+  row.emplace_back(master_node, value);
+}
+
+bool share_a_node(const mesh::Face& first, const mesh::Face& second)
+{
+  return std::ranges::any_of(first, [&](int32_t node)
+                             { return std::ranges::find(second, node) != second.end(); });
+}
+
+Eigen::Vector3d current_position(const mesh::HexMesh& mesh, const la::Vector& u, int32_t node)
+{
+  Eigen::Vector3d x = mesh.nodes.row(node).transpose();
+  if (u.size() > 0)
+    x += u.segment<3>(3 * static_cast<la::Index>(node));
+  return x;
+}
+
+void check_displacement(const mesh::HexMesh& mesh, const la::Vector& u)
+{
+  const la::Index n_dofs = 3 * static_cast<la::Index>(mesh.n_nodes());
+  FETICON_CHECK(u.size() == 0 || u.size() == n_dofs,
+                "mortar: displacement has " << u.size() << " entries, expected 3 * n_nodes = "
+                                            << n_dofs << " (or 0 for u = 0)");
+}
+} // namespace
+
+int32_t SlaveNodalAreas::index_of(int32_t node) const
+{
+  const auto it = std::ranges::lower_bound(nodes, node);
+  return it != nodes.end() && *it == node ? static_cast<int32_t>(it - nodes.begin()) : -1;
+}
+
+double SlaveNodalAreas::of(int32_t node) const
+{
+  const int32_t j = index_of(node);
+  FETICON_CHECK(j >= 0, "mortar: node " << node << " is not a slave node");
+  return area(j);
+}
+
+SlaveNodalAreas slave_nodal_areas(const mesh::HexMesh& mesh, const la::Vector& u,
+                                  const std::string& slave)
+{
+  check_displacement(mesh, u);
+  SlaveNodalAreas areas;
+  areas.nodes = mesh.face_set_nodes(slave);
+  areas.area = la::Vector::Zero(static_cast<la::Index>(areas.nodes.size()));
+  for (const mesh::Face& face : mesh.face_set(slave))
+  {
+    const Eigen::Vector4d nodal_areas = face_nodal_areas(current_face_coordinates(mesh, u, face));
+    for (int k = 0; k < 4; ++k)
+      areas.area(areas.index_of(face[k])) += nodal_areas(k);
+  }
+  return areas;
+}
+
+MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vector& u,
+                                       const ContactPair& pair, double search_distance,
+                                       const SegmentOptions& options)
+{
+  check_displacement(mesh, u);
+  FETICON_CHECK(std::isfinite(search_distance) && search_distance > 0,
+                "mortar: search distance = " << search_distance << " m must be > 0");
+  const std::vector<mesh::Face>& slave_faces = mesh.face_set(pair.slave);
+  const std::vector<mesh::Face>& master_faces = mesh.face_set(pair.master);
+  FETICON_CHECK(!slave_faces.empty(), "mortar: slave face set '" << pair.slave << "' is empty");
+  FETICON_CHECK(!master_faces.empty(), "mortar: master face set '" << pair.master << "' is empty");
+
+  std::vector<QuadCoordinates> master_quads;
+  master_quads.reserve(master_faces.size());
+  std::vector<BoundingBox> boxes(master_faces.size());
+  for (size_t f = 0; f < master_faces.size(); ++f)
+  {
+    master_quads.push_back(current_face_coordinates(mesh, u, master_faces[f]));
+    for (int a = 0; a < 4; ++a)
+      boxes[f].extend(master_quads[f].row(a).transpose());
+    boxes[f].inflate(search_distance);
+  }
+  const SurfaceSearch search(std::move(boxes));
+
+  MortarCoupling coupling;
+  coupling.search_distance = search_distance;
+  coupling.slave.nodes = mesh.face_set_nodes(pair.slave);
+  const auto n_slave = static_cast<la::Index>(coupling.slave.nodes.size());
+  coupling.slave.area = la::Vector::Zero(n_slave);
+  std::vector<CouplingRow> rows(n_slave);
+  std::vector<int32_t> candidates;
+  for (const mesh::Face& face : slave_faces)
+  {
+    const QuadCoordinates slave_quad = current_face_coordinates(mesh, u, face);
+    const DualBasis dual = dual_basis(slave_quad);
+    std::array<int32_t, 4> slave_index{};
+    BoundingBox box;
+    for (int k = 0; k < 4; ++k)
+    {
+      slave_index[k] = coupling.slave.index_of(face[k]);
+      coupling.slave.area(slave_index[k]) += dual.nodal_area(k);
+      box.extend(slave_quad.row(k).transpose());
+    }
+    search.candidates(box, candidates);
+    for (const int32_t f : candidates)
+    {
+      if (share_a_node(face, master_faces[f]))
+        continue;
+      const std::optional<SegmentCoupling> segment =
+          integrate_segment(slave_quad, dual, master_quads[f], options);
+      if (!segment)
+        continue;
+      ++coupling.n_segments;
+      for (int k = 0; k < 4; ++k)
+        for (int a = 0; a < 4; ++a)
+          add_to_row(rows[slave_index[k]], master_faces[f][a], segment->coupling(k, a));
+    }
+  }
+
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (la::Index j = 0; j < n_slave; ++j)
+    for (const auto& [node, value] : rows[j])
+      triplets.emplace_back(j, node, value);
+  coupling.M.resize(n_slave, mesh.n_nodes());
+  coupling.M.setFromTriplets(triplets.begin(), triplets.end());
+  return coupling;
+}
+
+ContactConstraints build_mortar_constraints(const mesh::HexMesh& mesh, const la::Vector& u,
+                                            const ContactPair& pair, const ContactOptions& options)
+{
+  // Validates the input and gives, per slave node, whether a row exists and its normal.
+  ContactConstraints closest = build_node_to_segment_constraints(mesh, u, pair, options);
+  const MortarCoupling coupling =
+      compute_mortar_coupling(mesh, u, pair, closest.search_distance);
+
+  ContactConstraints out;
+  out.search_distance = closest.search_distance;
+  out.n_slave_nodes = closest.n_slave_nodes;
+  out.n_overhanging = closest.n_overhanging;
+  std::vector<Eigen::Triplet<double>> triplets;
+  CouplingRow weights;
+  for (la::Index i = 0; i < closest.n_rows(); ++i)
+  {
+    const int32_t s = closest.slave_node[i];
+    const int32_t j = coupling.slave.index_of(s);
+    const double nodal_area = coupling.slave.area(j);
+    weights.clear();
+    double overlap = 0;
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(coupling.M, j); it; ++it)
+      if (std::abs(it.value()) > negligible_coupling * nodal_area)
+      {
+        weights.emplace_back(static_cast<int32_t>(it.col()), it.value());
+        overlap += it.value();
+      }
+    if (!(overlap >= options.mortar_min_overlap * nodal_area))
+    {
+      ++out.n_overhanging;
+      continue;
+    }
+    const Eigen::Vector3d n = closest.normal[i];
+    Eigen::Vector3d master_point = Eigen::Vector3d::Zero();
+    double weights_squared = 0;
+    for (auto& [node, weight] : weights)
+    {
+      weight /= overlap;
+      master_point += weight * current_position(mesh, u, node);
+      weights_squared += weight * weight;
+    }
+    const double gap = n.dot(current_position(mesh, u, s) - master_point);
+    if (!(gap < out.search_distance))
+      continue;
+
+    const auto row = static_cast<int>(out.slave_node.size());
+    const double norm = std::sqrt(1 + weights_squared);
+    for (int k = 0; k < 3; ++k)
+    {
+      if (n(k) == 0)
+        continue;
+      triplets.emplace_back(row, 3 * s + k, -n(k) / norm);
+      for (const auto& [node, weight] : weights)
+        triplets.emplace_back(row, 3 * node + k, weight * n(k) / norm);
+    }
+    out.slave_node.push_back(s);
+    out.normal.push_back(n);
+    out.gap.push_back(gap);
+    out.row_norm.push_back(norm);
+    out.slave_area.push_back(nodal_area);
+    out.master_face.push_back(closest.master_face[i]);
+    out.xi.push_back(closest.xi[i]);
+    out.kind.push_back(closest.kind[i]);
+  }
+
+  const auto n_rows = static_cast<la::Index>(out.slave_node.size());
+  out.B.resize(n_rows, 3 * static_cast<la::Index>(mesh.n_nodes()));
+  out.B.setFromTriplets(triplets.begin(), triplets.end());
+  out.c.resize(n_rows);
+  for (la::Index i = 0; i < n_rows; ++i)
+    out.c(i) = out.gap[i] / out.row_norm[i];
+  return out;
+}
+} // namespace feticon::contact

@@ -1,0 +1,103 @@
+/// The seed's Hertz benchmark with small displacements against Hertz/McEwen (issue 4).
+/// Reference: a = sqrt(4QR/(pi E*)), p0 = 2Q/(pi a), p(x) = p0 sqrt(1 - x^2/a^2)
+/// (Johnson 1985, ch. 4; ALGORITHMS.md section 9). Tolerances are the issue's: peak within
+/// 3% of p0, half-width within one contact element, RMS error below 3% of p0, contact force
+/// equal to the load to 1e-6 with SMALBE-M (QP tolerance 1e-8). The remaining ~1% difference
+/// is the finite model against half-space theory (a/R = 0.07), see docs/contact.md.
+
+#include "nonlinear/contact_pressure.hpp"
+#include "nonlinear/feti_contact_solver.hpp"
+#include "problems/hertz.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace feticon;
+
+namespace
+{
+struct HertzRun
+{
+  nonlinear::HertzComparison hertz;
+  double force = 0;
+  double feasibility = 0;
+  int mprgp = 0;
+};
+
+HertzRun run_hertz(double refinement, dual::DualMethod method, double rho,
+                   contact::ContactFormulation formulation = contact::ContactFormulation::mortar)
+{
+  problems::HertzParameters parameters;
+  parameters.mesh.refinement = refinement;
+  const fem::Problem problem = problems::hertz_problem(parameters);
+  nonlinear::SolverSettings s;
+  s.method = method == dual::DualMethod::smalbe ? nonlinear::ContactMethod::smalbe
+                                                : nonlinear::ContactMethod::dual_penalty;
+  s.dual.method = method;
+  s.dual.rho = rho;
+  s.subdomains = static_cast<int>(8 * refinement);
+  s.formulation = formulation;
+  TimerTable timers;
+  const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
+  EXPECT_TRUE(solution.converged) << solution.reason;
+  auto samples = nonlinear::slave_pressure_by_x(problem, solution, fem::Kinematics::linear);
+  HertzRun out;
+  out.hertz = nonlinear::compare_with_hertz(parameters, samples);
+  out.force = nonlinear::total_normal_force(solution);
+  out.feasibility = solution.feasibility_error;
+  for (const auto& it : solution.history)
+    out.mprgp += it.qp_iterations;
+  return out;
+}
+} // namespace
+
+TEST(HertzBenchmark, SmallDisplacementsAgainstMcEwenAtTwoRefinements)
+{
+  for (double refinement : {1.0, 2.0})
+  {
+    const HertzRun r = run_hertz(refinement, dual::DualMethod::smalbe, 1.0);
+    const auto& h = r.hertz;
+    const double peak_error = h.p_peak_computed / h.p0_analytic - 1;
+    std::printf("refinement %.0f: p_peak %.1f MPa (p0 %.1f, %+.2f%%), a %.2f mm (analytic %.2f, "
+                "element %.2f mm), RMS %.2f%% of p0, force/load - 1 = %.1e, MPRGP %d\n",
+                refinement, h.p_peak_computed / 1e6, h.p0_analytic / 1e6, 100 * peak_error,
+                1e3 * h.a_computed, 1e3 * h.a_analytic, 1e3 * h.element_size,
+                100 * h.rms_error_over_p0, r.force / h.applied_load - 1, r.mprgp);
+    EXPECT_LT(std::abs(peak_error), 0.03);
+    EXPECT_LE(std::abs(h.a_computed - h.a_analytic), h.element_size);
+    EXPECT_LT(h.rms_error_over_p0, 0.03);
+    EXPECT_NEAR(r.force, h.applied_load, 1e-6 * h.applied_load);
+  }
+}
+
+// Reference: Theorem 2 of the seed (Dostál & Horák 2004), ||G lambda - e|| <= C/rho: the
+// dual penalty's feasibility error falls like 1/rho (a factor 10 per decade, within 20%),
+// and once it is below 1e-3 the peak pressure changes by less than 1%.
+TEST(HertzBenchmark, DualPenaltyFeasibilityFallsLikeOneOverRho)
+{
+  std::vector<HertzRun> runs;
+  const std::vector<double> rhos = {1, 10, 100, 1000, 10000};
+  for (double rho : rhos)
+  {
+    runs.push_back(run_hertz(1.0, dual::DualMethod::dual_penalty, rho));
+    std::printf("rho %6g: ||G lambda - e||/||e|| %.2e, p_peak/p0 %.4f, MPRGP %d\n", rho,
+                runs.back().feasibility, runs.back().hertz.p_peak_computed / runs.back().hertz.p0_analytic,
+                runs.back().mprgp);
+  }
+  for (size_t k = 1; k < runs.size(); ++k)
+  {
+    const double ratio = runs[k - 1].feasibility / runs[k].feasibility;
+    EXPECT_GT(ratio, 8.0) << "rho " << rhos[k];
+    EXPECT_LT(ratio, 12.0) << "rho " << rhos[k];
+  }
+  const double reference_peak = runs.back().hertz.p_peak_computed;
+  for (const auto& r : runs)
+  {
+    if (r.feasibility < 1e-3)
+    {
+      EXPECT_LT(std::abs(r.hertz.p_peak_computed / reference_peak - 1), 0.01);
+    }
+  }
+}
