@@ -72,6 +72,17 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s)
   return out;
 }
 
+/// Downward displacement of the cylinder's axis: the mean u_y of the load face (y = R1),
+/// which passes through the axis (m).
+double axis_approach(const fem::Problem& problem, const la::Vector& u)
+{
+  const auto& nodes = problem.mesh.node_set("load");
+  double sum = 0;
+  for (int32_t n : nodes)
+    sum += u(3 * n + 1);
+  return -sum / static_cast<double>(nodes.size());
+}
+
 nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution)
 {
   int iterations = 0, products = 0, smalbe = 0, cg = 0, expansion = 0, proportioning = 0;
@@ -181,6 +192,7 @@ void run(const RunOptions& options)
                         {"a_computed", h.a_computed},
                         {"p_peak_computed", h.p_peak_computed},
                         {"rms_error_over_p0", h.rms_error_over_p0},
+                        {"axis_approach", axis_approach(*problem, solution.u)},
                         {"contact_element_size", h.element_size}};
   }
   summary["qp"] = qp_json(solution);
