@@ -26,7 +26,7 @@ std::vector<SettingSpec> make_specs()
       {"hertz.cylinder_width", "0.6", "half-width of the modelled cylinder segment (m), < radius", Type::number, {}, 0.1, 0.99, false},
       {"hertz.block_depth", "1.5", "depth of the block (m)", Type::number, {}, 0.2, 100, false},
       {"material.young", "2e11", "Young's modulus E (Pa) of every body", Type::number, {}, 0, inf, true},
-      {"material.poisson", "0.3", "Poisson's ratio nu of every body, in (-1, 0.5)", Type::number, {}, -1, 0.5, true},
+      {"material.poisson", "0.3", "Poisson's ratio nu of every body, in (-1, 0.5)", Type::number, {}, -1, 0.5, true, true},
       {"method", "smalbe", "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "
                            "(seed's problem (9)), primal_penalty (undecomposed, CHOLMOD)",
        Type::text, {"smalbe", "dual_penalty", "primal_penalty"}, 0, 0, false},
@@ -122,9 +122,10 @@ void Settings::set(const std::string& key, const std::string& raw, const std::st
       FETICON_CHECK(v == std::floor(v), source << ": " << key << " = " << value
                                                << " must be an integer");
     const bool below = s.min_exclusive ? v <= s.min : v < s.min;
-    FETICON_CHECK(!below && v <= s.max, source << ": " << key << " = " << value << " is out of range "
-                                               << (s.min_exclusive ? "(" : "[") << s.min << ", "
-                                               << s.max << "]: " << s.help);
+    const bool above = s.max_exclusive ? v >= s.max : v > s.max;
+    FETICON_CHECK(!below && !above, source << ": " << key << " = " << value << " is out of range "
+                                           << (s.min_exclusive ? "(" : "[") << s.min << ", " << s.max
+                                           << (s.max_exclusive ? ")" : "]") << ": " << s.help);
     break;
   }
   case Type::text:

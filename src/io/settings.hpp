@@ -27,6 +27,7 @@ struct SettingSpec
   double min = -1e300;              ///< for numbers: inclusive range
   double max = 1e300;
   bool min_exclusive = false;
+  bool max_exclusive = false;
 };
 
 class Settings

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# CLI tests of `feticon run` (issues 2, 4, 5): results folder, summary.json fields, one-line
+# errors with non-zero exit, and a non-converged run that keeps its converged steps.
+# Usage: run_command.sh FETICON SOURCE_DIR
+set -euo pipefail
+feticon="$1"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+py=/usr/bin/python3
+
+# 1. The built-in Hertz problem (coarse, for time) writes a complete results folder.
+"$feticon" run -q --output "$work/hertz" --set hertz.refinement=0.5 --set subdomains=4
+for f in summary.json problem.yaml contact_pressure.csv history.csv solution.pvd step_001.vtu; do
+  [[ -s "$work/hertz/$f" ]] || { echo "missing $f"; exit 1; }
+done
+$py - "$work/hertz/summary.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+for key in ["degrees_of_freedom", "elements", "subdomains", "timings_seconds", "contact", "qp", "hertz", "steps"]:
+    assert key in s, key
+for key in ["total_normal_force", "applied_load", "active_constraints", "feasibility_error"]:
+    assert key in s["contact"], key
+for key in ["a_analytic", "p0_analytic", "a_computed", "p_peak_computed", "rms_error_over_p0"]:
+    assert key in s["hertz"], key
+assert s["converged"] is True
+# Force balance with SMALBE-M (reference: the applied load Q/2 * thickness).
+assert abs(s["contact"]["total_normal_force"] / s["contact"]["applied_load"] - 1) < 1e-6
+assert abs(s["hertz"]["p0_analytic"] / 3.7405e9 - 1) < 1e-3   # ALGORITHMS.md section 9
+PY
+/usr/bin/python3 "$2/tests/tools/read_vtu.py" "$work/hertz/step_001.vtu" > /dev/null
+
+# 2. Bad input: one line on stderr naming the key, non-zero exit, no crash.
+check_error() {
+  local expect="$1"; shift
+  set +e
+  "$feticon" run -q --output "$work/bad" "$@" 2> "$work/err" > /dev/null
+  local rc=$?
+  set -e
+  [[ $rc -ne 0 ]] || { echo "expected failure for: $*"; exit 1; }
+  [[ $(wc -l < "$work/err") -eq 1 ]] || { echo "expected one error line for: $*"; cat "$work/err"; exit 1; }
+  grep -q -- "$expect" "$work/err" || { echo "error for '$*' does not name '$expect':"; cat "$work/err"; exit 1; }
+}
+check_error "material.young" --set material.young=-1
+check_error "material.poisson" --set material.poisson=0.5
+check_error "no_such_key" --set no_such_key=3
+check_error "method" --set method=magic
+check_error "KEY=VALUE" --set rho
+printf 'rho: [1, 2\n' > "$work/broken.yaml"
+check_error "broken.yaml" "$work/broken.yaml"
+
+# 3. Non-convergence: large displacements with too few outer iterations for load step 2.
+#    The run fails with a message, but step 1 (converged) stays on disk with its PVD entry.
+set +e
+"$feticon" run -q --output "$work/nc" --set displacements=large --set newton.max_iterations=5 \
+  --set hertz.refinement=0.5 --set subdomains=4 2> "$work/err"
+rc=$?
+set -e
+[[ $rc -ne 0 ]] || { echo "non-converged run exited 0"; exit 1; }
+grep -q "did not converge" "$work/err" || { cat "$work/err"; exit 1; }
+[[ -s "$work/nc/step_001.vtu" ]] || { echo "converged step 1 lost"; exit 1; }
+grep -q "step_001.vtu" "$work/nc/solution.pvd"
+$py -c "import json,sys; s=json.load(open('$work/nc/summary.json')); assert s['converged'] is False and s['steps'][0]['converged'] is True"
+echo "run_command: all checks passed"
