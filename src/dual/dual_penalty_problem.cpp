@@ -6,9 +6,6 @@
 #include "qp/norm_estimate.hpp"
 
 #include <limits>
-#include <fstream>
-#include <cstdlib>
-#include <iomanip>  // DEBUGDUMP
 
 namespace feticon::dual
 {
@@ -52,31 +49,6 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   else
     lambda_tilde = projector.particular_solution(e);
   const la::Vector d = feti.apply_B(feti.apply_K_plus(f_stacked)) - c;
-
-
-  { // DEBUGDUMP begin
-    static int call = 0; ++call;
-    const char* dc = std::getenv("DUMP_CALL");
-    if (dc && (std::atoi(dc) == call || std::atoi(dc) < 0)) {
-      std::ofstream o("/tmp/smalbe-investigation/dump_" + std::to_string(call) + ".txt");
-      o << std::setprecision(17);
-      const int64_t nk = feti.n_kernel();
-      o << m << " " << n_equality << " " << nk << "\n";
-      la::Matrix Gd = la::Matrix(feti.G());
-      for (int64_t i=0;i<nk;++i){for(int64_t j=0;j<m;++j) o<<Gd(i,j)<<" ";
-      o<<"\n";}
-      for (int64_t j=0;j<m;++j){ la::Vector ej=la::Vector::Zero(m); ej(j)=1; la::Vector Fj=feti.apply_F(ej); for(int64_t i=0;i<m;++i) o<<Fj(i)<<" ";
-      o<<"\n";}
-      for (int64_t i=0;i<m;++i) o<<d(i)<<" ";
-      o<<"\n";
-      for (int64_t i=0;i<nk;++i) o<<e(i)<<" ";
-      o<<"\n";
-      for (int64_t i=0;i<m;++i) o<<c(i)<<" ";
-      o<<"\n";
-      for (int64_t i=0;i<m;++i) o<<(lambda_start.size()==m?lambda_start(i):0.0)<<" ";
-      o<<"\n";
-    }
-  } // DEBUGDUMP end
 
   DualSolution out;
   const FOperator F_raw(feti);

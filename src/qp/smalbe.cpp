@@ -3,16 +3,48 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
 #include <sstream>
 
 namespace feticon::qp
 {
+namespace
+{
+/// H + delta C'C: the Hessian of the augmented Lagrangian after rho has grown by delta
+/// (H already contains rho_0 C'C). delta = 0 costs nothing extra.
+class RaisedPenaltyOperator : public la::LinearOperator
+{
+public:
+  RaisedPenaltyOperator(const la::LinearOperator& H, const EqualityOperator& C) : _H(H), _C(C) {}
+  la::Index size() const override { return _H.size(); }
+  void apply(const la::Vector& x, la::Vector& y) const override
+  {
+    _H.apply(x, y);
+    if (delta != 0.0)
+      y += delta * _C.apply_transpose(_C.apply(x));
+  }
+  double delta = 0.0;
+
+private:
+  const la::LinearOperator& _H;
+  const EqualityOperator& _C;
+};
+} // namespace
+
 Smalbe::Smalbe(const la::LinearOperator& H, const EqualityOperator& C, SmalbeOptions options)
     : _H(H), _C(C), _options(std::move(options))
 {
   FETICON_CHECK(_options.rho > 0 && _options.M0 > 0 && _options.beta > 1 && _options.rtol > 0,
                 "SMALBE-M: need rho > 0, M0 > 0, beta > 1, rtol > 0");
+  FETICON_CHECK(_options.rho_growth >= 1 && _options.rho_limit >= 1 &&
+                    _options.feasibility_reduction > 0 && _options.feasibility_reduction < 1 &&
+                    _options.feasibility_window >= 1,
+                "SMALBE-M: need rho_growth >= 1, rho_limit >= 1, feasibility_reduction in (0, 1), "
+                "feasibility_window >= 1");
 }
 
 SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vector& x)
@@ -24,7 +56,12 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
   la::Vector omega = _C.apply(la::Vector::Zero(b.size()));
   omega.setZero();
   double M = _options.M0;
+  double rho = _options.rho;
+  const double rho_max = _options.rho * _options.rho_limit;
   double previous_L = 0;
+  // Stall test of the feasibility: reference value and the outer iteration it was taken at.
+  double reference_feasibility = std::numeric_limits<double>::infinity();
+  int reference_iteration = 0;
   SmalbeReport report;
   bool final_test = false;
 
@@ -35,7 +72,8 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
     final_test = gp <= tolerance && cx <= tolerance;
     return final_test || gp <= std::min(M * cx, eta);
   };
-  Mprgp mprgp(_H, inner);
+  RaisedPenaltyOperator H(_H, _C);
+  auto mprgp = std::make_unique<Mprgp>(H, inner);
   for (int k = 0; k < _options.max_outer_iterations; ++k)
   {
     const int remaining = _options.max_inner_iterations - report.iterations;
@@ -45,7 +83,7 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
       break;
     }
     final_test = false;
-    const QpReport r = mprgp.solve(b - _C.apply_transpose(omega), lower, x);
+    const QpReport r = mprgp->solve(b - _C.apply_transpose(omega), lower, x);
     report.iterations += r.iterations;
     report.cg_steps += r.cg_steps;
     report.expansion_steps += r.expansion_steps;
@@ -54,7 +92,8 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
     report.projected_gradient_norm = r.projected_gradient_norm;
     report.outer_iterations = k + 1;
     const la::Vector Cx = _C.apply(x);
-    report.equality_residual = Cx.norm() / b_norm;
+    const double feasibility = Cx.norm();
+    report.equality_residual = feasibility / b_norm;
     if (!r.converged)
     {
       report.reason = "SMALBE-M inner MPRGP: " + r.reason;
@@ -63,20 +102,57 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
     std::ostringstream line;
     line << "    SMALBE-M outer " << k + 1 << ": MPRGP steps " << r.iterations << ", ||g_P||/||b|| "
          << r.projected_gradient_norm / b_norm << ", ||Cx||/||b|| " << report.equality_residual
-         << ", M " << M;
+         << ", M " << M << ", rho " << rho;
     log::iteration(line.str());
-    // r.cost is L(x, omega) = 1/2 x'Hx - b'x + omega'Cx for the multiplier of this solve.
+    // r.cost is L(x, omega, rho) = 1/2 x'(H + (rho - rho_0) C'C)x - b'x + omega'Cx for the
+    // multiplier and penalty of this solve.
     const double L = r.cost;
-    if (r.projected_gradient_norm <= tolerance && Cx.norm() <= tolerance)
+    if (r.projected_gradient_norm <= tolerance && feasibility <= tolerance)
     {
       report.converged = true;
       report.reason = "||g_P|| and ||Cx|| <= rtol ||b||";
       break;
     }
-    omega += _options.rho * Cx;
-    if (k > 0 && L < previous_L + 0.5 * _options.rho * Cx.squaredNorm())
+    omega += rho * Cx;
+    if (k > 0 && L < previous_L + 0.5 * rho * Cx.squaredNorm())
       M /= _options.beta;
     previous_L = L;
+
+    // Feasibility stall: raise rho (Dostal's SMALBE update; Bertsekas' penalty rule with a
+    // window, since inexact inner solves make single outer steps noisy).
+    if (feasibility <= _options.feasibility_reduction * reference_feasibility)
+    {
+      reference_feasibility = feasibility;
+      reference_iteration = k;
+    }
+    else if (k - reference_iteration >= _options.feasibility_window && rho < rho_max &&
+             _options.rho_growth > 1)
+    {
+      // Observed contraction per outer iteration q ~ 1 - rho s/(h + rho s) (see smalbe.hpp);
+      // rho q/(1 - q) would make it 1/2. Grow by at least rho_growth, at most rho_growth^3.
+      const double q = std::pow(feasibility / reference_feasibility,
+                                1.0 / (k - reference_iteration));
+      const double wanted = q < 1 ? q / (1 - q) : std::numeric_limits<double>::infinity();
+      const double growth = std::clamp(wanted, _options.rho_growth,
+                                       std::pow(_options.rho_growth, 3));
+      const double new_rho = std::min(rho * growth, rho_max);
+      // ||H + delta C'C|| <= ||H|| + delta since ||C'C|| = 1: add delta to the norm estimate
+      // 1.8/alpha_bar that alpha_bar came from (larger if MPRGP has halved alpha_bar); MPRGP
+      // still halves alpha_bar whenever an expansion step increases the cost.
+      const double alpha_bar = mprgp->alpha_bar();
+      MprgpOptions raised = inner;
+      raised.alpha_bar = alpha_bar / (1.0 + alpha_bar * (new_rho - rho) / 1.8);
+      log::iteration("    SMALBE-M: ||Cx|| stalled at " + std::to_string(feasibility / b_norm) +
+                     " ||b|| for " + std::to_string(k - reference_iteration) +
+                     " outer iterations: rho " + std::to_string(rho) + " -> " +
+                     std::to_string(new_rho));
+      rho = new_rho;
+      H.delta = rho - _options.rho;
+      mprgp = std::make_unique<Mprgp>(H, raised);
+      ++report.rho_updates;
+      reference_feasibility = feasibility;
+      reference_iteration = k;
+    }
   }
   if (!report.converged && report.reason.empty())
     report.reason = "SMALBE-M: outer iteration limit reached";
@@ -85,6 +161,7 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
   report.hessian_multiplications += 1;
   report.cost = 0.5 * x.dot(Hx) - b.dot(x);
   report.final_M = M;
+  report.final_rho = rho;
   report.omega = omega;
   report.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -9,7 +9,20 @@
 ///        ||g_P|| <= min(M ||Cx||, eta)   or the final test holds;
 ///   final test: ||g_P|| <= rtol ||b|| and ||Cx|| <= rtol ||b||;
 ///   omega <- omega + rho C x;
-///   M <- M / beta if L(x, omega) did not increase by at least rho/2 ||Cx||^2.
+///   M <- M / beta if L(x, omega) did not increase by at least rho/2 ||Cx||^2;
+///   if ||Cx|| has not dropped below feasibility_reduction times its reference value within
+///        feasibility_window outer iterations: rho <- rho min(max(q/(1-q), g), g^3), g =
+///        rho_growth, q the observed contraction of ||Cx|| per outer iteration (q/(1-q) is
+///        the factor that brings the model rate below to 1/2); then H becomes
+///        H + (rho - rho_0) C'C and alpha_bar shrinks accordingly.
+/// Why the rho update: with the bounds active on a face F, the multiplier update is a gradient
+/// step on the dual of the face problem, and ||Cx|| contracts per outer iteration by about
+/// 1 - rho s/(h + rho s), s = sigma_min(C_F)^2 (C_F: the columns of C on the free set) and h
+/// the curvature of H off C along that direction. Without bounds s = 1 and the factor is about
+/// 1/2; when a face nearly loses the rank of C (for FETI: inactive contact rows that carried a
+/// large share of G), s << 1 and SMALBE-M with fixed rho crawls while the Lagrangian still
+/// grows by rho/2 ||Cx||^2, so the M test never fires. Raising rho, as in Dostal's original
+/// SMALBE (rho_k nondecreasing and bounded), restores the rate.
 /// Usage:
 ///   qp::Smalbe smalbe(H, C, {.rho = 1});
 ///   const qp::SmalbeReport r = smalbe.solve(b, lower, x);
@@ -36,6 +49,15 @@ struct SmalbeOptions
   double eta_factor = 0.1;   ///< eta = eta_factor ||b||
   int max_outer_iterations = 200;
   int max_inner_iterations = 100000; ///< total MPRGP steps over all outer iterations
+  /// Smallest factor by which rho grows when the feasibility stalls (at most its cube); 1
+  /// disables the update.
+  double rho_growth = 10.0;
+  /// Stall test: ||Cx|| has not fallen below feasibility_reduction times its reference value
+  /// (the value at the last reduction or rho update) within feasibility_window outer iterations.
+  double feasibility_reduction = 0.1;
+  int feasibility_window = 5;
+  /// rho never exceeds rho_limit times the initial rho.
+  double rho_limit = 1e4;
   MprgpOptions mprgp{};      ///< gamma, alpha_bar, monitor; its rtol and stop are set here
 };
 
@@ -44,6 +66,8 @@ struct SmalbeReport : QpReport
   int outer_iterations = 0;
   double equality_residual = 0; ///< ||Cx|| / ||b|| at the end
   double final_M = 0;
+  double final_rho = 0;         ///< rho at the end (the initial rho unless it was raised)
+  int rho_updates = 0;          ///< how many times rho was raised
   la::Vector omega;             ///< multiplier of Cx = 0
 };
 
