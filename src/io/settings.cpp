@@ -17,7 +17,12 @@ std::vector<SettingSpec> make_specs()
 {
   const double inf = 1e300;
   return {
-      {"problem", "hertz", "built-in problem to run", Type::text, {"hertz"}, 0, 0, false},
+      {"problem", "hertz", "built-in problem: hertz (the seed's benchmark) or cantilever_obstacle "
+                           "(a cantilever bent onto a block: finite rotations)",
+       Type::text, {"hertz", "cantilever_obstacle"}, 0, 0, false},
+      {"cantilever.gap", "0.25", "gap between the beam (L = 1 m) and the obstacle (m)", Type::number, {}, 0, 10, true},
+      {"cantilever.load", "0.8", "tip load as its linear tip deflection over L", Type::number, {}, 0, 100, true},
+      {"cantilever.cells", "40", "beam cells along its length", Type::integer, {}, 10, 10000, false},
       {"hertz.line_load", "4e8", "line load Q on the cylinder (N/m)", Type::number, {}, 0, inf, true},
       {"hertz.refinement", "1", "scales every element size by 1/refinement", Type::number, {}, 0.05, 64, false},
       {"hertz.element_size", "0.005", "element size in the contact zone at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
