@@ -56,7 +56,7 @@ struct PointState
 
 PointState point_state(const ShapeGradients& dN, const NodeCoords& u,
                        const Eigen::Matrix<double, 6, 6>& D, const Material& material,
-                       Kinematics kinematics)
+                       Kinematics kinematics, int64_t cell)
 {
   const Eigen::Matrix3d grad_u = u.transpose() * dN; // du_i/dX_j
   PointState state;
@@ -70,6 +70,11 @@ PointState point_state(const ShapeGradients& dN, const NodeCoords& u,
     return state;
   }
   state.Fd = Eigen::Matrix3d::Identity() + grad_u;
+  // A non-positive det F means the element turned inside out: no physical state to continue
+  // from (the load step is too large or the problem diverges).
+  const double J = state.Fd.determinant();
+  FETICON_CHECK(J > 0, "element " << cell << " is inverted in the deformed configuration (det F = "
+                                  << J << "); use more load steps or check the loads");
   const Eigen::Matrix3d E = 0.5 * (state.Fd.transpose() * state.Fd - Eigen::Matrix3d::Identity());
   const Eigen::Matrix3d S =
       material.lame_lambda() * E.trace() * Eigen::Matrix3d::Identity() + 2 * material.lame_mu() * E;
@@ -89,7 +94,7 @@ void hex8_element(const NodeCoords& X, const NodeCoords& u, const Material& mate
   for (const Eigen::Vector3d& xi : hex8_gauss_points())
   {
     const GaussGeometry geo = hex8_gauss_geometry(X, xi, cell);
-    const PointState state = point_state(geo.dN_dX, u, D, material, kinematics);
+    const PointState state = point_state(geo.dN_dX, u, D, material, kinematics, cell);
     const StrainDisplacement B = strain_displacement(geo.dN_dX, state.Fd);
     f.noalias() += B.transpose() * state.S * geo.weight_det_j;
     if (kind == StiffnessKind::none)
@@ -118,13 +123,11 @@ Eigen::Matrix<double, 6, 1> hex8_cauchy_stress(const NodeCoords& X, const NodeCo
   for (const Eigen::Vector3d& xi : hex8_gauss_points())
   {
     const GaussGeometry geo = hex8_gauss_geometry(X, xi, cell);
-    const PointState state = point_state(geo.dN_dX, u, D, material, kinematics);
+    const PointState state = point_state(geo.dN_dX, u, D, material, kinematics, cell);
     Voigt sigma = state.S;
     if (kinematics == Kinematics::total_lagrangian)
     {
-      const double J = state.Fd.determinant();
-      FETICON_CHECK(J > 0, "element " << cell << " is inverted in the deformed configuration "
-                                      << "(det F = " << J << ")");
+      const double J = state.Fd.determinant(); // > 0, checked in point_state
       sigma = tensor_to_voigt(state.Fd * voigt_to_tensor(state.S) * state.Fd.transpose() / J);
     }
     sum += sigma * geo.weight_det_j;

@@ -200,3 +200,23 @@ TEST(Hex8, InvertedElementIsRejected)
                                  fem::StiffnessKind::none, f, nullptr, 42),
                feticon::Error);
 }
+
+// Failure path: a deformation that turns the element inside out (det F < 0) stops the TL
+// element with a message naming the element, instead of producing a meaningless force.
+TEST(Hex8, ElementInvertedByTheDeformationIsRejected)
+{
+  const auto m = test::unit_cube();
+  const NodeCoords X = cell_coords(m, 0);
+  const Eigen::Matrix3d mirror = Eigen::Vector3d(-2, 0, 0).asDiagonal(); // x -> -x
+  ElementVector f;
+  try
+  {
+    fem::hex8_element(X, apply_map(X, mirror, Eigen::Vector3d::Zero()), fem::Material{},
+                      fem::Kinematics::total_lagrangian, fem::StiffnessKind::none, f, nullptr, 7);
+    FAIL() << "no error for det F < 0";
+  }
+  catch (const feticon::Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("element 7 is inverted in the deformed"), std::string::npos);
+  }
+}
