@@ -5,6 +5,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "io/atomic_file.hpp"
+#include "io/problem_file.hpp"
 #include "io/settings.hpp"
 #include "nonlinear/feti_contact_solver.hpp"
 #include "nonlinear/primal_penalty_solver.hpp"
@@ -83,6 +84,22 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s)
   return out;
 }
 
+/// The problem as run: every setting (defaults, file, overrides) and the structured sections,
+/// in a form `feticon run` reads back.
+std::string effective_problem(const io::ProblemFile& file)
+{
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  for (const auto& kv : file.root)
+    if (io::is_structured_key(kv.first.as<std::string>()))
+      out << YAML::Key << kv.first << YAML::Value << kv.second;
+  out << YAML::EndMap;
+  std::string structured = out.c_str();
+  if (structured == "{}")
+    structured.clear();
+  return file.settings.to_yaml() + structured + "\n";
+}
+
 /// Downward displacement of the cylinder's axis: the mean u_y of the load face (y = R1),
 /// which passes through the axis (m).
 double axis_approach(const fem::Problem& problem, const la::Vector& u)
@@ -121,27 +138,26 @@ void run(const RunOptions& options)
     log::set_level(log::Level::warning);
   if (options.verbose)
     log::set_level(log::Level::iterations);
-  io::Settings settings;
-  if (!options.problem_file.empty())
-    settings.load_yaml(options.problem_file);
-  for (const auto& o : options.overrides)
-    settings.set_override(o);
+  const io::ProblemFile file = io::load_problem_file(options.problem_file, options.overrides);
+  const io::Settings& settings = file.settings;
 
   const std::filesystem::path out_dir(options.output);
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   FETICON_CHECK(!ec, "cannot create the output folder " << out_dir.string() << ": " << ec.message());
-  io::write_file_atomically(out_dir / "problem.yaml", settings.to_yaml());
+  io::write_file_atomically(out_dir / "problem.yaml", effective_problem(file));
 
   TimerTable timers;
-  const bool is_hertz = settings.text("problem") == "hertz";
+  const std::string& kind = settings.text("problem");
+  const bool is_hertz = kind == "hertz";
   const problems::HertzParameters hertz = hertz_parameters(settings);
   std::unique_ptr<fem::Problem> problem;
   {
     ScopedTimer t(timers, "mesh");
     problem = std::make_unique<fem::Problem>(
-        is_hertz ? problems::hertz_problem(hertz)
-                 : problems::cantilever_obstacle_problem(cantilever_parameters(settings)));
+        is_hertz                         ? problems::hertz_problem(hertz)
+        : kind == "cantilever_obstacle" ? problems::cantilever_obstacle_problem(cantilever_parameters(settings))
+                                         : io::build_custom_problem(file));
   }
   const nonlinear::SolverSettings solver = solver_settings(settings);
   const int64_t n_dofs = 3 * static_cast<int64_t>(problem->mesh.n_nodes());
@@ -259,13 +275,23 @@ void register_run_command(CLI::App& app)
   auto options = std::make_shared<RunOptions>();
   CLI::App* cmd = app.add_subcommand("run", "Solve a contact problem (default: the seed's Hertz "
                                             "benchmark) and write a results folder");
-  cmd->add_option("problem", options->problem_file, "problem file (YAML); omit for the built-in Hertz problem")
-      ->check(CLI::ExistingFile);
+  // No CLI11 file check: feticon's own one-line error names a missing file.
+  cmd->add_option("problem", options->problem_file, "problem file (YAML); omit for the built-in Hertz problem");
   cmd->add_option("--output,-o", options->output, "results folder")->capture_default_str();
   cmd->add_option("--set,-s", options->overrides, "override a setting, KEY=VALUE (repeatable)");
   cmd->add_flag("--quiet,-q", options->quiet, "only warnings and errors");
   cmd->add_flag("--verbose,-v", options->verbose, "also one line per QP iteration");
-  cmd->footer("Settings (KEY for --set or the problem file):\n" + io::Settings::help());
+  cmd->footer("Settings (KEY for --set or the problem file; nested YAML maps give dotted keys):\n" +
+              io::Settings::help() +
+              "Sections of a custom problem (problem: custom), overridable as --set path.to.key=VALUE\n"
+              "(list items by index, e.g. loads.0.traction=[0,0,-2e8]):\n"
+              "  mesh: {file: MESH.msh} or {boxes: [{name, origin: [x,y,z], lengths: [..], cells: [nx,ny,nz]}]}\n"
+              "  bodies: {NAME: {young: PA, poisson: NU}}    one entry per body\n"
+              "  plane_strain: true|false                    u_z = 0 everywhere, eliminated\n"
+              "  supports: [{set: NODESET, x: M, y: M, z: M}] prescribed components (m)\n"
+              "  loads: [{set: FACESET, traction: [tx, ty, tz]}] dead traction (Pa)\n"
+              "  contact: [{slave: FACESET, master: FACESET}]\n"
+              "See examples/ for complete files.");
   cmd->callback([options] { run(*options); });
 }
 } // namespace feticon::app

