@@ -1,5 +1,6 @@
 /// `feticon run`: solve a problem and write its results folder.
 
+#include "app/checkpoint.hpp"
 #include "app/commands.hpp"
 #include "app/run_output.hpp"
 #include "common/error.hpp"
@@ -25,6 +26,7 @@ struct RunOptions
   std::string problem_file;
   std::string output = "results";
   std::vector<std::string> overrides;
+  std::string restart; ///< results folder of an interrupted run to continue
   bool quiet = false;
   bool verbose = false;
 };
@@ -138,14 +140,21 @@ void run(const RunOptions& options)
     log::set_level(log::Level::warning);
   if (options.verbose)
     log::set_level(log::Level::iterations);
-  const io::ProblemFile file = io::load_problem_file(options.problem_file, options.overrides);
+  const bool restart = !options.restart.empty();
+  if (restart)
+    FETICON_CHECK(options.problem_file.empty() && options.overrides.empty(),
+                  "--restart continues a run exactly as it was set up: give no problem file or --set");
+  const std::filesystem::path restart_dir(options.restart);
+  const io::ProblemFile file = io::load_problem_file(
+      restart ? restart_dir / "problem.yaml" : std::filesystem::path(options.problem_file), options.overrides);
   const io::Settings& settings = file.settings;
 
-  const std::filesystem::path out_dir(options.output);
+  const std::filesystem::path out_dir(restart ? options.restart : options.output);
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   FETICON_CHECK(!ec, "cannot create the output folder " << out_dir.string() << ": " << ec.message());
-  io::write_file_atomically(out_dir / "problem.yaml", effective_problem(file));
+  if (!restart)
+    io::write_file_atomically(out_dir / "problem.yaml", effective_problem(file));
 
   TimerTable timers;
   const std::string& kind = settings.text("problem");
@@ -176,13 +185,36 @@ void run(const RunOptions& options)
     std::snprintf(name, sizeof name, "step_%03d.vtu", step);
     write_step_vtu(out_dir / name, *problem, solution, solver.kinematics);
     pvd.add(solution.steps.back().load_factor, name);
+    // After the VTU: a checkpoint always names a step whose output is complete.
+    if (solver.method != nonlinear::ContactMethod::primal_penalty)
+      write_checkpoint(out_dir / "checkpoint.bin", solution);
   };
   nonlinear::ContactSolution solution;
+  FETICON_CHECK(!restart || solver.method != nonlinear::ContactMethod::primal_penalty,
+                "--restart is available for the FETI methods (smalbe, dual_penalty), not primal_penalty");
   if (solver.method == nonlinear::ContactMethod::primal_penalty)
   {
     solution = nonlinear::solve_primal_penalty(*problem, solver, timers);
     if (solution.converged)
       on_step(static_cast<int>(solution.steps.size()), solution);
+  }
+  else if (restart)
+  {
+    nonlinear::ContactSolution previous;
+    read_checkpoint(out_dir / "checkpoint.bin", previous);
+    for (int step = 1; step <= previous.restart.completed_steps; ++step)
+    {
+      char name[64];
+      std::snprintf(name, sizeof name, "step_%03d.vtu", step);
+      if (write_vtu)
+      {
+        FETICON_CHECK(std::filesystem::exists(out_dir / name), "restart: " << (out_dir / name).string()
+                                                                           << " of a converged step is missing");
+        pvd.add(previous.steps[step - 1].load_factor, name);
+      }
+    }
+    log::info("restart: continuing after load step " + std::to_string(previous.restart.completed_steps));
+    solution = nonlinear::solve_feti_contact(*problem, solver, timers, on_step, &previous);
   }
   else
     solution = nonlinear::solve_feti_contact(*problem, solver, timers, on_step);
@@ -279,6 +311,9 @@ void register_run_command(CLI::App& app)
   cmd->add_option("problem", options->problem_file, "problem file (YAML); omit for the built-in Hertz problem");
   cmd->add_option("--output,-o", options->output, "results folder")->capture_default_str();
   cmd->add_option("--set,-s", options->overrides, "override a setting, KEY=VALUE (repeatable)");
+  cmd->add_option("--restart", options->restart,
+                  "continue the interrupted run whose results folder is DIR from its last "
+                  "converged load step (the folder keeps problem.yaml and checkpoint.bin)");
   cmd->add_flag("--quiet,-q", options->quiet, "only warnings and errors");
   cmd->add_flag("--verbose,-v", options->verbose, "also one line per QP iteration");
   cmd->footer("Settings (KEY for --set or the problem file; nested YAML maps give dotted keys):\n" +

@@ -37,6 +37,17 @@ struct LoadStep
   std::vector<int> inner_iterations;
 };
 
+/// What a run needs to continue after its last converged load step (checkpoint/restart):
+/// the stacked displacement and the multipliers that warm-start the next solve.
+struct RestartState
+{
+  int completed_steps = 0;
+  la::Vector u_stacked;
+  la::Vector lambda;                      ///< all multipliers of the last solve
+  std::vector<int32_t> contact_slave;     ///< slave node of each contact multiplier
+  std::vector<double> contact_lambda;     ///< contact multiplier by slave node
+};
+
 struct ContactSolution
 {
   la::Vector u;                              ///< global displacement, 3 per mesh node
@@ -53,5 +64,6 @@ struct ContactSolution
   double feasibility_error = 0;
   double pfp_norm = 0;
   double penalty = 0; ///< eps_n (N/m) for the primal penalty
+  RestartState restart; ///< state after the last converged load step (FETI solver)
 };
 } // namespace feticon::nonlinear

@@ -34,7 +34,8 @@ std::string format_iteration(const OuterIteration& it)
 } // namespace
 
 ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings,
-                                   TimerTable& timers, const StepCallback& on_step)
+                                   TimerTable& timers, const StepCallback& on_step,
+                                   const ContactSolution* previous)
 {
   problem.validate();
   FETICON_CHECK(problem.contacts.size() == 1, "the FETI contact solver handles exactly one contact "
@@ -68,7 +69,26 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
   la::Vector lambda_previous;
   std::map<int32_t, double> previous_contact; ///< contact multiplier by slave node
   const bool linear = settings.kinematics == fem::Kinematics::linear;
-  for (int step = 1; step <= settings.load_steps; ++step)
+  int first_step = 1;
+  if (previous)
+  {
+    const RestartState& r = previous->restart;
+    FETICON_CHECK(r.u_stacked.size() == decomp->n_primal(),
+                  "restart: the checkpoint has " << r.u_stacked.size() << " unknowns, this problem "
+                                                 << decomp->n_primal() << " (different mesh or subdomains?)");
+    FETICON_CHECK(r.completed_steps < settings.load_steps,
+                  "restart: all " << settings.load_steps << " load steps are already done");
+    u = r.u_stacked;
+    lambda_previous = r.lambda;
+    for (size_t i = 0; i < r.contact_slave.size(); ++i)
+      previous_contact[r.contact_slave[i]] = r.contact_lambda[i];
+    out.history = previous->history;
+    out.steps = previous->steps;
+    // A refreshed K_M(u) is rebuilt at the first outer iteration of the step, as it would
+    // have been in the uninterrupted run.
+    first_step = r.completed_steps + 1;
+  }
+  for (int step = first_step; step <= settings.load_steps; ++step)
   {
     const double t_n = static_cast<double>(step) / settings.load_steps;
     fem::ConstrainedDofs target = dirichlet;
@@ -189,6 +209,16 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
                    std::to_string(settings.max_outer_iterations) + " outer iterations (|du|/|u| = " +
                    std::to_string(record.displacement_change) + ")";
       return out;
+    }
+    out.restart.completed_steps = step;
+    out.restart.u_stacked = u;
+    out.restart.lambda = lambda_previous;
+    out.restart.contact_slave.clear();
+    out.restart.contact_lambda.clear();
+    for (const auto& [node, value] : previous_contact)
+    {
+      out.restart.contact_slave.push_back(node);
+      out.restart.contact_lambda.push_back(value);
     }
     if (on_step)
       on_step(step, out);

@@ -23,6 +23,9 @@ namespace feticon::nonlinear
 /// Called after every converged load step with the solution so far (for output).
 using StepCallback = std::function<void(int load_step, const ContactSolution&)>;
 
+/// @param restart if given, continue after its completed load steps (its history and steps
+///                are taken from `previous`, the solution of the interrupted run)
 ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings,
-                                   TimerTable& timers, const StepCallback& on_step = {});
+                                   TimerTable& timers, const StepCallback& on_step = {},
+                                   const ContactSolution* previous = nullptr);
 } // namespace feticon::nonlinear

@@ -1,0 +1,116 @@
+#include "app/checkpoint.hpp"
+
+#include "common/error.hpp"
+#include "io/atomic_file.hpp"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+namespace feticon::app
+{
+namespace
+{
+constexpr char magic[9] = "FETICKP1";
+
+template <class T>
+void write_block(std::ostream& os, const T* data, int64_t count)
+{
+  os.write(reinterpret_cast<const char*>(&count), sizeof count);
+  os.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(count * sizeof(T)));
+}
+
+template <class T>
+std::vector<T> read_block(std::istream& is, const std::filesystem::path& path)
+{
+  int64_t count = -1;
+  is.read(reinterpret_cast<char*>(&count), sizeof count);
+  FETICON_CHECK(is && count >= 0 && count < (int64_t(1) << 36),
+                path.string() << ": truncated or corrupt checkpoint");
+  std::vector<T> values(static_cast<size_t>(count));
+  is.read(reinterpret_cast<char*>(values.data()), static_cast<std::streamsize>(count * sizeof(T)));
+  FETICON_CHECK(is, path.string() << ": truncated checkpoint");
+  return values;
+}
+
+nlohmann::json records(const nonlinear::ContactSolution& s)
+{
+  nlohmann::json steps = nlohmann::json::array(), history = nlohmann::json::array();
+  for (const auto& st : s.steps)
+    steps.push_back({st.load_factor, st.outer_iterations, st.converged, st.displacement_change,
+                     st.residual_norm, st.inner_iterations});
+  for (const auto& it : s.history)
+    history.push_back({it.load_step, it.iteration, it.qp_iterations, it.cg_steps, it.expansion_steps,
+                       it.proportioning_steps, it.hessian_multiplications, it.smalbe_outer,
+                       it.residual_norm, it.displacement_change, it.active_contacts,
+                       it.feasibility_error, it.seconds});
+  return {{"completed_steps", s.restart.completed_steps}, {"steps", steps}, {"history", history}};
+}
+} // namespace
+
+void write_checkpoint(const std::filesystem::path& path, const nonlinear::ContactSolution& solution)
+{
+  const auto& r = solution.restart;
+  const std::string json = records(solution).dump();
+  io::write_file_atomically(path, [&](std::ostream& os) {
+    os.write(magic, 8);
+    write_block(os, r.u_stacked.data(), r.u_stacked.size());
+    write_block(os, r.lambda.data(), r.lambda.size());
+    write_block(os, r.contact_slave.data(), static_cast<int64_t>(r.contact_slave.size()));
+    write_block(os, r.contact_lambda.data(), static_cast<int64_t>(r.contact_lambda.size()));
+    write_block(os, json.data(), static_cast<int64_t>(json.size()));
+  });
+}
+
+void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSolution& solution)
+{
+  std::ifstream is(path, std::ios::binary);
+  FETICON_CHECK(is, "cannot open the checkpoint " << path.string()
+                                                  << " (was the run started by this version of feticon?)");
+  char head[8];
+  is.read(head, 8);
+  FETICON_CHECK(is && std::equal(head, head + 8, magic), path.string() << " is not a feticon checkpoint");
+  auto& r = solution.restart;
+  const auto u = read_block<double>(is, path);
+  const auto lambda = read_block<double>(is, path);
+  r.u_stacked = Eigen::Map<const la::Vector>(u.data(), static_cast<la::Index>(u.size()));
+  r.lambda = Eigen::Map<const la::Vector>(lambda.data(), static_cast<la::Index>(lambda.size()));
+  r.contact_slave = read_block<int32_t>(is, path);
+  r.contact_lambda = read_block<double>(is, path);
+  const auto text = read_block<char>(is, path);
+  nlohmann::json json;
+  try
+  {
+    json = nlohmann::json::parse(std::string(text.begin(), text.end()));
+    r.completed_steps = json.at("completed_steps").get<int>();
+    solution.steps.clear();
+    for (const auto& st : json.at("steps"))
+      solution.steps.push_back({st[0].get<double>(), st[1].get<int>(), st[2].get<bool>(),
+                                st[3].get<double>(), st[4].get<double>(), st[5].get<std::vector<int>>()});
+    solution.history.clear();
+    for (const auto& h : json.at("history"))
+    {
+      nonlinear::OuterIteration it;
+      it.load_step = h[0];
+      it.iteration = h[1];
+      it.qp_iterations = h[2];
+      it.cg_steps = h[3];
+      it.expansion_steps = h[4];
+      it.proportioning_steps = h[5];
+      it.hessian_multiplications = h[6];
+      it.smalbe_outer = h[7];
+      it.residual_norm = h[8];
+      it.displacement_change = h[9];
+      it.active_contacts = h[10];
+      it.feasibility_error = h[11];
+      it.seconds = h[12];
+      solution.history.push_back(it);
+    }
+  }
+  catch (const nlohmann::json::exception& e)
+  {
+    FETICON_CHECK(false, path.string() << ": corrupt checkpoint records (" << e.what() << ")");
+  }
+  FETICON_CHECK(r.completed_steps >= 1 && r.u_stacked.allFinite(),
+                path.string() << ": the checkpoint holds no converged step");
+}
+} // namespace feticon::app
