@@ -244,7 +244,15 @@ void run(const RunOptions& options)
     int64_t active = 0;
     for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)
       active += solution.contact_lambda(i) > 0;
+    double peak = 0, area = 0;
+    for (const auto& sample : samples)
+    {
+      peak = std::max(peak, sample.pressure);
+      area += sample.force > 0 ? sample.area : 0.0;
+    }
     summary["contact"] = {{"total_normal_force", nonlinear::total_normal_force(solution)},
+                          {"peak_pressure", peak},
+                          {"contact_area", area},
                           {"active_constraints", active},
                           {"feasibility_error", solution.feasibility_error}};
     if (is_hertz)
@@ -279,22 +287,8 @@ void run(const RunOptions& options)
   summary["peak_memory_bytes"] = peak_memory_bytes();
   write_json(out_dir / "summary.json", summary);
 
-  log::info("\n" + timers.format());
-  if (summary.contains("hertz"))
-  {
-    char line[512];
-    const auto& h = summary["hertz"];
-    std::snprintf(line, sizeof line,
-                  "Hertz: p_peak %.4g MPa (McEwen p0 %.4g MPa, %+.2f%%), a %.2f mm (analytic %.2f mm), "
-                  "RMS error %.2f%% of p0; contact force %.6g N / load %.6g N",
-                  h["p_peak_computed"].get<double>() / 1e6, h["p0_analytic"].get<double>() / 1e6,
-                  100 * (h["p_peak_computed"].get<double>() / h["p0_analytic"].get<double>() - 1),
-                  1e3 * h["a_computed"].get<double>(), 1e3 * h["a_analytic"].get<double>(),
-                  100 * h["rms_error_over_p0"].get<double>(),
-                  summary["contact"]["total_normal_force"].get<double>(),
-                  summary["contact"]["applied_load"].get<double>());
-    log::info(line);
-  }
+  log::info(format_summary(summary));
+  plot_results(out_dir);
   log::info("results written to " + out_dir.string());
   FETICON_CHECK(solution.converged, "the solve did not converge: " << solution.reason
                                                                    << " (converged steps are in "

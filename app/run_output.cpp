@@ -3,9 +3,11 @@
 #include "fem/stress.hpp"
 #include "fem/hex8_element.hpp"
 #include "fem/loads.hpp"
+#include "common/log.hpp"
 #include "io/atomic_file.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 namespace feticon::app
@@ -79,6 +81,80 @@ void write_history_csv(const std::filesystem::path& path,
        << it.displacement_change << ',' << it.active_contacts << ',' << it.feasibility_error << ','
        << it.seconds << '\n';
   io::write_file_atomically(path, os.str());
+}
+
+std::string format_summary(const nlohmann::ordered_json& s)
+{
+  std::ostringstream os;
+  char line[256];
+  auto put = [&](const char* format, auto... values)
+  {
+    std::snprintf(line, sizeof line, format, values...);
+    os << line << '\n';
+  };
+  os << "\n---------------------------------------------------------------- summary\n";
+  put("problem %s, method %s, %s displacements, converged: %s", s["problem"].get<std::string>().c_str(),
+      s["method"].get<std::string>().c_str(), s["displacements"].get<std::string>().c_str(),
+      s["converged"].get<bool>() ? "yes" : "NO");
+  put("DOFs %ld, elements %ld, subdomains %ld, dual size %ld, coarse size %ld",
+      s["degrees_of_freedom"].get<long>(), s["elements"].get<long>(), s["subdomains"].get<long>(),
+      s["dual_size"].get<long>(), s["coarse_size"].get<long>());
+  put("%-6s %-12s %-8s %-12s %-10s", "step", "load factor", "outer", "inner total", "converged");
+  int step = 0;
+  for (const auto& st : s["steps"])
+  {
+    int inner = 0;
+    for (int i : st["inner_iterations"])
+      inner += i;
+    put("%-6d %-12.4g %-8d %-12d %-10s", ++step, st["load_factor"].get<double>(),
+        st["outer_iterations"].get<int>(), inner, st["converged"].get<bool>() ? "yes" : "no");
+  }
+  put("MPRGP steps %d (CG %d, expansion %d, proportioning %d), operator products %d",
+      s["qp"]["iterations"].get<int>(), s["qp"]["cg_steps"].get<int>(),
+      s["qp"]["expansion_steps"].get<int>(), s["qp"]["proportioning_steps"].get<int>(),
+      s["qp"]["hessian_multiplications"].get<int>());
+  if (s.contains("contact"))
+  {
+    const auto& c = s["contact"];
+    put("contact: force %.6g N, peak pressure %.4g MPa, area %.4g m^2, %ld active rows, "
+        "feasibility %.1e", c["total_normal_force"].get<double>(), c["peak_pressure"].get<double>() / 1e6,
+        c["contact_area"].get<double>(), c["active_constraints"].get<long>(),
+        c["feasibility_error"].get<double>());
+  }
+  if (s.contains("hertz"))
+  {
+    const auto& h = s["hertz"];
+    put("Hertz: p_peak %.4g MPa (McEwen p0 %.4g MPa, %+.2f%%), a %.2f mm (analytic %.2f mm), "
+        "RMS error %.2f%% of p0, load %.6g N",
+        h["p_peak_computed"].get<double>() / 1e6, h["p0_analytic"].get<double>() / 1e6,
+        100 * (h["p_peak_computed"].get<double>() / h["p0_analytic"].get<double>() - 1),
+        1e3 * h["a_computed"].get<double>(), 1e3 * h["a_analytic"].get<double>(),
+        100 * h["rms_error_over_p0"].get<double>(), s["contact"]["applied_load"].get<double>());
+  }
+  os << "time (s):";
+  for (const auto& [phase, seconds] : s["timings_seconds"].items())
+  {
+    std::snprintf(line, sizeof line, " %s %.3f;", phase.c_str(), seconds.get<double>());
+    os << line;
+  }
+  os << '\n';
+  put("peak memory %.1f MiB", s["peak_memory_bytes"].get<double>() / (1024.0 * 1024.0));
+  return os.str();
+}
+
+void plot_results(const std::filesystem::path& out_dir)
+{
+  const std::filesystem::path script =
+      std::filesystem::path(FETICON_SOURCE_DIR) / "scripts" / "plot_hertz.py";
+  if (!std::filesystem::exists("/usr/bin/python3") || !std::filesystem::exists(script))
+  {
+    log::warning("no PNG plots: /usr/bin/python3 or " + script.string() + " is missing");
+    return;
+  }
+  const std::string command = "/usr/bin/python3 '" + script.string() + "' '" + out_dir.string() +
+                              "' > /dev/null 2>&1";
+  if (std::system(command.c_str()) != 0)
+    log::warning("no PNG plots: " + script.string() + " failed (python3-matplotlib installed?)");
 }
 
 void write_json(const std::filesystem::path& path, const nlohmann::ordered_json& json)

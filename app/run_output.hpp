@@ -26,6 +26,15 @@ void write_pressure_csv(const std::filesystem::path& path,
 void write_history_csv(const std::filesystem::path& path,
                        const std::vector<nonlinear::OuterIteration>& history);
 
+/// The end-of-run table: sizes, load steps, contact figures, Hertz comparison, timings,
+/// memory, all taken from summary.json so the two always agree.
+std::string format_summary(const nlohmann::ordered_json& summary);
+
+/// PNG plots of the results folder (pressure along the contact, iterations) drawn by
+/// scripts/plot_hertz.py with Debian's /usr/bin/python3; a warning, not an error, if that
+/// is not possible.
+void plot_results(const std::filesystem::path& out_dir);
+
 /// Writes JSON atomically with 2-space indentation.
 void write_json(const std::filesystem::path& path, const nlohmann::ordered_json& json);
 } // namespace feticon::app

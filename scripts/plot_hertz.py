@@ -1,11 +1,12 @@
 #!/usr/bin/python3
-"""Plots of the Hertz benchmark in the style of the seed's Fig. 2.
+"""Plots of a results folder (and of several, in the style of the seed's Fig. 2).
 
 Usage:
-  plot_hertz.py RESULTS_DIR                       pressure of one run vs McEwen
-  plot_hertz.py --figure OUT.png --title T DIR... several runs (e.g. five penalties),
-                                                  labelled by their summary.json
-Reads contact_pressure.csv and summary.json of each folder; writes PNG.
+  plot_hertz.py RESULTS_DIR                       contact_pressure.png (against McEwen for
+                                                  the Hertz problem) and iterations.png
+  plot_hertz.py --figure OUT.png --title T DIR... pressure of several runs (e.g. five
+                                                  penalties), labelled by their summary.json
+Reads contact_pressure.csv, history.csv and summary.json; writes PNG.
 """
 import argparse
 import csv
@@ -43,13 +44,14 @@ def plot(folders, out, title):
         rows, summary = read_run(folder)
         x = [1e3 * float(r["x_m"]) for r in rows]
         p = [1e-6 * float(r["pressure_multipliers_Pa"]) for r in rows]
-        if not analytic_drawn:
-            pa = [1e-6 * float(r["pressure_mcewen_Pa"]) for r in rows]
+        pa = [1e-6 * float(r["pressure_mcewen_Pa"]) for r in rows]
+        if not analytic_drawn and any(pa):
             ax.plot(x, pa, "k-", lw=2, label="McEwen (analytic)")
             analytic_drawn = True
         ax.plot(x, p, "o-", ms=3, lw=1, label=label_of(summary))
-    ax.set_xlim(0, 100)
-    ax.set_xlabel("x from the plane of symmetry (mm)")
+    if analytic_drawn:
+        ax.set_xlim(0, 100)
+    ax.set_xlabel("x (mm)")
     ax.set_ylabel("normal contact pressure (MPa)")
     ax.set_title(title)
     ax.grid(True, alpha=0.3)
@@ -59,14 +61,37 @@ def plot(folders, out, title):
     print("wrote", out)
 
 
+def plot_history(folder):
+    with open(os.path.join(folder, "history.csv")) as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        return
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    n = range(1, len(rows) + 1)
+    ax.bar(n, [int(r["mprgp_iterations"]) for r in rows], color="tab:blue", alpha=0.6)
+    ax.set_xlabel("outer iteration (all load steps)")
+    ax.set_ylabel("MPRGP steps", color="tab:blue")
+    right = ax.twinx()
+    right.semilogy(n, [max(float(r["displacement_change"]), 1e-16) for r in rows], "ko-", ms=3)
+    right.set_ylabel("|du| / |u|")
+    ax.set_title("Iterations")
+    fig.tight_layout()
+    out = os.path.join(folder, "iterations.png")
+    fig.savefig(out, dpi=130)
+    print("wrote", out)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("folders", nargs="+")
     parser.add_argument("--figure")
-    parser.add_argument("--title", default="Hertz contact: normal pressure")
+    parser.add_argument("--title", default="Normal contact pressure")
     args = parser.parse_args()
-    out = args.figure or os.path.join(args.folders[0], "hertz_pressure.png")
-    plot(args.folders, out, args.title)
+    if args.figure:
+        plot(args.folders, args.figure, args.title)
+        return
+    plot(args.folders, os.path.join(args.folders[0], "contact_pressure.png"), args.title)
+    plot_history(args.folders[0])
 
 
 if __name__ == "__main__":

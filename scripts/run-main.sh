@@ -7,4 +7,3 @@ bash "$root/scripts/install-deps.sh"
 cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFETICON_BUILD_TESTS=OFF >/dev/null
 cmake --build "$root/build" --target feticon -j "$(nproc)"
 "$root/build/feticon" run --output "$root/results" "$@"
-/usr/bin/python3 "$root/scripts/plot_hertz.py" "$root/results" || echo "plotting skipped"
