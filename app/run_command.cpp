@@ -168,8 +168,13 @@ void run(const RunOptions& options)
         : kind == "cantilever_obstacle" ? problems::cantilever_obstacle_problem(cantilever_parameters(settings))
                                          : io::build_custom_problem(file));
   }
-  const nonlinear::SolverSettings solver = solver_settings(settings);
+  nonlinear::SolverSettings solver = solver_settings(settings);
   const int64_t n_dofs = 3 * static_cast<int64_t>(problem->mesh.n_nodes());
+  if (settings.integer("subdomain_cells") > 0)
+    solver.subdomains = std::max<int>(
+        problem->mesh.n_bodies(),
+        static_cast<int>((problem->mesh.n_cells() + settings.integer("subdomain_cells") - 1) /
+                         settings.integer("subdomain_cells")));
   log::info("feticon: problem " + problem->name + ", " + std::to_string(problem->mesh.n_cells()) +
             " hex8 cells, " + std::to_string(n_dofs) + " DOFs, method " + settings.text("method") +
             ", " + settings.text("displacements") + " displacements");

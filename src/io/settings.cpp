@@ -51,6 +51,9 @@ std::vector<SettingSpec> make_specs()
       {"newton.tolerance", "1e-6", "load step converged when ||du|| <= tolerance ||u||", Type::number, {}, 0, 1, true},
       {"load_steps", "2", "load steps for large displacements", Type::integer, {}, 1, 1000, false},
       {"subdomains", "8", "number of FETI subdomains", Type::integer, {}, 1, 1e6, false},
+      {"subdomain_cells", "0", "cells per subdomain, (H/h)^3 in 3D or (H/h)^2 for one layer; if > 0 "
+                               "it sets the number of subdomains instead of 'subdomains'",
+       Type::integer, {}, 0, 1e9, false},
       {"partitioner", "metis", "metis or structured", Type::text, {"metis", "structured"}, 0, 0, false},
       {"qp.rtol", "1e-8", "QP stopping tolerance ||g_P|| <= rtol ||b||", Type::number, {}, 0, 1, true},
       {"qp.max_iterations", "20000", "MPRGP iteration limit", Type::integer, {}, 1, 1e9, false},
