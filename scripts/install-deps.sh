@@ -13,6 +13,7 @@ packages=(
   libcli11-dev           # command line
   nlohmann-json3-dev     # summary.json and the qp JSON report
   libgtest-dev           # tests
+  gmsh libgmsh-dev       # mesh::read_gmsh (Gmsh C++ API) and examples/*/make_mesh.*
   python3-matplotlib python3-numpy  # plots (used through /usr/bin/python3)
 )
 

@@ -100,5 +100,15 @@ expect "index out of range" "index" -- "$(variant 's/x/x/' plain)" --set loads.5
 expect "mesh too coarse for the subdomains" "subdomains" -- "$(variant 's/x/x/' plain2)" --set subdomains=500
 expect "QP iteration limit" "converge\|iteration" -- --set qp.max_iterations=3 --set hertz.refinement=0.5
 
+# Gmsh meshes: a missing file, a truncated file, a mesh without the named groups.
+gmsh_problem() { # MESH NAME
+  sed -e "s|^mesh:|mesh:\n  file: $1|" -e '/^  boxes:/,/^    - {name: punch/d' <(base) > "$work/$2.yaml"
+  echo "$work/$2.yaml"
+}
+expect "Gmsh file missing" "nothing.msh" -- "$(gmsh_problem nothing.msh gmsh_missing)"
+head -c 20000 "$2/examples/sphere_on_block/sphere_on_block.msh" > "$work/truncated.msh"
+expect "Gmsh file truncated" "truncated.msh" -- "$(gmsh_problem truncated.msh gmsh_truncated)"
+expect "Gmsh file lacks the named groups" "no node set 'base_ymin'" -- "$(gmsh_problem "$(cd "$2" && pwd)/examples/sphere_on_block/sphere_on_block.msh" gmsh_groups)"
+
 echo "$((cases - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]

@@ -1,0 +1,52 @@
+#pragma once
+/// @file Reading Gmsh .msh files (format 2.2 or 4.x, ASCII or binary) into a HexMesh through the
+/// Gmsh C++ API. This file and gmsh_reader.cpp are feticon's only contact with Gmsh.
+///
+/// What the file must contain, and what becomes of it:
+///   - 3D physical groups are the bodies, one body per group, named by the physical name, in
+///     the order of the group tags. Their elements must all be 8-node hexahedra (Gmsh type 5,
+///     whose node order is VTK's, see hex_mesh.hpp); tetrahedra, prisms, pyramids and 20/27-node
+///     hexahedra are rejected: remesh with transfinite volumes and Mesh.RecombineAll = 1 (or
+///     extrusions with Recombine). A volume entity may belong to one 3D group only, and every
+///     volume entity with elements must belong to one (Gmsh only writes elements without a
+///     physical group when Mesh.SaveAll = 1).
+///   - Bodies share no nodes: two bodies meant to touch (contact) must be separate volumes with
+///     their own surface meshes, i.e. not fragmented / not `Coherence`d together.
+///   - 2D physical groups are face sets and node sets of the same name. Each element must be a
+///     4-node quadrangle (Gmsh type 3) that is the face of exactly one hexahedron (a boundary
+///     face); it is stored with that hexahedron's nodes in the outward order of hex_faces, so the
+///     quadrangle's own orientation in the file does not matter.
+///   - 0D and 1D physical groups are node sets.
+///   - Every physical group needs a name (Physical Surface("load") = {...}), names are unique
+///     over all dimensions (sets and bodies are looked up by name alone), and every group has
+///     elements. 2D elements outside physical groups are ignored.
+///   - Nodes are renumbered 0..n-1 body by body, by increasing Gmsh node tag within a body; only
+///     nodes of hexahedra are kept. Coordinates are taken as written: feticon works in SI units,
+///     so the file must be in metres (Gmsh has no units; scale with Mesh.ScalingFactor when
+///     meshing a model drawn in mm).
+///
+/// Usage:
+///   const feticon::mesh::HexMesh mesh = feticon::mesh::read_gmsh("examples/x/x.msh");
+///   const auto& contact_faces = mesh.face_set("punch_contact");
+///
+/// Gmsh keeps process-wide state: read_gmsh initializes and finalizes the Gmsh API itself, so it
+/// must not be called from several threads at once nor while the caller has the Gmsh API
+/// initialized. Gmsh's own messages are silenced (General.Terminal = 0, no user option files
+/// read); its errors become feticon::Error.
+
+#include "mesh/hex_mesh.hpp"
+
+#include <filesystem>
+
+namespace feticon::mesh
+{
+/// @brief Reads a Gmsh mesh of 8-node hexahedra with named physical groups (see file comment).
+/// @param[in] path a `.msh` file (metres)
+/// @return the mesh: bodies from 3D groups, face sets and node sets from 2D groups, node sets
+///         from 0D/1D groups; cells have positive Jacobian determinant at their centres
+/// @throws feticon::Error naming the file and the problem: missing, unreadable or corrupt file,
+///         no 3D physical group, unnamed, duplicate or empty groups, elements other than hex8 in
+///         3D groups or quad4 in 2D groups, a quadrangle that is not a boundary face of a
+///         hexahedron, bodies sharing nodes, inverted or degenerate cells.
+HexMesh read_gmsh(const std::filesystem::path& path);
+} // namespace feticon::mesh
