@@ -43,7 +43,7 @@ std::vector<SettingSpec> make_specs()
                                                  "face) or mortar (dual mortar, segment-to-segment)",
        Type::text, {"node_to_segment", "mortar"}, 0, 0, false},
       {"eps_n", "100", "primal penalty eps_n as a multiple of max diag K", Type::number, {}, 0, inf, true},
-      {"displacements", "small", "small (linear elasticity) or large (total Lagrangian)", Type::text, {"small", "large"}, 0, 0, false},
+      {"displacements", "large", "large (total Lagrangian, the seed's benchmark) or small (linear elasticity)", Type::text, {"small", "large"}, 0, 0, false},
       {"newton.stiffness", "initial", "FETI outer-loop stiffness: initial (K_0 kept, the seed's "
                                       "modified Newton), step or iteration (K_M(u) refreshed)",
        Type::text, {"initial", "step", "iteration"}, 0, 0, false},

@@ -9,7 +9,7 @@ trap 'rm -rf "$work"' EXIT
 py=/usr/bin/python3
 
 # 1. The built-in Hertz problem (coarse, for time) writes a complete results folder.
-"$feticon" run -q --output "$work/hertz" --set hertz.refinement=0.5 --set subdomains=4
+"$feticon" run -q --output "$work/hertz" --set hertz.refinement=0.5 --set subdomains=4 --set displacements=small
 for f in summary.json problem.yaml contact_pressure.csv history.csv solution.pvd step_001.vtu; do
   [[ -s "$work/hertz/$f" ]] || { echo "missing $f"; exit 1; }
 done
@@ -47,6 +47,10 @@ check_error "method" --set method=magic
 check_error "KEY=VALUE" --set rho
 printf 'rho: [1, 2\n' > "$work/broken.yaml"
 check_error "broken.yaml" "$work/broken.yaml"
+
+# The default is the seed's benchmark: large displacements in two load steps.
+"$feticon" run -q --output "$work/default" --set hertz.refinement=0.5 --set subdomains=4
+$py -c "import json; s=json.load(open('$work/default/summary.json')); assert s['displacements'] == 'large' and len(s['steps']) == 2 and s['converged']"
 
 # 3. Non-convergence: large displacements with too few outer iterations for load step 2.
 #    The run fails with a message, but step 1 (converged) stays on disk with its PVD entry.
