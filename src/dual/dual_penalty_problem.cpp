@@ -25,6 +25,28 @@ public:
 private:
   const CoarseProjector& _projector;
 };
+/// M = s P (B K B') P + Q / rho: the lumped FETI preconditioner on Im P (scaled like F^ =
+/// F / s) and the exact inverse of H = ... + rho Q on Im Q.
+class LumpedDualPreconditioner : public la::LinearOperator
+{
+public:
+  LumpedDualPreconditioner(const FetiOperators& feti, const CoarseProjector& projector, double s,
+                           double rho)
+      : _feti(feti), _projector(projector), _s(s), _rho(rho)
+  {
+  }
+  la::Index size() const override { return _feti.n_dual(); }
+  void apply(const la::Vector& x, la::Vector& y) const override
+  {
+    const la::Vector q = _projector.apply_Q(x);
+    y = _s * _projector.apply_P(_feti.apply_lumped(x - q)) + q / _rho;
+  }
+
+private:
+  const FetiOperators& _feti;
+  const CoarseProjector& _projector;
+  double _s, _rho;
+};
 } // namespace
 
 DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
@@ -76,6 +98,9 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   mprgp.max_iterations = options.max_iterations;
   // After scaling, ||H|| = max(||P F^ P||, rho) ~ max(1, rho): no second power iteration.
   mprgp.alpha_bar = 1.8 / std::max(1.0, options.rho);
+  const LumpedDualPreconditioner lumped(feti, projector, norm.value, options.rho);
+  if (options.lumped_preconditioner)
+    mprgp.preconditioner = &lumped;
   if (options.method == DualMethod::dual_penalty)
   {
     qp::Mprgp solver(H, mprgp);

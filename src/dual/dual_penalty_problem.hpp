@@ -31,6 +31,9 @@ struct DualPenaltyOptions
   double rtol = 1e-8;         ///< QP tolerance on ||g_P|| (and ||G~ mu||) relative to ||b^||
   int max_iterations = 20000; ///< MPRGP steps in total
   int power_iterations = 30;  ///< for ||PFP||
+  /// Precondition MPRGP in the face with the lumped preconditioner s P B K B' P + Q / rho
+  /// (s = ||PFP||, matching the scaled F^), an approximate inverse of H.
+  bool lumped_preconditioner = false;
   double smalbe_M0 = 1.0;     ///< SMALBE-M initial M (scaled units)
   double smalbe_beta = 2.0;   ///< SMALBE-M: M <- M / beta when L increases too little
 };

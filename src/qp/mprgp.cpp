@@ -194,8 +194,20 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
   const double b_norm = b.norm();
   const double tolerance = _options.rtol * (b_norm > 0.0 ? b_norm : 1.0);
   const bool custom_stop = static_cast<bool>(_options.stop);
-  Vector p, q, phi, beta, y;
-  free_gradient(x, g, lower, p);
+  Vector p, q, phi, beta, y, z;
+  // Search direction in the current face: the free gradient, preconditioned in the face.
+  auto direction = [&](const Vector& xx, const Vector& gg, Vector& out)
+  {
+    free_gradient(xx, gg, lower, out);
+    if (!_options.preconditioner)
+      return;
+    _options.preconditioner->apply(out, z);
+    for (Index i = 0; i < z.size(); ++i)
+      if (!(xx[i] > lower[i]))
+        z[i] = 0.0;
+    out.swap(z);
+  };
+  direction(x, g, p);
   MprgpStep step = MprgpStep::start;
 
   for (;;)
@@ -251,7 +263,7 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
         x -= alpha_cg * p;
         x = x.cwiseMax(lower);
         g -= alpha_cg * q;
-        free_gradient(x, g, lower, phi);
+        direction(x, g, phi);
         p = phi - (phi.dot(q) / pq) * p;
         ++report.cg_steps;
         step = MprgpStep::cg;
@@ -271,7 +283,7 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
         ++report.hessian_multiplications;
         g += q;
         x.swap(y);
-        free_gradient(x, g, lower, p);
+        direction(x, g, p);
         ++report.expansion_steps;
         step = MprgpStep::expansion;
         // f is monotone only for alpha_bar <= 2/||A||, and the power estimate of ||A|| is
@@ -295,7 +307,7 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
       const double alpha = g.dot(beta) / beta_q;
       x -= alpha * beta;
       g -= alpha * q;
-      free_gradient(x, g, lower, p);
+      direction(x, g, p);
       ++report.proportioning_steps;
       step = MprgpStep::proportioning;
     }

@@ -90,6 +90,11 @@ struct MprgpOptions
       stop{};
   /// If set, called for the start point and after every step.
   std::function<void(const MprgpIterate&)> monitor{};
+  /// Optional preconditioner M ~ A^{-1} (symmetric positive definite), applied in the face:
+  /// CG and restart directions are z = D_F M D_F phi with D_F the 0/1 mask of the free set
+  /// (Dostal 2009, sec. 5.11; Kruzik & Horak 2025). The proportional test, the expansion's
+  /// projected gradient step and proportioning stay unpreconditioned. Not owned.
+  const la::LinearOperator* preconditioner = nullptr;
 };
 
 /// Bound-constrained QP solver; see the file comment for the problem and the algorithm.
