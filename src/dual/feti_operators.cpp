@@ -109,7 +109,8 @@ la::Vector FetiOperators::apply_Rt(const la::Vector& u) const
   return alpha;
 }
 
-la::Vector FetiOperators::apply_F(const la::Vector& lambda) const
+template <class LocalOperator>
+la::Vector FetiOperators::sum_over_subdomains(const la::Vector& lambda, LocalOperator&& local_op) const
 {
   FETICON_ASSERT(lambda.size() == _n_dual, "dual vector size");
   la::Vector y = la::Vector::Zero(_n_dual);
@@ -120,29 +121,23 @@ la::Vector FetiOperators::apply_F(const la::Vector& lambda) const
     la::Vector local(static_cast<la::Index>(_rows[s].size()));
     for (size_t j = 0; j < _rows[s].size(); ++j)
       local(static_cast<la::Index>(j)) = lambda(_rows[s][j]);
-    const la::Vector w = _system.operators(s).K_plus.apply(la::Vector(_B[s].transpose() * local));
-    const la::Vector out = _B[s] * w;
+    const la::Vector out = _B[s] * local_op(s, la::Vector(_B[s].transpose() * local));
     for (size_t j = 0; j < _rows[s].size(); ++j)
       y(_rows[s][j]) += out(static_cast<la::Index>(j));
   }
   return y;
 }
 
+la::Vector FetiOperators::apply_F(const la::Vector& lambda) const
+{
+  return sum_over_subdomains(lambda, [this](int32_t s, const la::Vector& v)
+                             { return _system.operators(s).K_plus.apply(v); });
+}
+
 la::Vector FetiOperators::apply_lumped(const la::Vector& lambda) const
 {
-  la::Vector y = la::Vector::Zero(_n_dual);
-  for (int32_t s = 0; s < _system.n_subdomains(); ++s)
-  {
-    if (_rows[s].empty())
-      continue;
-    la::Vector local(static_cast<la::Index>(_rows[s].size()));
-    for (size_t j = 0; j < _rows[s].size(); ++j)
-      local(static_cast<la::Index>(j)) = lambda(_rows[s][j]);
-    const la::Vector out = _B[s] * (_system.operators(s).K * (_B[s].transpose() * local));
-    for (size_t j = 0; j < _rows[s].size(); ++j)
-      y(_rows[s][j]) += out(static_cast<la::Index>(j));
-  }
-  return y;
+  return sum_over_subdomains(lambda, [this](int32_t s, const la::Vector& v)
+                             { return la::Vector(_system.operators(s).K * v); });
 }
 
 la::SparseMatrix FetiOperators::G_columns(const std::vector<char>& keep) const

@@ -45,6 +45,10 @@ public:
   const decomposition::SubdomainSystem& system() const { return _system; }
 
 private:
+  /// sum_s B_s local_op(s, B_s' lambda_s): the pattern of F and of the lumped preconditioner.
+  template <class LocalOperator>
+  la::Vector sum_over_subdomains(const la::Vector& lambda, LocalOperator&& local_op) const;
+
   const decomposition::SubdomainSystem& _system;
   int64_t _n_dual = 0;
   std::vector<std::vector<int64_t>> _rows;  ///< per subdomain: global row ids of B_s

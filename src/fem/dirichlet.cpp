@@ -30,6 +30,11 @@ ConstrainedDofs collect_dirichlet(const mesh::HexMesh& mesh,
                               << "' has two different prescribed values for component " << i);
       }
   }
+  return to_constrained_dofs(prescribed);
+}
+
+ConstrainedDofs to_constrained_dofs(const std::map<int64_t, double>& prescribed)
+{
   ConstrainedDofs out;
   out.values.resize(static_cast<la::Index>(prescribed.size()));
   for (const auto& [dof, value] : prescribed)

@@ -5,6 +5,7 @@
 #include "mesh/hex_mesh.hpp"
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,9 @@ struct ConstrainedDofs
   std::vector<int64_t> dofs;
   la::Vector values;
 };
+
+/// Sorted DOFs and values of a DOF -> value map.
+ConstrainedDofs to_constrained_dofs(const std::map<int64_t, double>& prescribed);
 
 /// Collects the DOFs of all conditions; throws if two conditions prescribe different
 /// values on one DOF.

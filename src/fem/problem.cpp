@@ -34,14 +34,7 @@ ConstrainedDofs Problem::all_constrained_dofs() const
                                                  << " for component " << i
                                                  << ", which plane strain fixes to zero");
       }
-  ConstrainedDofs out;
-  out.values.resize(static_cast<la::Index>(merged.size()));
-  for (const auto& [dof, value] : merged)
-  {
-    out.values(static_cast<la::Index>(out.dofs.size())) = value;
-    out.dofs.push_back(dof);
-  }
-  return out;
+  return to_constrained_dofs(merged);
 }
 
 void Problem::validate() const

@@ -2,8 +2,6 @@
 
 #include "common/error.hpp"
 
-#include <yaml-cpp/yaml.h>
-
 #include <cmath>
 #include <sstream>
 
@@ -70,20 +68,6 @@ std::string trim(const std::string& s)
   return b == std::string::npos ? "" : s.substr(b, e - b + 1);
 }
 
-void flatten(const YAML::Node& node, const std::string& prefix, Settings& settings,
-             const std::string& source)
-{
-  if (node.IsMap())
-  {
-    for (const auto& kv : node)
-      flatten(kv.second, prefix.empty() ? kv.first.as<std::string>()
-                                        : prefix + "." + kv.first.as<std::string>(),
-              settings, source);
-    return;
-  }
-  FETICON_CHECK(node.IsScalar(), source << ": key '" << prefix << "' must be a single value");
-  settings.set(prefix, node.as<std::string>(), source);
-}
 } // namespace
 
 const std::vector<SettingSpec>& Settings::specs()
@@ -158,32 +142,6 @@ void Settings::set(const std::string& key, const std::string& raw, const std::st
     break;
   }
   _values[key] = value;
-}
-
-void Settings::set_override(const std::string& assignment)
-{
-  const auto eq = assignment.find('=');
-  FETICON_CHECK(eq != std::string::npos && eq > 0,
-                "--set '" << assignment << "' must have the form KEY=VALUE");
-  set(trim(assignment.substr(0, eq)), assignment.substr(eq + 1), "--set");
-}
-
-void Settings::load_yaml(const std::filesystem::path& path)
-{
-  FETICON_CHECK(std::filesystem::exists(path), "problem file " << path.string() << " does not exist");
-  YAML::Node root;
-  try
-  {
-    root = YAML::LoadFile(path.string());
-  }
-  catch (const YAML::Exception& e)
-  {
-    FETICON_CHECK(false, path.string() << ": invalid YAML at line " << e.mark.line + 1 << ", column "
-                                       << e.mark.column + 1 << ": " << e.msg);
-  }
-  FETICON_CHECK(root.IsMap() || root.IsNull(), path.string() << ": the top level must be a map of keys");
-  if (root.IsMap())
-    flatten(root, "", *this, path.string());
 }
 
 double Settings::number(const std::string& key) const { return std::stod(_values.at(key)); }

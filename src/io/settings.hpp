@@ -1,8 +1,8 @@
 #pragma once
-/// @file Run settings: documented keys with defaults and ranges, filled from a YAML file
-/// (nested maps flatten to dotted keys, e.g. qp: {rtol: 1e-6} is qp.rtol) and from
-/// command-line overrides KEY=VALUE. Unknown keys and bad values are errors that name the
-/// key, the source and what is expected.
+/// @file Run settings: documented keys with defaults and ranges (solver, output and the
+/// built-in problems), filled by io/problem_file from a YAML file (nested maps give dotted
+/// keys, e.g. qp: {rtol: 1e-6} is qp.rtol) and command-line overrides. Unknown keys and bad
+/// values are errors that name the key, the source and what is expected.
 
 #include <filesystem>
 #include <map>
@@ -40,12 +40,8 @@ public:
   /// Help text listing every key with default and meaning.
   static std::string help();
 
-  /// Reads a YAML problem file; `source` names it in errors.
-  void load_yaml(const std::filesystem::path& path);
   /// Sets `key` from text; `source` (e.g. "--set" or a file name) names it in errors.
   void set(const std::string& key, const std::string& value, const std::string& source);
-  /// Parses "KEY=VALUE".
-  void set_override(const std::string& assignment);
 
   double number(const std::string& key) const;
   int integer(const std::string& key) const;

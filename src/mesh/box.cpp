@@ -11,28 +11,6 @@ namespace feticon::mesh
 {
 namespace
 {
-/// Reference coordinates of the 8 hex8 nodes in VTK order (see hex_mesh.hpp).
-constexpr std::array<std::array<int, 3>, 8> corner_signs = {{
-    {-1, -1, -1},
-    {1, -1, -1},
-    {1, 1, -1},
-    {-1, 1, -1},
-    {-1, -1, 1},
-    {1, -1, 1},
-    {1, 1, 1},
-    {-1, 1, 1},
-}};
-
-/// Jacobian determinant of the trilinear map at the cell centre, 8 times the cell volume for a
-/// parallelepiped; its sign tells whether the node map kept the orientation.
-double centre_jacobian_determinant(const HexMesh& mesh, const Cell& cell)
-{
-  Eigen::Matrix3d jacobian = Eigen::Matrix3d::Zero();
-  for (int a = 0; a < 8; ++a)
-    for (int d = 0; d < 3; ++d)
-      jacobian.col(d) += 0.125 * corner_signs[a][d] * mesh.nodes.row(cell[a]).transpose();
-  return jacobian.determinant();
-}
 
 std::vector<double> uniform_positions(double length, double spacing)
 {

@@ -198,25 +198,6 @@ void read_body_cells(const PhysicalGroup& group, const std::string& where,
                 where << ": physical volume '" << group.name << "' has no elements");
 }
 
-/// Jacobian determinant of the trilinear map at the cell centre (the sign of the orientation).
-double centre_jacobian_determinant(const HexMesh& mesh, const Cell& cell)
-{
-  // Reference corners in VTK order, as listed in hex_mesh.hpp.
-  static constexpr std::array<std::array<int, 3>, 8> corner_signs = {{{-1, -1, -1},
-                                                                      {1, -1, -1},
-                                                                      {1, 1, -1},
-                                                                      {-1, 1, -1},
-                                                                      {-1, -1, 1},
-                                                                      {1, -1, 1},
-                                                                      {1, 1, 1},
-                                                                      {-1, 1, 1}}};
-  Eigen::Matrix3d jacobian = Eigen::Matrix3d::Zero();
-  for (int a = 0; a < 8; ++a)
-    for (int d = 0; d < 3; ++d)
-      jacobian.col(d) += 0.125 * corner_signs[a][d] * mesh.nodes.row(cell[a]).transpose();
-  return jacobian.determinant();
-}
-
 /// Bodies, nodes and cells from the 3D groups.
 /// @return the local node id of every Gmsh node tag used by a hexahedron
 std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGroup>& groups,

@@ -44,6 +44,18 @@ std::vector<int32_t> HexMesh::face_set_nodes(const std::string& name) const
   return ids;
 }
 
+double centre_jacobian_determinant(const HexMesh& mesh, const Cell& cell)
+{
+  // Reference corners in VTK order (hex_mesh.hpp); at the centre dN_a/dxi_d = s_ad / 8.
+  static constexpr int corner_signs[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                             {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+  Eigen::Matrix3d jacobian = Eigen::Matrix3d::Zero();
+  for (int a = 0; a < 8; ++a)
+    for (int d = 0; d < 3; ++d)
+      jacobian.col(d) += 0.125 * corner_signs[a][d] * mesh.nodes.row(cell[a]).transpose();
+  return jacobian.determinant();
+}
+
 void HexMesh::add_node_set_from_faces(const std::string& name, const std::string& faces_name)
 {
   node_sets[name] = face_set_nodes(faces_name);

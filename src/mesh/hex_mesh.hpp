@@ -58,4 +58,9 @@ struct HexMesh
   /// Adds (or replaces) the node set `name` as the nodes of face set `faces_name`.
   void add_node_set_from_faces(const std::string& name, const std::string& faces_name);
 };
+
+/// Jacobian determinant of a cell's trilinear map at the cell centre (8 times the volume of
+/// a parallelepiped); positive when the node order keeps the orientation. Mesh readers and
+/// generators use it to reject inverted or degenerate cells.
+double centre_jacobian_determinant(const HexMesh& mesh, const Cell& cell);
 } // namespace feticon::mesh
