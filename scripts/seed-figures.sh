@@ -16,9 +16,10 @@ feticon="$root/build/feticon"
 mkdir -p "$out"
 run() { local dir="$1"; shift; "$feticon" run -q --output "$out/$dir" "$@" >/dev/null || echo "run $dir failed"; }
 
-for eps in 0.0001 0.001 0.01 0.1 1; do run "primal_$eps" --set method=primal_penalty --set eps_n=$eps "$@"; done
-for rho in 1 10 100 1000 10000; do run "dual_$rho" --set method=dual_penalty --set rho=$rho "$@"; done
-for rho in 1 10 100 1000 10000; do run "smalbe_$rho" --set method=smalbe --set rho=$rho "$@"; done
+small=(--set displacements=small)
+for eps in 0.0001 0.001 0.01 0.1 1; do run "primal_$eps" "${small[@]}" --set method=primal_penalty --set eps_n=$eps "$@"; done
+for rho in 1 10 100 1000 10000; do run "dual_$rho" "${small[@]}" --set method=dual_penalty --set rho=$rho "$@"; done
+for rho in 1 10 100 1000 10000; do run "smalbe_$rho" "${small[@]}" --set method=smalbe --set rho=$rho "$@"; done
 for rho in 1 10 100 1000 10000; do
   run "large_dual_$rho" --set displacements=large --set method=dual_penalty --set rho=$rho "$@"
   run "large_smalbe_$rho" --set displacements=large --set method=smalbe --set rho=$rho "$@"
