@@ -18,7 +18,8 @@ namespace feticon::app
 void write_step_vtu(const std::filesystem::path& path, const fem::Problem& problem,
                     const nonlinear::ContactSolution& solution, fem::Kinematics kinematics);
 
-/// contact_pressure.csv: x, pressure from multipliers, from stresses, McEwen.
+/// contact_pressure.csv: position, force, area, pressure from multipliers, from stresses,
+/// McEwen's (Hertz only; 0 otherwise).
 void write_pressure_csv(const std::filesystem::path& path,
                         const std::vector<nonlinear::PressureSample>& samples);
 

@@ -42,16 +42,25 @@ def plot(folders, out, title):
     analytic_drawn = False
     for folder in folders:
         rows, summary = read_run(folder)
-        x = [1e3 * float(r["x_m"]) for r in rows]
+        # 3D results (one row per node, y varies): plot against the distance from the z axis.
+        three_d = len({r.get("y_m", "0") for r in rows}) > 1 and not any(
+            float(r["pressure_mcewen_Pa"]) for r in rows)
+        if three_d:
+            x = [1e3 * (float(r["x_m"]) ** 2 + float(r["y_m"]) ** 2) ** 0.5 for r in rows]
+        else:
+            x = [1e3 * float(r["x_m"]) for r in rows]
         p = [1e-6 * float(r["pressure_multipliers_Pa"]) for r in rows]
         pa = [1e-6 * float(r["pressure_mcewen_Pa"]) for r in rows]
         if not analytic_drawn and any(pa):
             ax.plot(x, pa, "k-", lw=2, label="McEwen (analytic)")
             analytic_drawn = True
-        ax.plot(x, p, "o-", ms=3, lw=1, label=label_of(summary))
+        ax.plot(x, p, "o" if three_d else "o-", ms=3, lw=1, label=label_of(summary))
+        if three_d:
+            ax.set_xlabel("distance from the z axis (mm)")
     if analytic_drawn:
         ax.set_xlim(0, 100)
-    ax.set_xlabel("x (mm)")
+    if not ax.get_xlabel():
+        ax.set_xlabel("x (mm)")
     ax.set_ylabel("normal contact pressure (MPa)")
     ax.set_title(title)
     ax.grid(True, alpha=0.3)

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 namespace feticon::nonlinear
 {
@@ -37,19 +38,34 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
   const auto stresses = fem::nodal_average(
       problem.mesh, fem::cell_cauchy_stresses(problem.mesh, solution.u, problem.materials, kinematics));
 
-  // Group the slave nodes of a node line (same reference x) together.
-  std::map<long, PressureSample> by_x;
+  // Plane strain: the nodes of a line through the thickness (same reference x) form one
+  // sample; in 3D every node is its own sample.
+  const bool plane_strain = problem.eliminated[2];
   const double key_scale = 1e9; // nm resolution groups nodes through the thickness
+  auto key_of = [&](int32_t node)
+  {
+    const auto& X = problem.mesh.nodes;
+    return plane_strain ? std::make_tuple(std::lround(X(node, 0) * key_scale), 0L, 0L, 0)
+                        : std::make_tuple(std::lround(X(node, 0) * key_scale),
+                                          std::lround(X(node, 1) * key_scale),
+                                          std::lround(X(node, 2) * key_scale), node);
+  };
+  std::map<std::tuple<long, long, long, int32_t>, PressureSample> by_x;
   for (int32_t node : problem.mesh.face_set_nodes(problem.contacts[0].slave))
   {
-    auto& s = by_x[std::lround(problem.mesh.nodes(node, 0) * key_scale)];
-    s.x = problem.mesh.nodes(node, 0);
+    auto& s = by_x[key_of(node)];
+    if (s.area == 0)
+    {
+      s.x = problem.mesh.nodes(node, 0);
+      s.y = problem.mesh.nodes(node, 1);
+      s.z = problem.mesh.nodes(node, 2);
+    }
     s.area += tributary(3 * node);
   }
   for (size_t i = 0; i < rows.slave_node.size(); ++i)
   {
     const int32_t node = rows.slave_node[i];
-    auto& s = by_x[std::lround(problem.mesh.nodes(node, 0) * key_scale)];
+    auto& s = by_x[key_of(node)];
     s.force += solution.contact_lambda(static_cast<la::Index>(i)) / rows.row_norm[i];
     const Eigen::Vector3d& n = rows.normal[i];
     const auto& v = stresses[node];

@@ -19,15 +19,19 @@ namespace feticon::nonlinear
 {
 struct PressureSample
 {
-  double x = 0;              ///< reference x-coordinate of the node line (m)
-  double force = 0;          ///< normal contact force of the nodes at x (N)
+  double x = 0;              ///< reference coordinates of the node (of the node line in
+  double y = 0;              ///< plane strain, where y and z are those of its first node) (m)
+  double z = 0;
+  double force = 0;          ///< normal contact force of the node(s) (N)
   double area = 0;           ///< their tributary area (m^2)
   double pressure = 0;       ///< force / area (Pa)
   double stress_pressure = 0; ///< -n' sigma n from the averaged stress (Pa)
   double analytic = 0;       ///< McEwen p(x) (Pa), when compared with Hertz
 };
 
-/// Pressure along x on the slave surface of pair 0, sorted by x.
+/// Pressure on the slave surface of pair 0. Plane strain (u_z eliminated): one sample per
+/// node line through the thickness (same reference x), sorted by x. Otherwise one sample
+/// per slave node, sorted by x, then y, then z.
 std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
                                                 const ContactSolution& solution,
                                                 fem::Kinematics kinematics);
