@@ -110,5 +110,51 @@ head -c 20000 "$2/examples/sphere_on_block/sphere_on_block.msh" > "$work/truncat
 expect "Gmsh file truncated" "truncated.msh" -- "$(gmsh_problem truncated.msh gmsh_truncated)"
 expect "Gmsh file lacks the named groups" "no node set 'base_ymin'" -- "$(gmsh_problem "$(cd "$2" && pwd)/examples/sphere_on_block/sphere_on_block.msh" gmsh_groups)"
 
+# Hand-written MSH 2.2 files: one hexahedron "block" with a bottom face and an empty-named
+# contact group. Listing the top nodes first turns the hexahedron inside out.
+write_msh() { # FILE NODE_ORDER
+  cat > "$1" <<MSH
+\$MeshFormat
+2.2 0 8
+\$EndMeshFormat
+\$PhysicalNames
+3
+3 1 "block"
+2 2 "bottom"
+2 3 "top"
+\$EndPhysicalNames
+\$Nodes
+8
+1 0 0 0
+2 1 0 0
+3 1 1 0
+4 0 1 0
+5 0 0 1
+6 1 0 1
+7 1 1 1
+8 0 1 1
+\$EndNodes
+\$Elements
+2
+1 5 2 1 1 $2
+2 3 2 2 1 1 4 3 2
+\$EndElements
+MSH
+}
+msh_problem() { # MESH NAME CONTACT_SLAVE
+  cat > "$work/$2.yaml" <<YAML
+problem: custom
+mesh: {file: $1}
+bodies: {block: {young: 2e11, poisson: 0.3}}
+supports: [{set: bottom, x: 0, y: 0, z: 0}]
+contact: [{slave: $3, master: bottom}]
+YAML
+  echo "$work/$2.yaml"
+}
+write_msh "$work/inverted.msh" "5 6 7 8 1 2 3 4"
+expect "inverted element" "inverted\|Jacobian" -- "$(msh_problem inverted.msh inverted top)"
+write_msh "$work/empty_group.msh" "1 2 3 4 5 6 7 8"
+expect "empty contact surface" "'top'" -- "$(msh_problem empty_group.msh empty_group top)"
+
 echo "$((cases - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]
