@@ -242,7 +242,9 @@ void run(const RunOptions& options)
   if (solver.method == nonlinear::ContactMethod::primal_penalty)
     summary["eps_n"] = solution.penalty;
 
-  if (solution.contact_lambda.size() > 0)
+  // Contact figures only of a converged state: the last iterate of a failed solve is no
+  // result (the converged load steps are on disk as VTU and in "steps").
+  if (solution.converged && solution.contact_lambda.size() > 0)
   {
     ScopedTimer t(timers, "post-processing");
     // Pressure along the slave surface; the analytic column is filled for Hertz only.
@@ -294,7 +296,8 @@ void run(const RunOptions& options)
   write_json(out_dir / "summary.json", summary);
 
   log::info(format_summary(summary));
-  plot_results(out_dir);
+  if (solution.converged)
+    plot_results(out_dir);
   log::info("results written to " + out_dir.string());
   FETICON_CHECK(solution.converged, "the solve did not converge: " << solution.reason
                                                                    << " (converged steps are in "
