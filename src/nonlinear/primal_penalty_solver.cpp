@@ -154,8 +154,23 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
           fem::ConstrainedDofs homogeneous = target;
           homogeneous.values.setZero();
           const fem::DirichletElimination elim(n, homogeneous);
-          factor.factorize(elim.reduce_matrix(A), "the penalized tangent stiffness");
-          const la::Vector du = elim.expand(factor.solve(elim.restrict(t_n * f_ext - f_int + f_pen)));
+          // Active set of the linearized step made consistent first (rows violated after the
+          // step, B du - c > 0), as in the linear case: taking it from the current gaps alone
+          // lets nodes at the contact edge flip at every Newton iteration.
+          la::Vector du;
+          for (int inner = 0; inner < 30; ++inner)
+          {
+            factor.factorize(elim.reduce_matrix(K + K_pen), "the penalized tangent stiffness");
+            du = elim.expand(factor.solve(elim.restrict(t_n * f_ext - f_int + f_pen)));
+            const la::Vector predicted = rows.B * du - rows.c;
+            std::vector<char> consistent(rows.c.size());
+            for (la::Index i = 0; i < predicted.size(); ++i)
+              consistent[i] = predicted(i) > 0;
+            if (consistent == active || std::count(consistent.begin(), consistent.end(), 1) == 0)
+              break;
+            active = consistent;
+            penalty_terms(rows, active, eps, K_pen, f_pen);
+          }
           u += du;
           it.displacement_change = du.norm() / std::max(u.norm(), 1e-300);
           out.contact_lambda = eps.cwiseProduct(rows.B * du - rows.c).cwiseMax(0.0);
