@@ -2,7 +2,6 @@
 
 #include "fem/stress.hpp"
 #include "fem/hex8_element.hpp"
-#include "fem/loads.hpp"
 #include "common/log.hpp"
 #include "io/atomic_file.hpp"
 
@@ -30,17 +29,12 @@ void write_step_vtu(const std::filesystem::path& path, const fem::Problem& probl
   io::VtuField pressure{"contact_pressure", 1, std::vector<double>(mesh.n_nodes(), 0.0)};
   if (!problem.contacts.empty() && solution.contact_lambda.size() > 0)
   {
-    // Per node force over the node's own tributary area (not grouped by x).
-    la::Vector area = la::Vector::Zero(3 * mesh.n_nodes());
-    fem::add_face_traction(mesh, mesh.face_set(problem.contacts[0].slave), Eigen::Vector3d(1, 0, 0), area);
+    // Per node: the row's normal force over the node's tributary area (not grouped by x).
     const auto& rows = solution.constraints;
     for (size_t i = 0; i < rows.slave_node.size(); ++i)
-    {
-      const int32_t node = rows.slave_node[i];
-      if (area(3 * node) > 0)
-        pressure.values[node] += solution.contact_lambda(static_cast<la::Index>(i)) /
-                                 rows.row_norm[i] / area(3 * node);
-    }
+      if (rows.slave_area[i] > 0)
+        pressure.values[rows.slave_node[i]] +=
+            solution.contact_lambda(static_cast<la::Index>(i)) / rows.row_norm[i] / rows.slave_area[i];
   }
   if (kinematics == fem::Kinematics::total_lagrangian)
   {

@@ -1,6 +1,7 @@
 #include "decomposition/generalized_inverse.hpp"
 
 #include "common/error.hpp"
+#include "la/submatrix.hpp"
 
 #include <algorithm>
 
@@ -27,27 +28,6 @@ std::vector<int32_t> choose_fixing_nodes(
   }
   return {static_cast<int32_t>(a), static_cast<int32_t>(b), static_cast<int32_t>(c)};
 }
-
-namespace
-{
-/// K restricted to the rows and columns with position[i] >= 0, renumbered to position[i].
-la::SparseMatrix submatrix(const la::SparseMatrix& K, const std::vector<int32_t>& position)
-{
-  std::vector<la::Triplet> triplets;
-  triplets.reserve(K.nonZeros());
-  int n_kept = 0;
-  for (int32_t p : position)
-    n_kept += p >= 0;
-  for (int col = 0; col < K.outerSize(); ++col)
-    if (position[col] >= 0)
-      for (la::SparseMatrix::InnerIterator it(K, col); it; ++it)
-        if (position[it.row()] >= 0)
-          triplets.emplace_back(position[it.row()], position[col], it.value());
-  la::SparseMatrix A(n_kept, n_kept);
-  A.setFromTriplets(triplets.begin(), triplets.end());
-  return A;
-}
-} // namespace
 
 void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
                                const std::vector<int32_t>& fixing_candidates,
@@ -90,7 +70,8 @@ void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
         position[i] = static_cast<int32_t>(_kept.size());
         _kept.push_back(static_cast<int32_t>(i));
       }
-    _factor.factorize(submatrix(K, position), what.c_str());
+    _factor.factorize(la::principal_submatrix(K, position, static_cast<int32_t>(_kept.size())),
+                      what.c_str());
     return;
   }
 

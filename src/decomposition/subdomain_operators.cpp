@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "decomposition/rigid_body_modes.hpp"
+#include "la/submatrix.hpp"
 
 namespace feticon::decomposition
 {
@@ -35,17 +36,8 @@ void SubdomainSystem::update(const la::Vector& u_stacked)
     const la::Vector u_full = full_local(sub.id, u_stacked);
     const la::SparseMatrix K_full = assembler.stiffness(u_full, fem::StiffnessKind::material);
     // Restrict to active DOFs (plane strain eliminates z).
-    std::vector<int32_t> position(sub.active_of_full);
-    std::vector<la::Triplet> triplets;
-    triplets.reserve(K_full.nonZeros());
-    for (int col = 0; col < K_full.outerSize(); ++col)
-      if (position[col] >= 0)
-        for (la::SparseMatrix::InnerIterator it(K_full, col); it; ++it)
-          if (position[it.row()] >= 0)
-            triplets.emplace_back(position[it.row()], position[col], it.value());
     SubdomainOperators& op = _operators[sub.id];
-    op.K.resize(sub.n_dofs(), sub.n_dofs());
-    op.K.setFromTriplets(triplets.begin(), triplets.end());
+    op.K = la::principal_submatrix(K_full, sub.active_of_full, sub.n_dofs());
 
     // Kernel from the current coordinates x = X + u (the kernel of K_M(u)).
     Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> x = assembler.local_coordinates();

@@ -6,6 +6,7 @@
 #include "qp/norm_estimate.hpp"
 
 #include <limits>
+#include <optional>
 
 namespace feticon::dual
 {
@@ -62,14 +63,18 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   // from the equality rows alone, when they fix every rigid mode; then the contact bounds
   // are simply lambda_I >= 0 and mu = 0 is feasible. Otherwise (a body held only by
   // contact, like the Hertz cylinder) variant A, the minimal-norm G'(GG')^{-1} e.
-  std::vector<char> equality_mask(m, 0);
-  std::fill(equality_mask.begin(), equality_mask.begin() + n_equality, 1);
-  const la::SparseMatrix G_E = feti.G_columns(equality_mask);
-  la::Vector lambda_tilde;
-  if (n_equality < m && CoarseProjector::has_full_row_rank(G_E))
-    lambda_tilde = CoarseProjector(G_E).particular_solution(e);
-  else
-    lambda_tilde = projector.particular_solution(e);
+  la::SparseMatrix G_E;
+  std::optional<CoarseProjector> equality_projector;
+  if (n_equality < m)
+  {
+    std::vector<char> equality_mask(m, 0);
+    std::fill(equality_mask.begin(), equality_mask.begin() + n_equality, 1);
+    G_E = feti.G_columns(equality_mask);
+    equality_projector.emplace(G_E, std::nothrow);
+  }
+  const la::Vector lambda_tilde = equality_projector && equality_projector->full_rank()
+                                      ? equality_projector->particular_solution(e)
+                                      : projector.particular_solution(e);
   const la::Vector d = feti.apply_B(feti.apply_K_plus(f_stacked)) - c;
 
   DualSolution out;

@@ -21,16 +21,14 @@ bool factorize_full_rank(const la::SparseMatrix& G, Eigen::SimplicialLLT<la::Spa
 }
 } // namespace
 
-bool CoarseProjector::has_full_row_rank(const la::SparseMatrix& G)
+CoarseProjector::CoarseProjector(const la::SparseMatrix& G, std::nothrow_t)
+    : _G(G), _full_rank(factorize_full_rank(G, _llt))
 {
-  Eigen::SimplicialLLT<la::SparseMatrix> llt;
-  return factorize_full_rank(G, llt);
 }
 
-CoarseProjector::CoarseProjector(const la::SparseMatrix& G) : _G(G)
+CoarseProjector::CoarseProjector(const la::SparseMatrix& G) : CoarseProjector(G, std::nothrow)
 {
-  const bool full_rank = factorize_full_rank(G, _llt);
-  FETICON_CHECK(full_rank, "the constraints do not suppress every rigid-body motion (G G' is "
+  FETICON_CHECK(_full_rank, "the constraints do not suppress every rigid-body motion (G G' is "
                            "singular): a body is free to move; add supports or symmetry conditions");
 }
 

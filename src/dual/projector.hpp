@@ -8,6 +8,7 @@
 #include "la/operator.hpp"
 
 #include <Eigen/SparseCholesky>
+#include <new>
 
 namespace feticon::dual
 {
@@ -17,8 +18,11 @@ public:
   /// Factorizes G G'. Throws feticon::Error if G has dependent rows, i.e. some rigid
   /// motion is not suppressed by any constraint (a body that can fly away).
   explicit CoarseProjector(const la::SparseMatrix& G);
-  /// True if G has full row rank (G G' factorizes with no vanishing pivot).
-  static bool has_full_row_rank(const la::SparseMatrix& G);
+  /// Factorizes G G' without throwing; full_rank() tells whether it succeeded, and only then
+  /// may the other members be used.
+  CoarseProjector(const la::SparseMatrix& G, std::nothrow_t);
+  /// True if G has full row rank (G G' factorized with no vanishing pivot).
+  bool full_rank() const { return _full_rank; }
 
   la::Vector apply_Q(const la::Vector& lambda) const;
   la::Vector apply_P(const la::Vector& lambda) const { return lambda - apply_Q(lambda); }
@@ -32,6 +36,7 @@ public:
 private:
   const la::SparseMatrix& _G;
   Eigen::SimplicialLLT<la::SparseMatrix> _llt;
+  bool _full_rank = false;
 };
 
 /// P as a LinearOperator.

@@ -1,6 +1,7 @@
 #include "fem/dirichlet.hpp"
 
 #include "common/error.hpp"
+#include "la/submatrix.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -57,30 +58,14 @@ DirichletElimination::DirichletElimination(int64_t n_dofs, const ConstrainedDofs
   for (int64_t dof = 0; dof < n_dofs; ++dof)
     if (!is_constrained[dof])
     {
-      _free_index[dof] = static_cast<int64_t>(_free.size());
+      _free_index[dof] = static_cast<int32_t>(_free.size());
       _free.push_back(dof);
     }
 }
 
 la::SparseMatrix DirichletElimination::reduce_matrix(const la::SparseMatrix& K) const
 {
-  std::vector<la::Triplet> triplets;
-  triplets.reserve(K.nonZeros());
-  for (int col = 0; col < K.outerSize(); ++col)
-  {
-    const int64_t fc = _free_index[col];
-    if (fc < 0)
-      continue;
-    for (la::SparseMatrix::InnerIterator it(K, col); it; ++it)
-    {
-      const int64_t fr = _free_index[it.row()];
-      if (fr >= 0)
-        triplets.emplace_back(static_cast<int>(fr), static_cast<int>(fc), it.value());
-    }
-  }
-  la::SparseMatrix reduced(n_free(), n_free());
-  reduced.setFromTriplets(triplets.begin(), triplets.end());
-  return reduced;
+  return la::principal_submatrix(K, _free_index, static_cast<int32_t>(n_free()));
 }
 
 la::Vector DirichletElimination::reduce_rhs(const la::SparseMatrix& K, const la::Vector& f) const

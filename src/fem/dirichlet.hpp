@@ -57,7 +57,7 @@ public:
 private:
   int64_t _n_dofs;
   std::vector<int64_t> _free;
-  std::vector<int64_t> _free_index; ///< DOF -> position in _free or -1
+  std::vector<int32_t> _free_index; ///< DOF -> position in _free or -1
   ConstrainedDofs _constrained;
 };
 } // namespace feticon::fem

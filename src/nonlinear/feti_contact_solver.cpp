@@ -88,6 +88,12 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
     // have been in the uninterrupted run.
     first_step = r.completed_steps + 1;
   }
+  // Internal force at the current u, kept up to date after every update.
+  la::Vector f_int;
+  {
+    ScopedTimer t(timers, "internal forces");
+    f_int = system.internal_force(u);
+  }
   for (int step = first_step; step <= settings.load_steps; ++step)
   {
     const double t_n = static_cast<double>(step) / settings.load_steps;
@@ -114,10 +120,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
         ScopedTimer t(timers, "contact search");
         contact_rows = contact::build_contact_constraints(problem.mesh, u_global, pair, contact_options);
       }
-      {
-        ScopedTimer t(timers, "internal forces");
-        residual = t_n * f_ext_stacked - system.internal_force(u);
-      }
+      residual = t_n * f_ext_stacked - f_int;
       decomposition::ConstraintRows rows = equality.rows;
       rows.append(decomposition::rows_from_global(*decomp, contact_rows.B, contact_rows.c));
       const int64_t n_equality = equality.rows.n_rows();
@@ -169,8 +172,8 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       it.displacement_change = solution.u.norm() / std::max(u.norm(), 1e-300);
       {
         ScopedTimer t(timers, "internal forces");
-        const la::Vector r_new = t_n * f_ext_stacked - system.internal_force(u) -
-                                 feti->apply_Bt(solution.lambda);
+        f_int = system.internal_force(u); // also the next iteration's, at the same u
+        const la::Vector r_new = t_n * f_ext_stacked - f_int - feti->apply_Bt(solution.lambda);
         it.residual_norm = decomp->gather_sum(r_new).norm() / f_norm;
       }
       it.seconds = seconds_since(iteration_start);

@@ -3,7 +3,6 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "fem/assembler.hpp"
-#include "fem/loads.hpp"
 #include "la/cholmod.hpp"
 
 #include <algorithm>
@@ -19,17 +18,12 @@ using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 /// Penalty of each row: eps_n times the slave node's tributary area over the mean one, so
 /// that a uniform penetration gives a uniform pressure (a node-wise spring would give the
 /// half-area node on a symmetry plane twice the pressure of its neighbours).
-la::Vector row_penalties(const fem::Problem& problem, const contact::ContactConstraints& rows,
-                         double eps_n)
+la::Vector row_penalties(const contact::ContactConstraints& rows, double eps_n)
 {
-  la::Vector area = la::Vector::Zero(3 * problem.mesh.n_nodes());
-  fem::add_face_traction(problem.mesh, problem.mesh.face_set(problem.contacts[0].slave),
-                         Eigen::Vector3d(1, 0, 0), area);
-  la::Vector eps(static_cast<la::Index>(rows.slave_node.size()));
-  for (size_t i = 0; i < rows.slave_node.size(); ++i)
-    eps(static_cast<la::Index>(i)) = area(3 * rows.slave_node[i]);
-  const double mean = eps.size() > 0 ? eps.mean() : 1.0;
-  return eps * (eps_n / mean);
+  const la::Vector area = Eigen::Map<const la::Vector>(rows.slave_area.data(),
+                                                       static_cast<la::Index>(rows.slave_area.size()));
+  const double mean = area.size() > 0 ? area.mean() : 1.0;
+  return area * (eps_n / mean);
 }
 
 /// B_A' E B_A and B_A' E c_A (E = diag of row penalties) for the rows flagged in `active`.
@@ -131,7 +125,7 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
         if (out.penalty == 0)
           out.penalty = settings.eps_n_factor * K.diagonal().maxCoeff();
       }
-      const la::Vector eps = row_penalties(problem, rows, out.penalty);
+      const la::Vector eps = row_penalties(rows, out.penalty);
       penalty_terms(rows, active, eps, K_pen, f_pen);
       OuterIteration it;
       {

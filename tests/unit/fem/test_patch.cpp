@@ -124,6 +124,12 @@ TEST(Loads, TractionAndPressureResultants)
     total += f.segment<3>(3 * n);
   EXPECT_LT((total - Eigen::Vector3d(-5, 0, 0)).norm(), 1e-14);
   EXPECT_NEAR(fem::face_set_area(m, m.face_set("xmax")), 1.0, 1e-14);
+  // A nodal force is split equally over the set: each of the 4 nodes carries a quarter.
+  f.setZero();
+  fem::add_nodal_force(m.node_set("xmax"), Eigen::Vector3d(4, -8, 12), f);
+  for (int n : m.node_set("xmax"))
+    EXPECT_LT((f.segment<3>(3 * n) - Eigen::Vector3d(1, -2, 3)).norm(), 1e-15);
+  EXPECT_NEAR(f.sum(), 8.0, 1e-14);
 }
 
 // Failure path: conflicting prescribed values on one DOF are reported.

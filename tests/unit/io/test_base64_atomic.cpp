@@ -6,6 +6,8 @@
 
 #include "common/error.hpp"
 
+#include "io_test_files.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -19,13 +21,7 @@ namespace
 {
 namespace fs = std::filesystem;
 
-fs::path fresh_directory(const std::string& name)
-{
-  const fs::path directory = fs::path(FETICON_BINARY_DIR) / "test_output" / "unit_io" / name;
-  fs::remove_all(directory);
-  fs::create_directories(directory);
-  return directory;
-}
+using test::fresh_directory;
 
 std::string read(const fs::path& path)
 {

@@ -7,6 +7,8 @@
 
 #include "common/error.hpp"
 
+#include "io_test_files.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -24,13 +26,7 @@ namespace
 {
 namespace fs = std::filesystem;
 
-fs::path fresh_directory(const std::string& name)
-{
-  const fs::path directory = fs::path(FETICON_BINARY_DIR) / "test_output" / "unit_io" / name;
-  fs::remove_all(directory);
-  fs::create_directories(directory);
-  return directory;
-}
+using test::fresh_directory;
 
 /// Runs tests/tools/read_vtu.py on `path` and parses its JSON output.
 nlohmann::json read_back(const fs::path& path)
