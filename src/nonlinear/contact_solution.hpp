@@ -62,7 +62,6 @@ struct ContactSolution
   int64_t n_kernel = 0;
   int32_t n_subdomains = 0;
   double feasibility_error = 0;
-  double pfp_norm = 0;
   double penalty = 0; ///< eps_n (N/m) for the primal penalty
   RestartState restart; ///< state after the last converged load step (FETI solver)
 };

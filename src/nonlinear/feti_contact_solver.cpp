@@ -186,7 +186,6 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       out.n_dual = feti->n_dual();
       out.n_kernel = feti->n_kernel();
       out.feasibility_error = solution.feasibility_error;
-      out.pfp_norm = solution.pfp_norm;
       if (!solution.report.converged)
       {
         out.u = decomp->gather_mean(u);
