@@ -18,8 +18,13 @@ namespace
 std::filesystem::path temporary_path(const std::filesystem::path& path)
 {
   static std::atomic<unsigned long> counter{0};
-  const std::string name = "." + path.filename().string() + ".tmp." + std::to_string(::getpid()) +
-                           "." + std::to_string(counter++);
+  // Appends rather than a chain of operator+: GCC 12 -O3 warns falsely (-Wrestrict) on the chain.
+  std::string name = ".";
+  name += path.filename().string();
+  name += ".tmp.";
+  name += std::to_string(::getpid());
+  name += ".";
+  name += std::to_string(counter++);
   return path.parent_path() / name;
 }
 } // namespace
