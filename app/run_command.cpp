@@ -3,6 +3,7 @@
 #include "app/checkpoint.hpp"
 #include "app/commands.hpp"
 #include "app/run_output.hpp"
+#include "par/communicator.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "io/atomic_file.hpp"
@@ -13,9 +14,11 @@
 #include "problems/cantilever_obstacle.hpp"
 #include "problems/hertz.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 namespace feticon::app
 {
@@ -135,6 +138,21 @@ nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution)
           {"outer_iterations", solution.history.size()}};
 }
 
+/// A step's VTU (one rank) or the .pvtu joining the ranks' pieces, and a piece's name.
+std::string step_file_name(int step, bool serial)
+{
+  char name[64];
+  std::snprintf(name, sizeof name, serial ? "step_%03d.vtu" : "step_%03d.pvtu", step);
+  return name;
+}
+
+std::string piece_file_name(int step, int rank)
+{
+  char name[64];
+  std::snprintf(name, sizeof name, "step_%03d_rank%03d.vtu", step, rank);
+  return name;
+}
+
 void run(const RunOptions& options)
 {
   if (options.quiet)
@@ -150,12 +168,20 @@ void run(const RunOptions& options)
       restart ? restart_dir / "problem.yaml" : std::filesystem::path(options.problem_file), options.overrides);
   const io::Settings& settings = file.settings;
 
+  // Under MPI every rank runs this function; rank 0 writes the folder's shared files, every
+  // rank its piece of each step's VTU.
+  const par::Communicator comm = par::Communicator::world();
+  const bool writer = comm.rank() == 0;
   const std::filesystem::path out_dir(restart ? options.restart : options.output);
-  std::error_code ec;
-  std::filesystem::create_directories(out_dir, ec);
-  FETICON_CHECK(!ec, "cannot create the output folder " << out_dir.string() << ": " << ec.message());
-  if (!restart)
-    io::write_file_atomically(out_dir / "problem.yaml", effective_problem(file));
+  if (writer)
+  {
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir, ec);
+    FETICON_CHECK(!ec, "cannot create the output folder " << out_dir.string() << ": " << ec.message());
+    if (!restart)
+      io::write_file_atomically(out_dir / "problem.yaml", effective_problem(file));
+  }
+  comm.barrier();
 
   TimerTable timers;
   const std::string& kind = settings.text("problem");
@@ -181,21 +207,38 @@ void run(const RunOptions& options)
             ", " + settings.text("displacements") + " displacements");
 
   const bool write_vtu = settings.flag("output.vtu");
-  io::PvdWriter pvd(out_dir / "solution.pvd");
+  std::optional<io::PvdWriter> pvd;
+  if (writer)
+    pvd.emplace(out_dir / "solution.pvd");
   auto on_step = [&](int step, const nonlinear::ContactSolution& solution)
   {
     if (!write_vtu)
       return;
     ScopedTimer t(timers, "output");
-    char name[64];
-    std::snprintf(name, sizeof name, "step_%03d.vtu", step);
-    write_step_vtu(out_dir / name, *problem, solution, solver.kinematics);
-    pvd.add(solution.steps.back().load_factor, name);
+    const std::string name = step_file_name(step, comm.serial());
+    if (comm.serial())
+      write_step_vtu(out_dir / name, *problem, solution, solver.kinematics);
+    else
+    {
+      std::vector<std::string> pieces;
+      for (int r = 0; r < comm.size(); ++r)
+        pieces.push_back(piece_file_name(step, r));
+      write_step_vtu(out_dir / pieces[comm.rank()], *problem, solution, solver.kinematics,
+                     solution.owned_cells);
+      comm.barrier();
+      if (writer)
+        write_step_pvtu(out_dir / name, *problem, pieces);
+    }
+    if (!writer)
+      return;
+    pvd->add(solution.steps.back().load_factor, name);
     // After the VTU: a checkpoint always names a step whose output is complete.
     if (solver.method != nonlinear::ContactMethod::primal_penalty)
       write_checkpoint(out_dir / "checkpoint.bin", solution);
   };
   nonlinear::ContactSolution solution;
+  FETICON_CHECK(comm.serial() || solver.method != nonlinear::ContactMethod::primal_penalty,
+                "method primal_penalty solves the undecomposed problem on one rank; run it without mpirun");
   FETICON_CHECK(!restart || solver.method != nonlinear::ContactMethod::primal_penalty,
                 "--restart is available for the FETI methods (smalbe, dual_penalty), not primal_penalty");
   if (solver.method == nonlinear::ContactMethod::primal_penalty)
@@ -210,13 +253,13 @@ void run(const RunOptions& options)
     read_checkpoint(out_dir / "checkpoint.bin", previous);
     for (int step = 1; step <= previous.restart.completed_steps; ++step)
     {
-      char name[64];
-      std::snprintf(name, sizeof name, "step_%03d.vtu", step);
+      const std::string name = step_file_name(step, comm.serial());
       if (write_vtu)
       {
         FETICON_CHECK(std::filesystem::exists(out_dir / name), "restart: " << (out_dir / name).string()
                                                                            << " of a converged step is missing");
-        pvd.add(previous.steps[step - 1].load_factor, name);
+        if (writer)
+          pvd->add(previous.steps[step - 1].load_factor, name);
       }
     }
     log::info("restart: continuing after load step " + std::to_string(previous.restart.completed_steps));
@@ -275,7 +318,8 @@ void run(const RunOptions& options)
                           {"axis_approach", axis_approach(*problem, solution.u)},
                           {"contact_element_size", h.element_size}};
     }
-    write_pressure_csv(out_dir / "contact_pressure.csv", samples);
+    if (writer)
+      write_pressure_csv(out_dir / "contact_pressure.csv", samples);
   }
   summary["qp"] = qp_json(solution);
   nlohmann::ordered_json steps = nlohmann::ordered_json::array();
@@ -287,16 +331,22 @@ void run(const RunOptions& options)
                      {"relative_displacement_change", s.displacement_change},
                      {"residual_norm", s.residual_norm}});
   summary["steps"] = steps;
-  write_history_csv(out_dir / "history.csv", solution.history);
+  if (writer)
+    write_history_csv(out_dir / "history.csv", solution.history);
   nlohmann::ordered_json timing;
   for (const auto& [phase, seconds] : timers.entries())
     timing[phase] = seconds;
   summary["timings_seconds"] = timing;
-  summary["peak_memory_bytes"] = peak_memory_bytes();
-  write_json(out_dir / "summary.json", summary);
+  summary["ranks"] = comm.size();
+  const std::vector<int64_t> memory = comm.all_gather(std::vector<int64_t>{static_cast<int64_t>(peak_memory_bytes())});
+  summary["peak_memory_bytes"] = *std::max_element(memory.begin(), memory.end());
+  if (!comm.serial())
+    summary["peak_memory_bytes_per_rank"] = memory;
+  if (writer)
+    write_json(out_dir / "summary.json", summary);
 
   log::info(format_summary(summary));
-  if (solution.converged)
+  if (solution.converged && writer)
     plot_results(out_dir);
   log::info("results written to " + out_dir.string());
   FETICON_CHECK(solution.converged, "the solve did not converge: " << solution.reason

@@ -7,45 +7,76 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <numeric>
 #include <sstream>
 
 namespace feticon::app
 {
-void write_step_vtu(const std::filesystem::path& path, const fem::Problem& problem,
-                    const nonlinear::ContactSolution& solution, fem::Kinematics kinematics)
+namespace
 {
-  const mesh::HexMesh& mesh = problem.mesh;
-  io::VtuField displacement{"displacement", 3, std::vector<double>(solution.u.data(),
-                                                                   solution.u.data() + solution.u.size())};
-  const auto stresses = fem::cell_cauchy_stresses(mesh, solution.u, problem.materials, kinematics);
+/// Names and components of the step fields (values empty), shared by pieces and .pvtu.
+struct StepFields
+{
+  io::VtuField displacement{"displacement", 3, {}}, pressure{"contact_pressure", 1, {}};
   io::VtuField cauchy{"cauchy_stress", 6, {}}, mises{"von_mises", 1, {}};
-  for (const auto& s : stresses)
+};
+} // namespace
+
+void write_step_vtu(const std::filesystem::path& path, const fem::Problem& problem,
+                    const nonlinear::ContactSolution& solution, fem::Kinematics kinematics,
+                    const std::vector<int32_t>& cells)
+{
+  std::vector<int32_t> node_of_local;
+  const mesh::HexMesh piece = cells.empty() ? mesh::HexMesh{} : mesh::submesh(problem.mesh, cells, node_of_local);
+  const mesh::HexMesh& mesh = cells.empty() ? problem.mesh : piece;
+  if (cells.empty())
+  {
+    node_of_local.resize(mesh.n_nodes());
+    std::iota(node_of_local.begin(), node_of_local.end(), 0);
+  }
+  std::vector<int32_t> local_of_node(problem.mesh.n_nodes(), -1);
+  la::Vector u(3 * static_cast<la::Index>(node_of_local.size()));
+  for (size_t k = 0; k < node_of_local.size(); ++k)
+  {
+    local_of_node[node_of_local[k]] = static_cast<int32_t>(k);
+    u.segment<3>(3 * static_cast<la::Index>(k)) = solution.u.segment<3>(3 * node_of_local[k]);
+  }
+  StepFields f;
+  f.displacement.values.assign(u.data(), u.data() + u.size());
+  for (const auto& s : fem::cell_cauchy_stresses(mesh, u, problem.materials, kinematics))
   {
     // VTK's symmetric tensor order: xx, yy, zz, xy, yz, xz (feticon Voigt: 11,22,33,12,23,31).
     for (int k = 0; k < 6; ++k)
-      cauchy.values.push_back(s(k));
-    mises.values.push_back(fem::von_mises(s));
+      f.cauchy.values.push_back(s(k));
+    f.mises.values.push_back(fem::von_mises(s));
   }
-  io::VtuField pressure{"contact_pressure", 1, std::vector<double>(mesh.n_nodes(), 0.0)};
+  f.pressure.values.assign(mesh.n_nodes(), 0.0);
   if (!problem.contacts.empty() && solution.contact_lambda.size() > 0)
   {
     // Per node: the row's normal force over the node's tributary area (not grouped by x).
     const auto& rows = solution.constraints;
     for (size_t i = 0; i < rows.slave_node.size(); ++i)
-      if (rows.slave_area[i] > 0)
-        pressure.values[rows.slave_node[i]] +=
+      if (rows.slave_area[i] > 0 && local_of_node[rows.slave_node[i]] >= 0)
+        f.pressure.values[local_of_node[rows.slave_node[i]]] +=
             solution.contact_lambda(static_cast<la::Index>(i)) / rows.row_norm[i] / rows.slave_area[i];
   }
   if (kinematics == fem::Kinematics::total_lagrangian)
   {
     io::PointMatrix x = mesh.nodes;
     for (int32_t n = 0; n < mesh.n_nodes(); ++n)
-      x.row(n) += solution.u.segment<3>(3 * n).transpose();
+      x.row(n) += u.segment<3>(3 * n).transpose();
     const Eigen::Ref<const io::PointMatrix> ref(x);
-    io::write_vtu(path, mesh, &ref, {displacement, pressure}, {cauchy, mises});
+    io::write_vtu(path, mesh, &ref, {f.displacement, f.pressure}, {f.cauchy, f.mises});
   }
   else
-    io::write_vtu(path, mesh, nullptr, {displacement, pressure}, {cauchy, mises});
+    io::write_vtu(path, mesh, nullptr, {f.displacement, f.pressure}, {f.cauchy, f.mises});
+}
+
+void write_step_pvtu(const std::filesystem::path& path, const fem::Problem& problem,
+                     const std::vector<std::string>& pieces)
+{
+  const StepFields f;
+  io::write_pvtu(path, pieces, problem.mesh, {f.displacement, f.pressure}, {f.cauchy, f.mises});
 }
 
 void write_pressure_csv(const std::filesystem::path& path,

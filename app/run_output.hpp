@@ -15,8 +15,14 @@ namespace feticon::app
 {
 /// VTU of one converged load step: displacement, Cauchy and von Mises stress per cell,
 /// contact pressure at the slave nodes; deformed points for large displacements.
+/// @param cells the cells to write (a rank's piece under MPI); empty: the whole mesh
 void write_step_vtu(const std::filesystem::path& path, const fem::Problem& problem,
-                    const nonlinear::ContactSolution& solution, fem::Kinematics kinematics);
+                    const nonlinear::ContactSolution& solution, fem::Kinematics kinematics,
+                    const std::vector<int32_t>& cells = {});
+
+/// The .pvtu joining the per-rank pieces of one step written by write_step_vtu.
+void write_step_pvtu(const std::filesystem::path& path, const fem::Problem& problem,
+                     const std::vector<std::string>& pieces);
 
 /// contact_pressure.csv: position, force, area, pressure from multipliers, from stresses,
 /// McEwen's (Hertz only; 0 otherwise).

@@ -9,6 +9,7 @@ packages=(
   libsuitesparse-dev     # CHOLMOD factorizations
   libopenblas0-pthread   # optimized BLAS behind CHOLMOD (else netlib reference BLAS)
   libmetis-dev           # graph partitioning
+  openmpi-bin libopenmpi-dev  # MPI: subdomains distributed over ranks
   libyaml-cpp-dev        # problem files
   libcli11-dev           # command line
   nlohmann-json3-dev     # summary.json and the qp JSON report

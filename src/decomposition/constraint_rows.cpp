@@ -6,18 +6,31 @@
 
 namespace feticon::decomposition
 {
-void ConstraintRows::add_row(std::span<const RowEntry> entries, double c)
+void ConstraintRows::add_row(std::span<const RowEntry> entries, double c, int64_t id)
 {
+  FETICON_ASSERT(_ids.empty() || id > _ids.back(), "row ids must increase");
   _entries.insert(_entries.end(), entries.begin(), entries.end());
   _offsets.push_back(static_cast<int64_t>(_entries.size()));
   _c.push_back(c);
+  _ids.push_back(id);
 }
 
-void ConstraintRows::append(const ConstraintRows& other)
+void ConstraintRows::append(const ConstraintRows& other, int64_t id_offset)
 {
   for (int64_t i = 0; i < other.n_rows(); ++i)
-    add_row(other.row(i), other._c[i]);
+    add_row(other.row(i), other._c[i], other._ids[i] + id_offset);
 }
+
+namespace
+{
+bool touches_owned(const Decomposition& decomposition, std::span<const RowEntry> entries)
+{
+  for (const RowEntry& e : entries)
+    if (decomposition.owns(e.subdomain))
+      return true;
+  return false;
+}
+} // namespace
 
 std::span<const RowEntry> ConstraintRows::row(int64_t i) const
 {
@@ -65,7 +78,9 @@ EqualityRows build_equality_rows(const Decomposition& decomposition,
         for (const NodeCopy& copy : copies)
         {
           const RowEntry e{copy.subdomain, dof_of(copy), 1.0};
-          dirichlet_rows.add_row({&e, 1}, value);
+          if (decomposition.owns(copy.subdomain))
+            dirichlet_rows.add_row({&e, 1}, value, out.n_dirichlet);
+          ++out.n_dirichlet;
         }
         continue;
       }
@@ -76,13 +91,13 @@ EqualityRows build_equality_rows(const Decomposition& decomposition,
         for (size_t t = 0; t < q; ++t)
           entries.push_back({copies[t].subdomain, dof_of(copies[t]), scale});
         entries.push_back({copies[q].subdomain, dof_of(copies[q]), -static_cast<double>(q) * scale});
-        out.rows.add_row(entries, 0.0);
+        if (touches_owned(decomposition, entries))
+          out.rows.add_row(entries, 0.0, out.n_gluing);
+        ++out.n_gluing;
       }
     }
   }
-  out.n_gluing = out.rows.n_rows();
-  out.n_dirichlet = dirichlet_rows.n_rows();
-  out.rows.append(dirichlet_rows);
+  out.rows.append(dirichlet_rows, out.n_gluing);
   return out;
 }
 
@@ -111,7 +126,8 @@ ConstraintRows rows_from_global(const Decomposition& decomposition,
         continue;
       entries.push_back({copies.front().subdomain, dof, it.value()});
     }
-    rows.add_row(entries, c(r));
+    if (touches_owned(decomposition, entries))
+      rows.add_row(entries, c(r), r);
   }
   return rows;
 }

@@ -3,7 +3,9 @@
 ///
 /// A row is a list of (subdomain, active DOF, coefficient) entries; the constraint is
 /// b_i u = c_i (equality rows) or b_i u <= c_i (contact rows). This format needs no
-/// global matrix, so the same rows serve a distributed B later.
+/// global matrix. Every row carries its global row id: distributed over ranks, a rank holds
+/// only the rows that touch its subdomains (each with all its entries, also those on other
+/// ranks' subdomains, so that both sides of an interface know who shares a row).
 
 #include "decomposition/decomposition.hpp"
 #include "fem/dirichlet.hpp"
@@ -24,10 +26,13 @@ struct RowEntry
 class ConstraintRows
 {
 public:
-  void add_row(std::span<const RowEntry> entries, double c);
-  /// Appends all rows of `other`.
-  void append(const ConstraintRows& other);
+  /// Adds a row with global id `id` (ids must increase).
+  void add_row(std::span<const RowEntry> entries, double c, int64_t id);
+  /// Appends all rows of `other`, their ids shifted by `id_offset`.
+  void append(const ConstraintRows& other, int64_t id_offset);
+  /// Rows held here (on one rank: all rows) and the global id of row i.
   int64_t n_rows() const { return static_cast<int64_t>(_c.size()); }
+  int64_t id(int64_t i) const { return _ids[i]; }
   std::span<const RowEntry> row(int64_t i) const;
   const std::vector<double>& c() const { return _c; }
   la::Vector c_vector() const;
@@ -36,17 +41,20 @@ private:
   std::vector<int64_t> _offsets{0};
   std::vector<RowEntry> _entries;
   std::vector<double> _c;
+  std::vector<int64_t> _ids;
 };
 
 /// Equality rows B_E of Total FETI: orthonormal gluing rows (Helmert rows for a node with
 /// p copies: (sum_{t<=q} e_t - q e_{q+1}) / sqrt(q(q+1)), q = 1..p-1) for every component
 /// that is not prescribed, and for prescribed components a unit row on every copy with
-/// c = prescribed value (ALGORITHMS.md section 3). B_E B_E' = I.
+/// c = prescribed value (ALGORITHMS.md section 3). B_E B_E' = I. Ids: gluing rows in node
+/// order, then Dirichlet rows; only rows touching owned subdomains are kept.
 struct EqualityRows
 {
   ConstraintRows rows;
-  int64_t n_gluing = 0;
+  int64_t n_gluing = 0;    ///< global counts
   int64_t n_dirichlet = 0;
+  int64_t n_global() const { return n_gluing + n_dirichlet; }
 };
 EqualityRows build_equality_rows(const Decomposition& decomposition,
                                  const fem::ConstrainedDofs& dirichlet);
@@ -54,7 +62,8 @@ EqualityRows build_equality_rows(const Decomposition& decomposition,
 /// Converts rows over global mesh DOFs (3*node + component; `B_global` row-major, one row
 /// per constraint) to subdomain rows. A DOF shared by several subdomains is put on its
 /// first copy (the copies are glued). Entries on eliminated components are dropped: those
-/// components are identically zero.
+/// components are identically zero. Row r gets id r; only rows touching owned subdomains
+/// are kept.
 ConstraintRows rows_from_global(const Decomposition& decomposition,
                                 const Eigen::SparseMatrix<double, Eigen::RowMajor>& B_global,
                                 const la::Vector& c);

@@ -9,11 +9,12 @@ namespace feticon::decomposition
 SubdomainSystem::SubdomainSystem(const Decomposition& decomposition,
                                  std::vector<fem::Material> materials, fem::Kinematics kinematics,
                                  GeneralizedInverseMethod method)
-    : _decomposition(decomposition), _method(method), _operators(decomposition.n_subdomains())
+    : _decomposition(decomposition), _method(method), _assemblers(decomposition.n_subdomains()),
+      _operators(decomposition.n_subdomains())
 {
-  for (const Subdomain& sub : decomposition.subdomains())
-    _assemblers.push_back(std::make_unique<fem::Assembler>(decomposition.mesh(), sub.domain,
-                                                           materials, kinematics));
+  for (int32_t s = decomposition.first_owned(); s < decomposition.end_owned(); ++s)
+    _assemblers[s] = std::make_unique<fem::Assembler>(
+        decomposition.mesh(), decomposition.subdomain(s).domain, materials, kinematics);
 }
 
 la::Vector SubdomainSystem::full_local(int32_t s, const la::Vector& u_stacked) const
@@ -29,9 +30,10 @@ la::Vector SubdomainSystem::full_local(int32_t s, const la::Vector& u_stacked) c
 void SubdomainSystem::update(const la::Vector& u_stacked)
 {
   FETICON_CHECK(u_stacked.size() == _decomposition.n_primal(), "stacked displacement size");
-  _kernel_offsets.assign(1, 0);
-  for (const Subdomain& sub : _decomposition.subdomains())
+  std::vector<int64_t> owned_kernel_dims;
+  for (int32_t s = _decomposition.first_owned(); s < _decomposition.end_owned(); ++s)
   {
+    const Subdomain& sub = _decomposition.subdomain(s);
     const fem::Assembler& assembler = *_assemblers[sub.id];
     const la::Vector u_full = full_local(sub.id, u_stacked);
     const la::SparseMatrix K_full = assembler.stiffness(u_full, fem::StiffnessKind::material);
@@ -51,15 +53,21 @@ void SubdomainSystem::update(const la::Vector& u_stacked)
         if (sub.active_of_full[3 * node + i] >= 0)
           candidates.push_back(sub.active_of_full[3 * node + i]);
     op.K_plus.setup(op.K, op.R, candidates, _method, "subdomain " + std::to_string(sub.id));
-    _kernel_offsets.push_back(_kernel_offsets.back() + op.R.cols());
+    owned_kernel_dims.push_back(op.R.cols());
   }
+  // Kernel blocks of all subdomains, in subdomain order (the coarse space is replicated).
+  const std::vector<int64_t> dims = _decomposition.comm().all_gather(owned_kernel_dims);
+  _kernel_offsets.assign(1, 0);
+  for (const int64_t k : dims)
+    _kernel_offsets.push_back(_kernel_offsets.back() + k);
 }
 
 la::Vector SubdomainSystem::internal_force(const la::Vector& u_stacked) const
 {
   la::Vector f(_decomposition.n_primal());
-  for (const Subdomain& sub : _decomposition.subdomains())
+  for (int32_t s = _decomposition.first_owned(); s < _decomposition.end_owned(); ++s)
   {
+    const Subdomain& sub = _decomposition.subdomain(s);
     const la::Vector f_full = _assemblers[sub.id]->internal_force(full_local(sub.id, u_stacked));
     auto seg = _decomposition.segment(f, sub.id);
     for (int32_t k = 0; k < sub.n_dofs(); ++k)
@@ -71,8 +79,8 @@ la::Vector SubdomainSystem::internal_force(const la::Vector& u_stacked) const
 long SubdomainSystem::factor_nonzeros() const
 {
   long total = 0;
-  for (const auto& op : _operators)
-    total += op.K_plus.factor_nonzeros();
+  for (int32_t s = _decomposition.first_owned(); s < _decomposition.end_owned(); ++s)
+    total += _operators[s].K_plus.factor_nonzeros();
   return total;
 }
 } // namespace feticon::decomposition

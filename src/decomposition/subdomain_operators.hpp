@@ -17,7 +17,8 @@ struct SubdomainOperators
   GeneralizedInverse K_plus;
 };
 
-/// Assembles and factorizes every subdomain.
+/// Assembles and factorizes the subdomains this rank owns (all of them on one rank);
+/// operators(s) of another rank's subdomain is empty.
 class SubdomainSystem
 {
 public:
@@ -36,10 +37,13 @@ public:
   const SubdomainOperators& operators(int32_t s) const { return _operators[s]; }
   int32_t n_subdomains() const { return static_cast<int32_t>(_operators.size()); }
   /// Kernel dimension of subdomain s and the start of its block in the kernel vector.
-  int32_t kernel_dim(int32_t s) const { return static_cast<int32_t>(_operators[s].R.cols()); }
+  int32_t kernel_dim(int32_t s) const
+  {
+    return static_cast<int32_t>(_kernel_offsets[s + 1] - _kernel_offsets[s]);
+  }
   int64_t kernel_offset(int32_t s) const { return _kernel_offsets[s]; }
   int64_t n_kernel() const { return _kernel_offsets.back(); }
-  /// Sum of the nonzeros of all Cholesky factors.
+  /// Sum of the nonzeros of the owned Cholesky factors.
   long factor_nonzeros() const;
 
 private:

@@ -55,22 +55,22 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
                                 const DualPenaltyOptions& options, const la::Vector& lambda_start)
 {
   const int64_t m = feti.n_dual();
-  FETICON_CHECK(c.size() == m && n_equality <= m, "dual problem: sizes do not match");
+  FETICON_CHECK(c.size() == m && n_equality <= feti.n_dual_global(), "dual problem: sizes do not match");
   FETICON_CHECK(options.rho > 0, "rho = " << options.rho << " must be positive");
-  const CoarseProjector projector(feti.G());
+  const CoarseProjector projector(feti);
+  auto is_contact = [&](int64_t i) { return feti.row_id(i) >= n_equality; };
   const la::Vector e = feti.apply_Rt(f_stacked);
   // Particular solution of G lambda = e (ALGORITHMS.md 1): variant B, lambda~ = [lambda~_E; 0]
   // from the equality rows alone, when they fix every rigid mode; then the contact bounds
   // are simply lambda_I >= 0 and mu = 0 is feasible. Otherwise (a body held only by
   // contact, like the Hertz cylinder) variant A, the minimal-norm G'(GG')^{-1} e.
-  la::SparseMatrix G_E;
   std::optional<CoarseProjector> equality_projector;
-  if (n_equality < m)
+  if (n_equality < feti.n_dual_global())
   {
     std::vector<char> equality_mask(m, 0);
-    std::fill(equality_mask.begin(), equality_mask.begin() + n_equality, 1);
-    G_E = feti.G_columns(equality_mask);
-    equality_projector.emplace(G_E, std::nothrow);
+    for (int64_t i = 0; i < m; ++i)
+      equality_mask[i] = !is_contact(i);
+    equality_projector.emplace(feti, std::nothrow, std::move(equality_mask));
   }
   const la::Vector lambda_tilde = equality_projector && equality_projector->full_rank()
                                       ? equality_projector->particular_solution(e)
@@ -80,7 +80,8 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   DualSolution out;
   const FOperator F_raw(feti);
   const ProjectedOperator PFP_raw(F_raw, projector, 0.0);
-  const qp::NormEstimate norm = qp::estimate_norm(PFP_raw, options.power_iterations);
+  const qp::NormEstimate norm =
+      qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1, &feti.space());
   FETICON_CHECK(norm.value > 0 && std::isfinite(norm.value), "||PFP|| estimate " << norm.value
                                                                                  << " is not positive");
   out.pfp_norm = norm.value;
@@ -90,8 +91,9 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   const la::Vector b = projector.apply_P(scale * (d - feti.apply_F(lambda_tilde)));
 
   la::Vector lower = la::Vector::Constant(m, -std::numeric_limits<double>::infinity());
-  for (int64_t i = n_equality; i < m; ++i)
-    lower(i) = -lambda_tilde(i);
+  for (int64_t i = 0; i < m; ++i)
+    if (is_contact(i))
+      lower(i) = -lambda_tilde(i);
   // Warm start projected onto Ker G: when K_M(u) or the contact rows change, G changes and
   // lambda_start - lambda~ is far from Ker G, which SMALBE-M would then repair slowly
   // through its multiplier (the inner stop ||g_P|| <= M ||G~ mu|| passes at once).
@@ -101,6 +103,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   qp::MprgpOptions mprgp;
   mprgp.rtol = options.rtol;
   mprgp.max_iterations = options.max_iterations;
+  mprgp.space = &feti.space();
   // After scaling, ||H|| = max(||P F^ P||, rho) ~ max(1, rho): no second power iteration.
   mprgp.alpha_bar = 1.8 / std::max(1.0, options.rho);
   const LumpedDualPreconditioner lumped(feti, projector, norm.value, options.rho);
@@ -137,14 +140,19 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   // bound components exactly at the bound, so lambda_i = 0 there up to round-off; the
   // threshold only guards against round-off-sized values.
   double lambda_max = 0;
-  for (int64_t i = n_equality; i < m; ++i)
-    lambda_max = std::max(lambda_max, out.lambda(i));
+  for (int64_t i = 0; i < m; ++i)
+    if (is_contact(i))
+      lambda_max = std::max(lambda_max, out.lambda(i));
+  lambda_max = feti.space().max(lambda_max);
   std::vector<char> active(m, 1);
-  for (int64_t i = n_equality; i < m; ++i)
-  {
-    active[i] = out.lambda(i) > 1e-12 * lambda_max;
-    out.active_contacts += active[i];
-  }
+  int64_t active_contacts = 0;
+  for (int64_t i = 0; i < m; ++i)
+    if (is_contact(i))
+    {
+      active[i] = out.lambda(i) > 1e-12 * lambda_max;
+      active_contacts += active[i];
+    }
+  out.active_contacts = feti.comm().sum(active_contacts);
   PrimalSolution primal = recover_primal(feti, f_stacked, c, out.lambda, active);
   out.u = std::move(primal.u);
   out.alpha = std::move(primal.alpha);

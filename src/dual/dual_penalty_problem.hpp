@@ -50,9 +50,11 @@ struct DualSolution
   int64_t active_contacts = 0;   ///< contact rows with lambda_i > 0
 };
 
-/// @param c             right-hand sides of all rows (B u = c_E, B u <= c_I)
+/// Vectors are this rank's parts (FetiOperators): dual ones over its owned rows, primal ones
+/// over its owned subdomains.
+/// @param c             right-hand sides of the owned rows (B u = c_E, B u <= c_I)
 /// @param f_stacked     stacked load
-/// @param n_equality    number of equality rows (they come first)
+/// @param n_equality    global number of equality rows (ids below it are equalities)
 /// @param lambda_start  initial multipliers (warm start), or empty for mu = 0
 DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
                                 const la::Vector& f_stacked, int64_t n_equality,

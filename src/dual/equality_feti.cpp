@@ -9,7 +9,7 @@ FetiSolution solve_equality_feti(const FetiOperators& feti, const la::Vector& c,
                                  const la::Vector& f_stacked, const qp::CgOptions& options,
                                  FetiPreconditioner preconditioner)
 {
-  const CoarseProjector projector(feti.G());
+  const CoarseProjector projector(feti);
   const la::Vector e = feti.apply_Rt(f_stacked);
   const la::Vector lambda_tilde = projector.particular_solution(e);
   const la::Vector d = feti.apply_B(feti.apply_K_plus(f_stacked)) - c;
@@ -22,6 +22,7 @@ FetiSolution solve_equality_feti(const FetiOperators& feti, const la::Vector& c,
   FetiSolution out;
   const LumpedPreconditioner lumped(feti);
   qp::CgOptions cg = options;
+  cg.space = &feti.space();
   if (preconditioner == FetiPreconditioner::lumped)
     cg.preconditioner = &lumped;
   out.report = qp::conjugate_gradient(PFP, b, mu, cg, &P);

@@ -5,10 +5,26 @@
 /// with B = [B_E; B_I] given as constraint rows, K+ = diag(K_s+), R = diag(R_s).
 /// B is held per subdomain: the rows that touch subdomain s and a sparse block B_s, so
 /// F lambda = sum_s B_s K_s+ B_s' lambda_s needs no global matrix.
+///
+/// Distributed over MPI ranks (the decomposition's communicator):
+///   - a dual row is owned by the lowest subdomain it touches; a rank's dual vector holds the
+///     rows its subdomains own, in increasing global id (on one rank: all rows);
+///   - rows touching a rank's subdomains but owned elsewhere are ghosts. Applying B' (and so
+///     F, G) first copies owned values to the ghosts of the neighbouring ranks; applying B
+///     sends each subdomain's contribution to the row's owner, which adds the contributions
+///     in increasing subdomain order, from 0. With that order, and the block reductions of
+///     la/vector_space.hpp, every result is bitwise independent of the number of ranks;
+///   - the coarse space (n_kernel = sum of kernel dimensions) is replicated: G lambda is
+///     gathered from the owners of the subdomains, and G G' is assembled block by block
+///     (block (s, t) on the rank of s, summing the rows s and t share in id order) and
+///     gathered on every rank, where CoarseProjector factorizes it.
 
 #include "decomposition/constraint_rows.hpp"
 #include "decomposition/subdomain_operators.hpp"
 #include "la/operator.hpp"
+#include "par/block_space.hpp"
+
+#include <memory>
 
 namespace feticon::dual
 {
@@ -16,44 +32,92 @@ class FetiOperators
 {
 public:
   /// @param system subdomain K, R, K+ (kept by reference; must outlive this object)
-  /// @param rows   all constraint rows, equality rows first
+  /// @param rows   the constraint rows touching this rank's subdomains (all rows on one
+  ///               rank), with global ids; equality rows first
   FetiOperators(const decomposition::SubdomainSystem& system,
                 const decomposition::ConstraintRows& rows);
 
-  int64_t n_dual() const { return _n_dual; }
+  /// Size of this rank's dual vector (its owned rows) and of the whole dual.
+  int64_t n_dual() const { return static_cast<int64_t>(_owned.size()); }
+  int64_t n_dual_global() const { return _n_dual_global; }
+  /// Global row id of owned row i and its index in the constructor's `rows`.
+  int64_t row_id(la::Index i) const { return _owned_id[i]; }
+  int64_t row_index(la::Index i) const { return _owned[i]; }
+  /// The owned entries of a vector given for every row in `rows` (e.g. rows.c_vector()).
+  la::Vector owned(const la::Vector& per_row) const;
+  /// Reductions over dual vectors (blocks: the rows owned by one subdomain).
+  const la::VectorSpace& space() const { return *_space; }
+  const par::Communicator& comm() const { return _comm; }
+
   int64_t n_primal() const { return _system.decomposition().n_primal(); }
   int64_t n_kernel() const { return _system.n_kernel(); }
 
   la::Vector apply_B(const la::Vector& u_stacked) const;
   la::Vector apply_Bt(const la::Vector& lambda) const;
   la::Vector apply_K_plus(const la::Vector& f_stacked) const;
+  /// R alpha for the replicated coarse vector alpha (owned stacked result).
   la::Vector apply_R(const la::Vector& alpha) const;
+  /// R' u, replicated on every rank.
   la::Vector apply_Rt(const la::Vector& u_stacked) const;
   /// F lambda = B K+ B' lambda.
   la::Vector apply_F(const la::Vector& lambda) const;
   /// Lumped preconditioner B K B' lambda (Farhat, Mandel, Roux 1994): cheap, one sparse
   /// product per subdomain.
   la::Vector apply_lumped(const la::Vector& lambda) const;
-  /// G lambda = R' B' lambda and G' alpha = B R alpha.
-  la::Vector apply_G(const la::Vector& lambda) const { return _G * lambda; }
-  la::Vector apply_Gt(const la::Vector& alpha) const { return _G.transpose() * alpha; }
-  /// G as a sparse matrix (n_kernel x n_dual).
-  const la::SparseMatrix& G() const { return _G; }
-  /// G restricted to the columns in `keep` (others zeroed), for primal recovery.
-  la::SparseMatrix G_columns(const std::vector<char>& keep) const;
+  /// G lambda = R' B' lambda (replicated) and G' alpha = B R alpha. With a mask (one flag
+  /// per owned row) G_A is G with the unmasked columns removed.
+  la::Vector apply_G(const la::Vector& lambda, const std::vector<char>* mask = nullptr) const;
+  la::Vector apply_Gt(const la::Vector& alpha, const std::vector<char>* mask = nullptr) const;
+  /// G_A G_A' (n_kernel x n_kernel), replicated on every rank.
+  la::SparseMatrix coarse_matrix(const std::vector<char>* mask = nullptr) const;
 
   const decomposition::SubdomainSystem& system() const { return _system; }
 
 private:
+  /// Owned values followed by the ghost values received from their owners.
+  la::Vector extended(const la::Vector& lambda, const std::vector<char>* mask = nullptr) const;
+  /// Owned result of B-type products: local_op(s, lambda_s) for every owned subdomain s
+  /// (|rows of s| values), summed per row in increasing subdomain order.
+  template <class LocalOperator>
+  la::Vector sum_contributions(LocalOperator&& local_op) const;
   /// sum_s B_s local_op(s, B_s' lambda_s): the pattern of F and of the lumped preconditioner.
   template <class LocalOperator>
   la::Vector sum_over_subdomains(const la::Vector& lambda, LocalOperator&& local_op) const;
+  /// Local vector of subdomain s's rows from an extended vector.
+  la::Vector rows_of(int32_t s, const la::Vector& ext) const;
 
   const decomposition::SubdomainSystem& _system;
-  int64_t _n_dual = 0;
-  std::vector<std::vector<int64_t>> _rows;  ///< per subdomain: global row ids of B_s
-  std::vector<la::SparseMatrix> _B;         ///< per subdomain: |rows_s| x n_s
-  la::SparseMatrix _G;
+  par::Communicator _comm;
+  int64_t _n_dual_global = 0;
+  std::vector<int64_t> _owned;     ///< owned rows (indices into the constructor's rows)
+  std::vector<int64_t> _owned_id;  ///< their global ids
+  std::unique_ptr<par::BlockSpace> _space;
+  /// Per kept row: subdomains it touches (increasing) and its slot in extended vectors.
+  std::vector<std::vector<int32_t>> _touch;
+  std::vector<int64_t> _slot;
+  /// Per owned subdomain (indexed s - first owned): kept rows of B_s, their slots, B_s, B_s R_s.
+  std::vector<std::vector<int64_t>> _sub_rows;
+  std::vector<std::vector<int64_t>> _sub_slots;
+  std::vector<la::SparseMatrix> _B;
+  std::vector<la::Matrix> _BR;
+  std::vector<int64_t> _contribution_start; ///< start of subdomain s's values among contributions
+  /// Ghost exchange: per neighbour rank, owned indices sent and ghost slots received.
+  struct Exchange
+  {
+    std::vector<int> ranks;
+    std::vector<std::vector<int64_t>> send;
+    std::vector<std::vector<int64_t>> recv;
+  };
+  Exchange _ghosts;
+  /// Contribution exchange: contribution positions sent to owners; per owned row the
+  /// positions (local, or n_local + received) to add, in increasing subdomain order.
+  Exchange _to_owner;
+  std::vector<int64_t> _sum_start, _sum_source;
+  int64_t _n_contributions = 0; ///< local contributions + received ones
+  /// For G G': per neighbour rank, (kept row, owned subdomain) pairs whose B_s R_s rows are
+  /// sent, and per kept row and remote subdomain the start of its received row.
+  std::vector<std::vector<std::pair<int64_t, int32_t>>> _share_send;
+  std::vector<size_t> _share_recv_size;
 };
 
 /// The lumped preconditioner B K B' as a LinearOperator.

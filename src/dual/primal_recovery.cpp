@@ -1,6 +1,7 @@
 #include "dual/primal_recovery.hpp"
 
 #include "common/error.hpp"
+#include "dual/projector.hpp"
 
 namespace feticon::dual
 {
@@ -13,14 +14,13 @@ PrimalSolution recover_primal(const FetiOperators& feti, const la::Vector& f, co
   for (la::Index i = 0; i < residual.size(); ++i)
     if (!active[i])
       residual(i) = 0;
-  const la::SparseMatrix G_A = feti.G_columns(active);
   PrimalSolution out;
   if (feti.n_kernel() > 0)
   {
-    Eigen::LLT<la::Matrix> llt(la::Matrix(G_A * G_A.transpose()));
-    FETICON_CHECK(llt.info() == Eigen::Success,
+    const CoarseProjector active_coarse(feti, std::nothrow, active);
+    FETICON_CHECK(active_coarse.full_rank(),
                   "primal recovery: the active constraints do not fix every rigid-body motion");
-    out.alpha = llt.solve(la::Vector(G_A * residual));
+    out.alpha = active_coarse.coarse_solve(feti.apply_G(residual, &active));
   }
   else
     out.alpha.resize(0);

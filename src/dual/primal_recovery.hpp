@@ -18,7 +18,7 @@ struct PrimalSolution
   la::Vector alpha; ///< rigid-body amplitudes (multiplier of G lambda = e)
 };
 
-/// @param active  one flag per dual row: 1 for rows that hold with equality
+/// @param active  one flag per owned dual row: 1 for rows that hold with equality
 PrimalSolution recover_primal(const FetiOperators& feti, const la::Vector& f_stacked,
                               const la::Vector& c, const la::Vector& lambda,
                               const std::vector<char>& active);

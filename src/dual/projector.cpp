@@ -8,9 +8,8 @@ namespace
 {
 /// Factorizes G G' and tells whether G has full row rank: dependent rows show up as a
 /// (nearly) zero pivot of the factor.
-bool factorize_full_rank(const la::SparseMatrix& G, Eigen::SimplicialLLT<la::SparseMatrix>& llt)
+bool factorize_full_rank(const la::SparseMatrix& GGt, Eigen::SimplicialLLT<la::SparseMatrix>& llt)
 {
-  const la::SparseMatrix GGt = G * G.transpose();
   llt.compute(GGt);
   if (llt.info() != Eigen::Success)
     return false;
@@ -21,37 +20,50 @@ bool factorize_full_rank(const la::SparseMatrix& G, Eigen::SimplicialLLT<la::Spa
 }
 } // namespace
 
-CoarseProjector::CoarseProjector(const la::SparseMatrix& G, std::nothrow_t)
-    : _G(G), _full_rank(factorize_full_rank(G, _llt))
+CoarseProjector::CoarseProjector(const FetiOperators& feti, std::nothrow_t, std::vector<char> mask)
+    : _feti(feti), _mask(std::move(mask))
 {
+  FETICON_ASSERT(_mask.empty() || static_cast<int64_t>(_mask.size()) == feti.n_dual(), "mask size");
+  _full_rank = factorize_full_rank(feti.coarse_matrix(_mask.empty() ? nullptr : &_mask), _llt);
 }
 
-CoarseProjector::CoarseProjector(const la::SparseMatrix& G) : CoarseProjector(G, std::nothrow)
+CoarseProjector::CoarseProjector(const FetiOperators& feti, std::vector<char> mask)
+    : CoarseProjector(feti, std::nothrow, std::move(mask))
 {
   FETICON_CHECK(_full_rank, "the constraints do not suppress every rigid-body motion (G G' is "
                            "singular): a body is free to move; add supports or symmetry conditions");
+}
+
+la::Vector CoarseProjector::apply_G(const la::Vector& lambda) const
+{
+  return _feti.apply_G(lambda, _mask.empty() ? nullptr : &_mask);
+}
+
+la::Vector CoarseProjector::apply_Gt(const la::Vector& alpha) const
+{
+  return _feti.apply_Gt(alpha, _mask.empty() ? nullptr : &_mask);
 }
 
 la::Vector CoarseProjector::coarse_solve(const la::Vector& y) const { return _llt.solve(y); }
 
 la::Vector CoarseProjector::apply_Q(const la::Vector& lambda) const
 {
-  return _G.transpose() * coarse_solve(_G * lambda);
+  return apply_Gt(coarse_solve(apply_G(lambda)));
 }
 
 la::Vector CoarseProjector::apply_G_tilde(const la::Vector& lambda) const
 {
-  return _llt.matrixL().solve(_llt.permutationP() * la::Vector(_G * lambda));
+  return _llt.matrixL().solve(_llt.permutationP() * apply_G(lambda));
 }
 
 la::Vector CoarseProjector::apply_G_tilde_t(const la::Vector& omega) const
 {
-  return _G.transpose() * la::Vector(_llt.permutationPinv() * la::Vector(_llt.matrixU().solve(omega)));
+  return apply_Gt(la::Vector(_llt.permutationPinv() * la::Vector(_llt.matrixU().solve(omega))));
 }
 
 la::Vector CoarseProjector::particular_solution(const la::Vector& e) const
 {
-  return _G.transpose() * coarse_solve(e);
+  return apply_Gt(coarse_solve(e));
 }
 
 void ProjectedOperator::apply(const la::Vector& x, la::Vector& y) const

@@ -4,7 +4,11 @@
 /// GG' (sparse: subdomains couple only with neighbours) is factorized once by a sparse
 /// Cholesky with fill-reducing ordering, P_o GG' P_o' = L L'; the orthonormalized
 /// G~ = L^{-1} P_o G is applied implicitly (G~ G~' = I), so Q = G~' G~ = G'(GG')^{-1}G.
+/// Distributed, GG' and its factor are replicated on every rank (they are small: 6 per
+/// subdomain); G and G' are FetiOperators products, dual vectors stay distributed.
+/// With a mask (one flag per owned dual row), G is replaced by G_A, its masked columns.
 
+#include "dual/feti_operators.hpp"
 #include "la/operator.hpp"
 
 #include <Eigen/SparseCholesky>
@@ -17,10 +21,10 @@ class CoarseProjector
 public:
   /// Factorizes G G'. Throws feticon::Error if G has dependent rows, i.e. some rigid
   /// motion is not suppressed by any constraint (a body that can fly away).
-  explicit CoarseProjector(const la::SparseMatrix& G);
+  explicit CoarseProjector(const FetiOperators& feti, std::vector<char> mask = {});
   /// Factorizes G G' without throwing; full_rank() tells whether it succeeded, and only then
   /// may the other members be used.
-  CoarseProjector(const la::SparseMatrix& G, std::nothrow_t);
+  CoarseProjector(const FetiOperators& feti, std::nothrow_t, std::vector<char> mask = {});
   /// True if G has full row rank (G G' factorized with no vanishing pivot).
   bool full_rank() const { return _full_rank; }
 
@@ -33,8 +37,13 @@ public:
   la::Vector coarse_solve(const la::Vector& y) const;
   /// Minimal-norm solution of G lambda = e: G'(GG')^{-1} e.
   la::Vector particular_solution(const la::Vector& e) const;
+
 private:
-  const la::SparseMatrix& _G;
+  la::Vector apply_G(const la::Vector& lambda) const;
+  la::Vector apply_Gt(const la::Vector& alpha) const;
+
+  const FetiOperators& _feti;
+  std::vector<char> _mask; ///< empty: all rows
   Eigen::SimplicialLLT<la::SparseMatrix> _llt;
   bool _full_rank = false;
 };

@@ -189,6 +189,37 @@ void write_vtu(const std::filesystem::path& path, const mesh::HexMesh& mesh,
                         { write_piece(out, mesh, points, point_fields, cell_fields); });
 }
 
+void write_pvtu(const std::filesystem::path& path, const std::vector<std::string>& pieces,
+                const mesh::HexMesh& mesh, const std::vector<VtuField>& point_fields,
+                const std::vector<VtuField>& cell_fields)
+{
+  std::ostringstream out;
+  auto array = [&](const char* type, const std::string& name, int components)
+  {
+    out << "      <PDataArray type=\"" << type << "\" Name=\"" << xml_escape(name)
+        << "\" NumberOfComponents=\"" << components << "\"/>\n";
+  };
+  out << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"" << byte_order()
+      << "\" header_type=\"UInt64\">\n"
+      << "  <PUnstructuredGrid GhostLevel=\"0\">\n    <PPointData>\n";
+  for (const VtuField& field : point_fields)
+    array(vtk_type_name<double>(), field.name, field.components);
+  for (const auto& [name, ids] : mesh.node_sets)
+    array(vtk_type_name<uint8_t>(), "set_" + name, 1);
+  out << "    </PPointData>\n    <PCellData>\n";
+  for (const VtuField& field : cell_fields)
+    array(vtk_type_name<double>(), field.name, field.components);
+  array(vtk_type_name<int32_t>(), "body", 1);
+  out << "    </PCellData>\n    <PPoints>\n";
+  array(vtk_type_name<double>(), "Points", 3);
+  out << "    </PPoints>\n";
+  for (const std::string& piece : pieces)
+    out << "    <Piece Source=\"" << xml_escape(piece) << "\"/>\n";
+  out << "  </PUnstructuredGrid>\n</VTKFile>\n";
+  write_file_atomically(path, out.str());
+}
+
 PvdWriter::PvdWriter(std::filesystem::path pvd_path) : _path(std::move(pvd_path)) { write(); }
 
 void PvdWriter::add(double time, const std::string& vtu_relative_path)

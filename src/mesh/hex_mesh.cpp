@@ -60,4 +60,40 @@ void HexMesh::add_node_set_from_faces(const std::string& name, const std::string
 {
   node_sets[name] = face_set_nodes(faces_name);
 }
+HexMesh submesh(const HexMesh& mesh, const std::vector<int32_t>& cells,
+                std::vector<int32_t>& node_of_local)
+{
+  std::vector<int32_t> local_of_node(mesh.n_nodes(), -1);
+  for (const int32_t c : cells)
+    for (const int32_t n : mesh.cells[c])
+      local_of_node[n] = 0;
+  node_of_local.clear();
+  for (int32_t n = 0; n < mesh.n_nodes(); ++n)
+    if (local_of_node[n] == 0)
+    {
+      local_of_node[n] = static_cast<int32_t>(node_of_local.size());
+      node_of_local.push_back(n);
+    }
+  HexMesh piece;
+  piece.body_names = mesh.body_names;
+  piece.nodes.resize(static_cast<Eigen::Index>(node_of_local.size()), 3);
+  for (size_t k = 0; k < node_of_local.size(); ++k)
+    piece.nodes.row(static_cast<Eigen::Index>(k)) = mesh.nodes.row(node_of_local[k]);
+  for (const int32_t c : cells)
+  {
+    Cell cell;
+    for (int a = 0; a < 8; ++a)
+      cell[a] = local_of_node[mesh.cells[c][a]];
+    piece.cells.push_back(cell);
+    piece.cell_body.push_back(mesh.cell_body[c]);
+  }
+  for (const auto& [name, ids] : mesh.node_sets)
+  {
+    std::vector<int32_t>& local = piece.node_sets[name];
+    for (const int32_t n : ids)
+      if (local_of_node[n] >= 0)
+        local.push_back(local_of_node[n]);
+  }
+  return piece;
+}
 } // namespace feticon::mesh

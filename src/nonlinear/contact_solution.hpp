@@ -42,8 +42,8 @@ struct LoadStep
 struct RestartState
 {
   int completed_steps = 0;
-  la::Vector u_stacked;
-  la::Vector lambda;                      ///< all multipliers of the last solve
+  la::Vector u_stacked;                   ///< global stacked displacement (all subdomains)
+  la::Vector lambda;                      ///< equality multipliers of the last solve, by row id
   std::vector<int32_t> contact_slave;     ///< slave node of each contact multiplier
   std::vector<double> contact_lambda;     ///< contact multiplier by slave node
 };
@@ -64,5 +64,8 @@ struct ContactSolution
   double feasibility_error = 0;
   double penalty = 0; ///< eps_n (N/m) for the primal penalty
   RestartState restart; ///< state after the last converged load step (FETI solver)
+  /// Under MPI with more than one rank: the cells of this rank's subdomains (its piece of
+  /// the output); empty otherwise.
+  std::vector<int32_t> owned_cells;
 };
 } // namespace feticon::nonlinear

@@ -4,7 +4,11 @@
 #include "common/log.hpp"
 #include "decomposition/constraint_rows.hpp"
 #include "decomposition/subdomain_operators.hpp"
+#include "dual/dual_penalty_problem.hpp"
+#include "la/vector_space.hpp"
+#include "par/block_space.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <cstdio>
@@ -22,6 +26,45 @@ decomposition::Partition make_partition(const fem::Problem& problem, const Solve
                                              {std::max(1, s.subdomains / problem.mesh.n_bodies()), 1, 1});
 }
 
+/// Reductions over owned stacked vectors: one block per owned subdomain.
+par::BlockSpace owned_subdomain_space(const decomposition::Decomposition& decomp)
+{
+  std::vector<std::vector<la::Index>> blocks;
+  std::vector<int64_t> global_index;
+  const int64_t base = decomp.global_offset(decomp.first_owned());
+  for (int32_t s = decomp.first_owned(); s < decomp.end_owned(); ++s)
+  {
+    blocks.emplace_back();
+    for (int32_t k = 0; k < decomp.subdomain(s).n_dofs(); ++k)
+    {
+      blocks.back().push_back(static_cast<la::Index>(decomp.offset(s) + k));
+      global_index.push_back(base + decomp.offset(s) + k);
+    }
+  }
+  return par::BlockSpace(decomp.comm(), std::move(blocks), std::move(global_index));
+}
+
+/// The multipliers of rows id_begin <= id < id_end, replicated on every rank (0 for ids that
+/// have no row); small: used for contact rows and for checkpoints.
+la::Vector rows_by_id(const dual::FetiOperators& feti, const la::Vector& lambda, int64_t id_begin,
+                      int64_t id_end)
+{
+  std::vector<int64_t> ids;
+  std::vector<double> values;
+  for (la::Index i = 0; i < feti.n_dual(); ++i)
+    if (feti.row_id(i) >= id_begin && feti.row_id(i) < id_end)
+    {
+      ids.push_back(feti.row_id(i));
+      values.push_back(lambda(i));
+    }
+  const std::vector<int64_t> all_ids = feti.comm().all_gather(ids);
+  const std::vector<double> all_values = feti.comm().all_gather(values);
+  la::Vector out = la::Vector::Zero(id_end - id_begin);
+  for (size_t k = 0; k < all_ids.size(); ++k)
+    out(all_ids[k] - id_begin) = all_values[k];
+  return out;
+}
+
 std::string format_iteration(const OuterIteration& it)
 {
   char line[256];
@@ -35,7 +78,7 @@ std::string format_iteration(const OuterIteration& it)
 
 ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings,
                                    TimerTable& timers, const StepCallback& on_step,
-                                   const ContactSolution* previous)
+                                   const ContactSolution* previous, par::Communicator comm)
 {
   problem.validate();
   FETICON_CHECK(problem.contacts.size() == 1, "the FETI contact solver handles exactly one contact "
@@ -47,9 +90,19 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
   {
     ScopedTimer t(timers, "decomposition");
     decomp = std::make_unique<decomposition::Decomposition>(
-        problem.mesh, make_partition(problem, settings), problem.eliminated);
+        problem.mesh, make_partition(problem, settings), problem.eliminated, comm);
   }
+  const par::BlockSpace primal_space = owned_subdomain_space(*decomp);
   out.n_subdomains = decomp->n_subdomains();
+  if (!comm.serial())
+  {
+    for (int32_t s = decomp->first_owned(); s < decomp->end_owned(); ++s)
+    {
+      const auto& cells = decomp->subdomain(s).domain.cells;
+      out.owned_cells.insert(out.owned_cells.end(), cells.begin(), cells.end());
+    }
+    std::sort(out.owned_cells.begin(), out.owned_cells.end());
+  }
   decomposition::SubdomainSystem system(*decomp, problem.materials, settings.kinematics,
                                         settings.generalized_inverse);
   la::Vector u = la::Vector::Zero(decomp->n_primal());
@@ -66,20 +119,21 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
   contact_options.search_distance = settings.search_distance;
   contact_options.formulation = settings.formulation;
 
-  la::Vector lambda_previous;
+  la::Vector lambda_previous;  ///< owned multipliers of the last solve (equality rows first)
+  la::Vector restart_lambda;   ///< equality multipliers by row id, from a checkpoint
   std::map<int32_t, double> previous_contact; ///< contact multiplier by slave node
   const bool linear = settings.kinematics == fem::Kinematics::linear;
   int first_step = 1;
   if (previous)
   {
     const RestartState& r = previous->restart;
-    FETICON_CHECK(r.u_stacked.size() == decomp->n_primal(),
+    FETICON_CHECK(r.u_stacked.size() == decomp->n_primal_global(),
                   "restart: the checkpoint has " << r.u_stacked.size() << " unknowns, this problem "
-                                                 << decomp->n_primal() << " (different mesh or subdomains?)");
+                                                 << decomp->n_primal_global() << " (different mesh or subdomains?)");
     FETICON_CHECK(r.completed_steps < settings.load_steps,
                   "restart: all " << settings.load_steps << " load steps are already done");
-    u = r.u_stacked;
-    lambda_previous = r.lambda;
+    u = decomp->owned_slice(r.u_stacked);
+    restart_lambda = r.lambda;
     for (size_t i = 0; i < r.contact_slave.size(); ++i)
       previous_contact[r.contact_slave[i]] = r.contact_lambda[i];
     out.history = previous->history;
@@ -100,9 +154,10 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
     fem::ConstrainedDofs target = dirichlet;
     target.values *= t_n;
     const auto equality = decomposition::build_equality_rows(*decomp, target);
-    const la::Vector c_target = equality.rows.c_vector();
+    const int64_t n_equality = equality.n_global();
     LoadStep record;
     record.load_factor = t_n;
+    la::Vector equality_by_id; ///< for the checkpoint of a converged step
     for (int k = 1; k <= settings.max_outer_iterations; ++k)
     {
       const auto iteration_start = std::chrono::steady_clock::now();
@@ -113,7 +168,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
         ScopedTimer t(timers, "assembly + factorization");
         system.update(u); // K_M(u) and R(X + u)
       }
-      const la::Vector u_global = decomp->gather_mean(u);
+      const la::Vector u_global = decomp->gather_mean(decomp->gather_stacked(u));
       contact::ContactConstraints contact_rows;
       la::Vector residual;
       {
@@ -122,8 +177,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       }
       residual = t_n * f_ext_stacked - f_int;
       decomposition::ConstraintRows rows = equality.rows;
-      rows.append(decomposition::rows_from_global(*decomp, contact_rows.B, contact_rows.c));
-      const int64_t n_equality = equality.rows.n_rows();
+      rows.append(decomposition::rows_from_global(*decomp, contact_rows.B, contact_rows.c), n_equality);
 
       std::unique_ptr<dual::FetiOperators> feti;
       {
@@ -131,21 +185,28 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
         feti = std::make_unique<dual::FetiOperators>(system, rows);
       }
       // c_E = target - B_E u (gluing 0, Dirichlet t_n u_D); c_I = current gaps.
-      la::Vector c = rows.c_vector();
-      c.head(n_equality) = c_target - feti->apply_B(u).head(n_equality);
-      // Warm start: equality rows keep their numbering; contact rows are matched by slave
-      // node (rows are rebuilt every iteration), new rows start at 0.
+      const la::Index m = feti->n_dual();
+      la::Vector c = feti->owned(rows.c_vector());
+      const la::Vector Bu = feti->apply_B(u);
+      for (la::Index i = 0; i < m && feti->row_id(i) < n_equality; ++i)
+        c(i) -= Bu(i);
+      // Warm start: equality rows keep their ids and owners (owned ones come first, in the
+      // same order); contact rows are matched by slave node (rows are rebuilt every
+      // iteration), new rows start at 0.
       la::Vector warm;
-      if (lambda_previous.size() > 0)
+      if (lambda_previous.size() > 0 || restart_lambda.size() > 0)
       {
-        warm = la::Vector::Zero(rows.n_rows());
-        warm.head(n_equality) = lambda_previous.head(n_equality);
-        for (size_t i = 0; i < contact_rows.slave_node.size(); ++i)
+        warm = la::Vector::Zero(m);
+        for (la::Index i = 0; i < m; ++i)
         {
-          const auto it = previous_contact.find(contact_rows.slave_node[i]);
-          if (it != previous_contact.end())
-            warm(n_equality + static_cast<la::Index>(i)) = it->second;
+          const int64_t id = feti->row_id(i);
+          if (id < n_equality)
+            warm(i) = restart_lambda.size() > 0 ? restart_lambda(id) : lambda_previous(i);
+          else if (const auto it = previous_contact.find(contact_rows.slave_node[id - n_equality]);
+                   it != previous_contact.end())
+            warm(i) = it->second;
         }
+        restart_lambda.resize(0);
       }
       dual::DualSolution solution;
       {
@@ -154,9 +215,11 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       }
       u += solution.u;
       lambda_previous = solution.lambda;
+      const la::Vector contact_lambda =
+          rows_by_id(*feti, solution.lambda, n_equality, n_equality + contact_rows.n_rows());
       previous_contact.clear();
       for (size_t i = 0; i < contact_rows.slave_node.size(); ++i)
-        previous_contact[contact_rows.slave_node[i]] = solution.lambda(n_equality + static_cast<la::Index>(i));
+        previous_contact[contact_rows.slave_node[i]] = contact_lambda(static_cast<la::Index>(i));
 
       OuterIteration it;
       it.load_step = step;
@@ -169,12 +232,13 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       it.smalbe_outer = solution.outer_iterations;
       it.active_contacts = solution.active_contacts;
       it.feasibility_error = solution.feasibility_error;
-      it.displacement_change = solution.u.norm() / std::max(u.norm(), 1e-300);
+      it.displacement_change =
+          la::norm(primal_space, solution.u) / std::max(la::norm(primal_space, u), 1e-300);
       {
         ScopedTimer t(timers, "internal forces");
         f_int = system.internal_force(u); // also the next iteration's, at the same u
         const la::Vector r_new = t_n * f_ext_stacked - f_int - feti->apply_Bt(solution.lambda);
-        it.residual_norm = decomp->gather_sum(r_new).norm() / f_norm;
+        it.residual_norm = decomp->gather_sum(decomp->gather_stacked(r_new)).norm() / f_norm;
       }
       it.seconds = seconds_since(iteration_start);
       out.history.push_back(it);
@@ -182,13 +246,13 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       log::info(format_iteration(it));
 
       out.constraints = std::move(contact_rows);
-      out.contact_lambda = solution.lambda.tail(rows.n_rows() - n_equality);
-      out.n_dual = feti->n_dual();
+      out.contact_lambda = contact_lambda;
+      out.n_dual = feti->n_dual_global();
       out.n_kernel = feti->n_kernel();
       out.feasibility_error = solution.feasibility_error;
       if (!solution.report.converged)
       {
-        out.u = decomp->gather_mean(u);
+        out.u = decomp->gather_mean(decomp->gather_stacked(u));
         out.reason = "load step " + std::to_string(step) + ", outer iteration " +
                      std::to_string(k) + ": " + solution.report.reason;
         out.steps.push_back(record);
@@ -200,11 +264,13 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       if (linear || it.displacement_change <= settings.displacement_tolerance)
       {
         record.converged = true;
+        equality_by_id = rows_by_id(*feti, solution.lambda, 0, n_equality);
         break;
       }
     }
     out.steps.push_back(record);
-    out.u = decomp->gather_mean(u);
+    const la::Vector u_stacked_global = decomp->gather_stacked(u);
+    out.u = decomp->gather_mean(u_stacked_global);
     if (!record.converged)
     {
       out.reason = "load step " + std::to_string(step) + " did not converge in " +
@@ -213,8 +279,8 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       return out;
     }
     out.restart.completed_steps = step;
-    out.restart.u_stacked = u;
-    out.restart.lambda = lambda_previous;
+    out.restart.u_stacked = u_stacked_global;
+    out.restart.lambda = equality_by_id;
     out.restart.contact_slave.clear();
     out.restart.contact_lambda.clear();
     for (const auto& [node, value] : previous_contact)

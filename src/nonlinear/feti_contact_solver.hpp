@@ -10,11 +10,18 @@
 /// By default K (and so F, K+, R) is assembled and factorized once (K_0, the seed's initial
 /// step) and kept; only B_I, c_I and G change. Optionally K_M(u) with R(X + u) is refreshed
 /// per load step or per iteration. With linear kinematics one solve is exact.
+///
+/// Under MPI every rank calls this with the same problem: each assembles and factorizes its
+/// own subdomains, the dual vector is distributed (dual/feti_operators.hpp), the contact rows
+/// are built on every rank from the gathered displacement of the mesh and kept where they
+/// touch the rank's subdomains. The returned solution (global u, contact multipliers,
+/// history) is the same on every rank, bitwise for any number of ranks.
 
 #include "common/timer.hpp"
 #include "fem/problem.hpp"
 #include "nonlinear/contact_solution.hpp"
 #include "nonlinear/solver_settings.hpp"
+#include "par/communicator.hpp"
 
 #include <functional>
 
@@ -27,5 +34,6 @@ using StepCallback = std::function<void(int load_step, const ContactSolution&)>;
 ///                are taken from `previous`, the solution of the interrupted run)
 ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings,
                                    TimerTable& timers, const StepCallback& on_step = {},
-                                   const ContactSolution* previous = nullptr);
+                                   const ContactSolution* previous = nullptr,
+                                   par::Communicator comm = par::Communicator::world());
 } // namespace feticon::nonlinear

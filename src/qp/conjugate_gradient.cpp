@@ -1,5 +1,7 @@
 #include "qp/conjugate_gradient.hpp"
 
+#include <memory>
+
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "common/timer.hpp"
@@ -56,10 +58,13 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
       projected = v;
   };
 
+  std::unique_ptr<la::SerialSpace> serial;
+  const la::VectorSpace& space =
+      options.space ? *options.space : *(serial = std::make_unique<la::SerialSpace>(A.size()));
   QpReport report;
   // s = b - Ax is kept unprojected so that the cost is exact even for x outside Im P.
   Vector s = b;
-  if (!x.isZero(0.0))
+  if (space.max(x.size() > 0 ? x.cwiseAbs().maxCoeff() : 0.0) != 0.0)
   {
     Vector ax;
     A.apply(x, ax);
@@ -68,10 +73,10 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
   }
   Vector r, q;
   project(b, r);
-  const double pb_norm = r.norm();
+  const double pb_norm = la::norm(space, r);
   const double tolerance = options.rtol * (pb_norm > 0.0 ? pb_norm : 1.0);
   project(s, r);
-  double rr = r.squaredNorm();
+  double rr = la::dot(space, r, r);
   // Preconditioned direction z = P M P r (P M P is symmetric on Im P); z = r without M.
   Vector z, mz;
   auto precondition = [&](const Vector& residual, Vector& out) {
@@ -84,7 +89,7 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
     project(mz, out);
   };
   precondition(r, z);
-  double rz = r.dot(z);
+  double rz = la::dot(space, r, z);
   Vector p = z;
 
   auto finish = [&](bool converged, std::string reason) {
@@ -92,7 +97,8 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
     report.reason = std::move(reason);
     report.cg_steps = report.iterations;
     report.projected_gradient_norm = std::sqrt(rr);
-    report.cost = -0.5 * (x.dot(s) + x.dot(b));
+    report.cost = -0.5 * la::reduce_sum<1>(space, [&](la::Index i, double* sum)
+                                           { sum[0] += x[i] * (s[i] + b[i]); })[0];
     report.seconds = seconds_since(start_time);
     return report;
   };
@@ -123,7 +129,7 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
 
     A.apply(p, q);
     ++report.hessian_multiplications;
-    const double pq = p.dot(q);
+    const double pq = la::dot(space, p, q);
     if (!(pq > 0.0))
       return finish(false, "operator is not positive definite on the search direction: "
                            "p'Ap = " + format_number(pq) + " <= 0 at iteration " +
@@ -132,9 +138,9 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
     x += alpha * p;
     s -= alpha * q;
     project(s, r);
-    rr = r.squaredNorm();
+    rr = la::dot(space, r, r);
     precondition(r, z);
-    const double rz_new = r.dot(z);
+    const double rz_new = la::dot(space, r, z);
     p = z + (rz_new / rz) * p;
     rz = rz_new;
     ++report.iterations;

@@ -18,6 +18,7 @@
 ///   const qp::QpReport dual = qp::conjugate_gradient(PFP, Pd, lambda, {}, &P);
 
 #include "la/operator.hpp"
+#include "la/vector_space.hpp"
 #include "qp/qp_report.hpp"
 
 #include <functional>
@@ -36,6 +37,8 @@ struct CgOptions
   /// Optional symmetric positive (semi)definite preconditioner M: directions are
   /// z = P M P r. Not owned; must outlive the solve. Stopping stays on ||P r||.
   const la::LinearOperator* preconditioner = nullptr;
+  /// Reductions when the vectors are distributed over ranks; nullptr: all entries local.
+  const la::VectorSpace* space = nullptr;
 };
 
 /// @brief Solves A x = b by (projected) conjugate gradients.

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -22,29 +23,36 @@ using la::Vector;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-/// Squared norms of phi and beta and the product phi~'phi at a feasible x.
+/// Squared norms of phi and beta, the product phi~'phi and the cost at a feasible x, in
+/// one reduction.
 struct GradientSplit
 {
   double free_norm2 = 0.0;
   double chopped_norm2 = 0.0;
   double reduced_free_dot_free = 0.0;
+  double cost = 0.0; ///< 1/2 x'(g - b)
 };
 
-GradientSplit split_gradient(const Vector& x, const Vector& g, const Vector& lower,
-                             double alpha_bar)
+GradientSplit split_gradient(const la::VectorSpace& space, const Vector& x, const Vector& g,
+                             const Vector& b, const Vector& lower, double alpha_bar)
 {
-  GradientSplit split;
-  for (Index i = 0; i < x.size(); ++i)
+  const auto s = la::reduce_sum<4>(space, [&](Index i, double* sum)
   {
     if (x[i] > lower[i])
     {
-      split.free_norm2 += g[i] * g[i];
-      split.reduced_free_dot_free += std::min((x[i] - lower[i]) / alpha_bar, g[i]) * g[i];
+      sum[0] += g[i] * g[i];
+      sum[2] += std::min((x[i] - lower[i]) / alpha_bar, g[i]) * g[i];
     }
     else if (g[i] < 0.0)
-      split.chopped_norm2 += g[i] * g[i];
-  }
-  return split;
+      sum[1] += g[i] * g[i];
+    sum[3] += x[i] * (g[i] - b[i]);
+  });
+  return {s[0], s[1], s[2], 0.5 * s[3]};
+}
+
+double cost_of(const la::VectorSpace& space, const Vector& x, const Vector& g, const Vector& b)
+{
+  return 0.5 * la::reduce_sum<1>(space, [&](Index i, double* sum) { sum[0] += x[i] * (g[i] - b[i]); })[0];
 }
 
 /// phi: g on the free set, 0 on the active set.
@@ -60,8 +68,9 @@ void chopped_gradient(const Vector& x, const Vector& g, const Vector& lower, Vec
 }
 
 /// Largest step along -p that keeps x >= lower, and the component that blocks it (-1 if
-/// none does).
-double feasible_step(const Vector& x, const Vector& p, const Vector& lower, Index& blocking)
+/// none does, or if it is on another rank).
+double feasible_step(const la::VectorSpace& space, const Vector& x, const Vector& p,
+                     const Vector& lower, Index& blocking)
 {
   double alpha = infinity;
   blocking = -1;
@@ -77,7 +86,9 @@ double feasible_step(const Vector& x, const Vector& p, const Vector& lower, Inde
       }
     }
   }
-  return alpha;
+  const auto [global_alpha, local_blocking] = space.min_location(alpha, blocking);
+  blocking = local_blocking;
+  return global_alpha;
 }
 
 void check_input(const la::LinearOperator& A, const Vector& b, const Vector& lower,
@@ -169,12 +180,15 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
     report.seconds = seconds_since(start_time);
     return report;
   };
-  if (_A.size() == 0)
+  std::unique_ptr<la::SerialSpace> serial;
+  const la::VectorSpace& space =
+      _options.space ? *_options.space : *(serial = std::make_unique<la::SerialSpace>(_A.size()));
+  if (space.max(static_cast<double>(_A.size())) == 0.0)
     return finish(true, "empty problem");
 
   if (_alpha_bar == 0.0)
   {
-    const NormEstimate norm = estimate_norm(_A, _options.power_iterations);
+    const NormEstimate norm = estimate_norm(_A, _options.power_iterations, 1e-3, 1, &space);
     report.hessian_multiplications += norm.applications;
     if (!std::isfinite(norm.value))
       return finish(false, "power iteration for ||A|| gave a non-finite Rayleigh quotient "
@@ -191,7 +205,7 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
   g -= b;
   ++report.hessian_multiplications;
 
-  const double b_norm = b.norm();
+  const double b_norm = la::norm(space, b);
   const double tolerance = _options.rtol * (b_norm > 0.0 ? b_norm : 1.0);
   const bool custom_stop = static_cast<bool>(_options.stop);
   Vector p, q, phi, beta, y, z;
@@ -212,8 +226,8 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
 
   for (;;)
   {
-    const GradientSplit split = split_gradient(x, g, lower, _alpha_bar);
-    const double cost = 0.5 * (x.dot(g) - x.dot(b));
+    const GradientSplit split = split_gradient(space, x, g, b, lower, _alpha_bar);
+    const double cost = split.cost;
     const double gp_norm = std::sqrt(split.free_norm2 + split.chopped_norm2);
     report.projected_gradient_norm = gp_norm;
     report.cost = cost;
@@ -247,14 +261,15 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
       // Proportional x: CG direction p in the current face.
       _A.apply(p, q);
       ++report.hessian_multiplications;
-      const double pq = p.dot(q);
+      const auto [pq, gp] = la::reduce_sum<2>(space, [&](Index i, double* sum)
+                                              { sum[0] += p[i] * q[i]; sum[1] += g[i] * p[i]; });
       if (!(pq > 0.0))
         return finish(false, "operator is not positive definite on the search direction: "
                              "p'Ap = " + format_number(pq) + " <= 0 at iteration " +
                                  std::to_string(report.iterations));
-      const double alpha_cg = g.dot(p) / pq;
+      const double alpha_cg = gp / pq;
       Index blocking = -1;
-      const double alpha_f = feasible_step(x, p, lower, blocking);
+      const double alpha_f = feasible_step(space, x, p, lower, blocking);
       // A NaN alpha_cg takes the CG branch and is caught by the finiteness test.
       if (!(alpha_cg > alpha_f))
       {
@@ -264,7 +279,7 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
         x = x.cwiseMax(lower);
         g -= alpha_cg * q;
         direction(x, g, phi);
-        p = phi - (phi.dot(q) / pq) * p;
+        p = phi - (la::dot(space, phi, q) / pq) * p;
         ++report.cg_steps;
         step = MprgpStep::cg;
       }
@@ -274,7 +289,8 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
         // gradient step y = P(x - alpha_bar phi) = x - alpha_bar phi~ (the identity of
         // ALGORITHMS.md section 5); the projection puts active components exactly on l.
         x -= alpha_f * p;
-        x[blocking] = lower[blocking];
+        if (blocking >= 0)
+          x[blocking] = lower[blocking];
         x = x.cwiseMax(lower);
         g -= alpha_f * q;
         free_gradient(x, g, lower, phi);
@@ -288,7 +304,7 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
         step = MprgpStep::expansion;
         // f is monotone only for alpha_bar <= 2/||A||, and the power estimate of ||A|| is
         // from below; the margin ignores round-off of the cost evaluation.
-        const double new_cost = 0.5 * (x.dot(g) - x.dot(b));
+        const double new_cost = cost_of(space, x, g, b);
         if (new_cost > cost + 1e-12 * std::abs(cost))
           _alpha_bar *= 0.5;
       }
@@ -299,12 +315,13 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
       chopped_gradient(x, g, lower, beta);
       _A.apply(beta, q);
       ++report.hessian_multiplications;
-      const double beta_q = beta.dot(q);
+      const auto [beta_q, g_beta] = la::reduce_sum<2>(
+          space, [&](Index i, double* sum) { sum[0] += beta[i] * q[i]; sum[1] += g[i] * beta[i]; });
       if (!(beta_q > 0.0))
         return finish(false, "operator is not positive definite on the search direction: "
                              "beta'A beta = " + format_number(beta_q) + " <= 0 at iteration " +
                                  std::to_string(report.iterations));
-      const double alpha = g.dot(beta) / beta_q;
+      const double alpha = g_beta / beta_q;
       x -= alpha * beta;
       g -= alpha * q;
       direction(x, g, p);

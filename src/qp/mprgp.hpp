@@ -32,6 +32,7 @@
 ///   if (!report.converged) log::warning(report.reason);
 
 #include "la/operator.hpp"
+#include "la/vector_space.hpp"
 #include "qp/qp_report.hpp"
 
 #include <functional>
@@ -95,6 +96,9 @@ struct MprgpOptions
   /// (Dostal 2009, sec. 5.11; Kruzik & Horak 2025). The proportional test, the expansion's
   /// projected gradient step and proportioning stay unpreconditioned. Not owned.
   const la::LinearOperator* preconditioner = nullptr;
+  /// Reductions of the operator's vectors when they are distributed over ranks (dual vectors
+  /// of the distributed FETI); nullptr: all entries local. Not owned.
+  const la::VectorSpace* space = nullptr;
 };
 
 /// Bound-constrained QP solver; see the file comment for the problem and the algorithm.

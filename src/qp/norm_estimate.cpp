@@ -3,28 +3,37 @@
 #include "common/error.hpp"
 
 #include <cmath>
-#include <random>
+#include <memory>
 
 namespace feticon::qp
 {
 NormEstimate estimate_norm(const la::LinearOperator& A, int max_iterations, double rtol,
-                           unsigned seed)
+                           unsigned seed, const la::VectorSpace* space)
 {
   FETICON_CHECK(max_iterations >= 1,
                 "estimate_norm: max_iterations = " << max_iterations << " must be >= 1");
   FETICON_CHECK(rtol >= 0.0, "estimate_norm: rtol = " << rtol << " must be >= 0");
   NormEstimate estimate;
   const la::Index n = A.size();
-  if (n == 0)
+  std::unique_ptr<la::SerialSpace> serial;
+  if (!space)
+    space = (serial = std::make_unique<la::SerialSpace>(n)).get();
+  if (space->max(static_cast<double>(n)) == 0.0)
     return estimate;
 
-  // Raw mt19937 output is fixed by the standard (unlike std::uniform_real_distribution), so
-  // the start vector, and with it alpha_bar and every MPRGP counter, is portable.
-  std::mt19937 generator(seed);
+  // Entry i of the start vector hashes (seed, global index i) with splitmix64, so the vector
+  // is portable and the same however the entries are distributed over ranks.
   la::Vector v(n);
   for (la::Index i = 0; i < n; ++i)
-    v[i] = static_cast<double>(generator()) / 4294967296.0 - 0.5;
-  v /= v.norm();
+  {
+    uint64_t z = (static_cast<uint64_t>(seed) << 40) + static_cast<uint64_t>(space->global_index(i)) +
+                 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    v[i] = static_cast<double>(z >> 11) / 9007199254740992.0 - 0.5;
+  }
+  v /= la::norm(*space, v);
 
   la::Vector w;
   double previous = 0.0;
@@ -32,8 +41,10 @@ NormEstimate estimate_norm(const la::LinearOperator& A, int max_iterations, doub
   {
     A.apply(v, w);
     ++estimate.applications;
-    estimate.value = v.dot(w);
-    const double w_norm = w.norm();
+    const auto [vw, ww] = la::reduce_sum<2>(*space, [&](la::Index i, double* s)
+                                            { s[0] += v[i] * w[i]; s[1] += w[i] * w[i]; });
+    estimate.value = vw;
+    const double w_norm = std::sqrt(ww);
     if (w_norm == 0.0 || !std::isfinite(w_norm))
       break;
     if (k > 0 && std::abs(estimate.value - previous) <= rtol * std::abs(estimate.value))

@@ -50,7 +50,14 @@ Smalbe::Smalbe(const la::LinearOperator& H, const EqualityOperator& C, SmalbeOpt
 SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vector& x)
 {
   const auto start = std::chrono::steady_clock::now();
-  const double b_norm = b.norm() > 0 ? b.norm() : 1.0;
+  std::unique_ptr<la::SerialSpace> serial;
+  const la::VectorSpace& space = _options.mprgp.space
+                                     ? *_options.mprgp.space
+                                     : *(serial = std::make_unique<la::SerialSpace>(b.size()));
+  // ||C x|| is a norm of a replicated coarse vector (no reduction); ||b|| and x'Hx are
+  // reduced over the space.
+  const double b_raw_norm = la::norm(space, b);
+  const double b_norm = b_raw_norm > 0 ? b_raw_norm : 1.0;
   const double tolerance = _options.rtol * b_norm;
   const double eta = _options.eta_factor * b_norm;
   la::Vector omega = _C.apply(la::Vector::Zero(b.size()));
@@ -159,7 +166,9 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
   la::Vector Hx;
   _H.apply(x, Hx);
   report.hessian_multiplications += 1;
-  report.cost = 0.5 * x.dot(Hx) - b.dot(x);
+  const auto [xHx, bx] = la::reduce_sum<2>(space, [&](la::Index i, double* sum)
+                                          { sum[0] += x[i] * Hx[i]; sum[1] += b[i] * x[i]; });
+  report.cost = 0.5 * xHx - bx;
   report.final_M = M;
   report.final_rho = rho;
   report.omega = omega;

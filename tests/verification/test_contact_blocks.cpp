@@ -107,7 +107,7 @@ TEST(ContactBlocks, DualSolutionSatisfiesKktConditions)
   const auto contact = contact::build_contact_constraints(
       problem.mesh, {}, {problem.contacts[0].slave, problem.contacts[0].master});
   decomposition::ConstraintRows rows = equality.rows;
-  rows.append(decomposition::rows_from_global(decomp, contact.B, contact.c));
+  rows.append(decomposition::rows_from_global(decomp, contact.B, contact.c), equality.n_global());
   const dual::FetiOperators feti(system, rows);
   const la::Vector f = decomp.scatter_split(problem.external_force());
   const la::Vector c = rows.c_vector();
