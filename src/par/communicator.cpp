@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 
 #include <cstdlib>
+#include <dlfcn.h>
 
 namespace feticon::par
 {
@@ -25,7 +26,20 @@ std::vector<T> gather_impl(MPI_Comm comm, int size, const std::vector<T>& local,
 }
 } // namespace
 
-Environment::Environment(int& argc, char**& argv) { MPI_Init(&argc, &argv); }
+Environment::Environment(int& argc, char**& argv)
+{
+  MPI_Init(&argc, &argv);
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  // With several ranks the ranks are the parallelism: OpenBLAS threads inside CHOLMOD on top
+  // of them oversubscribe the cores, and a thread count that varies with the ranks' binding
+  // changes the rounding of the factor solves, so results would depend on the rank count.
+  // OpenBLAS is found at run time (CHOLMOD links the generic libblas).
+  if (size > 1)
+    if (auto* set_threads =
+            reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+      set_threads(1);
+}
 
 Environment::~Environment()
 {

@@ -1,0 +1,46 @@
+#!/usr/bin/python3
+"""Compares two feticon results folders of the same problem run on different numbers of MPI
+ranks: the iteration records must be equal and the displacement equal to RTOL relative.
+
+Usage: compare_runs.py RTOL DIR_A DIR_B
+The displacement is the global stacked vector (every subdomain's copy of every node) of the
+last converged step, read from checkpoint.bin: magic "FETICKP1", then int64 count and that
+many float64 values. Its layout is independent of the rank count, so the vectors compare
+entry by entry.
+"""
+import json
+import struct
+import sys
+
+import numpy
+
+
+def stacked_displacement(folder):
+    with open(folder + "/checkpoint.bin", "rb") as f:
+        assert f.read(8) == b"FETICKP1", folder + ": not a feticon checkpoint"
+        (count,) = struct.unpack("<q", f.read(8))
+        return numpy.frombuffer(f.read(8 * count), dtype="<f8")
+
+
+def records(folder):
+    summary = json.load(open(folder + "/summary.json"))
+    assert summary["converged"] is True, folder + " did not converge"
+    steps = [(s["outer_iterations"], s["inner_iterations"]) for s in summary["steps"]]
+    return summary, steps
+
+
+def main(rtol, a, b):
+    summary_a, steps_a = records(a)
+    summary_b, steps_b = records(b)
+    assert steps_a == steps_b, f"iteration counts differ: {steps_a} vs {steps_b}"
+    assert summary_a["qp"] == summary_b["qp"], f"QP counters differ: {summary_a['qp']} vs {summary_b['qp']}"
+    u_a, u_b = stacked_displacement(a), stacked_displacement(b)
+    assert u_a.shape == u_b.shape and u_a.size > 0
+    difference = numpy.abs(u_a - u_b).max() / numpy.abs(u_a).max()
+    assert difference <= rtol, f"displacements differ by {difference:.3e} relative (> {rtol})"
+    print(f"{b}: same iterations {steps_b}, displacement difference {difference:.3e} relative "
+          f"(ranks {summary_a.get('ranks')} vs {summary_b.get('ranks')})")
+
+
+if __name__ == "__main__":
+    main(float(sys.argv[1]), sys.argv[2], sys.argv[3])
