@@ -9,4 +9,7 @@ namespace feticon::app
 void register_run_command(CLI::App& app);
 /// `feticon qp --A A.mtx --b b.mtx [--lower l.mtx] [--rtol 1e-5] [--out x.mtx]`
 void register_qp_command(CLI::App& app);
+/// `feticon bench [PROBLEM.yaml] [--set KEY=VALUE ...] | --mprgp-obstacle N`: one benchmark
+/// measurement as a JSON line (bench/run.sh)
+void register_bench_command(CLI::App& app);
 } // namespace feticon::app

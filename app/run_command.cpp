@@ -2,6 +2,7 @@
 
 #include "app/checkpoint.hpp"
 #include "app/commands.hpp"
+#include "app/problem_setup.hpp"
 #include "app/run_output.hpp"
 #include "par/communicator.hpp"
 #include "common/error.hpp"
@@ -11,8 +12,6 @@
 #include "io/settings.hpp"
 #include "nonlinear/feti_contact_solver.hpp"
 #include "nonlinear/primal_penalty_solver.hpp"
-#include "problems/cantilever_obstacle.hpp"
-#include "problems/hertz.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -33,62 +32,6 @@ struct RunOptions
   bool quiet = false;
   bool verbose = false;
 };
-
-problems::HertzParameters hertz_parameters(const io::Settings& s)
-{
-  problems::HertzParameters p;
-  p.line_load = s.number("hertz.line_load");
-  p.mesh.refinement = s.number("hertz.refinement");
-  p.mesh.element_size = s.number("hertz.element_size");
-  p.mesh.master_ratio = s.number("hertz.master_ratio");
-  p.mesh.block_width = s.number("hertz.block_width");
-  p.mesh.block_depth = s.number("hertz.block_depth");
-  p.mesh.cylinder_width = s.number("hertz.cylinder_width");
-  p.material = {s.number("material.young"), s.number("material.poisson")};
-  return p;
-}
-
-problems::CantileverObstacleParameters cantilever_parameters(const io::Settings& s)
-{
-  problems::CantileverObstacleParameters p;
-  p.gap = s.number("cantilever.gap");
-  p.linear_deflection_ratio = s.number("cantilever.load");
-  p.cells_along = s.integer("cantilever.cells");
-  p.material = {s.number("material.young"), s.number("material.poisson")};
-  return p;
-}
-
-nonlinear::SolverSettings solver_settings(const io::Settings& s)
-{
-  nonlinear::SolverSettings out;
-  const std::string& method = s.text("method");
-  out.method = method == "smalbe"         ? nonlinear::ContactMethod::smalbe
-               : method == "dual_penalty" ? nonlinear::ContactMethod::dual_penalty
-                                          : nonlinear::ContactMethod::primal_penalty;
-  out.dual.method = out.method == nonlinear::ContactMethod::dual_penalty ? dual::DualMethod::dual_penalty
-                                                                        : dual::DualMethod::smalbe;
-  out.dual.rho = s.number("rho");
-  out.dual.smalbe_M0 = s.number("smalbe.M0");
-  out.dual.smalbe_beta = s.number("smalbe.beta");
-  out.dual.rtol = s.number("qp.rtol");
-  out.dual.lumped_preconditioner = s.text("qp.preconditioner") == "lumped";
-  out.dual.max_iterations = s.integer("qp.max_iterations");
-  out.eps_n_factor = s.number("eps_n");
-  out.formulation = s.text("contact.formulation") == "mortar" ? contact::ContactFormulation::mortar
-                                                               : contact::ContactFormulation::node_to_segment;
-  const bool large = s.text("displacements") == "large";
-  out.kinematics = large ? fem::Kinematics::total_lagrangian : fem::Kinematics::linear;
-  out.load_steps = large ? s.integer("load_steps") : 1;
-  out.subdomains = s.integer("subdomains");
-  const std::string& stiffness = s.text("newton.stiffness");
-  out.stiffness = stiffness == "initial" ? nonlinear::StiffnessUpdate::initial
-                  : stiffness == "step"  ? nonlinear::StiffnessUpdate::load_step
-                                         : nonlinear::StiffnessUpdate::iteration;
-  out.max_outer_iterations = s.integer("newton.max_iterations");
-  out.displacement_tolerance = s.number("newton.tolerance");
-  out.metis = s.text("partitioner") == "metis";
-  return out;
-}
 
 /// The problem as run: every setting (defaults, file, overrides) and the structured sections,
 /// in a form `feticon run` reads back.
@@ -115,27 +58,6 @@ double axis_approach(const fem::Problem& problem, const la::Vector& u)
   for (int32_t n : nodes)
     sum += u(3 * n + 1);
   return -sum / static_cast<double>(nodes.size());
-}
-
-nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution)
-{
-  int iterations = 0, products = 0, smalbe = 0, cg = 0, expansion = 0, proportioning = 0;
-  for (const auto& it : solution.history)
-  {
-    cg += it.cg_steps;
-    expansion += it.expansion_steps;
-    proportioning += it.proportioning_steps;
-    iterations += it.qp_iterations;
-    products += it.hessian_multiplications;
-    smalbe += it.smalbe_outer;
-  }
-  return {{"iterations", iterations},
-          {"hessian_multiplications", products},
-          {"cg_steps", cg},
-          {"expansion_steps", expansion},
-          {"proportioning_steps", proportioning},
-          {"smalbe_outer_iterations", smalbe},
-          {"outer_iterations", solution.history.size()}};
 }
 
 /// A step's VTU (one rank) or the .pvtu joining the ranks' pieces, and a piece's name.
@@ -190,18 +112,10 @@ void run(const RunOptions& options)
   std::unique_ptr<fem::Problem> problem;
   {
     ScopedTimer t(timers, "mesh");
-    problem = std::make_unique<fem::Problem>(
-        is_hertz                         ? problems::hertz_problem(hertz)
-        : kind == "cantilever_obstacle" ? problems::cantilever_obstacle_problem(cantilever_parameters(settings))
-                                         : io::build_custom_problem(file));
+    problem = std::make_unique<fem::Problem>(build_problem(file));
   }
-  nonlinear::SolverSettings solver = solver_settings(settings);
+  const nonlinear::SolverSettings solver = solver_settings(settings, *problem);
   const int64_t n_dofs = 3 * static_cast<int64_t>(problem->mesh.n_nodes());
-  if (settings.integer("subdomain_cells") > 0)
-    solver.subdomains = std::max<int>(
-        problem->mesh.n_bodies(),
-        static_cast<int>((problem->mesh.n_cells() + settings.integer("subdomain_cells") - 1) /
-                         settings.integer("subdomain_cells")));
   log::info("feticon: problem " + problem->name + ", " + std::to_string(problem->mesh.n_cells()) +
             " hex8 cells, " + std::to_string(n_dofs) + " DOFs, method " + settings.text("method") +
             ", " + settings.text("displacements") + " displacements");

@@ -4,6 +4,7 @@
 #include "common/log.hpp"
 #include "fem/assembler.hpp"
 #include "la/cholmod.hpp"
+#include "nonlinear/contact_penalty.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -13,38 +14,6 @@ namespace feticon::nonlinear
 {
 namespace
 {
-using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-
-/// Penalty of each row: eps_n times the slave node's tributary area over the mean one, so
-/// that a uniform penetration gives a uniform pressure (a node-wise spring would give the
-/// half-area node on a symmetry plane twice the pressure of its neighbours).
-la::Vector row_penalties(const contact::ContactConstraints& rows, double eps_n)
-{
-  const la::Vector area = Eigen::Map<const la::Vector>(rows.slave_area.data(),
-                                                       static_cast<la::Index>(rows.slave_area.size()));
-  const double mean = area.size() > 0 ? area.mean() : 1.0;
-  return area * (eps_n / mean);
-}
-
-/// B_A' E B_A and B_A' E c_A (E = diag of row penalties) for the rows flagged in `active`.
-void penalty_terms(const contact::ContactConstraints& rows, const std::vector<char>& active,
-                   const la::Vector& eps, la::SparseMatrix& K_pen, la::Vector& f_pen)
-{
-  std::vector<la::Triplet> triplets;
-  la::Vector c_A = la::Vector::Zero(rows.c.size());
-  for (int r = 0; r < rows.B.outerSize(); ++r)
-    if (active[r])
-    {
-      c_A(r) = eps(r) * rows.c(r);
-      for (RowMatrix::InnerIterator it(rows.B, r); it; ++it)
-        triplets.emplace_back(r, static_cast<int>(it.col()), it.value());
-    }
-  la::SparseMatrix B_A(rows.B.rows(), rows.B.cols());
-  B_A.setFromTriplets(triplets.begin(), triplets.end());
-  K_pen = la::SparseMatrix(B_A.transpose() * eps.asDiagonal() * B_A);
-  f_pen = B_A.transpose() * c_A;
-}
-
 void log_iteration(const OuterIteration& it)
 {
   char line[200];

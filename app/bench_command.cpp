@@ -1,0 +1,134 @@
+/// `feticon bench`: one benchmark measurement as one JSON line on stdout (issue 8);
+/// bench/run.sh repeats it and takes medians.
+///
+/// Sample runs:
+///   feticon bench --set hertz.refinement=2.5 --set subdomains=32
+///       the FETI contact solve of a problem (as `feticon run` sets it up: file and --set),
+///       its phase times, counters and peak memory, then the bonded direct solve of the same
+///       mesh with the contact solution's active nodes (nonlinear/bonded_direct_solve.hpp)
+///       and the ratio contact-solve time / direct factorization + solve time;
+///   feticon bench --mprgp-obstacle 1000
+///       MPRGP alone on the 2D obstacle QP with 1000^2 unknowns: time per step against one
+///       operator application (app/mprgp_benchmark.hpp).
+/// Progress lines are silenced unless --verbose; the JSON is always the last stdout line.
+
+#include "app/commands.hpp"
+#include "app/mprgp_benchmark.hpp"
+#include "app/problem_setup.hpp"
+#include "common/error.hpp"
+#include "common/log.hpp"
+#include "common/timer.hpp"
+#include "nonlinear/bonded_direct_solve.hpp"
+#include "nonlinear/contact_pressure.hpp"
+#include "nonlinear/feti_contact_solver.hpp"
+
+#include <iostream>
+#include <memory>
+
+namespace feticon::app
+{
+namespace
+{
+struct BenchOptions
+{
+  std::string problem_file;
+  std::vector<std::string> overrides;
+  bool direct = true;
+  int obstacle_n = 0; ///< > 0: the MPRGP obstacle benchmark instead of a contact solve
+  double obstacle_rtol = 1e-5;
+  int obstacle_max_iterations = 100000;
+  int applications = 21;
+  bool verbose = false;
+};
+
+/// The FETI contact solve and the bonded direct solve of one problem.
+nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
+{
+  const io::ProblemFile file = io::load_problem_file(options.problem_file, options.overrides);
+  FETICON_CHECK(file.settings.text("method") != "primal_penalty",
+                "feticon bench measures the FETI methods; set method=smalbe or dual_penalty");
+  TimerTable timers;
+  std::unique_ptr<fem::Problem> problem;
+  {
+    ScopedTimer t(timers, "mesh");
+    problem = std::make_unique<fem::Problem>(build_problem(file));
+  }
+  const nonlinear::SolverSettings solver = solver_settings(file.settings, *problem);
+  const nonlinear::ContactSolution solution = nonlinear::solve_feti_contact(*problem, solver, timers);
+  const long peak_contact = peak_memory_bytes();
+
+  nlohmann::ordered_json out;
+  out["problem"] = problem->name;
+  out["displacements"] = file.settings.text("displacements");
+  out["method"] = file.settings.text("method");
+  out["converged"] = solution.converged;
+  if (!solution.converged)
+    out["reason"] = solution.reason;
+  out["degrees_of_freedom"] = 3 * static_cast<int64_t>(problem->mesh.n_nodes());
+  out["elements"] = problem->mesh.n_cells();
+  out["subdomains"] = solution.n_subdomains;
+  out["dual_size"] = solution.n_dual;
+  out["coarse_size"] = solution.n_kernel;
+  out["load_steps"] = solution.steps.size();
+  out["qp"] = qp_json(solution);
+  nlohmann::ordered_json timing;
+  for (const auto& [phase, seconds] : timers.entries())
+    timing[phase] = seconds;
+  out["timings_seconds"] = timing;
+  const double dual_seconds = timers.total("dual solve (MPRGP)");
+  const int iterations = out["qp"]["iterations"];
+  out["dual_seconds_per_mprgp_iteration"] = dual_seconds / std::max(iterations, 1);
+  out["peak_memory_bytes"] = peak_contact;
+  out["total_normal_force"] = nonlinear::total_normal_force(solution);
+  if (!options.direct || !solution.converged)
+    return out;
+
+  const nonlinear::BondedSolve direct =
+      nonlinear::bonded_direct_solve(*problem, solver, nonlinear::active_slave_nodes(solution));
+  const double direct_seconds = direct.factorization_seconds + direct.solve_seconds;
+  out["direct"] = {{"bonded_rows", direct.n_bonded},
+                   {"assembly_seconds", direct.assembly_seconds},
+                   {"factorization_seconds", direct.factorization_seconds},
+                   {"solve_seconds", direct.solve_seconds},
+                   {"factor_nonzeros", direct.factor_nonzeros},
+                   // How far the bonded solution is from the contact one: small for small
+                   // displacements (penalty and active-set edge), a check that both solved
+                   // the same mesh and load.
+                   {"relative_difference", (direct.u - solution.u).norm() / solution.u.norm()}};
+  out["peak_memory_bytes_with_direct"] = peak_memory_bytes();
+  out["ratio_contact_to_direct"] = timers.total("total solve") / direct_seconds;
+  return out;
+}
+} // namespace
+
+void register_bench_command(CLI::App& app)
+{
+  auto options = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app.add_subcommand("bench", "One benchmark measurement as a JSON line: a FETI contact "
+                                              "solve against the bonded direct solve, or MPRGP alone");
+  cmd->add_option("problem", options->problem_file, "problem file (YAML); omit for the built-in Hertz problem");
+  cmd->add_option("--set,-s", options->overrides, "override a setting, KEY=VALUE (repeatable; see run --help)");
+  cmd->add_flag("!--no-direct", options->direct, "skip the bonded direct solve");
+  cmd->add_option("--mprgp-obstacle", options->obstacle_n,
+                  "instead: MPRGP on the 2D obstacle QP with N x N unknowns");
+  cmd->add_option("--rtol", options->obstacle_rtol, "MPRGP tolerance of the obstacle QP")->capture_default_str();
+  cmd->add_option("--max-iterations", options->obstacle_max_iterations, "MPRGP step limit of the obstacle QP")
+      ->capture_default_str();
+  cmd->add_option("--applications", options->applications,
+                  "timed operator applications (median) of the obstacle QP")
+      ->capture_default_str();
+  cmd->add_flag("--verbose,-v", options->verbose, "progress lines before the JSON");
+  cmd->callback(
+      [options]
+      {
+        if (!options->verbose)
+          log::set_level(log::Level::warning);
+        const nlohmann::ordered_json out =
+            options->obstacle_n > 0
+                ? mprgp_obstacle_benchmark(options->obstacle_n, options->obstacle_rtol,
+                                           options->obstacle_max_iterations, options->applications)
+                : contact_benchmark(*options);
+        std::cout << out.dump() << '\n';
+      });
+}
+} // namespace feticon::app

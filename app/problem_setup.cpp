@@ -1,0 +1,102 @@
+#include "app/problem_setup.hpp"
+
+#include "problems/cantilever_obstacle.hpp"
+
+#include <algorithm>
+
+namespace feticon::app
+{
+namespace
+{
+problems::CantileverObstacleParameters cantilever_parameters(const io::Settings& s)
+{
+  problems::CantileverObstacleParameters p;
+  p.gap = s.number("cantilever.gap");
+  p.linear_deflection_ratio = s.number("cantilever.load");
+  p.cells_along = s.integer("cantilever.cells");
+  p.material = {s.number("material.young"), s.number("material.poisson")};
+  return p;
+}
+} // namespace
+
+problems::HertzParameters hertz_parameters(const io::Settings& s)
+{
+  problems::HertzParameters p;
+  p.line_load = s.number("hertz.line_load");
+  p.mesh.refinement = s.number("hertz.refinement");
+  p.mesh.element_size = s.number("hertz.element_size");
+  p.mesh.master_ratio = s.number("hertz.master_ratio");
+  p.mesh.block_width = s.number("hertz.block_width");
+  p.mesh.block_depth = s.number("hertz.block_depth");
+  p.mesh.cylinder_width = s.number("hertz.cylinder_width");
+  p.material = {s.number("material.young"), s.number("material.poisson")};
+  return p;
+}
+
+fem::Problem build_problem(const io::ProblemFile& file)
+{
+  const std::string& kind = file.settings.text("problem");
+  if (kind == "hertz")
+    return problems::hertz_problem(hertz_parameters(file.settings));
+  if (kind == "cantilever_obstacle")
+    return problems::cantilever_obstacle_problem(cantilever_parameters(file.settings));
+  return io::build_custom_problem(file);
+}
+
+nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Problem& problem)
+{
+  nonlinear::SolverSettings out;
+  const std::string& method = s.text("method");
+  out.method = method == "smalbe"         ? nonlinear::ContactMethod::smalbe
+               : method == "dual_penalty" ? nonlinear::ContactMethod::dual_penalty
+                                          : nonlinear::ContactMethod::primal_penalty;
+  out.dual.method = out.method == nonlinear::ContactMethod::dual_penalty ? dual::DualMethod::dual_penalty
+                                                                        : dual::DualMethod::smalbe;
+  out.dual.rho = s.number("rho");
+  out.dual.smalbe_M0 = s.number("smalbe.M0");
+  out.dual.smalbe_beta = s.number("smalbe.beta");
+  out.dual.rtol = s.number("qp.rtol");
+  out.dual.lumped_preconditioner = s.text("qp.preconditioner") == "lumped";
+  out.dual.max_iterations = s.integer("qp.max_iterations");
+  out.eps_n_factor = s.number("eps_n");
+  out.formulation = s.text("contact.formulation") == "mortar" ? contact::ContactFormulation::mortar
+                                                               : contact::ContactFormulation::node_to_segment;
+  const bool large = s.text("displacements") == "large";
+  out.kinematics = large ? fem::Kinematics::total_lagrangian : fem::Kinematics::linear;
+  out.load_steps = large ? s.integer("load_steps") : 1;
+  out.subdomains = s.integer("subdomains");
+  const int cells = s.integer("subdomain_cells");
+  if (cells > 0)
+    out.subdomains = std::max<int>(problem.mesh.n_bodies(),
+                                   static_cast<int>((problem.mesh.n_cells() + cells - 1) / cells));
+  const std::string& stiffness = s.text("newton.stiffness");
+  out.stiffness = stiffness == "initial" ? nonlinear::StiffnessUpdate::initial
+                  : stiffness == "step"  ? nonlinear::StiffnessUpdate::load_step
+                                         : nonlinear::StiffnessUpdate::iteration;
+  out.max_outer_iterations = s.integer("newton.max_iterations");
+  out.displacement_tolerance = s.number("newton.tolerance");
+  out.metis = s.text("partitioner") == "metis";
+  return out;
+}
+
+nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution)
+{
+  int iterations = 0, products = 0, smalbe = 0, cg = 0, expansion = 0, proportioning = 0;
+  for (const auto& it : solution.history)
+  {
+    cg += it.cg_steps;
+    expansion += it.expansion_steps;
+    proportioning += it.proportioning_steps;
+    iterations += it.qp_iterations;
+    products += it.hessian_multiplications;
+    smalbe += it.smalbe_outer;
+  }
+  return {{"iterations", iterations},
+          {"hessian_multiplications", products},
+          {"cg_steps", cg},
+          {"expansion_steps", expansion},
+          {"proportioning_steps", proportioning},
+          {"smalbe_outer_iterations", smalbe},
+          {"outer_iterations", solution.history.size()}};
+}
+} // namespace feticon::app

@@ -1,0 +1,29 @@
+#pragma once
+/// @file From settings to what a solver takes: the problem and the solver settings, shared by
+/// `feticon run` and `feticon bench` so that both solve the same thing for the same file.
+
+#include "fem/problem.hpp"
+#include "io/problem_file.hpp"
+#include "io/settings.hpp"
+#include "nonlinear/contact_solution.hpp"
+#include "nonlinear/solver_settings.hpp"
+#include "problems/hertz.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace feticon::app
+{
+/// The Hertz parameters of the `hertz.*` and `material.*` settings.
+problems::HertzParameters hertz_parameters(const io::Settings& settings);
+
+/// The problem of `problem`: built-in hertz or cantilever_obstacle, else the file's custom
+/// sections.
+fem::Problem build_problem(const io::ProblemFile& file);
+
+/// Solver settings of the method, QP, contact, Newton and decomposition settings; with
+/// `subdomain_cells` > 0 the subdomain count follows from the problem's cell count.
+nonlinear::SolverSettings solver_settings(const io::Settings& settings, const fem::Problem& problem);
+
+/// QP counters summed over the outer iterations (summary.json "qp").
+nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution);
+} // namespace feticon::app

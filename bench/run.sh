@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# The benchmark suite of issue 8: Hertz at about 10k, 100k and 1M DOFs with small and large
+# displacements (FETI contact solve against the bonded direct solve), numerical scalability
+# at fixed H/h, and MPRGP alone on a 2D obstacle QP. Each case runs --reps times as its own
+# process (`feticon bench`, one JSON line each), niced; bench/summarize.py takes the medians,
+# prints the tables and writes bench/results/*.csv and tables.md.
+#
+#   bench/run.sh                                   # 10k and 100k, 3 repetitions
+#   bench/run.sh --sizes 10k,100k,1M --reps 3      # also 1M (minutes per run)
+#   bench/run.sh --sizes 1M --kinds large --reps 1 --only contact
+#   bench/run.sh --only scalability                # parts: contact, scalability, mprgp
+#   bench/run.sh --feticon build-bench/feticon     # another build (default build/feticon)
+#   bench/run.sh --obstacle 1000 --obstacle-steps 1000   # MPRGP QP size n^2 and step cap
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+feticon=$root/build/feticon
+sizes=10k,100k
+kinds=small,large
+reps=3
+only=contact,scalability,mprgp
+out=$root/bench/results
+obstacle=1000
+obstacle_steps=1000
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --sizes) sizes=$2; shift 2 ;;
+    --reps) reps=$2; shift 2 ;;
+    --kinds) kinds=$2; shift 2 ;;
+    --only) only=$2; shift 2 ;;
+    --feticon) feticon=$2; shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    --obstacle) obstacle=$2; shift 2 ;;
+    --obstacle-steps) obstacle_steps=$2; shift 2 ;;
+    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    *) echo "bench/run.sh: unknown option $1 (see --help)" >&2; exit 1 ;;
+  esac
+done
+[[ -x $feticon ]] || { echo "bench/run.sh: no feticon executable at $feticon (build it, or --feticon PATH)" >&2; exit 1; }
+mkdir -p "$out/raw"
+
+# Hertz refinement and subdomain count per size: DOFs grow about as refinement^2 (one cell
+# layer; 9 744 DOFs at refinement 0.75, 93 966 at 2.4); the subdomains grow more slowly than
+# the DOFs, since fewer, larger subdomains take fewer MPRGP steps on the graded mesh
+# (docs/profile.md).
+declare -A refinement=([10k]=0.75 [100k]=2.5 [1M]=7.8)
+declare -A subdomains=([10k]=8 [100k]=32 [1M]=128)
+
+# One case: NAME then feticon bench arguments; replaces raw/NAME.rep<i>.json (the other
+# cases' files stay, so that a later run of one size adds to the tables).
+run_case() {
+  local name=$1; shift
+  rm -f "$out/raw/$name".rep*.json
+  for ((i = 1; i <= reps; i++)); do
+    echo "bench: $name ($i/$reps)" >&2
+    nice -n 10 "$feticon" bench "$@" | tail -n 1 > "$out/raw/$name.rep$i.json"
+  done
+}
+
+if [[ ,$only, == *,contact,* ]]; then
+  for size in ${sizes//,/ }; do
+    [[ -n ${refinement[$size]:-} ]] || { echo "bench/run.sh: unknown size $size (10k, 100k, 1M)" >&2; exit 1; }
+    for kind in ${kinds//,/ }; do
+      run_case "contact.$size.$kind" --set hertz.refinement="${refinement[$size]}" \
+        --set subdomains="${subdomains[$size]}" --set displacements=$kind
+    done
+  done
+fi
+if [[ ,$only, == *,scalability,* ]]; then
+  # H/h fixed: 256 cells (16 x 16 in the one layer) per subdomain, h halved twice.
+  for r in 1 2 4; do
+    run_case "scalability.r$r" --no-direct --set hertz.refinement=$r --set subdomain_cells=256 \
+      --set displacements=small
+  done
+fi
+if [[ ,$only, == *,mprgp,* ]]; then
+  # A capped solve: the cost per step is the figure; converging from u = 0 takes tens of
+  # thousands of (mostly expansion) steps at n = 1000.
+  run_case "mprgp.obstacle$obstacle" --mprgp-obstacle "$obstacle" --max-iterations "$obstacle_steps"
+fi
+/usr/bin/python3 "$root/bench/summarize.py" "$out"

@@ -1,0 +1,151 @@
+"""Medians of the `feticon bench` JSON lines in RESULTS/raw (one file per case and
+repetition, CASE.rep<i>.json), written as RESULTS/{contact,scalability,mprgp}.csv and as
+Markdown tables in RESULTS/tables.md (also printed). Called by bench/run.sh; rerun it alone
+to regenerate the tables from the raw files: /usr/bin/python3 bench/summarize.py bench/results
+"""
+import csv
+import json
+import statistics
+import sys
+from collections import defaultdict
+from pathlib import Path
+
+
+def flatten(record, prefix=""):
+    """Nested JSON objects as one level of dotted keys."""
+    out = {}
+    for key, value in record.items():
+        if isinstance(value, dict):
+            out.update(flatten(value, prefix + key + "."))
+        else:
+            out[prefix + key] = value
+    return out
+
+
+def medians(raw_dir):
+    """Case name -> {key: median over repetitions (numbers) or first value}, plus 'reps'."""
+    runs = defaultdict(list)
+    for path in sorted(raw_dir.glob("*.rep*.json")):
+        text = path.read_text().strip()
+        if text:
+            runs[path.name.rsplit(".rep", 1)[0]].append(flatten(json.loads(text)))
+    cases = {}
+    for name, records in runs.items():
+        merged = {"reps": len(records)}
+        for key in records[0]:
+            values = [r[key] for r in records if key in r]
+            numeric = all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in values)
+            merged[key] = statistics.median(values) if numeric else values[0]
+        cases[name] = merged
+    return cases
+
+
+# Column title -> function of a case's medians.
+PHASES = ["mesh", "decomposition", "assembly + factorization", "coarse problem", "contact search",
+          "dual solve (MPRGP)", "internal forces", "total solve"]
+CONTACT = {
+    "size": lambda c: c["case"].split(".")[1],
+    "displacements": lambda c: c["displacements"],
+    "DOFs": lambda c: c["degrees_of_freedom"],
+    "subdomains": lambda c: c["subdomains"],
+    "dual": lambda c: c["dual_size"],
+    "outer": lambda c: c["qp.outer_iterations"],
+    "MPRGP": lambda c: c["qp.iterations"],
+    "F products": lambda c: c["qp.hessian_multiplications"],
+    **{phase + " (s)": (lambda p: lambda c: c.get("timings_seconds." + p, 0.0))(phase) for phase in PHASES},
+    "peak MiB": lambda c: c["peak_memory_bytes"] / 2**20,
+    "direct assembly (s)": lambda c: c.get("direct.assembly_seconds", ""),
+    "direct factorization (s)": lambda c: c.get("direct.factorization_seconds", ""),
+    "direct solve (s)": lambda c: c.get("direct.solve_seconds", ""),
+    "factor nnz": lambda c: c.get("direct.factor_nonzeros", ""),
+    "contact / direct": lambda c: c.get("ratio_contact_to_direct", ""),
+    "converged": lambda c: c["converged"],
+    "reps": lambda c: c["reps"],
+}
+SCALABILITY = {
+    "refinement": lambda c: c["case"].split(".r")[1],
+    "DOFs": lambda c: c["degrees_of_freedom"],
+    "subdomains": lambda c: c["subdomains"],
+    "dual": lambda c: c["dual_size"],
+    "MPRGP": lambda c: c["qp.iterations"],
+    "F products": lambda c: c["qp.hessian_multiplications"],
+    "SMALBE outer": lambda c: c["qp.smalbe_outer_iterations"],
+    "dual solve (s)": lambda c: c["timings_seconds.dual solve (MPRGP)"],
+    "s / MPRGP iteration": lambda c: c["dual_seconds_per_mprgp_iteration"],
+    "reps": lambda c: c["reps"],
+}
+MPRGP = {
+    "unknowns": lambda c: c["unknowns"],
+    "iterations": lambda c: c["iterations"],
+    "CG / expansion / proportioning": lambda c: "%d / %d / %d" % (c["cg_steps"], c["expansion_steps"],
+                                                                  c["proportioning_steps"]),
+    "operator applications": lambda c: c["operator_applications"],
+    "s / iteration": lambda c: c["seconds_per_iteration"],
+    "s / application": lambda c: c["operator_seconds_median"],
+    "iteration / application": lambda c: c["ratio_iteration_to_operator"],
+    "solve / (applications x application)": lambda c: c["ratio_solve_to_applications"],
+    "reps": lambda c: c["reps"],
+}
+
+
+def fmt(value):
+    if isinstance(value, float):
+        return "%.3g" % value if abs(value) < 1e4 else "%.0f" % value
+    return str(value)
+
+
+def table(title, columns, cases, results, csv_name, groups=None):
+    """Writes all columns to csv_name; returns Markdown tables, one per group of column
+    titles (all columns in one table by default), so that wide tables stay readable."""
+    rows = [{title: f(case) for title, f in columns.items()} for case in cases]
+    with open(results / csv_name, "w", newline="") as stream:
+        writer = csv.writer(stream)
+        writer.writerow(columns.keys())
+        writer.writerows([row.values() for row in rows])
+    text = ""
+    for i, group in enumerate(groups or [list(columns)]):
+        lines = ["### " + title + (" (%d/%d)" % (i + 1, len(groups)) if groups else ""), "",
+                 "| " + " | ".join(group) + " |", "|" + "---|" * len(group)]
+        lines += ["| " + " | ".join(fmt(row[c]) for c in group) + " |" for row in rows]
+        text += "\n".join(lines) + "\n\n"
+    return text
+
+
+CONTACT_GROUPS = [
+    ["size", "displacements", "DOFs", "subdomains", "dual", "outer", "MPRGP", "F products", "peak MiB",
+     "converged", "reps"],
+    ["size", "displacements"] + [phase + " (s)" for phase in PHASES],
+    ["size", "displacements", "total solve (s)", "direct assembly (s)", "direct factorization (s)",
+     "direct solve (s)", "factor nnz", "contact / direct"],
+]
+
+
+def main():
+    results = Path(sys.argv[1] if len(sys.argv) > 1 else "bench/results")
+    if not (results / "raw").is_dir():
+        sys.exit("summarize.py: no %s/raw (run bench/run.sh first)" % results)
+    cases = medians(results / "raw")
+    for name, case in cases.items():
+        case["case"] = name
+    size_order = {"10k": 0, "100k": 1, "1M": 2}
+    contact = sorted((c for n, c in cases.items() if n.startswith("contact.")),
+                     key=lambda c: (size_order.get(c["case"].split(".")[1], 9), c["case"].split(".")[2] != "small"))
+    scalability = sorted((c for n, c in cases.items() if n.startswith("scalability.")),
+                         key=lambda c: float(c["case"].split(".r")[1]))
+    mprgp = [c for n, c in sorted(cases.items()) if n.startswith("mprgp.")]
+    text = ""
+    if contact:
+        text += table("Hertz: FETI contact solve against the bonded direct solve (medians)", CONTACT, contact,
+                      results, "contact.csv", CONTACT_GROUPS)
+    if scalability:
+        text += table("Numerical scalability, 256 cells per subdomain (medians)", SCALABILITY,
+                             scalability, results, "scalability.csv")
+    if mprgp:
+        text += table("MPRGP alone, 2D obstacle QP (medians)", MPRGP, mprgp, results, "mprgp.csv")
+    text = text.rstrip("\n") + "\n"
+    (results / "tables.md").write_text(text)
+    print(text, end="")
+
+
+if __name__ == "__main__":
+    main()
