@@ -75,6 +75,7 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Prob
                                          : nonlinear::StiffnessUpdate::iteration;
   out.max_outer_iterations = s.integer("newton.max_iterations");
   out.displacement_tolerance = s.number("newton.tolerance");
+  out.forcing = s.number("newton.forcing");
   out.metis = s.text("partitioner") == "metis";
   return out;
 }

@@ -47,6 +47,8 @@ std::vector<SettingSpec> make_specs()
        Type::text, {"initial", "step", "iteration"}, 0, 0, false},
       {"newton.max_iterations", "15", "outer iterations per load step", Type::integer, {}, 1, 10000, false},
       {"newton.tolerance", "1e-6", "load step converged when ||du|| <= tolerance ||u||", Type::number, {}, 0, 1, true},
+      {"newton.forcing", "0.001", "inexact outer iterations: the QP of outer iteration k stops at "
+       "max(qp.rtol, min(1e-4, forcing * |du_(k-1)|/|u|)); 0 solves every QP to qp.rtol", Type::number, {}, 0, 1, false},
       {"load_steps", "2", "load steps for large displacements", Type::integer, {}, 1, 1000, false},
       {"subdomains", "8", "number of FETI subdomains", Type::integer, {}, 1, 1e6, false},
       {"subdomain_cells", "0", "cells per subdomain, (H/h)^3 in 3D or (H/h)^2 for one layer; if > 0 "

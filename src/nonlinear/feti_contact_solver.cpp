@@ -158,6 +158,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
     LoadStep record;
     record.load_factor = t_n;
     la::Vector equality_by_id; ///< for the checkpoint of a converged step
+    bool forcing = !linear && settings.forcing > 0;
     for (int k = 1; k <= settings.max_outer_iterations; ++k)
     {
       const auto iteration_start = std::chrono::steady_clock::now();
@@ -208,10 +209,22 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
         }
         restart_lambda.resize(0);
       }
+      // Inexact QPs while the outer iteration contracts (SolverSettings::forcing); once a
+      // correction grows, the QP errors are being amplified: exact QPs for the rest of the step.
+      if (k > 2 && out.history.back().displacement_change >= out.history.rbegin()[1].displacement_change)
+        forcing = false;
+      dual::DualPenaltyOptions dual_options = settings.dual;
+      if (forcing)
+      {
+        const double forced = k == 1 ? settings.max_forcing_rtol
+                                     : std::min(settings.max_forcing_rtol,
+                                                settings.forcing * out.history.back().displacement_change);
+        dual_options.rtol = std::max(settings.dual.rtol, forced);
+      }
       dual::DualSolution solution;
       {
         ScopedTimer t(timers, "dual solve (MPRGP)");
-        solution = dual::solve_contact_dual(*feti, c, residual, n_equality, settings.dual, warm);
+        solution = dual::solve_contact_dual(*feti, c, residual, n_equality, dual_options, warm);
       }
       u += solution.u;
       lambda_previous = solution.lambda;
