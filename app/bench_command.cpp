@@ -78,6 +78,20 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   const double dual_seconds = timers.total("dual solve (MPRGP)");
   const int iterations = out["qp"]["iterations"];
   out["dual_seconds_per_mprgp_iteration"] = dual_seconds / std::max(iterations, 1);
+  // One application of H = PFP + rho Q is one of F and two of the coarse projector; the
+  // ratio says what MPRGP and SMALBE-M add per iteration on top of it.
+  int64_t applications = 0;
+  double operator_seconds = 0, qp_seconds = 0;
+  for (const auto& it : solution.history)
+  {
+    applications += it.operator_applications;
+    operator_seconds += it.operator_seconds;
+    qp_seconds += it.qp_seconds;
+  }
+  const double per_application = operator_seconds / std::max<int64_t>(applications, 1);
+  out["qp_seconds"] = qp_seconds;
+  out["seconds_per_operator_application"] = per_application;
+  out["ratio_iteration_to_operator"] = qp_seconds / std::max(iterations, 1) / per_application;
   out["peak_memory_bytes"] = peak_contact;
   out["total_normal_force"] = nonlinear::total_normal_force(solution);
   if (!options.direct || !solution.converged)

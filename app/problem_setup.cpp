@@ -56,7 +56,10 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Prob
   out.dual.smalbe_M0 = s.number("smalbe.M0");
   out.dual.smalbe_beta = s.number("smalbe.beta");
   out.dual.rtol = s.number("qp.rtol");
-  out.dual.lumped_preconditioner = s.text("qp.preconditioner") == "lumped";
+  const std::string& preconditioner = s.text("qp.preconditioner");
+  out.dual.preconditioner = preconditioner == "lumped"      ? dual::DualPreconditioner::lumped
+                            : preconditioner == "dirichlet" ? dual::DualPreconditioner::dirichlet
+                                                            : dual::DualPreconditioner::none;
   out.dual.max_iterations = s.integer("qp.max_iterations");
   out.eps_n_factor = s.number("eps_n");
   out.formulation = s.text("contact.formulation") == "mortar" ? contact::ContactFormulation::mortar

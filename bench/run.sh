@@ -40,11 +40,11 @@ done
 mkdir -p "$out/raw"
 
 # Hertz refinement and subdomain count per size: DOFs grow about as refinement^2 (one cell
-# layer; 9 744 DOFs at refinement 0.75, 93 966 at 2.4); the subdomains grow more slowly than
-# the DOFs, since fewer, larger subdomains take fewer MPRGP steps on the graded mesh
-# (docs/profile.md).
+# layer; 9 744 DOFs at refinement 0.75, 93 966 at 2.4). Few, large subdomains are fastest on
+# this graded mesh and 2 cores: at 100k, small displacements, 4 / 8 / 16 / 32 subdomains took
+# 703 / 867 / 1 604 / 2 328 MPRGP steps and 8.4 / 9.5 / 14.4 / 18.8 s (docs/benchmarks.md).
 declare -A refinement=([10k]=0.75 [100k]=2.5 [1M]=7.8)
-declare -A subdomains=([10k]=8 [100k]=32 [1M]=128)
+declare -A subdomains=([10k]=4 [100k]=8 [1M]=16)
 
 # One case: NAME then feticon bench arguments; replaces raw/NAME.rep<i>.json (the other
 # cases' files stay, so that a later run of one size adds to the tables).

@@ -59,6 +59,10 @@ CONTACT = {
     "direct solve (s)": lambda c: c.get("direct.solve_seconds", ""),
     "factor nnz": lambda c: c.get("direct.factor_nonzeros", ""),
     "contact / direct": lambda c: c.get("ratio_contact_to_direct", ""),
+    "QP (s)": lambda c: c["qp_seconds"],
+    "s / MPRGP iteration": lambda c: c["qp_seconds"] / max(c["qp.iterations"], 1),
+    "s / H application": lambda c: c["seconds_per_operator_application"],
+    "iteration / H application": lambda c: c["ratio_iteration_to_operator"],
     "converged": lambda c: c["converged"],
     "reps": lambda c: c["reps"],
 }
@@ -71,7 +75,8 @@ SCALABILITY = {
     "F products": lambda c: c["qp.hessian_multiplications"],
     "SMALBE outer": lambda c: c["qp.smalbe_outer_iterations"],
     "dual solve (s)": lambda c: c["timings_seconds.dual solve (MPRGP)"],
-    "s / MPRGP iteration": lambda c: c["dual_seconds_per_mprgp_iteration"],
+    "s / MPRGP iteration": lambda c: c["qp_seconds"] / max(c["qp.iterations"], 1),
+    "iteration / H application": lambda c: c["ratio_iteration_to_operator"],
     "reps": lambda c: c["reps"],
 }
 MPRGP = {
@@ -117,6 +122,8 @@ CONTACT_GROUPS = [
     ["size", "displacements"] + [phase + " (s)" for phase in PHASES],
     ["size", "displacements", "total solve (s)", "direct assembly (s)", "direct factorization (s)",
      "direct solve (s)", "factor nnz", "contact / direct"],
+    ["size", "displacements", "MPRGP", "QP (s)", "s / MPRGP iteration", "s / H application",
+     "iteration / H application"],
 ]
 
 

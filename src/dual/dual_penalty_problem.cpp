@@ -26,27 +26,34 @@ public:
 private:
   const CoarseProjector& _projector;
 };
-/// M = s P (B K B') P + Q / rho: the lumped FETI preconditioner on Im P (scaled like F^ =
-/// F / s) and the exact inverse of H = ... + rho Q on Im Q.
-class LumpedDualPreconditioner : public la::LinearOperator
+/// M = s P X P + Q / rho, X = B K B' (lumped) or B S B' (Dirichlet): the FETI
+/// preconditioner on Im P (scaled like F^ = F / s) and the exact inverse of H = ... + rho Q
+/// on Im Q.
+class DualPreconditionerOperator : public la::LinearOperator
 {
 public:
-  LumpedDualPreconditioner(const FetiOperators& feti, const CoarseProjector& projector, double s,
-                           double rho)
-      : _feti(feti), _projector(projector), _s(s), _rho(rho)
+  DualPreconditionerOperator(const FetiOperators& feti, const CoarseProjector& projector,
+                             const DualPenaltyOptions& options, double s)
+      : _feti(feti), _projector(projector), _options(options), _s(s)
   {
+    FETICON_CHECK(options.preconditioner != DualPreconditioner::dirichlet || options.schur,
+                  "the Dirichlet preconditioner needs the subdomain Schur complements");
   }
   la::Index size() const override { return _feti.n_dual(); }
   void apply(const la::Vector& x, la::Vector& y) const override
   {
     const la::Vector q = _projector.apply_Q(x);
-    y = _s * _projector.apply_P(_feti.apply_lumped(x - q)) + q / _rho;
+    const la::Vector Xp = _options.preconditioner == DualPreconditioner::dirichlet
+                              ? _feti.apply_dirichlet(x - q, *_options.schur)
+                              : _feti.apply_lumped(x - q);
+    y = _s * _projector.apply_P(Xp) + q / _options.rho;
   }
 
 private:
   const FetiOperators& _feti;
   const CoarseProjector& _projector;
-  double _s, _rho;
+  const DualPenaltyOptions& _options;
+  double _s;
 };
 } // namespace
 
@@ -87,7 +94,8 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   out.pfp_norm = norm.value;
   const double scale = 1.0 / norm.value;
   const FOperator F(feti, scale);
-  const ProjectedOperator H(F, projector, options.rho);
+  const ProjectedOperator H_untimed(F, projector, options.rho);
+  const la::TimedOperator H(H_untimed);
   const la::Vector b = projector.apply_P(scale * (d - feti.apply_F(lambda_tilde)));
 
   la::Vector lower = la::Vector::Constant(m, -std::numeric_limits<double>::infinity());
@@ -106,9 +114,9 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   mprgp.space = &feti.space();
   // After scaling, ||H|| = max(||P F^ P||, rho) ~ max(1, rho): no second power iteration.
   mprgp.alpha_bar = 1.8 / std::max(1.0, options.rho);
-  const LumpedDualPreconditioner lumped(feti, projector, norm.value, options.rho);
-  if (options.lumped_preconditioner)
-    mprgp.preconditioner = &lumped;
+  std::optional<DualPreconditionerOperator> preconditioner;
+  if (options.preconditioner != DualPreconditioner::none)
+    mprgp.preconditioner = &preconditioner.emplace(feti, projector, options, norm.value);
   if (options.method == DualMethod::dual_penalty)
   {
     qp::Mprgp solver(H, mprgp);
@@ -131,6 +139,8 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
     out.outer_iterations = r.outer_iterations;
   }
   out.report.hessian_multiplications += norm.applications;
+  out.operator_applications = H.applications();
+  out.operator_seconds = H.seconds();
   out.lambda = lambda_tilde + mu;
   const double e_norm = e.norm();
   out.feasibility_error =

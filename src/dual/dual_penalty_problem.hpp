@@ -24,6 +24,15 @@ enum class DualMethod
   smalbe        ///< SMALBE-M with MPRGP inside: G lambda = e to the tolerance
 };
 
+/// Preconditioner of MPRGP in the face: s P X P + Q / rho with X = B K B' (lumped) or
+/// B S B' (Dirichlet), s = ||PFP|| matching the scaled F^: an approximate inverse of H.
+enum class DualPreconditioner
+{
+  none,
+  lumped,
+  dirichlet
+};
+
 struct DualPenaltyOptions
 {
   DualMethod method = DualMethod::smalbe;
@@ -31,9 +40,9 @@ struct DualPenaltyOptions
   double rtol = 1e-8;         ///< QP tolerance on ||g_P|| (and ||G~ mu||) relative to ||b^||
   int max_iterations = 20000; ///< MPRGP steps in total
   int power_iterations = 30;  ///< for ||PFP||
-  /// Precondition MPRGP in the face with the lumped preconditioner s P B K B' P + Q / rho
-  /// (s = ||PFP||, matching the scaled F^), an approximate inverse of H.
-  bool lumped_preconditioner = false;
+  DualPreconditioner preconditioner = DualPreconditioner::none;
+  /// Schur complements of the Dirichlet preconditioner (not owned; required for it).
+  const decomposition::SchurComplements* schur = nullptr;
   double smalbe_M0 = 1.0;     ///< SMALBE-M initial M (scaled units)
   double smalbe_beta = 2.0;   ///< SMALBE-M: M <- M / beta when L increases too little
 };
@@ -48,6 +57,10 @@ struct DualSolution
   double feasibility_error = 0;  ///< ||G lambda - e|| / ||e||
   double pfp_norm = 0;           ///< ||PFP|| estimate used for scaling
   int64_t active_contacts = 0;   ///< contact rows with lambda_i > 0
+  /// Applications of H = PFP + rho Q by the QP solver (the norm estimate's are in
+  /// report.hessian_multiplications only) and the wall time spent in them (s).
+  int64_t operator_applications = 0;
+  double operator_seconds = 0;
 };
 
 /// Vectors are this rank's parts (FetiOperators): dual ones over its owned rows, primal ones

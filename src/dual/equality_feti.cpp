@@ -2,12 +2,16 @@
 
 #include "dual/primal_recovery.hpp"
 #include "dual/projector.hpp"
+#include "common/error.hpp"
+
+#include <optional>
 
 namespace feticon::dual
 {
 FetiSolution solve_equality_feti(const FetiOperators& feti, const la::Vector& c,
                                  const la::Vector& f_stacked, const qp::CgOptions& options,
-                                 FetiPreconditioner preconditioner)
+                                 FetiPreconditioner preconditioner,
+                                 const decomposition::SchurComplements* schur)
 {
   const CoarseProjector projector(feti);
   const la::Vector e = feti.apply_Rt(f_stacked);
@@ -25,6 +29,12 @@ FetiSolution solve_equality_feti(const FetiOperators& feti, const la::Vector& c,
   cg.space = &feti.space();
   if (preconditioner == FetiPreconditioner::lumped)
     cg.preconditioner = &lumped;
+  std::optional<DirichletPreconditioner> dirichlet;
+  if (preconditioner == FetiPreconditioner::dirichlet)
+  {
+    FETICON_CHECK(schur, "the Dirichlet preconditioner needs the subdomain Schur complements");
+    cg.preconditioner = &dirichlet.emplace(feti, *schur);
+  }
   out.report = qp::conjugate_gradient(PFP, b, mu, cg, &P);
   out.lambda = lambda_tilde + mu;
   const std::vector<char> all_rows(feti.n_dual(), 1);

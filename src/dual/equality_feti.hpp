@@ -22,11 +22,13 @@ struct FetiSolution
 enum class FetiPreconditioner
 {
   none,
-  lumped ///< B K B'
+  lumped,   ///< B K B'
+  dirichlet ///< B S B' (needs the Schur complements)
 };
 
 /// @param f_stacked stacked load (each global force split among the copies of its node)
 FetiSolution solve_equality_feti(const FetiOperators& feti, const la::Vector& c,
                                  const la::Vector& f_stacked, const qp::CgOptions& options,
-                                 FetiPreconditioner preconditioner = FetiPreconditioner::lumped);
+                                 FetiPreconditioner preconditioner = FetiPreconditioner::lumped,
+                                 const decomposition::SchurComplements* schur = nullptr);
 } // namespace feticon::dual

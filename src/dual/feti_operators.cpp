@@ -347,6 +347,12 @@ la::Vector FetiOperators::apply_lumped(const la::Vector& lambda) const
                              { return la::Vector(_system.operators(s).K * v); });
 }
 
+la::Vector FetiOperators::apply_dirichlet(const la::Vector& lambda,
+                                          const decomposition::SchurComplements& schur) const
+{
+  return sum_over_subdomains(lambda, [&schur](int32_t s, const la::Vector& v) { return schur.apply(s, v); });
+}
+
 la::Vector FetiOperators::apply_G(const la::Vector& lambda, const std::vector<char>* mask) const
 {
   const auto& decomp = _system.decomposition();

@@ -20,6 +20,7 @@
 ///     gathered on every rank, where CoarseProjector factorizes it.
 
 #include "decomposition/constraint_rows.hpp"
+#include "decomposition/schur_complements.hpp"
 #include "decomposition/subdomain_operators.hpp"
 #include "la/operator.hpp"
 #include "par/block_space.hpp"
@@ -64,6 +65,9 @@ public:
   /// Lumped preconditioner B K B' lambda (Farhat, Mandel, Roux 1994): cheap, one sparse
   /// product per subdomain.
   la::Vector apply_lumped(const la::Vector& lambda) const;
+  /// Dirichlet preconditioner B S B' lambda (decomposition/schur_complements.hpp): one K_ii
+  /// solve per subdomain, a better approximate inverse of F than B K B'.
+  la::Vector apply_dirichlet(const la::Vector& lambda, const decomposition::SchurComplements& schur) const;
   /// G lambda = R' B' lambda (replicated) and G' alpha = B R alpha. With a mask (one flag
   /// per owned row) G_A is G with the unmasked columns removed.
   la::Vector apply_G(const la::Vector& lambda, const std::vector<char>* mask = nullptr) const;
@@ -130,6 +134,22 @@ public:
 
 private:
   const FetiOperators& _feti;
+};
+
+/// The Dirichlet preconditioner B S B' as a LinearOperator.
+class DirichletPreconditioner : public la::LinearOperator
+{
+public:
+  DirichletPreconditioner(const FetiOperators& feti, const decomposition::SchurComplements& schur)
+      : _feti(feti), _schur(schur)
+  {
+  }
+  la::Index size() const override { return _feti.n_dual(); }
+  void apply(const la::Vector& x, la::Vector& y) const override { y = _feti.apply_dirichlet(x, _schur); }
+
+private:
+  const FetiOperators& _feti;
+  const decomposition::SchurComplements& _schur;
 };
 
 /// F as a LinearOperator, optionally scaled by `scale` (F / ||PFP|| in the dual penalty).

@@ -3,6 +3,8 @@
 
 #include "la/types.hpp"
 
+#include <chrono>
+
 namespace feticon::la
 {
 /// A square linear operator applied to vectors; solvers know nothing else about it.
@@ -26,5 +28,28 @@ public:
 
 private:
   const SparseMatrix& _matrix;
+};
+
+/// Counts the applications of an operator and the wall time spent in them, so that the cost
+/// of a solver's iteration can be compared with that of its operator (bench/).
+class TimedOperator : public LinearOperator
+{
+public:
+  explicit TimedOperator(const LinearOperator& A) : _A(A) {}
+  Index size() const override { return _A.size(); }
+  void apply(const Vector& x, Vector& y) const override
+  {
+    const auto start = std::chrono::steady_clock::now();
+    _A.apply(x, y);
+    _seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ++_applications;
+  }
+  double seconds() const { return _seconds; }
+  int64_t applications() const { return _applications; }
+
+private:
+  const LinearOperator& _A;
+  mutable double _seconds = 0;
+  mutable int64_t _applications = 0;
 };
 } // namespace feticon::la

@@ -20,6 +20,9 @@ struct OuterIteration
   int proportioning_steps = 0;
   int hessian_multiplications = 0;
   int smalbe_outer = 0;
+  int64_t operator_applications = 0; ///< applications of H = PFP + rho Q by the QP solver
+  double operator_seconds = 0;       ///< wall time inside them (s)
+  double qp_seconds = 0;             ///< wall time of MPRGP / SMALBE-M (s), without the setup
   double residual_norm = 0;       ///< ||f_ext - f_int - B' lambda|| / ||f_ext|| after the update
   double displacement_change = 0; ///< ||du|| / ||u||
   int64_t active_contacts = 0;

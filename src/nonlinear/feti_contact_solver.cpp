@@ -65,6 +65,22 @@ la::Vector rows_by_id(const dual::FetiOperators& feti, const la::Vector& lambda,
   return out;
 }
 
+/// Nodes whose DOFs are on the boundary of the Dirichlet preconditioner's Schur complements
+/// besides the subdomain interfaces: supported nodes and the nodes of both contact surfaces
+/// (decomposition/schur_complements.hpp).
+std::vector<char> schur_boundary_nodes(const fem::Problem& problem, const fem::ConstrainedDofs& dirichlet)
+{
+  std::vector<char> boundary(problem.mesh.n_nodes(), 0);
+  for (int64_t dof : dirichlet.dofs)
+    if (!problem.eliminated[dof % 3]) // plane strain's u_z = 0 is no row
+      boundary[dof / 3] = 1;
+  for (const auto& pair : problem.contacts)
+    for (const std::string& set : {pair.slave, pair.master})
+      for (int32_t node : problem.mesh.face_set_nodes(set))
+        boundary[node] = 1;
+  return boundary;
+}
+
 std::string format_iteration(const OuterIteration& it)
 {
   char line[256];
@@ -106,11 +122,18 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
   decomposition::SubdomainSystem system(*decomp, problem.materials, settings.kinematics,
                                         settings.generalized_inverse);
   la::Vector u = la::Vector::Zero(decomp->n_primal());
+  const fem::ConstrainedDofs dirichlet = problem.all_constrained_dofs();
+  const bool use_schur = settings.dual.preconditioner == dual::DualPreconditioner::dirichlet;
+  const std::vector<char> schur_boundary = use_schur ? schur_boundary_nodes(problem, dirichlet) : std::vector<char>();
+  std::unique_ptr<decomposition::SchurComplements> schur;
+  auto update_stiffness = [&]
   {
     ScopedTimer t(timers, "assembly + factorization");
-    system.update(u); // K_0 and R(X), kept for the whole run (modified Newton)
-  }
-  const fem::ConstrainedDofs dirichlet = problem.all_constrained_dofs();
+    system.update(u);
+    if (use_schur)
+      schur = std::make_unique<decomposition::SchurComplements>(system, schur_boundary);
+  };
+  update_stiffness(); // K_0 and R(X), kept for the whole run (modified Newton)
   const la::Vector f_ext = problem.external_force();
   const la::Vector f_ext_stacked = decomp->scatter_split(f_ext);
   const double f_norm = std::max(f_ext.norm(), 1e-300);
@@ -165,10 +188,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       const bool refresh = !linear && ((settings.stiffness == StiffnessUpdate::load_step && k == 1 && step > 1) ||
                                        (settings.stiffness == StiffnessUpdate::iteration && (step > 1 || k > 1)));
       if (refresh)
-      {
-        ScopedTimer t(timers, "assembly + factorization");
-        system.update(u); // K_M(u) and R(X + u)
-      }
+        update_stiffness(); // K_M(u) and R(X + u)
       const la::Vector u_global = decomp->gather_mean(decomp->gather_stacked(u));
       contact::ContactConstraints contact_rows;
       la::Vector residual;
@@ -214,6 +234,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       if (k > 2 && out.history.back().displacement_change >= out.history.rbegin()[1].displacement_change)
         forcing = false;
       dual::DualPenaltyOptions dual_options = settings.dual;
+      dual_options.schur = schur.get();
       if (forcing)
       {
         const double forced = k == 1 ? settings.max_forcing_rtol
@@ -243,6 +264,9 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       it.proportioning_steps = solution.report.proportioning_steps;
       it.hessian_multiplications = solution.report.hessian_multiplications;
       it.smalbe_outer = solution.outer_iterations;
+      it.operator_applications = solution.operator_applications;
+      it.operator_seconds = solution.operator_seconds;
+      it.qp_seconds = solution.report.seconds;
       it.active_contacts = solution.active_contacts;
       it.feasibility_error = solution.feasibility_error;
       it.displacement_change =

@@ -1,0 +1,49 @@
+#pragma once
+/// @file Subdomain Schur complements on the boundary DOFs, for the FETI Dirichlet
+/// preconditioner (Farhat, Mandel, Roux 1994):
+///
+///   F^{-1} ~ B S B',   S = diag(S_s),   S_s = K_bb - K_bi K_ii^{-1} K_ib,
+///
+/// b the subdomain's boundary DOFs, i the interior ones. F = B K+ B' acts like the inverse of
+/// the Schur complements on the interface, so B S B' removes the H/h growth of its condition
+/// number down to (1 + log(H/h))^2 for equality rows; on the graded Hertz mesh, whose contact
+/// surface carries the smallest elements and is part of the interface, that is the growth
+/// that costs MPRGP steps (docs/benchmarks.md).
+///
+/// S_s is applied implicitly: one sparse product with K_ib, one CHOLMOD solve with K_ii and
+/// one product with K_bi, about the cost of one K_s+ application. The boundary is fixed for
+/// the run (contact rows change every outer iteration, K_ii is factorized once per stiffness):
+/// the DOFs of nodes shared with another subdomain and of the nodes flagged by the caller
+/// (Dirichlet and contact-surface nodes). A boundary DOF no row touches makes B S B' a
+/// slightly different SPD operator, still a preconditioner.
+
+#include "decomposition/subdomain_operators.hpp"
+#include "la/cholmod.hpp"
+
+#include <vector>
+
+namespace feticon::decomposition
+{
+class SchurComplements
+{
+public:
+  /// Factorizes K_ii of the subdomains this rank owns.
+  /// @param system        subdomain stiffnesses (kept by reference, must outlive this)
+  /// @param boundary_node one flag per mesh node: on the boundary whatever subdomain has it
+  SchurComplements(const SubdomainSystem& system, const std::vector<char>& boundary_node);
+
+  /// [0; S_s v_b] for a vector v over the active DOFs of owned subdomain s (its interior
+  /// entries are ignored).
+  la::Vector apply(int32_t s, const la::Vector& v) const;
+
+private:
+  struct Local
+  {
+    std::vector<int32_t> boundary, interior; ///< active DOFs, increasing
+    la::SparseMatrix K_bb, K_ib;
+    la::CholmodFactor K_ii;
+  };
+  const SubdomainSystem& _system;
+  std::vector<Local> _local; ///< per owned subdomain (index s - first owned)
+};
+} // namespace feticon::decomposition
