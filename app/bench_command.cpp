@@ -61,6 +61,7 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   out["problem"] = problem->name;
   out["displacements"] = file.settings.text("displacements");
   out["method"] = file.settings.text("method");
+  out["preconditioner"] = file.settings.text("qp.preconditioner");
   out["converged"] = solution.converged;
   if (!solution.converged)
     out["reason"] = solution.reason;

@@ -11,6 +11,7 @@
 #   bench/run.sh --only scalability                # parts: contact, scalability, mprgp
 #   bench/run.sh --feticon build-bench/feticon     # another build (default build/feticon)
 #   bench/run.sh --obstacle 1000 --obstacle-steps 1000   # MPRGP QP size n^2 and step cap
+#   bench/run.sh --preconditioners none,dirichlet  # dual preconditioners of the contact cases
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -22,6 +23,7 @@ only=contact,scalability,mprgp
 out=$root/bench/results
 obstacle=1000
 obstacle_steps=1000
+preconditioners=dirichlet
 while [[ $# -gt 0 ]]; do
   case $1 in
     --sizes) sizes=$2; shift 2 ;;
@@ -32,7 +34,8 @@ while [[ $# -gt 0 ]]; do
     --out) out=$2; shift 2 ;;
     --obstacle) obstacle=$2; shift 2 ;;
     --obstacle-steps) obstacle_steps=$2; shift 2 ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    --preconditioners) preconditioners=$2; shift 2 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1 (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -61,16 +64,21 @@ if [[ ,$only, == *,contact,* ]]; then
   for size in ${sizes//,/ }; do
     [[ -n ${refinement[$size]:-} ]] || { echo "bench/run.sh: unknown size $size (10k, 100k, 1M)" >&2; exit 1; }
     for kind in ${kinds//,/ }; do
-      run_case "contact.$size.$kind" --set hertz.refinement="${refinement[$size]}" \
-        --set subdomains="${subdomains[$size]}" --set displacements=$kind
+      for preconditioner in ${preconditioners//,/ }; do
+        run_case "contact.$size.$kind.$preconditioner" --set hertz.refinement="${refinement[$size]}" \
+          --set subdomains="${subdomains[$size]}" --set displacements=$kind \
+          --set qp.preconditioner=$preconditioner
+      done
     done
   done
 fi
 if [[ ,$only, == *,scalability,* ]]; then
   # H/h fixed: 256 cells (16 x 16 in the one layer) per subdomain, h halved twice.
-  for r in 1 2 4; do
-    run_case "scalability.r$r" --no-direct --set hertz.refinement=$r --set subdomain_cells=256 \
-      --set displacements=small
+  for preconditioner in ${preconditioners//,/ }; do
+    for r in 1 2 4; do
+      run_case "scalability.r$r.$preconditioner" --no-direct --set hertz.refinement=$r \
+        --set subdomain_cells=256 --set displacements=small --set qp.preconditioner=$preconditioner
+    done
   done
 fi
 if [[ ,$only, == *,mprgp,* ]]; then

@@ -46,6 +46,7 @@ PHASES = ["mesh", "decomposition", "assembly + factorization", "coarse problem",
 CONTACT = {
     "size": lambda c: c["case"].split(".")[1],
     "displacements": lambda c: c["displacements"],
+    "preconditioner": lambda c: c.get("preconditioner", "none"),
     "DOFs": lambda c: c["degrees_of_freedom"],
     "subdomains": lambda c: c["subdomains"],
     "dual": lambda c: c["dual_size"],
@@ -67,7 +68,8 @@ CONTACT = {
     "reps": lambda c: c["reps"],
 }
 SCALABILITY = {
-    "refinement": lambda c: c["case"].split(".r")[1],
+    "refinement": lambda c: c["case"].split(".")[1][1:],
+    "preconditioner": lambda c: c.get("preconditioner", "none"),
     "DOFs": lambda c: c["degrees_of_freedom"],
     "subdomains": lambda c: c["subdomains"],
     "dual": lambda c: c["dual_size"],
@@ -117,12 +119,12 @@ def table(title, columns, cases, results, csv_name, groups=None):
 
 
 CONTACT_GROUPS = [
-    ["size", "displacements", "DOFs", "subdomains", "dual", "outer", "MPRGP", "F products", "peak MiB",
+    ["size", "displacements", "preconditioner", "DOFs", "subdomains", "dual", "outer", "MPRGP", "F products", "peak MiB",
      "converged", "reps"],
-    ["size", "displacements"] + [phase + " (s)" for phase in PHASES],
-    ["size", "displacements", "total solve (s)", "direct assembly (s)", "direct factorization (s)",
+    ["size", "displacements", "preconditioner"] + [phase + " (s)" for phase in PHASES],
+    ["size", "displacements", "preconditioner", "total solve (s)", "direct assembly (s)", "direct factorization (s)",
      "direct solve (s)", "factor nnz", "contact / direct"],
-    ["size", "displacements", "MPRGP", "QP (s)", "s / MPRGP iteration", "s / H application",
+    ["size", "displacements", "preconditioner", "MPRGP", "QP (s)", "s / MPRGP iteration", "s / H application",
      "iteration / H application"],
 ]
 
@@ -136,9 +138,10 @@ def main():
         case["case"] = name
     size_order = {"10k": 0, "100k": 1, "1M": 2}
     contact = sorted((c for n, c in cases.items() if n.startswith("contact.")),
-                     key=lambda c: (size_order.get(c["case"].split(".")[1], 9), c["case"].split(".")[2] != "small"))
+                     key=lambda c: (size_order.get(c["case"].split(".")[1], 9), c["case"].split(".")[2] != "small",
+                                    c.get("preconditioner", "")))
     scalability = sorted((c for n, c in cases.items() if n.startswith("scalability.")),
-                         key=lambda c: float(c["case"].split(".r")[1]))
+                         key=lambda c: (c.get("preconditioner", ""), float(c["case"].split(".")[1][1:])))
     mprgp = [c for n, c in sorted(cases.items()) if n.startswith("mprgp.")]
     text = ""
     if contact:

@@ -56,7 +56,7 @@ std::vector<SettingSpec> make_specs()
        Type::integer, {}, 0, 1e9, false},
       {"partitioner", "metis", "metis or structured", Type::text, {"metis", "structured"}, 0, 0, false},
       {"qp.rtol", "1e-8", "QP stopping tolerance ||g_P|| <= rtol ||b||", Type::number, {}, 0, 1, true},
-      {"qp.preconditioner", "none", "MPRGP preconditioning in the face: none, lumped (P B K B' P) or "
+      {"qp.preconditioner", "dirichlet", "MPRGP preconditioning in the face: none, lumped (P B K B' P) or "
        "dirichlet (P B S B' P, S the subdomain Schur complements on their boundary)",
        Type::text, {"none", "lumped", "dirichlet"}, 0, 0, false},
       {"qp.max_iterations", "20000", "MPRGP iteration limit", Type::integer, {}, 1, 1e9, false},

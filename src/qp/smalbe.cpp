@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "common/log.hpp"
+#include "common/timer.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -80,6 +81,7 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
     return final_test || gp <= std::min(M * cx, eta);
   };
   RaisedPenaltyOperator H(_H, _C);
+  auto last_progress = std::chrono::steady_clock::now();
   auto mprgp = std::make_unique<Mprgp>(H, inner);
   for (int k = 0; k < _options.max_outer_iterations; ++k)
   {
@@ -110,7 +112,15 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
     line << "    SMALBE-M outer " << k + 1 << ": MPRGP steps " << r.iterations << ", ||g_P||/||b|| "
          << r.projected_gradient_norm / b_norm << ", ||Cx||/||b|| " << report.equality_residual
          << ", M " << M << ", rho " << rho;
-    log::iteration(line.str());
+    // Long solves (a minute per QP at 1M DOFs) also report at the summary level, at most
+    // every 10 s, so that a user sees progress between the outer-iteration lines.
+    if (log::enabled(log::Level::iterations))
+      log::iteration(line.str());
+    else if (seconds_since(last_progress) >= 10)
+    {
+      log::info(line.str() + " (total MPRGP steps " + std::to_string(report.iterations) + ")");
+      last_progress = std::chrono::steady_clock::now();
+    }
     // r.cost is L(x, omega, rho) = 1/2 x'(H + (rho - rho_0) C'C)x - b'x + omega'Cx for the
     // multiplier and penalty of this solve.
     const double L = r.cost;
