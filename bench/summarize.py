@@ -64,6 +64,9 @@ CONTACT = {
     "s / MPRGP iteration": lambda c: c["qp_seconds"] / max(c["qp.iterations"], 1),
     "s / H application": lambda c: c["seconds_per_operator_application"],
     "iteration / H application": lambda c: c["ratio_iteration_to_operator"],
+    "s / preconditioner application": lambda c: c.get("seconds_per_preconditioner_application", 0.0),
+    "iteration / (H + preconditioner)": lambda c: c.get("ratio_iteration_to_operator_and_preconditioner",
+                                                         c["ratio_iteration_to_operator"]),
     "converged": lambda c: c["converged"],
     "reps": lambda c: c["reps"],
 }
@@ -79,6 +82,8 @@ SCALABILITY = {
     "dual solve (s)": lambda c: c["timings_seconds.dual solve (MPRGP)"],
     "s / MPRGP iteration": lambda c: c["qp_seconds"] / max(c["qp.iterations"], 1),
     "iteration / H application": lambda c: c["ratio_iteration_to_operator"],
+    "iteration / (H + preconditioner)": lambda c: c.get("ratio_iteration_to_operator_and_preconditioner",
+                                                         c["ratio_iteration_to_operator"]),
     "reps": lambda c: c["reps"],
 }
 MPRGP = {
@@ -125,7 +130,7 @@ CONTACT_GROUPS = [
     ["size", "displacements", "preconditioner", "total solve (s)", "direct assembly (s)", "direct factorization (s)",
      "direct solve (s)", "factor nnz", "contact / direct"],
     ["size", "displacements", "preconditioner", "MPRGP", "QP (s)", "s / MPRGP iteration", "s / H application",
-     "iteration / H application"],
+     "s / preconditioner application", "iteration / H application", "iteration / (H + preconditioner)"],
 ]
 
 

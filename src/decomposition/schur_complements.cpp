@@ -1,5 +1,6 @@
 #include "decomposition/schur_complements.hpp"
 
+#include "common/parallel.hpp"
 #include "la/submatrix.hpp"
 
 #include <string>
@@ -33,10 +34,11 @@ SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vec
     : _system(system)
 {
   const Decomposition& decomp = system.decomposition();
-  for (int32_t s = decomp.first_owned(); s < decomp.end_owned(); ++s)
+  _local.resize(decomp.end_owned() - decomp.first_owned());
+  parallel_for(decomp.first_owned(), decomp.end_owned(), [&](int32_t s)
   {
     const Subdomain& sub = decomp.subdomain(s);
-    Local& local = _local.emplace_back();
+    Local& local = _local[s - decomp.first_owned()];
     for (int32_t dof = 0; dof < sub.n_dofs(); ++dof)
     {
       const int32_t node = sub.domain.local_to_global[sub.full_of_active[dof] / 3];
@@ -55,7 +57,7 @@ SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vec
       local.K_ii.factorize(la::principal_submatrix(K, position, static_cast<int32_t>(local.interior.size())),
                            what.c_str());
     }
-  }
+  });
 }
 
 la::Vector SchurComplements::apply(int32_t s, const la::Vector& v) const

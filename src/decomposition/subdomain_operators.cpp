@@ -1,6 +1,7 @@
 #include "decomposition/subdomain_operators.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 #include "decomposition/rigid_body_modes.hpp"
 #include "la/submatrix.hpp"
 
@@ -30,8 +31,9 @@ la::Vector SubdomainSystem::full_local(int32_t s, const la::Vector& u_stacked) c
 void SubdomainSystem::update(const la::Vector& u_stacked)
 {
   FETICON_CHECK(u_stacked.size() == _decomposition.n_primal(), "stacked displacement size");
-  std::vector<int64_t> owned_kernel_dims;
-  for (int32_t s = _decomposition.first_owned(); s < _decomposition.end_owned(); ++s)
+  const int32_t first = _decomposition.first_owned();
+  std::vector<int64_t> owned_kernel_dims(_decomposition.end_owned() - first);
+  parallel_for(first, _decomposition.end_owned(), [&](int32_t s)
   {
     const Subdomain& sub = _decomposition.subdomain(s);
     const fem::Assembler& assembler = *_assemblers[sub.id];
@@ -53,8 +55,8 @@ void SubdomainSystem::update(const la::Vector& u_stacked)
         if (sub.active_of_full[3 * node + i] >= 0)
           candidates.push_back(sub.active_of_full[3 * node + i]);
     op.K_plus.setup(op.K, op.R, candidates, _method, "subdomain " + std::to_string(sub.id));
-    owned_kernel_dims.push_back(op.R.cols());
-  }
+    owned_kernel_dims[s - first] = op.R.cols();
+  });
   // Kernel blocks of all subdomains, in subdomain order (the coarse space is replicated).
   const std::vector<int64_t> dims = _decomposition.comm().all_gather(owned_kernel_dims);
   _kernel_offsets.assign(1, 0);
@@ -65,14 +67,14 @@ void SubdomainSystem::update(const la::Vector& u_stacked)
 la::Vector SubdomainSystem::internal_force(const la::Vector& u_stacked) const
 {
   la::Vector f(_decomposition.n_primal());
-  for (int32_t s = _decomposition.first_owned(); s < _decomposition.end_owned(); ++s)
+  parallel_for(_decomposition.first_owned(), _decomposition.end_owned(), [&](int32_t s)
   {
     const Subdomain& sub = _decomposition.subdomain(s);
     const la::Vector f_full = _assemblers[sub.id]->internal_force(full_local(sub.id, u_stacked));
     auto seg = _decomposition.segment(f, sub.id);
     for (int32_t k = 0; k < sub.n_dofs(); ++k)
       seg(k) = f_full(sub.full_of_active[k]);
-  }
+  });
   return f;
 }
 

@@ -115,8 +115,10 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   // After scaling, ||H|| = max(||P F^ P||, rho) ~ max(1, rho): no second power iteration.
   mprgp.alpha_bar = 1.8 / std::max(1.0, options.rho);
   std::optional<DualPreconditionerOperator> preconditioner;
+  std::optional<la::TimedOperator> timed_preconditioner;
   if (options.preconditioner != DualPreconditioner::none)
-    mprgp.preconditioner = &preconditioner.emplace(feti, projector, options, norm.value);
+    mprgp.preconditioner =
+        &timed_preconditioner.emplace(preconditioner.emplace(feti, projector, options, norm.value));
   if (options.method == DualMethod::dual_penalty)
   {
     qp::Mprgp solver(H, mprgp);
@@ -141,6 +143,11 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   out.report.hessian_multiplications += norm.applications;
   out.operator_applications = H.applications();
   out.operator_seconds = H.seconds();
+  if (timed_preconditioner)
+  {
+    out.preconditioner_applications = timed_preconditioner->applications();
+    out.preconditioner_seconds = timed_preconditioner->seconds();
+  }
   out.lambda = lambda_tilde + mu;
   const double e_norm = e.norm();
   out.feasibility_error =

@@ -61,6 +61,8 @@ struct DualSolution
   /// report.hessian_multiplications only) and the wall time spent in them (s).
   int64_t operator_applications = 0;
   double operator_seconds = 0;
+  int64_t preconditioner_applications = 0; ///< and of the preconditioner
+  double preconditioner_seconds = 0;
 };
 
 /// Vectors are this rank's parts (FetiOperators): dual ones over its owned rows, primal ones

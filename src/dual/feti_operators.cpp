@@ -1,6 +1,7 @@
 #include "dual/feti_operators.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 
 #include <algorithm>
 #include <map>
@@ -240,13 +241,13 @@ la::Vector FetiOperators::sum_contributions(LocalOperator&& local_op) const
 {
   const auto& decomp = _system.decomposition();
   la::Vector contributions(_n_contributions);
-  for (int32_t s = decomp.first_owned(); s < decomp.end_owned(); ++s)
+  parallel_for(decomp.first_owned(), decomp.end_owned(), [&](int32_t s)
   {
     const int32_t l = s - decomp.first_owned();
     if (!_sub_rows[l].empty())
       contributions.segment(_contribution_start[l], static_cast<la::Index>(_sub_rows[l].size())) =
           local_op(s);
-  }
+  });
   const auto received = _comm.exchange(_to_owner.ranks, pack(_to_owner.send, contributions),
                                        sizes_of(_to_owner.recv));
   la::Index next = _contribution_start.back();
@@ -298,8 +299,8 @@ la::Vector FetiOperators::apply_K_plus(const la::Vector& f) const
 {
   const auto& decomp = _system.decomposition();
   la::Vector u(decomp.n_primal());
-  for (int32_t s = decomp.first_owned(); s < decomp.end_owned(); ++s)
-    decomp.segment(u, s) = _system.operators(s).K_plus.apply(la::Vector(decomp.segment(f, s)));
+  parallel_for(decomp.first_owned(), decomp.end_owned(), [&](int32_t s)
+               { decomp.segment(u, s) = _system.operators(s).K_plus.apply(la::Vector(decomp.segment(f, s))); });
   return u;
 }
 

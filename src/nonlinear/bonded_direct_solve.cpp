@@ -1,6 +1,7 @@
 #include "nonlinear/bonded_direct_solve.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 #include "common/timer.hpp"
 #include "fem/assembler.hpp"
 #include "la/cholmod.hpp"
@@ -23,6 +24,8 @@ std::vector<int32_t> active_slave_nodes(const ContactSolution& solution)
 BondedSolve bonded_direct_solve(const fem::Problem& problem, const SolverSettings& settings,
                                 const std::vector<int32_t>& bonded_nodes)
 {
+  // One undecomposed factorization: BLAS is the parallelism (common/parallel.hpp).
+  const ScopedBlasThreads blas(threads());
   problem.validate();
   FETICON_CHECK(problem.contacts.size() == 1, "the bonded direct solve handles one contact pair");
   BondedSolve out;

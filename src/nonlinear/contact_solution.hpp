@@ -22,6 +22,8 @@ struct OuterIteration
   int smalbe_outer = 0;
   int64_t operator_applications = 0; ///< applications of H = PFP + rho Q by the QP solver
   double operator_seconds = 0;       ///< wall time inside them (s)
+  int64_t preconditioner_applications = 0; ///< applications of the dual preconditioner
+  double preconditioner_seconds = 0;       ///< wall time inside them (s)
   double qp_seconds = 0;             ///< wall time of MPRGP / SMALBE-M (s), without the setup
   double residual_norm = 0;       ///< ||f_ext - f_int - B' lambda|| / ||f_ext|| after the update
   double displacement_change = 0; ///< ||du|| / ||u||

@@ -1,6 +1,7 @@
 #include "nonlinear/direct_newton.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 #include "common/log.hpp"
 #include "la/cholmod.hpp"
 
@@ -13,6 +14,8 @@ DirectNewtonReport solve_direct_newton(const fem::Assembler& assembler,
                                        const la::Vector& f_ext, la::Vector& u,
                                        const DirectNewtonOptions& options)
 {
+  // One undecomposed factorization: BLAS is the parallelism (common/parallel.hpp).
+  const ScopedBlasThreads blas(threads());
   const int64_t n = assembler.domain().n_dofs();
   FETICON_CHECK(f_ext.size() == n && u.size() == n, "direct Newton: vector sizes do not match "
                                                     "the mesh (" << n << " DOFs)");

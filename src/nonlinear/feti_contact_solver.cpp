@@ -266,6 +266,8 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       it.smalbe_outer = solution.outer_iterations;
       it.operator_applications = solution.operator_applications;
       it.operator_seconds = solution.operator_seconds;
+      it.preconditioner_applications = solution.preconditioner_applications;
+      it.preconditioner_seconds = solution.preconditioner_seconds;
       it.qp_seconds = solution.report.seconds;
       it.active_contacts = solution.active_contacts;
       it.feasibility_error = solution.feasibility_error;

@@ -1,6 +1,7 @@
 #include "nonlinear/primal_penalty_solver.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 #include "common/log.hpp"
 #include "fem/assembler.hpp"
 #include "la/cholmod.hpp"
@@ -27,6 +28,8 @@ void log_iteration(const OuterIteration& it)
 ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSettings& settings,
                                      TimerTable& timers)
 {
+  // One undecomposed factorization: BLAS is the parallelism (common/parallel.hpp).
+  const ScopedBlasThreads blas(threads());
   problem.validate();
   FETICON_CHECK(problem.contacts.size() == 1, "the primal penalty solver handles one contact pair");
   const auto run_start = std::chrono::steady_clock::now();

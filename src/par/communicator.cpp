@@ -1,9 +1,10 @@
 #include "par/communicator.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 
+#include <algorithm>
 #include <cstdlib>
-#include <dlfcn.h>
 
 namespace feticon::par
 {
@@ -29,16 +30,15 @@ std::vector<T> gather_impl(MPI_Comm comm, int size, const std::vector<T>& local,
 Environment::Environment(int& argc, char**& argv)
 {
   MPI_Init(&argc, &argv);
-  int size = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  // With several ranks the ranks are the parallelism: OpenBLAS threads inside CHOLMOD on top
-  // of them oversubscribe the cores, and a thread count that varies with the ranks' binding
-  // changes the rounding of the factor solves, so results would depend on the rank count.
-  // OpenBLAS is found at run time (CHOLMOD links the generic libblas).
-  if (size > 1)
-    if (auto* set_threads =
-            reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
-      set_threads(1);
+  // Threads per rank: the node's cores shared among the ranks on it (common/parallel.hpp;
+  // OMP_NUM_THREADS overrides). Subdomain loops are threaded, BLAS single-threaded, so the
+  // arithmetic of every subdomain is the same for any rank and thread count.
+  MPI_Comm node;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  int ranks_on_node = 1;
+  MPI_Comm_size(node, &ranks_on_node);
+  MPI_Comm_free(&node);
+  set_threads(hardware_cores() / std::max(1, ranks_on_node));
 }
 
 Environment::~Environment()

@@ -1,6 +1,7 @@
 /// Linear Total FETI against an independent direct CHOLMOD solve of the undecomposed
 /// problem, and numerical scalability with H/h fixed (issue 3).
 
+#include "common/parallel.hpp"
 #include "decomposition/constraint_rows.hpp"
 #include "decomposition/schur_complements.hpp"
 #include "decomposition/subdomain_operators.hpp"
@@ -14,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 
@@ -224,4 +226,21 @@ TEST(FetiLinear, DirichletPreconditionerGrowsLogarithmicallyInHOverSmallH)
   // = 1.82 times more; measured 13, 17, 18 (lumped 14, 20, 28; none 48, 59, 61).
   EXPECT_LE(dirichlet.back(), (1 + std::log(8.0)) / (1 + std::log(2.0)) * dirichlet.front());
   EXPECT_LT(dirichlet.back() - dirichlet.front(), lumped.back() - lumped.front());
+}
+
+// Reference: the same solve on one thread. Subdomain loops run on threads with one BLAS
+// thread per subdomain and sums in a fixed order (common/parallel.hpp), so the thread count
+// must not change a single bit: same CG iterations, identical displacements.
+TEST(FetiLinear, ThreadCountDoesNotChangeTheResult)
+{
+  const BeamProblem p = beam(8, 8, 8, Eigen::Vector3d(2, 1, 1));
+  const auto partition = decomposition::partition_metis(p.mesh, 8);
+  unsetenv("OMP_NUM_THREADS");
+  set_threads(1);
+  const FetiRun one = feti_solution(p, partition, 1e-10);
+  set_threads(2);
+  const FetiRun two = feti_solution(p, partition, 1e-10);
+  set_threads(hardware_cores());
+  EXPECT_EQ(one.report.iterations, two.report.iterations);
+  EXPECT_EQ((one.u_global - two.u_global).cwiseAbs().maxCoeff(), 0.0);
 }

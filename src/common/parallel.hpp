@@ -1,0 +1,50 @@
+#pragma once
+/// @file Threads inside one process (rank): the loops over a rank's subdomains run on a small
+/// pool of threads, and BLAS (OpenBLAS under CHOLMOD) runs single-threaded inside them.
+///
+/// Why subdomains and not BLAS: the subdomain solves in every F application are supernodal
+/// triangular solves (dtrsv), which OpenBLAS threads poorly; with its threads on, 40 % of the
+/// CPU time of a 1M-DOF Hertz solve went to the kernel (sched_yield of spinning workers,
+/// docs/profile.md). One BLAS thread per subdomain solve also makes every subdomain's
+/// arithmetic the same whatever the thread and rank counts, so results stay bitwise
+/// independent of both (docs/distributed.md).
+///
+/// Why our own pool and not OpenMP: libgomp's workers spin at the end of a loop; with two
+/// processes on two cores (CTest -j2, two users' jobs) each spinning thread held the core the
+/// other process needed and the test suite took 3x longer. These workers sleep on a
+/// condition variable.
+///
+/// Threads per rank: OMP_NUM_THREADS if set (the usual knob of HPC batch systems), else the
+/// cores of the node divided by the ranks on it (par::Environment); without MPI, all cores.
+
+#include <cstdint>
+#include <exception>
+#include <functional>
+
+namespace feticon
+{
+/// Sets the threads of parallel_for (at least 1; OMP_NUM_THREADS overrides) and BLAS to one
+/// thread. Call before the first parallel_for.
+void set_threads(int threads);
+/// Threads parallel_for uses.
+int threads();
+/// Cores of this machine (std::thread::hardware_concurrency, at least 1).
+int hardware_cores();
+
+/// BLAS threads inside the scope (one large factorization, e.g. a direct reference solve,
+/// where BLAS is the only parallelism); back to one thread after it.
+class ScopedBlasThreads
+{
+public:
+  explicit ScopedBlasThreads(int threads);
+  ~ScopedBlasThreads();
+  ScopedBlasThreads(const ScopedBlasThreads&) = delete;
+  ScopedBlasThreads& operator=(const ScopedBlasThreads&) = delete;
+};
+
+/// body(i) for i in [first, end), spread over threads() threads (the caller is one of
+/// them); indices are handed out one at a time, since subdomains differ in cost. Iterations
+/// must write disjoint data. The first exception thrown is rethrown in the caller after all
+/// iterations ended. A parallel_for inside a body runs serially.
+void parallel_for(int32_t first, int32_t end, const std::function<void(int32_t)>& body);
+} // namespace feticon
