@@ -160,9 +160,9 @@ void set_threads(int threads)
 
 int threads() { return configured_threads(); }
 
-void parallel_for(int32_t first, int32_t end, const std::function<void(int32_t)>& body)
+void parallel_for(int32_t first, int32_t end, int64_t work, const std::function<void(int32_t)>& body)
 {
-  ThreadPool* p = t_inside_loop || end - first <= 1 ? nullptr : pool();
+  ThreadPool* p = t_inside_loop || end - first <= 1 || work < min_parallel_work ? nullptr : pool();
   if (!p)
   {
     for (int32_t i = first; i < end; ++i)

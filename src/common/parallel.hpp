@@ -42,9 +42,16 @@ public:
   ScopedBlasThreads& operator=(const ScopedBlasThreads&) = delete;
 };
 
+/// Below this much work (degrees of freedom of the subdomains in the loop) a loop runs
+/// serially: waking the workers costs more than it saves. Measured on Hertz with 4
+/// subdomains and 2 threads: 9 744 DOFs 0.72 s serial against 0.93 s threaded, 37 620 DOFs
+/// 7.9 s against 5.3 s.
+constexpr int64_t min_parallel_work = 20000;
+
 /// body(i) for i in [first, end), spread over threads() threads (the caller is one of
-/// them); indices are handed out one at a time, since subdomains differ in cost. Iterations
-/// must write disjoint data. The first exception thrown is rethrown in the caller after all
-/// iterations ended. A parallel_for inside a body runs serially.
-void parallel_for(int32_t first, int32_t end, const std::function<void(int32_t)>& body);
+/// them) when `work` >= min_parallel_work; indices are handed out one at a time, since
+/// subdomains differ in cost. Iterations must write disjoint data. The first exception
+/// thrown is rethrown in the caller after all iterations ended. A parallel_for inside a
+/// body runs serially.
+void parallel_for(int32_t first, int32_t end, int64_t work, const std::function<void(int32_t)>& body);
 } // namespace feticon

@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "common/parallel.hpp"
+#include "common/timer.hpp"
 #include "decomposition/rigid_body_modes.hpp"
 #include "la/submatrix.hpp"
 
@@ -28,12 +29,13 @@ la::Vector SubdomainSystem::full_local(int32_t s, const la::Vector& u_stacked) c
   return full;
 }
 
-void SubdomainSystem::update(const la::Vector& u_stacked)
+void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
 {
   FETICON_CHECK(u_stacked.size() == _decomposition.n_primal(), "stacked displacement size");
   const int32_t first = _decomposition.first_owned();
-  std::vector<int64_t> owned_kernel_dims(_decomposition.end_owned() - first);
-  parallel_for(first, _decomposition.end_owned(), [&](int32_t s)
+  std::vector<std::vector<int32_t>> fixing_candidates(_decomposition.end_owned() - first);
+  auto start = std::chrono::steady_clock::now();
+  parallel_for(first, _decomposition.end_owned(), _decomposition.n_primal(), [&](int32_t s)
   {
     const Subdomain& sub = _decomposition.subdomain(s);
     const fem::Assembler& assembler = *_assemblers[sub.id];
@@ -48,13 +50,20 @@ void SubdomainSystem::update(const la::Vector& u_stacked)
     for (int32_t n = 0; n < sub.domain.n_nodes(); ++n)
       x.row(n) += u_full.segment<3>(3 * n).transpose();
     op.R = rigid_body_modes(x, sub.full_of_active);
-
-    std::vector<int32_t> candidates;
     for (int32_t node : choose_fixing_nodes(x))
       for (int i = 0; i < 3; ++i)
         if (sub.active_of_full[3 * node + i] >= 0)
-          candidates.push_back(sub.active_of_full[3 * node + i]);
-    op.K_plus.setup(op.K, op.R, candidates, _method, "subdomain " + std::to_string(sub.id));
+          fixing_candidates[s - first].push_back(sub.active_of_full[3 * node + i]);
+  });
+  if (timers)
+    timers->add("assembly", seconds_since(start));
+
+  start = std::chrono::steady_clock::now();
+  std::vector<int64_t> owned_kernel_dims(_decomposition.end_owned() - first);
+  parallel_for(first, _decomposition.end_owned(), _decomposition.n_primal(), [&](int32_t s)
+  {
+    SubdomainOperators& op = _operators[s];
+    op.K_plus.setup(op.K, op.R, fixing_candidates[s - first], _method, "subdomain " + std::to_string(s));
     owned_kernel_dims[s - first] = op.R.cols();
   });
   // Kernel blocks of all subdomains, in subdomain order (the coarse space is replicated).
@@ -62,12 +71,14 @@ void SubdomainSystem::update(const la::Vector& u_stacked)
   _kernel_offsets.assign(1, 0);
   for (const int64_t k : dims)
     _kernel_offsets.push_back(_kernel_offsets.back() + k);
+  if (timers)
+    timers->add("factorization", seconds_since(start));
 }
 
 la::Vector SubdomainSystem::internal_force(const la::Vector& u_stacked) const
 {
   la::Vector f(_decomposition.n_primal());
-  parallel_for(_decomposition.first_owned(), _decomposition.end_owned(), [&](int32_t s)
+  parallel_for(_decomposition.first_owned(), _decomposition.end_owned(), _decomposition.n_primal(), [&](int32_t s)
   {
     const Subdomain& sub = _decomposition.subdomain(s);
     const la::Vector f_full = _assemblers[sub.id]->internal_force(full_local(sub.id, u_stacked));

@@ -1,6 +1,7 @@
 #pragma once
 /// @file Per-subdomain FETI data: stiffness K_s, kernel R_s and generalized inverse K_s^+.
 
+#include "common/timer.hpp"
 #include "decomposition/decomposition.hpp"
 #include "decomposition/generalized_inverse.hpp"
 #include "fem/assembler.hpp"
@@ -27,8 +28,9 @@ public:
                   fem::Kinematics kinematics, GeneralizedInverseMethod method);
 
   /// Assembles K_s at the stacked displacement `u` (material part K_M(u) in TL, K_0 when
-  /// u = 0 or linear), computes R_s from the coordinates X + u and factorizes.
-  void update(const la::Vector& u_stacked);
+  /// u = 0 or linear), computes R_s from the coordinates X + u and factorizes; with
+  /// `timers`, adds the wall time of the two to its "assembly" and "factorization".
+  void update(const la::Vector& u_stacked, TimerTable* timers = nullptr);
 
   /// Internal force of every subdomain at stacked displacement `u` (stacked).
   la::Vector internal_force(const la::Vector& u_stacked) const;

@@ -241,7 +241,7 @@ la::Vector FetiOperators::sum_contributions(LocalOperator&& local_op) const
 {
   const auto& decomp = _system.decomposition();
   la::Vector contributions(_n_contributions);
-  parallel_for(decomp.first_owned(), decomp.end_owned(), [&](int32_t s)
+  parallel_for(decomp.first_owned(), decomp.end_owned(), decomp.n_primal(), [&](int32_t s)
   {
     const int32_t l = s - decomp.first_owned();
     if (!_sub_rows[l].empty())
@@ -299,7 +299,7 @@ la::Vector FetiOperators::apply_K_plus(const la::Vector& f) const
 {
   const auto& decomp = _system.decomposition();
   la::Vector u(decomp.n_primal());
-  parallel_for(decomp.first_owned(), decomp.end_owned(), [&](int32_t s)
+  parallel_for(decomp.first_owned(), decomp.end_owned(), decomp.n_primal(), [&](int32_t s)
                { decomp.segment(u, s) = _system.operators(s).K_plus.apply(la::Vector(decomp.segment(f, s))); });
   return u;
 }

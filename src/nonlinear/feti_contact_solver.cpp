@@ -128,10 +128,12 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
   std::unique_ptr<decomposition::SchurComplements> schur;
   auto update_stiffness = [&]
   {
-    ScopedTimer t(timers, "assembly + factorization");
-    system.update(u);
+    system.update(u, &timers);
     if (use_schur)
+    {
+      ScopedTimer t(timers, "preconditioner setup"); // K_ii factorizations
       schur = std::make_unique<decomposition::SchurComplements>(system, schur_boundary);
+    }
   };
   update_stiffness(); // K_0 and R(X), kept for the whole run (modified Newton)
   const la::Vector f_ext = problem.external_force();

@@ -233,7 +233,9 @@ TEST(FetiLinear, DirichletPreconditionerGrowsLogarithmicallyInHOverSmallH)
 // must not change a single bit: same CG iterations, identical displacements.
 TEST(FetiLinear, ThreadCountDoesNotChangeTheResult)
 {
-  const BeamProblem p = beam(8, 8, 8, Eigen::Vector3d(2, 1, 1));
+  // 28 611 DOFs: above min_parallel_work, so the loops do run on two threads.
+  const BeamProblem p = beam(32, 16, 16, Eigen::Vector3d(2, 1, 1));
+  ASSERT_GE(3 * p.mesh.n_nodes(), min_parallel_work);
   const auto partition = decomposition::partition_metis(p.mesh, 8);
   unsetenv("OMP_NUM_THREADS");
   set_threads(1);

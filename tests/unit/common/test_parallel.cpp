@@ -36,7 +36,7 @@ TEST(ParallelFor, VisitsEveryIndexOnceOnSeveralThreads)
   std::set<std::thread::id> ids;
   std::mutex mutex;
   for (int repeat = 0; repeat < 50; ++repeat) // the pool is reused loop after loop
-    parallel_for(0, 1000, [&](int32_t i)
+    parallel_for(0, 1000, min_parallel_work, [&](int32_t i)
                  {
                    ++visits[i];
                    std::lock_guard lock(mutex);
@@ -45,14 +45,14 @@ TEST(ParallelFor, VisitsEveryIndexOnceOnSeveralThreads)
   for (const auto& v : visits)
     EXPECT_EQ(v.load(), 50);
   EXPECT_GE(ids.size(), 2u); // work did leave the calling thread
-  parallel_for(5, 5, [&](int32_t) { FAIL() << "empty range"; });
+  parallel_for(5, 5, min_parallel_work, [&](int32_t) { FAIL() << "empty range"; });
 }
 
 TEST(ParallelFor, RethrowsTheErrorOfAnIterationAfterTheLoop)
 {
   const Threads threads(2);
   std::atomic<int> done = 0;
-  EXPECT_THROW(parallel_for(0, 100,
+  EXPECT_THROW(parallel_for(0, 100, min_parallel_work,
                             [&](int32_t i)
                             {
                               if (i == 37)
@@ -63,7 +63,7 @@ TEST(ParallelFor, RethrowsTheErrorOfAnIterationAfterTheLoop)
   EXPECT_EQ(done.load(), 99); // the other iterations still ran
   // and the pool still works afterwards
   std::atomic<int> count = 0;
-  parallel_for(0, 10, [&](int32_t) { ++count; });
+  parallel_for(0, 10, min_parallel_work, [&](int32_t) { ++count; });
   EXPECT_EQ(count.load(), 10);
 }
 
@@ -71,10 +71,10 @@ TEST(ParallelFor, NestedLoopsRunSeriallyInTheirIteration)
 {
   const Threads threads(2);
   std::vector<int> sums(8, 0);
-  parallel_for(0, 8, [&](int32_t i)
+  parallel_for(0, 8, min_parallel_work, [&](int32_t i)
                {
                  const std::thread::id outer = std::this_thread::get_id();
-                 parallel_for(0, 10, [&](int32_t j)
+                 parallel_for(0, 10, min_parallel_work, [&](int32_t j)
                               {
                                 EXPECT_EQ(std::this_thread::get_id(), outer);
                                 sums[i] += j;
@@ -84,9 +84,16 @@ TEST(ParallelFor, NestedLoopsRunSeriallyInTheirIteration)
     EXPECT_EQ(s, 45);
 }
 
+TEST(ParallelFor, SmallWorkRunsInTheCaller)
+{
+  const Threads threads(2);
+  const std::thread::id caller = std::this_thread::get_id();
+  parallel_for(0, 20, min_parallel_work - 1, [&](int32_t) { EXPECT_EQ(std::this_thread::get_id(), caller); });
+}
+
 TEST(ParallelFor, OneThreadRunsInTheCaller)
 {
   const Threads threads(1);
   const std::thread::id caller = std::this_thread::get_id();
-  parallel_for(0, 20, [&](int32_t) { EXPECT_EQ(std::this_thread::get_id(), caller); });
+  parallel_for(0, 20, min_parallel_work, [&](int32_t) { EXPECT_EQ(std::this_thread::get_id(), caller); });
 }
