@@ -288,17 +288,25 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
         // Expansion step: feasible half step to the blocking bound, then the projected
         // gradient step y = P(x - alpha_bar phi) = x - alpha_bar phi~ (the identity of
         // ALGORITHMS.md section 5); the projection puts active components exactly on l.
-        x -= alpha_f * p;
-        if (blocking >= 0)
-          x[blocking] = lower[blocking];
-        x = x.cwiseMax(lower);
-        g -= alpha_f * q;
-        free_gradient(x, g, lower, phi);
-        y = (x - _alpha_bar * phi).cwiseMax(lower);
-        _A.apply(y - x, q);
+        // One pass over the vectors instead of six (bench: on a cheap operator MPRGP is
+        // bound by its own vector traffic), with the same arithmetic per component:
+        //   x_h = max(x - alpha_f p, l) (x_h = l at the blocking component),
+        //   g_h = g - alpha_f q,  phi = free part of g_h,  y = max(x_h - alpha_bar phi, l),
+        // and the step y - x_h for the gradient update g = g_h + A (y - x_h).
+        y.resize(x.size());
+        for (Index i = 0; i < x.size(); ++i)
+        {
+          const double x_half = i == blocking ? lower[i] : std::max(x[i] - alpha_f * p[i], lower[i]);
+          const double g_half = g[i] - alpha_f * q[i];
+          const double phi_i = x_half > lower[i] ? g_half : 0.0;
+          const double y_i = std::max(x_half - _alpha_bar * phi_i, lower[i]);
+          y[i] = y_i - x_half;
+          x[i] = y_i;
+          g[i] = g_half;
+        }
+        _A.apply(y, q);
         ++report.hessian_multiplications;
         g += q;
-        x.swap(y);
         direction(x, g, p);
         ++report.expansion_steps;
         step = MprgpStep::expansion;
