@@ -76,26 +76,16 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   for (const auto& [phase, seconds] : timers.entries())
     timing[phase] = seconds;
   out["timings_seconds"] = timing;
-  const double dual_seconds = timers.total("dual solve (MPRGP)");
-  const int iterations = out["qp"]["iterations"];
-  out["dual_seconds_per_mprgp_iteration"] = dual_seconds / std::max(iterations, 1);
-  // One application of H = PFP + rho Q is one of F and two of the coarse projector; the
-  // ratio says what MPRGP and SMALBE-M add per iteration on top of it.
-  // With a preconditioner the limit of an iteration is one H and one preconditioner
-  // application.
-  int64_t applications = 0, preconditioner_applications = 0;
-  double operator_seconds = 0, preconditioner_seconds = 0, qp_seconds = 0;
-  for (const auto& it : solution.history)
-  {
-    applications += it.operator_applications;
-    operator_seconds += it.operator_seconds;
-    preconditioner_applications += it.preconditioner_applications;
-    preconditioner_seconds += it.preconditioner_seconds;
-    qp_seconds += it.qp_seconds;
-  }
-  const double per_application = operator_seconds / std::max<int64_t>(applications, 1);
+  const nonlinear::OuterIteration sum = qp_totals(solution);
+  const int iterations = sum.qp_iterations;
+  const double qp_seconds = sum.qp_seconds;
+  out["dual_seconds_per_mprgp_iteration"] = timers.total("dual solve (MPRGP)") / std::max(iterations, 1);
+  // One application of H = PFP + rho Q is one of F and two of the coarse projector; with a
+  // preconditioner the limit of an iteration is one H and one preconditioner application.
+  // The ratios say what MPRGP and SMALBE-M add per iteration on top of that.
+  const double per_application = sum.operator_seconds / std::max<int64_t>(sum.operator_applications, 1);
   const double per_preconditioner =
-      preconditioner_seconds / std::max<int64_t>(preconditioner_applications, 1);
+      sum.preconditioner_seconds / std::max<int64_t>(sum.preconditioner_applications, 1);
   out["qp_seconds"] = qp_seconds;
   out["seconds_per_operator_application"] = per_application;
   out["seconds_per_preconditioner_application"] = per_preconditioner;

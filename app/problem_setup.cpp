@@ -83,24 +83,35 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Prob
   return out;
 }
 
-nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution)
+nonlinear::OuterIteration qp_totals(const nonlinear::ContactSolution& solution)
 {
-  int iterations = 0, products = 0, smalbe = 0, cg = 0, expansion = 0, proportioning = 0;
+  nonlinear::OuterIteration sum;
   for (const auto& it : solution.history)
   {
-    cg += it.cg_steps;
-    expansion += it.expansion_steps;
-    proportioning += it.proportioning_steps;
-    iterations += it.qp_iterations;
-    products += it.hessian_multiplications;
-    smalbe += it.smalbe_outer;
+    sum.qp_iterations += it.qp_iterations;
+    sum.cg_steps += it.cg_steps;
+    sum.expansion_steps += it.expansion_steps;
+    sum.proportioning_steps += it.proportioning_steps;
+    sum.hessian_multiplications += it.hessian_multiplications;
+    sum.smalbe_outer += it.smalbe_outer;
+    sum.operator_applications += it.operator_applications;
+    sum.operator_seconds += it.operator_seconds;
+    sum.preconditioner_applications += it.preconditioner_applications;
+    sum.preconditioner_seconds += it.preconditioner_seconds;
+    sum.qp_seconds += it.qp_seconds;
   }
-  return {{"iterations", iterations},
-          {"hessian_multiplications", products},
-          {"cg_steps", cg},
-          {"expansion_steps", expansion},
-          {"proportioning_steps", proportioning},
-          {"smalbe_outer_iterations", smalbe},
+  return sum;
+}
+
+nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution)
+{
+  const nonlinear::OuterIteration sum = qp_totals(solution);
+  return {{"iterations", sum.qp_iterations},
+          {"hessian_multiplications", sum.hessian_multiplications},
+          {"cg_steps", sum.cg_steps},
+          {"expansion_steps", sum.expansion_steps},
+          {"proportioning_steps", sum.proportioning_steps},
+          {"smalbe_outer_iterations", sum.smalbe_outer},
           {"outer_iterations", solution.history.size()}};
 }
 } // namespace feticon::app

@@ -18,7 +18,6 @@
 /// cores of the node divided by the ranks on it (par::Environment); without MPI, all cores.
 
 #include <cstdint>
-#include <exception>
 #include <functional>
 
 namespace feticon
