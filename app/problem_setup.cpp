@@ -61,6 +61,7 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Prob
                             : preconditioner == "dirichlet" ? dual::DualPreconditioner::dirichlet
                                                             : dual::DualPreconditioner::none;
   out.dual.max_iterations = s.integer("qp.max_iterations");
+  out.dual.constraint_scaling = s.flag("qp.constraint_scaling");
   out.eps_n_factor = s.number("eps_n");
   out.formulation = s.text("contact.formulation") == "mortar" ? contact::ContactFormulation::mortar
                                                                : contact::ContactFormulation::node_to_segment;
@@ -79,7 +80,10 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Prob
   out.max_outer_iterations = s.integer("newton.max_iterations");
   out.displacement_tolerance = s.number("newton.tolerance");
   out.forcing = s.number("newton.forcing");
-  out.metis = s.text("partitioner") == "metis";
+  const std::string& partitioner = s.text("partitioner");
+  out.partitioner = partitioner == "metis" ? nonlinear::Partitioner::metis
+                    : partitioner == "rcb" ? nonlinear::Partitioner::rcb
+                                           : nonlinear::Partitioner::structured;
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <tuple>
 
 namespace feticon::decomposition
 {
@@ -43,6 +44,32 @@ void cell_face_graph(const mesh::HexMesh& mesh, std::vector<idx_t>& xadj,
   }
 }
 
+/// Parts per body in proportion to its cells (largest remainder), at least one each.
+std::vector<int> parts_per_body(const mesh::HexMesh& mesh, int n_subdomains)
+{
+  FETICON_CHECK(n_subdomains >= mesh.n_bodies(),
+                "partition: " << n_subdomains << " subdomains requested but the mesh has "
+                              << mesh.n_bodies() << " bodies (at least one each)");
+  FETICON_CHECK(n_subdomains <= mesh.n_cells(),
+                "partition: " << n_subdomains << " subdomains requested for " << mesh.n_cells()
+                              << " cells");
+  std::vector<int32_t> body_cells(mesh.n_bodies(), 0);
+  for (int32_t b : mesh.cell_body)
+    ++body_cells[b];
+  std::vector<int> body_parts(mesh.n_bodies(), 1);
+  int remaining = n_subdomains - mesh.n_bodies();
+  while (remaining-- > 0)
+  {
+    int best = 0;
+    for (int b = 1; b < mesh.n_bodies(); ++b)
+      if (static_cast<double>(body_cells[b]) / body_parts[b] >
+          static_cast<double>(body_cells[best]) / body_parts[best])
+        best = b;
+    ++body_parts[best];
+  }
+  return body_parts;
+}
+
 /// Renumbers ids to 0..k-1 in order of first appearance.
 Partition compact(std::vector<int32_t> ids)
 {
@@ -53,6 +80,54 @@ Partition compact(std::vector<int32_t> ids)
     id = it->second;
   }
   return {std::move(ids), static_cast<int32_t>(renumber.size())};
+}
+
+/// Recursive coordinate bisection of `cells` (indices into centroid/size) into n parts.
+void bisect(std::vector<int32_t>& cells, size_t first, size_t last, int n, int32_t first_id,
+            const std::vector<Eigen::Vector3d>& centroid, const std::vector<Eigen::Vector3d>& size,
+            std::vector<int32_t>& ids)
+{
+  if (n == 1)
+  {
+    for (size_t k = first; k < last; ++k)
+      ids[cells[k]] = first_id;
+    return;
+  }
+  // Axis of the largest extent measured in cells (graded meshes: cells, not metres).
+  int axis = 0;
+  double best = -1;
+  for (int d = 0; d < 3; ++d)
+  {
+    double lo = 1e300, hi = -1e300;
+    std::vector<double> sizes;
+    for (size_t k = first; k < last; ++k)
+    {
+      lo = std::min(lo, centroid[cells[k]](d));
+      hi = std::max(hi, centroid[cells[k]](d));
+      sizes.push_back(size[cells[k]](d));
+    }
+    std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+    const double extent = (hi - lo) / sizes[sizes.size() / 2];
+    if (extent > best)
+    {
+      best = extent;
+      axis = d;
+    }
+  }
+  const int n_first = n / 2;
+  const size_t middle = first + (last - first) * n_first / n;
+  // Ties along the axis (a column of cells at one abscissa) are broken by the other
+  // coordinates, so that a cut through the column leaves both halves connected.
+  const int second = (axis + 1) % 3, third = (axis + 2) % 3;
+  std::nth_element(cells.begin() + first, cells.begin() + middle, cells.begin() + last,
+                   [&](int32_t a, int32_t b)
+                   {
+                     const Eigen::Vector3d& x = centroid[a];
+                     const Eigen::Vector3d& y = centroid[b];
+                     return std::tie(x(axis), x(second), x(third)) < std::tie(y(axis), y(second), y(third));
+                   });
+  bisect(cells, first, middle, n_first, first_id, centroid, size, ids);
+  bisect(cells, middle, last, n - n_first, first_id + n_first, centroid, size, ids);
 }
 } // namespace
 
@@ -99,30 +174,10 @@ Partition partition_structured(const mesh::HexMesh& mesh, std::array<int, 3> par
 
 Partition partition_metis(const mesh::HexMesh& mesh, int n_subdomains)
 {
-  FETICON_CHECK(n_subdomains >= mesh.n_bodies(),
-                "METIS partition: " << n_subdomains << " subdomains requested but the mesh has "
-                                    << mesh.n_bodies() << " bodies (at least one each)");
-  FETICON_CHECK(n_subdomains <= mesh.n_cells(), "METIS partition: " << n_subdomains
-                                                                    << " subdomains requested for "
-                                                                    << mesh.n_cells() << " cells");
   std::vector<idx_t> xadj, adjncy;
   cell_face_graph(mesh, xadj, adjncy);
 
-  // Parts per body in proportion to its cells (largest remainder), at least one each.
-  std::vector<int32_t> body_cells(mesh.n_bodies(), 0);
-  for (int32_t b : mesh.cell_body)
-    ++body_cells[b];
-  std::vector<int> body_parts(mesh.n_bodies(), 1);
-  int remaining = n_subdomains - mesh.n_bodies();
-  while (remaining-- > 0)
-  {
-    int best = 0;
-    for (int b = 1; b < mesh.n_bodies(); ++b)
-      if (static_cast<double>(body_cells[b]) / body_parts[b] >
-          static_cast<double>(body_cells[best]) / body_parts[best])
-        best = b;
-    ++body_parts[best];
-  }
+  const std::vector<int> body_parts = parts_per_body(mesh, n_subdomains);
 
   std::vector<int32_t> ids(mesh.n_cells(), 0);
   int offset = 0;
@@ -167,6 +222,37 @@ Partition partition_metis(const mesh::HexMesh& mesh, int n_subdomains)
     for (size_t k = 0; k < cells.size(); ++k)
       ids[cells[k]] = offset + static_cast<int32_t>(part[k]);
     offset += static_cast<int>(nparts);
+  }
+  return split_disconnected(mesh, compact(std::move(ids)));
+}
+
+Partition partition_rcb(const mesh::HexMesh& mesh, int n_subdomains)
+{
+  std::vector<Eigen::Vector3d> centroid(mesh.n_cells()), size(mesh.n_cells());
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+  {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+    centroid[c].setZero();
+    for (int32_t node : mesh.cells[c])
+    {
+      const Eigen::Vector3d x = mesh.nodes.row(node).transpose();
+      centroid[c] += x / 8.0;
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    size[c] = hi - lo;
+  }
+  const std::vector<int> body_parts = parts_per_body(mesh, n_subdomains);
+  std::vector<int32_t> ids(mesh.n_cells(), 0);
+  int offset = 0;
+  for (int32_t body = 0; body < mesh.n_bodies(); ++body)
+  {
+    std::vector<int32_t> cells;
+    for (int32_t c = 0; c < mesh.n_cells(); ++c)
+      if (mesh.cell_body[c] == body)
+        cells.push_back(c);
+    bisect(cells, 0, cells.size(), body_parts[body], offset, centroid, size, ids);
+    offset += body_parts[body];
   }
   return split_disconnected(mesh, compact(std::move(ids)));
 }

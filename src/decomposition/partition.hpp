@@ -2,7 +2,7 @@
 /// @file Partitioning the cells of a mesh into subdomains.
 ///
 /// Every subdomain lies in one body and is connected through faces, so that its kernel
-/// is exactly the rigid-body modes (6 in 3D). Both partitioners enforce this: bodies
+/// is exactly the rigid-body modes (6 in 3D). All partitioners enforce this: bodies
 /// are partitioned separately and disconnected pieces are split into separate subdomains.
 
 #include "mesh/hex_mesh.hpp"
@@ -27,6 +27,10 @@ Partition partition_structured(const mesh::HexMesh& mesh, std::array<int, 3> par
 /// METIS k-way partition of the cell dual graph (cells adjacent through faces) into
 /// about `n_subdomains` parts, shared among bodies in proportion to their cell counts.
 Partition partition_metis(const mesh::HexMesh& mesh, int n_subdomains);
+
+/// Recursive coordinate bisection: each body's cells are halved along the axis of largest
+/// extent (in cells) until about `n_subdomains` parts, shared among bodies like METIS.
+Partition partition_rcb(const mesh::HexMesh& mesh, int n_subdomains);
 
 /// Splits every subdomain that is not face-connected into its connected pieces.
 Partition split_disconnected(const mesh::HexMesh& mesh, const Partition& partition);

@@ -1,6 +1,7 @@
 #include "dual/dual_penalty_problem.hpp"
 
 #include "common/error.hpp"
+#include "dual/constraint_scaling.hpp"
 #include "dual/primal_recovery.hpp"
 #include "dual/projector.hpp"
 #include "qp/norm_estimate.hpp"
@@ -26,16 +27,18 @@ public:
 private:
   const CoarseProjector& _projector;
 };
-/// M = s P X P + Q / rho, X = B K B' (lumped) or B S B' (Dirichlet): the FETI
-/// preconditioner on Im P (scaled like F^ = F / s) and the exact inverse of H = ... + rho Q
-/// on Im Q.
+/// M = s P Y X Y P + Q / rho, X = B K B' (lumped) or B S B' (Dirichlet), Y = (B B')^{-1}:
+/// the FETI preconditioner on Im P (scaled like F^ = F / s) and the exact inverse of
+/// H = ... + rho Q on Im Q.
 class DualPreconditionerOperator : public la::LinearOperator
 {
 public:
   DualPreconditionerOperator(const FetiOperators& feti, const CoarseProjector& projector,
-                             const DualPenaltyOptions& options, double s)
+                             const DualPenaltyOptions& options, double s, int64_t n_equality)
       : _feti(feti), _projector(projector), _options(options), _s(s)
   {
+    if (options.constraint_scaling)
+      _scaling.emplace(feti, n_equality);
     FETICON_CHECK(options.preconditioner != DualPreconditioner::dirichlet || options.schur,
                   "the Dirichlet preconditioner needs the subdomain Schur complements");
   }
@@ -43,17 +46,21 @@ public:
   void apply(const la::Vector& x, la::Vector& y) const override
   {
     const la::Vector q = _projector.apply_Q(x);
+    const la::Vector p = scale(x - q);
     const la::Vector Xp = _options.preconditioner == DualPreconditioner::dirichlet
-                              ? _feti.apply_dirichlet(x - q, *_options.schur)
-                              : _feti.apply_lumped(x - q);
-    y = _s * _projector.apply_P(Xp) + q / _options.rho;
+                              ? _feti.apply_dirichlet(p, *_options.schur)
+                              : _feti.apply_lumped(p);
+    y = _s * _projector.apply_P(scale(Xp)) + q / _options.rho;
   }
 
 private:
+  la::Vector scale(const la::Vector& x) const { return _scaling ? _scaling->apply(x) : x; }
+
   const FetiOperators& _feti;
   const CoarseProjector& _projector;
   const DualPenaltyOptions& _options;
   double _s;
+  std::optional<ConstraintScaling> _scaling;
 };
 } // namespace
 
@@ -118,7 +125,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   std::optional<la::TimedOperator> timed_preconditioner;
   if (options.preconditioner != DualPreconditioner::none)
     mprgp.preconditioner =
-        &timed_preconditioner.emplace(preconditioner.emplace(feti, projector, options, norm.value));
+        &timed_preconditioner.emplace(preconditioner.emplace(feti, projector, options, norm.value, n_equality));
   if (options.method == DualMethod::dual_penalty)
   {
     qp::Mprgp solver(H, mprgp);

@@ -24,8 +24,9 @@ enum class DualMethod
   smalbe        ///< SMALBE-M with MPRGP inside: G lambda = e to the tolerance
 };
 
-/// Preconditioner of MPRGP in the face: s P X P + Q / rho with X = B K B' (lumped) or
-/// B S B' (Dirichlet), s = ||PFP|| matching the scaled F^: an approximate inverse of H.
+/// Preconditioner of MPRGP in the face: s P Y X Y P + Q / rho with X = B K B' (lumped) or
+/// B S B' (Dirichlet), Y = (B B')^{-1} (constraint_scaling.hpp) and s = ||PFP|| matching the
+/// scaled F^: an approximate inverse of H.
 enum class DualPreconditioner
 {
   none,
@@ -43,6 +44,8 @@ struct DualPenaltyOptions
   DualPreconditioner preconditioner = DualPreconditioner::none;
   /// Schur complements of the Dirichlet preconditioner (not owned; required for it).
   const decomposition::SchurComplements* schur = nullptr;
+  /// Y = (B B')^{-1} in the preconditioner; false: Y = I (for comparison).
+  bool constraint_scaling = true;
   double smalbe_M0 = 1.0;     ///< SMALBE-M initial M (scaled units)
   double smalbe_beta = 2.0;   ///< SMALBE-M: M <- M / beta when L increases too little
 };

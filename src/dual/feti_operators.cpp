@@ -53,6 +53,8 @@ FetiOperators::FetiOperators(const decomposition::SubdomainSystem& system,
     (decomp.owns(_touch[i].front()) ? _owned : ghosts).push_back(i);
   }
   _slot.assign(n_kept, -1);
+  for (int64_t i = 0; i < n_kept; ++i)
+    _kept_id.push_back(rows.id(i));
   std::vector<std::vector<la::Index>> blocks;
   std::vector<int32_t> block_subdomain;
   for (size_t k = 0; k < _owned.size(); ++k)
@@ -466,5 +468,25 @@ la::SparseMatrix FetiOperators::coarse_matrix(const std::vector<char>* mask) con
   la::SparseMatrix GGt(n_kernel(), n_kernel());
   GGt.setFromTriplets(triplets.begin(), triplets.end());
   return GGt;
+}
+
+std::vector<FetiOperators::GramEntry> FetiOperators::gram_entries(
+    const std::function<bool(int64_t)>& selected) const
+{
+  std::vector<GramEntry> out;
+  const int32_t first = _system.decomposition().first_owned();
+  for (size_t l = 0; l < _B.size(); ++l)
+  {
+    const la::SparseMatrix BBt = _B[l] * la::SparseMatrix(_B[l].transpose());
+    for (int k = 0; k < BBt.outerSize(); ++k)
+      for (la::SparseMatrix::InnerIterator it(BBt, k); it; ++it)
+      {
+        const int64_t row = _kept_id[_sub_rows[l][it.row()]];
+        const int64_t col = _kept_id[_sub_rows[l][it.col()]];
+        if (it.value() != 0.0 && (selected(row) || selected(col)))
+          out.push_back({row, col, first + static_cast<int32_t>(l), it.value()});
+      }
+  }
+  return out;
 }
 } // namespace feticon::dual

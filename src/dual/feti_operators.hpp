@@ -25,6 +25,7 @@
 #include "la/operator.hpp"
 #include "par/block_space.hpp"
 
+#include <functional>
 #include <memory>
 
 namespace feticon::dual
@@ -74,6 +75,17 @@ public:
   la::Vector apply_Gt(const la::Vector& alpha, const std::vector<char>* mask = nullptr) const;
   /// G_A G_A' (n_kernel x n_kernel), replicated on every rank.
   la::SparseMatrix coarse_matrix(const std::vector<char>* mask = nullptr) const;
+  /// An entry (row id, column id, value) of B B'.
+  struct GramEntry
+  {
+    int64_t row, col;
+    int32_t subdomain; ///< s of the term B_s B_s' it comes from
+    double value;
+  };
+  /// This rank's share of the entries of B B' = sum_s B_s B_s' whose row or column id
+  /// satisfies `selected`: one entry per owned subdomain s and entry of B_s B_s' (summing
+  /// every rank's share gives B B' on those rows and columns).
+  std::vector<GramEntry> gram_entries(const std::function<bool(int64_t)>& selected) const;
 
   const decomposition::SubdomainSystem& system() const { return _system; }
 
@@ -95,6 +107,7 @@ private:
   int64_t _n_dual_global = 0;
   std::vector<int64_t> _owned;     ///< owned rows (indices into the constructor's rows)
   std::vector<int64_t> _owned_id;  ///< their global ids
+  std::vector<int64_t> _kept_id;   ///< global id of every kept row
   std::unique_ptr<par::BlockSpace> _space;
   /// Per kept row: subdomains it touches (increasing) and its slot in extended vectors.
   std::vector<std::vector<int32_t>> _touch;

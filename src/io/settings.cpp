@@ -54,11 +54,16 @@ std::vector<SettingSpec> make_specs()
       {"subdomain_cells", "0", "cells per subdomain, (H/h)^3 in 3D or (H/h)^2 for one layer; if > 0 "
                                "it sets the number of subdomains instead of 'subdomains'",
        Type::integer, {}, 0, 1e9, false},
-      {"partitioner", "metis", "metis or structured", Type::text, {"metis", "structured"}, 0, 0, false},
+      {"partitioner", "metis", "metis (k-way, edge cut), rcb (recursive coordinate bisection: box-like "
+                              "subdomains) or structured (slabs along x)",
+       Type::text, {"metis", "rcb", "structured"}, 0, 0, false},
       {"qp.rtol", "1e-8", "QP stopping tolerance ||g_P|| <= rtol ||b||", Type::number, {}, 0, 1, true},
       {"qp.preconditioner", "dirichlet", "MPRGP preconditioning in the face: none, lumped (P B K B' P) or "
        "dirichlet (P B S B' P, S the subdomain Schur complements on their boundary)",
        Type::text, {"none", "lumped", "dirichlet"}, 0, 0, false},
+      {"qp.constraint_scaling", "true", "scale the preconditioner by (B B')^-1 on both sides "
+       "(mortar FETI): needed when contact rows are not orthogonal to each other and to the gluing rows",
+       Type::boolean, {}, 0, 0, false},
       {"qp.max_iterations", "20000", "MPRGP iteration limit", Type::integer, {}, 1, 1e9, false},
       {"output.vtu", "true", "write VTU/PVD files", Type::boolean, {}, 0, 0, false},
   };

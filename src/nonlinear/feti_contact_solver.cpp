@@ -19,8 +19,11 @@ namespace
 {
 decomposition::Partition make_partition(const fem::Problem& problem, const SolverSettings& s)
 {
-  if (s.metis)
-    return decomposition::partition_metis(problem.mesh, std::max(s.subdomains, problem.mesh.n_bodies()));
+  const int n = std::max(s.subdomains, problem.mesh.n_bodies());
+  if (s.partitioner == Partitioner::metis)
+    return decomposition::partition_metis(problem.mesh, n);
+  if (s.partitioner == Partitioner::rcb)
+    return decomposition::partition_rcb(problem.mesh, n);
   // Structured: split each body along x only (enough for studies; boxes via the API).
   return decomposition::partition_structured(problem.mesh,
                                              {std::max(1, s.subdomains / problem.mesh.n_bodies()), 1, 1});

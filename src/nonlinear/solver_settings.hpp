@@ -26,6 +26,14 @@ enum class StiffnessUpdate
   iteration  ///< K_M(u) refreshed at every outer iteration
 };
 
+/// How the cells are split into subdomains (decomposition/partition.hpp).
+enum class Partitioner
+{
+  metis,      ///< METIS k-way on the cell face graph
+  rcb,        ///< recursive coordinate bisection: box-like subdomains
+  structured  ///< equal slabs along x per body (studies)
+};
+
 struct SolverSettings
 {
   ContactMethod method = ContactMethod::smalbe;
@@ -49,7 +57,7 @@ struct SolverSettings
   double forcing = 0.001;
   double max_forcing_rtol = 1e-4;
   int subdomains = 8;
-  bool metis = true;                   ///< METIS, else structured partition
+  Partitioner partitioner = Partitioner::metis;
   decomposition::GeneralizedInverseMethod generalized_inverse =
       decomposition::GeneralizedInverseMethod::fixing_dofs;
   dual::DualPenaltyOptions dual{};

@@ -166,6 +166,102 @@ TEST(Partition, MetisGivesConnectedSubdomainsPerBody)
   EXPECT_THROW(decomposition::partition_metis(m, 1), feticon::Error);
 }
 
+namespace
+{
+/// Per subdomain: cell count and whether its cells fill the box spanned by their centroids
+/// (cell units of a uniform box mesh with cell size h).
+std::vector<std::pair<int, bool>> part_shapes(const mesh::HexMesh& m,
+                                              const decomposition::Partition& partition,
+                                              const Eigen::Vector3d& h)
+{
+  std::vector<Eigen::Vector3d> lo(partition.n_subdomains, Eigen::Vector3d::Constant(1e300));
+  std::vector<Eigen::Vector3d> hi(partition.n_subdomains, Eigen::Vector3d::Constant(-1e300));
+  std::vector<int> count(partition.n_subdomains, 0);
+  for (int32_t c = 0; c < m.n_cells(); ++c)
+  {
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    for (int32_t node : m.cells[c])
+      x += m.nodes.row(node).transpose() / 8.0;
+    const int32_t s = partition.cell_subdomain[c];
+    lo[s] = lo[s].cwiseMin(x);
+    hi[s] = hi[s].cwiseMax(x);
+    ++count[s];
+  }
+  std::vector<std::pair<int, bool>> out;
+  for (int32_t s = 0; s < partition.n_subdomains; ++s)
+  {
+    const Eigen::Vector3d cells = ((hi[s] - lo[s]).cwiseQuotient(h)).array().round() + 1;
+    out.emplace_back(count[s], static_cast<int>(cells.prod()) == count[s]);
+  }
+  return out;
+}
+} // namespace
+
+// Reference: on a uniform 16 x 8 x 1 box, bisection into 8 parts cuts along the longer
+// side first and gives the 4 x 4 boxes of 16 cells a structured partition would.
+TEST(Partition, CoordinateBisectionGivesBoxesOnABoxMesh)
+{
+  mesh::BoxParameters p;
+  p.lengths = Eigen::Vector3d(2, 1, 0.125);
+  p.nx = 16;
+  p.ny = 8;
+  p.nz = 1;
+  const auto m = mesh::generate_box(p);
+  const auto partition = decomposition::partition_rcb(m, 8);
+  ASSERT_EQ(partition.n_subdomains, 8);
+  for (const auto& [count, is_box] : part_shapes(m, partition, Eigen::Vector3d::Constant(0.125)))
+  {
+    EXPECT_EQ(count, 16);
+    EXPECT_TRUE(is_box);
+  }
+}
+
+// Reference: the cut follows the extent in cells, not in metres (graded meshes): a box of
+// 4 x 16 cells that is 100 times longer in x is halved across y (4 x 8 cells each).
+// Two bodies get parts in proportion to their cells, each part in one body.
+TEST(Partition, CoordinateBisectionCutsAlongTheMostCellsAndKeepsBodiesApart)
+{
+  mesh::BoxParameters p;
+  p.lengths = Eigen::Vector3d(100, 1, 1);
+  p.nx = 4;
+  p.ny = 16;
+  p.nz = 1;
+  auto m = mesh::generate_box(p);
+  const auto halves = decomposition::partition_rcb(m, 2);
+  ASSERT_EQ(halves.n_subdomains, 2);
+  for (const auto& [count, is_box] : part_shapes(m, halves, Eigen::Vector3d(25, 1.0 / 16, 1)))
+  {
+    EXPECT_EQ(count, 32);
+    EXPECT_TRUE(is_box);
+  }
+  for (int32_t c = 0; c < m.n_cells(); ++c)
+  {
+    const double y = (m.nodes(m.cells[c][0], 1) + m.nodes(m.cells[c][6], 1)) / 2;
+    EXPECT_EQ(halves.cell_subdomain[c], halves.cell_subdomain[0] == 0 ? (y > 0.5) : (y < 0.5));
+  }
+
+  mesh::BoxParameters q;
+  q.origin = Eigen::Vector3d(0, 2, 0);
+  q.nx = q.ny = 4;
+  q.nz = 1;
+  q.body_name = "upper";
+  mesh::append_mesh(m, mesh::generate_box(q), "upper_"); // 64 + 16 cells
+  const auto partition = decomposition::partition_rcb(m, 5);
+  ASSERT_EQ(partition.n_subdomains, 5);
+  std::vector<std::set<int32_t>> bodies(5);
+  std::vector<int> count(5, 0);
+  for (int32_t c = 0; c < m.n_cells(); ++c)
+  {
+    bodies[partition.cell_subdomain[c]].insert(m.cell_body[c]);
+    ++count[partition.cell_subdomain[c]];
+  }
+  for (int32_t s = 0; s < 5; ++s)
+  {
+    EXPECT_EQ(bodies[s].size(), 1u);
+    EXPECT_EQ(count[s], 16);
+  }
+}
+
 // Measurement behind the default generalized inverse (issue 3): accuracy of K K+ K = K,
 // factor fill and application time of both variants on the same distorted subdomains.
 // Reference for accuracy: the defining identity; both must hold it to 1e-10.

@@ -1,10 +1,9 @@
 /// Dual operators and projectors (ALGORITHMS.md section 1, tests).
 #include "common/error.hpp"
 
-#include "decomposition/constraint_rows.hpp"
+#include "clamped_box.hpp"
 #include "dual/feti_operators.hpp"
 #include "dual/projector.hpp"
-#include "mesh/box.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,31 +13,15 @@ namespace
 {
 struct Setup
 {
-  mesh::HexMesh mesh;
-  std::unique_ptr<decomposition::Decomposition> decomp;
-  std::unique_ptr<decomposition::SubdomainSystem> system;
-  decomposition::EqualityRows rows;
+  std::unique_ptr<test::ClampedBox> box;
   std::unique_ptr<dual::FetiOperators> feti;
 };
 
 std::unique_ptr<Setup> make_setup()
 {
   auto s = std::make_unique<Setup>();
-  mesh::BoxParameters p;
-  p.lengths = Eigen::Vector3d(3, 1, 1);
-  p.nx = 6;
-  p.ny = 2;
-  p.nz = 2;
-  s->mesh = mesh::generate_box(p);
-  s->decomp = std::make_unique<decomposition::Decomposition>(
-      s->mesh, decomposition::partition_structured(s->mesh, {3, 1, 1}));
-  s->system = std::make_unique<decomposition::SubdomainSystem>(
-      *s->decomp, std::vector<fem::Material>{fem::Material{}}, fem::Kinematics::linear,
-      decomposition::GeneralizedInverseMethod::fixing_dofs);
-  s->system->update(la::Vector::Zero(s->decomp->n_primal()));
-  s->rows = decomposition::build_equality_rows(
-      *s->decomp, fem::collect_dirichlet(s->mesh, {{"xmin", {0.0, 0.0, 0.0}}}));
-  s->feti = std::make_unique<dual::FetiOperators>(*s->system, s->rows.rows);
+  s->box = test::make_clamped_box();
+  s->feti = std::make_unique<dual::FetiOperators>(*s->box->system, s->box->equality.rows);
   return s;
 }
 } // namespace

@@ -1,0 +1,47 @@
+#pragma once
+/// @file Y = (B B')^{-1}: the scaling that fits the FETI preconditioners to constraint rows
+/// that are not orthonormal.
+///
+/// The lumped and Dirichlet preconditioners B X B' approximate F^{-1} = (B K+ B')^{-1} only
+/// when B B' = I; a general B needs M = Y B X B' Y (the mortar FETI preconditioner of
+/// Stefanica & Klawonn 2000; Lacour & Maday 1997). Our gluing and Dirichlet rows are
+/// orthonormal (B_E B_E' = I), but a mortar or node-to-segment contact row shares its master
+/// nodes with its neighbours and its slave and master copies with gluing rows. Without Y the
+/// smallest eigenvalue of M F on such rows falls to about 0.1 and keeps falling as the
+/// contact zone gets more subdomains (docs/distributed.md, weak scaling).
+///
+/// B B' differs from I only on the block C of the contact rows and the equality rows that
+/// share a degree of freedom with one. That block, a few rows per contact row, is assembled
+/// from the subdomain products B_s B_s', replicated on every rank like G G' and factorized
+/// once per dual problem; Y is the identity elsewhere.
+
+#include "dual/feti_operators.hpp"
+
+#include <Eigen/SparseCholesky>
+
+namespace feticon::dual
+{
+class ConstraintScaling
+{
+public:
+  /// @param n_equality rows with a global id below it are equality rows (B_E B_E' = I).
+  ///        If the block is singular (dependent rows), Y falls back to the identity and
+  ///        factorized() is false.
+  ConstraintScaling(const FetiOperators& feti, int64_t n_equality);
+
+  /// Rows of the block C over all ranks (0: Y = I, nothing to scale).
+  int64_t block_size() const { return static_cast<int64_t>(_ids.size()); }
+  bool factorized() const { return _factorized; }
+  /// Y lambda for an owned dual vector.
+  la::Vector apply(const la::Vector& lambda) const;
+
+private:
+  const FetiOperators& _feti;
+  std::vector<int64_t> _ids;                      ///< global ids of C, increasing
+  std::vector<la::Index> _owned_rows;             ///< owned dual indices in C
+  std::vector<int64_t> _owned_positions;          ///< and their positions in C
+  std::vector<int64_t> _gathered_positions;       ///< positions in C of every rank's rows
+  Eigen::SimplicialLLT<la::SparseMatrix> _llt;    ///< (B B')_CC = L L'
+  bool _factorized = false;
+};
+} // namespace feticon::dual
