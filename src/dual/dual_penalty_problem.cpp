@@ -6,6 +6,7 @@
 #include "dual/projector.hpp"
 #include "qp/norm_estimate.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 
@@ -62,6 +63,39 @@ private:
   double _s;
   std::optional<ConstraintScaling> _scaling;
 };
+
+/// Particular solution of G lambda = e (ALGORITHMS.md 1): variant B, lambda~ = [lambda~_E; 0]
+/// from the equality rows alone, when they fix every rigid mode; then the contact bounds
+/// are simply lambda_I >= 0 and mu = 0 is feasible. Otherwise (a body held only by
+/// contact, like the Hertz cylinder) variant A, the minimal-norm G'(GG')^{-1} e.
+la::Vector particular_solution(const FetiOperators& feti, const CoarseProjector& projector,
+                               const la::Vector& e, int64_t n_equality)
+{
+  // Either variant must satisfy G lambda~ = e. The pivot test of G_E G_E' can miss a
+  // mode that only contact holds once that matrix is large (a 1 025-subdomain punch: the
+  // round-off pivot passed, lambda~ missed the punch's load and SMALBE-M "converged" to a
+  // zero contact force), so the equation itself decides.
+  const double tolerance = 1e-6 * std::max(e.norm(), 1e-300);
+  if (n_equality < feti.n_dual_global())
+  {
+    std::vector<char> equality_mask(feti.n_dual(), 0);
+    for (int64_t i = 0; i < feti.n_dual(); ++i)
+      equality_mask[i] = feti.row_id(i) < n_equality;
+    const CoarseProjector equality_projector(feti, std::nothrow, std::move(equality_mask));
+    if (equality_projector.full_rank())
+    {
+      la::Vector lambda_tilde = equality_projector.particular_solution(e);
+      if ((feti.apply_G(lambda_tilde) - e).norm() <= tolerance)
+        return lambda_tilde;
+    }
+  }
+  la::Vector lambda_tilde = projector.particular_solution(e);
+  const double residual = (feti.apply_G(lambda_tilde) - e).norm();
+  FETICON_CHECK(residual <= tolerance, "coarse problem: ||G lambda~ - e|| = "
+                                           << residual << " exceeds " << tolerance
+                                           << " (G G' too ill-conditioned to balance the loads)");
+  return lambda_tilde;
+}
 } // namespace
 
 DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
@@ -74,21 +108,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   const CoarseProjector projector(feti);
   auto is_contact = [&](int64_t i) { return feti.row_id(i) >= n_equality; };
   const la::Vector e = feti.apply_Rt(f_stacked);
-  // Particular solution of G lambda = e (ALGORITHMS.md 1): variant B, lambda~ = [lambda~_E; 0]
-  // from the equality rows alone, when they fix every rigid mode; then the contact bounds
-  // are simply lambda_I >= 0 and mu = 0 is feasible. Otherwise (a body held only by
-  // contact, like the Hertz cylinder) variant A, the minimal-norm G'(GG')^{-1} e.
-  std::optional<CoarseProjector> equality_projector;
-  if (n_equality < feti.n_dual_global())
-  {
-    std::vector<char> equality_mask(m, 0);
-    for (int64_t i = 0; i < m; ++i)
-      equality_mask[i] = !is_contact(i);
-    equality_projector.emplace(feti, std::nothrow, std::move(equality_mask));
-  }
-  const la::Vector lambda_tilde = equality_projector && equality_projector->full_rank()
-                                      ? equality_projector->particular_solution(e)
-                                      : projector.particular_solution(e);
+  const la::Vector lambda_tilde = particular_solution(feti, projector, e, n_equality);
   const la::Vector d = feti.apply_B(feti.apply_K_plus(f_stacked)) - c;
 
   DualSolution out;
