@@ -4,7 +4,8 @@
 # run; the 2- and 4-rank runs must take the same iterations and give displacements equal to
 # 1e-10 relative (tests/tools/compare_runs.py). Also: one VTU piece per rank joined by a
 # .pvtu that lists them all and covers every cell once (read with the independent reader
-# tests/tools/read_vtu.py), and an error on one rank ends all ranks with its message.
+# tests/tools/read_vtu.py), and an error on one rank ends all ranks with its message. The
+# same 1- against 2-rank comparison with partitioner=rcb.
 # Usage: mpi_ranks.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -15,10 +16,18 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_mpi_yield_when_idle=1
 # One BLAS thread on every rank count (the ranks set it themselves when there are several).
 export OPENBLAS_NUM_THREADS=1
-run() { mpirun --oversubscribe -np "$1" "$feticon" run -q --output "$work/np$1" --set subdomains=8; }
+# run N [NAME SETTINGS...]: N ranks, results in $work/npN (or $work/NAME)
+run() {
+  local n=$1 name=${2:-np$1}
+  shift $(($# < 2 ? $# : 2))
+  mpirun --oversubscribe -np "$n" "$feticon" run -q --output "$work/$name" --set subdomains=8 "$@"
+}
 
 for n in 1 2 4; do run "$n"; done
 for n in 2 4; do /usr/bin/python3 "$source_dir/tests/tools/compare_runs.py" 1e-10 "$work/np1" "$work/np$n"; done
+# Coordinate bisection: every rank computes the same partition.
+for n in 1 2; do run "$n" "rcb$n" --set partitioner=rcb; done
+/usr/bin/python3 "$source_dir/tests/tools/compare_runs.py" 1e-10 "$work/rcb1" "$work/rcb2"
 
 # Pieces: step_002.pvtu names 4 pieces; together they hold every cell of the 1-rank VTU once.
 [[ $(grep -c "<Piece Source=" "$work/np4/step_002.pvtu") -eq 4 ]]
