@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # The benchmark suite of issue 8: Hertz at about 10k, 100k and 1M DOFs with small and large
 # displacements (FETI contact solve against the bonded direct solve), numerical scalability
-# at fixed H/h, and MPRGP alone on a 2D obstacle QP. Each case runs --reps times as its own
+# at fixed H/h, weak scaling on the flat punch (issue 6), and MPRGP alone on a 2D obstacle QP. Each case runs --reps times as its own
 # process (`feticon bench`, one JSON line each), niced; bench/summarize.py takes the medians,
 # prints the tables and writes bench/results/*.csv and tables.md.
 #
 #   bench/run.sh                                   # 10k and 100k, 3 repetitions
 #   bench/run.sh --sizes 10k,100k,1M --reps 3      # also 1M (minutes per run)
 #   bench/run.sh --sizes 1M --kinds large --reps 1 --only contact
-#   bench/run.sh --only scalability                # parts: contact, scalability, mprgp
+#   bench/run.sh --only scalability                # parts: contact, scalability, weak, mprgp
+#   bench/run.sh --only weak --weak 1,2,4,8,16     # punch cells x k (k = 16: 1.5M DOFs, 7 GiB)
 #   bench/run.sh --feticon build-bench/feticon     # another build (default build/feticon)
 #   bench/run.sh --obstacle 1000 --obstacle-steps 1000   # MPRGP QP size n^2 and step cap
 #   bench/run.sh --preconditioners none,dirichlet  # dual preconditioners of the contact cases
@@ -19,7 +20,8 @@ feticon=$root/build/feticon
 sizes=10k,100k
 kinds=small,large
 reps=3
-only=contact,scalability,mprgp
+only=contact,scalability,weak,mprgp
+weak=1,2,4,8
 out=$root/bench/results
 obstacle=1000
 obstacle_steps=1000
@@ -35,7 +37,8 @@ while [[ $# -gt 0 ]]; do
     --obstacle) obstacle=$2; shift 2 ;;
     --obstacle-steps) obstacle_steps=$2; shift 2 ;;
     --preconditioners) preconditioners=$2; shift 2 ;;
-    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
+    --weak) weak=$2; shift 2 ;;
+    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1 (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -78,6 +81,21 @@ if [[ ,$only, == *,scalability,* ]]; then
     for r in 1 2 4; do
       run_case "scalability.r$r.$preconditioner" --no-direct --set hertz.refinement=$r \
         --set subdomain_cells=256 --set displacements=small --set qp.preconditioner=$preconditioner
+    done
+  done
+fi
+if [[ ,$only, == *,weak,* ]]; then
+  # H/h fixed: the flat punch example with its cells multiplied by k in x and y (h / k, a
+  # uniform mesh) and 236 cells per subdomain (subdomains x k^2), both partitioners.
+  punch_dir=$(mktemp -d)
+  trap 'rm -rf "$punch_dir"' EXIT
+  for k in ${weak//,/ }; do
+    sed -e "s/cells: \[40, 20, 1\]/cells: [$((40 * k)), $((20 * k)), 1]/" \
+        -e "s/cells: \[12, 12, 1\]/cells: [$((12 * k)), $((12 * k)), 1]/" \
+        "$root/examples/flat_punch/problem.yaml" > "$punch_dir/punch$k.yaml"
+    for partitioner in metis rcb; do
+      run_case "weak.punch.k$k.$partitioner" --no-direct "$punch_dir/punch$k.yaml" \
+        --set subdomain_cells=236 --set partitioner=$partitioner
     done
   done
 fi

@@ -1,5 +1,5 @@
 """Medians of the `feticon bench` JSON lines in RESULTS/raw (one file per case and
-repetition, CASE.rep<i>.json), written as RESULTS/{contact,scalability,mprgp}.csv and as
+repetition, CASE.rep<i>.json), written as RESULTS/{contact,scalability,weak,mprgp}.csv and as
 Markdown tables in RESULTS/tables.md (also printed). Called by bench/run.sh; rerun it alone
 to regenerate the tables from the raw files: /usr/bin/python3 bench/summarize.py bench/results
 """
@@ -96,6 +96,20 @@ SCALABILITY = {
                                                          c["ratio_iteration_to_operator"]),
     "reps": lambda c: c["reps"],
 }
+WEAK = {
+    "k": lambda c: c["case"].split(".")[2][1:],
+    "partitioner": lambda c: c["case"].split(".")[3],
+    "DOFs": lambda c: c["degrees_of_freedom"],
+    "subdomains": lambda c: c["subdomains"],
+    "dual": lambda c: c["dual_size"],
+    "MPRGP": lambda c: c["qp.iterations"],
+    "CG steps": lambda c: c["qp.cg_steps"],
+    "SMALBE outer": lambda c: c["qp.smalbe_outer_iterations"],
+    "dual solve (s)": lambda c: c["timings_seconds.dual solve (MPRGP)"],
+    "contact force (N)": lambda c: c["total_normal_force"],
+    "peak MiB": lambda c: c["peak_memory_bytes"] / 2**20,
+    "reps": lambda c: c["reps"],
+}
 MPRGP = {
     "unknowns": lambda c: c["unknowns"],
     "iterations": lambda c: c["iterations"],
@@ -157,6 +171,8 @@ def main():
                                     c.get("preconditioner", "")))
     scalability = sorted((c for n, c in cases.items() if n.startswith("scalability.")),
                          key=lambda c: (c.get("preconditioner", ""), float(c["case"].split(".")[1][1:])))
+    weak = sorted((c for n, c in cases.items() if n.startswith("weak.")),
+                  key=lambda c: (c["case"].split(".")[3], int(c["case"].split(".")[2][1:])))
     mprgp = [c for n, c in sorted(cases.items()) if n.startswith("mprgp.")]
     text = ""
     if contact:
@@ -165,6 +181,9 @@ def main():
     if scalability:
         text += table("Numerical scalability, 256 cells per subdomain (medians)", SCALABILITY,
                              scalability, results, "scalability.csv")
+    if weak:
+        text += table("Weak scaling: flat punch, cells x k, 236 cells per subdomain (medians)", WEAK, weak,
+                      results, "weak.csv")
     if mprgp:
         text += table("MPRGP alone, 2D obstacle QP (medians)", MPRGP, mprgp, results, "mprgp.csv")
     text = text.rstrip("\n") + "\n"
