@@ -28,6 +28,7 @@ problems::HertzParameters hertz_parameters(const io::Settings& s)
   p.mesh.master_ratio = s.number("hertz.master_ratio");
   p.mesh.block_width = s.number("hertz.block_width");
   p.mesh.block_depth = s.number("hertz.block_depth");
+  p.mesh.growth_ratio = s.number("hertz.growth_ratio");
   p.mesh.cylinder_width = s.number("hertz.cylinder_width");
   p.material = {s.number("material.young"), s.number("material.poisson")};
   return p;

@@ -29,6 +29,8 @@ std::vector<SettingSpec> make_specs()
       {"hertz.block_width", "1.5", "half-width of the block (m)", Type::number, {}, 0.2, 100, false},
       {"hertz.cylinder_width", "0.6", "half-width of the modelled cylinder segment (m), < radius", Type::number, {}, 0.1, 0.99, false},
       {"hertz.block_depth", "1.5", "depth of the block (m)", Type::number, {}, 0.2, 100, false},
+      {"hertz.growth_ratio", "1.2", "cell size ratio between neighbouring cells beyond the fine "
+                                    "region at refinement 1 (1: uniform mesh)", Type::number, {}, 1, 2, false},
       {"material.young", "2e11", "Young's modulus E (Pa) of every body", Type::number, {}, 0, inf, true},
       {"material.poisson", "0.3", "Poisson's ratio nu of every body, in (-1, 0.5)", Type::number, {}, -1, 0.5, true, true},
       {"method", "smalbe", "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "
