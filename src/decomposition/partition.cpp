@@ -70,6 +70,15 @@ std::vector<int> parts_per_body(const mesh::HexMesh& mesh, int n_subdomains)
   return body_parts;
 }
 
+std::vector<Eigen::Vector3d> cell_centroids(const mesh::HexMesh& mesh)
+{
+  std::vector<Eigen::Vector3d> centroid(mesh.n_cells(), Eigen::Vector3d::Zero());
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    for (int32_t node : mesh.cells[c])
+      centroid[c] += mesh.nodes.row(node).transpose() / 8.0;
+  return centroid;
+}
+
 /// Renumbers ids to 0..k-1 in order of first appearance.
 Partition compact(std::vector<int32_t> ids)
 {
@@ -135,13 +144,7 @@ Partition partition_structured(const mesh::HexMesh& mesh, std::array<int, 3> par
 {
   for (int p : parts)
     FETICON_CHECK(p >= 1, "structured partition: parts per direction must be >= 1, got " << p);
-  std::vector<Eigen::Vector3d> centroid(mesh.n_cells());
-  for (int32_t c = 0; c < mesh.n_cells(); ++c)
-  {
-    centroid[c].setZero();
-    for (int32_t node : mesh.cells[c])
-      centroid[c] += mesh.nodes.row(node).transpose() / 8.0;
-  }
+  const std::vector<Eigen::Vector3d> centroid = cell_centroids(mesh);
   const int per_body = parts[0] * parts[1] * parts[2];
   std::vector<int32_t> ids(mesh.n_cells());
   for (int32_t body = 0; body < mesh.n_bodies(); ++body)
@@ -228,17 +231,15 @@ Partition partition_metis(const mesh::HexMesh& mesh, int n_subdomains)
 
 Partition partition_rcb(const mesh::HexMesh& mesh, int n_subdomains)
 {
-  std::vector<Eigen::Vector3d> centroid(mesh.n_cells()), size(mesh.n_cells());
+  const std::vector<Eigen::Vector3d> centroid = cell_centroids(mesh);
+  std::vector<Eigen::Vector3d> size(mesh.n_cells()); // bounding-box edges of each cell
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
   {
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
-    centroid[c].setZero();
     for (int32_t node : mesh.cells[c])
     {
-      const Eigen::Vector3d x = mesh.nodes.row(node).transpose();
-      centroid[c] += x / 8.0;
-      lo = lo.cwiseMin(x);
-      hi = hi.cwiseMax(x);
+      lo = lo.cwiseMin(mesh.nodes.row(node).transpose());
+      hi = hi.cwiseMax(mesh.nodes.row(node).transpose());
     }
     size[c] = hi - lo;
   }

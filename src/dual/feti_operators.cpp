@@ -58,10 +58,7 @@ FetiOperators::FetiOperators(const decomposition::SubdomainSystem& system,
   std::vector<std::vector<la::Index>> blocks;
   std::vector<int32_t> block_subdomain;
   for (size_t k = 0; k < _owned.size(); ++k)
-  {
     _slot[_owned[k]] = static_cast<int64_t>(k);
-    _owned_id.push_back(rows.id(_owned[k]));
-  }
   for (size_t k = 0; k < ghosts.size(); ++k)
     _slot[ghosts[k]] = static_cast<int64_t>(_owned.size() + k);
   _n_dual_global = _comm.sum(n_dual());
@@ -73,7 +70,10 @@ FetiOperators::FetiOperators(const decomposition::SubdomainSystem& system,
       by_owner[_touch[_owned[k]].front()].push_back(static_cast<la::Index>(k));
     for (auto& [s, list] : by_owner)
       blocks.push_back(std::move(list));
-    _space = std::make_unique<par::BlockSpace>(_comm, std::move(blocks), _owned_id);
+    std::vector<int64_t> owned_ids;
+    for (la::Index i = 0; i < n_dual(); ++i)
+      owned_ids.push_back(row_id(i));
+    _space = std::make_unique<par::BlockSpace>(_comm, std::move(blocks), std::move(owned_ids));
   }
 
   // B_s and B_s R_s of the owned subdomains; rows of s in increasing id.

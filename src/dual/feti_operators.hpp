@@ -43,7 +43,7 @@ public:
   int64_t n_dual() const { return static_cast<int64_t>(_owned.size()); }
   int64_t n_dual_global() const { return _n_dual_global; }
   /// Global row id of owned row i and its index in the constructor's `rows`.
-  int64_t row_id(la::Index i) const { return _owned_id[i]; }
+  int64_t row_id(la::Index i) const { return _kept_id[_owned[i]]; }
   int64_t row_index(la::Index i) const { return _owned[i]; }
   /// The owned entries of a vector given for every row in `rows` (e.g. rows.c_vector()).
   la::Vector owned(const la::Vector& per_row) const;
@@ -106,7 +106,6 @@ private:
   par::Communicator _comm;
   int64_t _n_dual_global = 0;
   std::vector<int64_t> _owned;     ///< owned rows (indices into the constructor's rows)
-  std::vector<int64_t> _owned_id;  ///< their global ids
   std::vector<int64_t> _kept_id;   ///< global id of every kept row
   std::unique_ptr<par::BlockSpace> _space;
   /// Per kept row: subdomains it touches (increasing) and its slot in extended vectors.
