@@ -9,14 +9,13 @@ namespace feticon::fem
 namespace
 {
 /// Node-node adjacency of the cells in local numbering, sorted and unique per node.
-std::vector<std::vector<int32_t>> node_adjacency(const mesh::HexMesh& mesh,
-                                                 const AssemblyDomain& domain)
+std::vector<std::vector<int32_t>> node_adjacency(const AssemblyDomain& domain)
 {
   std::vector<std::vector<int32_t>> adjacency(domain.n_nodes());
-  for (int32_t c : domain.cells)
-    for (int32_t a : mesh.cells[c])
-      for (int32_t b : mesh.cells[c])
-        adjacency[domain.global_to_local[a]].push_back(domain.global_to_local[b]);
+  for (const auto& cell : domain.cell_nodes)
+    for (int32_t a : cell)
+      for (int32_t b : cell)
+        adjacency[a].push_back(b);
   for (auto& list : adjacency)
   {
     std::sort(list.begin(), list.end());
@@ -86,20 +85,24 @@ AssemblyDomain make_domain(const mesh::HexMesh& mesh, std::vector<int32_t> cells
 {
   AssemblyDomain domain;
   domain.cells = std::move(cells);
-  domain.global_to_local.assign(mesh.n_nodes(), -1);
-  std::vector<char> used(mesh.n_nodes(), 0);
+  // Work proportional to the domain's cells, never to the mesh: a run makes one domain
+  // per subdomain.
+  auto& nodes = domain.local_to_global;
+  nodes.reserve(8 * domain.cells.size());
   for (int32_t c : domain.cells)
   {
     FETICON_CHECK(c >= 0 && c < mesh.n_cells(), "cell id " << c << " out of range");
-    for (int32_t node : mesh.cells[c])
-      used[node] = 1;
+    nodes.insert(nodes.end(), mesh.cells[c].begin(), mesh.cells[c].end());
   }
-  for (int32_t node = 0; node < mesh.n_nodes(); ++node)
-    if (used[node])
-    {
-      domain.global_to_local[node] = static_cast<int32_t>(domain.local_to_global.size());
-      domain.local_to_global.push_back(node);
-    }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  nodes.shrink_to_fit();
+  domain.cell_nodes.resize(domain.cells.size());
+  for (size_t k = 0; k < domain.cells.size(); ++k)
+    for (int a = 0; a < 8; ++a)
+      domain.cell_nodes[k][a] = static_cast<int32_t>(
+          std::lower_bound(nodes.begin(), nodes.end(), mesh.cells[domain.cells[k]][a]) -
+          nodes.begin());
   return domain;
 }
 
@@ -123,7 +126,7 @@ Assembler::Assembler(const mesh::HexMesh& mesh, AssemblyDomain domain,
     _materials[b].check("material of body '" +
                         (b < mesh.body_names.size() ? mesh.body_names[b] : std::to_string(b)) +
                         "'");
-  _pattern = block_pattern(node_adjacency(mesh, _domain));
+  _pattern = block_pattern(node_adjacency(_domain));
 }
 
 void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatrix* K,
@@ -140,13 +143,13 @@ void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatr
   NodeCoords X, ue;
   ElementVector fe;
   ElementMatrix Ke;
-  std::array<int32_t, 8> local;
-  for (int32_t c : _domain.cells)
+  for (size_t k = 0; k < _domain.cells.size(); ++k)
   {
+    const int32_t c = _domain.cells[k];
     const auto& cell = _mesh.cells[c];
+    const std::array<int32_t, 8>& local = _domain.cell_nodes[k];
     for (int a = 0; a < 8; ++a)
     {
-      local[a] = _domain.global_to_local[cell[a]];
       X.row(a) = _mesh.nodes.row(cell[a]);
       ue.row(a) = u.segment<3>(3 * local[a]).transpose();
     }

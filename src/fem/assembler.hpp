@@ -10,6 +10,7 @@
 #include "la/types.hpp"
 #include "mesh/hex_mesh.hpp"
 
+#include <array>
 #include <vector>
 
 namespace feticon::fem
@@ -18,8 +19,11 @@ namespace feticon::fem
 struct AssemblyDomain
 {
   std::vector<int32_t> cells;           ///< cell ids of the mesh
-  std::vector<int32_t> local_to_global; ///< local node -> mesh node
-  std::vector<int32_t> global_to_local; ///< mesh node -> local node, -1 if absent
+  std::vector<int32_t> local_to_global; ///< local node -> mesh node, increasing
+  /// Local node ids of each cell, in the order of `cells`. Kept instead of a mesh-sized
+  /// global-to-local map, which cost every subdomain O(mesh) memory and setup time
+  /// (4 032 subdomains of a 366k-DOF mesh: 4.7 GB).
+  std::vector<std::array<int32_t, 8>> cell_nodes;
 
   int32_t n_nodes() const { return static_cast<int32_t>(local_to_global.size()); }
   int64_t n_dofs() const { return 3 * static_cast<int64_t>(local_to_global.size()); }
