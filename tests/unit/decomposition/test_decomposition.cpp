@@ -216,6 +216,30 @@ TEST(Partition, CoordinateBisectionGivesBoxesOnABoxMesh)
   }
 }
 
+// Reference: geometry. 9 parts of a 12 x 12 box do not divide it into equal boxes; a cut
+// at the balanced cell count (64 of 144 cells) would cross a column of cells and leave
+// steps. Cutting between columns within half a part of it gives boxes of 15 to 20 cells
+// (5 x 3, 3 x 5, 4 x 5, 2 x 7 columns and rows), sizes within a third of the mean 16.
+TEST(Partition, CoordinateBisectionCutsBetweenLayersOfCells)
+{
+  mesh::BoxParameters p;
+  p.lengths = Eigen::Vector3d(1.2, 1.2, 0.1);
+  p.nx = p.ny = 12;
+  p.nz = 1;
+  const auto m = mesh::generate_box(p);
+  const auto partition = decomposition::partition_rcb(m, 9);
+  ASSERT_EQ(partition.n_subdomains, 9);
+  int total = 0;
+  for (const auto& [count, is_box] : part_shapes(m, partition, Eigen::Vector3d::Constant(0.1)))
+  {
+    EXPECT_TRUE(is_box) << count << " cells";
+    EXPECT_GE(count, 12);
+    EXPECT_LE(count, 21);
+    total += count;
+  }
+  EXPECT_EQ(total, 144);
+}
+
 // Reference: the cut follows the extent in cells, not in metres (graded meshes): a box of
 // 4 x 16 cells that is 100 times longer in x is halved across y (4 x 8 cells each).
 // Two bodies get parts in proportion to their cells, each part in one body.
