@@ -111,12 +111,24 @@ nonlinear::OuterIteration qp_totals(const nonlinear::ContactSolution& solution)
 nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution)
 {
   const nonlinear::OuterIteration sum = qp_totals(solution);
+  // The spectrum estimate of the longest CG run of the whole solve.
+  const nonlinear::OuterIteration* longest = nullptr;
+  for (const auto& it : solution.history)
+    if (it.ritz_steps > 0 && (!longest || it.ritz_steps > longest->ritz_steps))
+      longest = &it;
+  nlohmann::ordered_json spectrum = nullptr;
+  if (longest)
+    spectrum = {{"ritz_min", longest->ritz_min},
+                {"ritz_max", longest->ritz_max},
+                {"condition_estimate", longest->ritz_max / longest->ritz_min},
+                {"cg_steps", longest->ritz_steps}};
   return {{"iterations", sum.qp_iterations},
           {"hessian_multiplications", sum.hessian_multiplications},
           {"cg_steps", sum.cg_steps},
           {"expansion_steps", sum.expansion_steps},
           {"proportioning_steps", sum.proportioning_steps},
           {"smalbe_outer_iterations", sum.smalbe_outer},
-          {"outer_iterations", solution.history.size()}};
+          {"outer_iterations", solution.history.size()},
+          {"face_spectrum", spectrum}};
 }
 } // namespace feticon::app

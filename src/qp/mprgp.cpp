@@ -4,6 +4,7 @@
 #include "common/log.hpp"
 #include "common/timer.hpp"
 #include "qp/norm_estimate.hpp"
+#include "qp/ritz_estimate.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -174,7 +175,9 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
   const auto start_time = std::chrono::steady_clock::now();
   check_input(_A, b, lower, x);
   QpReport report;
+  RitzEstimate ritz;
   auto finish = [&](bool converged, std::string reason) {
+    ritz.write(report);
     report.converged = converged;
     report.reason = std::move(reason);
     report.seconds = seconds_since(start_time);
@@ -279,7 +282,9 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
         x = x.cwiseMax(lower);
         g -= alpha_cg * q;
         direction(x, g, phi);
-        p = phi - (la::dot(space, phi, q) / pq) * p;
+        const double beta = la::dot(space, phi, q) / pq;
+        p = phi - beta * p;
+        ritz.cg_step(alpha_cg, -beta); // the standard PCG coefficient is -beta
         ++report.cg_steps;
         step = MprgpStep::cg;
       }
@@ -308,6 +313,7 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
         ++report.hessian_multiplications;
         g += q;
         direction(x, g, p);
+        ritz.end_run();
         ++report.expansion_steps;
         step = MprgpStep::expansion;
         // f is monotone only for alpha_bar <= 2/||A||, and the power estimate of ||A|| is
@@ -333,6 +339,7 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
       x -= alpha * beta;
       g -= alpha * q;
       direction(x, g, p);
+      ritz.end_run();
       ++report.proportioning_steps;
       step = MprgpStep::proportioning;
     }

@@ -1,0 +1,52 @@
+#include "qp/ritz_estimate.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+
+namespace feticon::qp
+{
+void RitzEstimate::cg_step(double alpha, double beta)
+{
+  _alpha.push_back(alpha);
+  _beta.push_back(std::max(beta, 0.0));
+}
+
+void RitzEstimate::end_run()
+{
+  if (_alpha.size() > _best_alpha.size())
+  {
+    _best_alpha.swap(_alpha);
+    _best_beta.swap(_beta);
+  }
+  _alpha.clear();
+  _beta.clear();
+}
+
+void RitzEstimate::write(QpReport& report)
+{
+  end_run();
+  const auto k = static_cast<Eigen::Index>(_best_alpha.size());
+  if (k < 2)
+    return;
+  // The last beta belongs to a direction the run never used.
+  Eigen::VectorXd diagonal(k), off_diagonal(k - 1);
+  for (Eigen::Index j = 0; j < k; ++j)
+  {
+    diagonal[j] = 1.0 / _best_alpha[j];
+    if (j > 0)
+    {
+      diagonal[j] += _best_beta[j - 1] / _best_alpha[j - 1];
+      off_diagonal[j - 1] = std::sqrt(_best_beta[j - 1]) / _best_alpha[j - 1];
+    }
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
+  eigen.computeFromTridiagonal(diagonal, off_diagonal, Eigen::EigenvaluesOnly);
+  if (eigen.info() != Eigen::Success)
+    return;
+  report.ritz_min = eigen.eigenvalues().minCoeff();
+  report.ritz_max = eigen.eigenvalues().maxCoeff();
+  report.ritz_steps = static_cast<int>(k);
+}
+} // namespace feticon::qp
