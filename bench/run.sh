@@ -9,7 +9,8 @@
 #   bench/run.sh --sizes 10k,100k,1M --reps 3      # also 1M (minutes per run)
 #   bench/run.sh --sizes 1M --kinds large --reps 1 --only contact
 #   bench/run.sh --only scalability                # parts: contact, scalability, weak, mprgp
-#   bench/run.sh --only weak --weak 1,2,4,8,16     # punch cells x k (k = 16: 1.5M DOFs, 7 GiB)
+#   bench/run.sh --only weak --weak 1,2,4,8,16     # punch cells x k (k = 16: 1.5M DOFs, 3.3 GiB)
+#   bench/run.sh --only weak --weak-cells 236,15   # cells per subdomain of the weak series
 #   bench/run.sh --feticon build-bench/feticon     # another build (default build/feticon)
 #   bench/run.sh --obstacle 1000 --obstacle-steps 1000   # MPRGP QP size n^2 and step cap
 #   bench/run.sh --preconditioners none,dirichlet  # dual preconditioners of the contact cases
@@ -22,6 +23,7 @@ kinds=small,large
 reps=3
 only=contact,scalability,weak,mprgp
 weak=1,2,4,8
+weak_cells=236,15
 out=$root/bench/results
 obstacle=1000
 obstacle_steps=1000
@@ -38,7 +40,8 @@ while [[ $# -gt 0 ]]; do
     --obstacle-steps) obstacle_steps=$2; shift 2 ;;
     --preconditioners) preconditioners=$2; shift 2 ;;
     --weak) weak=$2; shift 2 ;;
-    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+    --weak-cells) weak_cells=$2; shift 2 ;;
+    -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1 (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -86,16 +89,19 @@ if [[ ,$only, == *,scalability,* ]]; then
 fi
 if [[ ,$only, == *,weak,* ]]; then
   # H/h fixed: the flat punch example with its cells multiplied by k in x and y (h / k, a
-  # uniform mesh) and 236 cells per subdomain (subdomains x k^2), both partitioners.
+  # uniform mesh) and a fixed number of cells per subdomain (subdomains x k^2; 236 cells:
+  # H/h about 15, 15 cells: about 4), both partitioners.
   punch_dir=$(mktemp -d)
   trap 'rm -rf "$punch_dir"' EXIT
   for k in ${weak//,/ }; do
     sed -e "s/cells: \[40, 20, 1\]/cells: [$((40 * k)), $((20 * k)), 1]/" \
         -e "s/cells: \[12, 12, 1\]/cells: [$((12 * k)), $((12 * k)), 1]/" \
         "$root/examples/flat_punch/problem.yaml" > "$punch_dir/punch$k.yaml"
-    for partitioner in metis rcb; do
-      run_case "weak.punch.k$k.$partitioner" --no-direct "$punch_dir/punch$k.yaml" \
-        --set subdomain_cells=236 --set partitioner=$partitioner
+    for cells in ${weak_cells//,/ }; do
+      for partitioner in metis rcb; do
+        run_case "weak.punch.c$cells.k$k.$partitioner" --no-direct "$punch_dir/punch$k.yaml" \
+          --set subdomain_cells=$cells --set partitioner=$partitioner
+      done
     done
   done
 fi

@@ -97,14 +97,18 @@ SCALABILITY = {
     "reps": lambda c: c["reps"],
 }
 WEAK = {
-    "k": lambda c: c["case"].split(".")[2][1:],
-    "partitioner": lambda c: c["case"].split(".")[3],
+    "cells per subdomain": lambda c: c["case"].split(".")[2][1:],
+    "k": lambda c: c["case"].split(".")[3][1:],
+    "partitioner": lambda c: c["case"].split(".")[4],
     "DOFs": lambda c: c["degrees_of_freedom"],
     "subdomains": lambda c: c["subdomains"],
     "dual": lambda c: c["dual_size"],
     "MPRGP": lambda c: c["qp.iterations"],
-    "CG steps": lambda c: c["qp.cg_steps"],
+    "CG / expansion / proportioning": lambda c: "%d / %d / %d" % (c["qp.cg_steps"], c["qp.expansion_steps"],
+                                                                  c["qp.proportioning_steps"]),
     "SMALBE outer": lambda c: c["qp.smalbe_outer_iterations"],
+    "condition estimate": lambda c: c.get("qp.face_spectrum.condition_estimate"),
+    "longest CG run": lambda c: c.get("qp.face_spectrum.cg_steps"),
     "dual solve (s)": lambda c: c["timings_seconds.dual solve (MPRGP)"],
     "contact force (N)": lambda c: c["total_normal_force"],
     "peak MiB": lambda c: c["peak_memory_bytes"] / 2**20,
@@ -172,7 +176,8 @@ def main():
     scalability = sorted((c for n, c in cases.items() if n.startswith("scalability.")),
                          key=lambda c: (c.get("preconditioner", ""), float(c["case"].split(".")[1][1:])))
     weak = sorted((c for n, c in cases.items() if n.startswith("weak.")),
-                  key=lambda c: (c["case"].split(".")[3], int(c["case"].split(".")[2][1:])))
+                  key=lambda c: (-int(c["case"].split(".")[2][1:]), c["case"].split(".")[4],
+                                 int(c["case"].split(".")[3][1:])))
     mprgp = [c for n, c in sorted(cases.items()) if n.startswith("mprgp.")]
     text = ""
     if contact:
@@ -182,7 +187,7 @@ def main():
         text += table("Numerical scalability, 256 cells per subdomain (medians)", SCALABILITY,
                              scalability, results, "scalability.csv")
     if weak:
-        text += table("Weak scaling: flat punch, cells x k, 236 cells per subdomain (medians)", WEAK, weak,
+        text += table("Weak scaling: flat punch, cells x k, fixed cells per subdomain (medians)", WEAK, weak,
                       results, "weak.csv")
     if mprgp:
         text += table("MPRGP alone, 2D obstacle QP (medians)", MPRGP, mprgp, results, "mprgp.csv")
