@@ -42,7 +42,7 @@ nlohmann::json records(const nonlinear::ContactSolution& s)
     history.push_back({it.load_step, it.iteration, it.qp_iterations, it.cg_steps, it.expansion_steps,
                        it.proportioning_steps, it.hessian_multiplications, it.smalbe_outer,
                        it.residual_norm, it.displacement_change, it.active_contacts,
-                       it.feasibility_error, it.seconds, it.ritz_min, it.ritz_max, it.ritz_steps});
+                       it.feasibility_error, it.seconds, it.ritz.min, it.ritz.max, it.ritz.cg_steps});
   return {{"completed_steps", s.restart.completed_steps}, {"steps", steps}, {"history", history}};
 }
 } // namespace
@@ -105,9 +105,9 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
       it.seconds = h[12];
       if (h.size() > 15) // written since the spectrum estimate exists
       {
-        it.ritz_min = h[13];
-        it.ritz_max = h[14];
-        it.ritz_steps = h[15];
+        it.ritz.min = h[13];
+        it.ritz.max = h[14];
+        it.ritz.cg_steps = h[15];
       }
       solution.history.push_back(it);
     }

@@ -112,16 +112,16 @@ nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution)
 {
   const nonlinear::OuterIteration sum = qp_totals(solution);
   // The spectrum estimate of the longest CG run of the whole solve.
-  const nonlinear::OuterIteration* longest = nullptr;
+  qp::RitzValues longest;
   for (const auto& it : solution.history)
-    if (it.ritz_steps > 0 && (!longest || it.ritz_steps > longest->ritz_steps))
-      longest = &it;
+    if (it.ritz.cg_steps > longest.cg_steps)
+      longest = it.ritz;
   nlohmann::ordered_json spectrum = nullptr;
-  if (longest)
-    spectrum = {{"ritz_min", longest->ritz_min},
-                {"ritz_max", longest->ritz_max},
-                {"condition_estimate", longest->ritz_max / longest->ritz_min},
-                {"cg_steps", longest->ritz_steps}};
+  if (longest.cg_steps > 0)
+    spectrum = {{"ritz_min", longest.min},
+                {"ritz_max", longest.max},
+                {"condition_estimate", longest.max / longest.min},
+                {"cg_steps", longest.cg_steps}};
   return {{"iterations", sum.qp_iterations},
           {"hessian_multiplications", sum.hessian_multiplications},
           {"cg_steps", sum.cg_steps},

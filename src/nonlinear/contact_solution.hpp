@@ -3,6 +3,7 @@
 
 #include "contact/contact_constraints.hpp"
 #include "la/types.hpp"
+#include "qp/qp_report.hpp"
 
 #include <string>
 #include <vector>
@@ -25,11 +26,8 @@ struct OuterIteration
   int64_t preconditioner_applications = 0; ///< applications of the dual preconditioner
   double preconditioner_seconds = 0;       ///< wall time inside them (s)
   double qp_seconds = 0;             ///< wall time of MPRGP / SMALBE-M (s), without the setup
-  /// Extreme Ritz values of the preconditioned dual operator on the face of the QP's
-  /// longest run of CG steps, and its length (qp::QpReport).
-  double ritz_min = 0;
-  double ritz_max = 0;
-  int ritz_steps = 0;
+  /// Spectrum estimate of the preconditioned dual operator from the QP's longest CG run.
+  qp::RitzValues ritz;
   double residual_norm = 0;       ///< ||f_ext - f_int - B' lambda|| / ||f_ext|| after the update
   double displacement_change = 0; ///< ||du|| / ||u||
   int64_t active_contacts = 0;

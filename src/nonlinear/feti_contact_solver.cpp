@@ -274,9 +274,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       it.preconditioner_applications = solution.preconditioner_applications;
       it.preconditioner_seconds = solution.preconditioner_seconds;
       it.qp_seconds = solution.report.seconds;
-      it.ritz_min = solution.report.ritz_min;
-      it.ritz_max = solution.report.ritz_max;
-      it.ritz_steps = solution.report.ritz_steps;
+      it.ritz = solution.report.ritz;
       it.active_contacts = solution.active_contacts;
       it.feasibility_error = solution.feasibility_error;
       it.displacement_change =

@@ -177,7 +177,7 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
   QpReport report;
   RitzEstimate ritz;
   auto finish = [&](bool converged, std::string reason) {
-    ritz.write(report);
+    report.ritz = ritz.longest_run();
     report.converged = converged;
     report.reason = std::move(reason);
     report.seconds = seconds_since(start_time);

@@ -9,6 +9,19 @@
 
 namespace feticon::qp
 {
+/// Extreme Ritz values of the operator (times the preconditioner, if any) on the face of
+/// the longest run of consecutive CG steps, from that run's CG coefficients (the Lanczos
+/// tridiagonal, as PETSc's -ksp_monitor_singular_value). They bound the spectrum from
+/// inside and approach its ends as the run grows; max / min estimates the condition number
+/// that governs the CG phase. All 0 when no run had two steps.
+struct RitzValues
+{
+  double min = 0.0;
+  double max = 0.0;
+  /// CG steps of that run.
+  int cg_steps = 0;
+};
+
 /// Counters and final state of one solve; the meaning of each counter is fixed by the
 /// solver that fills it (see Mprgp and conjugate_gradient).
 struct QpReport
@@ -33,14 +46,7 @@ struct QpReport
   double cost = 0.0;
   /// Wall-clock time of the solve.
   double seconds = 0.0;
-  /// Extreme Ritz values of the operator (times the preconditioner, if any) on the face of
-  /// the longest run of consecutive CG steps, from that run's CG coefficients (the Lanczos
-  /// tridiagonal, as PETSc's -ksp_monitor_singular_value). They bound the spectrum from
-  /// inside and approach its ends as the run grows; ritz_max / ritz_min estimates the
-  /// condition number that governs the CG phase. 0 when no run had two steps.
-  double ritz_min = 0.0;
-  double ritz_max = 0.0;
-  /// CG steps of that run.
-  int ritz_steps = 0;
+  /// Spectrum estimate from the longest run of CG steps.
+  RitzValues ritz;
 };
 } // namespace feticon::qp

@@ -24,12 +24,12 @@ void RitzEstimate::end_run()
   _beta.clear();
 }
 
-void RitzEstimate::write(QpReport& report)
+RitzValues RitzEstimate::longest_run()
 {
   end_run();
   const auto k = static_cast<Eigen::Index>(_best_alpha.size());
   if (k < 2)
-    return;
+    return {};
   // The last beta belongs to a direction the run never used.
   Eigen::VectorXd diagonal(k), off_diagonal(k - 1);
   for (Eigen::Index j = 0; j < k; ++j)
@@ -44,9 +44,7 @@ void RitzEstimate::write(QpReport& report)
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
   eigen.computeFromTridiagonal(diagonal, off_diagonal, Eigen::EigenvaluesOnly);
   if (eigen.info() != Eigen::Success)
-    return;
-  report.ritz_min = eigen.eigenvalues().minCoeff();
-  report.ritz_max = eigen.eigenvalues().maxCoeff();
-  report.ritz_steps = static_cast<int>(k);
+    return {};
+  return {eigen.eigenvalues().minCoeff(), eigen.eigenvalues().maxCoeff(), static_cast<int>(k)};
 }
 } // namespace feticon::qp

@@ -26,9 +26,9 @@ public:
   void cg_step(double alpha, double beta);
   /// The CG recurrence restarts (a step that is not a CG step).
   void end_run();
-  /// Writes ritz_min, ritz_max and ritz_steps of the longest run (the current one
-  /// included) into the report; leaves them 0 when no run had two steps.
-  void write(QpReport& report);
+  /// The Ritz values of the longest run (the current one included); all 0 when no run
+  /// had two steps.
+  RitzValues longest_run();
 
 private:
   std::vector<double> _alpha, _beta;           ///< current run

@@ -99,12 +99,8 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
     report.proportioning_steps += r.proportioning_steps;
     report.hessian_multiplications += r.hessian_multiplications;
     report.projected_gradient_norm = r.projected_gradient_norm;
-    if (r.ritz_steps > report.ritz_steps)
-    {
-      report.ritz_min = r.ritz_min;
-      report.ritz_max = r.ritz_max;
-      report.ritz_steps = r.ritz_steps;
-    }
+    if (r.ritz.cg_steps > report.ritz.cg_steps)
+      report.ritz = r.ritz;
     report.outer_iterations = k + 1;
     const la::Vector Cx = _C.apply(x);
     const double feasibility = Cx.norm();

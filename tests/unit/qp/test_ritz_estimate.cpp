@@ -1,4 +1,4 @@
-/// Spectrum estimate of MPRGP's CG runs (QpReport::ritz_min/ritz_max, qp/ritz_estimate.hpp).
+/// Spectrum estimate of MPRGP's CG runs (QpReport::ritz, qp/ritz_estimate.hpp).
 
 #include "qp/mprgp.hpp"
 #include "qp_test_problems.hpp"
@@ -46,9 +46,9 @@ TEST(RitzEstimate, ExtremeEigenvaluesOfAnUnboundedCgRun)
   const test::CountingOperator A(matrix);
   const qp::QpReport report = solve_unbounded(A, nullptr, b);
   ASSERT_TRUE(report.converged) << report.reason;
-  EXPECT_EQ(report.ritz_steps, report.cg_steps);
-  EXPECT_NEAR(report.ritz_min, 1.0, 1e-6);
-  EXPECT_NEAR(report.ritz_max, 40.0, 40e-6);
+  EXPECT_EQ(report.ritz.cg_steps, report.cg_steps);
+  EXPECT_NEAR(report.ritz.min, 1.0, 1e-6);
+  EXPECT_NEAR(report.ritz.max, 40.0, 40e-6);
 }
 
 // Reference: with A = diag(d) and M = diag(d^(-1/2)), M A = diag(sqrt(d)): the estimate is
@@ -68,10 +68,10 @@ TEST(RitzEstimate, PreconditionedRunEstimatesTheSpectrumOfMA)
   const qp::QpReport report = solve_unbounded(A, &M, b);
   ASSERT_TRUE(report.converged) << report.reason;
   const double top = std::sqrt(40.0);
-  EXPECT_GE(report.ritz_min, 1.0 - 1e-12);
-  EXPECT_LT(report.ritz_min, 1.0 + 1e-6);
-  EXPECT_LE(report.ritz_max, top * (1 + 1e-12));
-  EXPECT_GT(report.ritz_max, top * (1 - 1e-5));
+  EXPECT_GE(report.ritz.min, 1.0 - 1e-12);
+  EXPECT_LT(report.ritz.min, 1.0 + 1e-6);
+  EXPECT_LE(report.ritz.max, top * (1 + 1e-12));
+  EXPECT_GT(report.ritz.max, top * (1 - 1e-5));
 }
 
 // Reference: Cauchy interlacing. With active bounds the runs work on faces, principal
@@ -89,10 +89,10 @@ TEST(RitzEstimate, FaceRunsStayInsideTheSpectrum)
     la::Vector x = la::Vector::Zero(60);
     const qp::QpReport report = mprgp.solve(problem.b, problem.lower, x);
     ASSERT_TRUE(report.converged) << report.reason;
-    ASSERT_GE(report.ritz_steps, 2);
-    EXPECT_LE(report.ritz_steps, report.cg_steps);
-    EXPECT_GE(report.ritz_min, 1.0 - 1e-9);
-    EXPECT_LE(report.ritz_max, 100.0 * (1 + 1e-9));
-    EXPECT_LT(report.ritz_min, report.ritz_max);
+    ASSERT_GE(report.ritz.cg_steps, 2);
+    EXPECT_LE(report.ritz.cg_steps, report.cg_steps);
+    EXPECT_GE(report.ritz.min, 1.0 - 1e-9);
+    EXPECT_LE(report.ritz.max, 100.0 * (1 + 1e-9));
+    EXPECT_LT(report.ritz.min, report.ritz.max);
   }
 }
