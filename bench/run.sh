@@ -9,7 +9,7 @@
 #   bench/run.sh --sizes 10k,100k,1M --reps 3      # also 1M (minutes per run)
 #   bench/run.sh --sizes 1M --kinds large --reps 1 --only contact
 #   bench/run.sh --only scalability                # parts: contact, scalability, weak, mprgp
-#   bench/run.sh --only weak --weak 1,2,4,8,16     # punch cells x k (k = 16: 1.5M DOFs, 3.3 GiB)
+#   bench/run.sh --only weak --weak 1,2,4,8,16     # punch cells x k (k = 16: 1.5M DOFs, 2.8-3.5 GiB)
 #   bench/run.sh --only weak --weak-cells 236,15   # cells per subdomain of the weak series
 #   bench/run.sh --feticon build-bench/feticon     # another build (default build/feticon)
 #   bench/run.sh --obstacle 1000 --obstacle-steps 1000   # MPRGP QP size n^2 and step cap
