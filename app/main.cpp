@@ -35,6 +35,7 @@ int main(int argc, char** argv)
   app.require_subcommand(1);
   feticon::app::register_run_command(app);
   feticon::app::register_qp_command(app);
+  feticon::app::register_export_command(app);
   feticon::app::register_bench_command(app);
   try
   {

@@ -83,12 +83,13 @@ void write_pressure_csv(const std::filesystem::path& path,
                         const std::vector<nonlinear::PressureSample>& samples)
 {
   std::ostringstream os;
-  os << "x_m,y_m,z_m,force_N,area_m2,pressure_multipliers_Pa,pressure_stress_Pa,pressure_mcewen_Pa\n";
+  os << "x_m,y_m,z_m,force_N,area_m2,pressure_multipliers_Pa,pressure_stress_Pa,pressure_mcewen_Pa,"
+        "x_deformed_m\n";
   char line[320];
   for (const auto& s : samples)
   {
-    std::snprintf(line, sizeof line, "%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n", s.x, s.y, s.z,
-                  s.force, s.area, s.pressure, s.stress_pressure, s.analytic);
+    std::snprintf(line, sizeof line, "%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n", s.x, s.y,
+                  s.z, s.force, s.area, s.pressure, s.stress_pressure, s.analytic, s.deformed_x);
     os << line;
   }
   io::write_file_atomically(path, os.str());

@@ -51,16 +51,19 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
                                           std::lround(X(node, 2) * key_scale), node);
   };
   std::map<std::tuple<long, long, long, int32_t>, PressureSample> by_x;
+  std::map<std::tuple<long, long, long, int32_t>, int> nodes_in_sample;
   for (int32_t node : problem.mesh.face_set_nodes(problem.contacts[0].slave))
   {
-    auto& s = by_x[key_of(node)];
-    if (s.area == 0)
+    const auto key = key_of(node);
+    auto& s = by_x[key];
+    if (nodes_in_sample[key]++ == 0)
     {
       s.x = problem.mesh.nodes(node, 0);
       s.y = problem.mesh.nodes(node, 1);
       s.z = problem.mesh.nodes(node, 2);
     }
     s.area += tributary(3 * node);
+    s.deformed_x += problem.mesh.nodes(node, 0) + solution.u(3 * node);
   }
   for (size_t i = 0; i < rows.slave_node.size(); ++i)
   {
@@ -78,6 +81,7 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
   std::vector<PressureSample> out;
   for (auto& [key, s] : by_x)
   {
+    s.deformed_x /= nodes_in_sample[key];
     if (s.analytic > 0)
       s.stress_pressure /= s.analytic;
     s.analytic = 0;

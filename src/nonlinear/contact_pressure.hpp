@@ -22,6 +22,7 @@ struct PressureSample
   double x = 0;              ///< reference coordinates of the node (of the node line in
   double y = 0;              ///< plane strain, where y and z are those of its first node) (m)
   double z = 0;
+  double deformed_x = 0;     ///< x + u_x, averaged over the node line in plane strain (m)
   double force = 0;          ///< normal contact force of the node(s) (N)
   double area = 0;           ///< their tributary area (m^2)
   double pressure = 0;       ///< force / area (Pa)

@@ -1,0 +1,85 @@
+/// `feticon export`: the model that `feticon run` with the same arguments solves, written for
+/// another code (today CalculiX), so that both are measured on identical meshes
+/// (bench/calculix.sh).
+///
+/// Sample run:
+///   feticon export --set hertz.refinement=4.4 --format calculix --output deck
+///       writes deck/feticon.inp; `cd deck && ccx feticon` solves it.
+
+#include "app/commands.hpp"
+#include "app/problem_setup.hpp"
+#include "common/error.hpp"
+#include "common/log.hpp"
+#include "io/atomic_file.hpp"
+#include "io/calculix_deck.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+namespace feticon::app
+{
+namespace
+{
+struct ExportOptions
+{
+  std::string problem_file;
+  std::vector<std::string> overrides;
+  std::string format;
+  std::string output;
+  double contact_stiffness_factor = 5.0;
+  double overclosure = -1.0;
+};
+
+void export_model(const ExportOptions& options)
+{
+  FETICON_CHECK(options.format == "calculix",
+                "export: --format " << options.format << " is not known; the one format is calculix");
+  const io::ProblemFile file = io::load_problem_file(options.problem_file, options.overrides);
+  const fem::Problem problem = build_problem(file);
+  io::CalculixOptions deck;
+  const bool large = file.settings.text("displacements") == "large";
+  deck.nlgeom = large;
+  deck.increments = large ? static_cast<int>(file.settings.integer("load_steps")) : 1;
+  deck.contact_stiffness_factor = options.contact_stiffness_factor;
+  deck.overclosure = options.overclosure;
+
+  std::ostringstream text;
+  const io::CalculixDeckSummary s = io::write_calculix_deck(problem, deck, text);
+  const std::filesystem::path dir(options.output);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  FETICON_CHECK(!ec, "cannot create the output folder " << dir.string() << ": " << ec.message());
+  io::write_file_atomically(dir / "feticon.inp", text.str());
+
+  std::ostringstream message;
+  message << "export: " << (dir / "feticon.inp").string() << ": " << s.n_nodes << " nodes, " << s.n_elements
+          << " C3D8 elements, " << s.n_contact_pairs << " contact pair(s) (" << s.n_slave_faces << " slave, "
+          << s.n_master_faces << " master faces, K = " << s.contact_stiffness << " Pa/m), " << s.n_cloads
+          << " nodal loads, total (" << s.total_load[0] << ", " << s.total_load[1] << ", " << s.total_load[2]
+          << ") N, " << deck.increments << " increment(s)" << (deck.nlgeom ? ", NLGEOM" : "");
+  if (s.overclosure > 0)
+    message << ", floating slave body shifted " << s.overclosure << " m into its master";
+  log::info(message.str());
+}
+} // namespace
+
+void register_export_command(CLI::App& app)
+{
+  auto options = std::make_shared<ExportOptions>();
+  CLI::App* cmd = app.add_subcommand("export", "Write the model `feticon run` would solve (same file and --set) "
+                                               "as another code's input: --format calculix writes DIR/feticon.inp");
+  cmd->add_option("problem", options->problem_file, "problem file (YAML); omit for the built-in Hertz problem");
+  cmd->add_option("--set,-s", options->overrides, "override a setting, KEY=VALUE (repeatable)");
+  cmd->add_option("--format", options->format, "target format: calculix")->required();
+  cmd->add_option("--output,-o", options->output, "folder of the written deck")->required();
+  cmd->add_option("--contact-stiffness", options->contact_stiffness_factor,
+                  "penalty slope of CalculiX's pressure-overclosure law as a multiple of E / h (h the "
+                  "shortest slave face edge; see src/io/calculix_deck.hpp)")
+      ->capture_default_str();
+  cmd->add_option("--overclosure", options->overclosure,
+                  "shift (m) of a slave body held only by contact into its master; default 2 % of the "
+                  "shortest slave face edge");
+  cmd->callback([options] { export_model(*options); });
+}
+} // namespace feticon::app

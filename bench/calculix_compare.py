@@ -1,0 +1,240 @@
+#!/usr/bin/python3
+"""feticon and CalculiX on one exported model: reads both codes' results of a case folder
+written by bench/calculix.sh and computes every figure with the same code for both.
+
+    bench/calculix_compare.py CASE_DIR          # writes CASE_DIR/comparison.json, prints it
+
+CASE_DIR holds deck/feticon.inp (the export), ccx.rep<i>/ (feticon.frd, feticon.dat, stdout,
+time), feticon.rep<i>/ (summary.json, contact_pressure.csv, time) and export.log.
+
+Conventions. Both pressures are per deformed area: CalculiX's CPRESS is the penalty pressure
+(Cauchy traction) at the slave nodes, extrapolated from its integration points; feticon's is
+the nodal normal force over the node's tributary area in the current configuration. In plane
+strain (one cell layer) the two nodes through the thickness form one sample (their mean).
+Hertz figures, against McEwen's p(x) = p0 sqrt(1 - x^2/a^2) with a and p0 from feticon's
+summary (they depend on the problem only), use the deformed coordinate x + u_x with large
+displacements and the reference x with small ones:
+  - peak error: (max nodal pressure - p0) / p0;
+  - a_fit: p^2 = A + B x^2 fitted by least squares over the loaded samples (p > 1e-3 max p),
+    a = sqrt(-A/B), so a single lightly loaded node does not move it by an element;
+  - rms_over_p0: RMS of p - p_McEwen over 400 equidistant points of [0, a], p interpolated
+    linearly between samples, divided by p0.
+Times are GNU time's wall clock; memory its maximum resident set size.
+"""
+import glob
+import json
+import math
+import os
+import re
+import statistics
+import sys
+
+ACTIVE = 1e-3  # a sample is loaded when p > ACTIVE * max p (the one threshold used here)
+
+
+# CalculiX's C3D8 faces S1..S6 as 0-based positions in the element's node list.
+C3D8_FACES = [(0, 1, 2, 3), (4, 7, 6, 5), (0, 4, 5, 1), (1, 5, 6, 2), (2, 6, 7, 3), (3, 7, 4, 0)]
+
+
+def read_deck(path):
+    """Node coordinates {id: (x, y, z)} of the deck (after the slave shift) and the node ids of
+    the slave surface of the first *CONTACT PAIR."""
+    nodes, elements, surfaces, section, name, slave = {}, {}, {}, None, None, None
+    with open(path) as f:
+        for line in f:
+            if line.startswith("**"):
+                continue
+            if line.startswith("*"):
+                words = [w.strip() for w in line.strip().split(",")]
+                section = words[0].upper()
+                name = next((w.split("=")[1] for w in words[1:] if w.upper().startswith("NAME=")), None)
+                if section == "*SURFACE":
+                    surfaces[name] = []
+                continue
+            v = [t.strip() for t in line.split(",")]
+            if section == "*NODE":
+                nodes[int(v[0])] = tuple(float(t) for t in v[1:4])
+            elif section == "*ELEMENT":
+                elements[int(v[0])] = [int(t) for t in v[1:9]]
+            elif section == "*SURFACE":
+                surfaces[name].append((int(v[0]), int(v[1][1:])))
+            elif section == "*CONTACT PAIR" and slave is None:
+                slave = v[0]
+    slave_nodes = set()
+    for element, face in surfaces.get(slave, []):
+        slave_nodes.update(elements[element][k] for k in C3D8_FACES[face - 1])
+    return nodes, slave_nodes
+
+
+def read_frd_last(path, block):
+    """{node: [values]} of the last result block named `block` (e.g. DISP, CONTACT) in a .frd."""
+    result, current, reading = None, None, False
+    with open(path) as f:
+        for line in f:
+            if line.startswith(" -4"):
+                reading = line.split()[1] == block
+                if reading:
+                    current = {}
+                continue
+            if reading and line.startswith(" -1"):
+                node = int(line[3:13])
+                text = line[13:].rstrip("\n")
+                current[node] = [float(text[k:k + 12]) for k in range(0, len(text), 12) if text[k:k + 12].strip()]
+            elif reading and line.startswith(" -3"):
+                reading = False
+                result = current
+    return result or {}
+
+
+def time_of(path):
+    """(wall seconds, max RSS bytes, CPU percent) from a GNU time -f '%e %M %P' file."""
+    with open(path) as f:
+        lines = [l for l in f.read().split("\n") if l.strip()]
+    wall, rss, cpu = lines[-1].split()
+    return float(wall), 1024 * int(rss), float(cpu.rstrip("%"))
+
+
+def hertz_figures(samples, a, p0, large):
+    """samples: [(x_ref, x_def, p)]; figures against McEwen in the chosen frame."""
+    pts = sorted(((xd if large else xr), p) for xr, xd, p in samples)
+    p_max = max(p for _, p in pts)
+    loaded = [(x, p) for x, p in pts if p > ACTIVE * p_max]
+    n = len(loaded)
+    sx = sum(x * x for x, _ in loaded)
+    sy = sum(p * p for _, p in loaded)
+    sxx = sum(x ** 4 for x, _ in loaded)
+    sxy = sum(x * x * p * p for x, p in loaded)
+    slope = (n * sxy - sx * sy) / (n * sxx - sx * sx)
+    intercept = (sy - slope * sx) / n
+    a_fit = math.sqrt(-intercept / slope) if slope < 0 < intercept else float("nan")
+
+    def interpolate(x):
+        for (x0, q0), (x1, q1) in zip(pts, pts[1:]):
+            if x0 <= x <= x1:
+                return q0 + (q1 - q0) * (x - x0) / (x1 - x0) if x1 > x0 else q0
+        return pts[0][1] if x < pts[0][0] else 0.0
+
+    m = 400
+    sq = 0.0
+    for k in range(m):
+        x = a * (k + 0.5) / m
+        sq += (interpolate(x) - p0 * math.sqrt(max(0.0, 1 - (x / a) ** 2))) ** 2
+    return {"frame": "deformed" if large else "reference",
+            "p_peak": p_max, "peak_error": (p_max - p0) / p0,
+            "a_fit": a_fit, "a_error": (a_fit - a) / a,
+            "rms_over_p0": math.sqrt(sq / m) / p0,
+            "loaded_samples": n}
+
+
+def group_plane_strain(rows, plane_strain):
+    """Mean of the rows (x_ref, x_def, p) of one reference x (node lines through the thickness)."""
+    if not plane_strain:
+        return rows
+    groups = {}
+    for xr, xd, p in rows:
+        groups.setdefault(round(xr, 9), []).append((xr, xd, p))
+    return [tuple(sum(v[i] for v in g) / len(g) for i in range(3)) for g in groups.values()]
+
+
+def calculix_run(folder, deck_nodes, slave_nodes, plane_strain):
+    wall, rss, cpu = time_of(os.path.join(folder, "time"))
+    with open(os.path.join(folder, "stdout")) as f:
+        log = f.read()
+    eq = re.search(r"number of equations\s*\n\s*(\d+)", log)
+    increments = len(re.findall(r"increment \d+ attempt 1", log))
+    frd = os.path.join(folder, "feticon.frd")
+    disp = read_frd_last(frd, "DISP")
+    contact = read_frd_last(frd, "CONTACT")
+    rows = []
+    for node in slave_nodes:
+        values = contact.get(node, [0.0] * 6)
+        x = deck_nodes[node]
+        rows.append((x[0], x[0] + disp[node][0], values[3]))  # CPRESS is the 4th component
+    # Reactions: *NODE PRINT TOTALS=ONLY of every support set, last increment.
+    with open(os.path.join(folder, "feticon.dat")) as f:
+        dat = f.read()
+    totals = {}
+    for name, body in re.findall(r"total force \(fx,fy,fz\) for set (\S+) and time\s+\S+\s*\n\s*\n?\s*([^\n]+)", dat):
+        totals[name] = [float(v) for v in body.split()]
+    return {"seconds": wall, "peak_memory_bytes": rss, "cpu_percent": cpu,
+            "equations": int(eq.group(1)) if eq else None, "increments": increments,
+            "reactions": totals}, group_plane_strain(rows, plane_strain)
+
+
+def feticon_run(folder, plane_strain):
+    wall, rss, cpu = time_of(os.path.join(folder, "time"))
+    with open(os.path.join(folder, "summary.json")) as f:
+        summary = json.load(f)
+    rows = []
+    with open(os.path.join(folder, "contact_pressure.csv")) as f:
+        head = f.readline().strip().split(",")
+        for line in f:
+            r = dict(zip(head, (float(v) for v in line.split(","))))
+            rows.append((r["x_m"], r["x_deformed_m"], r["pressure_multipliers_Pa"]))
+    qp = summary.get("qp", {})
+    return {"seconds": wall, "peak_memory_bytes": rss, "cpu_percent": cpu,
+            "degrees_of_freedom": summary["degrees_of_freedom"], "nodes": summary["nodes"],
+            "subdomains": summary["subdomains"], "converged": summary["converged"],
+            "outer_iterations": sum(s["outer_iterations"] for s in summary.get("steps", [])),
+            "mprgp_iterations": qp.get("iterations"), "hessian_multiplications": qp.get("hessian_multiplications"),
+            "total_normal_force": summary.get("contact", {}).get("total_normal_force")}, rows, summary
+
+
+def median_run(runs):
+    """The run of median wall time, with the median and all times."""
+    ordered = sorted(runs, key=lambda r: r["seconds"])
+    out = dict(ordered[(len(ordered) - 1) // 2])
+    out["seconds_all"] = [r["seconds"] for r in runs]
+    out["seconds"] = statistics.median(out["seconds_all"])
+    return out
+
+
+def main(case):
+    deck = os.path.join(case, "deck", "feticon.inp")
+    deck_nodes, slave_nodes = read_deck(deck)
+    with open(deck) as f:
+        text = f.read()
+    plane_strain = re.search(r"^NALL, 3, 3", text, re.M) is not None
+    load = [0.0, 0.0, 0.0]
+    in_cload = False
+    for line in text.split("\n"):
+        if line.startswith("*"):
+            in_cload = line.startswith("*CLOAD")
+        elif in_cload and line.strip():
+            node, dof, value = line.split(",")
+            load[int(dof) - 1] += float(value)
+
+    fet_runs, fet_rows, summary = [], None, None
+    for d in sorted(glob.glob(os.path.join(case, "feticon.rep*"))):
+        r, fet_rows, summary = feticon_run(d, plane_strain)
+        fet_runs.append(r)
+    ccx_runs, ccx_rows = [], None
+    for d in sorted(glob.glob(os.path.join(case, "ccx.rep*"))):
+        r, ccx_rows = calculix_run(d, deck_nodes, slave_nodes, plane_strain)
+        ccx_runs.append(r)
+    out = {"case": os.path.basename(os.path.normpath(case)), "applied_load_N": load,
+           "feticon": median_run(fet_runs) if fet_runs else None,
+           "calculix": median_run(ccx_runs) if ccx_runs else None}
+    large = summary is not None and summary.get("displacements") == "large"
+    for name, rows in (("feticon", fet_rows), ("calculix", ccx_rows)):
+        if rows and out[name]:
+            out[name]["peak_pressure"] = max(p for _, _, p in rows)
+            if summary and "hertz" in summary:
+                h = summary["hertz"]
+                out[name]["hertz"] = hertz_figures(rows, h["a_analytic"], h["p0_analytic"], large)
+                if large:
+                    out[name]["hertz_reference_frame"] = hertz_figures(rows, h["a_analytic"], h["p0_analytic"], False)
+    if out["feticon"] and out["calculix"]:
+        out["time_ratio_calculix_over_feticon"] = out["calculix"]["seconds"] / out["feticon"]["seconds"]
+        out["memory_ratio_calculix_over_feticon"] = (out["calculix"]["peak_memory_bytes"] /
+                                                     out["feticon"]["peak_memory_bytes"])
+        out["peak_pressure_difference"] = (out["calculix"]["peak_pressure"] / out["feticon"]["peak_pressure"] - 1)
+    with open(os.path.join(case, "comparison.json"), "w") as f:
+        json.dump(out, f, indent=2)
+    print(json.dumps(out, indent=2))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit("usage: bench/calculix_compare.py CASE_DIR")
+    main(sys.argv[1])

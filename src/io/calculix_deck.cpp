@@ -1,0 +1,272 @@
+#include "io/calculix_deck.hpp"
+
+#include "common/error.hpp"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <set>
+
+namespace feticon::io
+{
+namespace
+{
+/// CalculiX's C3D8 faces S1..S6 as VTK-order local node ids (CalculiX manual, C3D8).
+constexpr std::array<std::array<int, 4>, 6> calculix_faces = {{
+    {0, 1, 2, 3}, // S1
+    {4, 7, 6, 5}, // S2
+    {0, 4, 5, 1}, // S3
+    {1, 5, 6, 2}, // S4
+    {2, 6, 7, 3}, // S5
+    {3, 7, 4, 0}, // S6
+}};
+
+/// A real number in CalculiX's free format: 13 significant digits fit its 20-character fields.
+std::string number(double v)
+{
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.12e", v);
+  return buffer;
+}
+
+/// Deck names: CalculiX upper-cases names and allows 80 characters; feticon's set names are
+/// identifiers already, so only a prefix keeps them apart from the deck's own.
+std::string deck_name(const std::string& prefix, const std::string& name)
+{
+  std::string out = prefix + name;
+  for (char& c : out)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_')
+      c = '_';
+  FETICON_CHECK(out.size() <= 80, "calculix export: the name '" << name << "' is longer than CalculiX's 80 characters");
+  return out;
+}
+
+/// Element and CalculiX face number (1..6) of every face of a set.
+std::vector<std::pair<int32_t, int>> element_faces(const mesh::HexMesh& mesh, const std::string& set,
+                                                   const std::vector<std::vector<int32_t>>& cells_of_node)
+{
+  std::vector<std::pair<int32_t, int>> out;
+  for (const mesh::Face& face : mesh.face_set(set))
+  {
+    std::array<int32_t, 4> key = face;
+    std::sort(key.begin(), key.end());
+    std::pair<int32_t, int> found{-1, 0};
+    for (int32_t c : cells_of_node[face[0]])
+      for (int f = 0; f < 6 && found.first < 0; ++f)
+      {
+        std::array<int32_t, 4> nodes;
+        for (int k = 0; k < 4; ++k)
+          nodes[k] = mesh.cells[c][calculix_faces[f][k]];
+        std::sort(nodes.begin(), nodes.end());
+        if (nodes == key)
+          found = {c, f + 1};
+      }
+    FETICON_CHECK(found.first >= 0, "calculix export: a face of set '" << set << "' (nodes " << face[0] << ", "
+                                                                       << face[1] << ", " << face[2] << ", " << face[3]
+                                                                       << ") is no face of a hex8 cell");
+    out.push_back(found);
+  }
+  return out;
+}
+
+/// The one body the cells of a face set belong to.
+int32_t body_of_faces(const mesh::HexMesh& mesh, const std::string& set,
+                      const std::vector<std::pair<int32_t, int>>& faces)
+{
+  std::set<int32_t> bodies;
+  for (const auto& [cell, f] : faces)
+    bodies.insert(mesh.cell_body[cell]);
+  FETICON_CHECK(bodies.size() == 1, "calculix export: contact surface '" << set << "' spans " << bodies.size()
+                                                                        << " bodies; it must lie on one");
+  return *bodies.begin();
+}
+
+/// Area-weighted mean outward normal of a face set (unit), and its shortest face edge: the
+/// contact element size where the mesh is finest (the thickness of a plane-strain layer is
+/// no contact size, and it is the longer edge there).
+std::pair<Eigen::Vector3d, double> mean_normal_and_size(const mesh::HexMesh& mesh, const std::string& set)
+{
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const mesh::Face& f : mesh.face_set(set))
+  {
+    const Eigen::Vector3d a = mesh.nodes.row(f[2]) - mesh.nodes.row(f[0]);
+    const Eigen::Vector3d b = mesh.nodes.row(f[3]) - mesh.nodes.row(f[1]);
+    sum += 0.5 * a.cross(b); // area vector of the quad
+    for (int k = 0; k < 4; ++k)
+      shortest = std::min(shortest, (mesh.nodes.row(f[(k + 1) % 4]) - mesh.nodes.row(f[k])).norm());
+  }
+  FETICON_CHECK(sum.norm() > 0 && shortest > 0, "calculix export: face set '" << set << "' has no area");
+  return {sum.normalized(), shortest};
+}
+
+/// True if no node of `body` has a prescribed displacement component along `normal` (a
+/// component counts if the normal has a part along it of at least 1e-3).
+bool floats_along(const fem::Problem& problem, int32_t body, const Eigen::Vector3d& normal)
+{
+  std::vector<char> in_body(problem.mesh.n_nodes(), 0);
+  for (int32_t c = 0; c < problem.mesh.n_cells(); ++c)
+    if (problem.mesh.cell_body[c] == body)
+      for (int32_t n : problem.mesh.cells[c])
+        in_body[n] = 1;
+  for (const fem::DirichletCondition& d : problem.dirichlet)
+    for (int i = 0; i < 3; ++i)
+      if (d.value[i] && std::abs(normal(i)) >= 1e-3)
+        for (int32_t n : problem.mesh.node_set(d.set))
+          if (in_body[n])
+            return false;
+  return true;
+}
+} // namespace
+
+CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const CalculixOptions& options,
+                                        std::ostream& out)
+{
+  FETICON_CHECK(options.increments >= 1, "calculix export: increments = " << options.increments << " must be >= 1");
+  FETICON_CHECK(std::isfinite(options.contact_stiffness_factor) && options.contact_stiffness_factor > 0,
+                "calculix export: contact stiffness factor " << options.contact_stiffness_factor << " must be positive");
+  const mesh::HexMesh& mesh = problem.mesh;
+  CalculixDeckSummary summary;
+  summary.n_nodes = mesh.n_nodes();
+  summary.n_elements = mesh.n_cells();
+
+  std::vector<std::vector<int32_t>> cells_of_node(mesh.n_nodes());
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    for (int32_t n : mesh.cells[c])
+      cells_of_node[n].push_back(c);
+
+  // Contact pairs first: the shift of floating slave bodies changes the node coordinates.
+  struct Pair
+  {
+    std::vector<std::pair<int32_t, int>> slave, master;
+    double stiffness;
+  };
+  std::vector<Pair> pairs;
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> x = mesh.nodes;
+  std::vector<char> shifted_body(mesh.n_bodies(), 0);
+  for (const fem::ContactPairNames& names : problem.contacts)
+  {
+    Pair pair;
+    pair.slave = element_faces(mesh, names.slave, cells_of_node);
+    pair.master = element_faces(mesh, names.master, cells_of_node);
+    const int32_t slave_body = body_of_faces(mesh, names.slave, pair.slave);
+    const int32_t master_body = body_of_faces(mesh, names.master, pair.master);
+    FETICON_CHECK(slave_body != master_body, "calculix export: contact pair " << names.slave << " / " << names.master
+                                                                              << " lies on one body");
+    const double slave_size = mean_normal_and_size(mesh, names.slave).second;
+    const Eigen::Vector3d master_normal = mean_normal_and_size(mesh, names.master).first;
+    const double young = std::max(problem.materials[slave_body].young, problem.materials[master_body].young);
+    pair.stiffness = options.contact_stiffness_factor * young / slave_size;
+    if (floats_along(problem, slave_body, master_normal) && !shifted_body[slave_body])
+    {
+      const double shift = options.overclosure >= 0 ? options.overclosure : 0.02 * slave_size;
+      for (int32_t c = 0; c < mesh.n_cells(); ++c)
+        if (mesh.cell_body[c] == slave_body)
+          for (int32_t n : mesh.cells[c])
+            x.row(n) = mesh.nodes.row(n) - shift * master_normal.transpose();
+      shifted_body[slave_body] = 1;
+      summary.overclosure = shift;
+    }
+    summary.n_slave_faces += static_cast<int64_t>(pair.slave.size());
+    summary.n_master_faces += static_cast<int64_t>(pair.master.size());
+    pairs.push_back(std::move(pair));
+  }
+  summary.n_contact_pairs = static_cast<int64_t>(pairs.size());
+  if (!pairs.empty())
+    summary.contact_stiffness = pairs.front().stiffness;
+
+  out << "** CalculiX deck of the feticon problem '" << problem.name << "' (feticon export --format calculix)\n"
+      << "** SI units: m, N, Pa. " << mesh.n_nodes() << " nodes, " << mesh.n_cells() << " C3D8 elements.\n";
+  if (summary.overclosure > 0)
+    out << "** Slave bodies held only by contact are shifted by " << number(summary.overclosure)
+        << " m into their master (see src/io/calculix_deck.hpp).\n";
+  out << "*HEADING\nfeticon " << problem.name << "\n*NODE, NSET=NALL\n";
+  for (int32_t n = 0; n < mesh.n_nodes(); ++n)
+    out << n + 1 << ", " << number(x(n, 0)) << ", " << number(x(n, 1)) << ", " << number(x(n, 2)) << '\n';
+  for (int32_t b = 0; b < mesh.n_bodies(); ++b)
+  {
+    out << "*ELEMENT, TYPE=C3D8, ELSET=" << deck_name("B_", mesh.body_names[b]) << '\n';
+    for (int32_t c = 0; c < mesh.n_cells(); ++c)
+      if (mesh.cell_body[c] == b)
+      {
+        out << c + 1;
+        for (int32_t n : mesh.cells[c])
+          out << ", " << n + 1;
+        out << '\n';
+      }
+  }
+
+  std::set<std::string> node_sets;
+  for (const fem::DirichletCondition& d : problem.dirichlet)
+    node_sets.insert(d.set);
+  for (const std::string& name : node_sets)
+  {
+    out << "*NSET, NSET=" << deck_name("N_", name) << '\n';
+    int k = 0;
+    for (int32_t n : mesh.node_set(name))
+      out << n + 1 << (++k % 16 == 0 ? ",\n" : ", ");
+    out << '\n';
+  }
+
+  for (int32_t b = 0; b < mesh.n_bodies(); ++b)
+  {
+    const fem::Material& m = problem.materials[b];
+    out << "*MATERIAL, NAME=" << deck_name("M_", mesh.body_names[b]) << "\n*ELASTIC\n"
+        << number(m.young) << ", " << number(m.poisson) << '\n'
+        << "*SOLID SECTION, ELSET=" << deck_name("B_", mesh.body_names[b])
+        << ", MATERIAL=" << deck_name("M_", mesh.body_names[b]) << '\n';
+  }
+
+  for (size_t p = 0; p < pairs.size(); ++p)
+  {
+    const fem::ContactPairNames& names = problem.contacts[p];
+    for (const auto& [set, faces] : {std::pair{names.slave, &pairs[p].slave}, std::pair{names.master, &pairs[p].master}})
+    {
+      out << "*SURFACE, NAME=" << deck_name("S_", set) << ", TYPE=ELEMENT\n";
+      for (const auto& [cell, f] : *faces)
+        out << cell + 1 << ", S" << f << '\n';
+    }
+    const std::string interaction = "SI_" + std::to_string(p + 1);
+    out << "*SURFACE INTERACTION, NAME=" << interaction << "\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n"
+        << number(pairs[p].stiffness) << '\n'
+        << "*CONTACT PAIR, INTERACTION=" << interaction << ", TYPE=SURFACE TO SURFACE\n"
+        << deck_name("S_", names.slave) << ", " << deck_name("S_", names.master) << '\n';
+  }
+
+  const double increment = 1.0 / options.increments;
+  out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "") << ", INC=10000\n*STATIC\n"
+      << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
+  out << "*BOUNDARY\n";
+  for (const fem::DirichletCondition& d : problem.dirichlet)
+    for (int i = 0; i < 3; ++i)
+      if (d.value[i])
+        out << deck_name("N_", d.set) << ", " << i + 1 << ", " << i + 1 << ", " << number(*d.value[i]) << '\n';
+  for (int i = 0; i < 3; ++i)
+    if (problem.eliminated[i])
+      out << "NALL, " << i + 1 << ", " << i + 1 << ", 0.0\n";
+
+  const la::Vector f = problem.external_force();
+  out << "*CLOAD\n";
+  for (int32_t n = 0; n < mesh.n_nodes(); ++n)
+    for (int i = 0; i < 3; ++i)
+    {
+      const double value = f(3 * n + i);
+      if (value == 0)
+        continue;
+      out << n + 1 << ", " << i + 1 << ", " << number(value) << '\n';
+      summary.total_load[i] += value;
+      ++summary.n_cloads;
+    }
+
+  out << "*NODE FILE\nU, RF\n";
+  if (!pairs.empty())
+    out << "*CONTACT FILE\nCSTR\n";
+  for (const std::string& name : node_sets)
+    out << "*NODE PRINT, NSET=" << deck_name("N_", name) << ", TOTALS=ONLY\nRF\n";
+  out << "*END STEP\n";
+  FETICON_CHECK(out.good(), "calculix export: writing the deck failed");
+  return summary;
+}
+} // namespace feticon::io
