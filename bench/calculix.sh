@@ -8,6 +8,8 @@
 #   bench/calculix.sh --name hertz-large-60 --reps 3 -- --set hertz.refinement=2.2034
 #   bench/calculix.sh --name punch --reps 1 -- examples/flat_punch/problem.yaml
 #   bench/calculix.sh --suite                      # the table of docs/benchmarks.md
+#   bench/calculix.sh --suite --across 60,120,240  # Hertz sizes (slave elements across 2a);
+#                                                  # 240 runs once (minutes per run)
 #   bench/calculix.sh --feticon build-old/feticon ...   # another build (default build/feticon)
 #   bench/calculix.sh --out /tmp/cases ...         # case folders elsewhere
 #
@@ -20,6 +22,7 @@ feticon=$root/build/feticon
 reps=3
 name=
 suite=false
+sizes=60,120
 threads=2
 out=$root/bench/results/calculix
 while [[ $# -gt 0 ]]; do
@@ -30,8 +33,9 @@ while [[ $# -gt 0 ]]; do
     --threads) threads=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --suite) suite=true; shift ;;
+    --across) sizes=$2; shift 2 ;;
     --) shift; break ;;
-    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
     *) echo "bench/calculix.sh: unknown option $1 (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -55,15 +59,12 @@ fi
 across() { /usr/bin/python3 -c "print(round($1 / 27.2312, 4))"; }
 
 if $suite; then
-  for n in 60 120; do
+  for n in ${sizes//,/ }; do
+    case_reps=$reps; ((n <= 120)) || case_reps=1
     for kind in small large; do
-      "$0" --feticon "$feticon" --out "$out" --reps "$reps" --name "hertz-$kind-$n" -- \
+      "$0" --feticon "$feticon" --out "$out" --reps "$case_reps" --name "hertz-$kind-$n" -- \
         --set "hertz.refinement=$(across $n)" --set displacements=$kind
     done
-  done
-  for kind in small large; do
-    "$0" --feticon "$feticon" --out "$out" --reps 1 --name "hertz-$kind-240" -- \
-      --set "hertz.refinement=$(across 240)" --set displacements=$kind --set subdomains=16
   done
   "$0" --feticon "$feticon" --out "$out" --reps "$reps" --name punch -- "$root/examples/flat_punch/problem.yaml"
   "$0" --feticon "$feticon" --out "$out" --reps "$reps" --name sphere -- "$root/examples/sphere_on_block/problem.yaml"
