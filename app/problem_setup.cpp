@@ -23,6 +23,7 @@ problems::HertzParameters hertz_parameters(const io::Settings& s)
 {
   problems::HertzParameters p;
   p.line_load = s.number("hertz.line_load");
+  p.mesh.kind = s.text("hertz.mesh") == "tensor" ? mesh::HertzMeshKind::tensor : mesh::HertzMeshKind::graded;
   p.mesh.refinement = s.number("hertz.refinement");
   p.mesh.element_size = s.number("hertz.element_size");
   p.mesh.master_ratio = s.number("hertz.master_ratio");

@@ -10,6 +10,7 @@
 #include "io/atomic_file.hpp"
 #include "io/problem_file.hpp"
 #include "io/settings.hpp"
+#include "mesh/mesh_quality.hpp"
 #include "nonlinear/feti_contact_solver.hpp"
 #include "nonlinear/primal_penalty_solver.hpp"
 
@@ -195,6 +196,11 @@ void run(const RunOptions& options)
   summary["subdomains"] = solution.n_subdomains;
   summary["dual_size"] = solution.n_dual;
   summary["coarse_size"] = solution.n_kernel;
+  const mesh::MeshQuality quality = mesh::mesh_quality(problem->mesh, problem->eliminated[2]);
+  summary["mesh_quality"] = {{"max_aspect_ratio", quality.max_aspect_ratio},
+                             {"min_angle_deg", quality.min_angle_deg},
+                             {"max_angle_deg", quality.max_angle_deg},
+                             {"measured", problem->eliminated[2] ? "in plane" : "all cell faces"}};
   summary["rho"] = settings.number("rho");
   if (solver.method == nonlinear::ContactMethod::primal_penalty)
     summary["eps_n"] = solution.penalty;
@@ -211,10 +217,9 @@ void run(const RunOptions& options)
       active += solution.contact_lambda(i) > 0;
     double peak = 0, area = 0;
     for (const auto& sample : samples)
-    {
       peak = std::max(peak, sample.pressure);
-      area += sample.force > 0 ? sample.area : 0.0;
-    }
+    for (const auto& sample : samples)
+      area += sample.pressure > nonlinear::loaded_fraction * peak ? sample.area : 0.0;
     summary["contact"] = {{"total_normal_force", nonlinear::total_normal_force(solution)},
                           {"peak_pressure", peak},
                           {"contact_area", area},
@@ -222,15 +227,22 @@ void run(const RunOptions& options)
                           {"feasibility_error", solution.feasibility_error}};
     if (is_hertz)
     {
-      const nonlinear::HertzComparison h = nonlinear::compare_with_hertz(hertz, samples);
+      // Large displacements: the figures in the deformed frame, the reference frame's beside.
+      const bool large = solver.kinematics == fem::Kinematics::total_lagrangian;
+      const nonlinear::HertzComparison reference = nonlinear::compare_with_hertz(hertz, samples, false);
+      const nonlinear::HertzComparison h = large ? nonlinear::compare_with_hertz(hertz, samples, true) : reference;
       summary["contact"]["applied_load"] = h.applied_load;
-      summary["hertz"] = {{"a_analytic", h.a_analytic},
+      summary["hertz"] = {{"frame", large ? "deformed" : "reference"},
+                          {"a_analytic", h.a_analytic},
                           {"p0_analytic", h.p0_analytic},
                           {"a_computed", h.a_computed},
                           {"p_peak_computed", h.p_peak_computed},
                           {"rms_error_over_p0", h.rms_error_over_p0},
                           {"axis_approach", axis_approach(*problem, solution.u)},
                           {"contact_element_size", h.element_size}};
+      if (large)
+        summary["hertz"]["reference_frame"] = {{"a_computed", reference.a_computed},
+                                               {"rms_error_over_p0", reference.rms_error_over_p0}};
     }
     if (writer)
       write_pressure_csv(out_dir / "contact_pressure.csv", samples);

@@ -48,7 +48,11 @@ def plot(folders, out, title):
         if three_d:
             x = [1e3 * (float(r["x_m"]) ** 2 + float(r["y_m"]) ** 2) ** 0.5 for r in rows]
         else:
-            x = [1e3 * float(r["x_m"]) for r in rows]
+            # Large displacements: pressure and McEwen's profile at the deformed x + u_x.
+            deformed = summary.get("hertz", {}).get("frame") == "deformed" and "x_deformed_m" in rows[0]
+            x = [1e3 * float(r["x_deformed_m" if deformed else "x_m"]) for r in rows]
+            if deformed:
+                ax.set_xlabel("deformed x + u_x (mm)")
         p = [1e-6 * float(r["pressure_multipliers_Pa"]) for r in rows]
         pa = [1e-6 * float(r["pressure_mcewen_Pa"]) for r in rows]
         if not analytic_drawn and any(pa):

@@ -23,14 +23,18 @@ std::vector<SettingSpec> make_specs()
       {"cantilever.load", "0.8", "tip load as its linear tip deflection over L", Type::number, {}, 0, 100, true},
       {"cantilever.cells", "40", "beam cells along its length", Type::integer, {}, 10, 10000, false},
       {"hertz.line_load", "4e8", "line load Q on the cylinder (N/m)", Type::number, {}, 0, inf, true},
+      {"hertz.mesh", "graded", "graded (Gmsh quadrilaterals with a size field growing by growth_ratio "
+                               "away from the contact, shape-regular) or tensor (mapped blocks with "
+                               "tensor-product grading)", Type::text, {"graded", "tensor"}, 0, 0, false},
       {"hertz.refinement", "1", "scales every element size by 1/refinement", Type::number, {}, 0.05, 64, false},
       {"hertz.element_size", "0.005", "element size in the contact zone at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
       {"hertz.master_ratio", "1.3", "block (master) / cylinder (slave) contact element size", Type::number, {}, 0.2, 5, false},
       {"hertz.block_width", "1.5", "half-width of the block (m)", Type::number, {}, 0.2, 100, false},
       {"hertz.cylinder_width", "0.6", "half-width of the modelled cylinder segment (m), < radius", Type::number, {}, 0.1, 0.99, false},
       {"hertz.block_depth", "1.5", "depth of the block (m)", Type::number, {}, 0.2, 100, false},
-      {"hertz.growth_ratio", "1.2", "cell size ratio between neighbouring cells beyond the fine "
-                                    "region at refinement 1 (1: uniform mesh)", Type::number, {}, 1, 2, false},
+      {"hertz.growth_ratio", "1.1", "cell size ratio between neighbouring cells away from the contact "
+                                    "band (tensor: at refinement 1, and tables before the graded mesh "
+                                    "used 1.2; 1: uniform mesh)", Type::number, {}, 1, 2, false},
       {"material.young", "2e11", "Young's modulus E (Pa) of every body", Type::number, {}, 0, inf, true},
       {"material.poisson", "0.3", "Poisson's ratio nu of every body, in (-1, 0.5)", Type::number, {}, -1, 0.5, true, true},
       {"method", "smalbe", "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "

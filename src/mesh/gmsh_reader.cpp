@@ -2,6 +2,8 @@
 
 #include "common/error.hpp"
 
+#include "mesh/gmsh_session.hpp"
+
 #include <gmsh.h>
 
 #include <algorithm>
@@ -26,42 +28,6 @@ namespace
 constexpr int gmsh_triangle = 2;
 constexpr int gmsh_quadrangle = 3;
 constexpr int gmsh_hexahedron = 5;
-
-/// One Gmsh API session: Gmsh is a process-wide singleton that must be finalized on every path,
-/// also when reading throws.
-class GmshSession
-{
-public:
-  GmshSession()
-  {
-    // readConfigFiles = false: a user's ~/.gmshrc or gmsh-options must not change what is read.
-    gmsh::initialize(0, nullptr, false);
-    try
-    {
-      gmsh::option::setNumber("General.Terminal", 0);
-      // Errors throw (initialize sets this; stated so the conversion below does not depend on it).
-      gmsh::option::setNumber("General.AbortOnError", 2);
-    }
-    catch (...)
-    {
-      gmsh::finalize();
-      throw;
-    }
-  }
-  ~GmshSession()
-  {
-    try
-    {
-      gmsh::finalize();
-    }
-    catch (...)
-    {
-      // A destructor must not throw; there is nothing left to clean up.
-    }
-  }
-  GmshSession(const GmshSession&) = delete;
-  GmshSession& operator=(const GmshSession&) = delete;
-};
 
 struct PhysicalGroup
 {

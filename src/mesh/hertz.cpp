@@ -1,6 +1,7 @@
 #include "mesh/hertz.hpp"
 
 #include "mesh/box.hpp"
+#include "mesh/cross_section.hpp"
 
 #include "common/error.hpp"
 
@@ -65,12 +66,11 @@ void merge_sets(HexMesh& mesh, const std::vector<std::string>& sources, const st
   mesh.face_sets[target] = std::move(faces);
   mesh.add_node_set_from_faces(target, target);
 }
-} // namespace
 
-HexMesh generate_hertz(const HertzMeshParameters& parameters)
+/// The two bodies of the tensor mesh with the sets named as in hertz.hpp (but zmin, zmax and
+/// symmetry, which generate_hertz adds for both kinds).
+HexMesh tensor_bodies(const HertzMeshParameters& p)
 {
-  const HertzMeshParameters& p = parameters;
-  check_parameters(p);
   const double radius = p.cylinder_radius;
   const double h_slave = p.element_size / p.refinement;
   const double h_master = p.master_ratio * h_slave;
@@ -117,9 +117,55 @@ HexMesh generate_hertz(const HertzMeshParameters& parameters)
   };
   for (const auto& [from, to] : renames)
     merge_sets(mesh, {from}, to);
+  return mesh;
+}
+
+
+/// The two bodies of the graded mesh (see hertz.hpp): each body's cross-section meshed by Gmsh with
+/// quadrilaterals whose size is h_b at the distance d = 0 from the contact band
+/// [0, fine_width] x {0} and h_b + (q - 1) d beyond, i.e. cells growing by about q from one
+/// to the next, then extruded into one layer.
+HexMesh graded_bodies(const HertzMeshParameters& p)
+{
+  const double radius = p.cylinder_radius;
+  const double h_slave = p.element_size / p.refinement;
+  const double growth = p.growth_ratio - 1;
+  const double largest = 0.1 * std::max({p.block_width, p.block_depth, radius});
+  auto graded = [&](double h)
+  {
+    return [&p, h, growth, largest](double x, double y)
+    {
+      const double d = std::hypot(std::max(x - p.fine_width, 0.0), y);
+      return std::min(largest, h + growth * d);
+    };
+  };
+  const double x_arc = p.cylinder_width;
+  const double y_arc = radius - std::sqrt(radius * radius - x_arc * x_arc);
+  CrossSection cylinder{"cylinder", {0, 0}, {}};
+  cylinder.curves = {{{x_arc, y_arc}, "contact", true, {0, radius}},
+                     {{x_arc, radius}, "side"},
+                     {{0, radius}, "load"},
+                     {{0, 0}, "symmetry"}};
+  CrossSection block{"block", {0, -p.block_depth}, {}};
+  block.curves = {{{p.block_width, -p.block_depth}, "support"},
+                  {{p.block_width, 0}, "side"},
+                  {{0, 0}, "contact"},
+                  {{0, -p.block_depth}, "symmetry"}};
+  HexMesh mesh;
+  append_mesh(mesh, extrude_cross_section(cylinder, graded(h_slave), p.thickness), "cylinder_");
+  append_mesh(mesh, extrude_cross_section(block, graded(p.master_ratio * h_slave), p.thickness), "block_");
+  merge_sets(mesh, {"cylinder_load"}, "load");
+  merge_sets(mesh, {"block_support"}, "support");
+  return mesh;
+}
+} // namespace
+
+HexMesh generate_hertz(const HertzMeshParameters& parameters)
+{
+  check_parameters(parameters);
+  HexMesh mesh = parameters.kind == HertzMeshKind::graded ? graded_bodies(parameters) : tensor_bodies(parameters);
   merge_sets(mesh, {"cylinder_zmin", "block_zmin"}, "zmin");
   merge_sets(mesh, {"cylinder_zmax", "block_zmax"}, "zmax");
-
   std::vector<int32_t> symmetry;
   std::ranges::set_union(mesh.node_set("cylinder_symmetry"), mesh.node_set("block_symmetry"),
                          std::back_inserter(symmetry));

@@ -11,7 +11,16 @@
 ///  - body 1 "block": the half-space truncated to 0 <= x <= W, -D <= y <= 0, supported at y = -D.
 ///  - z in [0, thickness], one cell layer.
 ///
-/// Mesh. Each body is a mapped structured block (box.hpp). Along x the cells have the size h on
+/// Mesh `graded` (the default). Each body's cross-section is meshed by Gmsh with
+/// quadrilaterals (cross_section.hpp) of size h_b (h_slave = h, h_master = master_ratio * h)
+/// in the contact band [0, fine_width] x {0} and h_b + (q - 1) d at the distance d from it, so
+/// that cells grow by about q from one to the next in every direction, up to a tenth of the
+/// largest body dimension; the arc is meshed as Gmsh's circle. No needle cells: the sizes
+/// vary smoothly in both directions, unlike the tensor grading, which carries the contact
+/// spacing out to the boundary along rows and columns. `refinement` r scales h only, so the
+/// far field is refined only as far as the grading reaches.
+///
+/// Mesh `tensor`. Each body is a mapped structured block (box.hpp). Along x the cells have the size h on
 /// [0, x_fine] and then grow geometrically with ratio q (graded_positions). The cylinder uses
 /// h_slave = h and the block h_master = master_ratio * h, so the two contact surfaces do not match
 /// (node-to-segment contact is exercised; with master_ratio = 13/10 every 13th slave node in the
@@ -43,9 +52,16 @@
 
 namespace feticon::mesh
 {
+enum class HertzMeshKind
+{
+  graded, ///< Gmsh quadrilaterals with a size field (shape-regular)
+  tensor  ///< mapped blocks with tensor-product grading (needle cells far from the contact)
+};
+
 /// Dimensions (m) and grading of the Hertz mesh; defaults as in the file comment.
 struct HertzMeshParameters
 {
+  HertzMeshKind kind = HertzMeshKind::graded;
   /// Cylinder radius R1 (m).
   double cylinder_radius = 1.0;
   /// Half-width Xc of the modelled cylinder segment (m), < R1.
@@ -62,11 +78,11 @@ struct HertzMeshParameters
   double master_ratio = 1.3;
   /// Extent x_fine of the uniform cells along x (m).
   double fine_width = 0.1;
-  /// Extent y_fine of the uniform cells in distance from the contact surface (m).
+  /// Extent y_fine of the uniform cells in distance from the contact surface (m; tensor).
   double fine_depth = 0.1;
   /// Growth ratio q of consecutive cells beyond the fine region, before refinement.
-  double growth_ratio = 1.2;
-  /// Refinement factor r: h -> h / r, q -> q^(1/r).
+  double growth_ratio = 1.1;
+  /// Refinement factor r: h -> h / r; for the tensor mesh also q -> q^(1/r).
   double refinement = 1.0;
 };
 

@@ -92,37 +92,63 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
 }
 
 HertzComparison compare_with_hertz(const problems::HertzParameters& parameters,
-                                   std::vector<PressureSample>& samples)
+                                   std::vector<PressureSample>& samples, bool deformed_frame)
 {
   const problems::HertzAnalytic analytic = problems::hertz_analytic(parameters);
   HertzComparison h;
   h.a_analytic = analytic.half_width;
   h.p0_analytic = analytic.peak_pressure;
   h.applied_load = 0.5 * parameters.line_load * parameters.mesh.thickness;
-  double sum_sq = 0;
-  int count = 0;
-  size_t last_loaded = 0;
-  for (size_t i = 0; i < samples.size(); ++i)
+  if (samples.empty())
+    return h;
+  // (coordinate, pressure) in the frame, sorted.
+  std::vector<std::pair<double, double>> profile;
+  for (auto& s : samples)
   {
-    auto& s = samples[i];
-    s.analytic = analytic.pressure(s.x);
+    const double x = deformed_frame ? s.deformed_x : s.x;
+    s.analytic = analytic.pressure(x);
     h.p_peak_computed = std::max(h.p_peak_computed, s.pressure);
-    if (s.force > 0)
-      last_loaded = i;
-    if (s.x <= analytic.half_width)
+    profile.push_back({x, s.pressure});
+  }
+  std::sort(profile.begin(), profile.end());
+
+  // p^2 = A + B x^2 over the loaded samples; a = sqrt(-A / B).
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (const auto& [x, p] : profile)
+    if (p > loaded_fraction * h.p_peak_computed)
     {
-      sum_sq += (s.pressure - s.analytic) * (s.pressure - s.analytic);
-      ++count;
+      const double X = x * x, Y = p * p;
+      n += 1, sx += X, sy += Y, sxx += X * X, sxy += X * Y;
     }
-  }
-  h.rms_error_over_p0 = count > 0 ? std::sqrt(sum_sq / count) / analytic.peak_pressure : 0;
-  if (!samples.empty())
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const double intercept = (sy - slope * sx) / n;
+  h.a_computed = n >= 2 && slope < 0 && intercept > 0 ? std::sqrt(-intercept / slope) : 0;
+  for (size_t i = 0; i + 1 < profile.size(); ++i)
+    if (profile[i].first <= h.a_computed && h.a_computed <= profile[i + 1].first)
+      h.element_size = profile[i + 1].first - profile[i].first;
+
+  auto interpolate = [&](double x)
   {
-    const double x_in = samples[last_loaded].x;
-    const double x_out = last_loaded + 1 < samples.size() ? samples[last_loaded + 1].x : x_in;
-    h.a_computed = 0.5 * (x_in + x_out);
-    h.element_size = x_out - x_in;
+    if (x <= profile.front().first)
+      return profile.front().second;
+    for (size_t i = 0; i + 1 < profile.size(); ++i)
+      if (x <= profile[i + 1].first)
+      {
+        const auto [x0, p0] = profile[i];
+        const auto [x1, p1] = profile[i + 1];
+        return x1 > x0 ? p0 + (p1 - p0) * (x - x0) / (x1 - x0) : p0;
+      }
+    return 0.0;
+  };
+  constexpr int points = 400;
+  double sum_sq = 0;
+  for (int k = 0; k < points; ++k)
+  {
+    const double x = analytic.half_width * (k + 0.5) / points;
+    const double e = interpolate(x) - analytic.pressure(x);
+    sum_sq += e * e;
   }
+  h.rms_error_over_p0 = std::sqrt(sum_sq / points) / analytic.peak_pressure;
   return h;
 }
 } // namespace feticon::nonlinear
