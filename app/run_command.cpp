@@ -272,7 +272,7 @@ void run(const RunOptions& options)
     write_json(out_dir / "summary.json", summary);
 
   log::info(format_summary(summary));
-  if (solution.converged && writer)
+  if (solution.converged && writer && settings.flag("output.plots"))
     plot_results(out_dir);
   log::info("results written to " + out_dir.string());
   FETICON_CHECK(solution.converged, "the solve did not converge: " << solution.reason

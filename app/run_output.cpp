@@ -5,10 +5,15 @@
 #include "common/log.hpp"
 #include "io/atomic_file.hpp"
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <cstdio>
 #include <cstdlib>
 #include <numeric>
 #include <sstream>
+
+extern char** environ; // the environment passed on to the plotting script
 
 namespace feticon::app
 {
@@ -172,14 +177,25 @@ void plot_results(const std::filesystem::path& out_dir)
 {
   const std::filesystem::path script =
       std::filesystem::path(FETICON_SOURCE_DIR) / "scripts" / "plot_hertz.py";
-  if (!std::filesystem::exists("/usr/bin/python3") || !std::filesystem::exists(script))
+  std::string python = "/usr/bin/python3";
+  if (!std::filesystem::exists(python) || !std::filesystem::exists(script))
   {
-    log::warning("no PNG plots: /usr/bin/python3 or " + script.string() + " is missing");
+    log::warning("no PNG plots: " + python + " or " + script.string() + " is missing");
     return;
   }
-  const std::string command = "/usr/bin/python3 '" + script.string() + "' '" + out_dir.string() +
-                              "' > /dev/null 2>&1";
-  if (std::system(command.c_str()) != 0)
+  // An argument vector, no shell: the folder name reaches the script as it is, whatever
+  // quotes or semicolons it holds.
+  std::string script_arg = script.string(), folder_arg = out_dir.string();
+  char* argv[] = {python.data(), script_arg.data(), folder_arg.data(), nullptr};
+  posix_spawn_file_actions_t quiet;
+  posix_spawn_file_actions_init(&quiet);
+  posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  int status = 0;
+  const bool started = posix_spawn(&pid, python.c_str(), &quiet, nullptr, argv, environ) == 0;
+  posix_spawn_file_actions_destroy(&quiet);
+  if (!started || waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
     log::warning("no PNG plots: " + script.string() + " failed (python3-matplotlib installed?)");
 }
 

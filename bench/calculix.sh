@@ -2,8 +2,9 @@
 # feticon and CalculiX on the identical model (issue 16): exports the problem of the given
 # feticon arguments (`feticon export --format calculix`), solves the deck with ccx on 2
 # threads and the problem with `feticon run`, each --reps times one after the other, under
-# GNU time, then bench/calculix_compare.py computes every figure with the same code for both
-# and writes CASE/comparison.json.
+# GNU time (ccx writes its .frd and .dat, feticon its results folder with VTU but no PNG
+# plots, which have no counterpart in ccx), then bench/calculix_compare.py computes every
+# figure with the same code for both and writes CASE/comparison.json.
 #
 #   bench/calculix.sh --name hertz-large-60 --reps 3 -- --set hertz.refinement=2.2034
 #   bench/calculix.sh --name punch --reps 1 -- examples/flat_punch/problem.yaml
@@ -94,7 +95,7 @@ for ((i = 1; i <= reps; ++i)); do
   echo "bench/calculix.sh: $name: feticon run $i of $reps"
   mkdir -p "$d"
   /usr/bin/time -f '%e %M %P' -o "$case_dir/time.tmp" \
-    "$feticon" run "$@" --set output.vtu=false --quiet --output "$d" ||
+    "$feticon" run "$@" --set output.plots=false --quiet --output "$d" ||
     echo "bench/calculix.sh: $name: feticon failed" >&2
   mv "$case_dir/time.tmp" "$d/time"
 done

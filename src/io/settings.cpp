@@ -72,6 +72,8 @@ std::vector<SettingSpec> make_specs()
        Type::boolean, {}, 0, 0, false},
       {"qp.max_iterations", "20000", "MPRGP iteration limit", Type::integer, {}, 1, 1e9, false},
       {"output.vtu", "true", "write VTU/PVD files", Type::boolean, {}, 0, 0, false},
+      {"output.plots", "true", "draw contact_pressure.png and iterations.png (Debian's python3-matplotlib)",
+       Type::boolean, {}, 0, 0, false},
   };
 }
 

@@ -52,6 +52,15 @@ check_error "broken.yaml" "$work/broken.yaml"
 "$feticon" run -q --output "$work/default" --set hertz.refinement=0.5 --set subdomains=4
 $py -c "import json; s=json.load(open('$work/default/summary.json')); assert s['displacements'] == 'large' and len(s['steps']) == 2 and s['converged']"
 
+# The plots run without a shell: quotes and a command in the folder name stay a name.
+odd="$work/x'; touch $work/PWNED; echo '"
+"$feticon" run -q --output "$odd" --set hertz.refinement=0.5 --set subdomains=4 --set displacements=small
+[[ ! -e "$work/PWNED" ]] || { echo "the output folder name ran a command"; exit 1; }
+[[ -s "$odd/contact_pressure.png" ]] || { echo "no plot in the oddly named folder"; exit 1; }
+"$feticon" run -q --output "$work/noplots" --set hertz.refinement=0.5 --set subdomains=4 \
+  --set displacements=small --set output.plots=false
+[[ ! -e "$work/noplots/contact_pressure.png" ]] || { echo "output.plots=false drew plots"; exit 1; }
+
 # 3. Non-convergence: large displacements with too few outer iterations for load step 2.
 #    The run fails with a message, but step 1 (converged) stays on disk with its PVD entry.
 #    Exact QPs (newton.forcing=0): 5 and 6 outer iterations on the tensor mesh (the graded
