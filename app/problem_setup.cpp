@@ -82,6 +82,10 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Prob
   out.max_outer_iterations = s.integer("newton.max_iterations");
   out.displacement_tolerance = s.number("newton.tolerance");
   out.forcing = s.number("newton.forcing");
+  const std::string& dual_operator = s.text("dual.operator");
+  out.dual_operator = dual_operator == "implicit"   ? nonlinear::DualOperatorMode::implicit
+                      : dual_operator == "explicit" ? nonlinear::DualOperatorMode::explicit_
+                                                    : nonlinear::DualOperatorMode::automatic;
   const std::string& partitioner = s.text("partitioner");
   out.partitioner = partitioner == "metis" ? nonlinear::Partitioner::metis
                     : partitioner == "rcb" ? nonlinear::Partitioner::rcb

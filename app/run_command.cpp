@@ -202,6 +202,9 @@ void run(const RunOptions& options)
                              {"max_angle_deg", quality.max_angle_deg},
                              {"measured", problem->eliminated[2] ? "in plane" : "all cell faces"}};
   summary["rho"] = settings.number("rho");
+  summary["dual_operator"] = {{"mode", solution.dual_operator},
+                              {"reason", solution.dual_operator_reason},
+                              {"bytes", solution.explicit_operator_bytes}};
   if (solver.method == nonlinear::ContactMethod::primal_penalty)
     summary["eps_n"] = solution.penalty;
 

@@ -49,20 +49,26 @@ double seconds_since(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-long peak_memory_bytes()
+namespace
 {
-  std::ifstream status("/proc/self/status");
+/// The value (KiB in the file) of the line `key` of a /proc file, in bytes; 0 if absent.
+long proc_bytes(const char* path, const std::string& key)
+{
+  std::ifstream file(path);
   std::string line;
-  while (std::getline(status, line))
-  {
-    if (line.rfind("VmHWM:", 0) == 0)
+  while (std::getline(file, line))
+    if (line.rfind(key, 0) == 0)
     {
-      std::istringstream is(line.substr(6));
+      std::istringstream is(line.substr(key.size()));
       long kib = 0;
       is >> kib;
       return kib * 1024;
     }
-  }
   return 0;
 }
+} // namespace
+
+long peak_memory_bytes() { return proc_bytes("/proc/self/status", "VmHWM:"); }
+
+long available_memory_bytes() { return proc_bytes("/proc/meminfo", "MemAvailable:"); }
 } // namespace feticon

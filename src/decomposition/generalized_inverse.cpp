@@ -107,9 +107,17 @@ la::Vector GeneralizedInverse::apply(const la::Vector& b) const
 
 la::Matrix GeneralizedInverse::apply(const la::Matrix& B) const
 {
-  la::Matrix X(B.rows(), B.cols());
-  for (la::Index j = 0; j < B.cols(); ++j)
-    X.col(j) = apply(la::Vector(B.col(j)));
+  FETICON_ASSERT(B.rows() == _n, "K+ applied to a matrix of the wrong size");
+  if (_method == GeneralizedInverseMethod::regularization)
+    return _factor.solve(B);
+  // All columns in one supernodal solve (BLAS 3), rows of the fixing DOFs left zero.
+  la::Matrix B_kept(static_cast<la::Index>(_kept.size()), B.cols());
+  for (size_t i = 0; i < _kept.size(); ++i)
+    B_kept.row(static_cast<la::Index>(i)) = B.row(_kept[i]);
+  const la::Matrix X_kept = _factor.solve(B_kept);
+  la::Matrix X = la::Matrix::Zero(_n, B.cols());
+  for (size_t i = 0; i < _kept.size(); ++i)
+    X.row(_kept[i]) = X_kept.row(static_cast<la::Index>(i));
   return X;
 }
 } // namespace feticon::decomposition

@@ -60,9 +60,18 @@ SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vec
   });
 }
 
+la::Matrix SchurComplements::dense(int32_t s) const
+{
+  const Local& l = local(s);
+  la::Matrix S = l.K_bb;
+  if (!l.interior.empty())
+    S -= l.K_ib.transpose() * l.K_ii.solve(la::Matrix(l.K_ib));
+  return S;
+}
+
 la::Vector SchurComplements::apply(int32_t s, const la::Vector& v) const
 {
-  const Local& local = _local[s - _system.decomposition().first_owned()];
+  const Local& local = this->local(s);
   la::Vector v_b(local.boundary.size());
   for (size_t k = 0; k < local.boundary.size(); ++k)
     v_b(k) = v(local.boundary[k]);

@@ -36,6 +36,11 @@ public:
   /// entries are ignored).
   la::Vector apply(int32_t s, const la::Vector& v) const;
 
+  /// Boundary DOFs b_s (active DOFs of owned subdomain s, increasing).
+  const std::vector<int32_t>& boundary(int32_t s) const { return local(s).boundary; }
+  /// S_s = K_bb - K_bi K_ii^-1 K_ib as a dense |b_s| x |b_s| matrix (one multi-column solve).
+  la::Matrix dense(int32_t s) const;
+
 private:
   struct Local
   {
@@ -43,6 +48,8 @@ private:
     la::SparseMatrix K_bb, K_ib;
     la::CholmodFactor K_ii;
   };
+  const Local& local(int32_t s) const { return _local[s - _system.decomposition().first_owned()]; }
+
   const SubdomainSystem& _system;
   std::vector<Local> _local; ///< per owned subdomain (index s - first owned)
 };

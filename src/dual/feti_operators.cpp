@@ -338,8 +338,49 @@ la::Vector FetiOperators::apply_Rt(const la::Vector& u) const
   return gather_coarse(_comm, local);
 }
 
+template <class DenseBlock>
+la::Vector FetiOperators::sum_over_boundaries(const la::Vector& lambda, DenseBlock&& block) const
+{
+  const la::Vector ext = extended(lambda);
+  const int32_t first = _system.decomposition().first_owned();
+  return sum_contributions([&](int32_t s)
+                           {
+                             const la::SparseMatrix& B = _B_boundary[s - first];
+                             return la::Vector(B * (block(s) * la::Vector(B.transpose() * rows_of(s, ext))));
+                           });
+}
+
+void FetiOperators::use_explicit(const decomposition::ExplicitBoundaryOperators& ops)
+{
+  const auto& decomp = _system.decomposition();
+  _B_boundary.clear();
+  for (int32_t s = decomp.first_owned(); s < decomp.end_owned(); ++s)
+  {
+    const la::SparseMatrix& B = _B[s - decomp.first_owned()];
+    const std::vector<int32_t>& boundary = ops.boundary(s);
+    std::vector<int32_t> position(B.cols(), -1);
+    for (size_t k = 0; k < boundary.size(); ++k)
+      position[boundary[k]] = static_cast<int32_t>(k);
+    std::vector<la::Triplet> triplets;
+    for (int j = 0; j < B.outerSize(); ++j)
+      for (la::SparseMatrix::InnerIterator it(B, j); it; ++it)
+      {
+        FETICON_CHECK(position[it.col()] >= 0, "explicit dual operators: a constraint row of subdomain "
+                                                   << s << " touches DOF " << it.col()
+                                                   << ", which is not on its boundary");
+        triplets.emplace_back(it.row(), position[it.col()], it.value());
+      }
+    la::SparseMatrix Bb(B.rows(), static_cast<la::Index>(boundary.size()));
+    Bb.setFromTriplets(triplets.begin(), triplets.end());
+    _B_boundary.push_back(std::move(Bb));
+  }
+  _explicit = &ops;
+}
+
 la::Vector FetiOperators::apply_F(const la::Vector& lambda) const
 {
+  if (_explicit)
+    return sum_over_boundaries(lambda, [this](int32_t s) -> const la::Matrix& { return _explicit->K_plus(s); });
   return sum_over_subdomains(lambda, [this](int32_t s, const la::Vector& v)
                              { return _system.operators(s).K_plus.apply(v); });
 }
@@ -353,6 +394,8 @@ la::Vector FetiOperators::apply_lumped(const la::Vector& lambda) const
 la::Vector FetiOperators::apply_dirichlet(const la::Vector& lambda,
                                           const decomposition::SchurComplements& schur) const
 {
+  if (_explicit)
+    return sum_over_boundaries(lambda, [this](int32_t s) -> const la::Matrix& { return _explicit->schur(s); });
   return sum_over_subdomains(lambda, [&schur](int32_t s, const la::Vector& v) { return schur.apply(s, v); });
 }
 

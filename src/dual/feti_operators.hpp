@@ -20,6 +20,7 @@
 ///     gathered on every rank, where CoarseProjector factorizes it.
 
 #include "decomposition/constraint_rows.hpp"
+#include "decomposition/explicit_boundary_operators.hpp"
 #include "decomposition/schur_complements.hpp"
 #include "decomposition/subdomain_operators.hpp"
 #include "la/operator.hpp"
@@ -69,6 +70,12 @@ public:
   /// Dirichlet preconditioner B S B' lambda (decomposition/schur_complements.hpp): one K_ii
   /// solve per subdomain, a better approximate inverse of F than B K B'.
   la::Vector apply_dirichlet(const la::Vector& lambda, const decomposition::SchurComplements& schur) const;
+  /// From now on F and the Dirichlet preconditioner are dense products with the boundary
+  /// blocks of `ops` (kept by reference; must outlive this object): B_b (K_s+)_bb B_b' and
+  /// B_b S_s B_b', the same operators to round-off. Throws if a row touches a DOF outside b_s.
+  void use_explicit(const decomposition::ExplicitBoundaryOperators& ops);
+  bool is_explicit() const { return _explicit != nullptr; }
+
   /// G lambda = R' B' lambda (replicated) and G' alpha = B R alpha. With a mask (one flag
   /// per owned row) G_A is G with the unmasked columns removed.
   la::Vector apply_G(const la::Vector& lambda, const std::vector<char>* mask = nullptr) const;
@@ -99,6 +106,9 @@ private:
   /// sum_s B_s local_op(s, B_s' lambda_s): the pattern of F and of the lumped preconditioner.
   template <class LocalOperator>
   la::Vector sum_over_subdomains(const la::Vector& lambda, LocalOperator&& local_op) const;
+  /// sum_s B_b M_s B_b' lambda_s with the dense boundary block M_s = block(s).
+  template <class DenseBlock>
+  la::Vector sum_over_boundaries(const la::Vector& lambda, DenseBlock&& block) const;
   /// Local vector of subdomain s's rows from an extended vector.
   la::Vector rows_of(int32_t s, const la::Vector& ext) const;
 
@@ -116,6 +126,8 @@ private:
   std::vector<std::vector<int64_t>> _sub_slots;
   std::vector<la::SparseMatrix> _B;
   std::vector<la::Matrix> _BR;
+  const decomposition::ExplicitBoundaryOperators* _explicit = nullptr;
+  std::vector<la::SparseMatrix> _B_boundary; ///< per owned subdomain: B_s on the columns b_s
   std::vector<int64_t> _contribution_start; ///< start of subdomain s's values among contributions
   /// Ghost exchange: per neighbour rank, owned indices sent and ghost slots received.
   struct Exchange

@@ -63,6 +63,11 @@ std::vector<SettingSpec> make_specs()
       {"partitioner", "metis", "metis (k-way, edge cut), rcb (recursive coordinate bisection: box-like "
                               "subdomains) or structured (slabs along x)",
        Type::text, {"metis", "rcb", "structured"}, 0, 0, false},
+      {"dual.operator", "auto", "F and the Dirichlet preconditioner: implicit (substitutions with the subdomain "
+                                "factors), explicit (dense blocks on the subdomain boundaries, formed once per "
+                                "factorization; needs qp.preconditioner=dirichlet) or auto (explicit where the "
+                                "blocks fit the memory and pay for their set-up)",
+       Type::text, {"implicit", "explicit", "auto"}, 0, 0, false},
       {"qp.rtol", "1e-8", "QP stopping tolerance ||g_P|| <= rtol ||b||", Type::number, {}, 0, 1, true},
       {"qp.preconditioner", "dirichlet", "MPRGP preconditioning in the face: none, lumped (P B K B' P) or "
        "dirichlet (P B S B' P, S the subdomain Schur complements on their boundary)",

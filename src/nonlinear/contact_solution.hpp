@@ -70,6 +70,9 @@ struct ContactSolution
   int64_t n_kernel = 0;
   int32_t n_subdomains = 0;
   double feasibility_error = 0;
+  /// "explicit" or "implicit" dual operators, and why (dual.operator = auto picks).
+  std::string dual_operator = "implicit", dual_operator_reason;
+  int64_t explicit_operator_bytes = 0; ///< dense boundary blocks of all ranks (0: implicit)
   double penalty = 0; ///< eps_n (N/m) for the primal penalty
   RestartState restart; ///< state after the last converged load step (FETI solver)
   /// Under MPI with more than one rank: the cells of this rank's subdomains (its piece of

@@ -34,6 +34,14 @@ enum class Partitioner
   structured  ///< equal slabs along x per body (studies)
 };
 
+/// How F and the Dirichlet preconditioner are applied (decomposition/explicit_boundary_operators.hpp).
+enum class DualOperatorMode
+{
+  implicit,  ///< substitutions with the subdomain factors at every application
+  explicit_, ///< dense blocks on the subdomain boundaries, formed once per factorization
+  automatic  ///< explicit where the blocks fit the memory budget and pay for their set-up
+};
+
 struct SolverSettings
 {
   ContactMethod method = ContactMethod::smalbe;
@@ -58,6 +66,7 @@ struct SolverSettings
   double max_forcing_rtol = 1e-4;
   int subdomains = 8;
   Partitioner partitioner = Partitioner::metis;
+  DualOperatorMode dual_operator = DualOperatorMode::automatic;
   decomposition::GeneralizedInverseMethod generalized_inverse =
       decomposition::GeneralizedInverseMethod::fixing_dofs;
   dual::DualPenaltyOptions dual{};

@@ -133,9 +133,11 @@ TEST(HertzBenchmark, DualPenaltyFeasibilityFallsLikeOneOverRho)
 
 // Reference: the SMALBE-M solution of the same discrete problem (exact multipliers). The
 // primal penalty of the seed's section 2 allows a penetration lambda/eps_n, so its pressure
-// approaches the exact one like 1/eps_n: measured 3.1e-2, 3.8e-3, 3.8e-4 of p0 for
-// eps_n = 1e-2, 1e-1, 1 max diag K on this mesh; asserted: at least a factor 5 per decade and below 2e-3
-// at the stiffest penalty. Coarse mesh (refinement 0.5) for test time.
+// approaches the exact one like 1/eps_n: measured 1.5e-1, 2.0e-2, 2.0e-3 of p0 for
+// eps_n = 1e-2, 1e-1, 1 max diag K on the graded mesh (3.1e-2, 3.8e-3, 3.8e-4 on the tensor
+// mesh, whose needle cells make max diag K larger against the contact cells' stiffness);
+// asserted: at least a factor 5 per decade, and at the stiffest penalty at most 5 times the
+// measured difference. Coarse mesh (refinement 0.5) for test time.
 TEST(HertzBenchmark, PrimalPenaltyApproachesTheExactSolutionLikeOneOverEps)
 {
   problems::HertzParameters parameters;
@@ -172,5 +174,5 @@ TEST(HertzBenchmark, PrimalPenaltyApproachesTheExactSolutionLikeOneOverEps)
   }
   EXPECT_GT(differences[0] / differences[1], 5.0);
   EXPECT_GT(differences[1] / differences[2], 5.0);
-  EXPECT_LT(differences[2], 2e-3);
+  EXPECT_LT(differences[2], 1e-2);
 }

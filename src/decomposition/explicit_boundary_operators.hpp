@@ -1,0 +1,55 @@
+#pragma once
+/// @file The subdomain operators of the FETI dual formed explicitly on the boundary DOFs b_s
+/// (Říha, Brzobohatý, Meca et al., explicit FETI operators in ESPRESO):
+///
+///   (K_s+)_bb = E_b' K_s+ E_b   and   S_s = K_bb - K_bi K_ii^-1 K_ib,
+///
+/// b_s the boundary of the Dirichlet preconditioner (schur_complements.hpp): the DOFs of
+/// nodes shared with another subdomain, of supported nodes and of both contact surfaces, so
+/// every gluing, Dirichlet and contact row, whatever the contact search finds, touches only
+/// b_s. Then B_s K_s+ B_s' = B_b (K_s+)_bb B_b' and B_s S_s B_s' = B_b S_s B_b' exactly, and an
+/// MPRGP step costs dense products of size |b_s| instead of forward and backward
+/// substitutions with the factors of K_s and K_ii. Both blocks depend only on the
+/// factorization: with the initial stiffness kept (modified Newton), they are formed once per
+/// run, while B_b changes with the contact rows of every outer iteration.
+///
+/// Formed with one multi-column (supernodal, BLAS 3) solve per subdomain and factor.
+
+#include "decomposition/schur_complements.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace feticon::decomposition
+{
+class ExplicitBoundaryOperators
+{
+public:
+  /// @param system subdomain K+ (kept by reference; must outlive this object)
+  /// @param schur  boundaries and Schur complements (used during construction only)
+  ExplicitBoundaryOperators(const SubdomainSystem& system, const SchurComplements& schur);
+
+  /// Boundary DOFs of owned subdomain s (active DOFs, increasing).
+  const std::vector<int32_t>& boundary(int32_t s) const { return local(s).boundary; }
+  /// (K_s+)_bb, |b_s| x |b_s|.
+  const la::Matrix& K_plus(int32_t s) const { return local(s).K_plus; }
+  /// S_s, |b_s| x |b_s|.
+  const la::Matrix& schur(int32_t s) const { return local(s).schur; }
+  /// Bytes of the dense blocks of this rank.
+  int64_t bytes() const;
+
+private:
+  struct Local
+  {
+    std::vector<int32_t> boundary;
+    la::Matrix K_plus, schur;
+  };
+  const Local& local(int32_t s) const { return _local[s - _first]; }
+
+  int32_t _first = 0;
+  std::vector<Local> _local; ///< per owned subdomain (index s - first owned)
+};
+
+/// Bytes the dense blocks of the owned subdomains would take: 2 |b_s|^2 doubles each.
+int64_t explicit_operator_bytes(const SubdomainSystem& system, const SchurComplements& schur);
+} // namespace feticon::decomposition
