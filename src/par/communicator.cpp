@@ -29,6 +29,12 @@ std::vector<T> gather_impl(MPI_Comm comm, int size, const std::vector<T>& local,
 
 Environment::Environment(int& argc, char**& argv)
 {
+  const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") || std::getenv("PMI_RANK");
+  if (!launched)
+  {
+    set_threads(hardware_cores());
+    return;
+  }
   MPI_Init(&argc, &argv);
   // Threads per rank: the node's cores shared among the ranks on it (common/parallel.hpp;
   // OMP_NUM_THREADS overrides). Subdomain loops are threaded, BLAS single-threaded, so the
@@ -43,9 +49,10 @@ Environment::Environment(int& argc, char**& argv)
 
 Environment::~Environment()
 {
-  int finalized = 0;
+  int initialized = 0, finalized = 0;
+  MPI_Initialized(&initialized);
   MPI_Finalized(&finalized);
-  if (!finalized)
+  if (initialized && !finalized)
     MPI_Finalize();
 }
 
