@@ -2,8 +2,15 @@
 
 #include "common/parallel.hpp"
 
+#include <algorithm>
+
 namespace feticon::decomposition
 {
+namespace
+{
+constexpr la::Index column_block = 32; ///< right-hand sides per multi-column solve (la/cholmod.cpp)
+} // namespace
+
 ExplicitBoundaryOperators::ExplicitBoundaryOperators(const SubdomainSystem& system,
                                                      const SchurComplements& schur)
 {
@@ -16,13 +23,18 @@ ExplicitBoundaryOperators::ExplicitBoundaryOperators(const SubdomainSystem& syst
     local.boundary = schur.boundary(s);
     const la::Index n = system.operators(s).K.rows();
     const la::Index nb = static_cast<la::Index>(local.boundary.size());
-    la::Matrix columns = la::Matrix::Zero(n, nb);
-    for (la::Index k = 0; k < nb; ++k)
-      columns(local.boundary[k], k) = 1;
-    const la::Matrix X = system.operators(s).K_plus.apply(columns);
     local.K_plus.resize(nb, nb);
-    for (la::Index k = 0; k < nb; ++k)
-      local.K_plus.row(k) = X.row(local.boundary[k]);
+    // Blocks of columns, so that the right-hand sides take n x 32 doubles, not n x |b_s|.
+    for (la::Index j = 0; j < nb; j += column_block)
+    {
+      const la::Index width = std::min(column_block, nb - j);
+      la::Matrix columns = la::Matrix::Zero(n, width);
+      for (la::Index k = 0; k < width; ++k)
+        columns(local.boundary[j + k], k) = 1;
+      const la::Matrix X = system.operators(s).K_plus.apply(columns);
+      for (la::Index k = 0; k < nb; ++k)
+        local.K_plus.block(k, j, 1, width) = X.row(local.boundary[k]);
+    }
     local.schur = schur.dense(s);
   });
 }

@@ -3,6 +3,7 @@
 #include "common/parallel.hpp"
 #include "la/submatrix.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace feticon::decomposition
@@ -64,8 +65,14 @@ la::Matrix SchurComplements::dense(int32_t s) const
 {
   const Local& l = local(s);
   la::Matrix S = l.K_bb;
-  if (!l.interior.empty())
-    S -= l.K_ib.transpose() * l.K_ii.solve(la::Matrix(l.K_ib));
+  if (l.interior.empty())
+    return S;
+  // Blocks of 32 columns, so that the right-hand sides take |i| x 32 doubles, not |i| x |b|.
+  for (la::Index j = 0; j < S.cols(); j += 32)
+  {
+    const la::Index width = std::min<la::Index>(32, S.cols() - j);
+    S.middleCols(j, width) -= l.K_ib.transpose() * l.K_ii.solve(la::Matrix(l.K_ib.middleCols(j, width)));
+  }
   return S;
 }
 

@@ -91,8 +91,9 @@ std::vector<char> schur_boundary_nodes(const fem::Problem& problem, const fem::C
 /// applies K_s+ and the K_ii solve of S_s once each, about 4 (nnz(L_s) + nnz(L_ii)) ~
 /// 8 nnz(L_s); an explicit one two dense products of 2 |b_s|^2, which run at 3 times the
 /// flop rate of the substitutions; forming the blocks is |b_s| such substitution pairs, which
-/// the multi-column solve does in 0.75 of the time (measured: Hertz, 19k DOFs, 8 subdomains,
-/// |b_s| ~ 320: set-up 0.49 s, a dual product 2.1 ms implicit and 0.43 ms explicit). Expected steps: 100 per load step, 5 times as many with
+/// the multi-column solves in blocks of 32 do in a quarter of the time (measured: Hertz, 19k
+/// DOFs, 8 subdomains, |b_s| ~ 320: set-up 0.155 s, a dual product 2.1 ms implicit and
+/// 0.43 ms explicit). Expected steps: 100 per load step, 5 times as many with
 /// large displacements (docs/benchmarks.md).
 std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, const decomposition::SubdomainSystem& system,
                                              const decomposition::SchurComplements* schur, const par::Communicator& comm)
@@ -112,7 +113,7 @@ std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, con
   {
     const double nb = static_cast<double>(schur->boundary(s).size());
     const double substitution = 8.0 * static_cast<double>(system.operators(s).K_plus.factor_nonzeros());
-    setup += 0.75 * nb * substitution;
+    setup += 0.25 * nb * substitution;
     implicit_step += substitution;
     explicit_step += 4 * nb * nb / 3;
   }
