@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <cstdio>
 
@@ -353,6 +354,16 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
         f_int = system.internal_force(u); // also the next iteration's, at the same u
         const la::Vector r_new = t_n * f_ext_stacked - f_int - feti->apply_Bt(solution.lambda);
         it.residual_norm = decomp->gather_sum(decomp->gather_stacked(r_new)).norm() / f_norm;
+      }
+      // A diverging outer loop shows as a non-finite residual before anything else fails; the
+      // iteration is no result, so it stays out of the history (no NaN in history.csv).
+      if (!std::isfinite(it.residual_norm) || !std::isfinite(it.displacement_change))
+      {
+        out.reason = "load step " + std::to_string(step) + ", outer iteration " + std::to_string(k) +
+                     ": the outer loop diverged (non-finite residual): use more load_steps or "
+                     "newton.stiffness=iteration";
+        out.steps.push_back(record);
+        return out;
       }
       it.seconds = seconds_since(iteration_start);
       out.history.push_back(it);
