@@ -4,6 +4,7 @@
 #include "mesh/box.hpp"
 #include "mesh/gmsh_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -81,7 +82,14 @@ void flatten(const YAML::Node& node, const std::string& prefix,
               out, source);
     return;
   }
-  FETICON_CHECK(node.IsScalar(), source << ": '" << prefix << "' must be a single value");
+  if (!node.IsScalar())
+  {
+    // A list (or null) under a key: an unknown key is named as such whatever its value.
+    const auto& specs = Settings::specs();
+    const bool known = std::any_of(specs.begin(), specs.end(), [&](const SettingSpec& s) { return s.key == prefix; });
+    FETICON_CHECK(known, source << ": unknown key '" << prefix << "'; run 'feticon run --help' for the list of keys");
+    FETICON_CHECK(false, source << ": '" << prefix << "' must be a single value");
+  }
   out.emplace_back(prefix, node.as<std::string>());
 }
 
@@ -190,8 +198,8 @@ ProblemFile load_problem_file(const std::filesystem::path& path,
       FETICON_CHECK(false, path.string() << ": invalid YAML at line " << e.mark.line + 1
                                          << ", column " << e.mark.column + 1 << ": " << e.msg);
     }
-    if (file.root.IsNull())
-      file.root = YAML::Node(YAML::NodeType::Map);
+    FETICON_CHECK(!file.root.IsNull(), path.string() << ": the file holds no settings (empty or comments "
+                                                     "only); write at least 'problem: hertz'");
     FETICON_CHECK(file.root.IsMap(), path.string() << ": the top level must be a map of keys");
   }
   // Overrides act on the tree; the settings below remember which keys came from --set.
@@ -225,6 +233,15 @@ ProblemFile load_problem_file(const std::filesystem::path& path,
     for (const auto& [k, v] : scalars)
       file.settings.set(k, v, overridden.count(k) ? std::string("--set") : file.source);
   }
+  // The structured sections describe a custom problem; a built-in one would ignore them.
+  if (file.settings.text("problem") != "custom")
+    for (const auto& kv : file.root)
+    {
+      const std::string key = kv.first.as<std::string>();
+      FETICON_CHECK(!is_structured_key(key), file.source << ": section '" << key << "' is read only by custom problems, "
+                                                         << "but problem is " << file.settings.text("problem")
+                                                         << "; add 'problem: custom' or remove it");
+    }
   return file;
 }
 

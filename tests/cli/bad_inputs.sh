@@ -156,6 +156,19 @@ expect "inverted element" "inverted\|Jacobian" -- "$(msh_problem inverted.msh in
 write_msh "$work/empty_group.msh" "1 2 3 4 5 6 7 8"
 expect "empty contact surface" "'top'" -- "$(msh_problem empty_group.msh empty_group top)"
 
+# Nothing ignored (issue 21): an empty or comment-only file, sections only a custom problem
+# reads in a built-in one, an unknown key with a list or map value.
+printf '# only a comment\n' > "$work/comment_only.yaml"
+expect "comment-only problem file" "no settings" -- "$work/comment_only.yaml"
+: > "$work/empty.yaml"
+expect "empty problem file" "no settings" -- "$work/empty.yaml"
+printf 'loads:\n  - {set: load, traction: [0, -1e8, 0]}\n' > "$work/hertz_with_loads.yaml"
+expect "custom section in a built-in problem" "problem: custom" -- "$work/hertz_with_loads.yaml"
+printf 'colour: [1, 2]\n' > "$work/unknown_list.yaml"
+expect "unknown key with a list value" "unknown key 'colour'" -- "$work/unknown_list.yaml"
+printf 'qp:\n  speed: [1, 2]\n' > "$work/unknown_nested_list.yaml"
+expect "unknown nested key with a list value" "unknown key 'qp.speed'" -- "$work/unknown_nested_list.yaml"
+
 # A diverging modified Newton loop (finite rotations in two load steps with K_0) ends with a
 # message saying so, not with the NaN of a later step.
 expect "diverging outer loop" "diverged" -- --set problem=cantilever_obstacle --set displacements=large \
