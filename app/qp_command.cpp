@@ -93,6 +93,9 @@ void run_qp(const QpArguments& arguments)
   qp::Mprgp mprgp(op, options);
   la::Vector x = la::Vector::Zero(n).cwiseMax(lower); // x0 = P_Omega(0)
   const qp::QpReport report = mprgp.solve(b, lower, x);
+  FETICON_CHECK(std::isfinite(report.cost) && std::isfinite(report.projected_gradient_norm) && x.allFinite(),
+                "qp: the solve produced non-finite values (cost " << report.cost << "); are A, b and the bounds of "
+                                                                 "a moderate size (bounds like 1e300 overflow the cost)?");
 
   nlohmann::ordered_json json;
   json["converged"] = report.converged;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
@@ -94,6 +95,9 @@ public:
     const double value = std::strtod(_cursor, &end);
     if (end == _cursor || !ends_token(end))
       _reader.fail(std::string("expected a number ") + what + ", found '" + token() + "'");
+    // inf has a meaning (an absent bound), NaN none.
+    if (std::isnan(value))
+      _reader.fail(std::string("NaN ") + what + " is not a number");
     _cursor = end;
     return value;
   }

@@ -118,4 +118,21 @@ status=0
 [ "$(wc -l <asym.err)" -eq 1 ] || fail "expected one line on stderr, got: $(cat asym.err)"
 grep -q 'not symmetric' asym.err || fail "stderr does not say 'not symmetric': $(cat asym.err)"
 
+# 6. NaN in A is an input error (inf keeps its meaning of an absent bound in l).
+printf '%%%%MatrixMarket matrix coordinate real general\n2 2 2\n1 1 nan\n2 2 2\n' >nan.mtx
+status=0
+"$feticon" qp --A nan.mtx --b b2.mtx >nan.out 2>nan.err || status=$?
+[ "$status" -eq 1 ] || fail "NaN in A: expected exit status 1, got $status"
+[ "$(wc -l <nan.err)" -eq 1 ] || fail "expected one line on stderr, got: $(cat nan.err)"
+grep -q 'nan.mtx:3:.*NaN' nan.err || fail "stderr does not name the NaN of nan.mtx line 3: $(cat nan.err)"
+
+# 7. Bounds whose cost overflows: a one-line error and exit status 1, not a null cost.
+printf '%%%%MatrixMarket matrix coordinate real general\n2 2 2\n1 1 2\n2 2 2\n' >spd.mtx
+printf '%%%%MatrixMarket matrix array real general\n2 1\n1e300\n1e300\n' >huge.mtx
+status=0
+"$feticon" qp --A spd.mtx --b b2.mtx --lower huge.mtx >huge.out 2>huge.err || status=$?
+[ "$status" -eq 1 ] || fail "bounds of 1e300: expected exit status 1, got $status ($(cat huge.out))"
+[ "$(wc -l <huge.err)" -eq 1 ] || fail "expected one line on stderr, got: $(cat huge.err)"
+grep -q 'non-finite' huge.err || fail "stderr does not say non-finite: $(cat huge.err)"
+
 echo "qp_command: all checks passed"
