@@ -53,6 +53,8 @@ Profile read_reference()
   return out;
 }
 
+/// Linear interpolation, written here again so that the comparison does not rest on
+/// nonlinear::compare_with_hertz.
 double interpolate(const Profile& profile, double x)
 {
   if (x <= profile.front().first)
