@@ -251,6 +251,23 @@ void run(const RunOptions& options)
       write_pressure_csv(out_dir / "contact_pressure.csv", samples);
   }
   summary["qp"] = qp_json(solution);
+  // No silent wrong answers: a converged result that is not what it claims says so.
+  nlohmann::ordered_json warnings = nlohmann::ordered_json::array();
+  const double feasibility_tolerance = settings.number("contact.feasibility_tolerance");
+  if (solution.converged && solver.method == nonlinear::ContactMethod::dual_penalty &&
+      solution.feasibility_error > feasibility_tolerance)
+  {
+    char line[320];
+    std::snprintf(line, sizeof line,
+                  "the dual penalty with rho = %g leaves ||G lambda - e|| / ||e|| = %.2g above "
+                  "contact.feasibility_tolerance = %g: the contact forces do not balance the load; raise rho "
+                  "or use method=smalbe",
+                  settings.number("rho"), solution.feasibility_error, feasibility_tolerance);
+    warnings.push_back(line);
+  }
+  for (const auto& w : warnings)
+    log::warning(w.get<std::string>());
+  summary["warnings"] = warnings;
   nlohmann::ordered_json steps = nlohmann::ordered_json::array();
   for (const auto& s : solution.steps)
     steps.push_back({{"load_factor", s.load_factor},

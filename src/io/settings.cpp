@@ -46,6 +46,8 @@ std::vector<SettingSpec> make_specs()
       {"contact.formulation", "mortar", "contact rows: node_to_segment (slave node on master "
                                                  "face) or mortar (dual mortar, segment-to-segment)",
        Type::text, {"node_to_segment", "mortar"}, 0, 0, false},
+      {"contact.feasibility_tolerance", "1e-3", "warn (summary.json warnings, stderr) when the dual "
+       "penalty leaves ||G lambda - e|| / ||e|| above this", Type::number, {}, 0, 1, true},
       {"eps_n", "100", "primal penalty eps_n as a multiple of max diag K", Type::number, {}, 0, inf, true},
       {"displacements", "large", "large (total Lagrangian, the seed's benchmark) or small (linear elasticity)", Type::text, {"small", "large"}, 0, 0, false},
       {"newton.stiffness", "initial", "FETI outer-loop stiffness: initial (K_0 kept, the seed's "

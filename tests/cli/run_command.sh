@@ -61,6 +61,14 @@ odd="$work/x'; touch $work/PWNED; echo '"
   --set displacements=small --set output.plots=false
 [[ ! -e "$work/noplots/contact_pressure.png" ]] || { echo "output.plots=false drew plots"; exit 1; }
 
+# The dual penalty at rho = 1 leaves the contact forces out of balance with the load: a
+# warning in summary.json and on stderr, exit 0 (a result, flagged); SMALBE-M gives none.
+"$feticon" run -q --output "$work/dp" --set hertz.refinement=0.5 --set subdomains=4 \
+  --set displacements=small --set method=dual_penalty --set rho=1 --set output.plots=false 2> "$work/dp.err"
+grep -q "warning: the dual penalty with rho = 1" "$work/dp.err" || { echo "no dual penalty warning on stderr"; cat "$work/dp.err"; exit 1; }
+$py -c "import json; s=json.load(open('$work/dp/summary.json')); assert len(s['warnings']) == 1 and 'method=smalbe' in s['warnings'][0], s['warnings']"
+$py -c "import json; s=json.load(open('$work/hertz/summary.json')); assert s['warnings'] == [], s['warnings']"
+
 # 3. Non-convergence: large displacements with too few outer iterations for load step 2.
 #    The run fails with a message, but step 1 (converged) stays on disk with its PVD entry.
 #    Exact QPs (newton.forcing=0): 5 and 6 outer iterations on the tensor mesh (the graded
