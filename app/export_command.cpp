@@ -37,10 +37,11 @@ void export_model(const ExportOptions& options)
                 "export: --format " << options.format << " is not known; the one format is calculix");
   const io::ProblemFile file = io::load_problem_file(options.problem_file, options.overrides);
   const fem::Problem problem = build_problem(file);
+  // Kinematics and load steps exactly as `feticon run` takes them.
+  const nonlinear::SolverSettings solver = solver_settings(file.settings, problem);
   io::CalculixOptions deck;
-  const bool large = file.settings.text("displacements") == "large";
-  deck.nlgeom = large;
-  deck.increments = large ? static_cast<int>(file.settings.integer("load_steps")) : 1;
+  deck.nlgeom = solver.kinematics == fem::Kinematics::total_lagrangian;
+  deck.increments = solver.load_steps;
   deck.contact_stiffness_factor = options.contact_stiffness_factor;
   deck.overclosure = options.overclosure;
 

@@ -6,11 +6,6 @@
 
 namespace feticon::decomposition
 {
-namespace
-{
-constexpr la::Index column_block = 32; ///< right-hand sides per multi-column solve (la/cholmod.cpp)
-} // namespace
-
 ExplicitBoundaryOperators::ExplicitBoundaryOperators(const SubdomainSystem& system,
                                                      const SchurComplements& schur)
 {
@@ -24,10 +19,10 @@ ExplicitBoundaryOperators::ExplicitBoundaryOperators(const SubdomainSystem& syst
     const la::Index n = system.operators(s).K.rows();
     const la::Index nb = static_cast<la::Index>(local.boundary.size());
     local.K_plus.resize(nb, nb);
-    // Blocks of columns, so that the right-hand sides take n x 32 doubles, not n x |b_s|.
-    for (la::Index j = 0; j < nb; j += column_block)
+    // Blocks of columns, so that the right-hand sides take n x la::solve_block doubles, not n x |b_s|.
+    for (la::Index j = 0; j < nb; j += la::solve_block)
     {
-      const la::Index width = std::min(column_block, nb - j);
+      const la::Index width = std::min(la::solve_block, nb - j);
       la::Matrix columns = la::Matrix::Zero(n, width);
       for (la::Index k = 0; k < width; ++k)
         columns(local.boundary[j + k], k) = 1;

@@ -67,10 +67,11 @@ la::Matrix SchurComplements::dense(int32_t s) const
   la::Matrix S = l.K_bb;
   if (l.interior.empty())
     return S;
-  // Blocks of 32 columns, so that the right-hand sides take |i| x 32 doubles, not |i| x |b|.
-  for (la::Index j = 0; j < S.cols(); j += 32)
+  // Blocks of columns, so that the right-hand sides take |i| x la::solve_block doubles, not
+  // |i| x |b|.
+  for (la::Index j = 0; j < S.cols(); j += la::solve_block)
   {
-    const la::Index width = std::min<la::Index>(32, S.cols() - j);
+    const la::Index width = std::min(la::solve_block, S.cols() - j);
     S.middleCols(j, width) -= l.K_ib.transpose() * l.K_ii.solve(la::Matrix(l.K_ib.middleCols(j, width)));
   }
   return S;

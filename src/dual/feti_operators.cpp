@@ -268,13 +268,14 @@ la::Vector FetiOperators::sum_contributions(LocalOperator&& local_op) const
 }
 
 template <class LocalOperator>
-la::Vector FetiOperators::sum_over_subdomains(const la::Vector& lambda, LocalOperator&& local_op) const
+la::Vector FetiOperators::sum_over_subdomains(const std::vector<la::SparseMatrix>& blocks, const la::Vector& lambda,
+                                              LocalOperator&& local_op) const
 {
   const la::Vector ext = extended(lambda);
   const int32_t first = _system.decomposition().first_owned();
   return sum_contributions([&](int32_t s)
                            {
-                             const la::SparseMatrix& B = _B[s - first];
+                             const la::SparseMatrix& B = blocks[s - first];
                              return la::Vector(B * local_op(s, la::Vector(B.transpose() * rows_of(s, ext))));
                            });
 }
@@ -338,18 +339,6 @@ la::Vector FetiOperators::apply_Rt(const la::Vector& u) const
   return gather_coarse(_comm, local);
 }
 
-template <class DenseBlock>
-la::Vector FetiOperators::sum_over_boundaries(const la::Vector& lambda, DenseBlock&& block) const
-{
-  const la::Vector ext = extended(lambda);
-  const int32_t first = _system.decomposition().first_owned();
-  return sum_contributions([&](int32_t s)
-                           {
-                             const la::SparseMatrix& B = _B_boundary[s - first];
-                             return la::Vector(B * (block(s) * la::Vector(B.transpose() * rows_of(s, ext))));
-                           });
-}
-
 void FetiOperators::use_explicit(const decomposition::ExplicitBoundaryOperators& ops)
 {
   const auto& decomp = _system.decomposition();
@@ -380,14 +369,15 @@ void FetiOperators::use_explicit(const decomposition::ExplicitBoundaryOperators&
 la::Vector FetiOperators::apply_F(const la::Vector& lambda) const
 {
   if (_explicit)
-    return sum_over_boundaries(lambda, [this](int32_t s) -> const la::Matrix& { return _explicit->K_plus(s); });
-  return sum_over_subdomains(lambda, [this](int32_t s, const la::Vector& v)
+    return sum_over_subdomains(_B_boundary, lambda, [this](int32_t s, const la::Vector& v)
+                               { return la::Vector(_explicit->K_plus(s) * v); });
+  return sum_over_subdomains(_B, lambda, [this](int32_t s, const la::Vector& v)
                              { return _system.operators(s).K_plus.apply(v); });
 }
 
 la::Vector FetiOperators::apply_lumped(const la::Vector& lambda) const
 {
-  return sum_over_subdomains(lambda, [this](int32_t s, const la::Vector& v)
+  return sum_over_subdomains(_B, lambda, [this](int32_t s, const la::Vector& v)
                              { return la::Vector(_system.operators(s).K * v); });
 }
 
@@ -395,8 +385,9 @@ la::Vector FetiOperators::apply_dirichlet(const la::Vector& lambda,
                                           const decomposition::SchurComplements& schur) const
 {
   if (_explicit)
-    return sum_over_boundaries(lambda, [this](int32_t s) -> const la::Matrix& { return _explicit->schur(s); });
-  return sum_over_subdomains(lambda, [&schur](int32_t s, const la::Vector& v) { return schur.apply(s, v); });
+    return sum_over_subdomains(_B_boundary, lambda, [this](int32_t s, const la::Vector& v)
+                               { return la::Vector(_explicit->schur(s) * v); });
+  return sum_over_subdomains(_B, lambda, [&schur](int32_t s, const la::Vector& v) { return schur.apply(s, v); });
 }
 
 la::Vector FetiOperators::apply_G(const la::Vector& lambda, const std::vector<char>* mask) const

@@ -103,12 +103,11 @@ private:
   /// (|rows of s| values), summed per row in increasing subdomain order.
   template <class LocalOperator>
   la::Vector sum_contributions(LocalOperator&& local_op) const;
-  /// sum_s B_s local_op(s, B_s' lambda_s): the pattern of F and of the lumped preconditioner.
+  /// sum_s B_s local_op(s, B_s' lambda_s) with B_s = blocks[s - first owned] (_B, or
+  /// _B_boundary for the dense boundary operators): the pattern of F and the preconditioners.
   template <class LocalOperator>
-  la::Vector sum_over_subdomains(const la::Vector& lambda, LocalOperator&& local_op) const;
-  /// sum_s B_b M_s B_b' lambda_s with the dense boundary block M_s = block(s).
-  template <class DenseBlock>
-  la::Vector sum_over_boundaries(const la::Vector& lambda, DenseBlock&& block) const;
+  la::Vector sum_over_subdomains(const std::vector<la::SparseMatrix>& blocks, const la::Vector& lambda,
+                                 LocalOperator&& local_op) const;
   /// Local vector of subdomain s's rows from an extended vector.
   la::Vector rows_of(int32_t s, const la::Vector& ext) const;
 

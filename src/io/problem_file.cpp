@@ -4,7 +4,6 @@
 #include "mesh/box.hpp"
 #include "mesh/gmsh_reader.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -84,10 +83,7 @@ void flatten(const YAML::Node& node, const std::string& prefix,
   }
   if (!node.IsScalar())
   {
-    // A list (or null) under a key: an unknown key is named as such whatever its value.
-    const auto& specs = Settings::specs();
-    const bool known = std::any_of(specs.begin(), specs.end(), [&](const SettingSpec& s) { return s.key == prefix; });
-    FETICON_CHECK(known, source << ": unknown key '" << prefix << "'; run 'feticon run --help' for the list of keys");
+    Settings::spec(prefix, source); // an unknown key is named as such whatever its value
     FETICON_CHECK(false, source << ": '" << prefix << "' must be a single value");
   }
   out.emplace_back(prefix, node.as<std::string>());

@@ -113,7 +113,7 @@ std::string Settings::help()
   return os.str();
 }
 
-const SettingSpec& Settings::spec(const std::string& key, const std::string& source) const
+const SettingSpec& Settings::spec(const std::string& key, const std::string& source)
 {
   for (const auto& s : specs())
     if (s.key == key)

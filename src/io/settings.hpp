@@ -51,8 +51,10 @@ public:
   /// The effective settings as YAML (written to the results folder).
   std::string to_yaml() const;
 
+  /// The spec of `key`; throws feticon::Error "unknown key" naming `source` if there is none.
+  static const SettingSpec& spec(const std::string& key, const std::string& source);
+
 private:
-  const SettingSpec& spec(const std::string& key, const std::string& source) const;
   std::map<std::string, std::string> _values;
 };
 } // namespace feticon::io

@@ -45,13 +45,10 @@ Vector CholmodFactor::solve(const Vector& b) const
 Matrix CholmodFactor::solve(const Matrix& B) const
 {
   FETICON_ASSERT(_impl, "solve before factorize");
-  // Blocks of 32 columns: measured on the explicit boundary operators (decomposition/
-  // explicit_boundary_operators.hpp) at 19k DOFs, 8 subdomains, 0.54 / 0.49 / 0.63 s for
-  // blocks of 8 / 32 / 64 against 1.0 s for all ~320 columns at once.
   Matrix X(B.rows(), B.cols());
-  for (Index j = 0; j < B.cols(); j += 32)
+  for (Index j = 0; j < B.cols(); j += solve_block) // a block of right-hand sides in cache
   {
-    const Index width = std::min<Index>(32, B.cols() - j);
+    const Index width = std::min(solve_block, B.cols() - j);
     X.middleCols(j, width) = _impl->solver.solve(Matrix(B.middleCols(j, width)));
   }
   return X;
