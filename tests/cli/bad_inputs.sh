@@ -169,6 +169,11 @@ expect "unknown key with a list value" "unknown key 'colour'" -- "$work/unknown_
 printf 'qp:\n  speed: [1, 2]\n' > "$work/unknown_nested_list.yaml"
 expect "unknown nested key with a list value" "unknown key 'qp.speed'" -- "$work/unknown_nested_list.yaml"
 
+# Explicit dual operators are formed on the Dirichlet preconditioner's boundary.
+expect "explicit operators without the Dirichlet preconditioner" "qp.preconditioner" -- \
+  --set dual.operator=explicit --set qp.preconditioner=none --set hertz.refinement=0.5 --set displacements=small
+expect "dual.operator unknown" "dual.operator" -- --set dual.operator=dense
+
 # A diverging modified Newton loop (finite rotations in two load steps with K_0) ends with a
 # message saying so, not with the NaN of a later step.
 expect "diverging outer loop" "diverged" -- --set problem=cantilever_obstacle --set displacements=large \
