@@ -43,7 +43,8 @@ nlohmann::json records(const nonlinear::ContactSolution& s)
                        it.proportioning_steps, it.hessian_multiplications, it.smalbe_outer,
                        it.residual_norm, it.displacement_change, it.active_contacts,
                        it.feasibility_error, it.seconds, it.ritz.min, it.ritz.max, it.ritz.cg_steps});
-  return {{"completed_steps", s.restart.completed_steps}, {"steps", steps}, {"history", history}};
+  return {{"completed_steps", s.restart.completed_steps}, {"steps", steps}, {"history", history},
+          {"smalbe_M", s.restart.smalbe_M}, {"smalbe_rho", s.restart.smalbe_rho}};
 }
 } // namespace
 
@@ -58,6 +59,9 @@ void write_checkpoint(const std::filesystem::path& path, const nonlinear::Contac
     write_block(os, r.contact_slave.data(), static_cast<int64_t>(r.contact_slave.size()));
     write_block(os, r.contact_lambda.data(), static_cast<int64_t>(r.contact_lambda.size()));
     write_block(os, json.data(), static_cast<int64_t>(json.size()));
+    // Last, so that checkpoints written before it existed still read (their runs continue
+    // with a cold SMALBE-M start).
+    write_block(os, r.smalbe_coarse_multiplier.data(), r.smalbe_coarse_multiplier.size());
   });
 }
 
@@ -82,6 +86,8 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
   {
     json = nlohmann::json::parse(std::string(text.begin(), text.end()));
     r.completed_steps = json.at("completed_steps").get<int>();
+    r.smalbe_M = json.value("smalbe_M", 0.0);
+    r.smalbe_rho = json.value("smalbe_rho", 0.0);
     solution.steps.clear();
     for (const auto& st : json.at("steps"))
       solution.steps.push_back({st[0].get<double>(), st[1].get<int>(), st[2].get<bool>(),
@@ -115,6 +121,11 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
   catch (const nlohmann::json::exception& e)
   {
     FETICON_CHECK(false, path.string() << ": corrupt checkpoint records (" << e.what() << ")");
+  }
+  if (is.peek() != std::char_traits<char>::eof())
+  {
+    const auto beta = read_block<double>(is, path);
+    r.smalbe_coarse_multiplier = Eigen::Map<const la::Vector>(beta.data(), static_cast<la::Index>(beta.size()));
   }
   FETICON_CHECK(r.completed_steps >= 1 && r.u_stacked.allFinite(),
                 path.string() << ": the checkpoint holds no converged step");

@@ -100,7 +100,7 @@ la::Vector particular_solution(const FetiOperators& feti, const CoarseProjector&
 
 DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
                                 const la::Vector& f_stacked, int64_t n_equality,
-                                const DualPenaltyOptions& options, const la::Vector& lambda_start)
+                                const DualPenaltyOptions& options, const DualWarmStart& warm)
 {
   const int64_t m = feti.n_dual();
   FETICON_CHECK(c.size() == m && n_equality <= feti.n_dual_global(), "dual problem: sizes do not match");
@@ -132,8 +132,8 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   // Warm start projected onto Ker G: when K_M(u) or the contact rows change, G changes and
   // lambda_start - lambda~ is far from Ker G, which SMALBE-M would then repair slowly
   // through its multiplier (the inner stop ||g_P|| <= M ||G~ mu|| passes at once).
-  la::Vector mu = lambda_start.size() == m ? projector.apply_P(lambda_start - lambda_tilde)
-                                           : la::Vector(la::Vector::Zero(m));
+  la::Vector mu = warm.lambda.size() == m ? projector.apply_P(warm.lambda - lambda_tilde)
+                                          : la::Vector(la::Vector::Zero(m));
 
   qp::MprgpOptions mprgp;
   mprgp.rtol = options.rtol;
@@ -163,9 +163,18 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
     smalbe.max_inner_iterations = options.max_iterations;
     smalbe.mprgp = mprgp;
     qp::Smalbe solver(H, C, smalbe);
-    const qp::SmalbeReport r = solver.solve(b, lower, mu);
+    // The multiplier of G~ mu = 0 in the scaled dual is scale times the unscaled one.
+    std::optional<qp::SmalbeStart> start;
+    if (warm.coarse_multiplier.size() == feti.n_kernel())
+      start = qp::SmalbeStart{projector.tilde_multiplier(scale * warm.coarse_multiplier),
+                              warm.M > 0 ? warm.M : options.smalbe_M0,
+                              std::max(warm.rho, options.rho)};
+    const qp::SmalbeReport r = solver.solve(b, lower, mu, start ? &*start : nullptr);
     out.report = r;
     out.outer_iterations = r.outer_iterations;
+    out.coarse_multiplier = projector.coarse_multiplier(r.omega) / scale;
+    out.smalbe_M = r.final_M;
+    out.smalbe_rho = r.final_rho;
   }
   out.report.hessian_multiplications += norm.applications;
   out.operator_applications = H.applications();

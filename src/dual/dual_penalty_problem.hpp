@@ -50,6 +50,17 @@ struct DualPenaltyOptions
   double smalbe_beta = 2.0;   ///< SMALBE-M: M <- M / beta when L increases too little
 };
 
+/// Where a solve starts, from the solution of a nearby problem (the previous outer iteration:
+/// only the contact rows, the gaps and the load have changed). Empty vectors start from 0.
+struct DualWarmStart
+{
+  la::Vector lambda;            ///< multipliers, as DualSolution::lambda
+  /// SMALBE-M: the multiplier of G lambda = e as a coarse vector, DualSolution::coarse_multiplier.
+  la::Vector coarse_multiplier;
+  double M = 0;                 ///< SMALBE-M's M; 0: smalbe_M0
+  double rho = 0;               ///< SMALBE-M's rho; 0: the options' rho
+};
+
 struct DualSolution
 {
   la::Vector lambda;             ///< multipliers (equality rows then contact rows)
@@ -57,6 +68,11 @@ struct DualSolution
   la::Vector alpha;              ///< rigid-body amplitudes
   qp::QpReport report;           ///< MPRGP counters (summed over SMALBE-M outer steps)
   int outer_iterations = 0;      ///< SMALBE-M outer iterations (1 for the dual penalty)
+  /// SMALBE-M: beta with G' beta the multiplier of G lambda = e in the unscaled dual (indexed
+  /// by rigid modes, it carries over to the next outer iteration's G), and the final M and rho.
+  la::Vector coarse_multiplier;
+  double smalbe_M = 0;
+  double smalbe_rho = 0;
   double feasibility_error = 0;  ///< ||G lambda - e|| / ||e||
   double pfp_norm = 0;           ///< ||PFP|| estimate used for scaling
   int64_t active_contacts = 0;   ///< contact rows with lambda_i > 0
@@ -73,9 +89,8 @@ struct DualSolution
 /// @param c             right-hand sides of the owned rows (B u = c_E, B u <= c_I)
 /// @param f_stacked     stacked load
 /// @param n_equality    global number of equality rows (ids below it are equalities)
-/// @param lambda_start  initial multipliers (warm start), or empty for mu = 0
+/// @param warm          where to start (warm start), or empty for mu = 0
 DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
                                 const la::Vector& f_stacked, int64_t n_equality,
-                                const DualPenaltyOptions& options,
-                                const la::Vector& lambda_start = {});
+                                const DualPenaltyOptions& options, const DualWarmStart& warm = {});
 } // namespace feticon::dual

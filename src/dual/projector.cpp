@@ -58,7 +58,17 @@ la::Vector CoarseProjector::apply_G_tilde(const la::Vector& lambda) const
 
 la::Vector CoarseProjector::apply_G_tilde_t(const la::Vector& omega) const
 {
-  return apply_Gt(la::Vector(_llt.permutationPinv() * la::Vector(_llt.matrixU().solve(omega))));
+  return apply_Gt(coarse_multiplier(omega));
+}
+
+la::Vector CoarseProjector::coarse_multiplier(const la::Vector& omega) const
+{
+  return _llt.permutationPinv() * la::Vector(_llt.matrixU().solve(omega));
+}
+
+la::Vector CoarseProjector::tilde_multiplier(const la::Vector& beta) const
+{
+  return _llt.matrixU() * la::Vector(_llt.permutationP() * beta);
 }
 
 la::Vector CoarseProjector::particular_solution(const la::Vector& e) const

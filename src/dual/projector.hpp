@@ -33,6 +33,10 @@ public:
   /// G~ lambda = L^{-1} G lambda and G~' omega.
   la::Vector apply_G_tilde(const la::Vector& lambda) const;
   la::Vector apply_G_tilde_t(const la::Vector& omega) const;
+  /// beta with G' beta = G~' omega (beta = P_o' L^{-T} omega: indexed by rigid modes, so it
+  /// carries over to a projector of changed G), and omega = L' P_o beta back.
+  la::Vector coarse_multiplier(const la::Vector& omega) const;
+  la::Vector tilde_multiplier(const la::Vector& beta) const;
   /// (G G')^{-1} y.
   la::Vector coarse_solve(const la::Vector& y) const;
   /// Minimal-norm solution of G lambda = e: G'(GG')^{-1} e.

@@ -54,6 +54,9 @@ struct RestartState
   la::Vector lambda;                      ///< equality multipliers of the last solve, by row id
   std::vector<int32_t> contact_slave;     ///< slave node of each contact multiplier
   std::vector<double> contact_lambda;     ///< contact multiplier by slave node
+  /// SMALBE-M's state after the last solve (dual::DualWarmStart); empty/0 for other methods.
+  la::Vector smalbe_coarse_multiplier;
+  double smalbe_M = 0, smalbe_rho = 0;
 };
 
 struct ContactSolution

@@ -48,9 +48,10 @@ Smalbe::Smalbe(const la::LinearOperator& H, const EqualityOperator& C, SmalbeOpt
                 "feasibility_window >= 1");
 }
 
-SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vector& x)
+SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vector& x,
+                           const SmalbeStart* start)
 {
-  const auto start = std::chrono::steady_clock::now();
+  const auto solve_start = std::chrono::steady_clock::now();
   std::unique_ptr<la::SerialSpace> serial;
   const la::VectorSpace& space = _options.mprgp.space
                                      ? *_options.mprgp.space
@@ -66,6 +67,14 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
   double M = _options.M0;
   double rho = _options.rho;
   const double rho_max = _options.rho * _options.rho_limit;
+  if (start)
+  {
+    FETICON_CHECK(start->omega.size() == omega.size() && start->M > 0 && start->rho >= _options.rho,
+                  "SMALBE-M start: need omega of the size of Cx, M > 0, rho >= the initial rho");
+    omega = start->omega;
+    M = start->M;
+    rho = std::min(start->rho, rho_max);
+  }
   double previous_L = 0;
   // Stall test of the feasibility: reference value and the outer iteration it was taken at.
   double reference_feasibility = std::numeric_limits<double>::infinity();
@@ -82,6 +91,13 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
   };
   RaisedPenaltyOperator H(_H, _C);
   auto last_progress = std::chrono::steady_clock::now();
+  // ||H + delta C'C|| <= ||H|| + delta since ||C'C|| = 1: the step length bound for a raised
+  // rho from the one for the current (the norm estimate 1.8/alpha_bar grows by delta).
+  auto raised_alpha_bar = [](double alpha_bar, double delta)
+  { return alpha_bar / (1.0 + alpha_bar * delta / 1.8); };
+  H.delta = rho - _options.rho;
+  if (H.delta > 0 && inner.alpha_bar > 0)
+    inner.alpha_bar = raised_alpha_bar(inner.alpha_bar, H.delta);
   auto mprgp = std::make_unique<Mprgp>(H, inner);
   for (int k = 0; k < _options.max_outer_iterations; ++k)
   {
@@ -126,6 +142,8 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
     // r.cost is L(x, omega, rho) = 1/2 x'(H + (rho - rho_0) C'C)x - b'x + omega'Cx for the
     // multiplier and penalty of this solve.
     const double L = r.cost;
+    if (_options.monitor)
+      _options.monitor({k, &x, &omega, M, rho, L});
     if (r.projected_gradient_norm <= tolerance && feasibility <= tolerance)
     {
       report.converged = true;
@@ -155,12 +173,10 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
       const double growth = std::clamp(wanted, _options.rho_growth,
                                        std::pow(_options.rho_growth, 3));
       const double new_rho = std::min(rho * growth, rho_max);
-      // ||H + delta C'C|| <= ||H|| + delta since ||C'C|| = 1: add delta to the norm estimate
-      // 1.8/alpha_bar that alpha_bar came from (larger if MPRGP has halved alpha_bar); MPRGP
-      // still halves alpha_bar whenever an expansion step increases the cost.
-      const double alpha_bar = mprgp->alpha_bar();
+      // From the alpha_bar in use (smaller if MPRGP has halved it); MPRGP still halves
+      // alpha_bar whenever an expansion step increases the cost.
       MprgpOptions raised = inner;
-      raised.alpha_bar = alpha_bar / (1.0 + alpha_bar * (new_rho - rho) / 1.8);
+      raised.alpha_bar = raised_alpha_bar(mprgp->alpha_bar(), new_rho - rho);
       log::iteration("    SMALBE-M: ||Cx|| stalled at " + std::to_string(feasibility / b_norm) +
                      " ||b|| for " + std::to_string(k - reference_iteration) +
                      " outer iterations: rho " + std::to_string(rho) + " -> " +
@@ -185,7 +201,7 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
   report.final_rho = rho;
   report.omega = omega;
   report.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();
   return report;
 }
 } // namespace feticon::qp

@@ -40,6 +40,17 @@ public:
   virtual la::Vector apply_transpose(const la::Vector& y) const = 0;
 };
 
+/// The state after one outer iteration's inner solve, before the updates of omega and M.
+struct SmalbeIterate
+{
+  int outer_iteration = 0;       ///< k, from 0
+  const la::Vector* x = nullptr; ///< the inner solve's result
+  const la::Vector* omega = nullptr; ///< the multiplier it used
+  double M = 0;                  ///< the M it used
+  double rho = 0;                ///< the rho it used
+  double lagrangian = 0;         ///< L(x, omega) with the penalty rho
+};
+
 struct SmalbeOptions
 {
   double rtol = 1e-6;        ///< final test on ||g_P|| and ||Cx||, relative to ||b||
@@ -59,6 +70,18 @@ struct SmalbeOptions
   /// rho never exceeds rho_limit times the initial rho.
   double rho_limit = 1e4;
   MprgpOptions mprgp{};      ///< gamma, alpha_bar, monitor; its rtol and stop are set here
+  /// Called after every outer iteration's inner solve (tests check the updates with it).
+  std::function<void(const SmalbeIterate&)> monitor;
+};
+
+/// Where SMALBE-M starts (beyond x): the multiplier of Cx = 0, M and rho of an earlier solve
+/// of a nearby problem. rho >= SmalbeOptions::rho (H holds the initial rho; the difference is
+/// added as in a rho update); M > 0.
+struct SmalbeStart
+{
+  la::Vector omega;
+  double M = 1.0;
+  double rho = 1.0;
 };
 
 struct SmalbeReport : QpReport
@@ -76,7 +99,9 @@ class Smalbe
 public:
   Smalbe(const la::LinearOperator& H, const EqualityOperator& C, SmalbeOptions options);
   /// @param[in,out] x initial guess on input (projected onto x >= l), solution on output
-  SmalbeReport solve(const la::Vector& b, const la::Vector& lower, la::Vector& x);
+  /// @param start    omega, M and rho to start from; null: omega = 0, M0 and rho of the options
+  SmalbeReport solve(const la::Vector& b, const la::Vector& lower, la::Vector& x,
+                     const SmalbeStart* start = nullptr);
 
 private:
   const la::LinearOperator& _H;

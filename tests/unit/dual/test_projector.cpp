@@ -49,6 +49,19 @@ TEST(Projector, OrthonormalCoarseSpaceAndProjectorIdentities)
   EXPECT_LT((s->feti->apply_G(projector.particular_solution(e)) - e).norm(), 1e-12 * e.norm());
 }
 
+// Reference: G~' omega = G' P_o' L^{-T} omega, so the coarse multiplier beta of omega must
+// give G' beta = G~' omega, and omega must come back from beta (L is invertible).
+TEST(Projector, CoarseMultiplierCarriesTheEqualityMultiplier)
+{
+  const auto s = make_setup();
+  const dual::CoarseProjector projector(*s->feti);
+  const la::Vector omega = la::Vector::Random(s->feti->n_kernel());
+  const la::Vector beta = projector.coarse_multiplier(omega);
+  const la::Vector Gt_omega = projector.apply_G_tilde_t(omega);
+  EXPECT_LT((s->feti->apply_Gt(beta) - Gt_omega).norm(), 1e-12 * Gt_omega.norm());
+  EXPECT_LT((projector.tilde_multiplier(beta) - omega).norm(), 1e-12 * omega.norm());
+}
+
 // Reference: F is symmetric positive semidefinite (B K+ B' with symmetric K+), checked on
 // random vectors: x'Fy = y'Fx and x'Fx >= 0; F applied equals B K+ B' built densely.
 TEST(FetiOperators, FIsSymmetricAndMatchesDenseProduct)

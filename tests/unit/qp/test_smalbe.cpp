@@ -1,0 +1,231 @@
+/// SMALBE-M on hand-built QPs with bound and equality constraints:
+///   min 1/2 x'Ax - b'x  s.t.  x >= l,  C x = 0   (C with orthonormal rows),
+/// given to Smalbe as H = A + rho C'C. The reference is an independent solve: the penalized
+/// bound QP (A + K C'C, K = 1e6 ||A||) by the dense active-set method of reference_qp.hpp
+/// finds the active bounds, then the KKT system of that face (bounds as equalities) is solved
+/// by a dense LU; the test checks that the reference's bound multipliers have the right sign
+/// and its x is feasible, which certifies it as the minimizer.
+
+#include "qp/smalbe.hpp"
+#include "qp_test_problems.hpp"
+#include "reference_qp.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace feticon::qp
+{
+namespace
+{
+class DenseEquality : public EqualityOperator
+{
+public:
+  explicit DenseEquality(const la::Matrix& C) : _C(C) {}
+  la::Vector apply(const la::Vector& x) const override { return _C * x; }
+  la::Vector apply_transpose(const la::Vector& y) const override { return _C.transpose() * y; }
+
+private:
+  const la::Matrix& _C;
+};
+
+struct EqualityQp
+{
+  la::Matrix A, C;
+  la::Vector b, lower;
+};
+
+/// n unknowns, m orthonormal equality rows; bounds on about 80 % of the components, placed
+/// below a point of Ker C (so the feasible set is not empty) and above the unconstrained
+/// minimizer in places (so some bounds are active).
+EqualityQp make_qp(int n, int m, unsigned seed)
+{
+  const test::BoundQp bound = test::random_bound_qp(n, seed, 100.0, 0.2);
+  std::mt19937 generator(seed + 1);
+  std::normal_distribution<double> normal;
+  EqualityQp qp{bound.A, test::random_orthogonal(n, generator).topRows(m), bound.b, bound.lower};
+  la::Vector feasible(n);
+  for (int i = 0; i < n; ++i)
+    feasible[i] = normal(generator);
+  feasible -= qp.C.transpose() * (qp.C * feasible);
+  for (int i = 0; i < n; ++i)
+    if (std::isfinite(qp.lower[i]))
+      qp.lower[i] = std::min(qp.lower[i], feasible[i]);
+  return qp;
+}
+
+struct Reference
+{
+  la::Vector x;
+  la::Vector omega; ///< multiplier of C x = 0 (A x - b + C' omega = bound multipliers)
+  int active_bounds = 0;
+};
+
+Reference reference_solve(const EqualityQp& qp)
+{
+  const la::Index n = qp.b.size(), m = qp.C.rows();
+  const double K = 1e6 * qp.A.norm();
+  const la::Vector penalized =
+      test::reference_bound_qp(qp.A + K * qp.C.transpose() * qp.C, qp.b, qp.lower);
+  std::vector<la::Index> active;
+  for (la::Index i = 0; i < n; ++i)
+    if (penalized[i] <= qp.lower[i] + 1e-9 * (1 + std::abs(qp.lower[i])))
+      active.push_back(i);
+  const auto a = static_cast<la::Index>(active.size());
+  // [A C' E'; C 0 0; E 0 0] [x; omega; -nu] = [b; 0; l_E]: A x - b + C' omega = nu, nu the
+  // multipliers of the active bounds (E selects them).
+  la::Matrix kkt = la::Matrix::Zero(n + m + a, n + m + a);
+  la::Vector rhs = la::Vector::Zero(n + m + a);
+  kkt.topLeftCorner(n, n) = qp.A;
+  kkt.block(0, n, n, m) = qp.C.transpose();
+  kkt.block(n, 0, m, n) = qp.C;
+  rhs.head(n) = qp.b;
+  for (la::Index r = 0; r < a; ++r)
+  {
+    kkt(active[r], n + m + r) = kkt(n + m + r, active[r]) = 1.0;
+    rhs[n + m + r] = qp.lower[active[r]];
+  }
+  const la::Vector solution = kkt.partialPivLu().solve(rhs);
+  Reference out{solution.head(n), solution.segment(n, m), static_cast<int>(a)};
+  // Certificate of optimality: feasible, and every active bound pushes (nu >= 0).
+  EXPECT_LT((qp.C * out.x).norm(), 1e-10 * (1 + out.x.norm()));
+  for (la::Index i = 0; i < n; ++i)
+    EXPECT_GE(out.x[i], qp.lower[i] - 1e-10);
+  for (la::Index r = 0; r < a; ++r)
+    EXPECT_GE(-solution[n + m + r], -1e-10) << "bound " << active[r] << " pulls the wrong way";
+  return out;
+}
+
+/// The QP as Smalbe sees it: H = A + rho C'C with rho = ||A|| (eigenvalues 1..100), as
+/// rho ~ ||PFP|| in FETI.
+struct Augmented
+{
+  explicit Augmented(EqualityQp problem)
+      : qp(std::move(problem)), H(qp.A + rho * qp.C.transpose() * qp.C), Hop(H), C(qp.C)
+  {
+  }
+  static constexpr double rho = 100.0;
+  EqualityQp qp;
+  la::Matrix H;
+  test::CountingOperator Hop;
+  DenseEquality C;
+};
+
+SmalbeOptions options(double rho)
+{
+  SmalbeOptions o;
+  o.rtol = 1e-10;
+  o.rho = rho;
+  o.rho_growth = 1; // fixed rho: the updates below are checked against ALGORITHMS.md section 1
+  return o;
+}
+
+TEST(Smalbe, MatchesAnIndependentSolveOfBoundAndEqualityConstraints)
+{
+  for (const unsigned seed : {1u, 2u, 3u})
+  {
+    const Augmented p(make_qp(24, 4, seed));
+    const EqualityQp& qp = p.qp;
+    const Reference reference = reference_solve(qp);
+    ASSERT_GT(reference.active_bounds, 0) << "the test QP should have active bounds";
+    ASSERT_GT(reference.omega.norm(), 0.1) << "and a multiplier of C x = 0";
+    Smalbe smalbe(p.Hop, p.C, options(p.rho));
+    la::Vector x = la::Vector::Zero(24);
+    const SmalbeReport r = smalbe.solve(qp.b, qp.lower, x);
+    ASSERT_TRUE(r.converged) << r.reason;
+    EXPECT_LT((x - reference.x).norm(), 1e-7 * reference.x.norm()) << "seed " << seed;
+    EXPECT_LT((r.omega - reference.omega).norm(), 1e-6 * reference.omega.norm()) << "seed " << seed;
+  }
+}
+
+TEST(Smalbe, UpdatesOmegaAndMAsInAlgorithmsSection1)
+{
+  const Augmented p(make_qp(24, 4, 7));
+  const EqualityQp& qp = p.qp;
+  const double rho = p.rho;
+  struct Record
+  {
+    la::Vector x, omega;
+    double M, lagrangian;
+  };
+  std::vector<Record> records;
+  SmalbeOptions o = options(rho);
+  o.M0 = 1e3; // loose first inner solves (M ~ 10 ||H||): M has to come down
+  o.monitor = [&](const SmalbeIterate& it)
+  { records.push_back({*it.x, *it.omega, it.M, it.lagrangian}); };
+  Smalbe smalbe(p.Hop, p.C, o);
+  la::Vector x = la::Vector::Zero(24);
+  const SmalbeReport r = smalbe.solve(qp.b, qp.lower, x);
+  ASSERT_TRUE(r.converged) << r.reason;
+  ASSERT_GE(records.size(), 4u);
+  int decreases = 0;
+  for (size_t k = 0; k < records.size(); ++k)
+  {
+    const Record& it = records[k];
+    const la::Vector Cx = qp.C * it.x;
+    // L(x, omega) computed here, not by the solver's recursive cost.
+    const double L = 0.5 * it.x.dot(p.H * it.x) - qp.b.dot(it.x) + it.omega.dot(Cx);
+    EXPECT_NEAR(it.lagrangian, L, 1e-9 * (1 + std::abs(L))) << "outer " << k;
+    if (k + 1 == records.size())
+      break;
+    const Record& next = records[k + 1];
+    // omega <- omega + rho C x
+    EXPECT_LT((next.omega - (it.omega + rho * Cx)).norm(), 1e-12 * (1 + next.omega.norm())) << "outer " << k;
+    // M <- M / beta when L did not grow by rho/2 ||Cx||^2 (k > 0), else unchanged.
+    // (Ties within round-off of L, whose solver value is a recursive cost, may go either way.)
+    const double wanted = k > 0 ? records[k - 1].lagrangian + 0.5 * rho * Cx.squaredNorm() : 0.0;
+    if (k > 0 && std::abs(L - wanted) <= 1e-9 * (1 + std::abs(L)))
+      continue;
+    const bool decrease = k > 0 && L < wanted;
+    EXPECT_DOUBLE_EQ(next.M, decrease ? it.M / o.beta : it.M) << "outer " << k;
+    decreases += decrease;
+  }
+  EXPECT_GT(decreases, 0) << "the run should exercise the M update";
+  EXPECT_DOUBLE_EQ(r.final_M, records.back().M);
+}
+
+TEST(Smalbe, StartsFromTheMultiplierMAndRhoOfAnEarlierSolve)
+{
+  const Augmented p(make_qp(24, 4, 11));
+  const EqualityQp& qp = p.qp;
+  const double rho = p.rho;
+  Smalbe smalbe(p.Hop, p.C, options(rho));
+  la::Vector x = la::Vector::Zero(24);
+  const SmalbeReport first = smalbe.solve(qp.b, qp.lower, x);
+  ASSERT_TRUE(first.converged) << first.reason;
+  ASSERT_GT(first.outer_iterations, 3);
+
+  // Restarted at its own solution, the solve stops at once.
+  const SmalbeStart same{first.omega, first.final_M, first.final_rho};
+  la::Vector again = x;
+  const SmalbeReport restarted = smalbe.solve(qp.b, qp.lower, again, &same);
+  EXPECT_TRUE(restarted.converged);
+  EXPECT_EQ(restarted.outer_iterations, 1);
+  EXPECT_LE(restarted.iterations, 1);
+
+  // A nearby problem (b perturbed by 1 %), as the next outer iteration of a Newton loop:
+  // starting from the earlier multiplier needs fewer outer iterations and steps than from
+  // omega = 0, both from the earlier x, and both reach the same answer.
+  std::mt19937 generator(5);
+  std::normal_distribution<double> normal;
+  la::Vector b = qp.b;
+  for (la::Index i = 0; i < b.size(); ++i)
+    b[i] += 0.01 * qp.b.norm() / std::sqrt(24.0) * normal(generator);
+  la::Vector warm_x = x, cold_x = x;
+  const SmalbeReport warm = smalbe.solve(b, qp.lower, warm_x, &same);
+  const SmalbeReport cold = smalbe.solve(b, qp.lower, cold_x);
+  ASSERT_TRUE(warm.converged && cold.converged);
+  EXPECT_LT(warm.outer_iterations, cold.outer_iterations);
+  EXPECT_LT(warm.iterations, cold.iterations);
+  EXPECT_LT((warm_x - cold_x).norm(), 1e-7 * cold_x.norm());
+
+  // A raised rho is taken over: H is augmented by the difference.
+  const SmalbeStart raised{first.omega, first.final_M, 10 * rho};
+  la::Vector raised_x = x;
+  const SmalbeReport with_raised = smalbe.solve(b, qp.lower, raised_x, &raised);
+  ASSERT_TRUE(with_raised.converged) << with_raised.reason;
+  EXPECT_DOUBLE_EQ(with_raised.final_rho, 10 * rho);
+  EXPECT_LT((raised_x - cold_x).norm(), 1e-7 * cold_x.norm());
+}
+} // namespace
+} // namespace feticon::qp
