@@ -12,7 +12,7 @@ ExplicitBoundaryOperators::ExplicitBoundaryOperators(const SubdomainSystem& syst
   const Decomposition& decomp = system.decomposition();
   _first = decomp.first_owned();
   _local.resize(decomp.end_owned() - decomp.first_owned());
-  parallel_for(decomp.first_owned(), decomp.end_owned(), decomp.n_primal(), [&](int32_t s)
+  parallel_for(decomp.first_owned(), decomp.end_owned(), setup_work, [&](int32_t s)
   {
     Local& local = _local[s - _first];
     local.boundary = schur.boundary(s);

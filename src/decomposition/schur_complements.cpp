@@ -36,7 +36,7 @@ SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vec
 {
   const Decomposition& decomp = system.decomposition();
   _local.resize(decomp.end_owned() - decomp.first_owned());
-  parallel_for(decomp.first_owned(), decomp.end_owned(), decomp.n_primal(), [&](int32_t s)
+  parallel_for(decomp.first_owned(), decomp.end_owned(), setup_work, [&](int32_t s)
   {
     const Subdomain& sub = decomp.subdomain(s);
     Local& local = _local[s - decomp.first_owned()];

@@ -35,7 +35,7 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
   const int32_t first = _decomposition.first_owned();
   std::vector<std::vector<int32_t>> fixing_candidates(_decomposition.end_owned() - first);
   auto start = std::chrono::steady_clock::now();
-  parallel_for(first, _decomposition.end_owned(), _decomposition.n_primal(), [&](int32_t s)
+  parallel_for(first, _decomposition.end_owned(), setup_work, [&](int32_t s)
   {
     const Subdomain& sub = _decomposition.subdomain(s);
     const fem::Assembler& assembler = *_assemblers[sub.id];
@@ -60,7 +60,7 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
 
   start = std::chrono::steady_clock::now();
   std::vector<int64_t> owned_kernel_dims(_decomposition.end_owned() - first);
-  parallel_for(first, _decomposition.end_owned(), _decomposition.n_primal(), [&](int32_t s)
+  parallel_for(first, _decomposition.end_owned(), setup_work, [&](int32_t s)
   {
     SubdomainOperators& op = _operators[s];
     op.K_plus.setup(op.K, op.R, fixing_candidates[s - first], _method, "subdomain " + std::to_string(s));
@@ -78,7 +78,7 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
 la::Vector SubdomainSystem::internal_force(const la::Vector& u_stacked) const
 {
   la::Vector f(_decomposition.n_primal());
-  parallel_for(_decomposition.first_owned(), _decomposition.end_owned(), _decomposition.n_primal(), [&](int32_t s)
+  parallel_for(_decomposition.first_owned(), _decomposition.end_owned(), setup_work, [&](int32_t s)
   {
     const Subdomain& sub = _decomposition.subdomain(s);
     const la::Vector f_full = _assemblers[sub.id]->internal_force(full_local(sub.id, u_stacked));
