@@ -7,7 +7,8 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev          # dense/sparse containers, element algebra
   libsuitesparse-dev     # CHOLMOD factorizations
-  libopenblas0-pthread   # optimized BLAS behind CHOLMOD (else netlib reference BLAS)
+  libblas-dev            # cblas.h and libblas.so: dense symmetric products (la/symmetric_product.hpp)
+  libopenblas0-pthread   # optimized BLAS behind CHOLMOD and those (else netlib reference BLAS)
   libmetis-dev           # graph partitioning
   openmpi-bin libopenmpi-dev  # MPI: subdomains distributed over ranks
   libyaml-cpp-dev        # problem files

@@ -13,7 +13,11 @@
 /// factorization: with the initial stiffness kept (modified Newton), they are formed once per
 /// run, while B_b changes with the contact rows of every outer iteration.
 ///
-/// Formed with one multi-column (supernodal, BLAS 3) solve per subdomain and factor.
+/// Formed with one multi-column (supernodal, BLAS 3) solve per subdomain and factor. Both
+/// blocks are symmetric and share one square array: (K_s+)_bb in the lower triangle and the
+/// diagonal, S_s in the strict upper triangle (its diagonal aside), applied by BLAS dsymv
+/// (la/symmetric_product.hpp), which reads one triangle: half the memory, and the products,
+/// bound by memory traffic, read half as much.
 
 #include "decomposition/schur_complements.hpp"
 
@@ -31,10 +35,9 @@ public:
 
   /// Boundary DOFs of owned subdomain s (active DOFs, increasing).
   const std::vector<int32_t>& boundary(int32_t s) const { return local(s).boundary; }
-  /// (K_s+)_bb, |b_s| x |b_s|.
-  const la::Matrix& K_plus(int32_t s) const { return local(s).K_plus; }
-  /// S_s, |b_s| x |b_s|.
-  const la::Matrix& schur(int32_t s) const { return local(s).schur; }
+  /// (K_s+)_bb v and S_s v for v on the boundary of owned subdomain s.
+  la::Vector apply_K_plus(int32_t s, const la::Vector& v) const;
+  la::Vector apply_schur(int32_t s, const la::Vector& v) const;
   /// Bytes of the dense blocks of this rank.
   int64_t bytes() const;
 
@@ -42,7 +45,8 @@ private:
   struct Local
   {
     std::vector<int32_t> boundary;
-    la::Matrix K_plus, schur;
+    la::Matrix blocks;               ///< (K_s+)_bb in the lower triangle, S_s in the upper
+    la::Vector schur_minus_K_plus;   ///< diag(S_s) - diag((K_s+)_bb)
   };
   const Local& local(int32_t s) const { return _local[s - _first]; }
 
@@ -50,6 +54,6 @@ private:
   std::vector<Local> _local; ///< per owned subdomain (index s - first owned)
 };
 
-/// Bytes the dense blocks of the owned subdomains would take: 2 |b_s|^2 doubles each.
+/// Bytes the dense blocks of the owned subdomains would take: |b_s|^2 doubles each.
 int64_t explicit_operator_bytes(const SubdomainSystem& system, const SchurComplements& schur);
 } // namespace feticon::decomposition

@@ -370,7 +370,7 @@ la::Vector FetiOperators::apply_F(const la::Vector& lambda) const
 {
   if (_explicit)
     return sum_over_subdomains(_B_boundary, lambda, [this](int32_t s, const la::Vector& v)
-                               { return la::Vector(_explicit->K_plus(s) * v); });
+                               { return _explicit->apply_K_plus(s, v); });
   return sum_over_subdomains(_B, lambda, [this](int32_t s, const la::Vector& v)
                              { return _system.operators(s).K_plus.apply(v); });
 }
@@ -386,7 +386,7 @@ la::Vector FetiOperators::apply_dirichlet(const la::Vector& lambda,
 {
   if (_explicit)
     return sum_over_subdomains(_B_boundary, lambda, [this](int32_t s, const la::Vector& v)
-                               { return la::Vector(_explicit->schur(s) * v); });
+                               { return _explicit->apply_schur(s, v); });
   return sum_over_subdomains(_B, lambda, [&schur](int32_t s, const la::Vector& v) { return schur.apply(s, v); });
 }
 

@@ -92,10 +92,12 @@ std::vector<char> schur_boundary_nodes(const fem::Problem& problem, const fem::C
 /// applies K_s+ and the K_ii solve of S_s once each, about 4 (nnz(L_s) + nnz(L_ii)) ~
 /// 8 nnz(L_s); an explicit one two dense products of 2 |b_s|^2, which run at 3 times the
 /// flop rate of the substitutions; forming the blocks is |b_s| such substitution pairs, which
-/// the multi-column solves in blocks of 32 do in a quarter of the time (measured: Hertz, 19k
-/// DOFs, 8 subdomains, |b_s| ~ 320: set-up 0.155 s, a dual product 2.1 ms implicit and
-/// 0.43 ms explicit). Expected steps: 100 per load step, 5 times as many with
-/// large displacements (docs/benchmarks.md).
+/// the multi-column solves in blocks of 32 do in a quarter of the time. Measured with the
+/// products by BLAS dsymv: Hertz, 19k DOFs, 8 subdomains, |b_s| ~ 320: a dual product
+/// 2.5 ms implicit, 0.32 ms explicit (model: 4.6x); sphere on block, 17k DOFs, 4 subdomains,
+/// |b_s| ~ 1 560: 9.2 ms against 3.4 ms (model 2.8x; the blocks, 75 MiB, stream from memory
+/// at every step). Expected steps: 100 per load step, 5 times as many with large
+/// displacements (docs/benchmarks.md).
 std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, const decomposition::SubdomainSystem& system,
                                              const decomposition::SchurComplements* schur, const par::Communicator& comm)
 {
