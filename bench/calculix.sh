@@ -69,6 +69,8 @@ if $suite; then
   done
   "$0" --feticon "$feticon" --out "$out" --reps "$reps" --name punch -- "$root/examples/flat_punch/problem.yaml"
   "$0" --feticon "$feticon" --out "$out" --reps "$reps" --name sphere -- "$root/examples/sphere_on_block/problem.yaml"
+  "$0" --feticon "$feticon" --out "$out" --reps "$reps" --name sphere-large -- \
+    "$root/examples/sphere_on_block/problem.yaml" --set displacements=large
   /usr/bin/python3 "$root/bench/calculix_table.py" "$out"
   exit 0
 fi
