@@ -81,6 +81,7 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Prob
                                          : nonlinear::StiffnessUpdate::iteration;
   out.max_outer_iterations = s.integer("newton.max_iterations");
   out.displacement_tolerance = s.number("newton.tolerance");
+  out.residual_tolerance = s.number("newton.residual_tolerance");
   out.forcing = s.number("newton.forcing");
   const std::string& dual_operator = s.text("dual.operator");
   out.dual_operator = dual_operator == "implicit"   ? nonlinear::DualOperatorMode::implicit
