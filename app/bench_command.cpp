@@ -37,6 +37,7 @@ struct BenchOptions
   int obstacle_n = 0; ///< > 0: the MPRGP obstacle benchmark instead of a contact solve
   double obstacle_rtol = 1e-5;
   int obstacle_max_iterations = 100000;
+  std::string obstacle_expansion = "projcg";
   int applications = 21;
   bool verbose = false;
 };
@@ -128,6 +129,9 @@ void register_bench_command(CLI::App& app)
   cmd->add_option("--rtol", options->obstacle_rtol, "MPRGP tolerance of the obstacle QP")->capture_default_str();
   cmd->add_option("--max-iterations", options->obstacle_max_iterations, "MPRGP step limit of the obstacle QP")
       ->capture_default_str();
+  cmd->add_option("--expansion", options->obstacle_expansion, "MPRGP expansion step of the obstacle QP: std or projcg")
+      ->check(CLI::IsMember({"std", "projcg"}))
+      ->capture_default_str();
   cmd->add_option("--applications", options->applications,
                   "timed operator applications (median) of the obstacle QP")
       ->capture_default_str();
@@ -140,7 +144,8 @@ void register_bench_command(CLI::App& app)
         const nlohmann::ordered_json out =
             options->obstacle_n > 0
                 ? mprgp_obstacle_benchmark(options->obstacle_n, options->obstacle_rtol,
-                                           options->obstacle_max_iterations, options->applications)
+                                           options->obstacle_max_iterations, options->applications,
+                                           options->obstacle_expansion)
                 : contact_benchmark(*options);
         std::cout << out.dump() << '\n';
       });

@@ -48,7 +48,8 @@ double median(std::vector<double> values)
 }
 } // namespace
 
-nlohmann::ordered_json mprgp_obstacle_benchmark(int n, double rtol, int max_iterations, int applications)
+nlohmann::ordered_json mprgp_obstacle_benchmark(int n, double rtol, int max_iterations, int applications,
+                                                const std::string& expansion)
 {
   FETICON_CHECK(n >= 2, "the obstacle grid needs n >= 2 points per side, got " << n);
   FETICON_CHECK(applications >= 1, "time at least one operator application, got " << applications);
@@ -72,7 +73,7 @@ nlohmann::ordered_json mprgp_obstacle_benchmark(int n, double rtol, int max_iter
   }
   const double t_apply = median(seconds);
 
-  qp::Mprgp mprgp(A, {.rtol = rtol, .max_iterations = max_iterations});
+  qp::Mprgp mprgp(A, {.rtol = rtol, .max_iterations = max_iterations, .expansion = qp::expansion_from_name(expansion)});
   x.setZero();
   const qp::QpReport report = mprgp.solve(b, lower, x);
   int64_t active = 0;
@@ -88,6 +89,8 @@ nlohmann::ordered_json mprgp_obstacle_benchmark(int n, double rtol, int max_iter
           {"cg_steps", report.cg_steps},
           {"expansion_steps", report.expansion_steps},
           {"proportioning_steps", report.proportioning_steps},
+          {"expansion", expansion},
+          {"expansion_fallbacks", report.expansion_fallbacks},
           {"operator_applications", report.hessian_multiplications},
           {"active_bounds", active},
           {"solve_seconds", report.seconds},

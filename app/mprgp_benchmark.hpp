@@ -3,6 +3,7 @@
 /// application of its operator, on a large bound-constrained QP with a sparse matrix.
 
 #include <nlohmann/json.hpp>
+#include <string>
 
 namespace feticon::app
 {
@@ -17,5 +18,6 @@ namespace feticon::app
 /// @param[in] rtol         MPRGP stopping tolerance ||g_P|| <= rtol ||b||
 /// @param[in] max_iterations MPRGP step limit
 /// @param[in] applications timed operator applications for the median; >= 1
-nlohmann::ordered_json mprgp_obstacle_benchmark(int n, double rtol, int max_iterations, int applications);
+nlohmann::ordered_json mprgp_obstacle_benchmark(int n, double rtol, int max_iterations, int applications,
+                                                const std::string& expansion = "std");
 } // namespace feticon::app

@@ -58,6 +58,7 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Prob
   out.dual.smalbe_M0 = s.number("smalbe.M0");
   out.dual.smalbe_beta = s.number("smalbe.beta");
   out.dual.rtol = s.number("qp.rtol");
+  out.dual.expansion = qp::expansion_from_name(s.text("qp.expansion"));
   const std::string& preconditioner = s.text("qp.preconditioner");
   out.dual.preconditioner = preconditioner == "lumped"      ? dual::DualPreconditioner::lumped
                             : preconditioner == "dirichlet" ? dual::DualPreconditioner::dirichlet

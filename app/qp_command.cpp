@@ -37,6 +37,7 @@ struct QpArguments
   std::string output_path;
   double rtol = 1e-5;
   int max_iterations = 10000;
+  std::string expansion = "projcg";
   bool monitor = false;
 };
 
@@ -86,7 +87,8 @@ void run_qp(const QpArguments& arguments)
                                          << n << " rows");
   }
 
-  qp::MprgpOptions options{.rtol = arguments.rtol, .max_iterations = arguments.max_iterations};
+  qp::MprgpOptions options{.rtol = arguments.rtol, .max_iterations = arguments.max_iterations,
+                           .expansion = qp::expansion_from_name(arguments.expansion)};
   if (arguments.monitor)
     options.monitor = print_iterate;
   const la::SparseOperator op(A);
@@ -103,6 +105,7 @@ void run_qp(const QpArguments& arguments)
   json["cg_steps"] = report.cg_steps;
   json["expansion_steps"] = report.expansion_steps;
   json["proportioning_steps"] = report.proportioning_steps;
+  json["expansion_fallbacks"] = report.expansion_fallbacks;
   json["hessian_multiplications"] = report.hessian_multiplications;
   json["projected_gradient_norm"] = report.projected_gradient_norm;
   json["cost"] = report.cost;
@@ -137,6 +140,10 @@ void register_qp_command(CLI::App& app)
   command->add_option("--max-iterations", arguments->max_iterations, "MPRGP steps allowed")
       ->capture_default_str();
   command->add_option("--out", arguments->output_path, "write the solution x (Matrix Market)");
+  command->add_option("--expansion", arguments->expansion,
+                      "expansion step: std (half step + projected gradient) or projcg (projected CG step)")
+      ->check(CLI::IsMember({"std", "projcg"}))
+      ->capture_default_str();
   command->add_flag("--monitor", arguments->monitor, "one line per MPRGP step on stderr");
   command->callback([arguments] { run_qp(*arguments); });
 }

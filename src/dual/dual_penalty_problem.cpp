@@ -138,6 +138,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   qp::MprgpOptions mprgp;
   mprgp.rtol = options.rtol;
   mprgp.max_iterations = options.max_iterations;
+  mprgp.expansion = options.expansion;
   mprgp.space = &feti.space();
   // After scaling, ||H|| = max(||P F^ P||, rho) ~ max(1, rho): no second power iteration.
   mprgp.alpha_bar = 1.8 / std::max(1.0, options.rho);

@@ -46,6 +46,7 @@ struct DualPenaltyOptions
   const decomposition::SchurComplements* schur = nullptr;
   /// Y = (B B')^{-1} in the preconditioner; false: Y = I (for comparison).
   bool constraint_scaling = true;
+  qp::MprgpExpansion expansion = qp::MprgpExpansion::standard; ///< MPRGP's expansion step
   double smalbe_M0 = 1.0;     ///< SMALBE-M initial M (scaled units)
   double smalbe_beta = 2.0;   ///< SMALBE-M: M <- M / beta when L increases too little
 };

@@ -74,6 +74,9 @@ std::vector<SettingSpec> make_specs()
                                 "blocks fit the memory and pay for their set-up)",
        Type::text, {"implicit", "explicit", "auto"}, 0, 0, false},
       {"qp.rtol", "1e-8", "QP stopping tolerance ||g_P|| <= rtol ||b||", Type::number, {}, 0, 1, true},
+      {"qp.expansion", "std", "MPRGP expansion step: std (feasible half step and projected gradient step, "
+       "ALGORITHMS.md 5) or projcg (the CG step projected, with std as fallback where it raises the cost)",
+       Type::text, {"std", "projcg"}, 0, 0, false},
       {"qp.preconditioner", "dirichlet", "MPRGP preconditioning in the face: none, lumped (P B K B' P) or "
        "dirichlet (P B S B' P, S the subdomain Schur complements on their boundary)",
        Type::text, {"none", "lumped", "dirichlet"}, 0, 0, false},

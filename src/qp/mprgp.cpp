@@ -170,6 +170,13 @@ Mprgp::Mprgp(const la::LinearOperator& A, MprgpOptions options)
                 "Mprgp: gradient_refresh = " << _options.gradient_refresh << " must be >= 1");
 }
 
+MprgpExpansion expansion_from_name(const std::string& name)
+{
+  FETICON_CHECK(name == "std" || name == "projcg",
+                "MPRGP expansion '" << name << "' is unknown: use std or projcg");
+  return name == "std" ? MprgpExpansion::standard : MprgpExpansion::projected_cg;
+}
+
 QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
 {
   const auto start_time = std::chrono::steady_clock::now();
@@ -211,7 +218,7 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
   const double b_norm = la::norm(space, b);
   const double tolerance = _options.rtol * (b_norm > 0.0 ? b_norm : 1.0);
   const bool custom_stop = static_cast<bool>(_options.stop);
-  Vector p, q, phi, beta, y, z;
+  Vector p, q, phi, beta, y, z, x_old, g_old;
   // Search direction in the current face: the free gradient, preconditioned in the face.
   auto direction = [&](const Vector& xx, const Vector& gg, Vector& out)
   {
@@ -290,37 +297,59 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
       }
       else
       {
-        // Expansion step: feasible half step to the blocking bound, then the projected
-        // gradient step y = P(x - alpha_bar phi) = x - alpha_bar phi~ (the identity of
-        // ALGORITHMS.md section 5); the projection puts active components exactly on l.
-        // One pass over the vectors instead of six (bench: on a cheap operator MPRGP is
-        // bound by its own vector traffic), with the same arithmetic per component:
-        //   x_h = max(x - alpha_f p, l) (x_h = l at the blocking component),
-        //   g_h = g - alpha_f q,  phi = free part of g_h,  y = max(x_h - alpha_bar phi, l),
-        // and the step y - x_h for the gradient update g = g_h + A (y - x_h).
-        y.resize(x.size());
-        for (Index i = 0; i < x.size(); ++i)
+        const auto standard_expansion = [&]
         {
-          const double x_half = i == blocking ? lower[i] : std::max(x[i] - alpha_f * p[i], lower[i]);
-          const double g_half = g[i] - alpha_f * q[i];
-          const double phi_i = x_half > lower[i] ? g_half : 0.0;
-          const double y_i = std::max(x_half - _alpha_bar * phi_i, lower[i]);
-          y[i] = y_i - x_half;
-          x[i] = y_i;
-          g[i] = g_half;
+          // Feasible half step to the blocking bound, then the projected gradient step
+          // y = P(x - alpha_bar phi) = x - alpha_bar phi~ (the identity of ALGORITHMS.md
+          // section 5); the projection puts active components exactly on l. One pass over
+          // the vectors instead of six (bench: on a cheap operator MPRGP is bound by its own
+          // vector traffic), with the same arithmetic per component:
+          //   x_h = max(x - alpha_f p, l) (x_h = l at the blocking component),
+          //   g_h = g - alpha_f q,  phi = free part of g_h,  y = max(x_h - alpha_bar phi, l),
+          // and the step y - x_h for the gradient update g = g_h + A (y - x_h).
+          y.resize(x.size());
+          for (Index i = 0; i < x.size(); ++i)
+          {
+            const double x_half = i == blocking ? lower[i] : std::max(x[i] - alpha_f * p[i], lower[i]);
+            const double g_half = g[i] - alpha_f * q[i];
+            const double phi_i = x_half > lower[i] ? g_half : 0.0;
+            const double y_i = std::max(x_half - _alpha_bar * phi_i, lower[i]);
+            y[i] = y_i - x_half;
+            x[i] = y_i;
+            g[i] = g_half;
+          }
+          _A.apply(y, q);
+          ++report.hessian_multiplications;
+          g += q;
+          // f is monotone only for alpha_bar <= 2/||A||, and the power estimate of ||A|| is
+          // from below; the margin ignores round-off of the cost evaluation.
+          if (cost_of(space, x, g, b) > cost + 1e-12 * std::abs(cost))
+            _alpha_bar *= 0.5;
+        };
+        bool done = false;
+        if (_options.expansion == MprgpExpansion::projected_cg)
+        {
+          // P(x - alpha_cg p) with the gradient recomputed (the projection moves x off p).
+          x_old = x;
+          x = (x - alpha_cg * p).cwiseMax(lower);
+          g_old.swap(g);
+          _A.apply(x, g);
+          g -= b;
+          ++report.hessian_multiplications;
+          done = cost_of(space, x, g, b) <= cost + 1e-12 * std::abs(cost);
+          if (!done) // back to x and the standard step from there (q = A p still holds)
+          {
+            x.swap(x_old);
+            g.swap(g_old);
+            ++report.expansion_fallbacks;
+          }
         }
-        _A.apply(y, q);
-        ++report.hessian_multiplications;
-        g += q;
+        if (!done)
+          standard_expansion();
         direction(x, g, p);
         ritz.end_run();
         ++report.expansion_steps;
         step = MprgpStep::expansion;
-        // f is monotone only for alpha_bar <= 2/||A||, and the power estimate of ||A|| is
-        // from below; the margin ignores round-off of the cost evaluation.
-        const double new_cost = cost_of(space, x, g, b);
-        if (new_cost > cost + 1e-12 * std::abs(cost))
-          _alpha_bar *= 0.5;
       }
     }
     else

@@ -22,7 +22,7 @@
 ///
 ///     power iterations (first solve only, when alpha_bar is estimated)
 ///   + 1                                   initial gradient g = Ax - b
-///   + cg_steps + 2 expansion_steps + proportioning_steps
+///   + cg_steps + 2 expansion_steps + expansion_fallbacks + proportioning_steps
 ///   + floor(iterations / gradient_refresh) gradient refreshes g = Ax - b
 ///
 /// Usage:
@@ -36,6 +36,7 @@
 #include "qp/qp_report.hpp"
 
 #include <functional>
+#include <string>
 
 namespace feticon::qp
 {
@@ -68,6 +69,23 @@ struct MprgpIterate
   double cost = 0.0;
 };
 
+/// How an expansion step (a CG step that would leave the feasible set) expands the active set
+/// (Kruzik, Horak, Cermak, Pospisil, Pecha 2020, "Active set expansion strategies in MPRGP
+/// algorithm"; PERMON's -qps_mpgp_expansion_type).
+enum class MprgpExpansion
+{
+  /// Feasible half step to the first blocking bound, then the projected gradient step
+  /// P(x - alpha_bar phi): ALGORITHMS.md section 5, the step of the rate-of-convergence theory.
+  standard,
+  /// The whole CG step projected, P(x - alpha_cg p): adds every bound the CG step crosses at
+  /// once. Not monotone in general, so a step that increases f is replaced by the standard
+  /// one from the same point (PERMON's fallback), which keeps f monotone.
+  projected_cg
+};
+
+/// "std" or "projcg" (PERMON's names) to MprgpExpansion; throws feticon::Error for others.
+MprgpExpansion expansion_from_name(const std::string& name);
+
 /// Parameters of Mprgp, with the defaults of ALGORITHMS.md section 5.
 struct MprgpOptions
 {
@@ -77,6 +95,7 @@ struct MprgpOptions
   double gamma = 1.0;
   /// Steps allowed before the solve stops unconverged.
   int max_iterations = 10000;
+  MprgpExpansion expansion = MprgpExpansion::standard;
   /// Expansion step length in (0, 2/||A||]; 0 means 1.8/nu with nu from estimate_norm().
   /// Halved whenever an expansion step increases f.
   double alpha_bar = 0.0;

@@ -38,6 +38,8 @@ struct QpReport
   int expansion_steps = 0;
   /// MPRGP proportioning steps (release of active components along the chopped gradient).
   int proportioning_steps = 0;
+  /// MPRGP projected-CG expansions that increased f and were replaced by a standard one.
+  int expansion_fallbacks = 0;
   /// All applications of the operator, including start-up and periodic gradient refreshes.
   int hessian_multiplications = 0;
   /// ||g_P|| for MPRGP, ||P r|| for CG, at the returned iterate.

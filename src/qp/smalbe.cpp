@@ -113,6 +113,7 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
     report.cg_steps += r.cg_steps;
     report.expansion_steps += r.expansion_steps;
     report.proportioning_steps += r.proportioning_steps;
+    report.expansion_fallbacks += r.expansion_fallbacks;
     report.hessian_multiplications += r.hessian_multiplications;
     report.projected_gradient_norm = r.projected_gradient_norm;
     if (r.ritz.cg_steps > report.ritz.cg_steps)

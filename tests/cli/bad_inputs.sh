@@ -173,6 +173,7 @@ expect "unknown nested key with a list value" "unknown key 'qp.speed'" -- "$work
 expect "explicit operators without the Dirichlet preconditioner" "qp.preconditioner" -- \
   --set dual.operator=explicit --set qp.preconditioner=none --set hertz.refinement=0.5 --set displacements=small
 expect "dual.operator unknown" "dual.operator" -- --set dual.operator=dense
+expect "qp.expansion unknown" "qp.expansion" -- --set qp.expansion=bogus
 
 # A diverging modified Newton loop (finite rotations in two load steps with K_0) ends with a
 # message saying so, not with the NaN of a later step.

@@ -18,7 +18,7 @@ namespace
 /// Products of one solve predicted by the formula of qp/mprgp.hpp.
 int predicted_products(const qp::QpReport& report, int power_iterations, int refresh = 50)
 {
-  return power_iterations + 1 + report.cg_steps + 2 * report.expansion_steps +
+  return power_iterations + 1 + report.cg_steps + 2 * report.expansion_steps + report.expansion_fallbacks +
          report.proportioning_steps + report.iterations / refresh;
 }
 
@@ -45,6 +45,9 @@ void expect_kkt(const test::BoundQp& qp, const la::Vector& x, double tol)
 
 const int sizes[] = {5, 12, 25, 40, 60};
 const unsigned seeds[] = {1, 2, 3, 4, 5, 6};
+/// Every test below runs with each expansion step (qp/mprgp.hpp).
+const qp::MprgpExpansion expansions[] = {qp::MprgpExpansion::standard, qp::MprgpExpansion::projected_cg};
+std::string name(qp::MprgpExpansion e) { return e == qp::MprgpExpansion::standard ? "std" : "projcg"; }
 } // namespace
 
 // Reference: the stopping test ||g_P|| <= rtol ||b|| of ALGORITHMS.md section 5 bounds every
@@ -53,14 +56,15 @@ const unsigned seeds[] = {1, 2, 3, 4, 5, 6};
 TEST(Mprgp, RandomProblemsSatisfyKktAtRequestedTolerance)
 {
   int active = 0, total = 0;
+  for (const qp::MprgpExpansion expansion : expansions)
   for (const int n : sizes)
     for (const unsigned seed : seeds)
     {
-      SCOPED_TRACE("n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
+      SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
       const test::BoundQp qp = test::random_bound_qp(n, seed);
       test::CountingOperator A(qp.A);
       const double rtol = 1e-5;
-      qp::Mprgp mprgp(A, {.rtol = rtol});
+      qp::Mprgp mprgp(A, {.rtol = rtol, .expansion = expansion});
       la::Vector x = la::Vector::Zero(n);
       const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
       ASSERT_TRUE(report.converged) << report.reason;
@@ -82,16 +86,17 @@ TEST(Mprgp, RandomProblemsSatisfyKktAtRequestedTolerance)
 // 1e-8 relative.
 TEST(Mprgp, RandomProblemsMatchActiveSetReference)
 {
+  for (const qp::MprgpExpansion expansion : expansions)
   for (const int n : sizes)
     for (const unsigned seed : seeds)
     {
-      SCOPED_TRACE("n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
+      SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
       const test::BoundQp qp = test::random_bound_qp(n, seed + 100);
       const la::Vector reference = test::reference_bound_qp(qp.A, qp.b, qp.lower);
       ASSERT_LE(test::projected_gradient_norm(reference, qp.A * reference - qp.b, qp.lower),
                 1e-12 * qp.b.norm());
       test::CountingOperator A(qp.A);
-      qp::Mprgp mprgp(A, {.rtol = 1e-12});
+      qp::Mprgp mprgp(A, {.rtol = 1e-12, .expansion = expansion});
       la::Vector x = la::Vector::Zero(n);
       const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
       ASSERT_TRUE(report.converged) << report.reason;
@@ -100,19 +105,24 @@ TEST(Mprgp, RandomProblemsMatchActiveSetReference)
 }
 
 // Reference: Dostal & Schoberl (2005): with alpha_bar in (0, 2/||A||] every MPRGP step
-// (CG, expansion, proportioning) does not increase f. alpha_bar = 1.8/lambda_max exactly
+// (CG, expansion, proportioning) does not increase f; a projected CG expansion that would is
+// replaced by the standard one. alpha_bar = 1.8/lambda_max exactly
 // here; 1e-12 |f| is the round-off of evaluating f from the recursive gradient.
 TEST(Mprgp, CostDecreasesMonotonically)
 {
   std::set<qp::MprgpStep> kinds;
+  int fallbacks = 0;
+  for (const qp::MprgpExpansion expansion : expansions)
+  for (const double condition : {1e2, 1e4}) // 1e4: projected CG steps that raise f
   for (const int n : sizes)
     for (const unsigned seed : seeds)
     {
-      SCOPED_TRACE("n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
-      const test::BoundQp qp = test::random_bound_qp(n, seed + 200);
+      SCOPED_TRACE(name(expansion) + ", condition " + std::to_string(condition) + ", n = " + std::to_string(n) +
+                   ", seed = " + std::to_string(seed));
+      const test::BoundQp qp = test::random_bound_qp(n, seed + 200, condition);
       test::CountingOperator A(qp.A);
       std::vector<double> costs;
-      qp::MprgpOptions options{.rtol = 1e-10, .alpha_bar = 1.8 / largest_eigenvalue(qp.A)};
+      qp::MprgpOptions options{.rtol = 1e-10, .expansion = expansion, .alpha_bar = 1.8 / largest_eigenvalue(qp.A)};
       options.monitor = [&](const qp::MprgpIterate& it) {
         EXPECT_EQ(it.iteration, static_cast<int>(costs.size()));
         costs.push_back(it.cost);
@@ -126,7 +136,10 @@ TEST(Mprgp, CostDecreasesMonotonically)
       for (std::size_t k = 1; k < costs.size(); ++k)
         EXPECT_LE(costs[k], costs[k - 1] + 1e-12 * std::abs(costs[k - 1])) << "step " << k;
       EXPECT_EQ(mprgp.alpha_bar(), options.alpha_bar) << "no expansion may increase f";
+      fallbacks += report.expansion_fallbacks;
     }
+  // The projected CG step does raise f on some of these problems: the fallback is exercised.
+  EXPECT_GT(fallbacks, 0);
   EXPECT_EQ(kinds.count(qp::MprgpStep::cg), 1u);
   EXPECT_EQ(kinds.count(qp::MprgpStep::expansion), 1u);
   EXPECT_EQ(kinds.count(qp::MprgpStep::proportioning), 1u);
