@@ -42,7 +42,8 @@ nlohmann::json records(const nonlinear::ContactSolution& s)
     history.push_back({it.load_step, it.iteration, it.qp_iterations, it.cg_steps, it.expansion_steps,
                        it.proportioning_steps, it.hessian_multiplications, it.smalbe_outer,
                        it.residual_norm, it.displacement_change, it.active_contacts,
-                       it.feasibility_error, it.seconds, it.ritz.min, it.ritz.max, it.ritz.cg_steps});
+                       it.feasibility_error, it.seconds, it.ritz.min, it.ritz.max, it.ritz.cg_steps,
+                       it.rho_updates, it.final_rho});
   return {{"completed_steps", s.restart.completed_steps}, {"steps", steps}, {"history", history},
           {"smalbe_M", s.restart.smalbe_M}, {"smalbe_rho", s.restart.smalbe_rho}};
 }
@@ -114,6 +115,11 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
         it.ritz.min = h[13];
         it.ritz.max = h[14];
         it.ritz.cg_steps = h[15];
+      }
+      if (h.size() > 17) // written since SMALBE-M reports its rho
+      {
+        it.rho_updates = h[16];
+        it.final_rho = h[17];
       }
       solution.history.push_back(it);
     }

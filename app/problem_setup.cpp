@@ -106,6 +106,7 @@ nonlinear::OuterIteration qp_totals(const nonlinear::ContactSolution& solution)
     sum.proportioning_steps += it.proportioning_steps;
     sum.hessian_multiplications += it.hessian_multiplications;
     sum.smalbe_outer += it.smalbe_outer;
+    sum.rho_updates += it.rho_updates;
     sum.operator_applications += it.operator_applications;
     sum.operator_seconds += it.operator_seconds;
     sum.preconditioner_applications += it.preconditioner_applications;
@@ -135,6 +136,8 @@ nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution)
           {"expansion_steps", sum.expansion_steps},
           {"proportioning_steps", sum.proportioning_steps},
           {"smalbe_outer_iterations", sum.smalbe_outer},
+          {"rho_updates", sum.rho_updates},
+          {"final_rho", solution.history.empty() ? 0.0 : solution.history.back().final_rho},
           {"outer_iterations", solution.history.size()},
           {"face_spectrum", spectrum}};
 }

@@ -28,15 +28,15 @@ public:
 private:
   const CoarseProjector& _projector;
 };
-/// M = s P Y X Y P + Q / rho, X = B K B' (lumped) or B S B' (Dirichlet), Y = (B B')^{-1}:
-/// the FETI preconditioner on Im P (scaled like F^ = F / s) and the exact inverse of
-/// H = ... + rho Q on Im Q.
+/// M = s P Y X Y P [+ Q / rho], X = B K B' (lumped) or B S B' (Dirichlet), Y = (B B')^{-1}:
+/// the FETI preconditioner on Im P (scaled like F^ = F / s) and, with `rho` > 0, the exact
+/// inverse of H = ... + rho Q on Im Q (SMALBE-M adds that term itself, for its current rho).
 class DualPreconditionerOperator : public la::LinearOperator
 {
 public:
   DualPreconditionerOperator(const FetiOperators& feti, const CoarseProjector& projector,
-                             const DualPenaltyOptions& options, double s, int64_t n_equality)
-      : _feti(feti), _projector(projector), _options(options), _s(s)
+                             const DualPenaltyOptions& options, double s, int64_t n_equality, double rho)
+      : _feti(feti), _projector(projector), _options(options), _s(s), _rho(rho)
   {
     if (options.constraint_scaling)
       _scaling.emplace(feti, n_equality);
@@ -51,7 +51,9 @@ public:
     const la::Vector Xp = _options.preconditioner == DualPreconditioner::dirichlet
                               ? _feti.apply_dirichlet(p, *_options.schur)
                               : _feti.apply_lumped(p);
-    y = _s * _projector.apply_P(scale(Xp)) + q / _options.rho;
+    y = _s * _projector.apply_P(scale(Xp));
+    if (_rho > 0)
+      y += q / _rho;
   }
 
 private:
@@ -60,7 +62,7 @@ private:
   const FetiOperators& _feti;
   const CoarseProjector& _projector;
   const DualPenaltyOptions& _options;
-  double _s;
+  double _s, _rho;
   std::optional<ConstraintScaling> _scaling;
 };
 
@@ -121,7 +123,10 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   out.pfp_norm = norm.value;
   const double scale = 1.0 / norm.value;
   const FOperator F(feti, scale);
-  const ProjectedOperator H_untimed(F, projector, options.rho);
+  // The dual penalty's Hessian is H = P F^ P + rho Q; SMALBE-M gets A = P F^ P and adds
+  // rho Q = rho G~'G~ itself (for the rho it has at the time).
+  const bool smalbe_method = options.method == DualMethod::smalbe;
+  const ProjectedOperator H_untimed(F, projector, smalbe_method ? 0.0 : options.rho);
   const la::TimedOperator H(H_untimed);
   const la::Vector b = projector.apply_P(scale * (d - feti.apply_F(lambda_tilde)));
 
@@ -145,10 +150,11 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   std::optional<DualPreconditionerOperator> preconditioner;
   std::optional<la::TimedOperator> timed_preconditioner;
   if (options.preconditioner != DualPreconditioner::none)
-    mprgp.preconditioner =
-        &timed_preconditioner.emplace(preconditioner.emplace(feti, projector, options, norm.value, n_equality));
-  if (options.method == DualMethod::dual_penalty)
+    timed_preconditioner.emplace(preconditioner.emplace(feti, projector, options, norm.value, n_equality,
+                                                        smalbe_method ? 0.0 : options.rho));
+  if (!smalbe_method)
   {
+    mprgp.preconditioner = timed_preconditioner ? &*timed_preconditioner : nullptr;
     qp::Mprgp solver(H, mprgp);
     out.report = solver.solve(b, lower, mu);
     out.outer_iterations = 1;
@@ -163,7 +169,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
     smalbe.beta = options.smalbe_beta;
     smalbe.max_inner_iterations = options.max_iterations;
     smalbe.mprgp = mprgp;
-    qp::Smalbe solver(H, C, smalbe);
+    qp::Smalbe solver(H, C, smalbe, timed_preconditioner ? &*timed_preconditioner : nullptr);
     // The multiplier of G~ mu = 0 in the scaled dual is scale times the unscaled one.
     std::optional<qp::SmalbeStart> start;
     if (warm.coarse_multiplier.size() == feti.n_kernel())
@@ -176,6 +182,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
     out.coarse_multiplier = projector.coarse_multiplier(r.omega) / scale;
     out.smalbe_M = r.final_M;
     out.smalbe_rho = r.final_rho;
+    out.rho_updates = r.rho_updates;
   }
   out.report.hessian_multiplications += norm.applications;
   out.operator_applications = H.applications();

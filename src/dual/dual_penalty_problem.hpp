@@ -74,10 +74,11 @@ struct DualSolution
   la::Vector coarse_multiplier;
   double smalbe_M = 0;
   double smalbe_rho = 0;
+  int rho_updates = 0; ///< how often SMALBE-M raised rho in this solve
   double feasibility_error = 0;  ///< ||G lambda - e|| / ||e||
   double pfp_norm = 0;           ///< ||PFP|| estimate used for scaling
   int64_t active_contacts = 0;   ///< contact rows with lambda_i > 0
-  /// Applications of H = PFP + rho Q by the QP solver (the norm estimate's are in
+  /// Applications of P F P (+ rho Q) by the QP solver (the norm estimate's are in
   /// report.hessian_multiplications only) and the wall time spent in them (s).
   int64_t operator_applications = 0;
   double operator_seconds = 0;

@@ -21,7 +21,9 @@ struct OuterIteration
   int proportioning_steps = 0;
   int hessian_multiplications = 0;
   int smalbe_outer = 0;
-  int64_t operator_applications = 0; ///< applications of H = PFP + rho Q by the QP solver
+  int rho_updates = 0;   ///< SMALBE-M's raises of rho in this QP
+  double final_rho = 0;  ///< and its rho at the end (0 for the other methods)
+  int64_t operator_applications = 0; ///< applications of P F P (+ rho Q) by the QP solver
   double operator_seconds = 0;       ///< wall time inside them (s)
   int64_t preconditioner_applications = 0; ///< applications of the dual preconditioner
   double preconditioner_seconds = 0;       ///< wall time inside them (s)

@@ -369,6 +369,8 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       it.proportioning_steps = solution.report.proportioning_steps;
       it.hessian_multiplications = solution.report.hessian_multiplications;
       it.smalbe_outer = solution.outer_iterations;
+      it.rho_updates = solution.rho_updates;
+      it.final_rho = solution.smalbe_rho;
       it.operator_applications = solution.operator_applications;
       it.operator_seconds = solution.operator_seconds;
       it.preconditioner_applications = solution.preconditioner_applications;

@@ -2,9 +2,12 @@
 /// @file SMALBE-M: semimonotonic augmented Lagrangian for bound and equality constraints
 /// with adaptive M (Dostál 2006, 2009; ALGORITHMS.md section 1).
 ///
-/// Solves   min 1/2 x'Hx - b'x   subject to   x >= l,  C x = 0,
-/// where C has orthonormal rows (C C' = I) and H already contains the augmentation
-/// rho C'C (for FETI: H = PFP + rho Q with Q = G~'G~, C = G~). Outer loop:
+/// Solves   min 1/2 x'Ax - b'x   subject to   x >= l,  C x = 0,
+/// where C has orthonormal rows (C C' = I), through the augmented Hessian H = A + rho C'C,
+/// which SMALBE-M owns (for FETI: A = P F P, C = G~, so C'C = Q and H = PFP + rho Q), with its
+/// preconditioner M_A + C'C / rho_0 when the caller gives M_A ~ A^{-1} on Ker C (rho_0 the
+/// initial rho: on Im C' the exact inverse of H until rho is raised, and kept after that,
+/// which measured fewer steps than following rho; smalbe.cpp). Outer loop:
 ///   x <- MPRGP on (H, b - C'omega, l), warm-started, stopped when
 ///        ||g_P|| <= min(M ||Cx||, eta)   or the final test holds;
 ///   final test: ||g_P|| <= rtol ||b|| and ||Cx|| <= rtol ||b||;
@@ -13,8 +16,8 @@
 ///   if ||Cx|| has not dropped below feasibility_reduction times its reference value within
 ///        feasibility_window outer iterations: rho <- rho min(max(q/(1-q), g), g^3), g =
 ///        rho_growth, q the observed contraction of ||Cx|| per outer iteration (q/(1-q) is
-///        the factor that brings the model rate below to 1/2); then H becomes
-///        H + (rho - rho_0) C'C and alpha_bar shrinks accordingly.
+///        the factor that brings the model rate below to 1/2); H and MPRGP's step length
+///        bound alpha_bar follow the new rho.
 /// Why the rho update: with the bounds active on a face F, the multiplier update is a gradient
 /// step on the dual of the face problem, and ||Cx|| contracts per outer iteration by about
 /// 1 - rho s/(h + rho s), s = sigma_min(C_F)^2 (C_F: the columns of C on the free set) and h
@@ -24,7 +27,7 @@
 /// grows by rho/2 ||Cx||^2, so the M test never fires. Raising rho, as in Dostal's original
 /// SMALBE (rho_k nondecreasing and bounded), restores the rate.
 /// Usage:
-///   qp::Smalbe smalbe(H, C, {.rho = 1});
+///   qp::Smalbe smalbe(A, C, {.rho = 1}, &preconditioner_of_A);
 ///   const qp::SmalbeReport r = smalbe.solve(b, lower, x);
 
 #include "qp/mprgp.hpp"
@@ -69,7 +72,9 @@ struct SmalbeOptions
   int feasibility_window = 5;
   /// rho never exceeds rho_limit times the initial rho.
   double rho_limit = 1e4;
-  MprgpOptions mprgp{};      ///< gamma, alpha_bar, monitor; its rtol and stop are set here
+  /// gamma, alpha_bar (for H at the initial rho; 0: estimated), monitor; its rtol, stop and
+  /// preconditioner are set here.
+  MprgpOptions mprgp{};
   /// Called after every outer iteration's inner solve (tests check the updates with it).
   std::function<void(const SmalbeIterate&)> monitor;
 };
@@ -97,15 +102,20 @@ struct SmalbeReport : QpReport
 class Smalbe
 {
 public:
-  Smalbe(const la::LinearOperator& H, const EqualityOperator& C, SmalbeOptions options);
+  /// @param A              the Hessian without the augmentation (referenced)
+  /// @param C              the equality operator, orthonormal rows (referenced)
+  /// @param preconditioner M_A ~ A^{-1} on Ker C, or null for none (referenced)
+  Smalbe(const la::LinearOperator& A, const EqualityOperator& C, SmalbeOptions options,
+         const la::LinearOperator* preconditioner = nullptr);
   /// @param[in,out] x initial guess on input (projected onto x >= l), solution on output
   /// @param start    omega, M and rho to start from; null: omega = 0, M0 and rho of the options
   SmalbeReport solve(const la::Vector& b, const la::Vector& lower, la::Vector& x,
                      const SmalbeStart* start = nullptr);
 
 private:
-  const la::LinearOperator& _H;
+  const la::LinearOperator& _A;
   const EqualityOperator& _C;
   SmalbeOptions _options;
+  const la::LinearOperator* _preconditioner;
 };
 } // namespace feticon::qp

@@ -1,6 +1,6 @@
 /// SMALBE-M on hand-built QPs with bound and equality constraints:
 ///   min 1/2 x'Ax - b'x  s.t.  x >= l,  C x = 0   (C with orthonormal rows),
-/// given to Smalbe as H = A + rho C'C. The reference is an independent solve: the penalized
+/// SMALBE-M augments A to H = A + rho C'C itself. The reference is an independent solve: the penalized
 /// bound QP (A + K C'C, K = 1e6 ||A||) by the dense active-set method of reference_qp.hpp
 /// finds the active bounds, then the KKT system of that face (bounds as equalities) is solved
 /// by a dense LU; the test checks that the reference's bound multipliers have the right sign
@@ -96,18 +96,18 @@ Reference reference_solve(const EqualityQp& qp)
   return out;
 }
 
-/// The QP as Smalbe sees it: H = A + rho C'C with rho = ||A|| (eigenvalues 1..100), as
-/// rho ~ ||PFP|| in FETI.
+/// The QP and its operators; rho = ||A|| (eigenvalues 1..100), as rho ~ ||PFP|| in FETI, and
+/// H = A + rho C'C, which SMALBE-M works with.
 struct Augmented
 {
   explicit Augmented(EqualityQp problem)
-      : qp(std::move(problem)), H(qp.A + rho * qp.C.transpose() * qp.C), Hop(H), C(qp.C)
+      : qp(std::move(problem)), H(qp.A + rho * qp.C.transpose() * qp.C), Aop(qp.A), C(qp.C)
   {
   }
   static constexpr double rho = 100.0;
   EqualityQp qp;
   la::Matrix H;
-  test::CountingOperator Hop;
+  test::CountingOperator Aop;
   DenseEquality C;
 };
 
@@ -129,7 +129,7 @@ TEST(Smalbe, MatchesAnIndependentSolveOfBoundAndEqualityConstraints)
     const Reference reference = reference_solve(qp);
     ASSERT_GT(reference.active_bounds, 0) << "the test QP should have active bounds";
     ASSERT_GT(reference.omega.norm(), 0.1) << "and a multiplier of C x = 0";
-    Smalbe smalbe(p.Hop, p.C, options(p.rho));
+    Smalbe smalbe(p.Aop, p.C, options(p.rho));
     la::Vector x = la::Vector::Zero(24);
     const SmalbeReport r = smalbe.solve(qp.b, qp.lower, x);
     ASSERT_TRUE(r.converged) << r.reason;
@@ -153,7 +153,7 @@ TEST(Smalbe, UpdatesOmegaAndMAsInAlgorithmsSection1)
   o.M0 = 1e3; // loose first inner solves (M ~ 10 ||H||): M has to come down
   o.monitor = [&](const SmalbeIterate& it)
   { records.push_back({*it.x, *it.omega, it.M, it.lagrangian}); };
-  Smalbe smalbe(p.Hop, p.C, o);
+  Smalbe smalbe(p.Aop, p.C, o);
   la::Vector x = la::Vector::Zero(24);
   const SmalbeReport r = smalbe.solve(qp.b, qp.lower, x);
   ASSERT_TRUE(r.converged) << r.reason;
@@ -189,7 +189,7 @@ TEST(Smalbe, StartsFromTheMultiplierMAndRhoOfAnEarlierSolve)
   const Augmented p(make_qp(24, 4, 11));
   const EqualityQp& qp = p.qp;
   const double rho = p.rho;
-  Smalbe smalbe(p.Hop, p.C, options(rho));
+  Smalbe smalbe(p.Aop, p.C, options(rho));
   la::Vector x = la::Vector::Zero(24);
   const SmalbeReport first = smalbe.solve(qp.b, qp.lower, x);
   ASSERT_TRUE(first.converged) << first.reason;
