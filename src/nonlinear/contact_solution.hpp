@@ -30,7 +30,8 @@ struct OuterIteration
   double qp_seconds = 0;             ///< wall time of MPRGP / SMALBE-M (s), without the setup
   /// Spectrum estimate of the preconditioned dual operator from the QP's longest CG run.
   qp::RitzValues ritz;
-  double residual_norm = 0;       ///< ||f_ext - f_int - B' lambda|| / ||f_ext|| after the update
+  /// ||t f_ext - f_int - B' lambda|| / max(||t f_ext||, ||f_int||) after the update
+  double residual_norm = 0;
   double displacement_change = 0; ///< ||du|| / ||u||
   int64_t active_contacts = 0;
   double feasibility_error = 0;

@@ -316,7 +316,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       // Warm start: equality rows keep their ids and owners (owned ones come first, in the
       // same order); contact rows are matched by slave node (rows are rebuilt every
       // iteration), new rows start at 0. SMALBE-M's multiplier is a coarse vector, indexed by
-      // rigid modes, which do not change.
+      // the subdomains' rigid modes, whose numbering does not change.
       dual::DualWarmStart warm = warm_smalbe;
       if (lambda_previous.size() > 0 || restart_lambda.size() > 0)
       {
