@@ -70,6 +70,27 @@ void set_path(YAML::Node node, const std::vector<std::string>& path, size_t i,
 }
 
 /// Scalars of the non-structured part as dotted keys.
+/// Throws for a key given twice in one map: YAML forbids it, yaml-cpp keeps both entries and
+/// a lookup would silently take one of them.
+void reject_duplicate_keys(const YAML::Node& node, const std::string& path, const std::string& source)
+{
+  if (node.IsMap())
+  {
+    std::set<std::string> seen;
+    for (const auto& kv : node)
+    {
+      const std::string key = kv.first.Scalar();
+      const std::string full = path.empty() ? key : path + "." + key;
+      FETICON_CHECK(seen.insert(key).second, source << ": key '" << full << "' is given twice (line "
+                                                    << kv.first.Mark().line + 1 << ")");
+      reject_duplicate_keys(kv.second, full, source);
+    }
+  }
+  else if (node.IsSequence())
+    for (size_t i = 0; i < node.size(); ++i)
+      reject_duplicate_keys(node[i], path + "." + std::to_string(i), source);
+}
+
 void flatten(const YAML::Node& node, const std::string& prefix,
              std::vector<std::pair<std::string, std::string>>& out, const std::string& source)
 {
@@ -197,6 +218,7 @@ ProblemFile load_problem_file(const std::filesystem::path& path,
     FETICON_CHECK(!file.root.IsNull(), path.string() << ": the file holds no settings (empty or comments "
                                                      "only); write at least 'problem: hertz'");
     FETICON_CHECK(file.root.IsMap(), path.string() << ": the top level must be a map of keys");
+    reject_duplicate_keys(file.root, "", path.string());
   }
   // Overrides act on the tree; the settings below remember which keys came from --set.
   std::set<std::string> overridden;

@@ -168,6 +168,8 @@ printf 'colour: [1, 2]\n' > "$work/unknown_list.yaml"
 expect "unknown key with a list value" "unknown key 'colour'" -- "$work/unknown_list.yaml"
 printf 'qp:\n  speed: [1, 2]\n' > "$work/unknown_nested_list.yaml"
 expect "unknown nested key with a list value" "unknown key 'qp.speed'" -- "$work/unknown_nested_list.yaml"
+printf 'problem: hertz\nhertz:\n  refinement: 0.5\n  refinement: 0.7\n' > "$work/duplicate_key.yaml"
+expect "a key given twice" "key 'hertz.refinement' is given twice (line 4)" -- "$work/duplicate_key.yaml"
 
 # Explicit dual operators are formed on the Dirichlet preconditioner's boundary.
 expect "explicit operators without the Dirichlet preconditioner" "qp.preconditioner" -- \
