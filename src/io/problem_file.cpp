@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <map>
+#include <algorithm>
 #include <set>
 #include <sstream>
 
@@ -221,12 +222,23 @@ ProblemFile load_problem_file(const std::filesystem::path& path,
     reject_duplicate_keys(file.root, "", path.string());
   }
   // Overrides act on the tree; the settings below remember which keys came from --set.
+  // Settings under the name of a structured section (contact.formulation beside a custom
+  // problem's list of contact pairs) go straight to the settings: in the tree they would
+  // turn the section into a map of settings, or collide with the list.
   std::set<std::string> overridden;
+  std::vector<std::pair<std::string, std::string>> section_settings;
   for (const std::string& o : overrides)
   {
     const auto eq = o.find('=');
     FETICON_CHECK(eq != std::string::npos && eq > 0, "--set '" << o << "' must have the form KEY=VALUE");
     const std::string key = o.substr(0, eq);
+    if (const auto dot = key.find('.'); dot != std::string::npos && is_structured_key(key.substr(0, dot)) &&
+                                        std::any_of(Settings::specs().begin(), Settings::specs().end(),
+                                                    [&](const SettingSpec& spec) { return spec.key == key; }))
+    {
+      section_settings.emplace_back(key, o.substr(eq + 1));
+      continue;
+    }
     YAML::Node value;
     try
     {
@@ -251,6 +263,8 @@ ProblemFile load_problem_file(const std::filesystem::path& path,
     for (const auto& [k, v] : scalars)
       file.settings.set(k, v, overridden.count(k) ? std::string("--set") : file.source);
   }
+  for (const auto& [k, v] : section_settings)
+    file.settings.set(k, v, "--set");
   // The structured sections describe a custom problem; a built-in one would ignore them.
   if (file.settings.text("problem") != "custom")
     for (const auto& kv : file.root)

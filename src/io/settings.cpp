@@ -54,9 +54,9 @@ std::vector<SettingSpec> make_specs()
                                       "modified Newton), step or iteration (K_M(u) refreshed)",
        Type::text, {"initial", "step", "iteration"}, 0, 0, false},
       {"newton.max_iterations", "15", "outer iterations per load step", Type::integer, {}, 1, 10000, false},
-      {"newton.tolerance", "1e-4", "load step converged when ||du|| <= tolerance ||u||, the residual "
+      {"newton.tolerance", "1e-6", "load step converged when ||du|| <= tolerance ||u||, the residual "
        "test holds and the active set did not change", Type::number, {}, 0, 1, true},
-      {"newton.residual_tolerance", "1e-4", "and ||t f_ext - f_int - B'lambda|| <= residual_tolerance "
+      {"newton.residual_tolerance", "1e-6", "and ||t f_ext - f_int - B'lambda|| <= residual_tolerance "
        "max(||t f_ext||, ||f_int||) (FETI solvers)", Type::number, {}, 0, 1, true},
       {"newton.forcing", "0.001", "inexact outer iterations: the QP of outer iteration k stops at "
        "max(qp.rtol, min(1e-4, forcing * |du_(k-1)|/|u|)); 0 solves every QP to qp.rtol", Type::number, {}, 0, 1, false},
