@@ -61,6 +61,14 @@ odd="$work/x'; touch $work/PWNED; echo '"
   --set displacements=small --set output.plots=false
 [[ ! -e "$work/noplots/contact_pressure.png" ]] || { echo "output.plots=false drew plots"; exit 1; }
 
+# Settings named under a custom problem's section (contact.formulation) apply to the built-in
+# problem too: node-to-segment rows give another peak pressure than the default mortar rows.
+for f in node_to_segment mortar; do
+  "$feticon" run -q --output "$work/$f" --set hertz.refinement=0.5 --set subdomains=4 \
+    --set displacements=small --set output.plots=false --set output.vtu=false --set contact.formulation=$f
+done
+$py -c "import json; p = [json.load(open('$work/%s/summary.json' % f))['contact']['peak_pressure'] for f in ('node_to_segment', 'mortar')]; assert abs(p[0] / p[1] - 1) > 1e-3, p"
+
 # The dual penalty at rho = 1 leaves the contact forces out of balance with the load: a
 # warning in summary.json and on stderr, exit 0 (a result, flagged); SMALBE-M gives none.
 "$feticon" run -q --output "$work/dp" --set hertz.refinement=0.5 --set subdomains=4 \
