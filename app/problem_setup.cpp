@@ -1,6 +1,7 @@
 #include "app/problem_setup.hpp"
 
 #include "problems/cantilever_obstacle.hpp"
+#include "problems/hertz3d.hpp"
 
 #include <algorithm>
 
@@ -35,11 +36,28 @@ problems::HertzParameters hertz_parameters(const io::Settings& s)
   return p;
 }
 
+problems::Hertz3dParameters hertz3d_parameters(const io::Settings& s)
+{
+  problems::Hertz3dParameters p;
+  p.radius = s.number("hertz3d.radius");
+  p.load = s.number("hertz3d.load");
+  p.material = {s.number("material.young"), s.number("material.poisson")};
+  p.element_size = s.number("hertz3d.element_size");
+  p.refinement = s.number("hertz3d.refinement");
+  p.master_ratio = s.number("hertz3d.master_ratio");
+  p.block_radius = s.number("hertz3d.block_radius");
+  p.cap_radius = s.number("hertz3d.cap_radius");
+  p.radial_aspect = s.number("hertz3d.radial_aspect");
+  return p;
+}
+
 fem::Problem build_problem(const io::ProblemFile& file)
 {
   const std::string& kind = file.settings.text("problem");
   if (kind == "hertz")
     return problems::hertz_problem(hertz_parameters(file.settings));
+  if (kind == "hertz3d")
+    return problems::hertz3d_problem(hertz3d_parameters(file.settings));
   if (kind == "cantilever_obstacle")
     return problems::cantilever_obstacle_problem(cantilever_parameters(file.settings));
   return io::build_custom_problem(file);

@@ -8,6 +8,7 @@
 #include "nonlinear/contact_solution.hpp"
 #include "nonlinear/solver_settings.hpp"
 #include "problems/hertz.hpp"
+#include "problems/hertz3d.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -15,6 +16,7 @@ namespace feticon::app
 {
 /// The Hertz parameters of the `hertz.*` and `material.*` settings.
 problems::HertzParameters hertz_parameters(const io::Settings& settings);
+problems::Hertz3dParameters hertz3d_parameters(const io::Settings& settings);
 
 /// The problem of `problem`: built-in hertz or cantilever_obstacle, else the file's custom
 /// sections.

@@ -88,13 +88,13 @@ void write_pressure_csv(const std::filesystem::path& path,
                         const std::vector<nonlinear::PressureSample>& samples)
 {
   std::ostringstream os;
-  os << "x_m,y_m,z_m,force_N,area_m2,pressure_multipliers_Pa,pressure_stress_Pa,pressure_mcewen_Pa,"
-        "x_deformed_m\n";
+  os << "x_m,y_m,z_m,force_N,area_m2,pressure_multipliers_Pa,pressure_stress_Pa,pressure_analytic_Pa,"
+        "x_deformed_m,y_deformed_m\n";
   char line[320];
   for (const auto& s : samples)
   {
-    std::snprintf(line, sizeof line, "%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n", s.x, s.y,
-                  s.z, s.force, s.area, s.pressure, s.stress_pressure, s.analytic, s.deformed_x);
+    std::snprintf(line, sizeof line, "%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n", s.x, s.y,
+                  s.z, s.force, s.area, s.pressure, s.stress_pressure, s.analytic, s.deformed_x, s.deformed_y);
     os << line;
   }
   io::write_file_atomically(path, os.str());
@@ -155,7 +155,7 @@ std::string format_summary(const nlohmann::ordered_json& s)
   if (s.contains("hertz"))
   {
     const auto& h = s["hertz"];
-    put("Hertz: p_peak %.4g MPa (McEwen p0 %.4g MPa, %+.2f%%), a %.2f mm (analytic %.2f mm), "
+    put("Hertz: p_peak %.4g MPa (analytic p0 %.4g MPa, %+.2f%%), a %.3f mm (analytic %.3f mm), "
         "RMS error %.2f%% of p0, load %.6g N",
         h["p_peak_computed"].get<double>() / 1e6, h["p0_analytic"].get<double>() / 1e6,
         100 * (h["p_peak_computed"].get<double>() / h["p0_analytic"].get<double>() - 1),

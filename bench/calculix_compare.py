@@ -19,6 +19,9 @@ displacements and the reference x with small ones:
     a = sqrt(-A/B), so a single lightly loaded node does not move it by an element;
   - rms_over_p0: RMS of p - p_McEwen over 400 equidistant points of [0, a], p interpolated
     linearly between samples, divided by p0.
+3D (hertz3d): the same figures against Hertz's p(r) = p0 sqrt(1 - r^2/a^2) at the distance r
+from the axis (r of x + u in the deformed frame), except that the RMS is over the slave nodes
+with r <= a (the nodes are scattered in r; feticon's summary uses the same definition).
 Times are GNU time's wall clock; memory its maximum resident set size.
 """
 import glob
@@ -94,8 +97,9 @@ def time_of(path):
     return float(wall), 1024 * int(rss), float(cpu.rstrip("%"))
 
 
-def hertz_figures(samples, a, p0, large):
-    """samples: [(x_ref, x_def, p)]; figures against McEwen in the chosen frame."""
+def hertz_figures(samples, a, p0, large, radial=False):
+    """samples: [(x_ref, x_def, p)] (r instead of x when radial); figures against McEwen (or
+    Hertz's p(r) when radial) in the chosen frame."""
     pts = sorted(((xd if large else xr), p) for xr, xd, p in samples)
     p_max = max(p for _, p in pts)
     loaded = [(x, p) for x, p in pts if p > ACTIVE * p_max]
@@ -114,11 +118,16 @@ def hertz_figures(samples, a, p0, large):
                 return q0 + (q1 - q0) * (x - x0) / (x1 - x0) if x1 > x0 else q0
         return pts[0][1] if x < pts[0][0] else 0.0
 
-    m = 400
-    sq = 0.0
-    for k in range(m):
-        x = a * (k + 0.5) / m
-        sq += (interpolate(x) - p0 * math.sqrt(max(0.0, 1 - (x / a) ** 2))) ** 2
+    def analytic(x):
+        return p0 * math.sqrt(max(0.0, 1 - (x / a) ** 2))
+
+    if radial:
+        inside = [(x, p) for x, p in pts if x <= a]
+        m = len(inside)
+        sq = sum((p - analytic(x)) ** 2 for x, p in inside)
+    else:
+        m = 400
+        sq = sum((interpolate(a * (k + 0.5) / m) - analytic(a * (k + 0.5) / m)) ** 2 for k in range(m))
     return {"frame": "deformed" if large else "reference",
             "p_peak": p_max, "peak_error": (p_max - p0) / p0,
             "a_fit": a_fit, "a_error": (a_fit - a) / a,
@@ -149,7 +158,10 @@ def calculix_run(folder, deck_nodes, slave_nodes, plane_strain):
     for node in slave_nodes:
         values = contact.get(node, [0.0] * 6)
         x = deck_nodes[node]
-        rows.append((x[0], x[0] + disp[node][0], values[3]))  # CPRESS is the 4th component
+        if plane_strain:
+            rows.append((x[0], x[0] + disp[node][0], values[3]))  # CPRESS is the 4th component
+        else:  # distance from the z axis
+            rows.append((math.hypot(x[0], x[1]), math.hypot(x[0] + disp[node][0], x[1] + disp[node][1]), values[3]))
     # Reactions: *NODE PRINT TOTALS=ONLY of every support set, last increment.
     with open(os.path.join(folder, "feticon.dat")) as f:
         dat = f.read()
@@ -170,7 +182,11 @@ def feticon_run(folder, plane_strain):
         head = f.readline().strip().split(",")
         for line in f:
             r = dict(zip(head, (float(v) for v in line.split(","))))
-            rows.append((r["x_m"], r["x_deformed_m"], r["pressure_multipliers_Pa"]))
+            if plane_strain or "y_deformed_m" not in r:
+                rows.append((r["x_m"], r["x_deformed_m"], r["pressure_multipliers_Pa"]))
+            else:  # distance from the z axis
+                rows.append((math.hypot(r["x_m"], r["y_m"]), math.hypot(r["x_deformed_m"], r["y_deformed_m"]),
+                             r["pressure_multipliers_Pa"]))
     qp = summary.get("qp", {})
     return {"seconds": wall, "peak_memory_bytes": rss, "cpu_percent": cpu,
             "degrees_of_freedom": summary["degrees_of_freedom"], "nodes": summary["nodes"],
@@ -221,9 +237,11 @@ def main(case):
             out[name]["peak_pressure"] = max(p for _, _, p in rows)
             if summary and "hertz" in summary:
                 h = summary["hertz"]
-                out[name]["hertz"] = hertz_figures(rows, h["a_analytic"], h["p0_analytic"], large)
+                radial = summary.get("problem") == "hertz3d"
+                out[name]["hertz"] = hertz_figures(rows, h["a_analytic"], h["p0_analytic"], large, radial)
                 if large:
-                    out[name]["hertz_reference_frame"] = hertz_figures(rows, h["a_analytic"], h["p0_analytic"], False)
+                    out[name]["hertz_reference_frame"] = hertz_figures(rows, h["a_analytic"], h["p0_analytic"],
+                                                                       False, radial)
     if out["feticon"] and out["calculix"]:
         out["time_ratio_calculix_over_feticon"] = out["calculix"]["seconds"] / out["feticon"]["seconds"]
         out["memory_ratio_calculix_over_feticon"] = (out["calculix"]["peak_memory_bytes"] /

@@ -3,7 +3,8 @@
 
 Usage:
   plot_hertz.py RESULTS_DIR                       contact_pressure.png (against McEwen for
-                                                  the Hertz problem) and iterations.png
+                                                  hertz, against Hertz's p(r) for hertz3d)
+                                                  and iterations.png
   plot_hertz.py --figure OUT.png --title T DIR... pressure of several runs (e.g. five
                                                   penalties), labelled by their summary.json
 Reads contact_pressure.csv, history.csv and summary.json; writes PNG.
@@ -42,27 +43,35 @@ def plot(folders, out, title):
     analytic_drawn = False
     for folder in folders:
         rows, summary = read_run(folder)
+        # Older folders name the analytic column after McEwen.
+        analytic_key = "pressure_analytic_Pa" if "pressure_analytic_Pa" in rows[0] else "pressure_mcewen_Pa"
+        deformed = summary.get("hertz", {}).get("frame") == "deformed" and "x_deformed_m" in rows[0]
         # 3D results (one row per node, y varies): plot against the distance from the z axis.
-        three_d = len({r.get("y_m", "0") for r in rows}) > 1 and not any(
-            float(r["pressure_mcewen_Pa"]) for r in rows)
+        three_d = summary.get("problem") == "hertz3d" or len({r.get("y_m", "0") for r in rows}) > 1
         if three_d:
-            x = [1e3 * (float(r["x_m"]) ** 2 + float(r["y_m"]) ** 2) ** 0.5 for r in rows]
+            xk, yk = ("x_deformed_m", "y_deformed_m") if deformed else ("x_m", "y_m")
+            x = [1e3 * (float(r[xk]) ** 2 + float(r[yk]) ** 2) ** 0.5 for r in rows]
+            ax.set_xlabel("distance from the axis%s (mm)" % (", deformed" if deformed else ""))
         else:
             # Large displacements: pressure and McEwen's profile at the deformed x + u_x.
-            deformed = summary.get("hertz", {}).get("frame") == "deformed" and "x_deformed_m" in rows[0]
             x = [1e3 * float(r["x_deformed_m" if deformed else "x_m"]) for r in rows]
             if deformed:
                 ax.set_xlabel("deformed x + u_x (mm)")
         p = [1e-6 * float(r["pressure_multipliers_Pa"]) for r in rows]
-        pa = [1e-6 * float(r["pressure_mcewen_Pa"]) for r in rows]
+        pa = [1e-6 * float(r[analytic_key]) for r in rows]
         if not analytic_drawn and any(pa):
-            ax.plot(x, pa, "k-", lw=2, label="McEwen (analytic)")
+            if three_d:
+                a = 1e3 * summary["hertz"]["a_analytic"]
+                p0 = 1e-6 * summary["hertz"]["p0_analytic"]
+                rs = [a * 1.2 * k / 200 for k in range(201)]
+                ax.plot(rs, [p0 * max(0.0, 1 - (r / a) ** 2) ** 0.5 for r in rs], "k-", lw=2,
+                        label="Hertz (analytic)")
+                ax.set_xlim(0, 2 * a)
+            else:
+                ax.plot(x, pa, "k-", lw=2, label="McEwen (analytic)")
+                ax.set_xlim(0, 100)
             analytic_drawn = True
         ax.plot(x, p, "o" if three_d else "o-", ms=3, lw=1, label=label_of(summary))
-        if three_d:
-            ax.set_xlabel("distance from the z axis (mm)")
-    if analytic_drawn:
-        ax.set_xlim(0, 100)
     if not ax.get_xlabel():
         ax.set_xlabel("x (mm)")
     ax.set_ylabel("normal contact pressure (MPa)")

@@ -15,10 +15,10 @@ std::vector<SettingSpec> make_specs()
 {
   const double inf = 1e300;
   return {
-      {"problem", "hertz", "hertz (the seed's benchmark), cantilever_obstacle (a cantilever bent "
-                           "onto a block: finite rotations) or custom (mesh, bodies, supports, "
-                           "loads, contact sections of the problem file)",
-       Type::text, {"hertz", "cantilever_obstacle", "custom"}, 0, 0, false},
+      {"problem", "hertz", "hertz (the seed's benchmark), hertz3d (a sphere on a half-space), "
+                           "cantilever_obstacle (a cantilever bent onto a block: finite rotations) or "
+                           "custom (mesh, bodies, supports, loads, contact sections of the problem file)",
+       Type::text, {"hertz", "hertz3d", "cantilever_obstacle", "custom"}, 0, 0, false},
       {"cantilever.gap", "0.25", "gap between the beam (L = 1 m) and the obstacle (m)", Type::number, {}, 0, 10, true},
       {"cantilever.load", "0.8", "tip load as its linear tip deflection over L", Type::number, {}, 0, 100, true},
       {"cantilever.cells", "40", "beam cells along its length", Type::integer, {}, 10, 10000, false},
@@ -35,6 +35,16 @@ std::vector<SettingSpec> make_specs()
       {"hertz.growth_ratio", "1.1", "cell size ratio between neighbouring cells away from the contact "
                                     "band (tensor: at refinement 1, and tables before the graded mesh "
                                     "used 1.2; 1: uniform mesh)", Type::number, {}, 1, 2, false},
+      {"hertz3d.radius", "0.05", "sphere radius R (m)", Type::number, {}, 0, inf, true},
+      {"hertz3d.load", "2e4", "force F on the whole sphere (N); the quarter model carries F/4", Type::number, {}, 0, inf, true},
+      {"hertz3d.refinement", "1", "divides hertz3d.element_size", Type::number, {}, 0.05, 64, false},
+      {"hertz3d.element_size", "0.00025", "sphere cell size in the contact core at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
+      {"hertz3d.master_ratio", "1.3", "block (master) / sphere (slave) cell size in the contact core", Type::number, {}, 0.2, 5, false},
+      {"hertz3d.block_radius", "0.04", "radius of the modelled half-space, an octant ball fixed on its curved face (m)",
+       Type::number, {}, 0, inf, true},
+      {"hertz3d.cap_radius", "0.025", "radius of the modelled part of the sphere about the contact point (m), "
+       "at most 0.8 R", Type::number, {}, 0, inf, true},
+      {"hertz3d.radial_aspect", "1.5", "radial / tangential cell size outside the contact core", Type::number, {}, 0.5, 3, false},
       {"material.young", "2e11", "Young's modulus E (Pa) of every body", Type::number, {}, 0, inf, true},
       {"material.poisson", "0.3", "Poisson's ratio nu of every body, in (-1, 0.5)", Type::number, {}, -1, 0.5, true, true},
       {"method", "smalbe", "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "

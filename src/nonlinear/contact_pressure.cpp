@@ -64,6 +64,7 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
     }
     s.area += tributary(3 * node);
     s.deformed_x += problem.mesh.nodes(node, 0) + solution.u(3 * node);
+    s.deformed_y += problem.mesh.nodes(node, 1) + solution.u(3 * node + 1);
   }
   for (size_t i = 0; i < rows.slave_node.size(); ++i)
   {
@@ -82,6 +83,7 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
   for (auto& [key, s] : by_x)
   {
     s.deformed_x /= nodes_in_sample[key];
+    s.deformed_y /= nodes_in_sample[key];
     if (s.analytic > 0)
       s.stress_pressure /= s.analytic;
     s.analytic = 0;

@@ -23,11 +23,12 @@ struct PressureSample
   double y = 0;              ///< plane strain, where y and z are those of its first node) (m)
   double z = 0;
   double deformed_x = 0;     ///< x + u_x, averaged over the node line in plane strain (m)
+  double deformed_y = 0;     ///< y + u_y, likewise (m)
   double force = 0;          ///< normal contact force of the node(s) (N)
   double area = 0;           ///< their tributary area (m^2)
   double pressure = 0;       ///< force / area (Pa)
   double stress_pressure = 0; ///< -n' sigma n from the averaged stress (Pa)
-  double analytic = 0;       ///< McEwen p(x) (Pa), when compared with Hertz
+  double analytic = 0;       ///< McEwen's p(x) or Hertz's p(r) (Pa), when compared
 };
 
 /// Pressure on the slave surface of pair 0. Plane strain (u_z eliminated): one sample per

@@ -1,0 +1,142 @@
+#include "mesh/octant_ball.hpp"
+
+#include "common/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace feticon::mesh
+{
+namespace
+{
+// Node flags: which of the octant's boundary surfaces a node lies on.
+constexpr uint8_t on_x0 = 1, on_y0 = 2, on_d0 = 4, on_outer = 8;
+} // namespace
+
+OctantBall octant_ball(const OctantBallParameters& parameters)
+{
+  const int n = parameters.core_cells;
+  const double h = parameters.cell_size;
+  FETICON_CHECK(n >= 1 && n <= 2000, "octant ball: core_cells = " << n << " must be in [1, 2000]");
+  FETICON_CHECK(std::isfinite(h) && h > 0, "octant ball: cell_size = " << h << " must be positive");
+  FETICON_CHECK(std::isfinite(parameters.radial_aspect) && parameters.radial_aspect >= 0.5 &&
+                    parameters.radial_aspect <= 3,
+                "octant ball: radial_aspect = " << parameters.radial_aspect << " must be in [0.5, 3]");
+  const double c = n * h;
+  const double R = parameters.radius;
+  FETICON_CHECK(std::isfinite(R) && R >= 2.5 * c,
+                "octant ball: radius " << R << " must be at least 2.5 times the core width " << c);
+
+  // Core nodes (i, j, k) in [0, n]^3; the nodes of its outer faces x = c, y = c, d = c (the
+  // "surface", max(i, j, k) = n) are the roots of the rays of the shell layers.
+  const int m = n + 1;
+  auto core_id = [m](int i, int j, int k) { return static_cast<int32_t>(i + m * (j + m * k)); };
+  const int32_t n_core = m * m * m;
+  std::vector<int32_t> surface_of(n_core, -1);
+  std::vector<std::array<int, 3>> surface_ijk;
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i)
+        if (std::max({i, j, k}) == n)
+        {
+          surface_of[core_id(i, j, k)] = static_cast<int32_t>(surface_ijk.size());
+          surface_ijk.push_back({i, j, k});
+        }
+  const int32_t n_surface = static_cast<int32_t>(surface_ijk.size());
+
+  // Layer radii. The mean tangential cell size on a sphere of radius r is r sqrt(pi/6) / n (the
+  // octant's area pi r^2 / 2 over 3 n^2 cells), so growth g = aspect sqrt(pi/6) / n per layer
+  // keeps radial / tangential = aspect. Over the first B layers the ray length blends from the
+  // box's, t |p| / c, to the sphere's, t s with s = (1 + sqrt 3) / 2 (between the face centre's
+  // 1 and the corner's sqrt 3); B is chosen so that even the corner ray, which shrinks from
+  // sqrt 3 to s, still grows by at least g / 2 per layer. The last layer lies on |p| = R.
+  const double s = 0.5 * (1 + std::sqrt(3.0));
+  const double g0 = parameters.radial_aspect * std::sqrt(M_PI / 6) / n;
+  const int blend = std::max(1, static_cast<int>(std::ceil((std::sqrt(3.0) - s) / (0.5 * g0 * s))));
+  const int layers =
+      std::max(blend + 1, static_cast<int>(std::ceil(std::log(R / (c * s)) / std::log1p(g0))));
+  const double g = std::pow(R / (c * s), 1.0 / layers) - 1;
+
+  OctantBall out;
+  out.layers = layers;
+  const int64_t n_nodes = n_core + static_cast<int64_t>(layers) * n_surface;
+  out.nodes.resize(n_nodes, 3);
+  std::vector<uint8_t> flags(n_nodes, 0);
+  auto flags_of = [n](int i, int j, int k)
+  { return static_cast<uint8_t>((i == 0 ? on_x0 : 0) | (j == 0 ? on_y0 : 0) | (k == 0 ? on_d0 : 0)); };
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i)
+      {
+        out.nodes.row(core_id(i, j, k)) << i * h, j * h, k * h;
+        flags[core_id(i, j, k)] = flags_of(i, j, k);
+      }
+  auto layer_node = [&](int layer, int32_t surface) -> int32_t
+  {
+    if (layer == 0)
+    {
+      const auto& [i, j, k] = surface_ijk[surface];
+      return core_id(i, j, k);
+    }
+    return static_cast<int32_t>(n_core + static_cast<int64_t>(layer - 1) * n_surface + surface);
+  };
+  for (int layer = 1; layer <= layers; ++layer)
+  {
+    const double t = c * std::pow(1 + g, layer);
+    const double w = std::min(1.0, static_cast<double>(layer) / blend);
+    for (int32_t q = 0; q < n_surface; ++q)
+    {
+      const auto& [i, j, k] = surface_ijk[q];
+      const Eigen::Vector3d p(i * h, j * h, k * h);
+      const double box = p.norm() / c;
+      const int32_t id = layer_node(layer, q);
+      // Exact zeros on the symmetry and flat planes: the ray keeps a zero component.
+      out.nodes.row(id) = (t * ((1 - w) * box + w * s) / p.norm()) * p.transpose();
+      flags[id] = static_cast<uint8_t>(flags_of(i, j, k) | (layer == layers ? on_outer : 0));
+    }
+  }
+
+  // Cells: the core's, then per layer one cell over every quad of the core's outer faces. The
+  // quads are ordered so that (x1 - x0) x (x3 - x0) points away from the core, which makes
+  // the cell {quad at layer - 1, quad at layer} positively oriented in VTK order.
+  out.cells.reserve(static_cast<size_t>(n) * n * n + static_cast<size_t>(layers) * 3 * n * n);
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        out.cells.push_back({core_id(i, j, k), core_id(i + 1, j, k), core_id(i + 1, j + 1, k),
+                             core_id(i, j + 1, k), core_id(i, j, k + 1), core_id(i + 1, j, k + 1),
+                             core_id(i + 1, j + 1, k + 1), core_id(i, j + 1, k + 1)});
+  std::vector<std::array<int32_t, 4>> quads;
+  auto sid = [&](int i, int j, int k) { return surface_of[core_id(i, j, k)]; };
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b)
+    {
+      quads.push_back({sid(n, a, b), sid(n, a + 1, b), sid(n, a + 1, b + 1), sid(n, a, b + 1)}); // x = c: y x d = +x
+      quads.push_back({sid(a, n, b), sid(a, n, b + 1), sid(a + 1, n, b + 1), sid(a + 1, n, b)}); // y = c: d x x = +y
+      quads.push_back({sid(a, b, n), sid(a + 1, b, n), sid(a + 1, b + 1, n), sid(a, b + 1, n)}); // d = c: x x y = +d
+    }
+  for (int layer = 1; layer <= layers; ++layer)
+    for (const auto& q : quads)
+      out.cells.push_back({layer_node(layer - 1, q[0]), layer_node(layer - 1, q[1]), layer_node(layer - 1, q[2]),
+                           layer_node(layer - 1, q[3]), layer_node(layer, q[0]), layer_node(layer, q[1]),
+                           layer_node(layer, q[2]), layer_node(layer, q[3])});
+
+  // Boundary faces: a cell face whose four nodes lie on one of the octant's boundary surfaces
+  // is a face of that surface (hex_faces are outward for positively oriented cells).
+  for (const Cell& cell : out.cells)
+    for (const auto& local : hex_faces)
+    {
+      const Face f{cell[local[0]], cell[local[1]], cell[local[2]], cell[local[3]]};
+      const uint8_t common = flags[f[0]] & flags[f[1]] & flags[f[2]] & flags[f[3]];
+      if (common & on_x0)
+        out.symmetry_x.push_back(f);
+      if (common & on_y0)
+        out.symmetry_y.push_back(f);
+      if (common & on_d0)
+        out.flat.push_back(f);
+      if (common & on_outer)
+        out.outer.push_back(f);
+    }
+  return out;
+}
+} // namespace feticon::mesh

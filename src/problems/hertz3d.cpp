@@ -1,0 +1,165 @@
+#include "problems/hertz3d.hpp"
+
+#include "common/error.hpp"
+#include "fem/loads.hpp"
+#include "mesh/octant_ball.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace feticon::problems
+{
+namespace
+{
+/// Appends `ball` as body `body` of `mesh`, each local node (x, y, d) placed by `place`;
+/// `reflect` when `place` reverses the orientation (then cells and faces are reordered so
+/// that they stay positive and outward).
+template <class Place>
+void append_body(mesh::HexMesh& mesh, const mesh::OctantBall& ball, const std::string& name, bool reflect,
+                 Place place, const std::string& flat_set, const std::string& outer_set)
+{
+  const int32_t offset = mesh.n_nodes();
+  const int32_t body = mesh.n_bodies();
+  mesh.body_names.push_back(name);
+  mesh.nodes.conservativeResize(offset + ball.nodes.rows(), 3);
+  for (Eigen::Index i = 0; i < ball.nodes.rows(); ++i)
+    mesh.nodes.row(offset + i) = place(Eigen::Vector3d(ball.nodes.row(i))).transpose();
+  for (const mesh::Cell& c : ball.cells)
+  {
+    mesh::Cell cell;
+    for (int k = 0; k < 8; ++k)
+      cell[k] = offset + c[reflect ? (k + 4) % 8 : k];
+    mesh.cells.push_back(cell);
+    mesh.cell_body.push_back(body);
+  }
+  auto add_faces = [&](const std::vector<mesh::Face>& faces, const std::string& set)
+  {
+    auto& out = mesh.face_sets[set];
+    for (const mesh::Face& f : faces)
+      out.push_back(reflect ? mesh::Face{offset + f[0], offset + f[3], offset + f[2], offset + f[1]}
+                            : mesh::Face{offset + f[0], offset + f[1], offset + f[2], offset + f[3]});
+  };
+  add_faces(ball.flat, flat_set);
+  add_faces(ball.outer, outer_set);
+  add_faces(ball.symmetry_x, "symmetry_x");
+  add_faces(ball.symmetry_y, "symmetry_y");
+}
+} // namespace
+
+Hertz3dAnalytic hertz3d_analytic(const Hertz3dParameters& parameters)
+{
+  const fem::Material& m = parameters.material;
+  Hertz3dAnalytic h;
+  h.effective_modulus = m.young / (2 * (1 - m.poisson * m.poisson));
+  h.contact_radius = std::cbrt(3 * parameters.load * parameters.radius / (4 * h.effective_modulus));
+  h.peak_pressure = 3 * parameters.load / (2 * M_PI * h.contact_radius * h.contact_radius);
+  h.approach = h.contact_radius * h.contact_radius / parameters.radius;
+  return h;
+}
+
+double Hertz3dAnalytic::pressure(double r) const
+{
+  const double q = r / contact_radius;
+  return q < 1 ? peak_pressure * std::sqrt(1 - q * q) : 0.0;
+}
+
+fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
+{
+  const double R = parameters.radius;
+  FETICON_CHECK(std::isfinite(R) && R > 0, "hertz3d: radius = " << R << " m must be positive");
+  FETICON_CHECK(std::isfinite(parameters.load) && parameters.load > 0,
+                "hertz3d: load = " << parameters.load << " N must be positive");
+  FETICON_CHECK(parameters.cap_radius > 0 && parameters.cap_radius <= 0.8 * R,
+                "hertz3d: cap_radius = " << parameters.cap_radius << " m must be in (0, 0.8 radius = "
+                                         << 0.8 * R << " m]");
+  const Hertz3dAnalytic analytic = hertz3d_analytic(parameters);
+  const double h = parameters.element_size / parameters.refinement;
+  // The uniform core covers the contact zone with a margin: 1.25 a, in whole cells.
+  const int slave_cells = static_cast<int>(std::ceil(1.25 * analytic.contact_radius / h - 1e-9));
+  const double h_master = parameters.master_ratio * h;
+  const int master_cells = static_cast<int>(std::ceil(slave_cells * h / h_master - 1e-9));
+  FETICON_CHECK(slave_cells <= 400, "hertz3d: " << slave_cells << " core cells per edge (contact radius "
+                                                 << analytic.contact_radius << " m over element size " << h
+                                                 << " m) is more than 400; lower hertz3d.refinement");
+  const double core = std::max(slave_cells * h, master_cells * h_master);
+  FETICON_CHECK(parameters.cap_radius >= 2.5 * core && parameters.block_radius >= 2.5 * core,
+                "hertz3d: cap_radius and block_radius must be at least 2.5 times the contact core width "
+                    << core << " m (1.25 contact radii)");
+
+  const mesh::OctantBall sphere = mesh::octant_ball({h, slave_cells, parameters.cap_radius, parameters.radial_aspect});
+  const mesh::OctantBall block =
+      mesh::octant_ball({h_master, master_cells, parameters.block_radius, parameters.radial_aspect});
+
+  fem::Problem p;
+  p.name = "hertz3d";
+  p.mesh.nodes.resize(0, 3);
+  // The sphere's flat face is lifted onto the sphere by z = d + s(rho) (1 - d / cap_radius),
+  // s(rho) = R - sqrt(R^2 - rho^2): exact on the contact face, fading with depth so that the
+  // shear of the map (slope s' up to 0.58 at the rim) does not stretch the interior cells;
+  // dz/dd = 1 - s / cap_radius > 0 since s(rho) < rho <= cap_radius.
+  const double Rc = parameters.cap_radius;
+  append_body(p.mesh, sphere, "sphere", false,
+              [R, Rc](const Eigen::Vector3d& q)
+              {
+                const double lift = R - std::sqrt(R * R - q(0) * q(0) - q(1) * q(1));
+                return Eigen::Vector3d(q(0), q(1), q(2) + lift * (1 - q(2) / Rc));
+              },
+              "sphere_contact", "sphere_load");
+  append_body(p.mesh, block, "block", true,
+              [](const Eigen::Vector3d& q) { return Eigen::Vector3d(q(0), q(1), -q(2)); }, "block_contact",
+              "block_support");
+  for (const auto& [name, faces] : p.mesh.face_sets)
+    p.mesh.add_node_set_from_faces(name, name);
+
+  p.materials.assign(p.mesh.n_bodies(), parameters.material);
+  p.dirichlet = {
+      {"symmetry_x", {0.0, std::nullopt, std::nullopt}},
+      {"symmetry_y", {std::nullopt, 0.0, std::nullopt}},
+      {"block_support", {0.0, 0.0, 0.0}},
+  };
+  // A downward traction on the sphere's far face with resultant F / 4: its area from the
+  // consistent load of a unit traction, so the resultant is exact for the discrete face.
+  la::Vector unit = la::Vector::Zero(3 * p.mesh.n_nodes());
+  fem::add_face_traction(p.mesh, p.mesh.face_set("sphere_load"), Eigen::Vector3d(0, 0, 1), unit);
+  double area = 0;
+  for (int32_t n = 0; n < p.mesh.n_nodes(); ++n)
+    area += unit(3 * n + 2);
+  p.tractions = {{"sphere_load", Eigen::Vector3d(0, 0, -0.25 * parameters.load / area)}};
+  p.contacts = {{"sphere_contact", "block_contact"}};
+  p.validate();
+  return p;
+}
+
+Hertz3dComparison compare_with_hertz3d(const Hertz3dParameters& parameters,
+                                       const std::vector<RadialPressure>& samples, double loaded_fraction)
+{
+  const Hertz3dAnalytic analytic = hertz3d_analytic(parameters);
+  Hertz3dComparison c;
+  c.a_analytic = analytic.contact_radius;
+  c.p0_analytic = analytic.peak_pressure;
+  c.approach_analytic = analytic.approach;
+  for (const auto& s : samples)
+    c.p_peak_computed = std::max(c.p_peak_computed, s.pressure);
+  // p^2 = A + B r^2 over the loaded nodes; a = sqrt(-A / B).
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, sum_sq = 0;
+  for (const auto& s : samples)
+  {
+    if (s.pressure > loaded_fraction * c.p_peak_computed)
+    {
+      const double X = s.r * s.r, Y = s.pressure * s.pressure;
+      n += 1, sx += X, sy += Y, sxx += X * X, sxy += X * Y;
+    }
+    if (s.r <= analytic.contact_radius)
+    {
+      const double e = s.pressure - analytic.pressure(s.r);
+      sum_sq += e * e;
+      ++c.nodes_in_rms;
+    }
+  }
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const double intercept = (sy - slope * sx) / n;
+  c.a_computed = n >= 2 && slope < 0 && intercept > 0 ? std::sqrt(-intercept / slope) : 0;
+  c.rms_error_over_p0 = c.nodes_in_rms > 0 ? std::sqrt(sum_sq / c.nodes_in_rms) / analytic.peak_pressure : 0;
+  return c;
+}
+} // namespace feticon::problems

@@ -1,0 +1,79 @@
+#pragma once
+/// @file 3D Hertz (issue 20): an elastic sphere of radius R pressed with the force F onto an
+/// elastic half-space, both of one material, quarter model (symmetry planes x = 0 and y = 0).
+/// Analytic reference: Hertz's point contact (Johnson 1985, Contact Mechanics, section 4.2):
+/// 1/E* = 2 (1 - nu^2) / E, a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi a^2),
+/// p(r) = p0 sqrt(1 - r^2 / a^2), approach delta = a^2 / R.
+///
+/// Geometry (m). The first contact point is the origin, the sphere's centre (0, 0, R).
+///  - body 0 "sphere": the part of the sphere within cap_radius of the contact point, meshed
+///    as an octant ball (mesh/octant_ball.hpp) in (x, y, d) mapped by
+///    z = d + (R - sqrt(R^2 - x^2 - y^2)) (1 - d / cap_radius), which lays the ball's flat face
+///    exactly on the sphere. Its far face "sphere_load" carries a
+///    uniform downward traction whose resultant is F / 4; the sphere is held vertically only by
+///    contact.
+///  - body 1 "block": the half-space truncated to the octant ball of radius block_radius
+///    below z = 0 (z = -d), fixed on its curved face "block_support".
+/// Both meshes are graded from h = element_size / refinement (sphere) and master_ratio h
+/// (block) in a uniform core covering 1.25 a out to cells `radial_aspect` times longer radially
+/// than tangentially and proportional in size to the distance from the contact; the contact
+/// meshes do not match.
+///
+/// Sets (faces outward from their body; every face set is also a node set):
+///   "sphere_contact" (slave), "block_contact" (master, z = 0), "sphere_load",
+///   "block_support", "symmetry_x" (x = 0, both bodies), "symmetry_y" (y = 0, both bodies).
+
+#include "fem/problem.hpp"
+
+#include <vector>
+
+namespace feticon::problems
+{
+struct Hertz3dParameters
+{
+  double radius = 0.05;        ///< R, sphere radius (m)
+  double load = 2.0e4;         ///< F on the whole sphere (N); the quarter model carries F / 4
+  fem::Material material{2.0e11, 0.3};
+  double element_size = 2.5e-4; ///< slave cell size in the contact core at refinement 1 (m)
+  double refinement = 1;        ///< divides element_size
+  double master_ratio = 1.3;    ///< block / sphere cell size in the contact core
+  double block_radius = 0.04;   ///< radius of the modelled half-space (m)
+  double cap_radius = 0.025;    ///< radius of the modelled part of the sphere (m), < 0.8 R
+  double radial_aspect = 1.5;   ///< radial / tangential cell size away from the core
+};
+
+struct Hertz3dAnalytic
+{
+  double effective_modulus; ///< E* (Pa)
+  double contact_radius;    ///< a (m)
+  double peak_pressure;     ///< p0 (Pa)
+  double approach;          ///< delta = a^2 / R (m)
+  /// p(r) = p0 sqrt(1 - r^2 / a^2) for r <= a, else 0 (Pa).
+  double pressure(double r) const;
+};
+Hertz3dAnalytic hertz3d_analytic(const Hertz3dParameters& parameters);
+
+/// The problem; throws feticon::Error naming a parameter out of range.
+fem::Problem hertz3d_problem(const Hertz3dParameters& parameters);
+
+/// One slave node's pressure at its distance r from the axis (in the frame of the comparison).
+struct RadialPressure
+{
+  double r = 0;
+  double pressure = 0;
+};
+
+struct Hertz3dComparison
+{
+  double a_analytic = 0, p0_analytic = 0, approach_analytic = 0;
+  /// Contact radius from the least-squares fit p^2 = p0^2 (1 - r^2/a^2) over the loaded nodes
+  /// (pressure above `loaded_fraction` of the largest).
+  double a_computed = 0;
+  double p_peak_computed = 0;   ///< largest nodal pressure
+  /// RMS over the slave nodes with r <= a_analytic of p - p_Hertz(r), over p0.
+  double rms_error_over_p0 = 0;
+  int nodes_in_rms = 0;
+};
+Hertz3dComparison compare_with_hertz3d(const Hertz3dParameters& parameters,
+                                       const std::vector<RadialPressure>& samples, double loaded_fraction);
+} // namespace feticon::problems
