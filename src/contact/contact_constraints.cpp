@@ -148,10 +148,16 @@ std::optional<ClosestPoint> outside_point(const std::vector<QuadCoordinates>& qu
   point.xi = (1 - best_t) * quad_corner(best_edge) + best_t * quad_corner(b);
   const Eigen::Vector3d face_normal = quad_normal(quad, point.xi);
   const Eigen::Vector3d distance = x_s - quad_point(quad, point.xi);
-  if (distance.norm() <= 1e-12 * face_size)
+  // Within the rim tolerance of the face in its own plane, the node lies on the face: its row
+  // takes the face normal. The distance vector to the side is no normal there: for a node in
+  // contact (gap ~ 0) off a side by round-off, such as a node of a symmetry plane that the
+  // Dirichlet rows hold to ~1e-10 m, it points anywhere (measured: 60 degrees from the face
+  // normal on hertz3d's axis node, which tilted its row and inflated its multiplier by 1/n_z).
+  const Eigen::Vector3d in_plane = distance - distance.dot(face_normal) * face_normal;
+  if (in_plane.norm() <= rim_tolerance * face_size)
   {
     point.normal = face_normal;
-    point.gap = 0;
+    point.gap = face_normal.dot(distance);
     return point;
   }
   const double side = distance.dot(face_normal) < 0 ? -1.0 : 1.0;

@@ -149,6 +149,27 @@ TEST(ContactConstraints, RimExtensionKeepsNodesJustBeyondTheMasterBoundary)
   EXPECT_EQ(strict.n_overhanging, 4);
 }
 
+TEST(ContactConstraints, NodeInContactJustOffTheMasterBoundaryTakesTheFaceNormal)
+{
+  // Slave nodes in contact (gap 1e-10) and 2e-7 beyond the master boundary x = 0: outside the
+  // face projection's acceptance (1e-6 of the half-width 0.125) but within the rim tolerance
+  // (1e-6 of the diagonal 0.354), as a node of a symmetry plane held there only to the
+  // precision of its Dirichlet rows. The master surface is flat, so every row's normal is +z
+  // and its gap 1e-10; the direction of the distance vector to the boundary side, (-2e-7, 0,
+  // 1e-10), is no normal (it tilted the row by 90 degrees before).
+  const mesh::HexMesh mesh = test::stacked_boxes(1e-10, -2e-7);
+  const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), upper_on_lower);
+  ASSERT_EQ(rows.n_rows(), 16);
+  int n_off = 0;
+  for (la::Index i = 0; i < rows.n_rows(); ++i)
+  {
+    n_off += mesh.nodes(rows.slave_node[i], 0) < 0;
+    EXPECT_NEAR((rows.normal[i] - Eigen::Vector3d(0, 0, 1)).norm(), 0, 1e-12) << "row " << i;
+    EXPECT_NEAR(rows.gap[i], 1e-10, 1e-15) << "row " << i;
+  }
+  EXPECT_EQ(n_off, 4);
+}
+
 TEST(ContactConstraints, RowsAnnihilateRigidTranslations)
 {
   // Partition of unity: b . (t, t, ..., t) = -n.t + sum_a N_a n.t = 0 for every translation t.
