@@ -43,7 +43,7 @@ std::vector<SettingSpec> make_specs()
       {"hertz3d.block_radius", "0.04", "radius of the modelled half-space, an octant ball fixed on its curved face (m)",
        Type::number, {}, 0, inf, true},
       {"hertz3d.cap_radius", "0.025", "radius of the modelled part of the sphere about the contact point (m), "
-       "at most 0.8 R", Type::number, {}, 0, inf, true},
+       "at most R / 2", Type::number, {}, 0, inf, true},
       {"hertz3d.radial_aspect", "1.5", "radial / tangential cell size outside the contact core", Type::number, {}, 0.5, 3, false},
       {"material.young", "2e11", "Young's modulus E (Pa) of every body", Type::number, {}, 0, inf, true},
       {"material.poisson", "0.3", "Poisson's ratio nu of every body, in (-1, 0.5)", Type::number, {}, -1, 0.5, true, true},

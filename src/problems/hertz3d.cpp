@@ -69,9 +69,11 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
   FETICON_CHECK(std::isfinite(R) && R > 0, "hertz3d: radius = " << R << " m must be positive");
   FETICON_CHECK(std::isfinite(parameters.load) && parameters.load > 0,
                 "hertz3d: load = " << parameters.load << " N must be positive");
-  FETICON_CHECK(parameters.cap_radius > 0 && parameters.cap_radius <= 0.8 * R,
-                "hertz3d: cap_radius = " << parameters.cap_radius << " m must be in (0, 0.8 radius = "
-                                         << 0.8 * R << " m]");
+  // Beyond R / 2 the lift onto the sphere shears the rim's cells past aspect ratio 3 (5.6 at
+  // 0.8 R), and the Hertz figures do not need it (0.25 R and 0.5 R agree to 0.1 % of p0).
+  FETICON_CHECK(parameters.cap_radius > 0 && parameters.cap_radius <= 0.5 * R,
+                "hertz3d: cap_radius = " << parameters.cap_radius << " m must be in (0, radius / 2 = "
+                                         << 0.5 * R << " m]");
   const Hertz3dAnalytic analytic = hertz3d_analytic(parameters);
   const double h = parameters.element_size / parameters.refinement;
   // The uniform core covers the contact zone with a margin: 1.25 a, in whole cells.

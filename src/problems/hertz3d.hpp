@@ -38,7 +38,7 @@ struct Hertz3dParameters
   double refinement = 1;        ///< divides element_size
   double master_ratio = 1.3;    ///< block / sphere cell size in the contact core
   double block_radius = 0.04;   ///< radius of the modelled half-space (m)
-  double cap_radius = 0.025;    ///< radius of the modelled part of the sphere (m), < 0.8 R
+  double cap_radius = 0.025;    ///< radius of the modelled part of the sphere (m), <= R / 2
   double radial_aspect = 1.5;   ///< radial / tangential cell size away from the core
 };
 
