@@ -45,7 +45,8 @@ nlohmann::json records(const nonlinear::ContactSolution& s)
                        it.feasibility_error, it.seconds, it.ritz.min, it.ritz.max, it.ritz.cg_steps,
                        it.rho_updates, it.final_rho});
   return {{"completed_steps", s.restart.completed_steps}, {"steps", steps}, {"history", history},
-          {"smalbe_M", s.restart.smalbe_M}, {"smalbe_rho", s.restart.smalbe_rho}};
+          {"smalbe_M", s.restart.smalbe_M}, {"smalbe_rho", s.restart.smalbe_rho},
+          {"pfp_norm", s.restart.pfp_norm}};
 }
 } // namespace
 
@@ -89,6 +90,7 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
     r.completed_steps = json.at("completed_steps").get<int>();
     r.smalbe_M = json.value("smalbe_M", 0.0);
     r.smalbe_rho = json.value("smalbe_rho", 0.0);
+    r.pfp_norm = json.value("pfp_norm", 0.0);
     solution.steps.clear();
     for (const auto& st : json.at("steps"))
       solution.steps.push_back({st[0].get<double>(), st[1].get<int>(), st[2].get<bool>(),

@@ -116,8 +116,13 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   DualSolution out;
   const FOperator F_raw(feti);
   const ProjectedOperator PFP_raw(F_raw, projector, 0.0);
+  // ||PFP|| changes little when only the contact rows change (ALGORITHMS.md section 8): the
+  // caller passes the last estimate while F is the same, and the power iterations (6-7
+  // products per QP on Hertz) are skipped. It only scales F; a too small value makes an
+  // expansion step too long, which MPRGP detects and halves.
   const qp::NormEstimate norm =
-      qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1, &feti.space());
+      warm.pfp_norm > 0 ? qp::NormEstimate{warm.pfp_norm, 0}
+                        : qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1, &feti.space());
   FETICON_CHECK(norm.value > 0 && std::isfinite(norm.value), "||PFP|| estimate " << norm.value
                                                                                  << " is not positive");
   out.pfp_norm = norm.value;

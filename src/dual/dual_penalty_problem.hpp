@@ -60,6 +60,7 @@ struct DualWarmStart
   la::Vector coarse_multiplier;
   double M = 0;                 ///< SMALBE-M's M; 0: smalbe_M0
   double rho = 0;               ///< SMALBE-M's rho; 0: the options' rho
+  double pfp_norm = 0;          ///< ||PFP|| of a solve with the same F; 0: estimated here
 };
 
 struct DualSolution

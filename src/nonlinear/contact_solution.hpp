@@ -60,6 +60,7 @@ struct RestartState
   /// SMALBE-M's state after the last solve (dual::DualWarmStart); empty/0 for other methods.
   la::Vector smalbe_coarse_multiplier;
   double smalbe_M = 0, smalbe_rho = 0;
+  double pfp_norm = 0; ///< the last ||PFP|| estimate (dual::DualWarmStart)
 };
 
 struct ContactSolution

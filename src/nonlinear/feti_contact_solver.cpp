@@ -255,7 +255,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
                   "restart: all " << settings.load_steps << " load steps are already done");
     u = decomp->owned_slice(r.u_stacked);
     restart_lambda = r.lambda;
-    warm_smalbe = {{}, r.smalbe_coarse_multiplier, r.smalbe_M, r.smalbe_rho};
+    warm_smalbe = {{}, r.smalbe_coarse_multiplier, r.smalbe_M, r.smalbe_rho, r.pfp_norm};
     for (size_t i = 0; i < r.contact_slave.size(); ++i)
       previous_contact[r.contact_slave[i]] = r.contact_lambda[i];
     previous_active = active_slave_nodes(previous_contact);
@@ -288,7 +288,10 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       const bool refresh = !linear && ((settings.stiffness == StiffnessUpdate::load_step && k == 1 && step > 1) ||
                                        (settings.stiffness == StiffnessUpdate::iteration && (step > 1 || k > 1)));
       if (refresh)
+      {
         update_stiffness(); // K_M(u) and R(X + u)
+        warm_smalbe.pfp_norm = 0; // a new F: estimate ||PFP|| again
+      }
       const la::Vector u_global = decomp->gather_mean(decomp->gather_stacked(u));
       contact::ContactConstraints contact_rows;
       la::Vector residual;
@@ -352,7 +355,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       }
       u += solution.u;
       lambda_previous = solution.lambda;
-      warm_smalbe = {{}, solution.coarse_multiplier, solution.smalbe_M, solution.smalbe_rho};
+      warm_smalbe = {{}, solution.coarse_multiplier, solution.smalbe_M, solution.smalbe_rho, solution.pfp_norm};
       const la::Vector contact_lambda =
           rows_by_id(*feti, solution.lambda, n_equality, n_equality + contact_rows.n_rows());
       previous_contact.clear();
@@ -455,6 +458,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
     out.restart.smalbe_coarse_multiplier = warm_smalbe.coarse_multiplier;
     out.restart.smalbe_M = warm_smalbe.M;
     out.restart.smalbe_rho = warm_smalbe.rho;
+    out.restart.pfp_norm = warm_smalbe.pfp_norm;
     out.restart.contact_slave.clear();
     out.restart.contact_lambda.clear();
     for (const auto& [node, value] : previous_contact)
