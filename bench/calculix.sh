@@ -11,6 +11,8 @@
 #   bench/calculix.sh --suite                      # the table of docs/benchmarks.md
 #   bench/calculix.sh --suite --across 60,120,240  # Hertz sizes (slave elements across 2a);
 #                                                  # 240 runs once (minutes per run)
+#   bench/calculix.sh --suite --hertz3d 1,1.4      # hertz3d refinements (39k, 97k DOFs), once
+#                                                  # each (CalculiX: 1-8 minutes per run)
 #   bench/calculix.sh --feticon build-old/feticon ...   # another build (default build/feticon)
 #   bench/calculix.sh --out /tmp/cases ...         # case folders elsewhere
 #
@@ -24,6 +26,7 @@ reps=3
 name=
 suite=false
 sizes=60,120
+hertz3d=1
 threads=2
 out=$root/bench/results/calculix
 while [[ $# -gt 0 ]]; do
@@ -35,8 +38,9 @@ while [[ $# -gt 0 ]]; do
     --out) out=$2; shift 2 ;;
     --suite) suite=true; shift ;;
     --across) sizes=$2; shift 2 ;;
+    --hertz3d) hertz3d=$2; shift 2 ;;
     --) shift; break ;;
-    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
     *) echo "bench/calculix.sh: unknown option $1 (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -71,6 +75,12 @@ if $suite; then
   "$0" --feticon "$feticon" --out "$out" --reps "$reps" --name sphere -- "$root/examples/sphere_on_block/problem.yaml"
   "$0" --feticon "$feticon" --out "$out" --reps "$reps" --name sphere-large -- \
     "$root/examples/sphere_on_block/problem.yaml" --set displacements=large
+  for r in ${hertz3d//,/ }; do
+    for kind in small large; do
+      "$0" --feticon "$feticon" --out "$out" --reps 1 --name "hertz3d-$kind-r$r" -- \
+        --set problem=hertz3d --set "hertz3d.refinement=$r" --set displacements=$kind
+    done
+  done
   /usr/bin/python3 "$root/bench/calculix_table.py" "$out"
   exit 0
 fi

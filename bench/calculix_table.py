@@ -9,7 +9,9 @@ import os
 import sys
 
 ORDER = ["hertz-small-60", "hertz-large-60", "hertz-small-120", "hertz-large-120",
-         "hertz-small-240", "hertz-large-240", "punch", "sphere"]
+         "hertz-small-240", "hertz-large-240", "punch", "sphere", "sphere-large",
+         "hertz-large-120-tensor", "hertz3d-small-r1", "hertz3d-large-r1", "hertz3d-small-r1.4",
+         "hertz3d-large-r1.4"]
 
 
 def pct(v):

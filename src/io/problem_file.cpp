@@ -97,6 +97,12 @@ void flatten(const YAML::Node& node, const std::string& prefix,
 {
   if (node.IsMap())
   {
+    // A map where a setting's value belongs, or an empty section, would otherwise be
+    // dropped without a word (`displacements: {}` ran with the default).
+    const bool is_setting = std::any_of(Settings::specs().begin(), Settings::specs().end(),
+                                        [&](const SettingSpec& spec) { return spec.key == prefix; });
+    FETICON_CHECK(!is_setting, source << ": '" << prefix << "' must be a single value, not a map");
+    FETICON_CHECK(prefix.empty() || node.size() > 0, source << ": section '" << prefix << "' is empty");
     for (const auto& kv : node)
       flatten(kv.second, prefix.empty() ? kv.first.as<std::string>()
                                         : prefix + "." + kv.first.as<std::string>(),

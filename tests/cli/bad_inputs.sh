@@ -170,6 +170,10 @@ printf 'qp:\n  speed: [1, 2]\n' > "$work/unknown_nested_list.yaml"
 expect "unknown nested key with a list value" "unknown key 'qp.speed'" -- "$work/unknown_nested_list.yaml"
 printf 'problem: hertz\nhertz:\n  refinement: 0.5\n  refinement: 0.7\n' > "$work/duplicate_key.yaml"
 expect "a key given twice" "key 'hertz.refinement' is given twice (line 4)" -- "$work/duplicate_key.yaml"
+printf 'problem: hertz\ndisplacements: {}\n' > "$work/setting_as_map.yaml"
+expect "a setting given a map" "'displacements' must be a single value, not a map" -- "$work/setting_as_map.yaml"
+printf 'problem: hertz\nhertz: {}\n' > "$work/empty_section.yaml"
+expect "an empty section" "section 'hertz' is empty" -- "$work/empty_section.yaml"
 
 # Explicit dual operators are formed on the Dirichlet preconditioner's boundary.
 expect "explicit operators without the Dirichlet preconditioner" "qp.preconditioner" -- \
