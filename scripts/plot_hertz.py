@@ -35,7 +35,8 @@ def label_of(summary):
         return "primal penalty, eps_n = %.2g N/m" % summary.get("eps_n", float("nan"))
     if method == "dual_penalty":
         return "dual penalty, rho = %g" % summary.get("rho", float("nan"))
-    return "SMALBE-M, rho = %g" % summary.get("rho", float("nan"))
+    return "SMALBE-M, rho = %g, %s displacements" % (summary.get("rho", float("nan")),
+                                                     summary.get("displacements", "?"))
 
 
 def plot(folders, out, title):
