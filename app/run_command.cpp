@@ -75,6 +75,24 @@ double far_face_approach(const fem::Problem& problem, const la::Vector& u)
   return sum / area;
 }
 
+/// The figures of summary.json's `hertz` block that the 2D (McEwen) and 3D (Hertz)
+/// comparisons share, in the frame of `h`; `reference` is the reference frame's comparison,
+/// added as "reference_frame" with large displacements.
+template <class Comparison>
+nlohmann::ordered_json hertz_json(const Comparison& h, const Comparison& reference, bool large)
+{
+  nlohmann::ordered_json out = {{"frame", large ? "deformed" : "reference"},
+                                {"a_analytic", h.a_analytic},
+                                {"p0_analytic", h.p0_analytic},
+                                {"a_computed", h.a_computed},
+                                {"p_peak_computed", h.p_peak_computed},
+                                {"rms_error_over_p0", h.rms_error_over_p0}};
+  if (large)
+    out["reference_frame"] = {{"a_computed", reference.a_computed},
+                              {"rms_error_over_p0", reference.rms_error_over_p0}};
+  return out;
+}
+
 /// A step's VTU (one rank) or the .pvtu joining the ranks' pieces, and a piece's name.
 std::string step_file_name(int step, bool serial)
 {
@@ -251,17 +269,9 @@ void run(const RunOptions& options)
       const nonlinear::HertzComparison reference = nonlinear::compare_with_hertz(hertz, samples, false);
       const nonlinear::HertzComparison h = large ? nonlinear::compare_with_hertz(hertz, samples, true) : reference;
       summary["contact"]["applied_load"] = h.applied_load;
-      summary["hertz"] = {{"frame", large ? "deformed" : "reference"},
-                          {"a_analytic", h.a_analytic},
-                          {"p0_analytic", h.p0_analytic},
-                          {"a_computed", h.a_computed},
-                          {"p_peak_computed", h.p_peak_computed},
-                          {"rms_error_over_p0", h.rms_error_over_p0},
-                          {"axis_approach", axis_approach(*problem, solution.u)},
-                          {"contact_element_size", h.element_size}};
-      if (large)
-        summary["hertz"]["reference_frame"] = {{"a_computed", reference.a_computed},
-                                               {"rms_error_over_p0", reference.rms_error_over_p0}};
+      summary["hertz"] = hertz_json(h, reference, large);
+      summary["hertz"]["axis_approach"] = axis_approach(*problem, solution.u);
+      summary["hertz"]["contact_element_size"] = h.element_size;
     }
     if (is_hertz3d)
     {
@@ -281,19 +291,11 @@ void run(const RunOptions& options)
       for (auto& s : samples)
         s.analytic = analytic.pressure(large ? std::hypot(s.deformed_x, s.deformed_y) : std::hypot(s.x, s.y));
       summary["contact"]["applied_load"] = 0.25 * hertz3d.load;
-      summary["hertz"] = {{"frame", large ? "deformed" : "reference"},
-                          {"a_analytic", h.a_analytic},
-                          {"p0_analytic", h.p0_analytic},
-                          {"a_computed", h.a_computed},
-                          {"p_peak_computed", h.p_peak_computed},
-                          {"rms_error_over_p0", h.rms_error_over_p0},
-                          {"rms_nodes", h.nodes_in_rms},
-                          {"approach_analytic", h.approach_analytic},
-                          {"approach_computed", far_face_approach(*problem, solution.u)},
-                          {"contact_element_size", hertz3d.element_size / hertz3d.refinement}};
-      if (large)
-        summary["hertz"]["reference_frame"] = {{"a_computed", reference.a_computed},
-                                               {"rms_error_over_p0", reference.rms_error_over_p0}};
+      summary["hertz"] = hertz_json(h, reference, large);
+      summary["hertz"]["rms_nodes"] = h.nodes_in_rms;
+      summary["hertz"]["approach_analytic"] = h.approach_analytic;
+      summary["hertz"]["approach_computed"] = far_face_approach(*problem, solution.u);
+      summary["hertz"]["contact_element_size"] = hertz3d.element_size / hertz3d.refinement;
     }
     if (writer)
       write_pressure_csv(out_dir / "contact_pressure.csv", samples);

@@ -174,6 +174,11 @@ printf 'problem: hertz\ndisplacements: {}\n' > "$work/setting_as_map.yaml"
 expect "a setting given a map" "'displacements' must be a single value, not a map" -- "$work/setting_as_map.yaml"
 printf 'problem: hertz\nhertz: {}\n' > "$work/empty_section.yaml"
 expect "an empty section" "section 'hertz' is empty" -- "$work/empty_section.yaml"
+expect "hertz3d cap beyond R/2" "cap_radius = 0.04 m must be in" -- \
+  --set problem=hertz3d --set hertz3d.cap_radius=0.04
+expect "hertz3d half-space smaller than its contact core" "cap_radius and block_radius must be at least 2.5 times" -- \
+  --set problem=hertz3d --set hertz3d.block_radius=0.005
+expect "hertz3d core too fine" "core cells per edge" -- --set problem=hertz3d --set hertz3d.refinement=64
 
 # Explicit dual operators are formed on the Dirichlet preconditioner's boundary.
 expect "explicit operators without the Dirichlet preconditioner" "qp.preconditioner" -- \
