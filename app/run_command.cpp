@@ -7,7 +7,6 @@
 #include "par/communicator.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
-#include "fem/loads.hpp"
 #include "io/atomic_file.hpp"
 #include "io/problem_file.hpp"
 #include "io/settings.hpp"
@@ -61,18 +60,6 @@ double axis_approach(const fem::Problem& problem, const la::Vector& u)
   for (int32_t n : nodes)
     sum += u(3 * n + 1);
   return -sum / static_cast<double>(nodes.size());
-}
-
-/// Approach of the hertz3d sphere: the area-weighted mean of -u_z over its loaded far face,
-/// relative to the block's fixed far face (m).
-double far_face_approach(const fem::Problem& problem, const la::Vector& u)
-{
-  la::Vector weight = la::Vector::Zero(u.size());
-  fem::add_face_traction(problem.mesh, problem.mesh.face_set("sphere_load"), Eigen::Vector3d(0, 0, 1), weight);
-  double sum = 0, area = 0;
-  for (la::Index n = 0; 3 * n < u.size(); ++n)
-    sum -= weight(3 * n + 2) * u(3 * n + 2), area += weight(3 * n + 2);
-  return sum / area;
 }
 
 /// The figures of summary.json's `hertz` block that the 2D (McEwen) and 3D (Hertz)
@@ -277,24 +264,24 @@ void run(const RunOptions& options)
     {
       // As in 2D: the deformed frame for large displacements, the reference frame's beside.
       const bool large = solver.kinematics == fem::Kinematics::total_lagrangian;
-      const problems::Hertz3dAnalytic analytic = problems::hertz3d_analytic(hertz3d);
-      auto radial = [&](bool deformed)
+      std::vector<problems::RadialPressure> at_reference, at_deformed;
+      for (const auto& s : samples)
       {
-        std::vector<problems::RadialPressure> out;
-        for (const auto& s : samples)
-          out.push_back({deformed ? std::hypot(s.deformed_x, s.deformed_y) : std::hypot(s.x, s.y), s.pressure});
-        return out;
-      };
-      const auto reference = problems::compare_with_hertz3d(hertz3d, radial(false), nonlinear::loaded_fraction);
-      const auto h = large ? problems::compare_with_hertz3d(hertz3d, radial(true), nonlinear::loaded_fraction)
+        at_reference.push_back({std::hypot(s.x, s.y), s.pressure});
+        at_deformed.push_back({std::hypot(s.deformed_x, s.deformed_y), s.pressure});
+      }
+      const auto& in_frame = large ? at_deformed : at_reference;
+      const auto reference = problems::compare_with_hertz3d(hertz3d, at_reference, nonlinear::loaded_fraction);
+      const auto h = large ? problems::compare_with_hertz3d(hertz3d, at_deformed, nonlinear::loaded_fraction)
                            : reference;
-      for (auto& s : samples)
-        s.analytic = analytic.pressure(large ? std::hypot(s.deformed_x, s.deformed_y) : std::hypot(s.x, s.y));
+      const problems::Hertz3dAnalytic analytic = problems::hertz3d_analytic(hertz3d);
+      for (size_t i = 0; i < samples.size(); ++i)
+        samples[i].analytic = analytic.pressure(in_frame[i].r);
       summary["contact"]["applied_load"] = 0.25 * hertz3d.load;
       summary["hertz"] = hertz_json(h, reference, large);
       summary["hertz"]["rms_nodes"] = h.nodes_in_rms;
       summary["hertz"]["approach_analytic"] = h.approach_analytic;
-      summary["hertz"]["approach_computed"] = far_face_approach(*problem, solution.u);
+      summary["hertz"]["approach_computed"] = problems::hertz3d_approach(*problem, solution.u);
       summary["hertz"]["contact_element_size"] = hertz3d.element_size / hertz3d.refinement;
     }
     if (writer)

@@ -62,7 +62,7 @@ OctantBall octant_ball(const OctantBallParameters& parameters)
   const int64_t n_nodes = n_core + static_cast<int64_t>(layers) * n_surface;
   out.nodes.resize(n_nodes, 3);
   std::vector<uint8_t> flags(n_nodes, 0);
-  auto flags_of = [n](int i, int j, int k)
+  auto flags_of = [](int i, int j, int k)
   { return static_cast<uint8_t>((i == 0 ? on_x0 : 0) | (j == 0 ? on_y0 : 0) | (k == 0 ? on_d0 : 0)); };
   for (int k = 0; k <= n; ++k)
     for (int j = 0; j <= n; ++j)

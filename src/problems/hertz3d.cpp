@@ -44,7 +44,24 @@ void append_body(mesh::HexMesh& mesh, const mesh::OctantBall& ball, const std::s
   add_faces(ball.symmetry_x, "symmetry_x");
   add_faces(ball.symmetry_y, "symmetry_y");
 }
+/// Tributary areas of the sphere's loaded face: the consistent nodal load of a unit traction
+/// in z (3 entries per node, the z entry holds the area).
+la::Vector load_face_weights(const mesh::HexMesh& mesh)
+{
+  la::Vector weights = la::Vector::Zero(3 * static_cast<la::Index>(mesh.n_nodes()));
+  fem::add_face_traction(mesh, mesh.face_set("sphere_load"), Eigen::Vector3d(0, 0, 1), weights);
+  return weights;
+}
 } // namespace
+
+double hertz3d_approach(const fem::Problem& problem, const la::Vector& u)
+{
+  const la::Vector weights = load_face_weights(problem.mesh);
+  double sum = 0, area = 0;
+  for (la::Index n = 0; 3 * n < u.size(); ++n)
+    sum -= weights(3 * n + 2) * u(3 * n + 2), area += weights(3 * n + 2);
+  return sum / area;
+}
 
 Hertz3dAnalytic hertz3d_analytic(const Hertz3dParameters& parameters)
 {
@@ -121,11 +138,10 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
   };
   // A downward traction on the sphere's far face with resultant F / 4: its area from the
   // consistent load of a unit traction, so the resultant is exact for the discrete face.
-  la::Vector unit = la::Vector::Zero(3 * p.mesh.n_nodes());
-  fem::add_face_traction(p.mesh, p.mesh.face_set("sphere_load"), Eigen::Vector3d(0, 0, 1), unit);
+  const la::Vector weights = load_face_weights(p.mesh);
   double area = 0;
   for (int32_t n = 0; n < p.mesh.n_nodes(); ++n)
-    area += unit(3 * n + 2);
+    area += weights(3 * n + 2);
   p.tractions = {{"sphere_load", Eigen::Vector3d(0, 0, -0.25 * parameters.load / area)}};
   p.contacts = {{"sphere_contact", "block_contact"}};
   p.validate();

@@ -56,6 +56,10 @@ Hertz3dAnalytic hertz3d_analytic(const Hertz3dParameters& parameters);
 /// The problem; throws feticon::Error naming a parameter out of range.
 fem::Problem hertz3d_problem(const Hertz3dParameters& parameters);
 
+/// Approach of the sphere under the displacement u: the area-weighted mean of -u_z over its
+/// loaded far face, relative to the block's fixed far face (m).
+double hertz3d_approach(const fem::Problem& problem, const la::Vector& u);
+
 /// One slave node's pressure at its distance r from the axis (in the frame of the comparison).
 struct RadialPressure
 {
