@@ -14,6 +14,7 @@
 
 #include "app/commands.hpp"
 #include "app/mprgp_benchmark.hpp"
+#include "app/memory_guard.hpp"
 #include "app/problem_setup.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
@@ -49,6 +50,8 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   FETICON_CHECK(file.settings.text("method") != "primal_penalty",
                 "feticon bench measures the FETI methods; set method=smalbe or dual_penalty");
   TimerTable timers;
+  const MeshPrediction predicted = predict_mesh(file);
+  guard_memory(file.settings, predicted.nodes, predicted.plane_strain, "problem " + file.settings.text("problem"));
   std::unique_ptr<fem::Problem> problem;
   {
     ScopedTimer t(timers, "mesh");

@@ -69,9 +69,12 @@ void write_checkpoint(const std::filesystem::path& path, const nonlinear::Contac
 
 void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSolution& solution)
 {
+  FETICON_CHECK(std::filesystem::exists(path),
+                "--restart: " << path.parent_path().string() << " has no " << path.filename().string()
+                              << ": the run ended before its first load step converged, so there is "
+                                 "nothing to continue; start it again (feticon run --overwrite)");
   std::ifstream is(path, std::ios::binary);
-  FETICON_CHECK(is, "cannot open the checkpoint " << path.string()
-                                                  << " (was the run started by this version of feticon?)");
+  FETICON_CHECK(is, "cannot open the checkpoint " << path.string());
   char head[8];
   is.read(head, 8);
   FETICON_CHECK(is && std::equal(head, head + 8, magic), path.string() << " is not a feticon checkpoint");

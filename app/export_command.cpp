@@ -7,6 +7,7 @@
 ///       writes deck/feticon.inp; `cd deck && ccx feticon` solves it.
 
 #include "app/commands.hpp"
+#include "app/memory_guard.hpp"
 #include "app/problem_setup.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
@@ -36,6 +37,10 @@ void export_model(const ExportOptions& options)
   FETICON_CHECK(options.format == "calculix",
                 "export: --format " << options.format << " is not known; the one format is calculix");
   const io::ProblemFile file = io::load_problem_file(options.problem_file, options.overrides);
+  // The mesh and the deck only: no solve, so the guard counts the mesh alone.
+  const MeshPrediction predicted = predict_mesh(file);
+  check_fits(estimate_mesh_memory(predicted.nodes), memory_budget(file.settings),
+             "exporting problem " + file.settings.text("problem"));
   const fem::Problem problem = build_problem(file);
   // Kinematics and load steps exactly as `feticon run` takes them.
   const nonlinear::SolverSettings solver = solver_settings(file.settings, problem);

@@ -51,6 +51,19 @@ problems::Hertz3dParameters hertz3d_parameters(const io::Settings& s)
   return p;
 }
 
+MeshPrediction predict_mesh(const io::ProblemFile& file)
+{
+  const std::string& kind = file.settings.text("problem");
+  if (kind == "hertz")
+    return {mesh::hertz_node_estimate(hertz_parameters(file.settings).mesh), true};
+  if (kind == "hertz3d")
+    return {problems::hertz3d_node_count(hertz3d_parameters(file.settings)), false};
+  if (kind == "cantilever_obstacle")
+    return {problems::cantilever_obstacle_node_count(cantilever_parameters(file.settings)), true};
+  const io::CustomMeshSize size = io::custom_mesh_size(file);
+  return {size.nodes, size.plane_strain};
+}
+
 fem::Problem build_problem(const io::ProblemFile& file)
 {
   const std::string& kind = file.settings.text("problem");
@@ -142,21 +155,22 @@ nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution)
   for (const auto& it : solution.history)
     if (it.ritz.cg_steps > longest.cg_steps)
       longest = it.ritz;
-  nlohmann::ordered_json spectrum = nullptr;
+  nlohmann::ordered_json json = {
+      {"iterations", sum.qp_iterations},
+      {"hessian_multiplications", sum.hessian_multiplications},
+      {"cg_steps", sum.cg_steps},
+      {"expansion_steps", sum.expansion_steps},
+      {"proportioning_steps", sum.proportioning_steps},
+      {"smalbe_outer_iterations", sum.smalbe_outer},
+      {"rho_updates", sum.rho_updates},
+      {"final_rho", solution.history.empty() ? 0.0 : solution.history.back().final_rho},
+      {"outer_iterations", solution.history.size()}};
+  // Only when some CG run measured it: no null in summary.json.
   if (longest.cg_steps > 0)
-    spectrum = {{"ritz_min", longest.min},
-                {"ritz_max", longest.max},
-                {"condition_estimate", longest.max / longest.min},
-                {"cg_steps", longest.cg_steps}};
-  return {{"iterations", sum.qp_iterations},
-          {"hessian_multiplications", sum.hessian_multiplications},
-          {"cg_steps", sum.cg_steps},
-          {"expansion_steps", sum.expansion_steps},
-          {"proportioning_steps", sum.proportioning_steps},
-          {"smalbe_outer_iterations", sum.smalbe_outer},
-          {"rho_updates", sum.rho_updates},
-          {"final_rho", solution.history.empty() ? 0.0 : solution.history.back().final_rho},
-          {"outer_iterations", solution.history.size()},
-          {"face_spectrum", spectrum}};
+    json["face_spectrum"] = {{"ritz_min", longest.min},
+                             {"ritz_max", longest.max},
+                             {"condition_estimate", longest.max / longest.min},
+                             {"cg_steps", longest.cg_steps}};
+  return json;
 }
 } // namespace feticon::app

@@ -18,6 +18,16 @@ namespace feticon::app
 problems::HertzParameters hertz_parameters(const io::Settings& settings);
 problems::Hertz3dParameters hertz3d_parameters(const io::Settings& settings);
 
+/// The size of the mesh `build_problem` would make, known before it is made (memory guard):
+/// counted for the built-in meshes and boxes (estimated for Hertz's Gmsh mesh from its size
+/// field), declared in a Gmsh file's header.
+struct MeshPrediction
+{
+  int64_t nodes = 0;
+  bool plane_strain = false;
+};
+MeshPrediction predict_mesh(const io::ProblemFile& file);
+
 /// The problem of `problem`: built-in hertz or cantilever_obstacle, else the file's custom
 /// sections.
 fem::Problem build_problem(const io::ProblemFile& file);

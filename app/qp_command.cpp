@@ -11,6 +11,7 @@
 /// written), 1 invalid input (one line on stderr, from app/main.cpp).
 
 #include "app/commands.hpp"
+#include "app/memory_guard.hpp"
 #include "common/error.hpp"
 #include "la/matrix_market.hpp"
 #include "la/operator.hpp"
@@ -72,6 +73,11 @@ void print_iterate(const qp::MprgpIterate& it)
 
 void run_qp(const QpArguments& arguments)
 {
+  // The memory guard, from the size line before the entries are read.
+  const la::MatrixMarketSize declared = la::read_matrix_market_size(arguments.matrix_path);
+  check_fits(estimate_qp_memory(std::max(declared.rows, declared.cols), (declared.symmetric ? 2 : 1) * declared.entries),
+             memory_budget(0.0), "qp: " + arguments.matrix_path + " (" + std::to_string(declared.rows) + " x " +
+                                     std::to_string(declared.cols) + ", " + std::to_string(declared.entries) + " entries)");
   const la::SparseMatrix A = la::read_matrix_market_sparse(arguments.matrix_path);
   check_symmetric(A, arguments.matrix_path);
   const la::Index n = A.rows();

@@ -2,6 +2,7 @@
 
 #include "app/checkpoint.hpp"
 #include "app/commands.hpp"
+#include "app/memory_guard.hpp"
 #include "app/problem_setup.hpp"
 #include "app/run_output.hpp"
 #include "par/communicator.hpp"
@@ -33,6 +34,7 @@ struct RunOptions
   std::string restart; ///< results folder of an interrupted run to continue
   bool quiet = false;
   bool verbose = false;
+  bool overwrite = false; ///< replace another run's results in the output folder
 };
 
 /// The problem as run: every setting (defaults, file, overrides) and the structured sections,
@@ -110,6 +112,13 @@ void run(const RunOptions& options)
       restart ? restart_dir / "problem.yaml" : std::filesystem::path(options.problem_file), options.overrides);
   const io::Settings& settings = file.settings;
 
+  // The memory guard, before anything large is allocated and before an earlier run's results
+  // are cleared (--overwrite): the mesh's size predicted from the settings or the Gmsh header.
+  // It is checked again for the mesh as made, before the factorizations.
+  const std::string what = "problem " + settings.text("problem");
+  const MeshPrediction predicted = predict_mesh(file);
+  guard_memory(settings, predicted.nodes, predicted.plane_strain, what);
+
   // Under MPI every rank runs this function; rank 0 writes the folder's shared files, every
   // rank its piece of each step's VTU.
   const par::Communicator comm = par::Communicator::world();
@@ -117,11 +126,11 @@ void run(const RunOptions& options)
   const std::filesystem::path out_dir(restart ? options.restart : options.output);
   if (writer)
   {
-    std::error_code ec;
-    std::filesystem::create_directories(out_dir, ec);
-    FETICON_CHECK(!ec, "cannot create the output folder " << out_dir.string() << ": " << ec.message());
     if (!restart)
+    {
+      prepare_output_folder(out_dir, options.overwrite);
       io::write_file_atomically(out_dir / "problem.yaml", effective_problem(file));
+    }
   }
   comm.barrier();
 
@@ -136,6 +145,8 @@ void run(const RunOptions& options)
     ScopedTimer t(timers, "mesh");
     problem = std::make_unique<fem::Problem>(build_problem(file));
   }
+  const MemoryEstimate memory_estimate =
+      guard_memory(settings, problem->mesh.n_nodes(), problem->eliminated[2], what); // the mesh as made
   const nonlinear::SolverSettings solver = solver_settings(settings, *problem);
   const int64_t n_dofs = 3 * static_cast<int64_t>(problem->mesh.n_nodes());
   log::info("feticon: problem " + problem->name + ", " + std::to_string(problem->mesh.n_cells()) +
@@ -323,6 +334,7 @@ void run(const RunOptions& options)
   summary["ranks"] = comm.size();
   const std::vector<int64_t> memory = comm.all_gather(std::vector<int64_t>{static_cast<int64_t>(peak_memory_bytes())});
   summary["peak_memory_bytes"] = *std::max_element(memory.begin(), memory.end());
+  summary["memory_estimate_bytes"] = memory_estimate.per_rank;
   if (!comm.serial())
     summary["peak_memory_bytes_per_rank"] = memory;
   if (writer)
@@ -350,6 +362,9 @@ void register_run_command(CLI::App& app)
   cmd->add_option("--restart", options->restart,
                   "continue the interrupted run whose results folder is DIR from its last "
                   "converged load step (the folder keeps problem.yaml and checkpoint.bin)");
+  cmd->add_flag("--overwrite", options->overwrite,
+                "replace the results of an earlier run in the output folder (its feticon files are "
+                "removed first; without this flag such a folder is refused)");
   cmd->add_flag("--quiet,-q", options->quiet, "only warnings and errors");
   cmd->add_flag("--verbose,-v", options->verbose, "also one line per QP iteration");
   cmd->footer("Settings (KEY for --set or the problem file; nested YAML maps give dotted keys):\n" +

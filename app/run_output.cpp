@@ -2,6 +2,7 @@
 
 #include "fem/stress.hpp"
 #include "fem/hex8_element.hpp"
+#include "common/error.hpp"
 #include "common/log.hpp"
 #include "io/atomic_file.hpp"
 
@@ -11,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numeric>
+#include <regex>
 #include <sstream>
 
 extern char** environ; // the environment passed on to the plotting script
@@ -197,6 +199,46 @@ void plot_results(const std::filesystem::path& out_dir)
   posix_spawn_file_actions_destroy(&quiet);
   if (!started || waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
     log::warning("no PNG plots: " + script.string() + " failed (python3-matplotlib installed?)");
+}
+
+namespace
+{
+/// Whether `name` is a file a run writes into its folder (run_command.cpp, plot_hertz.py,
+/// the checkpoint), including the temporaries of atomic writes.
+bool is_result_file(const std::string& name)
+{
+  static const std::regex pattern(
+      R"((summary\.json|problem\.yaml|history\.csv|contact_pressure\.csv|solution\.pvd|checkpoint\.bin|)"
+      R"(contact_pressure\.png|iterations\.png|step_[0-9]+(_rank[0-9]+)?\.p?vtu)(\.tmp\..*)?)");
+  return std::regex_match(name, pattern);
+}
+} // namespace
+
+void prepare_output_folder(const std::filesystem::path& out_dir, bool overwrite)
+{
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(out_dir, ec))
+  {
+    FETICON_CHECK(fs::is_directory(out_dir, ec),
+                  "the output folder " << out_dir.string() << " exists and is not a folder");
+    std::vector<fs::path> results;
+    for (const auto& entry : fs::directory_iterator(out_dir, ec))
+      if (entry.is_regular_file(ec) && is_result_file(entry.path().filename().string()))
+        results.push_back(entry.path());
+    FETICON_CHECK(!ec, "cannot read the output folder " << out_dir.string() << ": " << ec.message());
+    FETICON_CHECK(results.empty() || overwrite,
+                  "the output folder " << out_dir.string() << " holds another run's results ("
+                                       << results.front().filename().string()
+                                       << "); give --overwrite to replace them, or another --output");
+    for (const auto& file : results)
+    {
+      fs::remove(file, ec);
+      FETICON_CHECK(!ec, "--overwrite: cannot remove " << file.string() << ": " << ec.message());
+    }
+  }
+  fs::create_directories(out_dir, ec);
+  FETICON_CHECK(!ec, "cannot create the output folder " << out_dir.string() << ": " << ec.message());
 }
 
 void write_json(const std::filesystem::path& path, const nlohmann::ordered_json& json)

@@ -42,6 +42,12 @@ std::string format_summary(const nlohmann::ordered_json& summary);
 /// is not possible.
 void plot_results(const std::filesystem::path& out_dir);
 
+/// Makes `out_dir` ready for a new run. A folder holding another run's results (any file
+/// feticon writes: summary.json, problem.yaml, step_*.vtu, ...) is refused with a one-line
+/// error unless `overwrite`, which first removes those files (and only those), so no stale
+/// step of the earlier run stays beside the new ones.
+void prepare_output_folder(const std::filesystem::path& out_dir, bool overwrite);
+
 /// Writes JSON atomically with 2-space indentation.
 void write_json(const std::filesystem::path& path, const nlohmann::ordered_json& json);
 } // namespace feticon::app

@@ -6,4 +6,4 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/install-deps.sh"
 cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFETICON_BUILD_TESTS=OFF >/dev/null
 cmake --build "$root/build" --target feticon -j "$(nproc)"
-"$root/build/feticon" run --output "$root/results" "$@"
+"$root/build/feticon" run --overwrite --output "$root/results" "$@"

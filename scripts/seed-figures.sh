@@ -14,7 +14,7 @@ cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFETICON_
 cmake --build "$root/build" --target feticon -j "$(nproc)"
 feticon="$root/build/feticon"
 mkdir -p "$out"
-run() { local dir="$1"; shift; "$feticon" run -q --output "$out/$dir" "$@" >/dev/null || echo "run $dir failed"; }
+run() { local dir="$1"; shift; "$feticon" run -q --overwrite --output "$out/$dir" "$@" >/dev/null || echo "run $dir failed"; }
 
 small=(--set displacements=small)
 for eps in 0.0001 0.001 0.01 0.1 1; do run "primal_$eps" "${small[@]}" --set method=primal_penalty --set eps_n=$eps "$@"; done

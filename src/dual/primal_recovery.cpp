@@ -19,7 +19,9 @@ PrimalSolution recover_primal(const FetiOperators& feti, const la::Vector& f, co
   {
     const CoarseProjector active_coarse(feti, std::nothrow, active);
     FETICON_CHECK(active_coarse.full_rank(),
-                  "primal recovery: the active constraints do not fix every rigid-body motion");
+                  "no active contact holds a body that only contact can hold (the active constraints leave a "
+                  "rigid-body motion free): is the load zero, too small to press the bodies together, or "
+                  "pulling them apart? Check loads and the contact pairs");
     out.alpha = active_coarse.coarse_solve(feti.apply_G(residual, &active));
   }
   else

@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "mesh/box.hpp"
+#include "mesh/gmsh_precheck.hpp"
 #include "mesh/gmsh_reader.hpp"
 
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <set>
 #include <sstream>
+#include <yaml-cpp/depthguard.h>
 
 namespace feticon::io
 {
@@ -176,7 +178,7 @@ mesh::HexMesh boxes_mesh(const YAML::Node& boxes, const Reader& r)
     const Eigen::Vector3d cells = r.vector3(boxes[i]["cells"], key + ".cells");
     for (int d = 0; d < 3; ++d)
       FETICON_CHECK(cells(d) >= 1 && cells(d) == std::floor(cells(d)) && cells(d) <= 1e4,
-                    r.source << ": " << key << ".cells must be three positive integers");
+                    r.source << ": " << key << ".cells must be three positive integers (at most 10000)");
     p.nx = static_cast<int>(cells(0));
     p.ny = static_cast<int>(cells(1));
     p.nz = static_cast<int>(cells(2));
@@ -213,9 +215,25 @@ ProblemFile load_problem_file(const std::filesystem::path& path,
   if (!path.empty())
   {
     FETICON_CHECK(std::filesystem::exists(path), "problem file " << path.string() << " does not exist");
+    // Problem files hold settings and small lists; 16 MiB is far beyond any real one.
+    constexpr std::uintmax_t max_problem_file_bytes = 16u << 20;
+    // Not a folder, a device or a FIFO (/dev/zero would be read forever), and settings-sized:
+    // meshes go in their own files (mesh.file).
+    std::error_code ec;
+    FETICON_CHECK(std::filesystem::is_regular_file(path, ec),
+                  "problem file " << path.string() << " is not a regular file (a folder or a device?)");
+    const auto bytes = std::filesystem::file_size(path, ec);
+    FETICON_CHECK(!ec && bytes <= max_problem_file_bytes,
+                  "problem file " << path.string() << " has " << bytes << " bytes; a problem file holds settings "
+                                  "(at most " << max_problem_file_bytes << " bytes), a mesh goes in mesh.file");
     try
     {
       file.root = YAML::LoadFile(path.string());
+    }
+    catch (const YAML::DeepRecursion& e)
+    {
+      FETICON_CHECK(false, path.string() << ": YAML nested deeper than the reader's limit at line " << e.mark.line + 1
+                                         << "; a problem file nests a few levels (sections, lists of maps)");
     }
     catch (const YAML::Exception& e)
     {
@@ -281,6 +299,45 @@ ProblemFile load_problem_file(const std::filesystem::path& path,
                                                          << "; add 'problem: custom' or remove it");
     }
   return file;
+}
+
+CustomMeshSize custom_mesh_size(const ProblemFile& file)
+{
+  const Reader r{file.source};
+  const YAML::Node& root = file.root;
+  FETICON_CHECK(root["mesh"], file.source << ": problem: custom needs a 'mesh' section (file: or boxes:)");
+  r.only_keys(root["mesh"], "mesh", {"file", "boxes"});
+  CustomMeshSize size;
+  size.plane_strain = root["plane_strain"] && root["plane_strain"].IsScalar() &&
+                      root["plane_strain"].Scalar() == "true";
+  if (root["mesh"]["file"])
+  {
+    const std::filesystem::path path = file.folder / r.text(root["mesh"]["file"], "mesh.file");
+    std::error_code ec;
+    // A missing or unreadable file is left to the reader's messages; 0 nodes passes the guard.
+    if (std::filesystem::is_regular_file(path, ec))
+      size.nodes = std::max<int64_t>(0, mesh::precheck_gmsh_file(path, "Gmsh file '" + path.string() + "'").nodes);
+    return size;
+  }
+  const YAML::Node boxes = root["mesh"]["boxes"];
+  if (!boxes.IsSequence())
+    return size;
+  for (size_t i = 0; i < boxes.size(); ++i)
+  {
+    const std::string key = "mesh.boxes." + std::to_string(i);
+    if (!boxes[i].IsMap() || !boxes[i]["cells"])
+      continue; // boxes_mesh says what is missing
+    const Eigen::Vector3d cells = r.vector3(boxes[i]["cells"], key + ".cells");
+    double nodes = 1;
+    for (int d = 0; d < 3; ++d)
+    {
+      FETICON_CHECK(cells(d) >= 1 && cells(d) == std::floor(cells(d)) && cells(d) <= 1e4,
+                    r.source << ": " << key << ".cells must be three positive integers (at most 10000)");
+      nodes *= cells(d) + 1;
+    }
+    size.nodes += static_cast<int64_t>(nodes);
+  }
+  return size;
 }
 
 fem::Problem build_custom_problem(const ProblemFile& file)
@@ -372,6 +429,8 @@ fem::Problem build_custom_problem(const ProblemFile& file)
       for (const std::string& s : {pair.slave, pair.master})
         FETICON_CHECK(p.mesh.face_sets.count(s), file.source << ": " << key << ": no face set '" << s
                                                               << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
+      FETICON_CHECK(pair.slave != pair.master, file.source << ": " << key << ": slave and master are the same face set '"
+                                                            << pair.slave << "'; a contact pair needs two surfaces");
       p.contacts.push_back(pair);
     }
   }

@@ -40,6 +40,15 @@ struct ProblemFile
 ProblemFile load_problem_file(const std::filesystem::path& path,
                               const std::vector<std::string>& overrides);
 
+/// The size of a `problem: custom` file's mesh before it is built or read: nodes of the
+/// boxes, or as declared in the Gmsh file's header (memory guard).
+struct CustomMeshSize
+{
+  int64_t nodes = 0;
+  bool plane_strain = false;
+};
+CustomMeshSize custom_mesh_size(const ProblemFile& file);
+
 /// The problem of a `problem: custom` file: mesh, bodies, supports, loads, contact.
 fem::Problem build_custom_problem(const ProblemFile& file);
 

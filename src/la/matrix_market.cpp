@@ -9,6 +9,7 @@
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -23,8 +24,23 @@ class LineReader
 public:
   explicit LineReader(const std::string& path) : _path(path), _in(path)
   {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+      throw Error(path + (std::filesystem::exists(path, ec) ? ": is not a regular file (a folder or a device?)"
+                                                             : ": no such Matrix Market file"));
     if (!_in)
       throw Error(path + ": cannot open the Matrix Market file for reading");
+    _bytes = static_cast<long double>(std::filesystem::file_size(path, ec));
+  }
+
+  /// Refuses a size line declaring more lines than the file could hold (each at least
+  /// `min_bytes` long): a corrupt header, refused before anything is allocated for it.
+  void check_plausible(long double lines, int min_bytes, const char* what) const
+  {
+    if (lines * min_bytes > _bytes)
+      fail("the size line declares " + std::to_string(static_cast<long long>(std::min(lines, 1e18L))) + " " +
+           what + ", more than the " + std::to_string(static_cast<long long>(_bytes)) +
+           " bytes of the file could hold");
   }
 
   /// Next line, without a trailing '\r'; false at the end of the file.
@@ -65,6 +81,7 @@ private:
   std::string _path;
   std::ifstream _in;
   long _line = 0;
+  long double _bytes = 0;
 };
 
 /// Whitespace-separated numbers of one line, checked one by one.
@@ -226,6 +243,7 @@ std::vector<Triplet> read_coordinate(LineReader& reader, bool symmetric, bool co
   if (symmetric && rows != cols)
     reader.fail("a symmetric matrix must be square, found " + std::to_string(rows) + " x " +
                 std::to_string(cols));
+  reader.check_plausible(entries, 6, "entries"); // "i j v\n"
 
   std::vector<Triplet> triplets;
   triplets.reserve(static_cast<std::size_t>(std::min(entries, 1LL << 24)) *
@@ -254,6 +272,26 @@ std::vector<Triplet> read_coordinate(LineReader& reader, bool symmetric, bool co
   return triplets;
 }
 } // namespace
+
+MatrixMarketSize read_matrix_market_size(const std::string& path)
+{
+  LineReader reader(path);
+  const Header header = read_header(reader);
+  std::string line;
+  if (!reader.next_data(line))
+    reader.fail_at_end("file ends before the size line");
+  Tokens size(line, reader);
+  MatrixMarketSize out;
+  out.rows = read_dimension(size, reader, "row count");
+  out.cols = read_dimension(size, reader, "column count");
+  out.entries = header.coordinate ? size.integer("entry count") : static_cast<long long>(out.rows) * out.cols;
+  if (header.coordinate && (out.entries < 0 || static_cast<long double>(out.entries) >
+                                                   static_cast<long double>(out.rows) * out.cols))
+    reader.fail("entry count " + std::to_string(out.entries) + " must be in 0..rows*columns");
+  reader.check_plausible(out.entries, header.coordinate ? 6 : 2, header.coordinate ? "entries" : "values");
+  out.symmetric = header.symmetric;
+  return out;
+}
 
 SparseMatrix read_matrix_market_sparse(const std::string& path)
 {
@@ -295,6 +333,7 @@ Vector read_matrix_market_dense(const std::string& path)
   if (cols != 1)
     reader.fail("expected a column vector (1 column), found " + std::to_string(cols) +
                 " columns");
+  reader.check_plausible(rows, 2, "values"); // "v\n"
   Vector vector(rows);
   for (int i = 0; i < rows; ++i)
   {

@@ -20,6 +20,16 @@
 
 namespace feticon::la
 {
+/// What a file's header and size line declare, read without its entries (memory guard).
+struct MatrixMarketSize
+{
+  int rows = 0;
+  int cols = 0;
+  long long entries = 0; ///< stored entries (one triangle of a symmetric file); rows * cols for `array`
+  bool symmetric = false;
+};
+MatrixMarketSize read_matrix_market_size(const std::string& path);
+
 /// @brief Reads a sparse matrix from a `coordinate` file.
 /// @param[in] path  the file.
 /// @return the matrix; duplicate entries are summed; a `symmetric` file stores one

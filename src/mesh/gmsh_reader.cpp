@@ -1,4 +1,5 @@
 #include "mesh/gmsh_reader.hpp"
+#include "mesh/gmsh_precheck.hpp"
 
 #include "common/error.hpp"
 
@@ -366,18 +367,24 @@ HexMesh read_gmsh(const std::filesystem::path& path)
 {
   const std::string where = "Gmsh file '" + path.string() + "'";
   std::error_code error;
-  FETICON_CHECK(std::filesystem::is_regular_file(path, error),
+  FETICON_CHECK(std::filesystem::exists(path, error),
                 where << ": no such file"
                       << (path.is_relative()
                               ? " (relative to the working directory " +
                                     std::filesystem::current_path(error).string() + ")"
                               : std::string()));
+  FETICON_CHECK(std::filesystem::is_regular_file(path, error),
+                where << ": is " << (std::filesystem::is_directory(path, error) ? "a folder" : "not a regular file")
+                      << "; mesh.file names a .msh file");
   FETICON_CHECK(std::ifstream(path).good(), where << ": cannot be opened for reading");
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   FETICON_CHECK(extension == ".msh", where << ": expected a mesh file ending in .msh; mesh a "
                                               "geometry first, e.g. gmsh -3 -format msh41 x.geo");
+
+  // What would crash libgmsh's reader is an input error here.
+  precheck_gmsh_file(path, where);
 
   const char* stage = "opening";
   try

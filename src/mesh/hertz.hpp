@@ -90,6 +90,11 @@ struct HertzMeshParameters
 /// @throws feticon::Error naming the offending parameter if one is out of range.
 HexMesh generate_hertz(const HertzMeshParameters& parameters);
 
+/// Nodes of the mesh generate_hertz would build, estimated without building it (memory guard):
+/// exact up to rounding for `tensor`, the integral of the size field for `graded`.
+/// @throws feticon::Error as generate_hertz for parameters out of range
+int64_t hertz_node_estimate(const HertzMeshParameters& parameters);
+
 /// Cell sizes of a contact surface near the first contact point x = 0.
 struct ContactZoneSummary
 {

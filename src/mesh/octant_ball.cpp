@@ -13,7 +13,7 @@ namespace
 constexpr uint8_t on_x0 = 1, on_y0 = 2, on_d0 = 4, on_outer = 8;
 } // namespace
 
-OctantBall octant_ball(const OctantBallParameters& parameters)
+OctantBallSize octant_ball_size(const OctantBallParameters& parameters)
 {
   const int n = parameters.core_cells;
   const double h = parameters.cell_size;
@@ -27,6 +27,33 @@ OctantBall octant_ball(const OctantBallParameters& parameters)
   FETICON_CHECK(std::isfinite(R) && R >= 2.5 * c,
                 "octant ball: radius " << R << " must be at least 2.5 times the core width " << c);
 
+  // Layer radii. The mean tangential cell size on a sphere of radius r is r sqrt(pi/6) / n (the
+  // octant's area pi r^2 / 2 over 3 n^2 cells), so growth g = aspect sqrt(pi/6) / n per layer
+  // keeps radial / tangential = aspect. Over the first B layers the ray length blends from the
+  // box's, t |p| / c, to the sphere's, t s with s = (1 + sqrt 3) / 2 (between the face centre's
+  // 1 and the corner's sqrt 3); B is chosen so that even the corner ray, which shrinks from
+  // sqrt 3 to s, still grows by at least g / 2 per layer. The last layer lies on |p| = R.
+  const double s = 0.5 * (1 + std::sqrt(3.0));
+  const double g0 = parameters.radial_aspect * std::sqrt(M_PI / 6) / n;
+  const int blend = std::max(1, static_cast<int>(std::ceil((std::sqrt(3.0) - s) / (0.5 * g0 * s))));
+  OctantBallSize size;
+  size.blend_layers = blend;
+  size.layers =
+      std::max(blend + 1, static_cast<int>(std::ceil(std::log(R / (c * s)) / std::log1p(g0))));
+  const int64_t m = n + 1, surface = m * m * m - int64_t(n) * n * n;
+  size.nodes = m * m * m + size.layers * surface;
+  size.cells = int64_t(n) * n * n + size.layers * 3 * int64_t(n) * n;
+  return size;
+}
+
+OctantBall octant_ball(const OctantBallParameters& parameters)
+{
+  const int n = parameters.core_cells;
+  const double h = parameters.cell_size;
+  const OctantBallSize size = octant_ball_size(parameters);
+  const int layers = size.layers, blend = size.blend_layers;
+  const double c = n * h;
+  const double R = parameters.radius;
   // Core nodes (i, j, k) in [0, n]^3; the nodes of its outer faces x = c, y = c, d = c (the
   // "surface", max(i, j, k) = n) are the roots of the rays of the shell layers.
   const int m = n + 1;
@@ -44,17 +71,8 @@ OctantBall octant_ball(const OctantBallParameters& parameters)
         }
   const int32_t n_surface = static_cast<int32_t>(surface_ijk.size());
 
-  // Layer radii. The mean tangential cell size on a sphere of radius r is r sqrt(pi/6) / n (the
-  // octant's area pi r^2 / 2 over 3 n^2 cells), so growth g = aspect sqrt(pi/6) / n per layer
-  // keeps radial / tangential = aspect. Over the first B layers the ray length blends from the
-  // box's, t |p| / c, to the sphere's, t s with s = (1 + sqrt 3) / 2 (between the face centre's
-  // 1 and the corner's sqrt 3); B is chosen so that even the corner ray, which shrinks from
-  // sqrt 3 to s, still grows by at least g / 2 per layer. The last layer lies on |p| = R.
+  // Layer radii: see octant_ball_size.
   const double s = 0.5 * (1 + std::sqrt(3.0));
-  const double g0 = parameters.radial_aspect * std::sqrt(M_PI / 6) / n;
-  const int blend = std::max(1, static_cast<int>(std::ceil((std::sqrt(3.0) - s) / (0.5 * g0 * s))));
-  const int layers =
-      std::max(blend + 1, static_cast<int>(std::ceil(std::log(R / (c * s)) / std::log1p(g0))));
   const double g = std::pow(R / (c * s), 1.0 / layers) - 1;
 
   OctantBall out;

@@ -44,6 +44,18 @@ struct OctantBall
   int layers = 0;               ///< shell layers between the core and the sphere
 };
 
+/// Counts of the mesh octant_ball would build, without building it (memory estimates).
+struct OctantBallSize
+{
+  int layers = 0;       ///< shell layers
+  int blend_layers = 0; ///< the first layers, which blend the core's faces into the sphere
+  int64_t nodes = 0;
+  int64_t cells = 0;
+};
+
+/// @throws feticon::Error when a parameter is out of range (the message names it).
+OctantBallSize octant_ball_size(const OctantBallParameters& parameters);
+
 /// @throws feticon::Error when a parameter is out of range (the message names it).
 OctantBall octant_ball(const OctantBallParameters& parameters);
 } // namespace feticon::mesh

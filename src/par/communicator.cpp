@@ -25,7 +25,11 @@ std::vector<T> gather_impl(MPI_Comm comm, int size, const std::vector<T>& local,
                  comm);
   return out;
 }
+/// Ranks of MPI_COMM_WORLD sharing this rank's node (1 without MPI), set by Environment.
+int node_ranks = 1;
 } // namespace
+
+int ranks_on_this_node() { return node_ranks; }
 
 Environment::Environment(int& argc, char**& argv)
 {
@@ -44,6 +48,7 @@ Environment::Environment(int& argc, char**& argv)
   int ranks_on_node = 1;
   MPI_Comm_size(node, &ranks_on_node);
   MPI_Comm_free(&node);
+  node_ranks = std::max(1, ranks_on_node);
   set_threads(hardware_cores() / std::max(1, ranks_on_node));
 }
 

@@ -20,6 +20,9 @@
 
 namespace feticon::par
 {
+/// Ranks of MPI_COMM_WORLD on this rank's node (they share its memory); 1 without MPI.
+int ranks_on_this_node();
+
 /// MPI_Init / MPI_Finalize for the lifetime of main(), when an MPI launcher started the
 /// process (mpirun, mpiexec, srun: they set OMPI_COMM_WORLD_SIZE, PMIX_RANK or PMI_RANK). A
 /// process started alone runs serial without MPI: OpenMPI's singleton start costs 0.5 s,

@@ -12,7 +12,10 @@ double cantilever_tip_load(const CantileverObstacleParameters& p)
   return p.linear_deflection_ratio * p.length * 3 * E_plane * I / (p.length * p.length * p.length);
 }
 
-fem::Problem cantilever_obstacle_problem(const CantileverObstacleParameters& p)
+namespace
+{
+/// The beam and the obstacle.
+std::pair<mesh::BoxParameters, mesh::BoxParameters> boxes(const CantileverObstacleParameters& p)
 {
   FETICON_CHECK(p.length > 0 && p.depth > 0 && p.gap > 0 && p.cells_along >= 10,
                 "cantilever_obstacle: length, depth, gap must be positive and cells_along >= 10");
@@ -31,7 +34,21 @@ fem::Problem cantilever_obstacle_problem(const CantileverObstacleParameters& p)
   obstacle.ny = 4;
   obstacle.nz = 1;
   obstacle.body_name = "obstacle";
+  return {beam, obstacle};
+}
+} // namespace
 
+int64_t cantilever_obstacle_node_count(const CantileverObstacleParameters& p)
+{
+  int64_t nodes = 0;
+  for (const mesh::BoxParameters& b : {boxes(p).first, boxes(p).second})
+    nodes += int64_t(b.nx + 1) * (b.ny + 1) * (b.nz + 1);
+  return nodes;
+}
+
+fem::Problem cantilever_obstacle_problem(const CantileverObstacleParameters& p)
+{
+  const auto [beam, obstacle] = boxes(p);
   fem::Problem problem;
   problem.name = "cantilever_obstacle";
   problem.mesh = mesh::generate_box(obstacle);

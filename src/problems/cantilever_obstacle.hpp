@@ -26,6 +26,9 @@ struct CantileverObstacleParameters
 
 fem::Problem cantilever_obstacle_problem(const CantileverObstacleParameters& parameters);
 
+/// Nodes of the mesh cantilever_obstacle_problem builds, counted without building it.
+int64_t cantilever_obstacle_node_count(const CantileverObstacleParameters& parameters);
+
 /// Total tip load P (N) of the parameters.
 double cantilever_tip_load(const CantileverObstacleParameters& parameters);
 } // namespace feticon::problems

@@ -80,7 +80,10 @@ double Hertz3dAnalytic::pressure(double r) const
   return q < 1 ? peak_pressure * std::sqrt(1 - q * q) : 0.0;
 }
 
-fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
+namespace
+{
+/// The two octant balls of the hertz3d mesh (sphere, block), after checking the parameters.
+std::pair<mesh::OctantBallParameters, mesh::OctantBallParameters> octant_balls(const Hertz3dParameters& parameters)
 {
   const double R = parameters.radius;
   FETICON_CHECK(std::isfinite(R) && R > 0, "hertz3d: radius = " << R << " m must be positive");
@@ -104,10 +107,23 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
   FETICON_CHECK(parameters.cap_radius >= 2.5 * core && parameters.block_radius >= 2.5 * core,
                 "hertz3d: cap_radius and block_radius must be at least 2.5 times the contact core width "
                     << core << " m (1.25 contact radii)");
+  return {{h, slave_cells, parameters.cap_radius, parameters.radial_aspect},
+          {h_master, master_cells, parameters.block_radius, parameters.radial_aspect}};
+}
+} // namespace
 
-  const mesh::OctantBall sphere = mesh::octant_ball({h, slave_cells, parameters.cap_radius, parameters.radial_aspect});
-  const mesh::OctantBall block =
-      mesh::octant_ball({h_master, master_cells, parameters.block_radius, parameters.radial_aspect});
+int64_t hertz3d_node_count(const Hertz3dParameters& parameters)
+{
+  const auto [sphere, block] = octant_balls(parameters);
+  return mesh::octant_ball_size(sphere).nodes + mesh::octant_ball_size(block).nodes;
+}
+
+fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
+{
+  const auto [sphere_parameters, block_parameters] = octant_balls(parameters);
+  const double R = parameters.radius;
+  const mesh::OctantBall sphere = mesh::octant_ball(sphere_parameters);
+  const mesh::OctantBall block = mesh::octant_ball(block_parameters);
 
   fem::Problem p;
   p.name = "hertz3d";

@@ -56,6 +56,10 @@ Hertz3dAnalytic hertz3d_analytic(const Hertz3dParameters& parameters);
 /// The problem; throws feticon::Error naming a parameter out of range.
 fem::Problem hertz3d_problem(const Hertz3dParameters& parameters);
 
+/// Nodes of the mesh hertz3d_problem builds, counted without building it (memory guard).
+/// @throws feticon::Error as hertz3d_problem for parameters out of range
+int64_t hertz3d_node_count(const Hertz3dParameters& parameters);
+
 /// Approach of the sphere under the displacement u: the area-weighted mean of -u_z over its
 /// loaded far face, relative to the block's fixed far face (m).
 double hertz3d_approach(const fem::Problem& problem, const la::Vector& u);

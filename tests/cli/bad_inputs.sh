@@ -52,6 +52,27 @@ expect() {
   if grep -rqi "nan" "$work/out_$cases"/*.csv 2> /dev/null; then
     echo "FAIL $name: NaN written to a result"; failures=$((failures + 1)); return
   fi
+  if [[ -f "$work/out_$cases/summary.json" ]] && ! finite_json "$work/out_$cases/summary.json"; then
+    echo "FAIL $name: non-finite value in summary.json"; failures=$((failures + 1)); return
+  fi
+}
+
+# finite_json FILE: every number finite and no null (nlohmann writes NaN and inf as null).
+finite_json() {
+  /usr/bin/python3 - "$1" <<'PY'
+import json, math, sys
+def bad(v, path):
+    if v is None:
+        return path
+    if isinstance(v, float) and not math.isfinite(v):
+        return path
+    items = v.items() if isinstance(v, dict) else enumerate(v) if isinstance(v, list) else []
+    return next((b for k, x in items if (b := bad(x, f"{path}.{k}"))), None)
+where = bad(json.load(open(sys.argv[1]), parse_constant=float), "summary")
+if where:
+    print(f"{where} is not finite", file=sys.stderr)
+sys.exit(1 if where else 0)
+PY
 }
 
 # file edits: write base with a sed expression applied
@@ -179,6 +200,45 @@ expect "hertz3d cap beyond R/2" "cap_radius = 0.04 m must be in" -- \
 expect "hertz3d half-space smaller than its contact core" "cap_radius and block_radius must be at least 2.5 times" -- \
   --set problem=hertz3d --set hertz3d.block_radius=0.005
 expect "hertz3d core too fine" "core cells per edge" -- --set problem=hertz3d --set hertz3d.refinement=64
+
+# Memory guard (issue 21): refused from the mesh size known before meshing (the settings, a
+# Gmsh header), within 5 s and under 200 MB (expect_small below).
+expect_small() { # NAME PATTERN -- ARGS...
+  expect "$@"
+  /usr/bin/time -f "%e %M" -o "$work/time" timeout 5 "$feticon" run -q --output "$work/small_$cases" "${@:4}" \
+    > /dev/null 2>&1
+  local seconds kilobytes
+  read -r seconds kilobytes < <(tail -1 "$work/time")
+  if ((kilobytes >= 204800)) || [[ "${seconds%.*}" -ge 5 ]]; then
+    echo "FAIL $1: ${seconds} s, ${kilobytes} KB"; failures=$((failures + 1))
+  fi
+}
+expect_small "tensor Hertz mesh at refinement 64" "needs about .* GiB" -- --set hertz.refinement=64 --set hertz.mesh=tensor
+printf 'problem: custom\nmesh:\n  boxes:\n    - {name: cube, origin: [0, 0, 0], lengths: [1, 1, 1], cells: [1000, 1000, 1000]}\n' > "$work/cube.yaml"
+expect_small "a box of 1000^3 cells" "needs about .* GiB" -- "$work/cube.yaml"
+expect_small "a memory_limit below the estimate" "memory_limit" -- --set memory_limit=5e7
+sphere="$(cd "$2" && pwd)/examples/sphere_on_block"
+sed '/^\$Nodes/{n;s/^\([0-9]*\) [0-9]*/\1 999999999999/}' "$sphere/sphere_on_block.msh" > "$work/sphere_on_block.msh"
+sed "s|file: .*|file: $work/sphere_on_block.msh|" "$sphere/problem.yaml" > "$work/gmsh_nodes.yaml"
+expect_small "Gmsh header declaring 1e12 nodes" "declares 999999999999 entries" -- "$work/gmsh_nodes.yaml"
+sed '/^\$Elements/{n;s/^\([0-9]*\) [0-9]*/\1 999999999999/}' "$sphere/sphere_on_block.msh" > "$work/sphere_on_block.msh"
+expect_small "Gmsh header declaring 1e12 elements" "declares 999999999999 entries" -- "$work/gmsh_nodes.yaml"
+sed "s|file: .*|file: $sphere/sphere_on_block.msh|" "$sphere/problem.yaml" > "$work/gmsh_limit.yaml"
+expect_small "Gmsh mesh over memory_limit" "needs about .* MiB (estimate for [0-9]* DOFs in 4 subdomains).*(memory_limit)" -- "$work/gmsh_limit.yaml" --set memory_limit=1e8
+
+# What would crash libgmsh's reader, and misleading messages (issue 21).
+sed '0,/^2 3 "punch_contact"/s//7 3 "punch_contact"/' "$sphere/sphere_on_block.msh" > "$work/sphere_on_block.msh"
+expect "PhysicalNames dimension 7" "has dimension 7; dimensions are 0 to 3" -- "$work/gmsh_nodes.yaml"
+mkdir -p "$work/folder.msh"
+expect "a folder as mesh file" "is a folder" -- "$(msh_problem folder.msh folder_mesh top)"
+expect "a device as mesh file" "/dev/zero': is not a regular file" -- "$(msh_problem /dev/zero device_mesh top)"
+expect "a folder as problem file" "is not a regular file" -- "$work"
+expect "a device as problem file" "is not a regular file" -- /dev/zero
+expect "contact of a set with itself" "slave and master are the same face set" -- \
+  "$(variant 's/slave: punch_ymin, master: base_ymax/slave: base_ymax, master: base_ymax/' self_contact)"
+expect "zero load" "is the load zero" -- "$(variant 's/traction: \[0, -1e8, 0\]/traction: [0, 0, 0]/' zero_load)"
+{ printf 'hertz:'; for i in $(seq 1 2000); do printf ' ['; done; for i in $(seq 1 2000); do printf ']'; done; printf '\n'; } > "$work/deep.yaml"
+expect "deeply nested YAML" "nested deeper" -- "$work/deep.yaml"
 
 # Explicit dual operators are formed on the Dirichlet preconditioner's boundary.
 expect "explicit operators without the Dirichlet preconditioner" "qp.preconditioner" -- \

@@ -135,4 +135,23 @@ status=0
 [ "$(wc -l <huge.err)" -eq 1 ] || fail "expected one line on stderr, got: $(cat huge.err)"
 grep -q 'non-finite' huge.err || fail "stderr does not say non-finite: $(cat huge.err)"
 
+# 8. Memory guard (issue 21): a 2e9 x 2e9 header is refused from its size line, before
+# anything is allocated (it ended in std::bad_alloc), within 5 s and 200 MB; a vector file
+# declaring more values than it could hold and a device as a matrix are input errors too.
+printf '%%%%MatrixMarket matrix coordinate real symmetric\n2000000000 2000000000 2\n1 1 2\n2 2 2\n' >giant.mtx
+printf '%%%%MatrixMarket matrix array real general\n2000000000 1\n1\n1\n' >giant_b.mtx
+one_line_error() { # NAME PATTERN ARGS...
+  local name=$1 pattern=$2 status=0
+  shift 2
+  /usr/bin/time -f "%e %M" -o time.txt timeout 5 "$feticon" qp "$@" >guard.out 2>guard.err || status=$?
+  [ "$status" -eq 1 ] || fail "$name: expected exit status 1, got $status"
+  [ "$(wc -l <guard.err)" -eq 1 ] || fail "$name: expected one line on stderr, got: $(cat guard.err)"
+  grep -q -- "$pattern" guard.err || fail "$name: stderr does not say '$pattern': $(cat guard.err)"
+  read -r seconds kilobytes < <(tail -1 time.txt)
+  [ "$kilobytes" -lt 204800 ] || fail "$name: peak memory $kilobytes KB"
+}
+one_line_error "2e9 x 2e9 matrix" "needs about .* GiB, more than the" --A giant.mtx --b b2.mtx
+one_line_error "2e9 values declared" "giant_b.mtx:2: the size line declares 2000000000 values" --A spd.mtx --b giant_b.mtx
+one_line_error "a device as matrix" "/dev/zero: is not a regular file" --A /dev/zero --b b2.mtx
+
 echo "qp_command: all checks passed"

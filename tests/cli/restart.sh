@@ -43,4 +43,8 @@ grep -q "already done" "$work/err"
 mkdir -p "$work/empty"
 if "$feticon" run -q --restart "$work/empty" 2> "$work/err"; then echo "restart without files succeeded"; exit 1; fi
 [[ $(wc -l < "$work/err") -eq 1 ]]
+# Killed before its first checkpoint: the folder has problem.yaml only.
+mkdir -p "$work/early" && cp "$work/killed/problem.yaml" "$work/early/"
+if "$feticon" run -q --restart "$work/early" 2> "$work/err"; then echo "restart without a checkpoint succeeded"; exit 1; fi
+[[ $(wc -l < "$work/err") -eq 1 ]] && grep -q "before its first load step converged" "$work/err" || { cat "$work/err"; exit 1; }
 echo "restart: all checks passed"

@@ -77,6 +77,18 @@ grep -q "warning: the dual penalty with rho = 1" "$work/dp.err" || { echo "no du
 $py -c "import json; s=json.load(open('$work/dp/summary.json')); assert len(s['warnings']) == 1 and 'method=smalbe' in s['warnings'][0], s['warnings']"
 $py -c "import json; s=json.load(open('$work/hertz/summary.json')); assert s['warnings'] == [], s['warnings']"
 
+# An output folder holding another run's results is refused; --overwrite removes feticon's
+# files first (a stale step of the earlier run does not survive), and only those.
+if "$feticon" run -q --output "$work/hertz" --set hertz.refinement=0.5 2> "$work/err"; then
+  echo "a folder with another run's results was written over"; exit 1; fi
+[[ $(wc -l < "$work/err") -eq 1 ]] && grep -q "holds another run's results (.*); give --overwrite" "$work/err" ||
+  { cat "$work/err"; exit 1; }
+: > "$work/noplots/step_009.vtu"; echo keep > "$work/noplots/notes.txt"
+"$feticon" run -q --overwrite --output "$work/noplots" --set hertz.refinement=0.5 --set subdomains=4 \
+  --set displacements=small --set output.plots=false
+[[ ! -e "$work/noplots/step_009.vtu" && -s "$work/noplots/step_001.vtu" ]] || { echo "--overwrite left a stale step"; exit 1; }
+[[ -s "$work/noplots/notes.txt" ]] || { echo "--overwrite removed a file that is not feticon's"; exit 1; }
+
 # 3. Non-convergence: large displacements with too few outer iterations for load step 2.
 #    The run fails with a message, but step 1 (converged) stays on disk with its PVD entry.
 #    Exact QPs (newton.forcing=0): 5 and 6 outer iterations on the tensor mesh (step 2's

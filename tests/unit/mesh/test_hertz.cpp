@@ -305,6 +305,25 @@ TEST(HertzMeshQuality, GradedHasNoNeedleCells)
   }
 }
 
+TEST(HertzMeshSize, EstimateBeforeBuildingIsNearTheBuiltMesh)
+{
+  // The memory guard sizes a run from hertz_node_estimate before the mesh exists; the
+  // reference is the node count of the mesh generate_hertz then builds. The tensor count is
+  // closed-form (rounding of the graded spacings only); the graded one integrates the size
+  // field Gmsh follows, with one calibrated factor for its recombined quadrilaterals.
+  for (const HertzMeshKind kind : {HertzMeshKind::graded, HertzMeshKind::tensor})
+    for (double refinement : {0.5, 1.0, 4.4})
+    {
+      HertzMeshParameters p;
+      p.refinement = refinement;
+      p.kind = kind;
+      const double built = generate_hertz(p).n_nodes();
+      const double estimate = static_cast<double>(hertz_node_estimate(p));
+      EXPECT_NEAR(estimate / built, 1.0, kind == HertzMeshKind::tensor ? 0.05 : 0.1)
+          << refinement << " built " << built << " estimate " << estimate;
+    }
+}
+
 TEST(HertzMeshParametersCheck, RejectsBadValues)
 {
   auto with = [](auto change)
@@ -319,5 +338,6 @@ TEST(HertzMeshParametersCheck, RejectsBadValues)
   EXPECT_THROW(generate_hertz(with([](HertzMeshParameters& p) { p.growth_ratio = 0.8; })), Error);
   EXPECT_THROW(generate_hertz(with([](HertzMeshParameters& p) { p.block_depth = -1; })), Error);
   EXPECT_THROW(summarize_contact_zone(hertz(1, HertzMeshKind::graded), "cylinder_contact", 0.0), Error);
+  EXPECT_THROW(hertz_node_estimate(with([](HertzMeshParameters& p) { p.refinement = 0; })), Error);
 }
 } // namespace feticon::mesh

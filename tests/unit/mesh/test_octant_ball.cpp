@@ -112,8 +112,25 @@ TEST(OctantBall, ShapeRegularAndGradedWithTheDistance)
   EXPECT_LT(far.cells.size(), 2.5 * near.cells.size());
 }
 
+TEST(OctantBall, SizeCountedWithoutBuildingIsTheBuiltMesh)
+{
+  // octant_ball_size sizes a run for the memory guard; the reference is the mesh itself.
+  for (double aspect : {1.0, 2.0})
+    for (int n : {2, 5, 8})
+      for (double radius : {2.5 * n, 40.0 * n})
+      {
+        const OctantBallParameters p{1.0, n, radius, aspect};
+        const OctantBall ball = octant_ball(p);
+        const OctantBallSize size = octant_ball_size(p);
+        EXPECT_EQ(size.nodes, ball.nodes.rows()) << n << " " << radius << " " << aspect;
+        EXPECT_EQ(size.cells, static_cast<int64_t>(ball.cells.size()));
+        EXPECT_EQ(size.layers, ball.layers);
+      }
+}
+
 TEST(OctantBall, RejectsBadParameters)
 {
+  EXPECT_THROW(octant_ball_size({1.0, 4, 9.0, 2.0}), Error);
   EXPECT_THROW(octant_ball({0.0, 4, 10.0, 2.0}), Error);
   EXPECT_THROW(octant_ball({1.0, 0, 10.0, 2.0}), Error);
   EXPECT_THROW(octant_ball({1.0, 4, 9.0, 2.0}), Error); // R < 2.5 c
