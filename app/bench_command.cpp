@@ -16,6 +16,7 @@
 #include "app/mprgp_benchmark.hpp"
 #include "app/memory_guard.hpp"
 #include "app/problem_setup.hpp"
+#include "app/qp_counters_json.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "common/timer.hpp"
@@ -80,9 +81,9 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   for (const auto& [phase, seconds] : timers.entries())
     timing[phase] = seconds;
   out["timings_seconds"] = timing;
-  const nonlinear::OuterIteration sum = qp_totals(solution);
-  const int iterations = sum.qp_iterations;
-  const double qp_seconds = sum.qp_seconds;
+  const qp::QpCounters sum = qp_totals(solution);
+  const int iterations = sum.iterations;
+  const double qp_seconds = sum.seconds;
   out["dual_seconds_per_mprgp_iteration"] = timers.total("dual solve (MPRGP)") / std::max(iterations, 1);
   // One application of H = PFP + rho Q is one of F and two of the coarse projector; with a
   // preconditioner the limit of an iteration is one H and one preconditioner application.

@@ -39,11 +39,13 @@ nlohmann::json records(const nonlinear::ContactSolution& s)
     steps.push_back({st.load_factor, st.outer_iterations, st.converged, st.displacement_change,
                      st.residual_norm, st.inner_iterations});
   for (const auto& it : s.history)
-    history.push_back({it.load_step, it.iteration, it.qp_iterations, it.cg_steps, it.expansion_steps,
-                       it.proportioning_steps, it.hessian_multiplications, it.smalbe_outer,
+    history.push_back({it.load_step, it.iteration, it.qp.iterations, it.qp.cg_steps, it.qp.expansion_steps,
+                       it.qp.proportioning_steps, it.qp.hessian_multiplications, it.qp.outer_iterations,
                        it.residual_norm, it.displacement_change, it.active_contacts,
-                       it.feasibility_error, it.seconds, it.ritz.min, it.ritz.max, it.ritz.cg_steps,
-                       it.rho_updates, it.final_rho});
+                       it.feasibility_error, it.seconds, it.qp.ritz.min, it.qp.ritz.max, it.qp.ritz.cg_steps,
+                       it.qp.rho_updates, it.final_rho, it.qp.expansion_fallbacks, it.qp.operator_applications,
+                       it.qp.operator_seconds, it.qp.preconditioner_applications, it.qp.preconditioner_seconds,
+                       it.qp.seconds});
   return {{"completed_steps", s.restart.completed_steps}, {"steps", steps}, {"history", history},
           {"smalbe_M", s.restart.smalbe_M}, {"smalbe_rho", s.restart.smalbe_rho},
           {"pfp_norm", s.restart.pfp_norm}};
@@ -104,12 +106,12 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
       nonlinear::OuterIteration it;
       it.load_step = h[0];
       it.iteration = h[1];
-      it.qp_iterations = h[2];
-      it.cg_steps = h[3];
-      it.expansion_steps = h[4];
-      it.proportioning_steps = h[5];
-      it.hessian_multiplications = h[6];
-      it.smalbe_outer = h[7];
+      it.qp.iterations = h[2];
+      it.qp.cg_steps = h[3];
+      it.qp.expansion_steps = h[4];
+      it.qp.proportioning_steps = h[5];
+      it.qp.hessian_multiplications = h[6];
+      it.qp.outer_iterations = h[7];
       it.residual_norm = h[8];
       it.displacement_change = h[9];
       it.active_contacts = h[10];
@@ -117,14 +119,23 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
       it.seconds = h[12];
       if (h.size() > 15) // written since the spectrum estimate exists
       {
-        it.ritz.min = h[13];
-        it.ritz.max = h[14];
-        it.ritz.cg_steps = h[15];
+        it.qp.ritz.min = h[13];
+        it.qp.ritz.max = h[14];
+        it.qp.ritz.cg_steps = h[15];
       }
       if (h.size() > 17) // written since SMALBE-M reports its rho
       {
-        it.rho_updates = h[16];
+        it.qp.rho_updates = h[16];
         it.final_rho = h[17];
+      }
+      if (h.size() > 23) // written since the counters are one type (all of them restored)
+      {
+        it.qp.expansion_fallbacks = h[18];
+        it.qp.operator_applications = h[19];
+        it.qp.operator_seconds = h[20];
+        it.qp.preconditioner_applications = h[21];
+        it.qp.preconditioner_seconds = h[22];
+        it.qp.seconds = h[23];
       }
       solution.history.push_back(it);
     }

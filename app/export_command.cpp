@@ -46,7 +46,7 @@ void export_model(const ExportOptions& options)
   const nonlinear::SolverSettings solver = solver_settings(file.settings, problem);
   io::CalculixOptions deck;
   deck.nlgeom = solver.kinematics == fem::Kinematics::total_lagrangian;
-  deck.increments = solver.load_steps;
+  deck.increments = solver.steps();
   deck.contact_stiffness_factor = options.contact_stiffness_factor;
   deck.overclosure = options.overclosure;
 

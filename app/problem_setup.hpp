@@ -36,10 +36,4 @@ fem::Problem build_problem(const io::ProblemFile& file);
 /// `subdomain_cells` > 0 the subdomain count follows from the problem's cell count.
 nonlinear::SolverSettings solver_settings(const io::Settings& settings, const fem::Problem& problem);
 
-/// The QP counters and times of all outer iterations summed (load step, iteration and the
-/// per-iteration state are left at their defaults).
-nonlinear::OuterIteration qp_totals(const nonlinear::ContactSolution& solution);
-
-/// QP counters summed over the outer iterations (summary.json "qp").
-nlohmann::ordered_json qp_json(const nonlinear::ContactSolution& solution);
 } // namespace feticon::app

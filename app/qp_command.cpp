@@ -12,6 +12,7 @@
 
 #include "app/commands.hpp"
 #include "app/memory_guard.hpp"
+#include "app/qp_counters_json.hpp"
 #include "common/error.hpp"
 #include "la/matrix_market.hpp"
 #include "la/operator.hpp"
@@ -105,14 +106,8 @@ void run_qp(const QpArguments& arguments)
                 "qp: the solve produced non-finite values (cost " << report.cost << "); are A, b and the bounds of "
                                                                  "a moderate size (bounds like 1e300 overflow the cost)?");
 
-  nlohmann::ordered_json json;
-  json["converged"] = report.converged;
-  json["iterations"] = report.iterations;
-  json["cg_steps"] = report.cg_steps;
-  json["expansion_steps"] = report.expansion_steps;
-  json["proportioning_steps"] = report.proportioning_steps;
-  json["expansion_fallbacks"] = report.expansion_fallbacks;
-  json["hessian_multiplications"] = report.hessian_multiplications;
+  nlohmann::ordered_json json = {{"converged", report.converged}};
+  json.update(qp_counters_json(report));
   json["projected_gradient_norm"] = report.projected_gradient_norm;
   json["cost"] = report.cost;
   json["seconds"] = report.seconds;

@@ -4,6 +4,7 @@
 #include "app/commands.hpp"
 #include "app/memory_guard.hpp"
 #include "app/problem_setup.hpp"
+#include "app/qp_counters_json.hpp"
 #include "app/run_output.hpp"
 #include "par/communicator.hpp"
 #include "common/error.hpp"
@@ -312,6 +313,22 @@ void run(const RunOptions& options)
                   "or use method=smalbe",
                   settings.number("rho"), solution.feasibility_error, feasibility_tolerance);
     warnings.push_back(line);
+  }
+  // Where the whole load goes through the contact (Hertz 2D and 3D), the contact force must
+  // equal it: to round-off with small displacements, to 1.5e-4 with large ones (the force is
+  // summed along the rotated normals), far off when the multipliers are infeasible.
+  if (summary.contains("contact") && summary["contact"].contains("applied_load"))
+  {
+    const double load = summary["contact"]["applied_load"], force = summary["contact"]["total_normal_force"];
+    if (std::abs(force - load) > feasibility_tolerance * std::abs(load))
+    {
+      char line[320];
+      std::snprintf(line, sizeof line,
+                    "the contact force %.6g N differs from the applied load %.6g N by %.2g (relative), more "
+                    "than contact.feasibility_tolerance = %g: the contact forces do not carry the load",
+                    force, load, std::abs(force - load) / std::abs(load), feasibility_tolerance);
+      warnings.push_back(line);
+    }
   }
   for (const auto& w : warnings)
     log::warning(w.get<std::string>());

@@ -109,8 +109,8 @@ void write_history_csv(const std::filesystem::path& path,
   os << "load_step,outer_iteration,mprgp_iterations,hessian_multiplications,smalbe_outer,"
         "residual_norm,displacement_change,active_contacts,feasibility_error,seconds\n";
   for (const auto& it : history)
-    os << it.load_step << ',' << it.iteration << ',' << it.qp_iterations << ','
-       << it.hessian_multiplications << ',' << it.smalbe_outer << ',' << it.residual_norm << ','
+    os << it.load_step << ',' << it.iteration << ',' << it.qp.iterations << ','
+       << it.qp.hessian_multiplications << ',' << it.qp.outer_iterations << ',' << it.residual_norm << ','
        << it.displacement_change << ',' << it.active_contacts << ',' << it.feasibility_error << ','
        << it.seconds << '\n';
   io::write_file_atomically(path, os.str());

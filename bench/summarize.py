@@ -119,7 +119,7 @@ MPRGP = {
     "iterations": lambda c: c["iterations"],
     "CG / expansion / proportioning": lambda c: "%d / %d / %d" % (c["cg_steps"], c["expansion_steps"],
                                                                   c["proportioning_steps"]),
-    "operator applications": lambda c: c["operator_applications"],
+    "operator applications": lambda c: c.get("hessian_multiplications", c.get("operator_applications")),
     "s / iteration": lambda c: c["seconds_per_iteration"],
     "s / application": lambda c: c["operator_seconds_median"],
     "iteration / application": lambda c: c["ratio_iteration_to_operator"],

@@ -162,7 +162,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
     mprgp.preconditioner = timed_preconditioner ? &*timed_preconditioner : nullptr;
     qp::Mprgp solver(H, mprgp);
     out.report = solver.solve(b, lower, mu);
-    out.outer_iterations = 1;
+    out.report.outer_iterations = 1;
   }
   else
   {
@@ -183,19 +183,17 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
                               std::max(warm.rho, options.rho)};
     const qp::SmalbeReport r = solver.solve(b, lower, mu, start ? &*start : nullptr);
     out.report = r;
-    out.outer_iterations = r.outer_iterations;
     out.coarse_multiplier = projector.coarse_multiplier(r.omega) / scale;
     out.smalbe_M = r.final_M;
     out.smalbe_rho = r.final_rho;
-    out.rho_updates = r.rho_updates;
   }
   out.report.hessian_multiplications += norm.applications;
-  out.operator_applications = H.applications();
-  out.operator_seconds = H.seconds();
+  out.report.operator_applications = H.applications();
+  out.report.operator_seconds = H.seconds();
   if (timed_preconditioner)
   {
-    out.preconditioner_applications = timed_preconditioner->applications();
-    out.preconditioner_seconds = timed_preconditioner->seconds();
+    out.report.preconditioner_applications = timed_preconditioner->applications();
+    out.report.preconditioner_seconds = timed_preconditioner->seconds();
   }
   out.lambda = lambda_tilde + mu;
   const double e_norm = e.norm();

@@ -12,6 +12,7 @@
 /// rows. The primal solution follows from the active rows (primal_recovery.hpp).
 
 #include "dual/feti_operators.hpp"
+#include "io/settings.hpp"
 #include "qp/smalbe.hpp"
 
 #include <string>
@@ -34,21 +35,29 @@ enum class DualPreconditioner
   dirichlet
 };
 
+/// The options of the dual solve. The values a user sets (rho, smalbe.*, qp.*) come from the
+/// settings table (io/settings.cpp), where each default is declared once: a default-built
+/// DualPenaltyOptions holds those defaults.
 struct DualPenaltyOptions
 {
-  DualMethod method = DualMethod::smalbe;
-  double rho = 1.0;           ///< dimensionless penalty (after scaling by ||PFP||)
-  double rtol = 1e-8;         ///< QP tolerance on ||g_P|| (and ||G~ mu||) relative to ||b^||
-  int max_iterations = 20000; ///< MPRGP steps in total
+  DualPenaltyOptions();
+  /// From `method`, `rho`, `smalbe.M0`, `smalbe.beta`, `qp.rtol`, `qp.max_iterations`,
+  /// `qp.preconditioner`, `qp.constraint_scaling` and `qp.expansion`.
+  explicit DualPenaltyOptions(const io::Settings& settings);
+
+  DualMethod method;
+  double rho;                 ///< dimensionless penalty (after scaling by ||PFP||)
+  double rtol;                ///< QP tolerance on ||g_P|| (and ||G~ mu||) relative to ||b^||
+  int max_iterations;         ///< MPRGP steps in total
   int power_iterations = 30;  ///< for ||PFP||
-  DualPreconditioner preconditioner = DualPreconditioner::none;
+  DualPreconditioner preconditioner;
   /// Schur complements of the Dirichlet preconditioner (not owned; required for it).
   const decomposition::SchurComplements* schur = nullptr;
   /// Y = (B B')^{-1} in the preconditioner; false: Y = I (for comparison).
-  bool constraint_scaling = true;
-  qp::MprgpExpansion expansion = qp::MprgpExpansion::standard; ///< MPRGP's expansion step
-  double smalbe_M0 = 1.0;     ///< SMALBE-M initial M (scaled units)
-  double smalbe_beta = 2.0;   ///< SMALBE-M: M <- M / beta when L increases too little
+  bool constraint_scaling;
+  qp::MprgpExpansion expansion; ///< MPRGP's expansion step
+  double smalbe_M0;           ///< SMALBE-M initial M (scaled units)
+  double smalbe_beta;         ///< SMALBE-M: M <- M / beta when L increases too little
 };
 
 /// Where a solve starts, from the solution of a nearby problem (the previous outer iteration:
@@ -68,23 +77,18 @@ struct DualSolution
   la::Vector lambda;             ///< multipliers (equality rows then contact rows)
   la::Vector u;                  ///< stacked primal displacement
   la::Vector alpha;              ///< rigid-body amplitudes
-  qp::QpReport report;           ///< MPRGP counters (summed over SMALBE-M outer steps)
-  int outer_iterations = 0;      ///< SMALBE-M outer iterations (1 for the dual penalty)
+  /// The QP's counters (summed over SMALBE-M outer steps; outer_iterations 1 for the dual
+  /// penalty) with the applications of P F P (+ rho Q) and of the preconditioner timed here
+  /// (the norm estimate's applications are in hessian_multiplications only).
+  qp::QpReport report;
   /// SMALBE-M: beta with G' beta the multiplier of G lambda = e in the unscaled dual (indexed
   /// by rigid modes, it carries over to the next outer iteration's G), and the final M and rho.
   la::Vector coarse_multiplier;
   double smalbe_M = 0;
   double smalbe_rho = 0;
-  int rho_updates = 0; ///< how often SMALBE-M raised rho in this solve
   double feasibility_error = 0;  ///< ||G lambda - e|| / ||e||
   double pfp_norm = 0;           ///< ||PFP|| estimate used for scaling
   int64_t active_contacts = 0;   ///< contact rows with lambda_i > 0
-  /// Applications of P F P (+ rho Q) by the QP solver (the norm estimate's are in
-  /// report.hessian_multiplications only) and the wall time spent in them (s).
-  int64_t operator_applications = 0;
-  double operator_seconds = 0;
-  int64_t preconditioner_applications = 0; ///< and of the preconditioner
-  double preconditioner_seconds = 0;
 };
 
 /// Vectors are this rank's parts (FetiOperators): dual ones over its owned rows, primal ones

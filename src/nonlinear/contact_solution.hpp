@@ -15,21 +15,10 @@ struct OuterIteration
 {
   int load_step = 0;
   int iteration = 0;
-  int qp_iterations = 0;          ///< MPRGP steps (or penalty active-set solves)
-  int cg_steps = 0;
-  int expansion_steps = 0;
-  int proportioning_steps = 0;
-  int hessian_multiplications = 0;
-  int smalbe_outer = 0;
-  int rho_updates = 0;   ///< SMALBE-M's raises of rho in this QP
-  double final_rho = 0;  ///< and its rho at the end (0 for the other methods)
-  int64_t operator_applications = 0; ///< applications of P F P (+ rho Q) by the QP solver
-  double operator_seconds = 0;       ///< wall time inside them (s)
-  int64_t preconditioner_applications = 0; ///< applications of the dual preconditioner
-  double preconditioner_seconds = 0;       ///< wall time inside them (s)
-  double qp_seconds = 0;             ///< wall time of MPRGP / SMALBE-M (s), without the setup
-  /// Spectrum estimate of the preconditioned dual operator from the QP's longest CG run.
-  qp::RitzValues ritz;
+  /// The QP's counters: MPRGP steps (penalty: active-set solves), SMALBE-M updates,
+  /// operator and preconditioner applications, the spectrum estimate of its longest CG run.
+  qp::QpCounters qp;
+  double final_rho = 0;  ///< SMALBE-M's rho at the end of the QP (0 for the other methods)
   /// ||t f_ext - f_int - B' lambda|| / max(||t f_ext||, ||f_int||) after the update
   double residual_norm = 0;
   double displacement_change = 0; ///< ||du|| / ||u||

@@ -124,7 +124,7 @@ std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, con
   }
   const int64_t bytes = comm.sum(decomposition::explicit_operator_bytes(system, *schur));
   const double budget = std::min(0.25 * static_cast<double>(available_memory_bytes()), 4.0 * (1L << 30)) * comm.size();
-  const double steps = 100.0 * settings.load_steps * (settings.kinematics == fem::Kinematics::linear ? 1 : 5);
+  const double steps = 100.0 * settings.steps() * (settings.kinematics == fem::Kinematics::linear ? 1 : 5);
   setup = static_cast<double>(comm.sum(static_cast<int64_t>(setup)));
   implicit_step = static_cast<double>(comm.sum(static_cast<int64_t>(implicit_step)));
   explicit_step = static_cast<double>(comm.sum(static_cast<int64_t>(explicit_step)));
@@ -163,7 +163,7 @@ std::string format_iteration(const OuterIteration& it)
   char line[256];
   std::snprintf(line, sizeof line,
                 "step %2d  outer %2d  inner %5d  residual %9.2e  |du|/|u| %9.2e  active %5ld  %7.2f s",
-                it.load_step, it.iteration, it.qp_iterations, it.residual_norm,
+                it.load_step, it.iteration, it.qp.iterations, it.residual_norm,
                 it.displacement_change, static_cast<long>(it.active_contacts), it.seconds);
   return line;
 }
@@ -251,8 +251,8 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
     FETICON_CHECK(r.u_stacked.size() == decomp->n_primal_global(),
                   "restart: the checkpoint has " << r.u_stacked.size() << " unknowns, this problem "
                                                  << decomp->n_primal_global() << " (different mesh or subdomains?)");
-    FETICON_CHECK(r.completed_steps < settings.load_steps,
-                  "restart: all " << settings.load_steps << " load steps are already done");
+    FETICON_CHECK(r.completed_steps < settings.steps(),
+                  "restart: all " << settings.steps() << " load steps are already done");
     u = decomp->owned_slice(r.u_stacked);
     restart_lambda = r.lambda;
     warm_smalbe = {{}, r.smalbe_coarse_multiplier, r.smalbe_M, r.smalbe_rho, r.pfp_norm};
@@ -271,9 +271,9 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
     ScopedTimer t(timers, "internal forces");
     f_int = system.internal_force(u);
   }
-  for (int step = first_step; step <= settings.load_steps; ++step)
+  for (int step = first_step; step <= settings.steps(); ++step)
   {
-    const double t_n = static_cast<double>(step) / settings.load_steps;
+    const double t_n = static_cast<double>(step) / settings.steps();
     fem::ConstrainedDofs target = dirichlet;
     target.values *= t_n;
     const auto equality = decomposition::build_equality_rows(*decomp, target);
@@ -366,20 +366,8 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       OuterIteration it;
       it.load_step = step;
       it.iteration = k;
-      it.qp_iterations = solution.report.iterations;
-      it.cg_steps = solution.report.cg_steps;
-      it.expansion_steps = solution.report.expansion_steps;
-      it.proportioning_steps = solution.report.proportioning_steps;
-      it.hessian_multiplications = solution.report.hessian_multiplications;
-      it.smalbe_outer = solution.outer_iterations;
-      it.rho_updates = solution.rho_updates;
+      it.qp = solution.report;
       it.final_rho = solution.smalbe_rho;
-      it.operator_applications = solution.operator_applications;
-      it.operator_seconds = solution.operator_seconds;
-      it.preconditioner_applications = solution.preconditioner_applications;
-      it.preconditioner_seconds = solution.preconditioner_seconds;
-      it.qp_seconds = solution.report.seconds;
-      it.ritz = solution.report.ritz;
       it.active_contacts = solution.active_contacts;
       it.feasibility_error = solution.feasibility_error;
       const double du_norm = la::norm(primal_space, solution.u), u_norm = la::norm(primal_space, u);
@@ -405,7 +393,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
       }
       it.seconds = seconds_since(iteration_start);
       out.history.push_back(it);
-      record.inner_iterations.push_back(it.qp_iterations);
+      record.inner_iterations.push_back(it.qp.iterations);
       log::info(format_iteration(it));
 
       out.constraints = std::move(contact_rows);

@@ -54,9 +54,9 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
     K = assembler.stiffness(u, fem::StiffnessKind::tangent);
     out.penalty = settings.eps_n_factor * K.diagonal().maxCoeff();
   }
-  for (int step = 1; step <= settings.load_steps; ++step)
+  for (int step = 1; step <= settings.steps(); ++step)
   {
-    const double t_n = static_cast<double>(step) / settings.load_steps;
+    const double t_n = static_cast<double>(step) / settings.steps();
     fem::ConstrainedDofs target = all;
     target.values *= t_n;
     LoadStep record;
@@ -146,7 +146,7 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
       out.constraints = std::move(rows);
       it.load_step = step;
       it.iteration = k;
-      it.qp_iterations = 1;
+      it.qp.iterations = 1;
       it.active_contacts = std::count(active.begin(), active.end(), 1);
       it.seconds = seconds_since(iteration_start);
       out.history.push_back(it);

@@ -5,6 +5,7 @@
 #include "decomposition/generalized_inverse.hpp"
 #include "dual/dual_penalty_problem.hpp"
 #include "fem/material.hpp"
+#include "io/settings.hpp"
 
 #include <string>
 
@@ -42,18 +43,32 @@ enum class DualOperatorMode
   automatic  ///< explicit where the blocks fit the memory budget and pay for their set-up
 };
 
+/// The settings of a contact solve. The values a user sets come from the settings table
+/// (io/settings.cpp), where each default is declared once: a default-built SolverSettings
+/// holds those defaults; the fields without a setting have theirs here.
 struct SolverSettings
 {
-  ContactMethod method = ContactMethod::smalbe;
-  fem::Kinematics kinematics = fem::Kinematics::linear;
-  int load_steps = 1;                  ///< equal load increments
-  int max_outer_iterations = 15;       ///< outer (Newton) iterations per load step
+  SolverSettings();
+  /// From the settings `method`, `displacements`, `load_steps`, `newton.*`, `subdomains`,
+  /// `partitioner`, `dual.operator`, `contact.formulation`, `eps_n` and the dual's (rho,
+  /// smalbe.*, qp.*). `subdomain_cells` needs the mesh: app::solver_settings applies it.
+  explicit SolverSettings(const io::Settings& settings);
+
+  /// Load steps of the solve: load_steps with large displacements, one with small ones
+  /// (linear elasticity takes the whole load in one step; contact's own nonlinearity is the
+  /// outer loop's).
+  int steps() const { return kinematics == fem::Kinematics::linear ? 1 : load_steps; }
+
+  ContactMethod method;
+  fem::Kinematics kinematics;
+  int load_steps;                      ///< equal load increments (large displacements)
+  int max_outer_iterations;            ///< outer (Newton) iterations per load step
   /// eps_u and eps_r of OuterConvergence (eps_r: FETI solver). 1e-4 saved 3-21 % of the
   /// MPRGP steps but left the multiplier of the Hertz axis node 1.6 % off with rho = 10 (the
   /// peak pressure +0.64 % instead of -0.73 %; docs/contact.md): 1e-6 keeps it to 1e-7.
-  double displacement_tolerance = 1e-6;
-  double residual_tolerance = 1e-6;
-  StiffnessUpdate stiffness = StiffnessUpdate::initial;
+  double displacement_tolerance;
+  double residual_tolerance;
+  StiffnessUpdate stiffness;
   /// Inexact outer iterations (large displacements): the QP of outer iteration k > 1 stops at
   /// rtol = max(dual.rtol, min(max_forcing_rtol, forcing * ||du_{k-1}|| / ||u||)), the
   /// first of a step at max_forcing_rtol. An outer iteration re-linearizes around the
@@ -66,16 +81,16 @@ struct SolverSettings
   /// same outer iterations with 57 % and 64 % of the MPRGP steps. On a slender cantilever
   /// with K_M refreshed, 0.01 cycled; so once a correction grows, the rest of the load step
   /// uses exact QPs.
-  double forcing = 0.001;
+  double forcing;
   double max_forcing_rtol = 1e-4;
-  int subdomains = 8;
-  Partitioner partitioner = Partitioner::metis;
-  DualOperatorMode dual_operator = DualOperatorMode::automatic;
+  int subdomains;
+  Partitioner partitioner;
+  DualOperatorMode dual_operator;
   decomposition::GeneralizedInverseMethod generalized_inverse =
       decomposition::GeneralizedInverseMethod::fixing_dofs;
-  dual::DualPenaltyOptions dual{};
+  dual::DualPenaltyOptions dual;
   double search_distance = 0;          ///< 0: automatic (about one master element)
-  contact::ContactFormulation formulation = contact::ContactFormulation::mortar;
-  double eps_n_factor = 100;           ///< primal penalty eps_n = factor * max diag K
+  contact::ContactFormulation formulation;
+  double eps_n_factor;                 ///< primal penalty eps_n = factor * max diag K
 };
 } // namespace feticon::nonlinear

@@ -5,6 +5,7 @@
 /// Non-convergence is a result, not an exception: solvers fill `converged = false` and say
 /// why in `reason`; only invalid input throws feticon::Error.
 
+#include <cstdint>
 #include <string>
 
 namespace feticon::qp
@@ -22,14 +23,11 @@ struct RitzValues
   int cg_steps = 0;
 };
 
-/// Counters and final state of one solve; the meaning of each counter is fixed by the
-/// solver that fills it (see Mprgp and conjugate_gradient).
-struct QpReport
+/// The work of QP solves: of one solve, or summed (+=) over SMALBE-M's inner solves, over
+/// the QPs of an outer loop, or over a run. The one type every layer reports and sums, so a
+/// counter added here reaches summary.json through one writer (app/qp_counters_json.hpp).
+struct QpCounters
 {
-  /// True when the stopping test was met.
-  bool converged = false;
-  /// Human-readable why: the test that was met, or what stopped the solve.
-  std::string reason;
   /// Steps taken (for MPRGP: CG + expansion + proportioning steps).
   int iterations = 0;
   /// MPRGP conjugate gradient steps (for plain CG: all iterations).
@@ -42,13 +40,54 @@ struct QpReport
   int expansion_fallbacks = 0;
   /// All applications of the operator, including start-up and periodic gradient refreshes.
   int hessian_multiplications = 0;
+  /// SMALBE-M outer iterations (updates of its multiplier; 1 for a dual penalty solve).
+  int outer_iterations = 0;
+  /// SMALBE-M's raises of rho.
+  int rho_updates = 0;
+  /// Applications of the (dual) operator and of the preconditioner, as counted and timed by
+  /// their callers (0 where nobody times them), and their wall time (s).
+  int64_t operator_applications = 0;
+  double operator_seconds = 0;
+  int64_t preconditioner_applications = 0;
+  double preconditioner_seconds = 0;
+  /// Wall-clock time of the solve(s).
+  double seconds = 0.0;
+  /// Spectrum estimate from the longest run of CG steps (of all those summed).
+  RitzValues ritz;
+
+  /// Sums the counters and times; keeps the Ritz values of the longer CG run.
+  QpCounters& operator+=(const QpCounters& other)
+  {
+    iterations += other.iterations;
+    cg_steps += other.cg_steps;
+    expansion_steps += other.expansion_steps;
+    proportioning_steps += other.proportioning_steps;
+    expansion_fallbacks += other.expansion_fallbacks;
+    hessian_multiplications += other.hessian_multiplications;
+    outer_iterations += other.outer_iterations;
+    rho_updates += other.rho_updates;
+    operator_applications += other.operator_applications;
+    operator_seconds += other.operator_seconds;
+    preconditioner_applications += other.preconditioner_applications;
+    preconditioner_seconds += other.preconditioner_seconds;
+    seconds += other.seconds;
+    if (other.ritz.cg_steps > ritz.cg_steps)
+      ritz = other.ritz;
+    return *this;
+  }
+};
+
+/// Counters and final state of one solve; the meaning of each counter is fixed by the
+/// solver that fills it (see Mprgp and conjugate_gradient).
+struct QpReport : QpCounters
+{
+  /// True when the stopping test was met.
+  bool converged = false;
+  /// Human-readable why: the test that was met, or what stopped the solve.
+  std::string reason;
   /// ||g_P|| for MPRGP, ||P r|| for CG, at the returned iterate.
   double projected_gradient_norm = 0.0;
   /// 1/2 x'Ax - b'x at the returned iterate.
   double cost = 0.0;
-  /// Wall-clock time of the solve.
-  double seconds = 0.0;
-  /// Spectrum estimate from the longest run of CG steps.
-  RitzValues ritz;
 };
 } // namespace feticon::qp

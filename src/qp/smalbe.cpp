@@ -126,15 +126,8 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
     }
     final_test = false;
     const QpReport r = mprgp->solve(b - _C.apply_transpose(omega), lower, x);
-    report.iterations += r.iterations;
-    report.cg_steps += r.cg_steps;
-    report.expansion_steps += r.expansion_steps;
-    report.proportioning_steps += r.proportioning_steps;
-    report.expansion_fallbacks += r.expansion_fallbacks;
-    report.hessian_multiplications += r.hessian_multiplications;
+    report += r; // counters; the seconds are the whole solve's, set at the end
     report.projected_gradient_norm = r.projected_gradient_norm;
-    if (r.ritz.cg_steps > report.ritz.cg_steps)
-      report.ritz = r.ritz;
     report.outer_iterations = k + 1;
     const la::Vector Cx = _C.apply(x);
     const double feasibility = Cx.norm();

@@ -89,13 +89,13 @@ struct SmalbeStart
   double rho = 1.0;
 };
 
+/// QpReport with the counters summed over the inner solves (outer_iterations and
+/// rho_updates counted by SMALBE-M itself).
 struct SmalbeReport : QpReport
 {
-  int outer_iterations = 0;
   double equality_residual = 0; ///< ||Cx|| / ||b|| at the end
   double final_M = 0;
   double final_rho = 0;         ///< rho at the end (the initial rho unless it was raised)
-  int rho_updates = 0;          ///< how many times rho was raised
   la::Vector omega;             ///< multiplier of Cx = 0
 };
 

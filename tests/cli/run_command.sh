@@ -69,12 +69,13 @@ for f in node_to_segment mortar; do
 done
 $py -c "import json; p = [json.load(open('$work/%s/summary.json' % f))['contact']['peak_pressure'] for f in ('node_to_segment', 'mortar')]; assert abs(p[0] / p[1] - 1) > 1e-3, p"
 
-# The dual penalty at rho = 1 leaves the contact forces out of balance with the load: a
-# warning in summary.json and on stderr, exit 0 (a result, flagged); SMALBE-M gives none.
+# The dual penalty at rho = 1 leaves the contact forces out of balance with the load: two
+# warnings (feasibility, contact force against Hertz's load) in summary.json and on stderr,
+# exit 0 (a result, flagged); SMALBE-M gives none.
 "$feticon" run -q --output "$work/dp" --set hertz.refinement=0.5 --set subdomains=4 \
   --set displacements=small --set method=dual_penalty --set rho=1 --set output.plots=false 2> "$work/dp.err"
 grep -q "warning: the dual penalty with rho = 1" "$work/dp.err" || { echo "no dual penalty warning on stderr"; cat "$work/dp.err"; exit 1; }
-$py -c "import json; s=json.load(open('$work/dp/summary.json')); assert len(s['warnings']) == 1 and 'method=smalbe' in s['warnings'][0], s['warnings']"
+$py -c "import json; s=json.load(open('$work/dp/summary.json')); w = s['warnings']; assert len(w) == 2 and 'method=smalbe' in w[0] and 'do not carry the load' in w[1], w"
 $py -c "import json; s=json.load(open('$work/hertz/summary.json')); assert s['warnings'] == [], s['warnings']"
 
 # An output folder holding another run's results is refused; --overwrite removes feticon's

@@ -16,6 +16,7 @@ nonlinear::ContactSolution solve_blocks(bool constraint_scaling, int& mprgp_step
   // Non-matching meshes: each mortar row shares master nodes with its neighbours.
   const fem::Problem problem = test::pressed_blocks(6, 5, 0.0, 1e8);
   nonlinear::SolverSettings s;
+  s.kinematics = fem::Kinematics::linear;
   s.subdomains = 8;
   s.dual.preconditioner = dual::DualPreconditioner::dirichlet;
   s.dual.constraint_scaling = constraint_scaling;
@@ -24,7 +25,7 @@ nonlinear::ContactSolution solve_blocks(bool constraint_scaling, int& mprgp_step
   EXPECT_TRUE(solution.converged) << solution.reason;
   mprgp_steps = 0;
   for (const auto& it : solution.history)
-    mprgp_steps += it.qp_iterations;
+    mprgp_steps += it.qp.iterations;
   return solution;
 }
 } // namespace

@@ -45,7 +45,7 @@ OperatorRun run(fem::Kinematics kinematics, nonlinear::DualOperatorMode mode)
   for (const auto& sample : nonlinear::slave_pressure_by_x(problem, solution, kinematics))
     out.peak = std::max(out.peak, sample.pressure);
   for (const auto& it : solution.history)
-    out.mprgp += it.qp_iterations;
+    out.mprgp += it.qp.iterations;
   out.mode = solution.dual_operator;
   return out;
 }
@@ -75,6 +75,7 @@ TEST(ExplicitDualOperators, NeedTheDirichletPreconditioner)
   parameters.mesh.refinement = 0.5;
   const fem::Problem problem = problems::hertz_problem(parameters);
   nonlinear::SolverSettings s;
+  s.kinematics = fem::Kinematics::linear;
   s.dual.preconditioner = dual::DualPreconditioner::none;
   s.dual_operator = nonlinear::DualOperatorMode::explicit_;
   TimerTable timers;

@@ -36,6 +36,7 @@ HertzRun run_hertz(double refinement, dual::DualMethod method, double rho,
   parameters.mesh.refinement = refinement;
   const fem::Problem problem = problems::hertz_problem(parameters);
   nonlinear::SolverSettings s;
+  s.kinematics = fem::Kinematics::linear;
   s.method = method == dual::DualMethod::smalbe ? nonlinear::ContactMethod::smalbe
                                                 : nonlinear::ContactMethod::dual_penalty;
   s.dual.method = method;
@@ -52,7 +53,7 @@ HertzRun run_hertz(double refinement, dual::DualMethod method, double rho,
   out.force = nonlinear::total_normal_force(solution);
   out.feasibility = solution.feasibility_error;
   for (const auto& it : solution.history)
-    out.mprgp += it.qp_iterations;
+    out.mprgp += it.qp.iterations;
   out.u = solution.u;
   return out;
 }
@@ -146,6 +147,8 @@ TEST(HertzBenchmark, PrimalPenaltyApproachesTheExactSolutionLikeOneOverEps)
   auto pressures = [&](nonlinear::ContactMethod method, double eps)
   {
     nonlinear::SolverSettings s;
+    s.kinematics = fem::Kinematics::linear;
+    s.dual.preconditioner = dual::DualPreconditioner::none;
     s.method = method;
     s.eps_n_factor = eps;
     s.subdomains = 4;

@@ -29,6 +29,7 @@ LargeRun run(const fem::Problem& problem, const problems::HertzParameters& param
   nonlinear::SolverSettings s;
   s.kinematics = fem::Kinematics::total_lagrangian;
   s.load_steps = 2;
+  s.dual.preconditioner = dual::DualPreconditioner::none;
   s.forcing = forcing;
   TimerTable timers;
   LargeRun out;
@@ -37,7 +38,7 @@ LargeRun run(const fem::Problem& problem, const problems::HertzParameters& param
   auto samples = nonlinear::slave_pressure_by_x(problem, out.solution, s.kinematics);
   out.p_peak = nonlinear::compare_with_hertz(parameters, samples, false).p_peak_computed;
   for (const auto& it : out.solution.history)
-    out.mprgp += it.qp_iterations;
+    out.mprgp += it.qp.iterations;
   return out;
 }
 } // namespace

@@ -20,6 +20,7 @@ nonlinear::SolverSettings large_displacements()
   nonlinear::SolverSettings s;
   s.kinematics = fem::Kinematics::total_lagrangian;
   s.load_steps = 2;
+  s.dual.preconditioner = dual::DualPreconditioner::none;
   s.subdomains = 4;
   s.max_outer_iterations = 8;
   return s;

@@ -1,0 +1,22 @@
+#include "dual/dual_penalty_problem.hpp"
+
+namespace feticon::dual
+{
+DualPenaltyOptions::DualPenaltyOptions() : DualPenaltyOptions(io::Settings{}) {}
+
+DualPenaltyOptions::DualPenaltyOptions(const io::Settings& s)
+{
+  method = s.text("method") == "dual_penalty" ? DualMethod::dual_penalty : DualMethod::smalbe;
+  rho = s.number("rho");
+  smalbe_M0 = s.number("smalbe.M0");
+  smalbe_beta = s.number("smalbe.beta");
+  rtol = s.number("qp.rtol");
+  max_iterations = s.integer("qp.max_iterations");
+  expansion = qp::expansion_from_name(s.text("qp.expansion"));
+  const std::string& name = s.text("qp.preconditioner");
+  preconditioner = name == "lumped"      ? DualPreconditioner::lumped
+                   : name == "dirichlet" ? DualPreconditioner::dirichlet
+                                         : DualPreconditioner::none;
+  constraint_scaling = s.flag("qp.constraint_scaling");
+}
+} // namespace feticon::dual
