@@ -9,10 +9,11 @@
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <numeric>
-#include <regex>
 #include <sstream>
 
 extern char** environ; // the environment passed on to the plotting script
@@ -204,13 +205,29 @@ void plot_results(const std::filesystem::path& out_dir)
 namespace
 {
 /// Whether `name` is a file a run writes into its folder (run_command.cpp, plot_hertz.py,
-/// the checkpoint), including the temporaries of atomic writes.
-bool is_result_file(const std::string& name)
+/// the checkpoint), including the temporaries of atomic writes (NAME.tmp.*).
+bool is_result_file(std::string name)
 {
-  static const std::regex pattern(
-      R"((summary\.json|problem\.yaml|history\.csv|contact_pressure\.csv|solution\.pvd|checkpoint\.bin|)"
-      R"(contact_pressure\.png|iterations\.png|step_[0-9]+(_rank[0-9]+)?\.p?vtu)(\.tmp\..*)?)");
-  return std::regex_match(name, pattern);
+  if (const auto tmp = name.find(".tmp."); tmp != std::string::npos)
+    name.resize(tmp);
+  for (const char* fixed : {"summary.json", "problem.yaml", "history.csv", "contact_pressure.csv", "solution.pvd",
+                            "checkpoint.bin", "contact_pressure.png", "iterations.png"})
+    if (name == fixed)
+      return true;
+  // step_NNN.vtu, step_NNN.pvtu, step_NNN_rankNNN.vtu
+  auto digits = [&name](size_t from, size_t to)
+  {
+    return to > from && std::all_of(name.begin() + from, name.begin() + to,
+                                    [](unsigned char c) { return std::isdigit(c) != 0; });
+  };
+  const size_t dot = name.rfind('.');
+  if (name.rfind("step_", 0) != 0 || dot == std::string::npos)
+    return false;
+  const std::string extension = name.substr(dot);
+  if (extension != ".vtu" && extension != ".pvtu")
+    return false;
+  const size_t rank = name.find("_rank");
+  return rank == std::string::npos ? digits(5, dot) : extension == ".vtu" && digits(5, rank) && digits(rank + 5, dot);
 }
 } // namespace
 
