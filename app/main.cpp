@@ -7,14 +7,43 @@
 #include "common/log.hpp"
 #include "par/communicator.hpp"
 
+#include <cstdio>
 #include <iostream>
+#include <string>
 
 namespace
 {
+/// `what` with its control characters escaped (\n, \r, \t, \xNN): messages quote the input,
+/// which may hold any byte, and an error stays one line on any terminal.
+std::string one_line(const char* what)
+{
+  std::string out;
+  for (const char* c = what; *c; ++c)
+  {
+    const auto byte = static_cast<unsigned char>(*c);
+    if (byte >= 0x20 && byte != 0x7f)
+      out += *c;
+    else if (byte == '\n')
+      out += "\\n";
+    else if (byte == '\r')
+      out += "\\r";
+    else if (byte == '\t')
+      out += "\\t";
+    else
+    {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", byte);
+      out += hex;
+    }
+  }
+  return out;
+}
+
 /// One line on stderr; under MPI with the rank, and the other ranks are ended (an error on
 /// one rank must not leave the others waiting in a collective).
-int fail(const char* what, int code)
+int fail(const char* raw, int code)
 {
+  const std::string what = one_line(raw);
   const feticon::par::Communicator world = feticon::par::Communicator::world();
   if (world.serial())
   {

@@ -75,8 +75,14 @@ void set_path(YAML::Node node, const std::vector<std::string>& path, size_t i,
 /// Scalars of the non-structured part as dotted keys.
 /// Throws for a key given twice in one map: YAML forbids it, yaml-cpp keeps both entries and
 /// a lookup would silently take one of them.
-void reject_duplicate_keys(const YAML::Node& node, const std::string& path, const std::string& source)
+/// Also bounds the nesting, before anything else walks the tree: an alias that contains
+/// itself (`x: &r [*r]`) makes an endless tree, which would overflow the stack.
+void reject_duplicate_keys(const YAML::Node& node, const std::string& path, const std::string& source, int depth = 0)
 {
+  constexpr int max_depth = 32; // a problem file nests a few levels (sections, lists of maps)
+  FETICON_CHECK(depth <= max_depth, source << ": '" << path.substr(0, 80) << (path.size() > 80 ? "..." : "")
+                                           << "' nests deeper than " << max_depth
+                                           << " levels (a YAML alias that contains itself?)");
   if (node.IsMap())
   {
     std::set<std::string> seen;
@@ -86,12 +92,12 @@ void reject_duplicate_keys(const YAML::Node& node, const std::string& path, cons
       const std::string full = path.empty() ? key : path + "." + key;
       FETICON_CHECK(seen.insert(key).second, source << ": key '" << full << "' is given twice (line "
                                                     << kv.first.Mark().line + 1 << ")");
-      reject_duplicate_keys(kv.second, full, source);
+      reject_duplicate_keys(kv.second, full, source, depth + 1);
     }
   }
   else if (node.IsSequence())
     for (size_t i = 0; i < node.size(); ++i)
-      reject_duplicate_keys(node[i], path + "." + std::to_string(i), source);
+      reject_duplicate_keys(node[i], path + "." + std::to_string(i), source, depth + 1);
 }
 
 void flatten(const YAML::Node& node, const std::string& prefix,

@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <sstream>
 
@@ -152,9 +153,14 @@ void Settings::set(const std::string& key, const std::string& raw, const std::st
   case Type::integer:
   {
     char* end = nullptr;
+    errno = 0;
     const double v = std::strtod(value.c_str(), &end);
     FETICON_CHECK(!value.empty() && end && *end == '\0' && std::isfinite(v),
                   source << ": " << key << " = '" << value << "' is not a finite number");
+    // Underflow (1e-320, subnormal) as well: no setting means anything there, and number()
+    // would not read it back.
+    FETICON_CHECK(errno != ERANGE, source << ": " << key << " = " << value
+                                          << " is out of the range of normal double-precision numbers");
     if (s.type == Type::integer)
       FETICON_CHECK(v == std::floor(v), source << ": " << key << " = " << value
                                                << " must be an integer");

@@ -2,7 +2,9 @@
 
 #include "common/error.hpp"
 
+#include <algorithm>
 #include <array>
+#include <climits>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -113,6 +115,117 @@ void check_physical_name(const std::string& line, const std::string& where, int6
                 where << ": line " << number << ": $PhysicalNames entry '" << line << "' has tag " << tag
                       << "; tags are positive integers");
 }
+/// Integer tokens of a data line of $Nodes / $Elements (ASCII).
+std::vector<int64_t> integers(const std::string& line, const std::string& where, int64_t number, const char* what)
+{
+  std::vector<int64_t> out;
+  for (const std::string& t : tokens(line))
+    out.push_back(parse_count(t, where, number, what));
+  return out;
+}
+
+/// Tags of the nodes an ASCII $Nodes section lists (sorted), its body checked against its
+/// header: libgmsh 4.8 frees memory twice when the count is lower than the entries, and
+/// crashes on tags out of their declared range. MSH 2: `N` then `tag x y z` lines; MSH 4:
+/// `blocks N min max`, then per block `dim entity parametric n`, n tag lines, n coordinate lines.
+std::vector<int64_t> ascii_node_tags(LineReader& in, const std::vector<int64_t>& header, bool msh4,
+                                     const std::string& where)
+{
+  std::string line;
+  std::vector<int64_t> tags;
+  const int64_t declared = header[msh4 ? 1 : 0];
+  auto read_tag = [&](int64_t low, int64_t high)
+  {
+    FETICON_CHECK(in.next(line) && line != "$EndNodes", where << ": line " << in.number() << ": $Nodes declares "
+                                                               << declared << " nodes but lists fewer");
+    const std::string first = tokens(line).empty() ? std::string() : tokens(line)[0];
+    const int64_t tag = parse_count(first, where, in.number(), "the node tag");
+    FETICON_CHECK(tag >= low && tag <= high, where << ": line " << in.number() << ": node tag " << tag
+                                                   << " is outside " << low << ".." << high);
+    tags.push_back(tag);
+  };
+  if (!msh4)
+    for (int64_t k = 0; k < declared; ++k)
+      read_tag(1, INT32_MAX);
+  else
+  {
+    const int64_t low = std::max<int64_t>(1, header[2]), high = std::min<int64_t>(INT32_MAX, header[3]);
+    for (int64_t block = 0; block < header[0]; ++block)
+    {
+      FETICON_CHECK(in.next(line), where << ": ends inside $Nodes");
+      const std::vector<int64_t> b = integers(line, where, in.number(), "a $Nodes block header value");
+      FETICON_CHECK(b.size() == 4 && b[3] <= declared - static_cast<int64_t>(tags.size()),
+                    where << ": line " << in.number() << ": node block '" << line << "' lists more nodes than the "
+                          << declared << " declared (or is not 'dim entity parametric count')");
+      for (int64_t k = 0; k < b[3]; ++k)
+        read_tag(low, high);
+      for (int64_t k = 0; k < b[3]; ++k)
+        FETICON_CHECK(in.next(line) && line != "$EndNodes", where << ": ends inside a block of coordinates");
+    }
+  }
+  FETICON_CHECK(in.next(line) && line == "$EndNodes",
+                where << ": line " << in.number() << ": $Nodes declares " << declared
+                      << " nodes but lists more (expected $EndNodes)");
+  std::sort(tags.begin(), tags.end());
+  FETICON_CHECK(std::adjacent_find(tags.begin(), tags.end()) == tags.end(),
+                where << ": $Nodes lists a node tag twice");
+  return tags;
+}
+
+/// The body of an ASCII $Elements section against its header and the node tags: each
+/// element's nodes must exist (libgmsh 4.8 crashes on a negative or unknown node tag).
+/// MSH 2: `tag type ntags tags... nodes...`; MSH 4: per block `dim entity type n`, n lines
+/// `tag nodes...`.
+void check_ascii_elements(LineReader& in, const std::vector<int64_t>& header, bool msh4,
+                          const std::vector<int64_t>& node_tags, const std::string& where)
+{
+  std::string line;
+  const int64_t declared = header[msh4 ? 1 : 0];
+  auto check_nodes = [&](const std::vector<std::string>& t, size_t first)
+  {
+    FETICON_CHECK(t.size() > first, where << ": line " << in.number() << ": element '" << line << "' has no nodes");
+    for (size_t k = first; k < t.size(); ++k)
+    {
+      const int64_t tag = parse_count(t[k], where, in.number(), "the element's node tag");
+      FETICON_CHECK(std::binary_search(node_tags.begin(), node_tags.end(), tag),
+                    where << ": line " << in.number() << ": element '" << line << "' names node " << tag
+                          << ", which $Nodes does not list");
+    }
+  };
+  auto next_element = [&]()
+  {
+    FETICON_CHECK(in.next(line) && line != "$EndElements", where << ": line " << in.number()
+                                                                 << ": $Elements declares " << declared
+                                                                 << " elements but lists fewer");
+    return tokens(line);
+  };
+  int64_t listed = 0;
+  if (!msh4)
+    for (; listed < declared; ++listed)
+    {
+      const std::vector<std::string> t = next_element();
+      const int64_t n_tags = t.size() >= 3 ? parse_count(t[2], where, in.number(), "the element's tag count") : 0;
+      FETICON_CHECK(t.size() >= 3 && static_cast<int64_t>(t.size()) > 3 + n_tags,
+                    where << ": line " << in.number() << ": element '" << line
+                          << "' is not 'tag type ntags tags... nodes...'");
+      check_nodes(t, static_cast<size_t>(3 + n_tags));
+    }
+  else
+    for (int64_t block = 0; block < header[0]; ++block)
+    {
+      FETICON_CHECK(in.next(line), where << ": ends inside $Elements");
+      const std::vector<int64_t> b = integers(line, where, in.number(), "an $Elements block header value");
+      FETICON_CHECK(b.size() == 4 && b[3] <= declared - listed,
+                    where << ": line " << in.number() << ": element block '" << line
+                          << "' lists more elements than the " << declared
+                          << " declared (or is not 'dim entity type count')");
+      for (int64_t k = 0; k < b[3]; ++k, ++listed)
+        check_nodes(next_element(), 1);
+    }
+  FETICON_CHECK(listed == declared && in.next(line) && line == "$EndElements",
+                where << ": line " << in.number() << ": $Elements declares " << declared
+                      << " elements but lists more (expected $EndElements)");
+}
 } // namespace
 
 GmshDeclaredSizes precheck_gmsh_file(const std::filesystem::path& path, const std::string& where)
@@ -148,25 +261,35 @@ GmshDeclaredSizes precheck_gmsh_file(const std::filesystem::path& path, const st
   };
 
   GmshDeclaredSizes sizes;
-  // Counts of $Nodes / $Elements: MSH 2 `N`; MSH 4 `blocks N min max` (binary: size_t values).
-  auto declared_count = [&](const char* section) -> int64_t
+  // The header of $Nodes / $Elements: MSH 2 `N`; MSH 4 `blocks N min max` (binary: size_t
+  // values). Its count (N) is checked against the file's size.
+  auto section_header = [&](const char* section) -> std::vector<int64_t>
   {
+    std::vector<int64_t> header;
     if (msh4 && binary)
     {
       std::array<uint64_t, 4> values{};
       FETICON_CHECK(size_t_bytes == 4 || size_t_bytes == 8, where << ": size_t of " << size_t_bytes << " bytes");
       FETICON_CHECK(in.binary(values, 4, size_t_bytes), where << ": ends in the " << section << " header");
-      FETICON_CHECK(values[1] < 10'000'000'000'000ULL,
-                    where << ": the " << section << " header declares " << values[1] << " entries");
-      return static_cast<int64_t>(values[1]);
+      for (const uint64_t v : values)
+      {
+        FETICON_CHECK(v < 10'000'000'000'000ULL, where << ": the " << section << " header declares " << v);
+        header.push_back(static_cast<int64_t>(v));
+      }
     }
-    FETICON_CHECK(in.next(line), where << ": ends after " << section);
-    const std::vector<std::string> t = tokens(line);
-    FETICON_CHECK(t.size() == (msh4 ? 4u : 1u), where << ": line " << in.number() << ": the " << section
-                                                     << " header '" << line << "' must have "
-                                                     << (msh4 ? "4 numbers" : "1 number"));
-    return parse_count(t[msh4 ? 1 : 0], where, in.number(), section);
+    else
+    {
+      FETICON_CHECK(in.next(line), where << ": ends after " << section);
+      header = integers(line, where, in.number(), section);
+      FETICON_CHECK(header.size() == (msh4 ? 4u : 1u), where << ": line " << in.number() << ": the " << section
+                                                            << " header '" << line << "' must have "
+                                                            << (msh4 ? "4 numbers" : "1 number"));
+    }
+    plausible(header[msh4 ? 1 : 0], section);
+    return header;
   };
+  // The bodies of the sections are checked in ASCII files; a binary file's are left to libgmsh.
+  std::vector<int64_t> node_tags;
   while (in.next(line))
   {
     if (line == "$PhysicalNames")
@@ -186,11 +309,18 @@ GmshDeclaredSizes precheck_gmsh_file(const std::filesystem::path& path, const st
                                          << " entries but lists " << read);
     }
     else if (line == "$Nodes")
-      sizes.nodes = plausible(declared_count("$Nodes"), "$Nodes");
+    {
+      const std::vector<int64_t> header = section_header("$Nodes");
+      sizes.nodes = header[msh4 ? 1 : 0];
+      if (binary)
+        break; // the counts are what the memory guard needs; libgmsh reads the rest
+      node_tags = ascii_node_tags(in, header, msh4, where);
+    }
     else if (line == "$Elements")
     {
-      sizes.elements = plausible(declared_count("$Elements"), "$Elements");
-      break; // the counts are all the memory guard needs; libgmsh reads the rest
+      const std::vector<int64_t> header = section_header("$Elements");
+      sizes.elements = header[msh4 ? 1 : 0];
+      check_ascii_elements(in, header, msh4, node_tags, where);
     }
   }
   return sizes;

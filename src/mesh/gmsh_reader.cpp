@@ -237,6 +237,21 @@ std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGr
                   where << ": hexahedron (Gmsh element " << element_tags[c] << ") of body '"
                         << mesh.body_names[mesh.cell_body[c]] << "' repeats a node (degenerate)");
     mesh.cells.push_back(cell);
+    // Distinct nodes at one place collapse an edge: the centre's Jacobian can stay positive,
+    // but the cell is degenerate (its aspect ratio infinite).
+    constexpr int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                  {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+    for (const auto& e : edges)
+    {
+      const double length = (mesh.nodes.row(cell[e[0]]) - mesh.nodes.row(cell[e[1]])).norm();
+      shortest = std::min(shortest, length);
+      longest = std::max(longest, length);
+    }
+    FETICON_CHECK(shortest > 1e-9 * longest, where << ": hexahedron (Gmsh element " << element_tags[c] << ") of body '"
+                                                   << mesh.body_names[mesh.cell_body[c]]
+                                                   << "' has an edge of length " << shortest
+                                                   << " (coincident nodes; degenerate)");
     const double det = centre_jacobian_determinant(mesh, cell);
     FETICON_CHECK(det > 0, where << ": hexahedron (Gmsh element " << element_tags[c]
                                  << ") of body '" << mesh.body_names[mesh.cell_body[c]]

@@ -240,6 +240,33 @@ expect "zero load" "is the load zero" -- "$(variant 's/traction: \[0, -1e8, 0\]/
 { printf 'hertz:'; for i in $(seq 1 2000); do printf ' ['; done; for i in $(seq 1 2000); do printf ']'; done; printf '\n'; } > "$work/deep.yaml"
 expect "deeply nested YAML" "nested deeper" -- "$work/deep.yaml"
 
+# What the fuzz driver found (tests/tools/fuzz_inputs.py; issue 21): each crashed, hung on a
+# stack overflow, exited 2 or printed more than one line before it was fixed.
+fuzz="$(cd "$2" && pwd)/tests/data/fuzz"
+printf 'x: &r [*r]\n' > "$work/self_alias.yaml"
+expect "an alias that contains itself" "contains itself" -- "$work/self_alias.yaml"
+expect "a subnormal number" "out of the range of normal double" -- --set rho=1e-320
+printf 'rho: 1\0\n' > "$work/nul.yaml"
+expect "a NUL byte in the YAML (message escaped to one line)" "invalid YAML" -- "$work/nul.yaml"
+msh_variant() { # NAME SED_EXPRESSION [SEED_MESH]: the seed problem with an edited mesh
+  local seed=${3:-punch41}
+  mkdir -p "$work/$1"
+  sed "$2" "$fuzz/$seed.msh" > "$work/$1/$seed.msh"
+  cp "$fuzz/${seed/punch/gmsh}.yaml" "$work/$1/problem.yaml"
+  echo "$work/$1/problem.yaml"
+}
+expect "MSH 4 element naming node 2^31" "names node 2147483648, which \$Nodes does not list" -- \
+  "$(msh_variant big_tag '240s/^1 2 17 41 20 /1 2 17 2147483648 20 /')"
+expect "MSH 4 element naming node -1" "node tag '-1' is not a count" -- \
+  "$(msh_variant negative_tag '262s/^19 29 9 30 47 /19 29 9 -1 47 /')"
+expect "MSH 4 \$Nodes count below its entries" "lists more nodes than the 53 declared" -- \
+  "$(msh_variant few_nodes 's/^54 54 1 54$/54 53 1 54/')"
+expect "MSH 4 \$Elements count below its entries" "lists more elements than the 47 declared" -- \
+  "$(msh_variant few_elements 's/^10 48 1 48$/10 47 1 48/')"
+expect "MSH 2 \$Nodes count below its entries" "declares 15 nodes but lists more" -- \
+  "$(msh_variant few_nodes22 '/^\$Nodes/{n;s/^16$/15/}' punch22)"
+expect "coincident nodes" "coincident nodes" -- "$(msh_variant coincident '208s/^0.5 0.5 -0.5/0 0.5 -0.5/')"
+
 # Explicit dual operators are formed on the Dirichlet preconditioner's boundary.
 expect "explicit operators without the Dirichlet preconditioner" "qp.preconditioner" -- \
   --set dual.operator=explicit --set qp.preconditioner=none --set hertz.refinement=0.5 --set displacements=small

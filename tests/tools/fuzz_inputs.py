@@ -1,0 +1,574 @@
+#!/usr/bin/python3
+"""Mutation fuzzing of feticon's three input kinds (issue 21, item 7): problem files (YAML) of
+`feticon run`, Gmsh MSH meshes a custom problem file names, and the Matrix Market files of
+`feticon qp`. Each mutant is a seed of tests/data/fuzz/ with one to three mutations, run in a
+fresh folder under a time limit. A mutant fails when feticon dies of a signal, hangs (timeout),
+exits with another status than 0 or 1 (or 3, "not converged", for `feticon qp`), writes a
+non-finite number (summary.json, the CSV files, the qp JSON report, x.mtx), ends an exit 1
+with more or less than one line on stderr, or reports success without its report.
+
+Usage: fuzz_inputs.py FETICON SOURCE_DIR [--mutants N | --minutes M] [--seed S]
+                      [--kinds problem,gmsh,mm] [--timeout SECONDS] [--keep DIR]
+The mutants are a function of the seed: mutant i of seed S is the same in every run, so
+--minutes M runs a prefix of the same sequence. Failing mutants are saved in --keep DIR
+(default: a new temporary folder) with their inputs, diff.txt against the seed, the output
+and command.sh to reproduce them. Prints a table of outcomes per kind; exit status 1 when a
+mutant failed.
+"""
+import argparse
+import difflib
+import json
+import math
+import os
+import random
+import re
+import shlex
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+# Seeds, each run well under 2 s unmutated. A problem or gmsh case lists its files: the
+# problem file first (the one `feticon run` gets), then the mesh it names.
+PROBLEM_SEEDS = [["two_boxes.yaml"], ["hertz_small.yaml"], ["gmsh41.yaml", "punch41.msh"],
+                 ["gmsh22.yaml", "punch22.msh"]]
+MM_FILES = ["A.mtx", "b.mtx", "l.mtx"]
+
+# Work bound: the machine running the fuzzer is shared, so a mutant whose model legitimately
+# needs gigabytes is refused by feticon's memory guard (an exit 1) instead of taking them.
+RUN_OPTIONS = ["--set", "output.plots=false", "--set", "output.vtu=false",
+               "--set", "memory_limit=2e9"]
+QP_COMMAND = ["qp", "--A", "A.mtx", "--b", "b.mtx", "--lower", "l.mtx", "--out", "x.mtx"]
+
+OUTCOMES = ["exit 0", "exit 1", "exit 3", "other exit", "signal", "timeout", "non-finite",
+            "multi-line error", "bad output"]
+FAILURES = {"other exit", "signal", "timeout", "non-finite", "multi-line error", "bad output"}
+
+EXTREMES = ["0", "-1", "1e308", "-1e308", "nan", "inf", "-inf", "2147483648", "999999999999",
+            "1e-320", "heavy"]
+YAML_EXTREMES = EXTREMES + [".nan", ".inf", "-.inf", "0x7fffffff", "1_000"]
+NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+
+
+# ---- generic mutators: text is bytes decoded as latin-1, so every byte survives ------------
+
+def flip_bits(text, rng):
+    if not text:
+        return None
+    chars = list(text)
+    places = []
+    for _ in range(rng.randint(1, 4)):
+        i = rng.randrange(len(chars))
+        bit = rng.randrange(8)
+        chars[i] = chr(ord(chars[i]) ^ (1 << bit))
+        places.append(f"{i}:{bit}")
+    return "".join(chars), "bit flips (offset:bit) " + " ".join(places)
+
+
+def delete_line(text, rng):
+    lines = text.splitlines(keepends=True)
+    if not lines:
+        return None
+    i = rng.randrange(len(lines))
+    return "".join(lines[:i] + lines[i + 1:]), f"line {i + 1} deleted"
+
+
+def duplicate_line(text, rng):
+    lines = text.splitlines(keepends=True)
+    if not lines:
+        return None
+    i = rng.randrange(len(lines))
+    copy = lines[i] if lines[i].endswith("\n") else lines[i] + "\n"
+    return "".join(lines[:i] + [copy] + lines[i:]), f"line {i + 1} duplicated"
+
+
+def swap_lines(text, rng):
+    lines = text.splitlines(keepends=True)
+    if len(lines) < 2:
+        return None
+    i, j = sorted(rng.sample(range(len(lines)), 2))
+    lines = [line if line.endswith("\n") else line + "\n" for line in lines]
+    lines[i], lines[j] = lines[j], lines[i]
+    return "".join(lines), f"lines {i + 1} and {j + 1} swapped"
+
+
+def truncate(text, rng):
+    if not text:
+        return None
+    i = rng.randrange(len(text))
+    return text[:i], f"truncated to {i} bytes"
+
+
+def insert_junk(text, rng):
+    junk = rng.choice(["\0", "\xff", "\r", "\t", "\x1b", "\xef\xbb\xbf", "\n\n", " "])
+    i = rng.randrange(len(text) + 1)
+    return text[:i] + junk + text[i:], f"{junk!r} inserted at offset {i}"
+
+
+def number_replacer(values):
+    def replace_number(text, rng):
+        matches = list(NUMBER.finditer(text))
+        if not matches:
+            return None
+        m = rng.choice(matches)
+        value = rng.choice(values)
+        line = text.count("\n", 0, m.start()) + 1
+        return (text[:m.start()] + value + text[m.end():],
+                f"number {m.group()} on line {line} replaced by {value}")
+    return replace_number
+
+
+GENERIC = [flip_bits, delete_line, duplicate_line, swap_lines, truncate, insert_junk]
+
+
+# ---- YAML structures ------------------------------------------------------------------------
+
+def nested(rng):
+    depth = rng.choice([8, 100, 1000, 10000, 100000])
+    if rng.random() < 0.5:
+        return "[" * depth + "1" + "]" * depth, f"lists nested {depth} deep"
+    return "{a: " * depth + "1" + "}" * depth, f"maps nested {depth} deep"
+
+
+def alias_bomb(rng):
+    # Each level holds ten aliases of the one below: 10^levels scalars once expanded.
+    levels = rng.randint(3, 8)
+    parts = ["&l0 [" + ", ".join(["1"] * 10) + "]"]
+    parts += [f"&l{k} [" + ", ".join([f"*l{k - 1}"] * 10) + "]" for k in range(1, levels)]
+    return "[" + ", ".join(parts) + "]", f"alias bomb of 10^{levels} scalars"
+
+
+STRUCTURES = ["[1, 2]", "[]", "{}", "{a: 1, b: [2, 3]}", "~", "null", '""', "[[1], {x: 2}]",
+              "!!binary AAAA", "!custom 1", "*undefined", "&r [*r]", "? [1]\n", "{? a}",
+              "[a, {b: c}, [d, [e]]]", '"\\x00"', "'''", "|\n  text", "- 1"]
+
+
+def structure(rng):
+    roll = rng.random()
+    if roll < 0.2:
+        return nested(rng)
+    if roll < 0.3:
+        return alias_bomb(rng)
+    value = rng.choice(STRUCTURES)
+    return value, f"{value!r}"
+
+
+YAML_VALUE = re.compile(r"(?<=: )[^,\]}\n#]+")
+YAML_KEY = re.compile(r"([A-Za-z_][\w.]*): ")
+
+
+def yaml_value(text, rng):
+    matches = list(YAML_VALUE.finditer(text))
+    if not matches:
+        return None
+    m = rng.choice(matches)
+    value, what = structure(rng)
+    return text[:m.start()] + value + text[m.end():], f"value {m.group()!r} replaced by {what}"
+
+
+def yaml_insert(text, rng):
+    """A new key line (an existing key: a duplicate or a misplaced one) with a structure."""
+    lines = text.splitlines(keepends=True)
+    i = rng.randrange(len(lines) + 1)
+    keys = YAML_KEY.findall(text)
+    key = rng.choice(keys) if keys and rng.random() < 0.7 else rng.choice(["zz", "qp", "0", "<<"])
+    indent = ""
+    if i < len(lines) and rng.random() < 0.5:
+        indent = re.match(r"[ -]*", lines[i]).group().replace("-", " ")
+    value, what = structure(rng)
+    lines.insert(i, f"{indent}{key}: {value}\n")
+    return "".join(lines), f"line {i + 1} inserted: {indent}{key}: {what}"
+
+
+def yaml_duplicate_key(text, rng):
+    """Repeats a key: value pair within its flow map or block."""
+    pairs = list(re.finditer(r"([A-Za-z_]\w*): ([^,\]}\n#]+)", text))
+    if not pairs:
+        return None
+    m = rng.choice(pairs)
+    value = rng.choice([m.group(2), rng.choice(YAML_EXTREMES)])
+    line_start = text.rfind("\n", 0, m.start()) + 1
+    in_flow = "{" in text[line_start:m.start()]
+    if in_flow:
+        insert = f", {m.group(1)}: {value}"
+        at = m.end()
+    else:
+        insert = f"\n{' ' * (m.start() - line_start)}{m.group(1)}: {value}"
+        at = text.find("\n", m.end()) if "\n" in text[m.end():] else len(text)
+    return text[:at] + insert + text[at:], f"key {m.group(1)} repeated with value {value}"
+
+
+def yaml_alias(text, rng):
+    matches = list(YAML_VALUE.finditer(text))
+    if len(matches) < 2:
+        return None
+    a, b = rng.sample(matches, 2)
+    # Replace from the back so that the first span's offsets stay valid.
+    edits = sorted([(a, f"&x {a.group()}"), (b, "*x")], key=lambda e: e[0].start(), reverse=True)
+    for m, new in edits:
+        text = text[:m.start()] + new + text[m.end():]
+    return text, f"anchor &x on {a.group()!r}, alias *x for {b.group()!r}"
+
+
+def yaml_block_nesting(text, rng):
+    depth = rng.choice([10, 100, 1000])
+    lines = text.splitlines(keepends=True)
+    i = rng.randrange(len(lines) + 1)
+    block = "".join("  " * k + "a:\n" for k in range(depth)) + "  " * depth + "1\n"
+    lines.insert(i, block)
+    return "".join(lines), f"block maps nested {depth} deep inserted at line {i + 1}"
+
+
+def yaml_document(text, rng):
+    marker = rng.choice(["---\n", "...\n", "%YAML 1.2\n---\n", "%TAG ! tag:x,2000:\n---\n",
+                         "--- !!map\n", "---\n---\n"])
+    lines = text.splitlines(keepends=True)
+    i = rng.randrange(len(lines) + 1)
+    lines.insert(i, marker)
+    return "".join(lines), f"{marker!r} inserted at line {i + 1}"
+
+
+YAML_MUTATORS = [number_replacer(YAML_EXTREMES), yaml_value, yaml_insert, yaml_duplicate_key,
+                 yaml_alias, yaml_block_nesting, yaml_document]
+
+
+# ---- Gmsh MSH sections ------------------------------------------------------------------------
+
+def section_line(text, name):
+    """Offsets of the line after `$name` (its count line), or None."""
+    m = re.search(rf"^\${name}[ \t\r]*\n([^\n]*)", text, re.M)
+    return (m.start(1), m.end(1)) if m else None
+
+
+def msh_count(text, rng):
+    names = [n for n in ["Nodes", "Elements", "PhysicalNames", "Entities"]
+             if section_line(text, n)]
+    if not names:
+        return None
+    name = rng.choice(names)
+    start, end = section_line(text, name)
+    words = text[start:end].split()
+    if not words:
+        return None
+    k = rng.randrange(len(words))
+    old = int(words[k]) if re.fullmatch(r"-?\d+", words[k]) else 1
+    words[k] = str(rng.choice([old + 1, old - 1, 0, -1, 2 * old, 2147483648, 999999999999,
+                               -2147483649, "x", "1e308", "1.5"]))
+    return text[:start] + " ".join(words) + text[end:], f"${name} count line -> {' '.join(words)}"
+
+
+def msh_physical(text, rng):
+    block = re.search(r"^\$PhysicalNames[ \t\r]*\n[^\n]*\n(.*?)^\$EndPhysicalNames", text,
+                      re.M | re.S)
+    if not block or not block.group(1).strip():
+        return None
+    lines = block.group(1).splitlines(keepends=True)
+    i = rng.randrange(len(lines))
+    parts = lines[i].rstrip("\n").split(" ", 2)
+    if len(parts) < 3:
+        return None
+    dim, tag, name = parts
+    change = rng.choice(["dim", "tag", "quote"])
+    if change == "dim":
+        dim = str(rng.choice([-1, 0, 1, 2, 3, 4, 7, 255, 2147483648, "x"]))
+    elif change == "tag":
+        tags = [line.split(" ", 2)[1] for line in lines if line.count(" ") >= 2]
+        tag = str(rng.choice([0, -1, 2147483647, 2147483648, 999999999999, rng.choice(tags)]))
+    else:
+        name = rng.choice([name.lstrip('"'), name.rstrip('"'), name.strip('"'), '""',
+                           name[:-1] + '"x"', '"' + "n" * 10000 + '"', '"a b"', '"\\"'])
+    lines[i] = f"{dim} {tag} {name}\n"
+    return (text[:block.start(1)] + "".join(lines) + text[block.end(1):],
+            f"$PhysicalNames line {i + 1} -> {lines[i].strip()[:60]}")
+
+
+def msh_format(text, rng):
+    where = section_line(text, "MeshFormat")
+    if not where:
+        return None
+    current = text[where[0]:where[1]]
+    version = rng.choice([v for v in ["2.2 0 8", "4.1 0 8", "4 0 8", "4.0 0 8", "3.0 0 8",
+                                      "1.0 0 8", "4.1 1 8", "4.1 0 4", "2.2 1 8", "4.1", "",
+                                      "41 0 8", "nan 0 8", "-4.1 0 8", "2.2 0 8 extra"]
+                          if v != current])
+    return text[:where[0]] + version + text[where[1]:], f"$MeshFormat line -> {version!r}"
+
+
+def msh_section(text, rng):
+    sections = list(re.finditer(r"^\$(\w+)[ \t\r]*\n.*?^\$End\1[ \t\r]*\n?", text, re.M | re.S))
+    if not sections:
+        return None
+    s = rng.choice(sections)
+    name = s.group(1)
+    change = rng.choice(["drop end", "drop", "duplicate", "rename", "move first"])
+    body = s.group()
+    if change == "drop end":
+        body = re.sub(rf"^\$End{name}[ \t\r]*\n?", "", body, flags=re.M)
+    elif change == "drop":
+        body = ""
+    elif change == "duplicate":
+        body = body + body
+    elif change == "rename":
+        body = body.replace(f"${name}", f"${name}z", 1)
+    else:
+        return body + text[:s.start()] + text[s.end():], f"section ${name} moved first"
+    return text[:s.start()] + body + text[s.end():], f"section ${name}: {change}"
+
+
+MSH_MUTATORS = [number_replacer(EXTREMES), msh_count, msh_physical, msh_format, msh_section]
+
+
+# ---- Matrix Market headers ---------------------------------------------------------------------
+
+BANNER_WORDS = [["%%MatrixMarket", "%MatrixMarket", "%%matrixmarket", "MatrixMarket", "%%"],
+                ["matrix", "vector", "Matrix", "tensor"],
+                ["coordinate", "array", "COORDINATE", "dense"],
+                ["real", "integer", "complex", "pattern", "double", "Real"],
+                ["general", "symmetric", "skew-symmetric", "hermitian", "Symmetric", "upper"]]
+
+
+def mm_header(text, rng):
+    end = text.find("\n")
+    words = text[:end if end >= 0 else len(text)].split()
+    change = rng.choice(["word", "word", "word", "drop", "add", "remove banner"])
+    if change == "remove banner":
+        return text[end + 1:] if end >= 0 else "", "banner line removed"
+    if change == "word" and words:
+        k = rng.randrange(min(len(words), len(BANNER_WORDS)))
+        words[k] = rng.choice(BANNER_WORDS[k])
+    elif change == "drop" and words:
+        del words[rng.randrange(len(words))]
+    else:
+        words.insert(rng.randrange(len(words) + 1), rng.choice(["real", "extra", "%"]))
+    banner = " ".join(words)
+    return banner + (text[end:] if end >= 0 else ""), f"banner -> {banner!r}"
+
+
+def mm_size(text, rng):
+    m = re.search(r"^(?!%)[^\n]*", text, re.M)
+    if not m:
+        return None
+    words = m.group().split()
+    change = rng.choice(["number", "number", "number", "drop", "add"])
+    if change == "number" and words:
+        k = rng.randrange(len(words))
+        old = int(words[k]) if re.fullmatch(r"-?\d+", words[k]) else 1
+        words[k] = str(rng.choice([old + 1, old - 1, 0, -1, 2147483648, 999999999999,
+                                   "x", "1.5", "1e308", "nan"]))
+    elif change == "drop" and words:
+        del words[rng.randrange(len(words))]
+    else:
+        words.append(rng.choice(["1", "12", "0"]))
+    line = " ".join(words)
+    return text[:m.start()] + line + text[m.end():], f"size line -> {line!r}"
+
+
+MM_MUTATORS = [number_replacer(EXTREMES), mm_header, mm_size]
+
+SPECIFIC = {".yaml": YAML_MUTATORS, ".msh": MSH_MUTATORS, ".mtx": MM_MUTATORS}
+
+
+def mutate(data, suffix, rng):
+    """One to three mutations, half of them of the file's format; returns text, descriptions."""
+    text = data.decode("latin-1")
+    done = []
+    wanted = rng.choice([1, 1, 1, 2, 3])
+    while len(done) < wanted:
+        pool = SPECIFIC[suffix] if rng.random() < 0.5 else GENERIC
+        result = rng.choice(pool)(text, rng)
+        if result is not None:
+            text, what = result
+            done.append(what)
+    return text.encode("latin-1"), done
+
+
+# ---- running and judging a mutant -----------------------------------------------------------------
+
+def make_case(kind, rng, seed_dir):
+    """Files of the case (name -> bytes), the mutated file's name, the command after FETICON."""
+    if kind == "mm":
+        files = {name: read(seed_dir, name) for name in MM_FILES}
+        target = rng.choices(MM_FILES, weights=[2, 1, 1])[0]
+        return files, target, QP_COMMAND
+    names = rng.choice(PROBLEM_SEEDS if kind == "problem" else PROBLEM_SEEDS[2:])
+    files = {name: read(seed_dir, name) for name in names}
+    target = names[0] if kind == "problem" else names[1]
+    return files, target, ["run", names[0], "--output", "out"] + RUN_OPTIONS
+
+
+def read(folder, name):
+    with open(os.path.join(folder, name), "rb") as f:
+        return f.read()
+
+
+def run(feticon, command, folder, timeout):
+    """Runs in its own process group (an MPI singleton may fork); returns status, out, err."""
+    with open(os.path.join(folder, "stdout.txt"), "wb") as out, \
+            open(os.path.join(folder, "stderr.txt"), "wb") as err:
+        process = subprocess.Popen([feticon] + command, cwd=folder, stdout=out, stderr=err,
+                                   stdin=subprocess.DEVNULL, start_new_session=True)
+        try:
+            status = process.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
+            status = None
+    return (status, read_text(os.path.join(folder, "stdout.txt")),
+            read_text(os.path.join(folder, "stderr.txt")))
+
+
+def read_text(path, limit=1 << 20):
+    """The first MiB of a file: enough to judge it, and bounded when a mutant floods output."""
+    with open(path, "rb") as f:
+        return f.read(limit).decode("utf-8", "replace")
+
+
+def non_finite_json(value):
+    """nlohmann writes NaN and infinities as null, so null counts as non-finite."""
+    if value is None:
+        return True
+    if isinstance(value, float):
+        return not math.isfinite(value)
+    if isinstance(value, dict):
+        return any(non_finite_json(v) for v in value.values())
+    if isinstance(value, list):
+        return any(non_finite_json(v) for v in value)
+    return False
+
+
+def non_finite_text(text):
+    for token in re.split(r"[,\s]+", text):
+        try:
+            if not math.isfinite(float(token)):
+                return True
+        except ValueError:
+            pass
+    return False
+
+
+def parse_json(text):
+    try:
+        return json.loads(text, parse_constant=float)
+    except ValueError:
+        return None
+
+
+def judge(kind, folder, status, stdout, stderr):
+    """The outcome of one run: one of OUTCOMES."""
+    if status is None:
+        return "timeout"
+    if status < 0 or status >= 128:
+        return "signal"
+    if status not in ((0, 1, 3) if kind == "mm" else (0, 1)):
+        return "other exit"
+    if kind == "mm":
+        report = parse_json(stdout) if status != 1 else None
+        x = os.path.join(folder, "x.mtx")
+        if ((report is not None and non_finite_json(report)) or non_finite_text(stdout)
+                or (os.path.exists(x) and non_finite_text(read_text(x)))):
+            return "non-finite"
+    else:
+        out = os.path.join(folder, "out")
+        summary = os.path.join(out, "summary.json")
+        report = parse_json(read_text(summary)) if os.path.exists(summary) else None
+        csvs = [os.path.join(out, f) for f in os.listdir(out) if f.endswith(".csv")] \
+            if os.path.isdir(out) else []
+        if (report is not None and non_finite_json(report)) or \
+                any(non_finite_text(read_text(f)) for f in csvs):
+            return "non-finite"
+    # Lines as `wc -l` counts them (tests/cli/bad_inputs.sh): a '\r' echoed from the input
+    # does not end a line.
+    if status == 1 and stderr.count("\n") != 1:
+        return "multi-line error"
+    if status != 1 and not isinstance(report, dict):
+        return "bad output"
+    return f"exit {status}"
+
+
+def keep_failure(keep, name, folder, files, seed_files, target, command, what, outcome, stderr):
+    saved = os.path.join(keep, name)
+    shutil.rmtree(saved, ignore_errors=True)
+    shutil.copytree(folder, saved, ignore=shutil.ignore_patterns("out", "x.mtx"))
+    diff = difflib.unified_diff(seed_files[target].decode("latin-1").splitlines(keepends=True),
+                                files[target].decode("latin-1").splitlines(keepends=True),
+                                f"seed/{target}", target)
+    with open(os.path.join(saved, "diff.txt"), "w", encoding="latin-1") as f:
+        f.write(f"# {outcome}: {'; '.join(what)}\n")
+        f.writelines(line[:2000] + ("\n" if len(line) > 2000 else "") for line in diff)
+    with open(os.path.join(saved, "command.sh"), "w") as f:
+        f.write(f'#!/usr/bin/env bash\n# {outcome}; first line of stderr: '
+                f'{(stderr.splitlines() or [""])[0][:200]}\n'
+                f'cd "$(dirname "$0")" && rm -rf out && '
+                f'"${{FETICON:-feticon}}" {shlex.join(command)}\n')
+    return saved
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("feticon")
+    parser.add_argument("source_dir")
+    amount = parser.add_mutually_exclusive_group()
+    amount.add_argument("--mutants", type=int, default=60)
+    amount.add_argument("--minutes", type=float)
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--kinds", default="problem,gmsh,mm")
+    parser.add_argument("--timeout", type=float, default=30)
+    parser.add_argument("--keep")
+    args = parser.parse_args()
+    kinds = args.kinds.split(",")
+    unknown = set(kinds) - {"problem", "gmsh", "mm"}
+    if unknown:
+        parser.error(f"unknown kinds {sorted(unknown)}")
+    feticon = os.path.abspath(args.feticon)
+    seed_dir = os.path.join(args.source_dir, "tests", "data", "fuzz")
+    keep = args.keep
+    work = tempfile.mkdtemp(prefix="feticon-fuzz-run-")
+    counts = {kind: dict.fromkeys(OUTCOMES, 0) for kind in kinds}
+    failures = []
+    start = time.monotonic()
+    index = 0
+    try:
+        while (index < args.mutants if args.minutes is None
+               else time.monotonic() - start < 60 * args.minutes):
+            kind = kinds[index % len(kinds)]
+            rng = random.Random(f"{args.seed}/{index}")
+            seed_files, target, command = make_case(kind, rng, seed_dir)
+            files = dict(seed_files)
+            files[target], what = mutate(seed_files[target], os.path.splitext(target)[1], rng)
+            folder = os.path.join(work, f"{kind}-{index:05d}")
+            os.mkdir(folder)
+            for name, data in files.items():
+                with open(os.path.join(folder, name), "wb") as f:
+                    f.write(data)
+            status, stdout, stderr = run(feticon, command, folder, args.timeout)
+            outcome = judge(kind, folder, status, stdout, stderr)
+            counts[kind][outcome] += 1
+            if outcome in FAILURES:
+                keep = keep or tempfile.mkdtemp(prefix="feticon-fuzz-failures-")
+                saved = keep_failure(keep, f"{kind}-{index:05d}", folder, files, seed_files,
+                                     target, command, what, outcome, stderr)
+                failures.append(saved)
+                print(f"FAIL {kind} mutant {index} ({target}: {'; '.join(what)[:300]}): "
+                      f"{outcome} (status {status}); saved in {saved}", flush=True)
+            shutil.rmtree(folder)
+            index += 1
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+    elapsed = time.monotonic() - start
+    shown = [o for o in OUTCOMES if any(counts[k][o] for k in kinds)] or OUTCOMES[:2]
+    print(f"\n{index} mutants in {elapsed:.0f} s (seed {args.seed})")
+    print(f"{'kind':10}" + "".join(f"{o:>18}" for o in shown) + f"{'total':>8}")
+    for kind in kinds:
+        print(f"{kind:10}" + "".join(f"{counts[kind][o]:>18}" for o in shown)
+              + f"{sum(counts[kind].values()):>8}")
+    if failures:
+        print(f"{len(failures)} failing mutants saved in {keep} (FETICON=... bash "
+              f"{keep}/NAME/command.sh reproduces one)")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
