@@ -5,12 +5,9 @@
 #include "fem/problem.hpp"
 #include "io/problem_file.hpp"
 #include "io/settings.hpp"
-#include "nonlinear/contact_solution.hpp"
 #include "nonlinear/solver_settings.hpp"
 #include "problems/hertz.hpp"
 #include "problems/hertz3d.hpp"
-
-#include <nlohmann/json.hpp>
 
 namespace feticon::app
 {
