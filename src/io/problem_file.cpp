@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <algorithm>
+#include <array>
 #include <set>
 #include <sstream>
 #include <yaml-cpp/depthguard.h>
@@ -168,6 +169,16 @@ struct Reader
   }
 };
 
+/// A box's `cells`: three integers in 1..10000 (read before meshing by the memory guard too).
+std::array<int, 3> box_cells(const YAML::Node& box, const std::string& key, const Reader& r)
+{
+  const Eigen::Vector3d cells = r.vector3(box["cells"], key + ".cells");
+  for (int d = 0; d < 3; ++d)
+    FETICON_CHECK(cells(d) >= 1 && cells(d) == std::floor(cells(d)) && cells(d) <= 1e4,
+                  r.source << ": " << key << ".cells must be three positive integers (at most 10000)");
+  return {static_cast<int>(cells(0)), static_cast<int>(cells(1)), static_cast<int>(cells(2))};
+}
+
 mesh::HexMesh boxes_mesh(const YAML::Node& boxes, const Reader& r)
 {
   FETICON_CHECK(boxes.IsSequence() && boxes.size() > 0,
@@ -181,13 +192,10 @@ mesh::HexMesh boxes_mesh(const YAML::Node& boxes, const Reader& r)
     p.body_name = r.text(boxes[i]["name"], key + ".name");
     p.origin = boxes[i]["origin"] ? r.vector3(boxes[i]["origin"], key + ".origin") : Eigen::Vector3d::Zero();
     p.lengths = r.vector3(boxes[i]["lengths"], key + ".lengths");
-    const Eigen::Vector3d cells = r.vector3(boxes[i]["cells"], key + ".cells");
-    for (int d = 0; d < 3; ++d)
-      FETICON_CHECK(cells(d) >= 1 && cells(d) == std::floor(cells(d)) && cells(d) <= 1e4,
-                    r.source << ": " << key << ".cells must be three positive integers (at most 10000)");
-    p.nx = static_cast<int>(cells(0));
-    p.ny = static_cast<int>(cells(1));
-    p.nz = static_cast<int>(cells(2));
+    const std::array<int, 3> cells = box_cells(boxes[i], key, r);
+    p.nx = cells[0];
+    p.ny = cells[1];
+    p.nz = cells[2];
     mesh::HexMesh box = mesh::generate_box(p); // validates lengths
     if (i == 0)
     {
@@ -333,15 +341,8 @@ CustomMeshSize custom_mesh_size(const ProblemFile& file)
     const std::string key = "mesh.boxes." + std::to_string(i);
     if (!boxes[i].IsMap() || !boxes[i]["cells"])
       continue; // boxes_mesh says what is missing
-    const Eigen::Vector3d cells = r.vector3(boxes[i]["cells"], key + ".cells");
-    double nodes = 1;
-    for (int d = 0; d < 3; ++d)
-    {
-      FETICON_CHECK(cells(d) >= 1 && cells(d) == std::floor(cells(d)) && cells(d) <= 1e4,
-                    r.source << ": " << key << ".cells must be three positive integers (at most 10000)");
-      nodes *= cells(d) + 1;
-    }
-    size.nodes += static_cast<int64_t>(nodes);
+    const std::array<int, 3> cells = box_cells(boxes[i], key, r);
+    size.nodes += int64_t(cells[0] + 1) * (cells[1] + 1) * (cells[2] + 1);
   }
   return size;
 }
