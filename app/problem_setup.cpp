@@ -24,7 +24,7 @@ problems::HertzParameters hertz_parameters(const io::Settings& s)
 {
   problems::HertzParameters p;
   p.line_load = s.number("hertz.line_load");
-  p.mesh.kind = s.text("hertz.mesh") == "tensor" ? mesh::HertzMeshKind::tensor : mesh::HertzMeshKind::graded;
+  p.mesh.kind = s.text("hertz.mesh") == "tensor" ? problems::HertzMeshKind::tensor : problems::HertzMeshKind::graded;
   p.mesh.refinement = s.number("hertz.refinement");
   p.mesh.element_size = s.number("hertz.element_size");
   p.mesh.master_ratio = s.number("hertz.master_ratio");
@@ -55,7 +55,7 @@ MeshPrediction predict_mesh(const io::ProblemFile& file)
 {
   const std::string& kind = file.settings.text("problem");
   if (kind == "hertz")
-    return {mesh::hertz_node_estimate(hertz_parameters(file.settings).mesh), true};
+    return {problems::hertz_node_estimate(hertz_parameters(file.settings).mesh), true};
   if (kind == "hertz3d")
     return {problems::hertz3d_node_count(hertz3d_parameters(file.settings)), false};
   if (kind == "cantilever_obstacle")

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -54,15 +55,21 @@ std::string effective_problem(const io::ProblemFile& file)
   return file.settings.to_yaml() + structured + "\n";
 }
 
-/// Downward displacement of the cylinder's axis: the mean u_y of the load face (y = R1),
-/// which passes through the axis (m).
-double axis_approach(const fem::Problem& problem, const la::Vector& u)
+/// The slave pressure samples as profiles for the Hertz comparisons, at their distance from
+/// the symmetry plane x = 0 (2D) or from the axis (3D), in both frames.
+struct HertzProfiles
 {
-  const auto& nodes = problem.mesh.node_set("load");
-  double sum = 0;
-  for (int32_t n : nodes)
-    sum += u(3 * n + 1);
-  return -sum / static_cast<double>(nodes.size());
+  std::vector<problems::ProfilePoint> reference, deformed;
+};
+HertzProfiles hertz_profiles(const std::vector<nonlinear::PressureSample>& samples, bool radial)
+{
+  HertzProfiles out;
+  for (const auto& s : samples)
+  {
+    out.reference.push_back({radial ? std::hypot(s.x, s.y) : s.x, s.pressure});
+    out.deformed.push_back({radial ? std::hypot(s.deformed_x, s.deformed_y) : s.deformed_x, s.pressure});
+  }
+  return out;
 }
 
 /// The figures of summary.json's `hertz` block that the 2D (McEwen) and 3D (Hertz)
@@ -255,46 +262,43 @@ void run(const RunOptions& options)
     for (const auto& sample : samples)
       peak = std::max(peak, sample.pressure);
     for (const auto& sample : samples)
-      area += sample.pressure > nonlinear::loaded_fraction * peak ? sample.area : 0.0;
+      area += sample.pressure > problems::loaded_fraction * peak ? sample.area : 0.0;
     summary["contact"] = {{"total_normal_force", nonlinear::total_normal_force(solution)},
                           {"peak_pressure", peak},
                           {"contact_area", area},
                           {"active_constraints", active},
                           {"feasibility_error", solution.feasibility_error}};
-    if (is_hertz)
+    if (is_hertz || is_hertz3d)
     {
       // Large displacements: the figures in the deformed frame, the reference frame's beside.
       const bool large = solver.kinematics == fem::Kinematics::total_lagrangian;
-      const nonlinear::HertzComparison reference = nonlinear::compare_with_hertz(hertz, samples, false);
-      const nonlinear::HertzComparison h = large ? nonlinear::compare_with_hertz(hertz, samples, true) : reference;
-      summary["contact"]["applied_load"] = h.applied_load;
-      summary["hertz"] = hertz_json(h, reference, large);
-      summary["hertz"]["axis_approach"] = axis_approach(*problem, solution.u);
-      summary["hertz"]["contact_element_size"] = h.element_size;
-    }
-    if (is_hertz3d)
-    {
-      // As in 2D: the deformed frame for large displacements, the reference frame's beside.
-      const bool large = solver.kinematics == fem::Kinematics::total_lagrangian;
-      std::vector<problems::RadialPressure> at_reference, at_deformed;
-      for (const auto& s : samples)
+      const HertzProfiles profiles = hertz_profiles(samples, is_hertz3d);
+      const auto& in_frame = large ? profiles.deformed : profiles.reference;
+      std::function<double(double)> analytic;
+      if (is_hertz)
       {
-        at_reference.push_back({std::hypot(s.x, s.y), s.pressure});
-        at_deformed.push_back({std::hypot(s.deformed_x, s.deformed_y), s.pressure});
+        const problems::HertzComparison reference = problems::compare_with_hertz(hertz, profiles.reference);
+        const problems::HertzComparison h = large ? problems::compare_with_hertz(hertz, profiles.deformed) : reference;
+        summary["contact"]["applied_load"] = h.applied_load;
+        summary["hertz"] = hertz_json(h, reference, large);
+        summary["hertz"]["axis_approach"] = problems::hertz_axis_approach(*problem, solution.u);
+        summary["hertz"]["contact_element_size"] = h.element_size;
+        analytic = [m = problems::hertz_analytic(hertz)](double x) { return m.pressure(x); };
       }
-      const auto& in_frame = large ? at_deformed : at_reference;
-      const auto reference = problems::compare_with_hertz3d(hertz3d, at_reference, nonlinear::loaded_fraction);
-      const auto h = large ? problems::compare_with_hertz3d(hertz3d, at_deformed, nonlinear::loaded_fraction)
-                           : reference;
-      const problems::Hertz3dAnalytic analytic = problems::hertz3d_analytic(hertz3d);
+      else
+      {
+        const auto reference = problems::compare_with_hertz3d(hertz3d, profiles.reference);
+        const auto h = large ? problems::compare_with_hertz3d(hertz3d, profiles.deformed) : reference;
+        summary["contact"]["applied_load"] = 0.25 * hertz3d.load;
+        summary["hertz"] = hertz_json(h, reference, large);
+        summary["hertz"]["rms_nodes"] = h.nodes_in_rms;
+        summary["hertz"]["approach_analytic"] = h.approach_analytic;
+        summary["hertz"]["approach_computed"] = problems::hertz3d_approach(*problem, solution.u);
+        summary["hertz"]["contact_element_size"] = hertz3d.element_size / hertz3d.refinement;
+        analytic = [m = problems::hertz3d_analytic(hertz3d)](double r) { return m.pressure(r); };
+      }
       for (size_t i = 0; i < samples.size(); ++i)
-        samples[i].analytic = analytic.pressure(in_frame[i].r);
-      summary["contact"]["applied_load"] = 0.25 * hertz3d.load;
-      summary["hertz"] = hertz_json(h, reference, large);
-      summary["hertz"]["rms_nodes"] = h.nodes_in_rms;
-      summary["hertz"]["approach_analytic"] = h.approach_analytic;
-      summary["hertz"]["approach_computed"] = problems::hertz3d_approach(*problem, solution.u);
-      summary["hertz"]["contact_element_size"] = hertz3d.element_size / hertz3d.refinement;
+        samples[i].analytic = analytic(in_frame[i].r);
     }
     if (writer)
       write_pressure_csv(out_dir / "contact_pressure.csv", samples);

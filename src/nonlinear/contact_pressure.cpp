@@ -51,7 +51,7 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
                                           std::lround(X(node, 2) * key_scale), node);
   };
   std::map<std::tuple<long, long, long, int32_t>, PressureSample> by_x;
-  std::map<std::tuple<long, long, long, int32_t>, int> nodes_in_sample;
+  std::map<std::tuple<long, long, long, int32_t>, int> nodes_in_sample, rows_in_sample;
   for (int32_t node : problem.mesh.face_set_nodes(problem.contacts[0].slave))
   {
     const auto key = key_of(node);
@@ -69,7 +69,9 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
   for (size_t i = 0; i < rows.slave_node.size(); ++i)
   {
     const int32_t node = rows.slave_node[i];
-    auto& s = by_x[key_of(node)];
+    const auto key = key_of(node);
+    auto& s = by_x[key];
+    ++rows_in_sample[key];
     s.force += solution.contact_lambda(static_cast<la::Index>(i)) / rows.row_norm[i];
     const Eigen::Vector3d& n = rows.normal[i];
     const auto& v = stresses[node];
@@ -77,80 +79,18 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
     sigma << v(0), v(3), v(5), v(3), v(1), v(4), v(5), v(4), v(2);
     // Average over the nodes of the line (weights: equal).
     s.stress_pressure += -n.dot(sigma * n);
-    s.analytic += 1; // temporary count of rows at this x
   }
   std::vector<PressureSample> out;
   for (auto& [key, s] : by_x)
   {
     s.deformed_x /= nodes_in_sample[key];
     s.deformed_y /= nodes_in_sample[key];
-    if (s.analytic > 0)
-      s.stress_pressure /= s.analytic;
-    s.analytic = 0;
+    if (rows_in_sample[key] > 0)
+      s.stress_pressure /= rows_in_sample[key];
     s.pressure = s.area > 0 ? s.force / s.area : 0;
     out.push_back(s);
   }
   return out;
 }
 
-HertzComparison compare_with_hertz(const problems::HertzParameters& parameters,
-                                   std::vector<PressureSample>& samples, bool deformed_frame)
-{
-  const problems::HertzAnalytic analytic = problems::hertz_analytic(parameters);
-  HertzComparison h;
-  h.a_analytic = analytic.half_width;
-  h.p0_analytic = analytic.peak_pressure;
-  h.applied_load = 0.5 * parameters.line_load * parameters.mesh.thickness;
-  if (samples.empty())
-    return h;
-  // (coordinate, pressure) in the frame, sorted.
-  std::vector<std::pair<double, double>> profile;
-  for (auto& s : samples)
-  {
-    const double x = deformed_frame ? s.deformed_x : s.x;
-    s.analytic = analytic.pressure(x);
-    h.p_peak_computed = std::max(h.p_peak_computed, s.pressure);
-    profile.push_back({x, s.pressure});
-  }
-  std::sort(profile.begin(), profile.end());
-
-  // p^2 = A + B x^2 over the loaded samples; a = sqrt(-A / B).
-  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (const auto& [x, p] : profile)
-    if (p > loaded_fraction * h.p_peak_computed)
-    {
-      const double X = x * x, Y = p * p;
-      n += 1, sx += X, sy += Y, sxx += X * X, sxy += X * Y;
-    }
-  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  const double intercept = (sy - slope * sx) / n;
-  h.a_computed = n >= 2 && slope < 0 && intercept > 0 ? std::sqrt(-intercept / slope) : 0;
-  for (size_t i = 0; i + 1 < profile.size(); ++i)
-    if (profile[i].first <= h.a_computed && h.a_computed <= profile[i + 1].first)
-      h.element_size = profile[i + 1].first - profile[i].first;
-
-  auto interpolate = [&](double x)
-  {
-    if (x <= profile.front().first)
-      return profile.front().second;
-    for (size_t i = 0; i + 1 < profile.size(); ++i)
-      if (x <= profile[i + 1].first)
-      {
-        const auto [x0, p0] = profile[i];
-        const auto [x1, p1] = profile[i + 1];
-        return x1 > x0 ? p0 + (p1 - p0) * (x - x0) / (x1 - x0) : p0;
-      }
-    return 0.0;
-  };
-  constexpr int points = 400;
-  double sum_sq = 0;
-  for (int k = 0; k < points; ++k)
-  {
-    const double x = analytic.half_width * (k + 0.5) / points;
-    const double e = interpolate(x) - analytic.pressure(x);
-    sum_sq += e * e;
-  }
-  h.rms_error_over_p0 = std::sqrt(sum_sq / points) / analytic.peak_pressure;
-  return h;
-}
 } // namespace feticon::nonlinear

@@ -1,6 +1,5 @@
 #pragma once
-/// @file Contact pressure at the slave nodes, from the multipliers and from the stresses,
-/// and the comparison with the Hertz / McEwen solution.
+/// @file Contact pressure at the slave nodes, from the multipliers and from the stresses.
 ///
 /// From multipliers: row i (normalized by ||b_i||) carries the normal force
 /// lambda_i / ||b_i|| on its slave node (ALGORITHMS.md section 4); the nodal pressure is that
@@ -11,7 +10,6 @@
 
 #include "fem/problem.hpp"
 #include "nonlinear/contact_solution.hpp"
-#include "problems/hertz.hpp"
 
 #include <vector>
 
@@ -41,28 +39,4 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
 /// Total normal contact force (N): sum of lambda_i / ||b_i||.
 double total_normal_force(const ContactSolution& solution);
 
-/// A sample carries contact force when its pressure exceeds this fraction of the largest:
-/// the one activity threshold of the Hertz figures (fit of a, loaded area).
-constexpr double loaded_fraction = 1e-3;
-
-/// The figures against McEwen's profile, all in one frame: the deformed coordinate x + u_x
-/// (large displacements, where the pressure is per deformed area and the slave nodes move
-/// by up to 0.45 mm at the contact edge) or the reference x.
-struct HertzComparison
-{
-  double a_analytic = 0, p0_analytic = 0;
-  /// Half-width from the least-squares fit p^2 = p0^2 (1 - x^2/a^2) over the loaded samples,
-  /// so that one lightly loaded node does not move it by an element.
-  double a_computed = 0;
-  double p_peak_computed = 0;   ///< largest nodal pressure from the multipliers
-  /// RMS of p - p_McEwen over 400 equidistant points of [0, a_analytic], p interpolated
-  /// linearly between samples, over p0 (bench/calculix_compare.py computes the same).
-  double rms_error_over_p0 = 0;
-  double element_size = 0;      ///< slave sample spacing at x = a_computed (m)
-  double applied_load = 0;      ///< Q/2 * thickness (N) carried by the half model
-};
-
-/// Fills `analytic` in `samples` (at the frame's coordinate) and returns the figures.
-HertzComparison compare_with_hertz(const problems::HertzParameters& parameters,
-                                   std::vector<PressureSample>& samples, bool deformed_frame);
 } // namespace feticon::nonlinear

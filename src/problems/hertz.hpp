@@ -10,13 +10,16 @@
 /// The cylinder is held vertically only by contact.
 
 #include "fem/problem.hpp"
-#include "mesh/hertz.hpp"
+#include "problems/hertz_mesh.hpp"
+#include "problems/pressure_profile.hpp"
+
+#include <vector>
 
 namespace feticon::problems
 {
 struct HertzParameters
 {
-  mesh::HertzMeshParameters mesh;
+  HertzMeshParameters mesh;
   double line_load = 4.0e8; ///< Q (N/m) on the whole cylinder; the half model carries Q/2
   fem::Material material{2.0e11, 0.3};
 };
@@ -35,4 +38,27 @@ struct HertzAnalytic
   double pressure(double x) const;
 };
 HertzAnalytic hertz_analytic(const HertzParameters& parameters);
+
+/// Downward displacement of the cylinder's axis under u: the mean u_y of the load face
+/// y = R1, which passes through the axis (m).
+double hertz_axis_approach(const fem::Problem& problem, const la::Vector& u);
+
+/// The figures against McEwen's profile, all in the frame of the samples: the deformed
+/// coordinate x + u_x for large displacements (the pressure is per deformed area and the slave
+/// nodes move by up to 0.45 mm at the contact edge) or the reference x.
+struct HertzComparison
+{
+  double a_analytic = 0, p0_analytic = 0;
+  double a_computed = 0;        ///< from the fit of p^2 (fitted_half_width)
+  double p_peak_computed = 0;   ///< largest nodal pressure from the multipliers
+  /// RMS of p - p_McEwen over 400 equidistant points of [0, a_analytic], p interpolated
+  /// linearly between samples, over p0 (bench/calculix_compare.py computes the same).
+  double rms_error_over_p0 = 0;
+  double element_size = 0;      ///< sample spacing at x = a_computed (m)
+  double applied_load = 0;      ///< Q/2 * thickness (N) carried by the half model
+};
+
+/// The figures; `samples` are the slave node lines at their distance r = x from the
+/// symmetry plane.
+HertzComparison compare_with_hertz(const HertzParameters& parameters, std::vector<ProfilePoint> samples);
 } // namespace feticon::problems

@@ -165,34 +165,23 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
 }
 
 Hertz3dComparison compare_with_hertz3d(const Hertz3dParameters& parameters,
-                                       const std::vector<RadialPressure>& samples, double loaded_fraction)
+                                       const std::vector<ProfilePoint>& samples)
 {
   const Hertz3dAnalytic analytic = hertz3d_analytic(parameters);
   Hertz3dComparison c;
   c.a_analytic = analytic.contact_radius;
   c.p0_analytic = analytic.peak_pressure;
   c.approach_analytic = analytic.approach;
-  for (const auto& s : samples)
-    c.p_peak_computed = std::max(c.p_peak_computed, s.pressure);
-  // p^2 = A + B r^2 over the loaded nodes; a = sqrt(-A / B).
-  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, sum_sq = 0;
-  for (const auto& s : samples)
-  {
-    if (s.pressure > loaded_fraction * c.p_peak_computed)
-    {
-      const double X = s.r * s.r, Y = s.pressure * s.pressure;
-      n += 1, sx += X, sy += Y, sxx += X * X, sxy += X * Y;
-    }
+  c.p_peak_computed = peak_pressure(samples);
+  c.a_computed = fitted_half_width(samples);
+  double sum_sq = 0;
+  for (const ProfilePoint& s : samples)
     if (s.r <= analytic.contact_radius)
     {
       const double e = s.pressure - analytic.pressure(s.r);
       sum_sq += e * e;
       ++c.nodes_in_rms;
     }
-  }
-  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  const double intercept = (sy - slope * sx) / n;
-  c.a_computed = n >= 2 && slope < 0 && intercept > 0 ? std::sqrt(-intercept / slope) : 0;
   c.rms_error_over_p0 = c.nodes_in_rms > 0 ? std::sqrt(sum_sq / c.nodes_in_rms) / analytic.peak_pressure : 0;
   return c;
 }

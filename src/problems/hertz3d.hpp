@@ -24,6 +24,7 @@
 ///   "block_support", "symmetry_x" (x = 0, both bodies), "symmetry_y" (y = 0, both bodies).
 
 #include "fem/problem.hpp"
+#include "problems/pressure_profile.hpp"
 
 #include <vector>
 
@@ -64,24 +65,17 @@ int64_t hertz3d_node_count(const Hertz3dParameters& parameters);
 /// loaded far face, relative to the block's fixed far face (m).
 double hertz3d_approach(const fem::Problem& problem, const la::Vector& u);
 
-/// One slave node's pressure at its distance r from the axis (in the frame of the comparison).
-struct RadialPressure
-{
-  double r = 0;
-  double pressure = 0;
-};
-
 struct Hertz3dComparison
 {
   double a_analytic = 0, p0_analytic = 0, approach_analytic = 0;
-  /// Contact radius from the least-squares fit p^2 = p0^2 (1 - r^2/a^2) over the loaded nodes
-  /// (pressure above `loaded_fraction` of the largest).
+  /// Contact radius from the fit of p^2 (fitted_half_width).
   double a_computed = 0;
   double p_peak_computed = 0;   ///< largest nodal pressure
   /// RMS over the slave nodes with r <= a_analytic of p - p_Hertz(r), over p0.
   double rms_error_over_p0 = 0;
   int nodes_in_rms = 0;
 };
+/// The figures against Hertz's p(r), the samples at their distance r from the axis.
 Hertz3dComparison compare_with_hertz3d(const Hertz3dParameters& parameters,
-                                       const std::vector<RadialPressure>& samples, double loaded_fraction);
+                                       const std::vector<ProfilePoint>& samples);
 } // namespace feticon::problems

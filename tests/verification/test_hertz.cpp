@@ -21,7 +21,7 @@ namespace
 {
 struct HertzRun
 {
-  nonlinear::HertzComparison hertz;
+  problems::HertzComparison hertz;
   double force = 0;
   double feasibility = 0;
   int mprgp = 0;
@@ -47,9 +47,11 @@ HertzRun run_hertz(double refinement, dual::DualMethod method, double rho,
   TimerTable timers;
   const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
   EXPECT_TRUE(solution.converged) << solution.reason;
-  auto samples = nonlinear::slave_pressure_by_x(problem, solution, fem::Kinematics::linear);
+  std::vector<problems::ProfilePoint> profile;
+  for (const auto& p : nonlinear::slave_pressure_by_x(problem, solution, fem::Kinematics::linear))
+    profile.push_back({p.x, p.pressure});
   HertzRun out;
-  out.hertz = nonlinear::compare_with_hertz(parameters, samples, false);
+  out.hertz = problems::compare_with_hertz(parameters, profile);
   out.force = nonlinear::total_normal_force(solution);
   out.feasibility = solution.feasibility_error;
   for (const auto& it : solution.history)

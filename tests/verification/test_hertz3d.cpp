@@ -74,11 +74,11 @@ Hertz3dRun solve(double refinement, fem::Kinematics kinematics)
   const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
   EXPECT_TRUE(solution.converged) << solution.reason;
   const bool large = kinematics == fem::Kinematics::total_lagrangian;
-  std::vector<problems::RadialPressure> radial;
+  std::vector<problems::ProfilePoint> radial;
   for (const auto& p : nonlinear::slave_pressure_by_x(problem, solution, kinematics))
     radial.push_back({large ? std::hypot(p.deformed_x, p.deformed_y) : std::hypot(p.x, p.y), p.pressure});
   Hertz3dRun out;
-  out.hertz = problems::compare_with_hertz3d(parameters, radial, nonlinear::loaded_fraction);
+  out.hertz = problems::compare_with_hertz3d(parameters, radial);
   out.force = nonlinear::total_normal_force(solution);
   for (const auto& step : solution.steps)
     out.outer_max = std::max(out.outer_max, step.outer_iterations);

@@ -54,7 +54,7 @@ Profile read_reference()
 }
 
 /// Linear interpolation, written here again so that the comparison does not rest on
-/// nonlinear::compare_with_hertz.
+/// problems::compare_with_hertz.
 double interpolate(const Profile& profile, double x)
 {
   if (x <= profile.front().first)

@@ -24,7 +24,7 @@ struct LargeRun
   int mprgp = 0;
 };
 
-LargeRun run(const fem::Problem& problem, const problems::HertzParameters& parameters, double forcing)
+LargeRun run(const fem::Problem& problem, double forcing)
 {
   nonlinear::SolverSettings s;
   s.kinematics = fem::Kinematics::total_lagrangian;
@@ -35,8 +35,10 @@ LargeRun run(const fem::Problem& problem, const problems::HertzParameters& param
   LargeRun out;
   out.solution = nonlinear::solve_feti_contact(problem, s, timers);
   EXPECT_TRUE(out.solution.converged) << out.solution.reason;
-  auto samples = nonlinear::slave_pressure_by_x(problem, out.solution, s.kinematics);
-  out.p_peak = nonlinear::compare_with_hertz(parameters, samples, false).p_peak_computed;
+  double peak = 0;
+  for (const auto& p : nonlinear::slave_pressure_by_x(problem, out.solution, s.kinematics))
+    peak = std::max(peak, p.pressure);
+  out.p_peak = peak;
   for (const auto& it : out.solution.history)
     out.mprgp += it.qp.iterations;
   return out;
@@ -48,8 +50,8 @@ TEST(InexactOuterIterations, ReachTheExactQpAnswerInFewerMprgpSteps)
   problems::HertzParameters parameters;
   parameters.mesh.refinement = 0.75;
   const fem::Problem problem = problems::hertz_problem(parameters);
-  const LargeRun exact = run(problem, parameters, 0.0);
-  const LargeRun forced = run(problem, parameters, 0.001);
+  const LargeRun exact = run(problem, 0.0);
+  const LargeRun forced = run(problem, 0.001);
   std::printf("MPRGP steps: exact QPs %d, forcing 0.001 %d; p_peak %.6e / %.6e Pa\n", exact.mprgp,
               forced.mprgp, exact.p_peak, forced.p_peak);
   EXPECT_LE((forced.solution.u - exact.solution.u).norm(), 1e-5 * exact.solution.u.norm());

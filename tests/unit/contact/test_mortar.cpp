@@ -1,20 +1,19 @@
 /// Tests of the dual mortar rows (mortar_constraints.hpp; the integration building blocks are
 /// tested in test_mortar_integration.cpp).
 /// References: closed-form parallelogram nodal areas and overlap areas, node-to-segment rows on
-/// matching meshes, the analytic Hertz gaps, and the consistent nodal loads int N_a dA of a
+/// matching meshes, and the consistent nodal loads int N_a dA of a
 /// uniform pressure computed independently on each master face (axis-aligned sub-rectangles
 /// before an affine map, 3 x 3 Gauss: no clipping, no inverse maps, no triangle rule).
 
 #include "contact/mortar_constraints.hpp"
 
 #include "common/error.hpp"
-#include "mesh/hertz.hpp"
 
+#include "contact_row_checks.hpp"
 #include "contact_test_meshes.hpp"
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <iostream>
 
@@ -22,6 +21,9 @@ namespace feticon::contact
 {
 namespace
 {
+using row_checks::expect_rows_annihilate_translations;
+using row_checks::weight_sum;
+
 const ContactPair upper_on_lower{.slave = "upper_zmin", .master = "lower_zmax"};
 
 ContactOptions mortar_options()
@@ -182,34 +184,6 @@ Eigen::MatrixXd reference_coupling(const FlatPair& pair, const std::vector<int32
 }
 
 /// Dense copy of row i of B.
-la::Vector dense_row(const ContactConstraints& rows, la::Index i)
-{
-  return la::Vector(rows.B.row(i).transpose());
-}
-
-/// Sum over the master DOFs of row i of the unnormalized weights: sum_a w_a (n . n) = sum_a w_a.
-double weight_sum(const ContactConstraints& rows, la::Index i)
-{
-  const la::Vector row = dense_row(rows, i) * rows.row_norm[i];
-  double sum = 0;
-  for (la::Index dof = 0; dof < row.size(); ++dof)
-    if (dof / 3 != rows.slave_node[i])
-      sum += row(dof) * rows.normal[i](dof % 3);
-  return sum;
-}
-
-void expect_rows_annihilate_translations(const ContactConstraints& rows, int32_t n_nodes)
-{
-  for (int component = 0; component < 3; ++component)
-  {
-    la::Vector translation = la::Vector::Zero(3 * n_nodes);
-    for (int32_t node = 0; node < n_nodes; ++node)
-      translation(3 * node + component) = 1.0;
-    // Entries are O(1) after normalization: round-off of a sum of about 20 terms.
-    EXPECT_LT((rows.B * translation).lpNorm<Eigen::Infinity>(), 1e-14)
-        << "component " << component;
-  }
-}
 } // namespace
 
 TEST(MortarConstraints, PartitionOfUnityOnNonMatchingSurfaces)
@@ -433,61 +407,4 @@ TEST(MortarConstraints, InvalidInputThrows)
                Error);
 }
 
-TEST(MortarConstraints, HertzRowsAndTiming)
-{
-  // References: the master surface is y = 0 and the node-to-segment normal is +y, so the
-  // weighted gap n . (x_j - sum_a w_ja x_a) is y_j = R1 - sqrt(R1^2 - x_j^2) whatever the
-  // weights; the slave faces are flat rectangles (chords) and their projections on the master
-  // plane parallelograms, so sum_a M_ja = D_j to round-off for every node with a row (the master
-  // surface extends beyond the slave surface, and candidate master faces are found within d_s).
-  // The rows are those of node-to-segment.
-  const ContactPair hertz_pair{.slave = "cylinder_contact", .master = "block_contact"};
-  for (const double refinement : {1.0, 4.0})
-  {
-    mesh::HertzMeshParameters parameters;
-    parameters.refinement = refinement;
-    const mesh::HexMesh mesh = mesh::generate_hertz(parameters);
-    auto time = [&](const ContactOptions& options, ContactConstraints& rows)
-    {
-      double best = 1e300;
-      for (int repeat = 0; repeat < 3; ++repeat)
-      {
-        const auto start = std::chrono::steady_clock::now();
-        rows = build_contact_constraints(mesh, la::Vector(), hertz_pair, options);
-        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                                            start)
-                                  .count());
-      }
-      return best;
-    };
-    ContactConstraints nts;
-    ContactConstraints mortar;
-    const double nts_seconds = time({}, nts);
-    const double mortar_seconds = time(mortar_options(), mortar);
-    const MortarCoupling coupling =
-        compute_mortar_coupling(mesh, la::Vector(), hertz_pair, mortar.search_distance);
-
-    ASSERT_EQ(mortar.slave_node, nts.slave_node);
-    EXPECT_EQ(mortar.n_overhanging, 0);
-    for (la::Index i = 0; i < mortar.n_rows(); ++i)
-    {
-      const double x = mesh.nodes(mortar.slave_node[i], 0);
-      EXPECT_NEAR(mortar.gap[i], 1.0 - std::sqrt(1.0 - x * x), 1e-12) << "x = " << x;
-      EXPECT_NEAR(weight_sum(mortar, i), 1.0, 1e-14);
-    }
-    for (const int32_t s : mortar.slave_node)
-    {
-      const int32_t j = coupling.slave.index_of(s);
-      EXPECT_NEAR(coupling.M.row(j).sum() / coupling.slave.area(j), 1.0, 1e-12);
-    }
-    expect_rows_annihilate_translations(mortar, mesh.n_nodes());
-    std::cout << "Hertz (refinement " << refinement << "): "
-              << mesh.face_set(hertz_pair.slave).size() << " slave faces, "
-              << mesh.face_set(hertz_pair.master).size() << " master faces, "
-              << coupling.n_segments << " segments, " << mortar.n_rows() << " rows, "
-              << mortar.B.nonZeros() << " nonzeros (node-to-segment " << nts.B.nonZeros()
-              << "); build: mortar " << mortar_seconds * 1e3 << " ms, node-to-segment "
-              << nts_seconds * 1e3 << " ms\n";
-  }
-}
 } // namespace feticon::contact

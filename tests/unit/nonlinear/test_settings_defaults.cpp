@@ -44,7 +44,7 @@ TEST(SettingsDefaults, BuiltInProblemsAgreeWithTheTable)
 {
   const problems::HertzParameters hertz;
   EXPECT_EQ(hertz.line_load, table.number("hertz.line_load"));
-  EXPECT_EQ(hertz.mesh.kind == mesh::HertzMeshKind::graded ? "graded" : "tensor", table.text("hertz.mesh"));
+  EXPECT_EQ(hertz.mesh.kind == problems::HertzMeshKind::graded ? "graded" : "tensor", table.text("hertz.mesh"));
   EXPECT_EQ(hertz.mesh.refinement, table.number("hertz.refinement"));
   EXPECT_EQ(hertz.mesh.element_size, table.number("hertz.element_size"));
   EXPECT_EQ(hertz.mesh.master_ratio, table.number("hertz.master_ratio"));

@@ -1,24 +1,31 @@
-/// Tests of generate_hertz and summarize_contact_zone.
+/// Tests of generate_hertz, hertz_node_estimate and summarize_contact_zone (hertz_mesh.hpp).
 /// References: the analytic geometry of ALGORITHMS.md section 9 (circle x^2 + (y - R1)^2 = R1^2,
 /// planes of the block), the Hertz half-width a = 68.08 mm (section 9), the closed-form area of the
 /// cylinder segment, and the area between a circular arc and its chords.
 
-#include "mesh/hertz.hpp"
+#include "problems/hertz_mesh.hpp"
 #include "mesh/mesh_quality.hpp"
 
 #include "common/error.hpp"
 
-#include "hex_geometry.hpp"
+#include "../mesh/hex_geometry.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <set>
 
-namespace feticon::mesh
+namespace feticon::problems
 {
 namespace
 {
+using mesh::Cell;
+using mesh::Face;
+using mesh::HexMesh;
+using mesh::MeshQuality;
+using mesh::mesh_quality;
+namespace test = mesh::test;
+
 /// Hertz contact half-width of the steel cylinder of section 9 (m).
 constexpr double half_width = 0.068078;
 
@@ -340,4 +347,4 @@ TEST(HertzMeshParametersCheck, RejectsBadValues)
   EXPECT_THROW(summarize_contact_zone(hertz(1, HertzMeshKind::graded), "cylinder_contact", 0.0), Error);
   EXPECT_THROW(hertz_node_estimate(with([](HertzMeshParameters& p) { p.refinement = 0; })), Error);
 }
-} // namespace feticon::mesh
+} // namespace feticon::problems

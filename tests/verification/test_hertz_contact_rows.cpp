@@ -1,11 +1,15 @@
-/// Contact rows on the Hertz mesh (mesh/hertz.hpp, ALGORITHMS.md section 9).
+/// Contact rows on the Hertz mesh (problems/hertz_mesh.hpp, ALGORITHMS.md section 9):
+/// node-to-segment and mortar.
 /// References: (1) the analytic gap of the undeformed cylinder over the plane y = 0: the slave
 /// nodes lie on the arc y = R1 - sqrt(R1^2 - x^2) and the master surface is exactly y = 0, so
-/// g = y_s; (2) a brute-force search that projects every slave node on every master face.
+/// g = y_s; (2) a brute-force search that projects every slave node on every master face;
+/// (3) for mortar rows on the flat master plane, sum_a M_ja = D_j (HertzRowsAndTiming).
 
 #include "contact/contact_constraints.hpp"
+#include "contact/mortar_constraints.hpp"
+#include "problems/hertz_mesh.hpp"
 
-#include "mesh/hertz.hpp"
+#include "../unit/contact/contact_row_checks.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,6 +21,9 @@ namespace feticon::contact
 {
 namespace
 {
+using row_checks::expect_rows_annihilate_translations;
+using row_checks::weight_sum;
+
 const ContactPair hertz_pair{.slave = "cylinder_contact", .master = "block_contact"};
 
 /// Closest accepted projection over all master faces (smallest |g|, first face on ties).
@@ -97,7 +104,7 @@ int expect_same_as_brute_force(const mesh::HexMesh& mesh, const la::Vector& u,
 
 TEST(HertzContact, GapsEqualAnalyticArcAndBruteForce)
 {
-  const mesh::HexMesh mesh = mesh::generate_hertz({});
+  const mesh::HexMesh mesh = problems::generate_hertz({});
   const double radius = 1.0;
   const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), hertz_pair);
   const std::vector<int32_t> slave_nodes = mesh.face_set_nodes(hertz_pair.slave);
@@ -131,9 +138,9 @@ TEST(HertzContact, GapsEqualAnalyticArcAndBruteForce)
 
 TEST(HertzContact, SearchTimeAtRefinement4)
 {
-  mesh::HertzMeshParameters parameters;
+  problems::HertzMeshParameters parameters;
   parameters.refinement = 4;
-  const mesh::HexMesh mesh = mesh::generate_hertz(parameters);
+  const mesh::HexMesh mesh = problems::generate_hertz(parameters);
   const auto start = std::chrono::steady_clock::now();
   const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), hertz_pair);
   const double seconds =
@@ -160,7 +167,7 @@ TEST(HertzContact, DeformedConfigurationMatchesBruteForce)
   // reference. The surface also tilts across the thickness (du_y/dz = 2e-3 cos(3x)), so the
   // projections of penetrating nodes on z = 0 land just outside the rim z = 0 of the master
   // surface: rim rows.
-  const mesh::HexMesh mesh = mesh::generate_hertz({});
+  const mesh::HexMesh mesh = problems::generate_hertz({});
   la::Vector u = la::Vector::Zero(3 * mesh.n_nodes());
   for (int32_t node = 0; node < mesh.n_nodes(); ++node)
   {
@@ -187,6 +194,64 @@ TEST(HertzContact, DeformedConfigurationMatchesBruteForce)
     {
       EXPECT_GE(row_of(rows, s), 0) << "slave node at x = " << mesh.nodes(s, 0);
     }
+  }
+}
+TEST(HertzContact, MortarRowsAndTiming)
+{
+  // References: the master surface is y = 0 and the node-to-segment normal is +y, so the
+  // weighted gap n . (x_j - sum_a w_ja x_a) is y_j = R1 - sqrt(R1^2 - x_j^2) whatever the
+  // weights; the slave faces are flat rectangles (chords) and their projections on the master
+  // plane parallelograms, so sum_a M_ja = D_j to round-off for every node with a row (the master
+  // surface extends beyond the slave surface, and candidate master faces are found within d_s).
+  // The rows are those of node-to-segment.
+  for (const double refinement : {1.0, 4.0})
+  {
+    problems::HertzMeshParameters parameters;
+    parameters.refinement = refinement;
+    const mesh::HexMesh mesh = problems::generate_hertz(parameters);
+    auto time = [&](const ContactOptions& options, ContactConstraints& rows)
+    {
+      double best = 1e300;
+      for (int repeat = 0; repeat < 3; ++repeat)
+      {
+        const auto start = std::chrono::steady_clock::now();
+        rows = build_contact_constraints(mesh, la::Vector(), hertz_pair, options);
+        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                                            start)
+                                  .count());
+      }
+      return best;
+    };
+    ContactOptions mortar_options;
+    mortar_options.formulation = ContactFormulation::mortar;
+    ContactConstraints nts;
+    ContactConstraints mortar;
+    const double nts_seconds = time({}, nts);
+    const double mortar_seconds = time(mortar_options, mortar);
+    const MortarCoupling coupling =
+        compute_mortar_coupling(mesh, la::Vector(), hertz_pair, mortar.search_distance);
+
+    ASSERT_EQ(mortar.slave_node, nts.slave_node);
+    EXPECT_EQ(mortar.n_overhanging, 0);
+    for (la::Index i = 0; i < mortar.n_rows(); ++i)
+    {
+      const double x = mesh.nodes(mortar.slave_node[i], 0);
+      EXPECT_NEAR(mortar.gap[i], 1.0 - std::sqrt(1.0 - x * x), 1e-12) << "x = " << x;
+      EXPECT_NEAR(weight_sum(mortar, i), 1.0, 1e-14);
+    }
+    for (const int32_t s : mortar.slave_node)
+    {
+      const int32_t j = coupling.slave.index_of(s);
+      EXPECT_NEAR(coupling.M.row(j).sum() / coupling.slave.area(j), 1.0, 1e-12);
+    }
+    expect_rows_annihilate_translations(mortar, mesh.n_nodes());
+    std::cout << "Hertz (refinement " << refinement << "): "
+              << mesh.face_set(hertz_pair.slave).size() << " slave faces, "
+              << mesh.face_set(hertz_pair.master).size() << " master faces, "
+              << coupling.n_segments << " segments, " << mortar.n_rows() << " rows, "
+              << mortar.B.nonZeros() << " nonzeros (node-to-segment " << nts.B.nonZeros()
+              << "); build: mortar " << mortar_seconds * 1e3 << " ms, node-to-segment "
+              << nts_seconds * 1e3 << " ms\n";
   }
 }
 } // namespace feticon::contact

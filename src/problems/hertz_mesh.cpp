@@ -1,4 +1,4 @@
-#include "mesh/hertz.hpp"
+#include "problems/hertz_mesh.hpp"
 
 #include "mesh/box.hpp"
 #include "mesh/cross_section.hpp"
@@ -12,8 +12,12 @@
 #include <utility>
 #include <vector>
 
-namespace feticon::mesh
+namespace feticon::problems
 {
+using mesh::CrossSection;
+using mesh::Face;
+using mesh::HexMesh;
+
 namespace
 {
 void check_parameters(const HertzMeshParameters& p)
@@ -67,7 +71,7 @@ void merge_sets(HexMesh& mesh, const std::vector<std::string>& sources, const st
   mesh.add_node_set_from_faces(target, target);
 }
 
-/// The two bodies of the tensor mesh with the sets named as in hertz.hpp (but zmin, zmax and
+/// The two bodies of the tensor mesh with the sets named as in hertz_mesh.hpp (but zmin, zmax and
 /// symmetry, which generate_hertz adds for both kinds).
 HexMesh tensor_bodies(const HertzMeshParameters& p)
 {
@@ -78,17 +82,17 @@ HexMesh tensor_bodies(const HertzMeshParameters& p)
   const double thickness = p.thickness;
 
   const std::vector<double> cylinder_x =
-      graded_positions(p.cylinder_width, h_slave, p.fine_width, ratio);
-  const std::vector<double> cylinder_t = graded_positions(radius, h_slave, p.fine_depth, ratio);
+      mesh::graded_positions(p.cylinder_width, h_slave, p.fine_width, ratio);
+  const std::vector<double> cylinder_t = mesh::graded_positions(radius, h_slave, p.fine_depth, ratio);
   const std::vector<double> block_x =
-      graded_positions(p.block_width, h_master, p.fine_width, ratio);
+      mesh::graded_positions(p.block_width, h_master, p.fine_width, ratio);
   const std::vector<double> block_d =
-      graded_positions(p.block_depth, h_master, p.fine_depth, ratio);
+      mesh::graded_positions(p.block_depth, h_master, p.fine_depth, ratio);
   auto n_cells = [](const std::vector<double>& positions)
   { return static_cast<int32_t>(positions.size()) - 1; };
 
   // Column at abscissa x spans from the arc to the axis plane, height sqrt(R1^2 - x^2).
-  const HexMesh cylinder = generate_mapped_block(
+  const HexMesh cylinder = mesh::generate_mapped_block(
       {n_cells(cylinder_x), n_cells(cylinder_t), 1},
       [&](int32_t i, int32_t j, int32_t k)
       {
@@ -100,15 +104,15 @@ HexMesh tensor_bodies(const HertzMeshParameters& p)
       "cylinder");
   // j counts upward, while the graded depths start at the contact surface y = 0.
   const int32_t block_ny = n_cells(block_d);
-  const HexMesh block = generate_mapped_block(
+  const HexMesh block = mesh::generate_mapped_block(
       {n_cells(block_x), block_ny, 1},
       [&](int32_t i, int32_t j, int32_t k)
       { return Eigen::Vector3d(block_x[i], -block_d[block_ny - j], k * thickness); },
       "block");
 
   HexMesh mesh;
-  append_mesh(mesh, cylinder, "cylinder_");
-  append_mesh(mesh, block, "block_");
+  mesh::append_mesh(mesh, cylinder, "cylinder_");
+  mesh::append_mesh(mesh, block, "block_");
   const std::vector<std::pair<std::string, std::string>> renames = {
       {"cylinder_ymin", "cylinder_contact"},  {"cylinder_ymax", "load"},
       {"cylinder_xmin", "cylinder_symmetry"}, {"cylinder_xmax", "cylinder_side"},
@@ -121,7 +125,17 @@ HexMesh tensor_bodies(const HertzMeshParameters& p)
 }
 
 
-/// The two bodies of the graded mesh (see hertz.hpp): each body's cross-section meshed by Gmsh with
+/// Cell size of the graded mesh with size h at the contact band [0, fine_width] x {0}:
+/// h + (q - 1) d at the distance d from the band, i.e. cells growing by about q from one to
+/// the next, up to a tenth of the largest body dimension.
+auto graded_size(const HertzMeshParameters& p, double h)
+{
+  const double largest = 0.1 * std::max({p.block_width, p.block_depth, p.cylinder_radius});
+  return [&p, h, largest](double x, double y)
+  { return std::min(largest, h + (p.growth_ratio - 1) * std::hypot(std::max(x - p.fine_width, 0.0), y)); };
+}
+
+/// The two bodies of the graded mesh (see hertz_mesh.hpp): each body's cross-section meshed by Gmsh with
 /// quadrilaterals whose size is h_b at the distance d = 0 from the contact band
 /// [0, fine_width] x {0} and h_b + (q - 1) d beyond, i.e. cells growing by about q from one
 /// to the next, then extruded into one layer.
@@ -129,16 +143,6 @@ HexMesh graded_bodies(const HertzMeshParameters& p)
 {
   const double radius = p.cylinder_radius;
   const double h_slave = p.element_size / p.refinement;
-  const double growth = p.growth_ratio - 1;
-  const double largest = 0.1 * std::max({p.block_width, p.block_depth, radius});
-  auto graded = [&](double h)
-  {
-    return [&p, h, growth, largest](double x, double y)
-    {
-      const double d = std::hypot(std::max(x - p.fine_width, 0.0), y);
-      return std::min(largest, h + growth * d);
-    };
-  };
   const double x_arc = p.cylinder_width;
   const double y_arc = radius - std::sqrt(radius * radius - x_arc * x_arc);
   CrossSection cylinder{"cylinder", {0, 0}, {}};
@@ -152,8 +156,8 @@ HexMesh graded_bodies(const HertzMeshParameters& p)
                   {{0, 0}, "contact"},
                   {{0, -p.block_depth}, "symmetry"}};
   HexMesh mesh;
-  append_mesh(mesh, extrude_cross_section(cylinder, graded(h_slave), p.thickness), "cylinder_");
-  append_mesh(mesh, extrude_cross_section(block, graded(p.master_ratio * h_slave), p.thickness), "block_");
+  mesh::append_mesh(mesh, mesh::extrude_cross_section(cylinder, graded_size(p, h_slave), p.thickness), "cylinder_");
+  mesh::append_mesh(mesh, mesh::extrude_cross_section(block, graded_size(p, p.master_ratio * h_slave), p.thickness), "block_");
   merge_sets(mesh, {"cylinder_load"}, "load");
   merge_sets(mesh, {"block_support"}, "support");
   return mesh;
@@ -210,15 +214,9 @@ int64_t hertz_node_estimate(const HertzMeshParameters& p)
   else
   {
     // The size field of graded_bodies, integrated over each body's cross-section.
-    const double largest = 0.1 * std::max({p.block_width, p.block_depth, R});
-    auto graded = [&](double h)
-    {
-      return [&p, h, largest](double x, double y)
-      { return std::min(largest, h + (p.growth_ratio - 1) * std::hypot(std::max(x - p.fine_width, 0.0), y)); };
-    };
-    cells = cells_by_size(p.cylinder_width, R, h_slave, graded(h_slave),
+    cells = cells_by_size(p.cylinder_width, R, h_slave, graded_size(p, h_slave),
                           [R](double x, double y) { return y >= R - std::sqrt(R * R - x * x); }) +
-            cells_by_size(p.block_width, p.block_depth, h_master, graded(h_master),
+            cells_by_size(p.block_width, p.block_depth, h_master, graded_size(p, h_master),
                           [](double, double) { return true; });
   }
   // Quadrilaterals have about as many nodes as cells; the extruded layer doubles them. Gmsh's
@@ -267,4 +265,4 @@ ContactZoneSummary summarize_contact_zone(const HexMesh& mesh, const std::string
                 "face set '" << face_set << "' has no face with x < " << half_width << " m");
   return summary;
 }
-} // namespace feticon::mesh
+} // namespace feticon::problems

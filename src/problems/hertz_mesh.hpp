@@ -12,7 +12,7 @@
 ///  - z in [0, thickness], one cell layer.
 ///
 /// Mesh `graded` (the default). Each body's cross-section is meshed by Gmsh with
-/// quadrilaterals (cross_section.hpp) of size h_b (h_slave = h, h_master = master_ratio * h)
+/// quadrilaterals (mesh/cross_section.hpp) of size h_b (h_slave = h, h_master = master_ratio * h)
 /// in the contact band [0, fine_width] x {0} and h_b + (q - 1) d at the distance d from it, so
 /// that cells grow by about q from one to the next in every direction, up to a tenth of the
 /// largest body dimension; the arc is meshed as Gmsh's circle. No needle cells: the sizes
@@ -20,7 +20,7 @@
 /// spacing out to the boundary along rows and columns. `refinement` r scales h only, so the
 /// far field is refined only as far as the grading reaches.
 ///
-/// Mesh `tensor`. Each body is a mapped structured block (box.hpp). Along x the cells have the size h on
+/// Mesh `tensor`. Each body is a mapped structured block (mesh/box.hpp). Along x the cells have the size h on
 /// [0, x_fine] and then grow geometrically with ratio q (graded_positions). The cylinder uses
 /// h_slave = h and the block h_master = master_ratio * h, so the two contact surfaces do not match
 /// (node-to-segment contact is exercised; with master_ratio = 13/10 every 13th slave node in the
@@ -50,7 +50,7 @@
 #include <cstdint>
 #include <string>
 
-namespace feticon::mesh
+namespace feticon::problems
 {
 enum class HertzMeshKind
 {
@@ -88,7 +88,7 @@ struct HertzMeshParameters
 
 /// @brief Builds the Hertz mesh described in the file comment.
 /// @throws feticon::Error naming the offending parameter if one is out of range.
-HexMesh generate_hertz(const HertzMeshParameters& parameters);
+mesh::HexMesh generate_hertz(const HertzMeshParameters& parameters);
 
 /// Nodes of the mesh generate_hertz would build, estimated without building it (memory guard):
 /// exact up to rounding for `tensor`, the integral of the size field for `graded`.
@@ -110,6 +110,6 @@ struct ContactZoneSummary
 /// The in-plane size of a face is the largest x-y distance between two of its nodes, i.e. the
 /// chord length for faces extruded along z.
 /// @throws feticon::Error if no face of the set reaches into x < half_width.
-ContactZoneSummary summarize_contact_zone(const HexMesh& mesh, const std::string& face_set,
+ContactZoneSummary summarize_contact_zone(const mesh::HexMesh& mesh, const std::string& face_set,
                                           double half_width);
-} // namespace feticon::mesh
+} // namespace feticon::problems
