@@ -4,6 +4,8 @@
 #include "problems/hertz3d.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <string>
 
 namespace feticon::app
 {
@@ -17,6 +19,18 @@ problems::CantileverObstacleParameters cantilever_parameters(const io::Settings&
   p.cells_along = s.integer("cantilever.cells");
   p.material = {s.number("material.young"), s.number("material.poisson")};
   return p;
+}
+
+/// The block's material of a built-in Hertz problem, if `prefix`.block_young or
+/// `prefix`.block_poisson is given (the other one from `material`).
+std::optional<fem::Material> block_material(const io::Settings& s, const std::string& prefix,
+                                            const fem::Material& material)
+{
+  const std::optional<double> young = s.optional_number(prefix + ".block_young");
+  const std::optional<double> poisson = s.optional_number(prefix + ".block_poisson");
+  if (!young && !poisson)
+    return std::nullopt;
+  return fem::Material{young.value_or(material.young), poisson.value_or(material.poisson)};
 }
 } // namespace
 
@@ -33,6 +47,7 @@ problems::HertzParameters hertz_parameters(const io::Settings& s)
   p.mesh.growth_ratio = s.number("hertz.growth_ratio");
   p.mesh.cylinder_width = s.number("hertz.cylinder_width");
   p.material = {s.number("material.young"), s.number("material.poisson")};
+  p.block_material = block_material(s, "hertz", p.material);
   return p;
 }
 
@@ -42,6 +57,7 @@ problems::Hertz3dParameters hertz3d_parameters(const io::Settings& s)
   p.radius = s.number("hertz3d.radius");
   p.load = s.number("hertz3d.load");
   p.material = {s.number("material.young"), s.number("material.poisson")};
+  p.block_material = block_material(s, "hertz3d", p.material);
   p.element_size = s.number("hertz3d.element_size");
   p.refinement = s.number("hertz3d.refinement");
   p.master_ratio = s.number("hertz3d.master_ratio");

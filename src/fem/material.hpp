@@ -21,6 +21,14 @@ struct Material
   void check(const std::string& where) const;
 };
 
+/// Contact modulus E* of two elastic bodies in frictionless contact,
+/// 1/E* = (1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2 (Johnson 1985, Contact Mechanics, eq. 4.22).
+inline double contact_modulus(const Material& first, const Material& second)
+{
+  return 1 / ((1 - first.poisson * first.poisson) / first.young +
+              (1 - second.poisson * second.poisson) / second.young);
+}
+
 /// Small strain (linear) or total Lagrangian (Green–Lagrange strain, finite rotations).
 enum class Kinematics
 {

@@ -48,6 +48,14 @@ std::vector<SettingSpec> make_specs()
       {"hertz3d.radial_aspect", "1.5", "radial / tangential cell size outside the contact core", Type::number, {}, 0.5, 3, false},
       {"material.young", "2e11", "Young's modulus E (Pa) of every body", Type::number, {}, 0, inf, true},
       {"material.poisson", "0.3", "Poisson's ratio nu of every body, in (-1, 0.5)", Type::number, {}, -1, 0.5, true, true},
+      {"hertz.block_young", "", "Young's modulus of the block (Pa), if it differs from the cylinder's "
+       "material.young (E* from both)", Type::number, {}, 0, inf, true},
+      {"hertz.block_poisson", "", "Poisson's ratio of the block, if it differs from material.poisson",
+       Type::number, {}, -1, 0.5, true, true},
+      {"hertz3d.block_young", "", "Young's modulus of the block (Pa), if it differs from the sphere's "
+       "material.young (E* from both)", Type::number, {}, 0, inf, true},
+      {"hertz3d.block_poisson", "", "Poisson's ratio of the block, if it differs from material.poisson",
+       Type::number, {}, -1, 0.5, true, true},
       {"method", "smalbe", "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "
                            "(seed's problem (9)), primal_penalty (undecomposed, CHOLMOD)",
        Type::text, {"smalbe", "dual_penalty", "primal_penalty"}, 0, 0, false},
@@ -129,7 +137,8 @@ std::string Settings::help()
 {
   std::ostringstream os;
   for (const auto& s : specs())
-    os << "  " << s.key << " (default " << s.default_value << "): " << s.help << '\n';
+    os << "  " << s.key << (s.default_value.empty() ? " (optional)" : " (default " + s.default_value + ")")
+       << ": " << s.help << '\n';
   return os.str();
 }
 
@@ -192,7 +201,18 @@ void Settings::set(const std::string& key, const std::string& raw, const std::st
   _values[key] = value;
 }
 
-double Settings::number(const std::string& key) const { return std::stod(_values.at(key)); }
+double Settings::number(const std::string& key) const
+{
+  const std::string& value = _values.at(key);
+  FETICON_CHECK(!value.empty(), key << " has no value (it is optional)");
+  return std::stod(value);
+}
+
+std::optional<double> Settings::optional_number(const std::string& key) const
+{
+  const std::string& value = _values.at(key);
+  return value.empty() ? std::nullopt : std::optional<double>(std::stod(value));
+}
 int Settings::integer(const std::string& key) const { return static_cast<int>(std::stod(_values.at(key))); }
 const std::string& Settings::text(const std::string& key) const { return _values.at(key); }
 bool Settings::flag(const std::string& key) const { return _values.at(key) == "true"; }
@@ -202,7 +222,10 @@ std::string Settings::to_yaml() const
   std::ostringstream os;
   os << "# effective settings of this run (defaults, problem file, --set overrides)\n";
   for (const auto& s : specs())
-    os << s.key << ": " << _values.at(s.key) << '\n';
+    if (_values.at(s.key).empty())
+      os << "# " << s.key << ": not given\n"; // an optional key; `key:` would read back as null
+    else
+      os << s.key << ": " << _values.at(s.key) << '\n';
   return os.str();
 }
 } // namespace feticon::io

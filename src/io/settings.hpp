@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@ namespace feticon::io
 struct SettingSpec
 {
   std::string key;
+  /// Empty for an optional number: unset unless given (optional_number).
   std::string default_value;
   std::string help;
   enum class Type
@@ -44,6 +46,8 @@ public:
   void set(const std::string& key, const std::string& value, const std::string& source);
 
   double number(const std::string& key) const;
+  /// An optional number: empty if the key was not given.
+  std::optional<double> optional_number(const std::string& key) const;
   int integer(const std::string& key) const;
   const std::string& text(const std::string& key) const;
   bool flag(const std::string& key) const;

@@ -14,7 +14,7 @@ fem::Problem hertz_problem(const HertzParameters& parameters)
   fem::Problem p;
   p.name = "hertz";
   p.mesh = generate_hertz(parameters.mesh);
-  p.materials.assign(p.mesh.n_bodies(), parameters.material);
+  p.materials = {parameters.material, parameters.block()}; // bodies "cylinder", "block"
   p.eliminated = {false, false, true};
   p.dirichlet = {
       {"symmetry", {0.0, std::nullopt, std::nullopt}},
@@ -30,9 +30,8 @@ fem::Problem hertz_problem(const HertzParameters& parameters)
 
 HertzAnalytic hertz_analytic(const HertzParameters& parameters)
 {
-  const fem::Material& m = parameters.material;
   HertzAnalytic h;
-  h.effective_modulus = m.young / (2 * (1 - m.poisson * m.poisson));
+  h.effective_modulus = fem::contact_modulus(parameters.material, parameters.block());
   const double R = parameters.mesh.cylinder_radius; // 1/R = 1/R1 + 1/inf
   h.half_width = std::sqrt(4 * parameters.line_load * R / (M_PI * h.effective_modulus));
   h.peak_pressure = 2 * parameters.line_load / (M_PI * h.half_width);

@@ -13,6 +13,7 @@
 #include "problems/hertz_mesh.hpp"
 #include "problems/pressure_profile.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace feticon::problems
@@ -21,17 +22,20 @@ struct HertzParameters
 {
   HertzMeshParameters mesh;
   double line_load = 4.0e8; ///< Q (N/m) on the whole cylinder; the half model carries Q/2
-  fem::Material material{2.0e11, 0.3};
+  fem::Material material{2.0e11, 0.3};           ///< the cylinder's, and the block's if not given
+  std::optional<fem::Material> block_material;   ///< the block's if it differs
+  fem::Material block() const { return block_material.value_or(material); }
 };
 
 /// The problem: bodies "cylinder" (slave surface "cylinder_contact") and "block" (master
 /// surface "block_contact").
 fem::Problem hertz_problem(const HertzParameters& parameters);
 
-/// Analytic plane-strain Hertz line contact of two bodies of one material.
+/// Analytic plane-strain Hertz line contact (frictionless, so dissimilar materials enter only
+/// through E*).
 struct HertzAnalytic
 {
-  double effective_modulus; ///< E* (Pa): 1/E* = 2 (1 - nu^2) / E
+  double effective_modulus; ///< E* (Pa), fem::contact_modulus of the two bodies
   double half_width;        ///< a = sqrt(4 Q R / (pi E*)) (m)
   double peak_pressure;     ///< p0 = 2 Q / (pi a) (Pa)
   /// p(x) = p0 sqrt(1 - x^2/a^2) for |x| <= a, else 0 (Pa).

@@ -65,9 +65,8 @@ double hertz3d_approach(const fem::Problem& problem, const la::Vector& u)
 
 Hertz3dAnalytic hertz3d_analytic(const Hertz3dParameters& parameters)
 {
-  const fem::Material& m = parameters.material;
   Hertz3dAnalytic h;
-  h.effective_modulus = m.young / (2 * (1 - m.poisson * m.poisson));
+  h.effective_modulus = fem::contact_modulus(parameters.material, parameters.block());
   h.contact_radius = std::cbrt(3 * parameters.load * parameters.radius / (4 * h.effective_modulus));
   h.peak_pressure = 3 * parameters.load / (2 * M_PI * h.contact_radius * h.contact_radius);
   h.approach = h.contact_radius * h.contact_radius / parameters.radius;
@@ -146,7 +145,7 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
   for (const auto& [name, faces] : p.mesh.face_sets)
     p.mesh.add_node_set_from_faces(name, name);
 
-  p.materials.assign(p.mesh.n_bodies(), parameters.material);
+  p.materials = {parameters.material, parameters.block()}; // bodies "sphere", "block"
   p.dirichlet = {
       {"symmetry_x", {0.0, std::nullopt, std::nullopt}},
       {"symmetry_y", {std::nullopt, 0.0, std::nullopt}},

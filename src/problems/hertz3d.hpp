@@ -1,8 +1,9 @@
 #pragma once
 /// @file 3D Hertz (issue 20): an elastic sphere of radius R pressed with the force F onto an
-/// elastic half-space, both of one material, quarter model (symmetry planes x = 0 and y = 0).
+/// elastic half-space, quarter model (symmetry planes x = 0 and y = 0).
 /// Analytic reference: Hertz's point contact (Johnson 1985, Contact Mechanics, section 4.2):
-/// 1/E* = 2 (1 - nu^2) / E, a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi a^2),
+/// 1/E* = (1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2 (frictionless: dissimilar materials enter only
+/// through E*), a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi a^2),
 /// p(r) = p0 sqrt(1 - r^2 / a^2), approach delta = a^2 / R.
 ///
 /// Geometry (m). The first contact point is the origin, the sphere's centre (0, 0, R).
@@ -26,6 +27,7 @@
 #include "fem/problem.hpp"
 #include "problems/pressure_profile.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace feticon::problems
@@ -34,13 +36,15 @@ struct Hertz3dParameters
 {
   double radius = 0.05;        ///< R, sphere radius (m)
   double load = 2.0e4;         ///< F on the whole sphere (N); the quarter model carries F / 4
-  fem::Material material{2.0e11, 0.3};
+  fem::Material material{2.0e11, 0.3};         ///< the sphere's, and the block's if not given
+  std::optional<fem::Material> block_material; ///< the block's if it differs
   double element_size = 2.5e-4; ///< slave cell size in the contact core at refinement 1 (m)
   double refinement = 1;        ///< divides element_size
   double master_ratio = 1.3;    ///< block / sphere cell size in the contact core
   double block_radius = 0.04;   ///< radius of the modelled half-space (m)
   double cap_radius = 0.025;    ///< radius of the modelled part of the sphere (m), <= R / 2
   double radial_aspect = 1.5;   ///< radial / tangential cell size away from the core
+  fem::Material block() const { return block_material.value_or(material); }
 };
 
 struct Hertz3dAnalytic

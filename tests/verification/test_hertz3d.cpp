@@ -61,10 +61,8 @@ struct Hertz3dRun
   int outer_max = 0;
 };
 
-Hertz3dRun solve(double refinement, fem::Kinematics kinematics)
+Hertz3dRun solve(const problems::Hertz3dParameters& parameters, fem::Kinematics kinematics)
 {
-  problems::Hertz3dParameters parameters;
-  parameters.refinement = refinement;
   const fem::Problem problem = problems::hertz3d_problem(parameters);
   nonlinear::SolverSettings s;
   s.kinematics = kinematics;
@@ -88,7 +86,7 @@ Hertz3dRun solve(double refinement, fem::Kinematics kinematics)
 
 TEST(Hertz3d, SmallDisplacementsAgainstHertz)
 {
-  const Hertz3dRun r = solve(1.0, fem::Kinematics::linear);
+  const Hertz3dRun r = solve({}, fem::Kinematics::linear);
   const auto& h = r.hertz;
   std::printf("p_peak %.1f MPa (p0 %.1f, %+.2f%%), a %.4f mm (%.4f, %+.2f%%), RMS %.2f%% of p0 over %d nodes, "
               "force / (F/4) - 1 = %.1e\n",
@@ -107,7 +105,7 @@ TEST(Hertz3d, LargeDisplacementsConvergeWithinFifteenOuterIterations)
   // The answer moves by about 2 % of p0 from the small-displacement one (docs/contact.md);
   // the bounds are the small-displacement acceptance widened by that, with the limit
   // on the outer iterations.
-  const Hertz3dRun r = solve(1.0, fem::Kinematics::total_lagrangian);
+  const Hertz3dRun r = solve({}, fem::Kinematics::total_lagrangian);
   const auto& h = r.hertz;
   std::printf("large: p_peak %+.2f%%, a %+.2f%%, RMS %.2f%% of p0, outer iterations per step <= %d\n",
               100 * (h.p_peak_computed / h.p0_analytic - 1), 100 * (h.a_computed / h.a_analytic - 1),
@@ -120,4 +118,25 @@ TEST(Hertz3d, LargeDisplacementsConvergeWithinFifteenOuterIterations)
   // the vertical dead load, so F/4 <= sum F_n <= F/4 / cos(a/R) (measured: +7e-5).
   EXPECT_GE(r.force, 5000 * (1 - 1e-6));
   EXPECT_LE(r.force, 5000 / std::cos(1.1 * h.a_analytic / 0.05));
+}
+
+TEST(Hertz3d, DissimilarBlockAgainstHertzWithTheContactModulusOfBoth)
+{
+  // A steel sphere on an aluminium block (E = 70 GPa, nu = 0.33): frictionless Hertz theory
+  // holds with 1/E* = (1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2 (Johnson 1985, eq. 4.22), so the
+  // acceptance of the one-material case applies. E* of steel on steel would put p0 53 % higher:
+  // a block given the sphere's material, or E* from one body, fails the bounds.
+  problems::Hertz3dParameters parameters;
+  parameters.block_material = fem::Material{7.0e10, 0.33};
+  const problems::Hertz3dAnalytic steel = problems::hertz3d_analytic({});
+  const Hertz3dRun r = solve(parameters, fem::Kinematics::linear);
+  const auto& h = r.hertz;
+  std::printf("aluminium block: p0 %.1f MPa (steel on steel %.1f), p_peak %+.2f%%, a %+.2f%%, RMS %.2f%% of p0\n",
+              h.p0_analytic / 1e6, steel.peak_pressure / 1e6, 100 * (h.p_peak_computed / h.p0_analytic - 1),
+              100 * (h.a_computed / h.a_analytic - 1), 100 * h.rms_error_over_p0);
+  EXPECT_GT(steel.peak_pressure / h.p0_analytic, 1.5);
+  EXPECT_LT(std::abs(h.p_peak_computed / h.p0_analytic - 1), 0.02);
+  EXPECT_LT(std::abs(h.a_computed / h.a_analytic - 1), 0.02);
+  EXPECT_LE(h.rms_error_over_p0, 0.02);
+  EXPECT_NEAR(r.force, 5000, 1e-6 * 5000);
 }
