@@ -20,16 +20,12 @@
 #include "common/timer.hpp"
 #include "fem/problem.hpp"
 #include "nonlinear/contact_solution.hpp"
+#include "nonlinear/load_stepping.hpp"
 #include "nonlinear/solver_settings.hpp"
 #include "par/communicator.hpp"
 
-#include <functional>
-
 namespace feticon::nonlinear
 {
-/// Called after every converged load step with the solution so far (for output).
-using StepCallback = std::function<void(int load_step, const ContactSolution&)>;
-
 /// @param restart if given, continue after its completed load steps (its history and steps
 ///                are taken from `previous`, the solution of the interrupted run)
 ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings,

@@ -1,0 +1,82 @@
+#include "dual/multiplier_memory.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace feticon::dual
+{
+DualWarmStart MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_equality,
+                                           const std::vector<int32_t>& contact_slave) const
+{
+  DualWarmStart warm = _smalbe;
+  if (_owned.size() == 0 && _restart_equality.size() == 0)
+    return warm; // the first solve of the run starts at 0
+  const la::Index m = feti.n_dual();
+  warm.lambda = la::Vector::Zero(m);
+  for (la::Index i = 0; i < m; ++i)
+  {
+    const int64_t id = feti.row_id(i);
+    if (id < n_equality)
+      warm.lambda(i) = _restart_equality.size() > 0 ? _restart_equality(id) : _owned(i);
+    else if (const auto it = _contact.find(contact_slave[id - n_equality]); it != _contact.end())
+      warm.lambda(i) = it->second;
+  }
+  return warm;
+}
+
+la::Vector MultiplierMemory::remember(const FetiOperators& feti, const DualSolution& solution, int64_t n_equality,
+                                      const std::vector<int32_t>& contact_slave)
+{
+  _owned = solution.lambda;
+  _restart_equality.resize(0);
+  _smalbe = {{}, solution.coarse_multiplier, solution.smalbe_M, solution.smalbe_rho, solution.pfp_norm};
+  const int64_t n_contact = static_cast<int64_t>(contact_slave.size());
+  la::Vector contact_lambda = multipliers_by_id(feti, solution.lambda, n_equality, n_equality + n_contact);
+  _contact.clear();
+  for (int64_t j = 0; j < n_contact; ++j)
+    _contact[contact_slave[j]] = contact_lambda(j);
+  return contact_lambda;
+}
+
+void MultiplierMemory::restore(la::Vector equality_by_id, const std::vector<int32_t>& contact_slave,
+                               const std::vector<double>& contact_lambda, DualWarmStart smalbe)
+{
+  _owned.resize(0);
+  _restart_equality = std::move(equality_by_id);
+  _contact.clear();
+  for (size_t j = 0; j < contact_slave.size(); ++j)
+    _contact[contact_slave[j]] = contact_lambda[j];
+  _smalbe = std::move(smalbe);
+  _smalbe.lambda.resize(0);
+}
+
+std::set<int32_t> MultiplierMemory::active_slave_nodes() const
+{
+  double largest = 0;
+  for (const auto& [node, value] : _contact)
+    largest = std::max(largest, value);
+  std::set<int32_t> active;
+  for (const auto& [node, value] : _contact)
+    if (value > 1e-12 * largest)
+      active.insert(node);
+  return active;
+}
+
+la::Vector multipliers_by_id(const FetiOperators& feti, const la::Vector& lambda, int64_t id_begin, int64_t id_end)
+{
+  std::vector<int64_t> ids;
+  std::vector<double> values;
+  for (la::Index i = 0; i < feti.n_dual(); ++i)
+    if (feti.row_id(i) >= id_begin && feti.row_id(i) < id_end)
+    {
+      ids.push_back(feti.row_id(i));
+      values.push_back(lambda(i));
+    }
+  const std::vector<int64_t> all_ids = feti.comm().all_gather(ids);
+  const std::vector<double> all_values = feti.comm().all_gather(values);
+  la::Vector out = la::Vector::Zero(id_end - id_begin);
+  for (size_t k = 0; k < all_ids.size(); ++k)
+    out(all_ids[k] - id_begin) = all_values[k];
+  return out;
+}
+} // namespace feticon::dual

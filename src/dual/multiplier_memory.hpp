@@ -1,0 +1,62 @@
+#pragma once
+/// @file The multipliers of the last dual solve, kept by what identifies a row from one outer
+/// iteration to the next, to warm-start the next solve (the dual problem changes only in its
+/// contact rows and right-hand side):
+///  - equality rows by their id: ids and owners do not change, and a rank's owned rows come
+///    first, in the same order;
+///  - contact rows by their slave node: the rows are rebuilt at every outer iteration, and a
+///    node without a row last time starts at 0;
+///  - SMALBE-M's state (dual::DualWarmStart): its multiplier of G lambda = e is a coarse vector
+///    indexed by the subdomains' rigid modes, whose numbering does not change.
+
+#include "dual/dual_penalty_problem.hpp"
+#include "dual/feti_operators.hpp"
+
+#include <cstdint>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace feticon::dual
+{
+class MultiplierMemory
+{
+public:
+  /// The start of the solve with the operators `feti`, whose rows with ids [0, n_equality) are
+  /// the equality rows and id n_equality + j the contact row of slave node contact_slave[j].
+  DualWarmStart warm_start(const FetiOperators& feti, int64_t n_equality,
+                           const std::vector<int32_t>& contact_slave) const;
+
+  /// Keeps the multipliers of `solution` (of the solve warm_start was asked for) and returns
+  /// its contact multipliers by row, replicated on every rank.
+  la::Vector remember(const FetiOperators& feti, const DualSolution& solution, int64_t n_equality,
+                      const std::vector<int32_t>& contact_slave);
+
+  /// F changed (a refreshed stiffness): ||PFP|| must be estimated again.
+  void forget_operator_norm() { _smalbe.pfp_norm = 0; }
+
+  /// The state of a checkpoint: equality multipliers by row id (used by the next solve only),
+  /// contact multipliers by slave node, SMALBE-M's state (its `lambda` is ignored).
+  void restore(la::Vector equality_by_id, const std::vector<int32_t>& contact_slave,
+               const std::vector<double>& contact_lambda, DualWarmStart smalbe);
+
+  /// Contact multiplier by slave node, of the last solve.
+  const std::map<int32_t, double>& contact() const { return _contact; }
+  /// SMALBE-M's state after the last solve.
+  const DualWarmStart& smalbe() const { return _smalbe; }
+  /// Slave nodes whose contact multiplier is positive, with the dual solver's threshold
+  /// against round-off (1e-12 of the largest).
+  std::set<int32_t> active_slave_nodes() const;
+
+private:
+  la::Vector _owned;            ///< owned multipliers of the last solve (equality rows first)
+  la::Vector _restart_equality; ///< equality multipliers by row id from a checkpoint; used once
+  std::map<int32_t, double> _contact;
+  DualWarmStart _smalbe;
+};
+
+/// The multipliers `lambda` (owned, of `feti`) of the rows id_begin <= id < id_end, replicated
+/// on every rank (0 for ids that have no row); small: used for contact rows and checkpoints.
+la::Vector multipliers_by_id(const FetiOperators& feti, const la::Vector& lambda, int64_t id_begin,
+                             int64_t id_end);
+} // namespace feticon::dual

@@ -1,0 +1,61 @@
+#include "nonlinear/load_stepping.hpp"
+
+#include "common/log.hpp"
+#include "common/timer.hpp"
+
+#include <chrono>
+#include <cstdio>
+
+namespace feticon::nonlinear
+{
+void run_load_steps(LoadStepPhases& phases, int first_step, int n_steps, int max_outer_iterations,
+                    ContactSolution& out, const StepCallback& on_step)
+{
+  for (int step = first_step; step <= n_steps; ++step)
+  {
+    const double t = static_cast<double>(step) / n_steps;
+    phases.begin_load_step(step, t);
+    LoadStep record;
+    record.load_factor = t;
+    std::string failure;
+    for (int k = 1; k <= max_outer_iterations && !record.converged && failure.empty(); ++k)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      OuterIteration it;
+      it.load_step = step;
+      it.iteration = k;
+      IterationOutcome outcome = phases.outer_iteration(k, it);
+      if (outcome.recorded)
+      {
+        it.seconds = seconds_since(start);
+        out.history.push_back(it);
+        record.inner_iterations.push_back(it.qp.iterations);
+        record.outer_iterations = k;
+        record.displacement_change = it.displacement_change;
+        record.residual_norm = it.residual_norm;
+        log::info(phases.format(it));
+      }
+      record.converged = outcome.converged;
+      failure = std::move(outcome.failure);
+    }
+    out.steps.push_back(record);
+    phases.end_load_step(record);
+    if (!failure.empty())
+    {
+      out.reason = failure;
+      return;
+    }
+    if (!record.converged)
+    {
+      char reason[160];
+      std::snprintf(reason, sizeof reason, "load step %d did not converge in %d outer iterations (|du|/|u| = %g)",
+                    step, max_outer_iterations, record.displacement_change);
+      out.reason = reason;
+      return;
+    }
+    if (on_step)
+      on_step(step, out);
+  }
+  out.converged = true;
+}
+} // namespace feticon::nonlinear

@@ -1,0 +1,56 @@
+#pragma once
+/// @file The load-stepping loop of the contact solvers (FETI and primal penalty): load steps
+/// t_n = n / N, in each outer iterations until the solver reports the step converged; the
+/// records of both (LoadStep, OuterIteration), the progress lines and the reason of a run
+/// that stops. A solver supplies its phases: begin a load step, one outer iteration, end a
+/// load step.
+
+#include "nonlinear/contact_solution.hpp"
+
+#include <functional>
+#include <string>
+#include <utility>
+
+namespace feticon::nonlinear
+{
+/// Called after every converged load step with the solution so far (for output).
+using StepCallback = std::function<void(int load_step, const ContactSolution&)>;
+
+/// How one outer iteration ended.
+struct IterationOutcome
+{
+  /// The iteration goes into the history. False for an iteration that is no result (a
+  /// non-finite residual) or that found the step converged before solving anything.
+  bool recorded = true;
+  bool converged = false; ///< the load step has converged
+  std::string failure;    ///< not empty: the run stops, and this is why
+
+  /// The next iteration follows.
+  static IterationOutcome next() { return {}; }
+  /// The load step has converged (`recorded`: with this iteration in the history).
+  static IterationOutcome step_converged(bool recorded = true) { return {recorded, true, {}}; }
+  /// The run stops, for `why`.
+  static IterationOutcome stop(std::string why, bool recorded = true) { return {recorded, false, std::move(why)}; }
+};
+
+class LoadStepPhases
+{
+public:
+  virtual ~LoadStepPhases() = default;
+  /// Prepares load step `step` at the load factor t.
+  virtual void begin_load_step(int step, double t) = 0;
+  /// Outer iteration k of the current load step; fills `it` (its load_step and iteration are
+  /// set, the driver times it).
+  virtual IterationOutcome outer_iteration(int k, OuterIteration& it) = 0;
+  /// After the load step, converged or not: its answer and state into the solution.
+  virtual void end_load_step(const LoadStep& record) = 0;
+  /// The progress line of an iteration.
+  virtual std::string format(const OuterIteration& it) const = 0;
+};
+
+/// Runs load steps first_step, ..., n_steps of `phases` with at most max_outer_iterations
+/// outer iterations each, appending to out.history and out.steps; `on_step` after every
+/// converged step. Ends with out.converged, or out.reason saying where and why it stopped.
+void run_load_steps(LoadStepPhases& phases, int first_step, int n_steps, int max_outer_iterations,
+                    ContactSolution& out, const StepCallback& on_step = {});
+} // namespace feticon::nonlinear
