@@ -25,6 +25,11 @@ nlohmann::ordered_json qp_counters_json(const qp::QpCounters& c)
                              {"ritz_max", c.ritz.max},
                              {"condition_estimate", c.ritz.max / c.ritz.min},
                              {"cg_steps", c.ritz.cg_steps}};
+  if (c.solution_face.cg_steps > 0)
+    json["solution_face_spectrum"] = {{"ritz_min", c.solution_face.min},
+                                      {"ritz_max", c.solution_face.max},
+                                      {"condition_estimate", c.solution_face.max / c.solution_face.min},
+                                      {"cg_steps", c.solution_face.cg_steps}};
   return json;
 }
 

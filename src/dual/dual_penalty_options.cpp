@@ -18,5 +18,6 @@ DualPenaltyOptions::DualPenaltyOptions(const io::Settings& s)
                    : name == "dirichlet" ? DualPreconditioner::dirichlet
                                          : DualPreconditioner::none;
   constraint_scaling = s.flag("qp.constraint_scaling");
+  spectrum_steps = s.integer("qp.spectrum_steps");
 }
 } // namespace feticon::dual

@@ -4,9 +4,11 @@
 #include "dual/constraint_scaling.hpp"
 #include "dual/primal_recovery.hpp"
 #include "dual/projector.hpp"
+#include "qp/conjugate_gradient.hpp"
 #include "qp/norm_estimate.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
@@ -97,6 +99,57 @@ la::Vector particular_solution(const FetiOperators& feti, const CoarseProjector&
                                            << residual << " exceeds " << tolerance
                                            << " (G G' too ill-conditioned to balance the loads)");
   return lambda_tilde;
+}
+/// D_F x: the components outside the face F set to 0, an orthogonal projector.
+class FaceRestriction : public la::LinearOperator
+{
+public:
+  explicit FaceRestriction(const std::vector<char>& free) : _free(free) {}
+  la::Index size() const override { return static_cast<la::Index>(_free.size()); }
+  void apply(const la::Vector& x, la::Vector& y) const override
+  {
+    y = x;
+    for (la::Index i = 0; i < y.size(); ++i)
+      if (!_free[i])
+        y(i) = 0;
+  }
+
+private:
+  const std::vector<char>& _free;
+};
+
+/// The extreme eigenvalues of M H on the face F of the solution (equality rows and positive
+/// contact multipliers), H = P F^ P + rho Q and M its preconditioner for the same rho (exact
+/// on Im Q), from `steps` preconditioned CG steps on D_F H D_F x = D_F r: what MPRGP's CG
+/// steps see once the active set has settled, from a run longer than MPRGP's, which restarts
+/// at every change of the active set. r has entries from a hash of the row id, so the
+/// estimate is the same on any number of ranks.
+qp::RitzValues solution_face_spectrum(const FetiOperators& feti, const CoarseProjector& projector,
+                                      const FOperator& F, const DualPenaltyOptions& options, double s,
+                                      int64_t n_equality, double rho, const std::vector<char>& free)
+{
+  const ProjectedOperator H(F, projector, rho);
+  std::optional<DualPreconditionerOperator> M;
+  if (options.preconditioner != DualPreconditioner::none)
+    M.emplace(feti, projector, options, s, n_equality, rho);
+  const FaceRestriction face(free);
+  la::Vector r = la::Vector::Zero(feti.n_dual());
+  for (la::Index i = 0; i < r.size(); ++i)
+  {
+    uint64_t h = static_cast<uint64_t>(feti.row_id(i)) * 0x9E3779B97F4A7C15ull; // splitmix64
+    h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+    h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+    r(i) = static_cast<double>((h ^ (h >> 31)) >> 11) * 0x1.0p-53 - 0.5;
+  }
+  la::Vector x = la::Vector::Zero(r.size());
+  qp::CgOptions cg;
+  cg.rtol = 1e-13; // beyond that the recurrence is round-off
+  cg.max_iterations = options.spectrum_steps;
+  cg.preconditioner = M ? &*M : nullptr;
+  cg.space = &feti.space();
+  la::Vector face_r;
+  face.apply(r, face_r);
+  return qp::conjugate_gradient(H, face_r, x, cg, &face).ritz;
 }
 } // namespace
 
@@ -217,6 +270,9 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
       active_contacts += active[i];
     }
   out.active_contacts = feti.comm().sum(active_contacts);
+  if (options.spectrum_steps > 0)
+    out.report.solution_face = solution_face_spectrum(feti, projector, F, options, norm.value, n_equality,
+                                                      smalbe_method ? out.smalbe_rho : options.rho, active);
   PrimalSolution primal = recover_primal(feti, f_stacked, c, out.lambda, active);
   out.u = std::move(primal.u);
   out.alpha = std::move(primal.alpha);

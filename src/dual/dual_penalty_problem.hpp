@@ -42,7 +42,7 @@ struct DualPenaltyOptions
 {
   DualPenaltyOptions();
   /// From `method`, `rho`, `smalbe.M0`, `smalbe.beta`, `qp.rtol`, `qp.max_iterations`,
-  /// `qp.preconditioner`, `qp.constraint_scaling` and `qp.expansion`.
+  /// `qp.preconditioner`, `qp.constraint_scaling`, `qp.expansion` and `qp.spectrum_steps`.
   explicit DualPenaltyOptions(const io::Settings& settings);
 
   DualMethod method;
@@ -58,6 +58,10 @@ struct DualPenaltyOptions
   qp::MprgpExpansion expansion; ///< MPRGP's expansion step
   double smalbe_M0;           ///< SMALBE-M initial M (scaled units)
   double smalbe_beta;         ///< SMALBE-M: M <- M / beta when L increases too little
+  /// If > 0: after the solve, this many preconditioned CG steps on the face of the solution
+  /// measure the spectrum of M H there (QpCounters::solution_face): a diagnostic of the
+  /// preconditioner, longer than the CG runs between MPRGP's restarts.
+  int spectrum_steps;
 };
 
 /// Where a solve starts, from the solution of a nearby problem (the previous outer iteration:

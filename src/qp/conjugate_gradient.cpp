@@ -5,6 +5,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "common/timer.hpp"
+#include "qp/ritz_estimate.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -62,6 +63,7 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
   const la::VectorSpace& space =
       options.space ? *options.space : *(serial = std::make_unique<la::SerialSpace>(A.size()));
   QpReport report;
+  RitzEstimate ritz; // the run is Lanczos on P M P A: its extreme eigenvalues for free
   // s = b - Ax is kept unprojected so that the cost is exact even for x outside Im P.
   Vector s = b;
   if (space.max(x.size() > 0 ? x.cwiseAbs().maxCoeff() : 0.0) != 0.0)
@@ -96,6 +98,7 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
     report.converged = converged;
     report.reason = std::move(reason);
     report.cg_steps = report.iterations;
+    report.ritz = ritz.longest_run();
     report.projected_gradient_norm = std::sqrt(rr);
     report.cost = -0.5 * la::reduce_sum<1>(space, [&](la::Index i, double* sum)
                                            { sum[0] += x[i] * (s[i] + b[i]); })[0];
@@ -141,6 +144,7 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
     rr = la::dot(space, r, r);
     precondition(r, z);
     const double rz_new = la::dot(space, r, z);
+    ritz.cg_step(alpha, rz_new / rz);
     p = z + (rz_new / rz) * p;
     rz = rz_new;
     ++report.iterations;

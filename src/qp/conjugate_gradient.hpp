@@ -50,7 +50,8 @@ struct CgOptions
 /// @param[in]     options    tolerances and monitor.
 /// @param[in]     projector  optional orthogonal projector P of size A.size(); null means I.
 /// @return report with iterations = cg_steps, hessian_multiplications as in the file
-///         comment, projected_gradient_norm = ||P r||, cost = 1/2 x'Ax - b'x; converged =
+///         comment, projected_gradient_norm = ||P r||, cost = 1/2 x'Ax - b'x, ritz = the
+///         extreme eigenvalues of P M P A on Im P estimated from the run; converged =
 ///         false with a reason on max_iterations, a non-finite residual norm or p'Ap <= 0.
 /// Throws feticon::Error on size mismatch or non-finite b or x.
 QpReport conjugate_gradient(const la::LinearOperator& A, const la::Vector& b, la::Vector& x,

@@ -54,6 +54,9 @@ struct QpCounters
   double seconds = 0.0;
   /// Spectrum estimate from the longest run of CG steps (of all those summed).
   RitzValues ritz;
+  /// The same from a long CG run on the face of a QP's solution (dual::DualPenaltyOptions::
+  /// spectrum_steps), of the last QP that measured it; all 0 when none did.
+  RitzValues solution_face;
 
   /// Sums the counters and times; keeps the Ritz values of the longer CG run.
   QpCounters& operator+=(const QpCounters& other)
@@ -73,6 +76,8 @@ struct QpCounters
     seconds += other.seconds;
     if (other.ritz.cg_steps > ritz.cg_steps)
       ritz = other.ritz;
+    if (other.solution_face.cg_steps > 0)
+      solution_face = other.solution_face;
     return *this;
   }
 };

@@ -124,3 +124,19 @@ TEST(ConjugateGradient, IterationLimitAndInvalidInput)
   la::Vector short_x = la::Vector::Zero(49);
   EXPECT_THROW(qp::conjugate_gradient(A, b, short_x, {}), Error);
 }
+
+// Reference: the eigenvalues chosen for the matrix. A run of n CG steps on an n x n SPD
+// matrix is n Lanczos steps, whose Ritz values are its eigenvalues: the report's extremes
+// are 1 and cond(A) (rtol 1e-12 lets the run take all n steps; round-off of the
+// recurrence after n steps bounds the agreement).
+TEST(ConjugateGradient, RitzValuesOfAFullRunAreTheExtremeEigenvalues)
+{
+  const int n = 12;
+  const la::Matrix A = random_spd(n, 5, 100.0);
+  test::CountingOperator op(A);
+  la::Vector x = la::Vector::Zero(n);
+  const qp::QpReport report = qp::conjugate_gradient(op, random_vector(n, 6), x, {.rtol = 1e-12});
+  EXPECT_GE(report.ritz.cg_steps, n - 1);
+  EXPECT_NEAR(report.ritz.min, 1.0, 1e-6);
+  EXPECT_NEAR(report.ritz.max, 100.0, 1e-4);
+}
