@@ -46,6 +46,7 @@ public:
                   "the Dirichlet preconditioner needs the subdomain Schur complements");
   }
   la::Index size() const override { return _feti.n_dual(); }
+  const la::VectorSpace* space() const override { return &_feti.space(); }
   void apply(const la::Vector& x, la::Vector& y) const override
   {
     const la::Vector q = _projector.apply_Q(x);
@@ -146,7 +147,6 @@ qp::RitzValues solution_face_spectrum(const FetiOperators& feti, const CoarsePro
   cg.rtol = 1e-13; // beyond that the recurrence is round-off
   cg.max_iterations = options.spectrum_steps;
   cg.preconditioner = M ? &*M : nullptr;
-  cg.space = &feti.space();
   la::Vector face_r;
   face.apply(r, face_r);
   return qp::conjugate_gradient(H, face_r, x, cg, &face).ritz;
@@ -175,7 +175,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   // expansion step too long, which MPRGP detects and halves.
   const qp::NormEstimate norm =
       warm.pfp_norm > 0 ? qp::NormEstimate{warm.pfp_norm, 0}
-                        : qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1, &feti.space());
+                        : qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1);
   FETICON_CHECK(norm.value > 0 && std::isfinite(norm.value), "||PFP|| estimate " << norm.value
                                                                                  << " is not positive");
   out.pfp_norm = norm.value;
@@ -202,7 +202,6 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   mprgp.rtol = options.rtol;
   mprgp.max_iterations = options.max_iterations;
   mprgp.expansion = options.expansion;
-  mprgp.space = &feti.space();
   // After scaling, ||H|| = max(||P F^ P||, rho) ~ max(1, rho): no second power iteration.
   mprgp.alpha_bar = 1.8 / std::max(1.0, options.rho);
   std::optional<DualPreconditionerOperator> preconditioner;

@@ -26,7 +26,6 @@ FetiSolution solve_equality_feti(const FetiOperators& feti, const la::Vector& c,
   FetiSolution out;
   const LumpedPreconditioner lumped(feti);
   qp::CgOptions cg = options;
-  cg.space = &feti.space();
   if (preconditioner == FetiPreconditioner::lumped)
     cg.preconditioner = &lumped;
   std::optional<DirichletPreconditioner> dirichlet;

@@ -6,14 +6,8 @@
 /// B is held per subdomain: the rows that touch subdomain s and a sparse block B_s, so
 /// F lambda = sum_s B_s K_s+ B_s' lambda_s needs no global matrix.
 ///
-/// Distributed over MPI ranks (the decomposition's communicator):
-///   - a dual row is owned by the lowest subdomain it touches; a rank's dual vector holds the
-///     rows its subdomains own, in increasing global id (on one rank: all rows);
-///   - rows touching a rank's subdomains but owned elsewhere are ghosts. Applying B' (and so
-///     F, G) first copies owned values to the ghosts of the neighbouring ranks; applying B
-///     sends each subdomain's contribution to the row's owner, which adds the contributions
-///     in increasing subdomain order, from 0. With that order, and the block reductions of
-///     la/vector_space.hpp, every result is bitwise independent of the number of ranks;
+/// Distributed over MPI ranks (the decomposition's communicator) as the DualLayout says
+/// (dual/dual_layout.hpp: owned rows, ghosts, the exchanges of B' and B products), and:
 ///   - the coarse space (n_kernel = sum of kernel dimensions) is replicated: G lambda is
 ///     gathered from the owners of the subdomains, and G G' is assembled block by block
 ///     (block (s, t) on the rank of s, summing the rows s and t share in id order) and
@@ -23,6 +17,7 @@
 #include "decomposition/explicit_boundary_operators.hpp"
 #include "decomposition/schur_complements.hpp"
 #include "decomposition/subdomain_operators.hpp"
+#include "dual/dual_layout.hpp"
 #include "la/operator.hpp"
 #include "par/block_space.hpp"
 
@@ -40,17 +35,19 @@ public:
   FetiOperators(const decomposition::SubdomainSystem& system,
                 const decomposition::ConstraintRows& rows);
 
+  /// Where the dual unknowns live; the shortcuts below are its.
+  const DualLayout& layout() const { return _layout; }
   /// Size of this rank's dual vector (its owned rows) and of the whole dual.
-  int64_t n_dual() const { return static_cast<int64_t>(_owned.size()); }
-  int64_t n_dual_global() const { return _n_dual_global; }
+  int64_t n_dual() const { return _layout.n_dual(); }
+  int64_t n_dual_global() const { return _layout.n_dual_global(); }
   /// Global row id of owned row i and its index in the constructor's `rows`.
-  int64_t row_id(la::Index i) const { return _kept_id[_owned[i]]; }
-  int64_t row_index(la::Index i) const { return _owned[i]; }
+  int64_t row_id(la::Index i) const { return _layout.row_id(i); }
+  int64_t row_index(la::Index i) const { return _layout.row_index(i); }
   /// The owned entries of a vector given for every row in `rows` (e.g. rows.c_vector()).
-  la::Vector owned(const la::Vector& per_row) const;
+  la::Vector owned(const la::Vector& per_row) const { return _layout.owned(per_row); }
   /// Reductions over dual vectors (blocks: the rows owned by one subdomain).
-  const la::VectorSpace& space() const { return *_space; }
-  const par::Communicator& comm() const { return _comm; }
+  const la::VectorSpace& space() const { return _layout.space(); }
+  const par::Communicator& comm() const { return _layout.comm(); }
 
   int64_t n_primal() const { return _system.decomposition().n_primal(); }
   int64_t n_kernel() const { return _system.n_kernel(); }
@@ -97,52 +94,22 @@ public:
   const decomposition::SubdomainSystem& system() const { return _system; }
 
 private:
-  /// Owned values followed by the ghost values received from their owners.
-  la::Vector extended(const la::Vector& lambda, const std::vector<char>* mask = nullptr) const;
-  /// Owned result of B-type products: local_op(s, lambda_s) for every owned subdomain s
-  /// (|rows of s| values), summed per row in increasing subdomain order.
-  template <class LocalOperator>
-  la::Vector sum_contributions(LocalOperator&& local_op) const;
   /// sum_s B_s local_op(s, B_s' lambda_s) with B_s = blocks[s - first owned] (_B, or
   /// _B_boundary for the dense boundary operators): the pattern of F and the preconditioners.
   template <class LocalOperator>
   la::Vector sum_over_subdomains(const std::vector<la::SparseMatrix>& blocks, const la::Vector& lambda,
                                  LocalOperator&& local_op) const;
-  /// Local vector of subdomain s's rows from an extended vector.
-  la::Vector rows_of(int32_t s, const la::Vector& ext) const;
 
   const decomposition::SubdomainSystem& _system;
-  par::Communicator _comm;
-  int64_t _n_dual_global = 0;
-  std::vector<int64_t> _owned;     ///< owned rows (indices into the constructor's rows)
-  std::vector<int64_t> _kept_id;   ///< global id of every kept row
-  std::unique_ptr<par::BlockSpace> _space;
-  /// Per kept row: subdomains it touches (increasing) and its slot in extended vectors.
-  std::vector<std::vector<int32_t>> _touch;
-  std::vector<int64_t> _slot;
-  /// Per owned subdomain (indexed s - first owned): kept rows of B_s, their slots, B_s, B_s R_s.
-  std::vector<std::vector<int64_t>> _sub_rows;
-  std::vector<std::vector<int64_t>> _sub_slots;
+  DualLayout _layout;
+  /// Per owned subdomain (indexed s - first owned): B_s (its rows: the layout's
+  /// rows_of_subdomain) and B_s R_s.
   std::vector<la::SparseMatrix> _B;
   std::vector<la::Matrix> _BR;
   const decomposition::ExplicitBoundaryOperators* _explicit = nullptr;
   std::vector<la::SparseMatrix> _B_boundary; ///< per owned subdomain: B_s on the columns b_s
-  std::vector<int64_t> _contribution_start; ///< start of subdomain s's values among contributions
-  /// Ghost exchange: per neighbour rank, owned indices sent and ghost slots received.
-  struct Exchange
-  {
-    std::vector<int> ranks;
-    std::vector<std::vector<int64_t>> send;
-    std::vector<std::vector<int64_t>> recv;
-  };
-  Exchange _ghosts;
-  /// Contribution exchange: contribution positions sent to owners; per owned row the
-  /// positions (local, or n_local + received) to add, in increasing subdomain order.
-  Exchange _to_owner;
-  std::vector<int64_t> _sum_start, _sum_source;
-  int64_t _n_contributions = 0; ///< local contributions + received ones
-  /// For G G': per neighbour rank, (kept row, owned subdomain) pairs whose B_s R_s rows are
-  /// sent, and per kept row and remote subdomain the start of its received row.
+  /// For G G': per neighbour rank (the layout's neighbour_ranks), (kept row, owned subdomain)
+  /// pairs whose B_s R_s rows are sent, and the number of values received.
   std::vector<std::vector<std::pair<int64_t, int32_t>>> _share_send;
   std::vector<size_t> _share_recv_size;
 };
@@ -153,6 +120,7 @@ class LumpedPreconditioner : public la::LinearOperator
 public:
   explicit LumpedPreconditioner(const FetiOperators& feti) : _feti(feti) {}
   la::Index size() const override { return _feti.n_dual(); }
+  const la::VectorSpace* space() const override { return &_feti.space(); }
   void apply(const la::Vector& x, la::Vector& y) const override { y = _feti.apply_lumped(x); }
 
 private:
@@ -168,6 +136,7 @@ public:
   {
   }
   la::Index size() const override { return _feti.n_dual(); }
+  const la::VectorSpace* space() const override { return &_feti.space(); }
   void apply(const la::Vector& x, la::Vector& y) const override { y = _feti.apply_dirichlet(x, _schur); }
 
 private:
@@ -181,6 +150,7 @@ class FOperator : public la::LinearOperator
 public:
   explicit FOperator(const FetiOperators& feti, double scale = 1.0) : _feti(feti), _scale(scale) {}
   la::Index size() const override { return _feti.n_dual(); }
+  const la::VectorSpace* space() const override { return &_feti.space(); }
   void apply(const la::Vector& x, la::Vector& y) const override { y = _scale * _feti.apply_F(x); }
 
 private:

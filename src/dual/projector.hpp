@@ -74,6 +74,7 @@ public:
   {
   }
   la::Index size() const override { return _A.size(); }
+  const la::VectorSpace* space() const override { return _A.space(); }
   void apply(const la::Vector& x, la::Vector& y) const override;
 
 private:

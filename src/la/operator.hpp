@@ -7,15 +7,21 @@
 
 namespace feticon::la
 {
-/// A square linear operator applied to vectors; solvers know nothing else about it.
+class VectorSpace;
+
+/// A square linear operator applied to vectors of its space; solvers know nothing else about
+/// it.
 class LinearOperator
 {
 public:
   virtual ~LinearOperator() = default;
-  /// Number of rows (= columns).
+  /// Number of rows (= columns) on this rank.
   virtual Index size() const = 0;
   /// y = A x; `y` is resized by the implementation.
   virtual void apply(const Vector& x, Vector& y) const = 0;
+  /// Reductions (dot products, norms) of its vectors when they are distributed over ranks,
+  /// as the FETI dual vectors are; nullptr: all entries are local. Not owned.
+  virtual const VectorSpace* space() const { return nullptr; }
 };
 
 /// A LinearOperator backed by an explicit sparse matrix (not owned).
@@ -37,6 +43,7 @@ class TimedOperator : public LinearOperator
 public:
   explicit TimedOperator(const LinearOperator& A) : _A(A) {}
   Index size() const override { return _A.size(); }
+  const VectorSpace* space() const override { return _A.space(); }
   void apply(const Vector& x, Vector& y) const override
   {
     const auto start = std::chrono::steady_clock::now();

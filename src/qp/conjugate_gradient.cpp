@@ -61,7 +61,7 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
 
   std::unique_ptr<la::SerialSpace> serial;
   const la::VectorSpace& space =
-      options.space ? *options.space : *(serial = std::make_unique<la::SerialSpace>(A.size()));
+      A.space() ? *A.space() : *(serial = std::make_unique<la::SerialSpace>(A.size()));
   QpReport report;
   RitzEstimate ritz; // the run is Lanczos on P M P A: its extreme eigenvalues for free
   // s = b - Ax is kept unprojected so that the cost is exact even for x outside Im P.

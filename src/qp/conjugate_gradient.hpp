@@ -37,8 +37,6 @@ struct CgOptions
   /// Optional symmetric positive (semi)definite preconditioner M: directions are
   /// z = P M P r. Not owned; must outlive the solve. Stopping stays on ||P r||.
   const la::LinearOperator* preconditioner = nullptr;
-  /// Reductions when the vectors are distributed over ranks; nullptr: all entries local.
-  const la::VectorSpace* space = nullptr;
 };
 
 /// @brief Solves A x = b by (projected) conjugate gradients.

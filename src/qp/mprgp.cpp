@@ -192,13 +192,13 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
   };
   std::unique_ptr<la::SerialSpace> serial;
   const la::VectorSpace& space =
-      _options.space ? *_options.space : *(serial = std::make_unique<la::SerialSpace>(_A.size()));
+      _A.space() ? *_A.space() : *(serial = std::make_unique<la::SerialSpace>(_A.size()));
   if (space.max(static_cast<double>(_A.size())) == 0.0)
     return finish(true, "empty problem");
 
   if (_alpha_bar == 0.0)
   {
-    const NormEstimate norm = estimate_norm(_A, _options.power_iterations, 1e-3, 1, &space);
+    const NormEstimate norm = estimate_norm(_A, _options.power_iterations, 1e-3, 1);
     report.hessian_multiplications += norm.applications;
     if (!std::isfinite(norm.value))
       return finish(false, "power iteration for ||A|| gave a non-finite Rayleigh quotient "

@@ -115,9 +115,6 @@ struct MprgpOptions
   /// (Dostal 2009, sec. 5.11; Kruzik & Horak 2025). The proportional test, the expansion's
   /// projected gradient step and proportioning stay unpreconditioned. Not owned.
   const la::LinearOperator* preconditioner = nullptr;
-  /// Reductions of the operator's vectors when they are distributed over ranks (dual vectors
-  /// of the distributed FETI); nullptr: all entries local. Not owned.
-  const la::VectorSpace* space = nullptr;
 };
 
 /// Bound-constrained QP solver; see the file comment for the problem and the algorithm.

@@ -7,9 +7,9 @@
 
 namespace feticon::qp
 {
-NormEstimate estimate_norm(const la::LinearOperator& A, int max_iterations, double rtol,
-                           unsigned seed, const la::VectorSpace* space)
+NormEstimate estimate_norm(const la::LinearOperator& A, int max_iterations, double rtol, unsigned seed)
 {
+  const la::VectorSpace* space = A.space();
   FETICON_CHECK(max_iterations >= 1,
                 "estimate_norm: max_iterations = " << max_iterations << " must be >= 1");
   FETICON_CHECK(rtol >= 0.0, "estimate_norm: rtol = " << rtol << " must be >= 0");

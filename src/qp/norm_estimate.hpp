@@ -30,13 +30,12 @@ struct NormEstimate
 /// @param[in] max_iterations  at most this many applications of A (>= 1).
 /// @param[in] rtol            stop once |nu_k - nu_{k-1}| <= rtol |nu_k|.
 /// @param[in] seed            seed of the start vector; equal seeds give equal results.
-/// @param[in] space           reductions of A's vectors (nullptr: all entries local). The
-///                            start vector is a function of the global index, so the result
-///                            does not depend on how the entries are distributed.
 /// @return the estimate; value 0 (and 1 application) when A annihilates the start vector,
 ///         value 0 with 0 applications when A has size 0. For an indefinite A the value
 ///         approximates an extreme eigenvalue and may be negative.
+///
+/// The start vector is a function of the global index in A's space(), so the result does not
+/// depend on how the entries are distributed over ranks.
 NormEstimate estimate_norm(const la::LinearOperator& A, int max_iterations = 30,
-                           double rtol = 1e-3, unsigned seed = 1,
-                           const la::VectorSpace* space = nullptr);
+                           double rtol = 1e-3, unsigned seed = 1);
 } // namespace feticon::qp

@@ -29,6 +29,7 @@ public:
   {
   }
   la::Index size() const override { return _B.size(); }
+  const la::VectorSpace* space() const override { return _B.space(); }
   void apply(const la::Vector& x, la::Vector& y) const override
   {
     _B.apply(x, y);
@@ -60,9 +61,7 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
 {
   const auto solve_start = std::chrono::steady_clock::now();
   std::unique_ptr<la::SerialSpace> serial;
-  const la::VectorSpace& space = _options.mprgp.space
-                                     ? *_options.mprgp.space
-                                     : *(serial = std::make_unique<la::SerialSpace>(b.size()));
+  const la::VectorSpace& space = _A.space() ? *_A.space() : *(serial = std::make_unique<la::SerialSpace>(b.size()));
   // ||C x|| is a norm of a replicated coarse vector (no reduction); ||b|| and x'Hx are
   // reduced over the space.
   const double b_raw_norm = la::norm(space, b);
