@@ -1,6 +1,7 @@
 #include "app/memory_guard.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 #include "common/timer.hpp"
 #include "par/communicator.hpp"
 
@@ -45,7 +46,10 @@ MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdoma
     // One dense b x b array per subdomain (K+ and S in its two triangles), b its boundary
     // DOFs: fitted b = 6.5 sqrt(n) in plane strain, 5.8 n^(2/3) in 3D (Hertz, sphere, tensor deck).
     const double b = plane_strain ? 6.5 * std::sqrt(per_subdomain) : 5.8 * std::pow(per_subdomain, 2.0 / 3.0);
-    data += out.subdomains * 8.0 * std::min(b, per_subdomain) * std::min(b, per_subdomain);
+    const double block = 8.0 * std::min(b, per_subdomain) * std::min(b, per_subdomain);
+    // Forming one holds about four more such arrays (la::schur_complement's result, the
+    // matrix it inverts, the two blocks) on each thread forming them.
+    data += (out.subdomains + 4.0 * std::min(threads(), out.subdomains)) * block;
   }
   out.bytes = ranks * process_bytes + data;
   out.per_rank = process_bytes + data / ranks;

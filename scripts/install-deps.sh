@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev          # dense/sparse containers, element algebra
   libsuitesparse-dev     # CHOLMOD factorizations
   libblas-dev            # cblas.h and libblas.so: dense symmetric products (la/symmetric_product.hpp)
+  liblapack-dev          # dense Cholesky and inverse of the explicit operators (la/schur_complement.hpp)
   libopenblas0-pthread   # optimized BLAS behind CHOLMOD and those (else netlib reference BLAS)
   libmetis-dev           # graph partitioning
   openmpi-bin libopenmpi-dev  # MPI: subdomains distributed over ranks

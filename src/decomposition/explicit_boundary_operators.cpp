@@ -1,12 +1,72 @@
 #include "decomposition/explicit_boundary_operators.hpp"
 
 #include "common/parallel.hpp"
+#include "la/schur_complement.hpp"
 #include "la/symmetric_product.hpp"
 
-#include <algorithm>
+#include <string>
 
 namespace feticon::decomposition
 {
+namespace
+{
+/// The dense blocks of one subdomain (see the header): (K_s+)_bb in the lower triangle and
+/// the diagonal of `blocks`, S_s in its strict upper triangle; returns diag(S_s).
+la::Vector form_blocks(const la::SparseMatrix& K, const GeneralizedInverse& K_plus,
+                       const std::vector<int32_t>& boundary, la::Matrix& blocks, const std::string& what)
+{
+  const la::Index nb = static_cast<la::Index>(boundary.size());
+  // b' = b followed by the fixing DOFs outside b; where[dof] = its index in b' (or -1).
+  std::vector<int32_t> extended = boundary;
+  std::vector<la::Index> where(K.rows(), -1);
+  for (la::Index k = 0; k < nb; ++k)
+    where[boundary[k]] = k;
+  for (int32_t dof : K_plus.fixing_dofs())
+    if (where[dof] < 0)
+    {
+      where[dof] = static_cast<la::Index>(extended.size());
+      extended.push_back(dof);
+    }
+  const la::Matrix S_ext = la::schur_complement(K, extended, what.c_str());
+  const la::Index ng = static_cast<la::Index>(extended.size()) - nb;
+
+  la::Matrix K_plus_bb = la::Matrix::Zero(nb, nb);
+  const std::string inverse_of = "the boundary Schur complement of " + what;
+  if (K_plus.method() == GeneralizedInverseMethod::fixing_dofs)
+  {
+    // K_rr's Schur complement on r = b' minus f is S' without the fixing rows; all of r lies in b.
+    std::vector<char> fixed(extended.size(), 0);
+    for (int32_t dof : K_plus.fixing_dofs())
+      fixed[where[dof]] = 1;
+    std::vector<la::Index> r;
+    for (la::Index k = 0; k < nb; ++k)
+      if (!fixed[k])
+        r.push_back(k);
+    la::Matrix M = S_ext(r, r);
+    la::invert_spd(M, inverse_of.c_str());
+    K_plus_bb(r, r) = M;
+  }
+  else
+  {
+    la::Matrix M = S_ext;
+    const auto& dofs = K_plus.fixing_dofs();
+    for (size_t i = 0; i < dofs.size(); ++i)
+      for (size_t j = 0; j < dofs.size(); ++j)
+        M(where[dofs[i]], where[dofs[j]]) += K_plus.regularization()(static_cast<la::Index>(i), static_cast<la::Index>(j));
+    la::invert_spd(M, inverse_of.c_str());
+    K_plus_bb = M.topLeftCorner(nb, nb);
+  }
+
+  la::Matrix S = S_ext.topLeftCorner(nb, nb);
+  if (ng > 0) // eliminate the fixing DOFs outside b
+    S -= S_ext.topRightCorner(nb, ng) * S_ext.bottomRightCorner(ng, ng).llt().solve(S_ext.bottomLeftCorner(ng, nb));
+
+  blocks = K_plus_bb.triangularView<Eigen::Lower>();
+  blocks.triangularView<Eigen::StrictlyUpper>() = S;
+  return S.diagonal();
+}
+} // namespace
+
 ExplicitBoundaryOperators::ExplicitBoundaryOperators(const SubdomainSystem& system,
                                                      const SchurComplements& schur)
 {
@@ -17,26 +77,9 @@ ExplicitBoundaryOperators::ExplicitBoundaryOperators(const SubdomainSystem& syst
   {
     Local& local = _local[s - _first];
     local.boundary = schur.boundary(s);
-    const la::Index n = system.operators(s).K.rows();
-    const la::Index nb = static_cast<la::Index>(local.boundary.size());
-    local.blocks.resize(nb, nb);
-    // Blocks of columns, so that the right-hand sides take n x la::solve_block doubles, not n x |b_s|.
-    for (la::Index j = 0; j < nb; j += la::solve_block)
-    {
-      const la::Index width = std::min(la::solve_block, nb - j);
-      la::Matrix columns = la::Matrix::Zero(n, width);
-      for (la::Index k = 0; k < width; ++k)
-        columns(local.boundary[j + k], k) = 1;
-      const la::Matrix X = system.operators(s).K_plus.apply(columns);
-      for (la::Index k = 0; k < width; ++k)
-        for (la::Index r = j + k; r < nb; ++r)
-          local.blocks(r, j + k) = X(local.boundary[r], k);
-    }
-    const la::Matrix S = schur.dense(s);
-    for (la::Index c = 1; c < nb; ++c)
-      for (la::Index r = 0; r < c; ++r)
-        local.blocks(r, c) = S(r, c);
-    local.schur_minus_K_plus = S.diagonal() - local.blocks.diagonal();
+    const la::Vector schur_diagonal = form_blocks(system.operators(s).K, system.operators(s).K_plus, local.boundary,
+                                                  local.blocks, "subdomain " + std::to_string(s));
+    local.schur_minus_K_plus = schur_diagonal - local.blocks.diagonal();
   });
 }
 

@@ -13,8 +13,15 @@
 /// factorization: with the initial stiffness kept (modified Newton), they are formed once per
 /// run, while B_b changes with the contact rows of every outer iteration.
 ///
-/// Formed with one multi-column (supernodal, BLAS 3) solve per subdomain and factor. Both
-/// blocks are symmetric and share one square array: (K_s+)_bb in the lower triangle and the
+/// Formed from one partial factorization per subdomain (la/schur_complement.hpp): with b' =
+/// b_s and the fixing DOFs f of K_s+ (generalized_inverse.hpp), S' = the Schur complement of
+/// K_s on b' (the trailing block of a CHOLMOD factor with b' ordered last), and then
+///   fixing DOFs:     (K_s+)_bb = [S'_rr^-1 0; 0 0], r = b' minus f  (K_rr's own Schur complement),
+///   regularization:  (K_s+)_bb = (S' + rho C C')^-1 restricted to b,
+///   Dirichlet:       S_s = S'_bb - S'_bg S'_gg^-1 S'_gb, g = f outside b (usually none),
+/// the same operators as the substitutions apply, in about |b'|^3 flops of dense LAPACK
+/// instead of |b_s| substitutions with each of two factors.
+/// Both blocks are symmetric and share one square array: (K_s+)_bb in the lower triangle and the
 /// diagonal, S_s in the strict upper triangle (its diagonal aside), applied by BLAS dsymv
 /// (la/symmetric_product.hpp), which reads one triangle: half the memory, and the products,
 /// bound by memory traffic, read half as much.
@@ -30,7 +37,7 @@ class ExplicitBoundaryOperators
 {
 public:
   /// @param system subdomain K+ (kept by reference; must outlive this object)
-  /// @param schur  boundaries and Schur complements (used during construction only)
+  /// @param schur  the boundaries b_s (used during construction only; its K_ii factors are not needed)
   ExplicitBoundaryOperators(const SubdomainSystem& system, const SchurComplements& schur);
 
   /// Boundary DOFs of owned subdomain s (active DOFs, increasing).

@@ -45,6 +45,8 @@ void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
   for (size_t i = 0; i < fixing_candidates.size(); ++i)
     R_fix.row(static_cast<la::Index>(i)) = R.row(fixing_candidates[i]);
 
+  _fixing.clear();
+  _regularization.resize(0, 0);
   if (method == GeneralizedInverseMethod::fixing_dofs)
   {
     std::vector<int32_t> position(_n, 0);
@@ -56,6 +58,7 @@ void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
       {
         const int32_t dof = fixing_candidates[qr.colsPermutation().indices()(j)];
         position[dof] = -1;
+        _fixing.push_back(dof);
         block.row(j) = R.row(dof);
       }
       Eigen::JacobiSVD<la::Matrix> svd(block);
@@ -79,12 +82,13 @@ void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
   double rho = 0;
   for (la::Index i = 0; i < _n; ++i)
     rho = std::max(rho, K.coeff(i, i));
-  const la::Matrix CCt = R_fix * R_fix.transpose();
+  _fixing = fixing_candidates;
+  _regularization = rho * R_fix * R_fix.transpose();
   std::vector<la::Triplet> triplets;
   for (size_t i = 0; i < fixing_candidates.size(); ++i)
     for (size_t j = 0; j < fixing_candidates.size(); ++j)
       triplets.emplace_back(fixing_candidates[i], fixing_candidates[j],
-                            rho * CCt(static_cast<la::Index>(i), static_cast<la::Index>(j)));
+                            _regularization(static_cast<la::Index>(i), static_cast<la::Index>(j)));
   la::SparseMatrix C(_n, _n);
   C.setFromTriplets(triplets.begin(), triplets.end());
   _factor.factorize(K + C, what.c_str());

@@ -46,9 +46,18 @@ public:
   /// Nonzeros of the Cholesky factor.
   long factor_nonzeros() const { return _factor.factor_nonzeros(); }
 
+  /// What defines K+ besides K, for forming it on a set of DOFs another way
+  /// (explicit_boundary_operators.hpp): the method; fixing_dofs: the removed DOFs;
+  /// regularization: the fixing-node DOFs and rho C C' on them.
+  GeneralizedInverseMethod method() const { return _method; }
+  const std::vector<int32_t>& fixing_dofs() const { return _fixing; }
+  const la::Matrix& regularization() const { return _regularization; }
+
 private:
   GeneralizedInverseMethod _method = GeneralizedInverseMethod::fixing_dofs;
   la::Index _n = 0;
+  std::vector<int32_t> _fixing;
+  la::Matrix _regularization;
   std::vector<int32_t> _kept; ///< fixing_dofs: DOFs kept in K_rr, in order
   la::CholmodFactor _factor;
 };

@@ -1,9 +1,9 @@
 #include "decomposition/schur_complements.hpp"
 
+#include "common/error.hpp"
 #include "common/parallel.hpp"
 #include "la/submatrix.hpp"
 
-#include <algorithm>
 #include <string>
 
 namespace feticon::decomposition
@@ -31,8 +31,9 @@ la::SparseMatrix block(const la::SparseMatrix& A, const std::vector<int32_t>& ro
 }
 } // namespace
 
-SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vector<char>& boundary_node)
-    : _system(system)
+SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vector<char>& boundary_node,
+                                   bool factorize_interior)
+    : _system(system), _factorized(factorize_interior)
 {
   const Decomposition& decomp = system.decomposition();
   _local.resize(decomp.end_owned() - decomp.first_owned());
@@ -46,6 +47,8 @@ SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vec
       const bool on_boundary = boundary_node[node] || decomp.copies(node).size() > 1;
       (on_boundary ? local.boundary : local.interior).push_back(dof);
     }
+    if (!factorize_interior)
+      return;
     const la::SparseMatrix& K = system.operators(s).K;
     local.K_bb = block(K, local.boundary, local.boundary);
     local.K_ib = block(K, local.interior, local.boundary);
@@ -61,24 +64,9 @@ SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vec
   });
 }
 
-la::Matrix SchurComplements::dense(int32_t s) const
-{
-  const Local& l = local(s);
-  la::Matrix S = l.K_bb;
-  if (l.interior.empty())
-    return S;
-  // Blocks of columns, so that the right-hand sides take |i| x la::solve_block doubles, not
-  // |i| x |b|.
-  for (la::Index j = 0; j < S.cols(); j += la::solve_block)
-  {
-    const la::Index width = std::min(la::solve_block, S.cols() - j);
-    S.middleCols(j, width) -= l.K_ib.transpose() * l.K_ii.solve(la::Matrix(l.K_ib.middleCols(j, width)));
-  }
-  return S;
-}
-
 la::Vector SchurComplements::apply(int32_t s, const la::Vector& v) const
 {
+  FETICON_ASSERT(_factorized, "SchurComplements::apply without the K_ii factors");
   const Local& local = this->local(s);
   la::Vector v_b(local.boundary.size());
   for (size_t k = 0; k < local.boundary.size(); ++k)

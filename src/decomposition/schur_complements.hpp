@@ -27,10 +27,13 @@ namespace feticon::decomposition
 class SchurComplements
 {
 public:
-  /// Factorizes K_ii of the subdomains this rank owns.
+  /// Finds the boundaries and, with `factorize_interior`, factorizes K_ii of the subdomains
+  /// this rank owns. Without (the explicit dual operators form S_s densely themselves,
+  /// explicit_boundary_operators.hpp) apply() must not be called.
   /// @param system        subdomain stiffnesses (kept by reference, must outlive this)
   /// @param boundary_node one flag per mesh node: on the boundary whatever subdomain has it
-  SchurComplements(const SubdomainSystem& system, const std::vector<char>& boundary_node);
+  SchurComplements(const SubdomainSystem& system, const std::vector<char>& boundary_node,
+                   bool factorize_interior = true);
 
   /// [0; S_s v_b] for a vector v over the active DOFs of owned subdomain s (its interior
   /// entries are ignored).
@@ -38,8 +41,6 @@ public:
 
   /// Boundary DOFs b_s (active DOFs of owned subdomain s, increasing).
   const std::vector<int32_t>& boundary(int32_t s) const { return local(s).boundary; }
-  /// S_s = K_bb - K_bi K_ii^-1 K_ib as a dense |b_s| x |b_s| matrix (one multi-column solve).
-  la::Matrix dense(int32_t s) const;
 
 private:
   struct Local
@@ -51,6 +52,7 @@ private:
   const Local& local(int32_t s) const { return _local[s - _system.decomposition().first_owned()]; }
 
   const SubdomainSystem& _system;
+  bool _factorized = false;
   std::vector<Local> _local; ///< per owned subdomain (index s - first owned)
 };
 } // namespace feticon::decomposition

@@ -11,9 +11,9 @@
 
 namespace feticon::la
 {
-/// Right-hand sides per multi-column solve: measured on the explicit boundary operators
-/// (decomposition/explicit_boundary_operators.hpp) at 19k DOFs, 8 subdomains, 0.54 / 0.49 /
-/// 0.63 s for blocks of 8 / 32 / 64 against 1.0 s for all ~320 columns at once.
+/// Right-hand sides per multi-column solve: measured when the explicit boundary operators
+/// were formed that way (19k DOFs, 8 subdomains: 0.54 / 0.49 / 0.63 s for blocks of 8 / 32 /
+/// 64 against 1.0 s for all ~320 columns at once); they now come from la::schur_complement.
 inline constexpr Index solve_block = 32;
 
 class CholmodFactor

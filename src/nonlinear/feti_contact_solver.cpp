@@ -74,8 +74,10 @@ std::vector<char> schur_boundary_nodes(const fem::Problem& problem, const fem::C
 /// the run is expected to take. Costs in flops of the factor substitutions: an implicit step
 /// applies K_s+ and the K_ii solve of S_s once each, about 4 (nnz(L_s) + nnz(L_ii)) ~
 /// 8 nnz(L_s); an explicit one two dense products of 2 |b_s|^2, which run at 3 times the
-/// flop rate of the substitutions; forming the blocks is |b_s| such substitution pairs, which
-/// the multi-column solves in blocks of 32 do in a quarter of the time. Measured with the
+/// flop rate of the substitutions; forming the blocks (one factorization with b_s last and
+/// dense LAPACK, about 1.7 |b_s|^3 flops at 4 times that rate) 0.42 |b_s|^3, measured on the
+/// tensor Hertz mesh at 318k DOFs (|b_s| ~ 1 180: 2.2 s, 27 implicit steps) and hertz3d at
+/// 39k DOFs (|b_s| ~ 2 350: 8.3 s, 500 implicit steps). Measured with the
 /// products by BLAS dsymv: Hertz, 19k DOFs, 8 subdomains, |b_s| ~ 320: a dual product
 /// 2.5 ms implicit, 0.32 ms explicit (model: 4.6x); sphere on block, 17k DOFs, 4 subdomains,
 /// |b_s| ~ 1 560: 9.2 ms against 3.4 ms (model 2.8x; the blocks, 75 MiB, stream from memory
@@ -99,7 +101,7 @@ std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, con
   {
     const double nb = static_cast<double>(schur->boundary(s).size());
     const double substitution = 8.0 * static_cast<double>(system.operators(s).K_plus.factor_nonzeros());
-    setup += 0.25 * nb * substitution;
+    setup += 0.42 * nb * nb * nb;
     implicit_step += substitution;
     explicit_step += 4 * nb * nb / 3;
   }
@@ -238,12 +240,14 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
 void FetiContactSolve::update_stiffness()
 {
   _system->update(_u, &_timers);
-  if (!_schur_boundary.empty())
-  {
-    ScopedTimer t(_timers, "preconditioner setup"); // K_ii factorizations
-    _schur = std::make_unique<decomposition::SchurComplements>(*_system, _schur_boundary);
-  }
+  if (!_schur_boundary.empty()) // the boundaries first: the choice below depends on their sizes
+    _schur = std::make_unique<decomposition::SchurComplements>(*_system, _schur_boundary, false);
   const auto [use_explicit, reason] = choose_explicit(_settings, *_system, _schur.get(), _decomp->comm());
+  if (_schur && !use_explicit)
+  {
+    ScopedTimer t(_timers, "preconditioner setup"); // K_ii factorizations for the implicit S_s
+    _schur = std::make_unique<decomposition::SchurComplements>(*_system, _schur_boundary, true);
+  }
   _out.dual_operator = use_explicit ? "explicit" : "implicit";
   _out.dual_operator_reason = reason;
   log::info("dual operators: " + _out.dual_operator + " (" + reason + ")");
