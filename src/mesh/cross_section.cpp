@@ -3,14 +3,12 @@
 #include "mesh/gmsh_session.hpp"
 
 #include "common/error.hpp"
-#include "common/parallel.hpp"
 
 #include <gmsh.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <set>
 #include <unordered_map>
 #include <utility>
@@ -23,21 +21,13 @@ namespace
 constexpr int gmsh_line = 1;
 constexpr int gmsh_quadrangle = 3;
 
-/// The Gmsh entities of one section: its curves (in the section's order), its points and
-/// its surface.
-struct SectionEntities
+/// Gmsh's plane model of the section: one surface bounded by the loop; returns the curve tags.
+std::vector<int> build_geometry(const CrossSection& section)
 {
-  std::vector<int> curves, points;
-  int surface = -1;
-};
-
-/// Adds the section to Gmsh's current model as one plane surface bounded by the loop.
-SectionEntities build_geometry(const CrossSection& section)
-{
-  SectionEntities e;
+  gmsh::model::add(section.body);
   const int first = gmsh::model::geo::addPoint(section.start.x(), section.start.y(), 0);
-  e.points.push_back(first);
   int previous = first;
+  std::vector<int> curves;
   for (size_t k = 0; k < section.curves.size(); ++k)
   {
     const CrossSectionCurve& c = section.curves[k];
@@ -45,28 +35,23 @@ SectionEntities build_geometry(const CrossSection& section)
     FETICON_CHECK(!last || (c.end - section.start).norm() <= 1e-12 * (1 + section.start.norm()),
                   "cross section of " << section.body << ": the boundary loop does not close");
     const int end = last ? first : gmsh::model::geo::addPoint(c.end.x(), c.end.y(), 0);
-    if (!last)
-      e.points.push_back(end);
     if (c.arc)
     {
       const int centre = gmsh::model::geo::addPoint(c.centre.x(), c.centre.y(), 0);
-      e.points.push_back(centre);
-      e.curves.push_back(gmsh::model::geo::addCircleArc(previous, centre, end));
+      curves.push_back(gmsh::model::geo::addCircleArc(previous, centre, end));
     }
     else
-      e.curves.push_back(gmsh::model::geo::addLine(previous, end));
+      curves.push_back(gmsh::model::geo::addLine(previous, end));
     previous = end;
   }
-  const int loop = gmsh::model::geo::addCurveLoop(e.curves);
-  e.surface = gmsh::model::geo::addPlaneSurface({loop});
-  return e;
+  const int loop = gmsh::model::geo::addCurveLoop(curves);
+  gmsh::model::geo::addPlaneSurface({loop});
+  gmsh::model::geo::synchronize();
+  return curves;
 }
 
-/// The quadrilateral meshes of all surfaces of the model, each surface on its own OpenMP
-/// thread of Gmsh (Mesh.MaxNumThreads2D): a surface is meshed from its own boundary curves
-/// alone, so the meshes are those of meshing each section by itself. The size callback
-/// evaluates the size field of the section owning the entity Gmsh meshes.
-void generate_quadrilaterals(const std::map<std::pair<int, int>, const SizeField*>& size_of, int threads)
+/// The quadrilateral mesh of the section's surface: Gmsh's size callback evaluates `size`.
+void generate_quadrilaterals(const SizeField& size)
 {
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
@@ -81,24 +66,14 @@ void generate_quadrilaterals(const std::map<std::pair<int, int>, const SizeField
   // takes 40-60 % less time; without any pass Gmsh 4.8 sometimes leaves triangles. Full-quad
   // recombination (algorithms 2, 3) is faster still but leaves 44-45 degree corners where a
   // domain corner is split and 6-15 % more nodes. Its frontal-Delaunay for quads (algorithm
-  // 8) crashes in 4.8 when the size comes from a callback.
+  // 8) crashes in 4.8 when the size comes from a callback. Meshing the Hertz bodies' surfaces
+  // on two threads (Mesh.MaxNumThreads2D) saved 0.03 s but crashes now and then in 4.8's
+  // recombineIntoQuads, which is not thread-safe (gdb, 1 run in ~5): keep one thread.
   gmsh::option::setNumber("Mesh.Algorithm", 6);
   gmsh::option::setNumber("Mesh.RecombineAll", 1);
   gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);
   gmsh::option::setNumber("Mesh.Smoothing", 1);
-  gmsh::option::setNumber("General.NumThreads", threads); // both needed in Gmsh 4.8
-  gmsh::option::setNumber("Mesh.MaxNumThreads2D", threads);
-  // An entity of no section (none is known to occur) gets the finest size of all sections
-  // there: an exception must not leave the callback, which runs on Gmsh's OpenMP threads.
-  gmsh::model::mesh::setSizeCallback([&size_of](int dim, int tag, double x, double y, double)
-                                     {
-                                       if (auto it = size_of.find({dim, tag}); it != size_of.end())
-                                         return (*it->second)(x, y);
-                                       double finest = std::numeric_limits<double>::infinity();
-                                       for (const auto& [entity, size] : size_of)
-                                         finest = std::min(finest, (*size)(x, y));
-                                       return finest;
-                                     });
+  gmsh::model::mesh::setSizeCallback([&size](int, int, double x, double y, double) { return size(x, y); });
   gmsh::model::mesh::generate(2);
 }
 
@@ -197,20 +172,21 @@ void straighten_corners(std::vector<Eigen::Vector2d>& points, const std::vector<
 }
 } // namespace
 
-namespace
+HexMesh extrude_cross_section(const CrossSection& section, const SizeField& size, double thickness)
 {
-/// The hex8 layer of one meshed section of Gmsh's current model. `tags` and
-/// `all_coordinates` are the model's nodes in Gmsh's order (getNodes of all entities).
-HexMesh extrude_section(const CrossSection& section, const SectionEntities& entities,
-                        const std::vector<std::size_t>& tags, const std::vector<double>& all_coordinates,
-                        double thickness)
-{
-  const std::vector<int>& curve_tags = entities.curves;
-  // Nodes of the section's cells, renumbered 0..n-1 in Gmsh's order: Gmsh also has a node at
-  // every geometry point, among them the arcs' centres, which belong to no cell.
+  FETICON_CHECK(thickness > 0, "cross section of " << section.body << ": thickness " << thickness << " must be > 0");
+  GmshSession session;
+  const std::vector<int> curve_tags = build_geometry(section);
+  generate_quadrilaterals(size);
+
+  // Nodes of the cells, renumbered 0..n-1 in Gmsh's order: Gmsh also has a node at every
+  // geometry point, among them the arcs' centres, which belong to no cell.
   std::vector<int> types;
   std::vector<std::vector<std::size_t>> element_tags, element_nodes;
-  gmsh::model::mesh::getElements(types, element_tags, element_nodes, 2, entities.surface);
+  gmsh::model::mesh::getElements(types, element_tags, element_nodes, 2, -1);
+  std::vector<std::size_t> tags;
+  std::vector<double> all_coordinates, parametric;
+  gmsh::model::mesh::getNodes(tags, all_coordinates, parametric, -1, -1, true, false);
   std::unordered_map<std::size_t, int32_t> index;
   for (const auto& nodes : element_nodes)
     for (std::size_t tag : nodes)
@@ -303,41 +279,5 @@ HexMesh extrude_section(const CrossSection& section, const SectionEntities& enti
     FETICON_CHECK(centre_jacobian_determinant(mesh, cell) > 0,
                   "cross section of " << section.body << ": Gmsh made an inverted cell");
   return mesh;
-}
-} // namespace
-
-std::vector<HexMesh> extrude_cross_sections(const std::vector<SizedCrossSection>& sections, double thickness)
-{
-  FETICON_CHECK(thickness > 0, "cross sections: thickness " << thickness << " must be > 0");
-  GmshSession session;
-  gmsh::model::add("cross sections");
-  // Sections may touch (a cylinder on a block): their points must stay apart.
-  gmsh::option::setNumber("Geometry.AutoCoherence", 0);
-  std::vector<SectionEntities> entities;
-  std::map<std::pair<int, int>, const SizeField*> size_of;
-  for (const SizedCrossSection& s : sections)
-  {
-    entities.push_back(build_geometry(s.section));
-    for (int tag : entities.back().points)
-      size_of[{0, tag}] = &s.size;
-    for (int tag : entities.back().curves)
-      size_of[{1, tag}] = &s.size;
-    size_of[{2, entities.back().surface}] = &s.size;
-  }
-  gmsh::model::geo::synchronize();
-  generate_quadrilaterals(size_of, std::clamp(threads(), 1, static_cast<int>(sections.size())));
-
-  std::vector<std::size_t> tags;
-  std::vector<double> coordinates, parametric;
-  gmsh::model::mesh::getNodes(tags, coordinates, parametric, -1, -1, true, false);
-  std::vector<HexMesh> meshes;
-  for (size_t k = 0; k < sections.size(); ++k)
-    meshes.push_back(extrude_section(sections[k].section, entities[k], tags, coordinates, thickness));
-  return meshes;
-}
-
-HexMesh extrude_cross_section(const CrossSection& section, const SizeField& size, double thickness)
-{
-  return extrude_cross_sections({{section, size}}, thickness)[0];
 }
 } // namespace feticon::mesh

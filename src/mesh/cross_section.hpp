@@ -42,15 +42,4 @@ using SizeField = std::function<double(double x, double y)>;
 /// layer of hex8 cells of thickness `thickness` (m) along z.
 /// @throws feticon::Error if Gmsh fails or leaves a cell that is not a quadrilateral.
 HexMesh extrude_cross_section(const CrossSection& section, const SizeField& size, double thickness);
-
-struct SizedCrossSection
-{
-  CrossSection section;
-  SizeField size;
-};
-
-/// @brief The same for several sections (bodies) at once, one mesh each: Gmsh meshes their
-/// surfaces in parallel on up to threads() threads (a surface is meshed from its own
-/// boundary alone, so each mesh is the one extrude_cross_section makes). Sections may touch.
-std::vector<HexMesh> extrude_cross_sections(const std::vector<SizedCrossSection>& sections, double thickness);
 } // namespace feticon::mesh

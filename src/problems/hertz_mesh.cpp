@@ -155,11 +155,9 @@ HexMesh graded_bodies(const HertzMeshParameters& p)
                   {{p.block_width, 0}, "side"},
                   {{0, 0}, "contact"},
                   {{0, -p.block_depth}, "symmetry"}};
-  const std::vector<HexMesh> bodies = mesh::extrude_cross_sections(
-      {{cylinder, graded_size(p, h_slave)}, {block, graded_size(p, p.master_ratio * h_slave)}}, p.thickness);
   HexMesh mesh;
-  mesh::append_mesh(mesh, bodies[0], "cylinder_");
-  mesh::append_mesh(mesh, bodies[1], "block_");
+  mesh::append_mesh(mesh, mesh::extrude_cross_section(cylinder, graded_size(p, h_slave), p.thickness), "cylinder_");
+  mesh::append_mesh(mesh, mesh::extrude_cross_section(block, graded_size(p, p.master_ratio * h_slave), p.thickness), "block_");
   merge_sets(mesh, {"cylinder_load"}, "load");
   merge_sets(mesh, {"block_support"}, "support");
   return mesh;

@@ -109,27 +109,6 @@ TEST(CrossSection, SameMeshEveryTime)
   EXPECT_EQ(first.cells, again.cells);
 }
 
-TEST(CrossSection, SeveralSectionsAtOnceAreMeshedAsAlone)
-{
-  // Two touching sections (the notched square and a block below it sharing the edge y = 0),
-  // meshed in one Gmsh model in parallel: each mesh is the one of meshing it alone, and the
-  // shared corner points stay two nodes.
-  CrossSection below{"below", {0, -0.5}, {}};
-  below.curves = {{{1.5, -0.5}, "bottom"}, {{1.5, 0}, "right"}, {{0, 0}, "top"}, {{0, -0.5}, "left"}};
-  auto fine = [](double x, double) { return 0.02 + 0.05 * x; };
-  auto coarse = [](double, double y) { return 0.04 - 0.03 * y; };
-  const std::vector<HexMesh> both = extrude_cross_sections({{notched_square(), fine}, {below, coarse}}, 0.1);
-  ASSERT_EQ(both.size(), 2u);
-  const HexMesh alone[2] = {extrude_cross_section(notched_square(), fine, 0.1), extrude_cross_section(below, coarse, 0.1)};
-  for (int k = 0; k < 2; ++k)
-  {
-    EXPECT_GT(both[k].n_cells(), 50);
-    EXPECT_EQ(both[k].nodes, alone[k].nodes) << "section " << k;
-    EXPECT_EQ(both[k].cells, alone[k].cells) << "section " << k;
-    EXPECT_EQ(both[k].face_sets, alone[k].face_sets) << "section " << k;
-  }
-}
-
 TEST(CrossSection, RefusesAnOpenLoop)
 {
   CrossSection s = notched_square();
