@@ -67,6 +67,8 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   out["displacements"] = file.settings.text("displacements");
   out["method"] = file.settings.text("method");
   out["preconditioner"] = file.settings.text("qp.preconditioner");
+  out["dual_operator"] = solution.dual_operator; // implicit or explicit, after dual.operator = auto
+  out["explicit_operator_bytes"] = solution.explicit_operator_bytes;
   out["converged"] = solution.converged;
   if (!solution.converged)
     out["reason"] = solution.reason;

@@ -14,6 +14,7 @@
 #   bench/run.sh --feticon build-bench/feticon     # another build (default build/feticon)
 #   bench/run.sh --obstacle 1000 --obstacle-steps 1000   # MPRGP QP size n^2 and step cap
 #   bench/run.sh --preconditioners none,dirichlet  # dual preconditioners of the contact cases
+#   bench/run.sh --operators implicit,explicit     # dual.operator of the contact cases (default auto)
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -28,6 +29,7 @@ out=$root/bench/results
 obstacle=1000
 obstacle_steps=1000
 preconditioners=dirichlet
+operators=auto
 while [[ $# -gt 0 ]]; do
   case $1 in
     --sizes) sizes=$2; shift 2 ;;
@@ -39,9 +41,10 @@ while [[ $# -gt 0 ]]; do
     --obstacle) obstacle=$2; shift 2 ;;
     --obstacle-steps) obstacle_steps=$2; shift 2 ;;
     --preconditioners) preconditioners=$2; shift 2 ;;
+    --operators) operators=$2; shift 2 ;;
     --weak) weak=$2; shift 2 ;;
     --weak-cells) weak_cells=$2; shift 2 ;;
-    -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1 (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -73,10 +76,15 @@ if [[ ,$only, == *,contact,* ]]; then
     [[ -n ${refinement[$size]:-} ]] || { echo "bench/run.sh: unknown size $size (10k, 100k, 1M)" >&2; exit 1; }
     for kind in ${kinds//,/ }; do
       for preconditioner in ${preconditioners//,/ }; do
-        run_case "contact.$size.$kind.$preconditioner" --set hertz.mesh=tensor --set hertz.growth_ratio=1.2 \
-          --set hertz.refinement="${refinement[$size]}" \
-          --set subdomains="${subdomains[$size]}" --set displacements=$kind \
-          --set qp.preconditioner=$preconditioner
+        for operator in ${operators//,/ }; do
+          # the operator in the name only when chosen, so that earlier raw files keep their names
+          name=contact.$size.$kind.$preconditioner
+          [[ $operator == auto ]] || name+=.$operator
+          run_case "$name" --set hertz.mesh=tensor --set hertz.growth_ratio=1.2 \
+            --set hertz.refinement="${refinement[$size]}" \
+            --set subdomains="${subdomains[$size]}" --set displacements=$kind \
+            --set qp.preconditioner=$preconditioner --set dual.operator=$operator
+        done
       done
     done
   done

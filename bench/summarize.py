@@ -43,7 +43,7 @@ def medians(raw_dir):
 # Column title -> function of a case's medians.
 # Phases inside "total solve" (all but mesh); "other (outer loop)" is the rest of the outer
 # loop: residuals, primal recovery, the gathers for the contact search, convergence tests.
-INNER_PHASES = ["decomposition", "assembly", "factorization", "preconditioner setup", "coarse problem",
+INNER_PHASES = ["decomposition", "assembly", "factorization", "preconditioner setup", "explicit operators", "coarse problem",
                 "contact search", "dual solve (MPRGP)", "internal forces"]
 PHASES = ["mesh"] + INNER_PHASES + ["other (outer loop)", "total solve"]
 
@@ -57,6 +57,7 @@ CONTACT = {
     "size": lambda c: c["case"].split(".")[1],
     "displacements": lambda c: c["displacements"],
     "preconditioner": lambda c: c.get("preconditioner", "none"),
+    "operator": lambda c: c.get("dual_operator", "implicit"),
     "DOFs": lambda c: c["degrees_of_freedom"],
     "subdomains": lambda c: c["subdomains"],
     "dual": lambda c: c["dual_size"],
@@ -83,6 +84,7 @@ CONTACT = {
 SCALABILITY = {
     "refinement": lambda c: c["case"].split(".")[1][1:],
     "preconditioner": lambda c: c.get("preconditioner", "none"),
+    "operator": lambda c: c.get("dual_operator", "implicit"),
     "DOFs": lambda c: c["degrees_of_freedom"],
     "subdomains": lambda c: c["subdomains"],
     "dual": lambda c: c["dual_size"],
@@ -152,12 +154,12 @@ def table(title, columns, cases, results, csv_name, groups=None):
 
 
 CONTACT_GROUPS = [
-    ["size", "displacements", "preconditioner", "DOFs", "subdomains", "dual", "outer", "MPRGP", "F products", "peak MiB",
+    ["size", "displacements", "preconditioner", "operator", "DOFs", "subdomains", "dual", "outer", "MPRGP", "F products", "peak MiB",
      "converged", "reps"],
-    ["size", "displacements", "preconditioner"] + [phase + " (s)" for phase in PHASES],
+    ["size", "displacements", "preconditioner", "operator"] + [phase + " (s)" for phase in PHASES],
     ["size", "displacements", "preconditioner", "total solve (s)", "direct assembly (s)", "direct factorization (s)",
      "direct solve (s)", "factor nnz", "contact / direct"],
-    ["size", "displacements", "preconditioner", "MPRGP", "QP (s)", "s / MPRGP iteration", "s / H application",
+    ["size", "displacements", "preconditioner", "operator", "MPRGP", "QP (s)", "s / MPRGP iteration", "s / H application",
      "s / preconditioner application", "iteration / H application", "iteration / (H + preconditioner)"],
 ]
 
@@ -172,7 +174,7 @@ def main():
     size_order = {"10k": 0, "100k": 1, "1M": 2}
     contact = sorted((c for n, c in cases.items() if n.startswith("contact.")),
                      key=lambda c: (size_order.get(c["case"].split(".")[1], 9), c["case"].split(".")[2] != "small",
-                                    c.get("preconditioner", "")))
+                                    c.get("preconditioner", ""), c.get("dual_operator", "")))
     scalability = sorted((c for n, c in cases.items() if n.startswith("scalability.")),
                          key=lambda c: (c.get("preconditioner", ""), float(c["case"].split(".")[1][1:])))
     weak = sorted((c for n, c in cases.items() if n.startswith("weak.")),
