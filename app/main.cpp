@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <unistd.h>
 
 namespace
 {
@@ -50,7 +51,11 @@ int fail(const char* raw, int code)
     std::cerr << "feticon: error: " << what << '\n';
     return code;
   }
-  std::cerr << "feticon: error (rank " << world.rank() << "): " << what << std::endl;
+  // One write(2): mpirun forwards each rank's stderr in the chunks it reads, and its abort
+  // banner would otherwise land in the middle of a line written piece by piece.
+  const std::string line =
+      "feticon: error (rank " + std::to_string(world.rank()) + "): " + what + '\n';
+  [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, line.data(), line.size());
   world.abort(code);
 }
 } // namespace
