@@ -23,6 +23,18 @@ void set_blas_threads(int n)
     set(n);
 }
 
+/// No OpenMP teams: CHOLMOD 5.12 zeroes its supernodal factor in an OpenMP loop with
+/// num_threads(4) (t_cholmod_super_numeric.c); called from our workers, every worker started
+/// its own team, 8 threads on 2 cores spinning against ours. Gmsh, the other OpenMP user,
+/// meshes on one thread (mesh/cross_section.cpp). libgomp (GCC 12) keeps the setting per
+/// thread: called on the main thread and on every worker. Found at run time like OpenBLAS:
+/// feticon itself does not link libgomp.
+void serialize_openmp()
+{
+  if (auto* set = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels")))
+    set(0);
+}
+
 int threads_from_environment()
 {
   const char* value = std::getenv("OMP_NUM_THREADS");
@@ -95,6 +107,7 @@ private:
 
   void work()
   {
+    serialize_openmp(); // libgomp keeps the setting per thread
     uint64_t seen = 0;
     for (;;)
     {
@@ -156,6 +169,7 @@ void set_threads(int threads)
 {
   g_threads = std::max(1, threads);
   set_blas_threads(1);
+  serialize_openmp();
 }
 
 int threads() { return configured_threads(); }

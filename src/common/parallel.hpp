@@ -23,8 +23,9 @@
 
 namespace feticon
 {
-/// Sets the threads of parallel_for (at least 1; OMP_NUM_THREADS overrides) and BLAS to one
-/// thread. Call before the first parallel_for.
+/// Sets the threads of parallel_for (at least 1; OMP_NUM_THREADS overrides), BLAS to one
+/// thread and OpenMP (inside CHOLMOD and Gmsh) to no teams at all. Call before the first
+/// parallel_for.
 void set_threads(int threads);
 /// Threads parallel_for uses.
 int threads();
