@@ -3,6 +3,7 @@
 #include "contact/surface_search.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -112,33 +113,53 @@ MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vect
   coupling.slave.nodes = mesh.face_set_nodes(pair.slave);
   const auto n_slave = static_cast<la::Index>(coupling.slave.nodes.size());
   coupling.slave.area = la::Vector::Zero(n_slave);
-  std::vector<CouplingRow> rows(n_slave);
-  std::vector<int32_t> candidates;
-  for (const mesh::Face& face : slave_faces)
+  // The segments of every slave face on the threads, then summed in face order: M and the
+  // nodal areas are the same bit for bit whatever the thread count.
+  struct FaceSegments
   {
-    const QuadCoordinates slave_quad = current_face_coordinates(mesh, u, face);
-    const DualBasis dual = dual_basis(slave_quad);
+    DualBasis dual;
+    std::vector<std::pair<int32_t, Eigen::Matrix4d>> segments; ///< (master face, coupling)
+  };
+  std::vector<FaceSegments> per_face(slave_faces.size());
+  constexpr int32_t faces_per_chunk = 64;
+  const auto n_chunks = static_cast<int32_t>((slave_faces.size() + faces_per_chunk - 1) / faces_per_chunk);
+  parallel_for(0, n_chunks, setup_work, [&](int32_t chunk)
+  {
+    std::vector<int32_t> candidates;
+    const size_t end = std::min(slave_faces.size(), static_cast<size_t>(chunk + 1) * faces_per_chunk);
+    for (size_t i = static_cast<size_t>(chunk) * faces_per_chunk; i < end; ++i)
+    {
+      const mesh::Face& face = slave_faces[i];
+      const QuadCoordinates slave_quad = current_face_coordinates(mesh, u, face);
+      per_face[i].dual = dual_basis(slave_quad);
+      BoundingBox box;
+      for (int k = 0; k < 4; ++k)
+        box.extend(slave_quad.row(k).transpose());
+      search.candidates(box, candidates);
+      for (const int32_t f : candidates)
+        if (!share_a_node(face, master_faces[f]))
+          if (const std::optional<SegmentCoupling> segment =
+                  integrate_segment(slave_quad, per_face[i].dual, master_quads[f], options))
+            per_face[i].segments.emplace_back(f, segment->coupling);
+    }
+  });
+
+  std::vector<CouplingRow> rows(n_slave);
+  for (size_t i = 0; i < slave_faces.size(); ++i)
+  {
+    const mesh::Face& face = slave_faces[i];
     std::array<int32_t, 4> slave_index{};
-    BoundingBox box;
     for (int k = 0; k < 4; ++k)
     {
       slave_index[k] = coupling.slave.index_of(face[k]);
-      coupling.slave.area(slave_index[k]) += dual.nodal_area(k);
-      box.extend(slave_quad.row(k).transpose());
+      coupling.slave.area(slave_index[k]) += per_face[i].dual.nodal_area(k);
     }
-    search.candidates(box, candidates);
-    for (const int32_t f : candidates)
+    for (const auto& [f, segment] : per_face[i].segments)
     {
-      if (share_a_node(face, master_faces[f]))
-        continue;
-      const std::optional<SegmentCoupling> segment =
-          integrate_segment(slave_quad, dual, master_quads[f], options);
-      if (!segment)
-        continue;
       ++coupling.n_segments;
       for (int k = 0; k < 4; ++k)
         for (int a = 0; a < 4; ++a)
-          add_to_row(rows[slave_index[k]], master_faces[f][a], segment->coupling(k, a));
+          add_to_row(rows[slave_index[k]], master_faces[f][a], segment(k, a));
     }
   }
 
