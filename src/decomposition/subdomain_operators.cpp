@@ -14,9 +14,11 @@ SubdomainSystem::SubdomainSystem(const Decomposition& decomposition,
     : _decomposition(decomposition), _method(method), _assemblers(decomposition.n_subdomains()),
       _operators(decomposition.n_subdomains())
 {
-  for (int32_t s = decomposition.first_owned(); s < decomposition.end_owned(); ++s)
-    _assemblers[s] = std::make_unique<fem::Assembler>(
-        decomposition.mesh(), decomposition.subdomain(s).domain, materials, kinematics);
+  parallel_for(decomposition.first_owned(), decomposition.end_owned(), setup_work, [&](int32_t s)
+  {
+    _assemblers[s] = std::make_unique<fem::Assembler>(decomposition.mesh(), decomposition.subdomain(s).domain,
+                                                      materials, kinematics);
+  });
 }
 
 la::Vector SubdomainSystem::full_local(int32_t s, const la::Vector& u_stacked) const
@@ -43,7 +45,10 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
     const la::SparseMatrix K_full = assembler.stiffness(u_full, fem::StiffnessKind::material);
     // Restrict to active DOFs (plane strain eliminates z).
     SubdomainOperators& op = _operators[sub.id];
-    op.K = la::principal_submatrix(K_full, sub.active_of_full, sub.n_dofs());
+    // Swapped in: Eigen 3.4's SparseMatrix has no move assignment, and a copy of K costs
+    // page faults on fresh memory.
+    la::SparseMatrix K_active = la::principal_submatrix(K_full, sub.active_of_full, sub.n_dofs());
+    op.K.swap(K_active);
 
     // Kernel from the current coordinates x = X + u (the kernel of K_M(u)).
     Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> x = assembler.local_coordinates();

@@ -117,7 +117,7 @@ AssemblyDomain whole_mesh_domain(const mesh::HexMesh& mesh)
 Assembler::Assembler(const mesh::HexMesh& mesh, AssemblyDomain domain,
                      std::vector<Material> body_materials, Kinematics kinematics)
     : _mesh(mesh), _domain(std::move(domain)), _materials(std::move(body_materials)),
-      _kinematics(kinematics)
+      _kinematics(kinematics), _pattern(block_pattern(node_adjacency(_domain)))
 {
   FETICON_CHECK(static_cast<int32_t>(_materials.size()) >= mesh.n_bodies(),
                 "the mesh has " << mesh.n_bodies() << " bodies but " << _materials.size()
@@ -126,7 +126,6 @@ Assembler::Assembler(const mesh::HexMesh& mesh, AssemblyDomain domain,
     _materials[b].check("material of body '" +
                         (b < mesh.body_names.size() ? mesh.body_names[b] : std::to_string(b)) +
                         "'");
-  _pattern = block_pattern(node_adjacency(_domain));
 }
 
 void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatrix* K,
