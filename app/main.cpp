@@ -8,6 +8,7 @@
 #include "par/communicator.hpp"
 
 #include <cstdio>
+#include <malloc.h>
 #include <iostream>
 #include <string>
 #include <unistd.h>
@@ -58,10 +59,22 @@ int fail(const char* raw, int code)
   [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, line.data(), line.size());
   world.abort(code);
 }
+
+/// Freed memory stays with the allocator for the next allocation of its size. By default
+/// glibc maps blocks over 128 KiB (adapting up to 32 MiB) afresh and unmaps them on free, and
+/// every page of the next one faults in again: the stiffness copies, factor workspaces and
+/// dense blocks of each outer iteration. Page faults are dear on virtual machines (Hertz 240
+/// across, large: 1.265 -> 1.213 s, medians of 15; peak memory within 3 %).
+void keep_freed_memory()
+{
+  mallopt(M_MMAP_THRESHOLD, 32 << 20); // glibc's largest; bigger blocks are still mapped
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+}
 } // namespace
 
 int main(int argc, char** argv)
 {
+  keep_freed_memory();
   feticon::par::Environment mpi(argc, argv);
   feticon::log::set_rank(feticon::par::Communicator::world().rank());
   CLI::App app{"feticon: frictionless contact of elastic bodies with large displacements "
