@@ -61,8 +61,9 @@ public:
   /// The values of owned subdomain s's rows (rows_of_subdomain) from an extended vector.
   la::Vector rows_of(int32_t s, const la::Vector& extended) const;
   /// The owned result sum over s of local(s), where local(s) holds one value per row of owned
-  /// subdomain s, summed per row in increasing subdomain order across ranks.
-  la::Vector sum_contributions(const std::function<la::Vector(int32_t)>& local) const;
+  /// subdomain s, summed per row in increasing subdomain order across ranks. `work`: the cost
+  /// of all local(s) in parallel_for's units, which decides whether they run on the threads.
+  la::Vector sum_contributions(const std::function<la::Vector(int32_t)>& local, int64_t work) const;
 
 private:
   const decomposition::Decomposition& _decomp;

@@ -98,7 +98,7 @@ private:
   /// _B_boundary for the dense boundary operators): the pattern of F and the preconditioners.
   template <class LocalOperator>
   la::Vector sum_over_subdomains(const std::vector<la::SparseMatrix>& blocks, const la::Vector& lambda,
-                                 LocalOperator&& local_op) const;
+                                 int64_t work, LocalOperator&& local_op) const;
 
   const decomposition::SubdomainSystem& _system;
   DualLayout _layout;
@@ -108,6 +108,7 @@ private:
   std::vector<la::Matrix> _BR;
   const decomposition::ExplicitBoundaryOperators* _explicit = nullptr;
   std::vector<la::SparseMatrix> _B_boundary; ///< per owned subdomain: B_s on the columns b_s
+  int64_t _explicit_work = 0;                ///< one product with the dense blocks, in parallel_for's units
   /// For G G': per neighbour rank (the layout's neighbour_ranks), (kept row, owned subdomain)
   /// pairs whose B_s R_s rows are sent, and the number of values received.
   std::vector<std::vector<std::pair<int64_t, int32_t>>> _share_send;
