@@ -108,6 +108,10 @@ private:
   std::vector<la::Matrix> _BR;
   const decomposition::ExplicitBoundaryOperators* _explicit = nullptr;
   std::vector<la::SparseMatrix> _B_boundary; ///< per owned subdomain: B_s on the columns b_s
+  /// Nonzeros of the subdomain factors per unit of parallel_for's work (its DOFs): the
+  /// plane-strain Hertz and punch meshes have 45-65 per DOF, where min_parallel_work was measured.
+  static constexpr int64_t factor_nonzeros_per_work_unit = 50;
+  int64_t _implicit_work = 0;                ///< one substitution with every owned factor, in parallel_for's units
   int64_t _explicit_work = 0;                ///< one product with the dense blocks, in parallel_for's units
   /// For G G': per neighbour rank (the layout's neighbour_ranks), (kept row, owned subdomain)
   /// pairs whose B_s R_s rows are sent, and the number of values received.
