@@ -4,6 +4,7 @@
 
 #include "common/error.hpp"
 #include "la/schur_complement.hpp"
+#include "tests/support/dense_schur.hpp"
 
 #include <gtest/gtest.h>
 
@@ -43,20 +44,6 @@ la::SparseMatrix grid_laplacian(int n, double contrast, double mass)
   return A;
 }
 
-la::Matrix dense_schur(const la::SparseMatrix& A, const std::vector<int32_t>& boundary)
-{
-  std::vector<char> on(A.rows(), 0);
-  for (int32_t b : boundary)
-    on[b] = 1;
-  std::vector<int32_t> interior;
-  for (int32_t k = 0; k < A.rows(); ++k)
-    if (!on[k])
-      interior.push_back(k);
-  const la::Matrix D(A);
-  const la::Matrix A_bb = D(boundary, boundary), A_ib = D(interior, boundary), A_ii = D(interior, interior);
-  return A_bb - A_ib.transpose() * A_ii.llt().solve(A_ib);
-}
-
 /// The grid's outer ring of nodes, in a scrambled order (the result follows the given order).
 std::vector<int32_t> ring(int n)
 {
@@ -76,7 +63,7 @@ TEST(SchurComplement, MatchesDenseEliminationOnAGradedMatrix)
   const la::SparseMatrix A = grid_laplacian(24, 1e4, 1e-3);
   const auto b = ring(24);
   const la::Matrix S = la::schur_complement(A, b, "graded grid");
-  const la::Matrix S_ref = dense_schur(A, b);
+  const la::Matrix S_ref = test::dense_schur(la::Matrix(A), b);
   ASSERT_EQ(S.rows(), static_cast<la::Index>(b.size()));
   EXPECT_LT((S - S_ref).norm() / S_ref.norm(), 1e-12);
   EXPECT_LT((S - S.transpose()).norm() / S.norm(), 1e-15);
@@ -88,7 +75,7 @@ TEST(SchurComplement, SingularMatrixKeepsItsKernel)
   const la::SparseMatrix A = grid_laplacian(20, 1e3, 0);
   const auto b = ring(20);
   const la::Matrix S = la::schur_complement(A, b, "Neumann grid");
-  const la::Matrix S_ref = dense_schur(A, b);
+  const la::Matrix S_ref = test::dense_schur(la::Matrix(A), b);
   EXPECT_LT((S - S_ref).norm() / S_ref.norm(), 1e-12);
   EXPECT_LT((S * la::Vector::Ones(S.cols())).norm() / S.norm(), 1e-12);
 }
