@@ -33,7 +33,7 @@ la::SparseMatrix block(const la::SparseMatrix& A, const std::vector<int32_t>& ro
 
 SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vector<char>& boundary_node,
                                    bool factorize_interior)
-    : _system(system), _factorized(factorize_interior)
+    : _system(system)
 {
   const Decomposition& decomp = system.decomposition();
   _local.resize(decomp.end_owned() - decomp.first_owned());
@@ -47,9 +47,20 @@ SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vec
       const bool on_boundary = boundary_node[node] || decomp.copies(node).size() > 1;
       (on_boundary ? local.boundary : local.interior).push_back(dof);
     }
-    if (!factorize_interior)
-      return;
-    const la::SparseMatrix& K = system.operators(s).K;
+  });
+  if (factorize_interior)
+    this->factorize_interior();
+}
+
+void SchurComplements::factorize_interior()
+{
+  if (_factorized)
+    return;
+  const Decomposition& decomp = _system.decomposition();
+  parallel_for(decomp.first_owned(), decomp.end_owned(), setup_work, [&](int32_t s)
+  {
+    Local& local = _local[s - decomp.first_owned()];
+    const la::SparseMatrix& K = _system.operators(s).K;
     local.K_bb = block(K, local.boundary, local.boundary);
     local.K_ib = block(K, local.interior, local.boundary);
     if (!local.interior.empty())
@@ -62,6 +73,7 @@ SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vec
                            what.c_str());
     }
   });
+  _factorized = true;
 }
 
 la::Vector SchurComplements::apply(int32_t s, const la::Vector& v) const

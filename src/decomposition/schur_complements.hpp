@@ -35,6 +35,9 @@ public:
   SchurComplements(const SubdomainSystem& system, const std::vector<char>& boundary_node,
                    bool factorize_interior = true);
 
+  /// Factorizes K_ii of the owned subdomains (once; the boundaries stay as found), for apply().
+  void factorize_interior();
+
   /// [0; S_s v_b] for a vector v over the active DOFs of owned subdomain s (its interior
   /// entries are ignored).
   la::Vector apply(int32_t s, const la::Vector& v) const;

@@ -246,7 +246,7 @@ void FetiContactSolve::update_stiffness()
   if (_schur && !use_explicit)
   {
     ScopedTimer t(_timers, "preconditioner setup"); // K_ii factorizations for the implicit S_s
-    _schur = std::make_unique<decomposition::SchurComplements>(*_system, _schur_boundary, true);
+    _schur->factorize_interior();
   }
   _out.dual_operator = use_explicit ? "explicit" : "implicit";
   _out.dual_operator_reason = reason;
