@@ -226,6 +226,14 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
     smalbe.beta = options.smalbe_beta;
     smalbe.max_inner_iterations = options.max_iterations;
     smalbe.mprgp = mprgp;
+    if (options.feasibility_tolerance > 0)
+    {
+      // x = mu (force units: b and H carry the same scale), so G mu = G lambda - e, and the
+      // weights turn it into the subdomains' net forces (FetiOperators::net_force_weights).
+      smalbe.equality_error = [&projector, w = feti.net_force_weights()](const la::Vector& Cx)
+      { return projector.from_tilde(Cx).cwiseProduct(w).norm(); };
+      smalbe.equality_tolerance = options.feasibility_tolerance;
+    }
     qp::Smalbe solver(H, C, smalbe, timed_preconditioner ? &*timed_preconditioner : nullptr);
     // The multiplier of G~ mu = 0 in the scaled dual is scale times the unscaled one.
     std::optional<qp::SmalbeStart> start;

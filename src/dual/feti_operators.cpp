@@ -145,6 +145,19 @@ la::Vector FetiOperators::apply_Rt(const la::Vector& u) const
   return gather_coarse(comm(), local);
 }
 
+la::Vector FetiOperators::net_force_weights() const
+{
+  const auto& decomp = _system.decomposition();
+  std::vector<double> local;
+  for (int32_t s = decomp.first_owned(); s < decomp.end_owned(); ++s)
+  {
+    const la::Matrix& R = _system.operators(s).R;
+    for (la::Index j = 0; j < R.cols(); ++j)
+      local.push_back(1.0 / R.col(j).cwiseAbs().maxCoeff());
+  }
+  return gather_coarse(comm(), local);
+}
+
 void FetiOperators::use_explicit(const decomposition::ExplicitBoundaryOperators& ops)
 {
   const auto& decomp = _system.decomposition();

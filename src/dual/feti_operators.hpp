@@ -57,6 +57,12 @@ public:
   la::Vector apply_K_plus(const la::Vector& f_stacked) const;
   /// R alpha for the replicated coarse vector alpha (owned stacked result).
   la::Vector apply_R(const la::Vector& alpha) const;
+  /// Per kernel row j of subdomain s, 1 / max_i |R_s(i, j)| (replicated): w_j (R_s' y)_j is
+  /// the net force of y along a translation (R_j is 1/sqrt(n) on one component) and its net
+  /// moment over the largest lever arm along a rotation, i.e. about the force that K_s K_s^+
+  /// leaves on the fixing nodes when R_s' y != 0 (the orthonormal R alone would understate
+  /// it by about the square root of the subdomain's nodes).
+  la::Vector net_force_weights() const;
   /// R' u, replicated on every rank.
   la::Vector apply_Rt(const la::Vector& u_stacked) const;
   /// F lambda = B K+ B' lambda.

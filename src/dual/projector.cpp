@@ -61,6 +61,11 @@ la::Vector CoarseProjector::apply_G_tilde_t(const la::Vector& omega) const
   return apply_Gt(coarse_multiplier(omega));
 }
 
+la::Vector CoarseProjector::from_tilde(const la::Vector& g_tilde_lambda) const
+{
+  return _llt.permutationPinv() * la::Vector(_llt.matrixL() * g_tilde_lambda);
+}
+
 la::Vector CoarseProjector::coarse_multiplier(const la::Vector& omega) const
 {
   return _llt.permutationPinv() * la::Vector(_llt.matrixU().solve(omega));

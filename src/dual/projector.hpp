@@ -37,6 +37,9 @@ public:
   /// carries over to a projector of changed G), and omega = L' P_o beta back.
   la::Vector coarse_multiplier(const la::Vector& omega) const;
   la::Vector tilde_multiplier(const la::Vector& beta) const;
+  /// G lambda from G~ lambda: P_o' L (G~ lambda), e.g. ||G mu|| in force units from SMALBE-M's
+  /// ||C x|| without applying G again.
+  la::Vector from_tilde(const la::Vector& g_tilde_lambda) const;
   /// (G G')^{-1} y.
   la::Vector coarse_solve(const la::Vector& y) const;
   /// Minimal-norm solution of G lambda = e: G'(GG')^{-1} e.

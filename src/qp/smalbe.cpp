@@ -88,11 +88,17 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
   SmalbeReport report;
   bool final_test = false;
 
+  auto feasible = [&](const la::Vector& Cx)
+  {
+    return Cx.norm() <= tolerance &&
+           (!_options.equality_error || _options.equality_error(Cx) <= _options.equality_tolerance);
+  };
   MprgpOptions inner = _options.mprgp;
   inner.stop = [&](const la::Vector& xk, const la::Vector&, double gp)
   {
-    const double cx = _C.apply(xk).norm();
-    final_test = gp <= tolerance && cx <= tolerance;
+    const la::Vector Cx = _C.apply(xk);
+    const double cx = Cx.norm();
+    final_test = gp <= tolerance && feasible(Cx);
     return final_test || gp <= std::min(M * cx, eta);
   };
   PlusCoarseTerm H(_A, _C, rho);
@@ -154,10 +160,11 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
     const double L = r.cost;
     if (_options.monitor)
       _options.monitor({k, &x, &omega, M, rho, L});
-    if (r.projected_gradient_norm <= tolerance && feasibility <= tolerance)
+    if (r.projected_gradient_norm <= tolerance && feasible(Cx))
     {
       report.converged = true;
-      report.reason = "||g_P|| and ||Cx|| <= rtol ||b||";
+      report.reason = _options.equality_error ? "||g_P||, ||Cx|| <= rtol ||b|| and the equality error <= its tolerance"
+                                              : "||g_P|| and ||Cx|| <= rtol ||b||";
       break;
     }
     omega += rho * Cx;

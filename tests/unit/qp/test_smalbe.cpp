@@ -138,6 +138,36 @@ TEST(Smalbe, MatchesAnIndependentSolveOfBoundAndEqualityConstraints)
   }
 }
 
+// The caller's own feasibility measure (SmalbeOptions::equality_error): with a loose rtol the
+// ||Cx|| <= rtol ||b|| test passes with ||Cx|| far above a tolerance the caller states in its
+// own units (here ||W Cx||, W = diag(1..m), as FETI weighs G mu by the subdomains' net-force
+// weights); with equality_error set, SMALBE-M goes on until that holds too, and the answer
+// moves towards the independent solve's.
+TEST(Smalbe, MeetsTheCallersEqualityToleranceBeyondRtol)
+{
+  const Augmented p(make_qp(24, 4, 2));
+  const Reference reference = reference_solve(p.qp);
+  const la::Vector weights = la::Vector::LinSpaced(4, 1.0, 4.0);
+  auto weighted = [&](const la::Vector& Cx) { return Cx.cwiseProduct(weights).norm(); };
+  SmalbeOptions loose = options(p.rho);
+  loose.rtol = 1e-3;
+  la::Vector x_loose = la::Vector::Zero(24);
+  const SmalbeReport r_loose = Smalbe(p.Aop, p.C, loose).solve(p.qp.b, p.qp.lower, x_loose);
+  ASSERT_TRUE(r_loose.converged) << r_loose.reason;
+  const double tolerance = 1e-3 * weighted(p.qp.C * x_loose);
+  ASSERT_GT(tolerance, 0) << "the loose solve should leave Cx != 0, or the test shows nothing";
+
+  SmalbeOptions strict = loose;
+  strict.equality_error = weighted;
+  strict.equality_tolerance = tolerance;
+  la::Vector x = la::Vector::Zero(24);
+  const SmalbeReport r = Smalbe(p.Aop, p.C, strict).solve(p.qp.b, p.qp.lower, x);
+  ASSERT_TRUE(r.converged) << r.reason;
+  EXPECT_LE(weighted(p.qp.C * x), tolerance);
+  EXPECT_GT(r.outer_iterations, r_loose.outer_iterations);
+  EXPECT_LT((x - reference.x).norm(), (x_loose - reference.x).norm());
+}
+
 TEST(Smalbe, UpdatesOmegaAndMAsInAlgorithmsSection1)
 {
   const Augmented p(make_qp(24, 4, 7));
