@@ -5,6 +5,7 @@
 #include <Eigen/CholmodSupport>
 
 #include <algorithm>
+#include <mutex>
 
 namespace feticon::la
 {
@@ -25,7 +26,18 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what)
   _impl = std::make_unique<Impl>();
   // CHOLMOD picks simplicial (small subdomains: no BLAS call overhead) or supernodal.
   _impl->solver.setMode(Eigen::CholmodAuto);
-  _impl->solver.compute(A);
+  {
+    // One analysis at a time: CHOLMOD's default ordering also tries METIS when AMD fills in
+    // much (3D subdomains), and METIS keeps its random generator in a global; two threads
+    // ordering at once drew from it in a timing-dependent order, so the orderings, and with
+    // them the round-off of every later step, changed from run to run (hertz3d at 97k DOFs:
+    // three runs, three peak pressures differing in the 7th digit). The numeric
+    // factorization, most of the time, stays on the threads.
+    static std::mutex analysis;
+    const std::lock_guard lock(analysis);
+    _impl->solver.analyzePattern(A);
+  }
+  _impl->solver.factorize(A);
   if (_impl->solver.info() != Eigen::Success)
   {
     _impl.reset();
