@@ -49,8 +49,9 @@ struct DualPenaltyOptions
   double rho;                 ///< dimensionless penalty (after scaling by ||PFP||)
   double rtol;                ///< QP tolerance on ||g_P|| (and ||G~ mu||) relative to ||b^||
   int max_iterations;         ///< MPRGP steps in total
-  /// If > 0 (SMALBE-M): the solve also needs ||G lambda - e|| <= feasibility_tolerance, in
-  /// force units (the outer loop's residual tolerance; qp::SmalbeOptions::equality_error).
+  /// If > 0 (SMALBE-M): the solve also needs the subdomains' net forces
+  /// ||W (G lambda - e)|| <= feasibility_tolerance (N; W = FetiOperators::net_force_weights),
+  /// which the outer loop derives from its residual tolerance (qp::SmalbeOptions::equality_error).
   double feasibility_tolerance = 0;
   int power_iterations = 30;  ///< for ||PFP||
   DualPreconditioner preconditioner;
