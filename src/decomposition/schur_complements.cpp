@@ -8,29 +8,6 @@
 
 namespace feticon::decomposition
 {
-namespace
-{
-/// Rows `rows` and columns `cols` of A (both increasing index lists).
-la::SparseMatrix block(const la::SparseMatrix& A, const std::vector<int32_t>& rows,
-                       const std::vector<int32_t>& cols)
-{
-  std::vector<int32_t> row_position(A.rows(), -1), col_position(A.cols(), -1);
-  for (size_t k = 0; k < rows.size(); ++k)
-    row_position[rows[k]] = static_cast<int32_t>(k);
-  for (size_t k = 0; k < cols.size(); ++k)
-    col_position[cols[k]] = static_cast<int32_t>(k);
-  std::vector<la::Triplet> triplets;
-  for (int j = 0; j < A.outerSize(); ++j)
-    if (col_position[j] >= 0)
-      for (la::SparseMatrix::InnerIterator it(A, j); it; ++it)
-        if (row_position[it.row()] >= 0)
-          triplets.emplace_back(row_position[it.row()], col_position[j], it.value());
-  la::SparseMatrix out(static_cast<la::Index>(rows.size()), static_cast<la::Index>(cols.size()));
-  out.setFromTriplets(triplets.begin(), triplets.end());
-  return out;
-}
-} // namespace
-
 SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vector<char>& boundary_node,
                                    bool factorize_interior)
     : _system(system)
@@ -61,14 +38,15 @@ void SchurComplements::factorize_interior()
   {
     Local& local = _local[s - decomp.first_owned()];
     const la::SparseMatrix& K = _system.operators(s).K;
-    local.K_bb = block(K, local.boundary, local.boundary);
-    local.K_ib = block(K, local.interior, local.boundary);
+    local.K_bb = la::symmetric_block(K, local.boundary, local.boundary);
+    local.K_ib = la::symmetric_block(K, local.interior, local.boundary);
     if (!local.interior.empty())
     {
       std::vector<int32_t> position(K.rows(), -1);
       for (size_t k = 0; k < local.interior.size(); ++k)
         position[local.interior[k]] = static_cast<int32_t>(k);
       const std::string what = "the interior stiffness K_ii of subdomain " + std::to_string(s);
+      // Interior DOFs in increasing order: the lower triangle of K_ii, which CHOLMOD reads.
       local.K_ii.factorize(la::principal_submatrix(K, position, static_cast<int32_t>(local.interior.size())),
                            what.c_str());
     }

@@ -43,11 +43,12 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
     const fem::Assembler& assembler = *_assemblers[sub.id];
     const la::Vector u_full = full_local(sub.id, u_stacked);
     const la::SparseMatrix K_full = assembler.stiffness(u_full, fem::StiffnessKind::material);
-    // Restrict to active DOFs (plane strain eliminates z).
+    // Restrict to active DOFs (plane strain eliminates z); keep the lower triangle.
     SubdomainOperators& op = _operators[sub.id];
     // Swapped in: Eigen 3.4's SparseMatrix has no move assignment, and a copy of K costs
     // page faults on fresh memory.
-    la::SparseMatrix K_active = la::principal_submatrix(K_full, sub.active_of_full, sub.n_dofs());
+    la::SparseMatrix K_active =
+        la::principal_submatrix(K_full, sub.active_of_full, sub.n_dofs(), la::Entries::lower_triangle);
     op.K.swap(K_active);
 
     // Kernel from the current coordinates x = X + u (the kernel of K_M(u)).

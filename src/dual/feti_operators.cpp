@@ -207,7 +207,7 @@ la::Vector FetiOperators::apply_F(const la::Vector& lambda) const
 la::Vector FetiOperators::apply_lumped(const la::Vector& lambda) const
 {
   return sum_over_subdomains(_B, lambda, n_primal(), [this](int32_t s, const la::Vector& v)
-                             { return la::Vector(_system.operators(s).K * v); });
+                             { return la::Vector(_system.operators(s).K.selfadjointView<Eigen::Lower>() * v); });
 }
 
 la::Vector FetiOperators::apply_dirichlet(const la::Vector& lambda,

@@ -3,49 +3,59 @@
 #include "common/error.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace feticon::fem
 {
 namespace
 {
-/// Node-node adjacency of the cells in local numbering, sorted and unique per node.
-std::vector<std::vector<int32_t>> node_adjacency(const AssemblyDomain& domain)
+/// Node-node adjacency of the cells in local numbering, sorted and unique per node, in
+/// compressed form: the neighbours of node n are neighbours[offsets[n], offsets[n + 1]).
+NodeAdjacency node_adjacency(const AssemblyDomain& domain)
 {
-  std::vector<std::vector<int32_t>> adjacency(domain.n_nodes());
+  std::vector<std::vector<int32_t>> lists(domain.n_nodes());
   for (const auto& cell : domain.cell_nodes)
     for (int32_t a : cell)
       for (int32_t b : cell)
-        adjacency[a].push_back(b);
-  for (auto& list : adjacency)
+        lists[a].push_back(b);
+  NodeAdjacency adjacency;
+  adjacency.offsets.reserve(lists.size() + 1);
+  adjacency.offsets.push_back(0);
+  for (auto& list : lists)
   {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
+    adjacency.neighbours.insert(adjacency.neighbours.end(), list.begin(), list.end());
+    adjacency.offsets.push_back(static_cast<int64_t>(adjacency.neighbours.size()));
+    std::vector<int32_t>().swap(list);
   }
-  return adjacency;
-}
-
-/// CSC pattern where column 3n+j holds rows 3m+i for every neighbour m of n.
-la::SparseMatrix block_pattern(const std::vector<std::vector<int32_t>>& adjacency)
-{
-  const int64_t n_dofs = 3 * static_cast<int64_t>(adjacency.size());
-  int64_t nnz = 0;
-  for (const auto& list : adjacency)
-    nnz += 9 * static_cast<int64_t>(list.size());
+  adjacency.neighbours.shrink_to_fit();
+  const int64_t nnz = 9 * static_cast<int64_t>(adjacency.neighbours.size());
   FETICON_CHECK(nnz < std::numeric_limits<int>::max(),
                 "stiffness has " << nnz << " nonzeros, more than 32-bit indices allow; "
                                  << "use more subdomains");
+  return adjacency;
+}
+
+/// Zero matrix with the CSC pattern where column 3n+j holds rows 3m+i for every neighbour
+/// m of n.
+la::SparseMatrix block_pattern(const NodeAdjacency& adjacency)
+{
+  const int64_t n_nodes = static_cast<int64_t>(adjacency.offsets.size()) - 1;
+  const int64_t n_dofs = 3 * n_nodes;
+  const int64_t nnz = 9 * static_cast<int64_t>(adjacency.neighbours.size());
   la::SparseMatrix K(n_dofs, n_dofs);
   K.resizeNonZeros(nnz);
   int* outer = K.outerIndexPtr();
   int* inner = K.innerIndexPtr();
   int64_t pos = 0;
-  for (size_t n = 0; n < adjacency.size(); ++n)
+  for (int64_t n = 0; n < n_nodes; ++n)
     for (int j = 0; j < 3; ++j)
     {
       outer[3 * n + j] = static_cast<int>(pos);
-      for (int32_t m : adjacency[n])
+      for (int64_t k = adjacency.offsets[n]; k < adjacency.offsets[n + 1]; ++k)
         for (int i = 0; i < 3; ++i)
-          inner[pos++] = 3 * m + i;
+          inner[pos++] = 3 * adjacency.neighbours[k] + i;
     }
   outer[n_dofs] = static_cast<int>(pos);
   std::fill(K.valuePtr(), K.valuePtr() + nnz, 0.0);
@@ -117,7 +127,7 @@ AssemblyDomain whole_mesh_domain(const mesh::HexMesh& mesh)
 Assembler::Assembler(const mesh::HexMesh& mesh, AssemblyDomain domain,
                      std::vector<Material> body_materials, Kinematics kinematics)
     : _mesh(mesh), _domain(std::move(domain)), _materials(std::move(body_materials)),
-      _kinematics(kinematics), _pattern(block_pattern(node_adjacency(_domain)))
+      _kinematics(kinematics), _adjacency(node_adjacency(_domain))
 {
   FETICON_CHECK(static_cast<int32_t>(_materials.size()) >= mesh.n_bodies(),
                 "the mesh has " << mesh.n_bodies() << " bodies but " << _materials.size()
@@ -135,7 +145,10 @@ void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatr
                                                                   << " entries, expected "
                                                                   << _domain.n_dofs());
   if (K)
-    *K = _pattern;
+  {
+    la::SparseMatrix pattern = block_pattern(_adjacency);
+    K->swap(pattern);
+  }
   if (f_int)
     f_int->setZero(_domain.n_dofs());
   const StiffnessKind element_kind = K ? kind : StiffnessKind::none;

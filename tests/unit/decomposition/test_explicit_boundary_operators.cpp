@@ -66,7 +66,7 @@ void check_blocks(GeneralizedInverseMethod method, bool whole_surface_on_boundar
     const auto& b = ops.boundary(s);
     const la::Index nb = static_cast<la::Index>(b.size());
     const auto& op = system.operators(s);
-    const la::Matrix K(op.K);
+    const la::Matrix K(la::SparseMatrix(op.K.selfadjointView<Eigen::Lower>())); // op.K: lower triangle
     // Reference (K+)_bb: K+ applied to the unit vectors of b, by the implicit factorization.
     la::Matrix E = la::Matrix::Zero(K.rows(), nb);
     for (la::Index k = 0; k < nb; ++k)
