@@ -27,7 +27,7 @@ std::string gib(double bytes)
 } // namespace
 
 MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdomains, int ranks,
-                                   bool explicit_blocks)
+                                   bool explicit_blocks, bool interior_factors)
 {
   MemoryEstimate out;
   out.nodes = nodes;
@@ -35,11 +35,13 @@ MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdoma
   ranks = std::max(1, ranks);
   const double dofs = 3.0 * static_cast<double>(nodes);
   const double per_subdomain = dofs / out.subdomains;
-  // Bytes per DOF fitted to the peaks of docs/benchmarks.md (without the explicit blocks):
-  // plane strain 1.5-3.0 KB at 1.5k-40k DOFs per subdomain, 3D 7.8 / 9.5 / 13.7 KB at
-  // 4.2k / 12k / 41k; the factor of a subdomain grows like n log n (2D) and n^(4/3) (3D).
-  const double per_dof = plane_strain ? 2000 + 100 * std::log2(std::max(2.0, per_subdomain))
-                                      : 2200 + 330 * std::cbrt(per_subdomain);
+  // Bytes per DOF fitted to the peaks of docs/benchmarks.md (without the explicit blocks);
+  // the factor of a subdomain grows like n log n (2D) and n^(4/3) (3D). Plane strain 1.3-2.3 KB
+  // at 1.5k-4k DOFs per subdomain; 3D with the K_ii factors 4.7 / 7.8 / 8.7 KB at 1.5k / 12k /
+  // 14k, without them (lumped) 3.8 / 4.1 / 4.7 KB at 1.8k / 2.4k / 3.6k (hertz3d, 97k and 924k DOFs).
+  const double factors = interior_factors ? 1.0 : 0.73;
+  const double per_dof = plane_strain ? 1200 + 100 * std::log2(std::max(2.0, per_subdomain)) * factors
+                                      : 1000 + 315 * std::cbrt(per_subdomain) * factors;
   double data = dofs * per_dof;
   if (explicit_blocks)
   {
@@ -110,8 +112,11 @@ MemoryEstimate guard_memory(const io::Settings& settings, int64_t nodes, bool pl
   const int cells_per_subdomain = settings.integer("subdomain_cells");
   if (cells_per_subdomain > 0) // about as many cells as nodes (half in a plane-strain layer)
     subdomains = static_cast<int>(std::max<int64_t>(1, (plane_strain ? nodes / 2 : nodes) / cells_per_subdomain));
+  const bool explicit_blocks = settings.text("dual.operator") == "explicit";
+  // auto decides after the mesh is built: counted with the K_ii factors, the larger case.
+  const bool interior_factors = settings.text("qp.preconditioner") == "dirichlet" && !explicit_blocks;
   const MemoryEstimate estimate =
-      estimate_run_memory(nodes, plane_strain, subdomains, ranks, settings.text("dual.operator") == "explicit");
+      estimate_run_memory(nodes, plane_strain, subdomains, ranks, explicit_blocks, interior_factors);
   check_fits(estimate, memory_budget(settings), what);
   return estimate;
 }

@@ -31,9 +31,10 @@ struct MemoryBudget
 };
 
 /// Peak memory of a solve of a mesh with `nodes` nodes (plane strain: one cell layer) in
-/// `subdomains` subdomains on `ranks` ranks; `explicit_blocks` adds the dense boundary blocks.
+/// `subdomains` subdomains on `ranks` ranks; `explicit_blocks` adds the dense boundary blocks,
+/// `interior_factors` the K_ii factors of the implicit Dirichlet preconditioner.
 MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdomains, int ranks,
-                                   bool explicit_blocks);
+                                   bool explicit_blocks, bool interior_factors);
 
 /// Peak memory of building a mesh of `nodes` nodes and writing it (feticon export).
 MemoryEstimate estimate_mesh_memory(int64_t nodes);
