@@ -26,7 +26,8 @@
 /// smallest |g| is kept (first face id on ties); faces having the slave node as a corner are
 /// skipped. Candidates are visited by increasing distance to their un-inflated box and the visit
 /// stops once that distance exceeds the best |g|, which cannot change the result since
-/// |g| = |x_s - x(xi_bar)| >= box distance. A row is created only if g < d_s.
+/// |g| = |x_s - x(xi_bar)| >= box distance. A row is created only if g < d_s (automatic d_s:
+/// only if g is below the diagonal of the node's master face, see below).
 ///
 /// Outside every face. If no candidate projection is accepted, the node lies either in the "blind
 /// spot" next to a convex master edge, or beyond the rim (boundary) of the master surface. The
@@ -51,9 +52,13 @@
 /// rim gets a row only if its projection on f lies within the rim extension.
 ///
 /// Automatic search distance (options.search_distance = 0): the largest diagonal of the master
-/// faces in the current configuration, i.e. one master element: any slave node within one element
-/// of the master surface gets a row (a closed or nearly closed contact is never missed), at the
-/// price of inactive rows for the nodes of that band.
+/// faces in the current configuration finds the candidate faces, and a slave node gets a row
+/// when g is below the longer diagonal of the face it projects onto, i.e. within one master
+/// element there: a closed or nearly closed contact is never missed, and a node that closes a
+/// larger gap during an outer iteration has a row in the next one (its gap is then negative).
+/// The largest diagonal alone, a far and coarse element of a graded master surface, gave rows
+/// that are never active but share DOFs with gluing rows and so enter the preconditioner's
+/// (B B')^-1 scaling (docs/contact.md, "Contact rows within one master element").
 ///
 /// Usage (rebuild in the current configuration at every outer iteration, section 8):
 ///   const ContactPair pair{.slave = "cylinder_contact", .master = "block_contact"};
@@ -93,7 +98,8 @@ enum class ContactFormulation : uint8_t
 struct ContactOptions
 {
   /// Search distance d_s (m): candidate faces are those whose box inflated by d_s contains the
-  /// slave node, and a row is created only for g < d_s. 0 = automatic (see file comment); >= 0.
+  /// slave node, and a row is created only for g < d_s. 0 = automatic (see file comment: then
+  /// the row test is g < diagonal of the node's master face); >= 0.
   double search_distance = 0;
   /// Rim extension (reference coordinates, >= 0): a node beyond the boundary of the master
   /// surface still gets a row on the nearest face if its projection there has
@@ -154,6 +160,9 @@ struct ContactConstraints
 /// @param[in] u global displacement (3 per node), or empty for u = 0
 QuadCoordinates current_face_coordinates(const mesh::HexMesh& mesh, const la::Vector& u,
                                          const mesh::Face& face);
+
+/// @brief The longer diagonal of a face (m): the row distance of the automatic search.
+double face_diagonal(const QuadCoordinates& quad);
 
 /// @brief Largest diagonal of the faces of `faces` in the current configuration (m): the
 /// automatic search distance.
