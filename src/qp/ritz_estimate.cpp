@@ -42,8 +42,8 @@ RitzValues RitzEstimate::longest_run()
     }
   }
   // The dense solver, not computeFromTridiagonal: Eigen 3.4's tridiagonal QR reported no
-  // convergence on a 53-step run whose dense eigenvalues are [1.00007, 66.68] (Hertz with
-  // deluxe weights); k is at most a few hundred.
+  // convergence on a 53-step run of a Hertz QP whose dense eigenvalues are [1.00007, 66.68],
+  // and the estimate went missing; k is at most a few hundred.
   Eigen::MatrixXd T = Eigen::MatrixXd::Zero(k, k);
   T.diagonal() = diagonal;
   T.diagonal(1) = off_diagonal;

@@ -61,8 +61,9 @@ la::Index row_of(const ContactConstraints& rows, int32_t s)
 
 /// Every slave node with an accepted projection somewhere has a row exactly when the brute-force
 /// gap is below the diagonal of the brute-force face (the automatic row distance), and then the
-/// same face, xi and gap (bit for bit: the same projections, the minimum taken in the same order). A node without any accepted projection may only have a rim
-/// row: its projection on the row's face lies just outside, within the rim extension.
+/// same face, xi and gap (bit for bit: the same projections, the minimum taken in the same order).
+/// A node without any accepted projection may only have a rim row: its projection on the row's
+/// face lies just outside, within the rim extension.
 /// Returns the number of rim rows.
 int expect_same_as_brute_force(const mesh::HexMesh& mesh, const la::Vector& u,
                                const ContactConstraints& rows)
@@ -91,7 +92,8 @@ int expect_same_as_brute_force(const mesh::HexMesh& mesh, const la::Vector& u,
       continue;
     }
     const mesh::Face& face = mesh.face_set(hertz_pair.master)[reference.face];
-    EXPECT_EQ(row >= 0, reference.gap < face_diagonal(current_face_coordinates(mesh, u, face))) << "node " << s;
+    EXPECT_EQ(row >= 0, reference.gap < face_diagonal(current_face_coordinates(mesh, u, face)))
+        << "node " << s;
     if (row < 0)
       continue;
     EXPECT_EQ(rows.master_face[row], reference.face) << "node " << s;
