@@ -216,6 +216,8 @@ ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh,
                                               << " m must be >= 0 (0 = automatic)");
   FETICON_CHECK(std::isfinite(options.rim_extension) && options.rim_extension >= 0,
                 "contact: rim_extension = " << options.rim_extension << " must be >= 0");
+  FETICON_CHECK(options.near_contact_fraction > 0,
+                "contact: near_contact_fraction = " << options.near_contact_fraction << " must be > 0");
   FETICON_CHECK(options.mortar_min_overlap > 0 && options.mortar_min_overlap <= 1,
                 "contact: mortar_min_overlap = " << options.mortar_min_overlap
                                                  << " must be in (0, 1]");
@@ -245,33 +247,42 @@ ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh,
   const SurfaceSearch search(std::move(search_boxes));
   const SurfaceBoundary boundary(faces);
 
-  // With the automatic search distance a row is created within one master element of the face
-  // the node projects onto (file comment). The largest diagonal, which still finds the
-  // candidates, gave rows far out on a graded mesh, where the master faces are large: on the
-  // Hertz mesh at refinement 2 (12 METIS subdomains, seed 5) 19 slave nodes out to x = 0.29 m
-  // against a contact half-width of 0.068 m. Never active, such a row still shares DOFs with
-  // gluing rows, and the preconditioner's (B B')^-1 scaling and Schur boundary with it: MPRGP
-  // took 116 steps (condition estimate on the solution face 80.6), 63 (14.1) without; hertz3d
-  // with large displacements 571 steps, 405 without.
-  const auto row_distance = [&](const ClosestPoint& c)
-  { return options.search_distance > 0 ? options.search_distance : face_diagonal(quads[c.face]); };
-  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<std::optional<ClosestPoint>> closest_points(slave_nodes.size());
   std::vector<int32_t> candidates;
-  for (const int32_t s : slave_nodes)
+  double smallest_gap = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < slave_nodes.size(); ++i)
   {
+    const int32_t s = slave_nodes[i];
     Eigen::Vector3d x_s = mesh.nodes.row(s).transpose();
     if (u.size() > 0)
       x_s += u.segment<3>(3 * static_cast<la::Index>(s));
     search.candidates(x_s, candidates);
-    std::optional<ClosestPoint> closest =
-        closest_face_projection(quads, face_boxes, faces, candidates, s, x_s);
+    std::optional<ClosestPoint>& closest = closest_points[i];
+    closest = closest_face_projection(quads, face_boxes, faces, candidates, s, x_s);
     if (!closest && !candidates.empty())
     {
       closest = outside_point(quads, faces, candidates, boundary, s, x_s, options.rim_extension);
       if (!closest)
         ++out.n_overhanging;
     }
-    if (!closest || !(closest->gap < row_distance(*closest)))
+    if (closest)
+      smallest_gap = std::min(smallest_gap, closest->gap);
+  }
+  // Near contact (options.near_contact_fraction): the bodies touch where the gap is at most
+  // the smallest one, or 0 once they touch.
+  const double contact_level = std::max(smallest_gap, 0.0);
+  const auto near_contact = [&](const ClosestPoint& c)
+  {
+    return !(options.near_contact_fraction < std::numeric_limits<double>::infinity()) ||
+           c.gap < contact_level + options.near_contact_fraction * face_diagonal(quads[c.face]);
+  };
+
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (size_t i = 0; i < slave_nodes.size(); ++i)
+  {
+    const int32_t s = slave_nodes[i];
+    const std::optional<ClosestPoint>& closest = closest_points[i];
+    if (!closest || !(closest->gap < out.search_distance) || !near_contact(*closest))
       continue;
 
     const auto row = static_cast<int>(out.slave_node.size());

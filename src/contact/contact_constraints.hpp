@@ -26,8 +26,7 @@
 /// smallest |g| is kept (first face id on ties); faces having the slave node as a corner are
 /// skipped. Candidates are visited by increasing distance to their un-inflated box and the visit
 /// stops once that distance exceeds the best |g|, which cannot change the result since
-/// |g| = |x_s - x(xi_bar)| >= box distance. A row is created only if g < d_s (automatic d_s:
-/// only if g is below the diagonal of the node's master face, see below).
+/// |g| = |x_s - x(xi_bar)| >= box distance. A row is created only if g < d_s.
 ///
 /// Outside every face. If no candidate projection is accepted, the node lies either in the "blind
 /// spot" next to a convex master edge, or beyond the rim (boundary) of the master surface. The
@@ -52,13 +51,19 @@
 /// rim gets a row only if its projection on f lies within the rim extension.
 ///
 /// Automatic search distance (options.search_distance = 0): the largest diagonal of the master
-/// faces in the current configuration finds the candidate faces, and a slave node gets a row
-/// when g is below the longer diagonal of the face it projects onto, i.e. within one master
-/// element there: a closed or nearly closed contact is never missed, and a node that closes a
-/// larger gap during an outer iteration has a row in the next one (its gap is then negative).
-/// The largest diagonal alone, a far and coarse element of a graded master surface, gave rows
-/// that are never active but share DOFs with gluing rows and so enter the preconditioner's
-/// (B B')^-1 scaling (docs/contact.md, "Contact rows within one master element").
+/// faces in the current configuration, i.e. one master element: any slave node within one element
+/// of the master surface gets a row (a closed or nearly closed contact is never missed), at the
+/// price of inactive rows for the nodes of that band.
+///
+/// Near contact (options.near_contact_fraction = f, finite): rows only for the nodes that touch
+/// or nearly touch, g < max(g_min, 0) + f d_face, with g_min the smallest gap of the pair and
+/// d_face the longer diagonal of the node's master face. For loops that rebuild the rows in the
+/// current configuration (the outer loop of large displacements): a node that closes its gap
+/// has g < 0, and so a row, at the next rebuild, and a load step ends only with an unchanged
+/// active set. Bodies apart get rows where they are closest. A single linear solve needs the
+/// rows of every node that can close its gap: f = infinity (default). On the graded Hertz and
+/// hertz3d meshes the one-element band held hundreds of rows that were never active but sit in
+/// G and the preconditioner's (B B')^-1 scaling (docs/contact.md, "Rows near contact").
 ///
 /// Usage (rebuild in the current configuration at every outer iteration, section 8):
 ///   const ContactPair pair{.slave = "cylinder_contact", .master = "block_contact"};
@@ -74,6 +79,7 @@
 #include "mesh/hex_mesh.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -98,8 +104,7 @@ enum class ContactFormulation : uint8_t
 struct ContactOptions
 {
   /// Search distance d_s (m): candidate faces are those whose box inflated by d_s contains the
-  /// slave node, and a row is created only for g < d_s. 0 = automatic (see file comment: then
-  /// the row test is g < diagonal of the node's master face); >= 0.
+  /// slave node, and a row is created only for g < d_s. 0 = automatic (see file comment); >= 0.
   double search_distance = 0;
   /// Rim extension (reference coordinates, >= 0): a node beyond the boundary of the master
   /// surface still gets a row on the nearest face if its projection there has
@@ -112,6 +117,9 @@ struct ContactOptions
   /// overlap; about 0.5 for a node on a straight master rim, 0.25 on a master corner). The
   /// weights M_ja / D_j are divided by o_j (mortar_constraints.hpp), at most 1 / 0.2 = 5 times.
   double mortar_min_overlap = 0.2;
+  /// Rows only for g < max(g_min, 0) + near_contact_fraction * (diagonal of the node's master
+  /// face), see file comment; > 0. Infinity (default): every node within d_s.
+  double near_contact_fraction = std::numeric_limits<double>::infinity();
 };
 
 /// How the closest point of a row (for mortar rows: of its slave node) was found.
@@ -161,7 +169,7 @@ struct ContactConstraints
 QuadCoordinates current_face_coordinates(const mesh::HexMesh& mesh, const la::Vector& u,
                                          const mesh::Face& face);
 
-/// @brief The longer diagonal of a face (m): the row distance of the automatic search.
+/// @brief The longer diagonal of a face (m).
 double face_diagonal(const QuadCoordinates& quad);
 
 /// @brief Largest diagonal of the faces of `faces` in the current configuration (m): the

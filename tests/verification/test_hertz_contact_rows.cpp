@@ -60,10 +60,9 @@ la::Index row_of(const ContactConstraints& rows, int32_t s)
 }
 
 /// Every slave node with an accepted projection somewhere has a row exactly when the brute-force
-/// gap is below the diagonal of the brute-force face (the automatic row distance), and then the
-/// same face, xi and gap (bit for bit: the same projections, the minimum taken in the same order).
-/// A node without any accepted projection may only have a rim row: its projection on the row's
-/// face lies just outside, within the rim extension.
+/// gap is below d_s, and then the same face, xi and gap (bit for bit: the same projections, the
+/// minimum taken in the same order). A node without any accepted projection may only have a rim
+/// row: its projection on the row's face lies just outside, within the rim extension.
 /// Returns the number of rim rows.
 int expect_same_as_brute_force(const mesh::HexMesh& mesh, const la::Vector& u,
                                const ContactConstraints& rows)
@@ -91,9 +90,7 @@ int expect_same_as_brute_force(const mesh::HexMesh& mesh, const la::Vector& u,
       EXPECT_EQ(rows.gap[row], p.gap) << "node " << s;
       continue;
     }
-    const mesh::Face& face = mesh.face_set(hertz_pair.master)[reference.face];
-    EXPECT_EQ(row >= 0, reference.gap < face_diagonal(current_face_coordinates(mesh, u, face)))
-        << "node " << s;
+    EXPECT_EQ(row >= 0, reference.gap < rows.search_distance) << "node " << s;
     if (row < 0)
       continue;
     EXPECT_EQ(rows.master_face[row], reference.face) << "node " << s;
@@ -123,9 +120,7 @@ TEST(HertzContact, GapsEqualAnalyticArcAndBruteForce)
   {
     const double x = mesh.nodes(s, 0);
     const la::Index row = row_of(rows, s);
-    // Twice the contact half-width of the default load (a = 68 mm): the nodes that can come
-    // into contact have rows (the gap there, x^2 / 2R <= 9 mm, is within one master element).
-    if (x <= 0.136)
+    if (x <= 0.3)
     {
       ++n_near;
       ASSERT_GE(row, 0) << "slave node at x = " << x << " has no row";
@@ -138,7 +133,7 @@ TEST(HertzContact, GapsEqualAnalyticArcAndBruteForce)
     EXPECT_NEAR(rows.gap[row], analytic, 1e-12) << "x = " << x;
     EXPECT_NEAR((rows.normal[row] - Eigen::Vector3d(0, 1, 0)).norm(), 0, 1e-15);
   }
-  EXPECT_GT(n_near, 40);
+  EXPECT_GT(n_near, 50);
 }
 
 TEST(HertzContact, SearchTimeAtRefinement4)
@@ -195,7 +190,7 @@ TEST(HertzContact, DeformedConfigurationMatchesBruteForce)
   EXPECT_GT(n_penetrating, 0);
   for (const int32_t s : mesh.face_set_nodes(hertz_pair.slave))
   {
-    if (mesh.nodes(s, 0) <= 0.136) // twice the contact half-width
+    if (mesh.nodes(s, 0) <= 0.3)
     {
       EXPECT_GE(row_of(rows, s), 0) << "slave node at x = " << mesh.nodes(s, 0);
     }

@@ -11,7 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace feticon::contact
 {
@@ -94,6 +96,53 @@ TEST(ContactConstraints, RowsOnlyBelowSearchDistance)
   EXPECT_EQ(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.search_distance = 0.2})
                 .n_rows(),
             16);
+}
+
+TEST(ContactConstraints, NearContactRowsOnlyWhereTheBodiesTouchOrNearlyTouch)
+{
+  // The upper body tilted about the line x = 0, y free: the gap of a slave node is exactly
+  // offset + slope x at x = 0, 1/3, 2/3, 1 (master flat, n = +z), four nodes per column. Master
+  // diagonal sqrt(2) / 4, so f = 0.05 allows 0.0177 above the contact level max(g_min, 0).
+  const mesh::HexMesh mesh = test::stacked_boxes(0);
+  const double allowance = 0.05 * std::sqrt(2.0) / 4;
+  const auto rows_at = [&](double offset, double slope, double fraction)
+  {
+    la::Vector u = la::Vector::Zero(3 * mesh.n_nodes());
+    for (const int32_t node : mesh.node_set("upper_zmin"))
+      u(3 * node + 2) = offset + slope * mesh.nodes(node, 0);
+    const ContactConstraints rows =
+        build_contact_constraints(mesh, u, upper_on_lower, {.near_contact_fraction = fraction});
+    for (la::Index i = 0; i < rows.n_rows(); ++i)
+      EXPECT_NEAR(rows.gap[i], offset + slope * mesh.nodes(rows.slave_node[i], 0), 1e-14);
+    return rows;
+  };
+  const auto expect_columns = [&](const ContactConstraints& rows, double offset, double slope)
+  {
+    const double level = std::max(offset, 0.0); // the smallest gap is at x = 0
+    int expected = 0;
+    for (const int32_t node : mesh.node_set("upper_zmin"))
+    {
+      const double gap = offset + slope * mesh.nodes(node, 0);
+      const bool near = gap < level + allowance;
+      expected += near;
+      EXPECT_EQ(row_of(rows, node) >= 0, near) << "gap " << gap;
+    }
+    EXPECT_EQ(rows.n_rows(), expected);
+  };
+  // Touching at x = 0: the columns at gaps 0 and 0.01 (8 rows), not 0.02 and 0.03.
+  const ContactConstraints touching = rows_at(0, 0.03, 0.05);
+  EXPECT_EQ(touching.n_rows(), 8);
+  expect_columns(touching, 0, 0.03);
+  // Apart by 0.1: rows where the bodies are closest, the same two columns.
+  const ContactConstraints apart = rows_at(0.1, 0.03, 0.05);
+  EXPECT_EQ(apart.n_rows(), 8);
+  expect_columns(apart, 0.1, 0.03);
+  // Penetrating at x <= 1/3 (gaps -0.03, -0.01, 0.01, 0.03): three columns.
+  const ContactConstraints penetrating = rows_at(-0.03, 0.06, 0.05);
+  EXPECT_EQ(penetrating.n_rows(), 12);
+  expect_columns(penetrating, -0.03, 0.06);
+  // Default (infinity): every node within the search distance.
+  EXPECT_EQ(rows_at(0, 0.03, std::numeric_limits<double>::infinity()).n_rows(), 16);
 }
 
 TEST(ContactConstraints, OverhangingSlaveNodesAreSkipped)
@@ -322,6 +371,8 @@ TEST(ContactConstraints, InvalidInputThrows)
   EXPECT_THROW(
       build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.rim_extension = -0.1}),
       Error);
+  EXPECT_THROW(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.near_contact_fraction = 0}),
+               Error);
   EXPECT_THROW(
       build_contact_constraints(mesh, la::Vector(), {.slave = "upper_zmin", .master = "nope"}),
       Error);
