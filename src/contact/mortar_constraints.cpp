@@ -86,7 +86,8 @@ SlaveNodalAreas slave_nodal_areas(const mesh::HexMesh& mesh, const la::Vector& u
 
 MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vector& u,
                                        const ContactPair& pair, double search_distance,
-                                       const SegmentOptions& options)
+                                       const SegmentOptions& options,
+                                       const std::vector<int32_t>* row_nodes)
 {
   check_displacement(mesh, u);
   FETICON_CHECK(std::isfinite(search_distance) && search_distance > 0,
@@ -121,6 +122,18 @@ MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vect
     std::vector<std::pair<int32_t, Eigen::Matrix4d>> segments; ///< (master face, coupling)
   };
   std::vector<FaceSegments> per_face(slave_faces.size());
+  // A face none of whose corners has a row adds nothing to the rows' D_j and M_ja: skipped (it
+  // keeps a zero nodal area and no segments). The outer loop of large displacements has rows
+  // only near contact, a few of the faces.
+  std::vector<char> is_row_node;
+  if (row_nodes)
+  {
+    is_row_node.assign(mesh.n_nodes(), 0);
+    for (const int32_t node : *row_nodes)
+      is_row_node[node] = 1;
+  }
+  const auto integrated = [&](const mesh::Face& face)
+  { return !row_nodes || std::ranges::any_of(face, [&](int32_t node) { return is_row_node[node] != 0; }); };
   constexpr int32_t faces_per_chunk = 64;
   const auto n_chunks = static_cast<int32_t>((slave_faces.size() + faces_per_chunk - 1) / faces_per_chunk);
   parallel_for(0, n_chunks, setup_work, [&](int32_t chunk)
@@ -130,6 +143,8 @@ MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vect
     for (size_t i = static_cast<size_t>(chunk) * faces_per_chunk; i < end; ++i)
     {
       const mesh::Face& face = slave_faces[i];
+      if (!integrated(face))
+        continue;
       const QuadCoordinates slave_quad = current_face_coordinates(mesh, u, face);
       per_face[i].dual = dual_basis(slave_quad);
       BoundingBox box;
@@ -178,7 +193,7 @@ ContactConstraints build_mortar_constraints(const mesh::HexMesh& mesh, const la:
   // Validates the input and gives, per slave node, whether a row exists and its normal.
   ContactConstraints closest = build_node_to_segment_constraints(mesh, u, pair, options);
   const MortarCoupling coupling =
-      compute_mortar_coupling(mesh, u, pair, closest.search_distance);
+      compute_mortar_coupling(mesh, u, pair, closest.search_distance, {}, &closest.slave_node);
 
   ContactConstraints out;
   out.search_distance = closest.search_distance;

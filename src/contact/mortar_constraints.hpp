@@ -101,11 +101,15 @@ struct MortarCoupling
 /// @param[in] search_distance candidate master faces are those within this distance of a slave
 ///            face's box (m, > 0)
 /// @param[in] options         quadrature and filters of each segment
+/// @param[in] row_nodes       if given, only the slave faces with a corner among these nodes are
+///            integrated: D_j and row j of M are those of the full computation, bit for bit, for
+///            these nodes (their support is integrated whole) and partial for the others
 /// @throws feticon::Error for an unknown or empty face set, a wrong size of u, a nonpositive
-///         search distance, or a degenerate or non-convex slave face.
+///         search distance, or a degenerate or non-convex slave face (of those integrated).
 MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vector& u,
                                        const ContactPair& pair, double search_distance,
-                                       const SegmentOptions& options = {});
+                                       const SegmentOptions& options = {},
+                                       const std::vector<int32_t>* row_nodes = nullptr);
 
 /// @brief Dual mortar rows of `pair` (file comment); options.formulation is ignored.
 /// Arguments, result and errors as build_contact_constraints.

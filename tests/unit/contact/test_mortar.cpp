@@ -230,6 +230,26 @@ TEST(MortarConstraints, PartitionOfUnityOnNonMatchingSurfaces)
   expect_rows_annihilate_translations(partial, shifted.n_nodes());
 }
 
+TEST(MortarConstraints, CouplingOfGivenRowNodesEqualsTheFullOneBitForBit)
+{
+  // Reference: the full computation. Only the faces around the given nodes are integrated, and
+  // those are all the faces that contribute to their D_j and M_ja.
+  const mesh::HexMesh wavy = test::wavy_blocks();
+  const la::Vector u = test::random_displacement(wavy, 1e-3, 2);
+  const MortarCoupling full = compute_mortar_coupling(wavy, u, upper_on_lower, 0.3);
+  const std::vector<int32_t> row_nodes{full.slave.nodes[0], full.slave.nodes[7]};
+  const MortarCoupling part = compute_mortar_coupling(wavy, u, upper_on_lower, 0.3, {}, &row_nodes);
+  for (const int32_t node : row_nodes)
+  {
+    const la::Index j = full.slave.index_of(node);
+    EXPECT_EQ(part.slave.area(j), full.slave.area(j));
+    const la::Vector full_row = full.M.row(j).transpose(), part_row = part.M.row(j).transpose();
+    EXPECT_EQ((full_row - part_row).cwiseAbs().maxCoeff(), 0.0) << "node " << node;
+    EXPECT_GT(full_row.norm(), 0);
+  }
+  EXPECT_LT(part.n_segments, full.n_segments);
+}
+
 TEST(MortarConstraints, MatchingFlatMeshesGiveNodeToSegmentRows)
 {
   // Reference: on matching flat meshes every slave node coincides with a master node, so the
