@@ -273,7 +273,7 @@ ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh,
   const double contact_level = std::max(smallest_gap, 0.0);
   const auto near_contact = [&](const ClosestPoint& c)
   {
-    return !(options.near_contact_fraction < std::numeric_limits<double>::infinity()) ||
+    return std::isinf(options.near_contact_fraction) ||
            c.gap < contact_level + options.near_contact_fraction * face_diagonal(quads[c.face]);
   };
 

@@ -164,10 +164,8 @@ private:
   /// The QP tolerance of outer iteration k (SolverSettings::forcing).
   double qp_rtol(int k);
   /// Rows of the outer loop only where g < max(g_min, 0) + 0.05 master diagonals
-  /// (contact::ContactOptions). MPRGP steps over the fraction (docs/contact.md): 1: 287 / 354 /
-  /// 405 (Hertz large 120 and 240 across, hertz3d large), 0.25: 276 / 438 / 323, 0.05: 173 / 217 /
-  /// 244, 0.01: 178 / 210 / 271, 0.002: 203 / 213 / 401; all rows within the search distance:
-  /// 249 / 284 / 571.
+  /// (contact::ContactOptions): the fewest MPRGP steps of a sweep from 1 to 0.002 on Hertz and
+  /// hertz3d with large displacements (docs/contact.md, "Rows near contact").
   static constexpr double near_contact_fraction = 0.05;
 
   const fem::Problem& _problem;
