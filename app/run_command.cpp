@@ -159,7 +159,8 @@ void run(const RunOptions& options)
   const int64_t n_dofs = 3 * static_cast<int64_t>(problem->mesh.n_nodes());
   log::info("feticon: problem " + problem->name + ", " + std::to_string(problem->mesh.n_cells()) +
             " hex8 cells, " + std::to_string(n_dofs) + " DOFs, method " + settings.text("method") +
-            ", " + settings.text("displacements") + " displacements");
+            ", " + settings.text("displacements") + " displacements" +
+            (problem->mesh_from_cache ? "; mesh from the mesh cache (FETICON_MESH_CACHE=off remeshes)" : ""));
 
   const bool write_vtu = settings.flag("output.vtu");
   std::optional<io::PvdWriter> pvd;
@@ -233,6 +234,7 @@ void run(const RunOptions& options)
   summary["degrees_of_freedom"] = n_dofs;
   summary["nodes"] = problem->mesh.n_nodes();
   summary["elements"] = problem->mesh.n_cells();
+  summary["mesh_from_cache"] = problem->mesh_from_cache;
   summary["subdomains"] = solution.n_subdomains;
   summary["dual_size"] = solution.n_dual;
   summary["coarse_size"] = solution.n_kernel;

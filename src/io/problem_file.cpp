@@ -356,7 +356,7 @@ fem::Problem build_custom_problem(const ProblemFile& file)
   fem::Problem p;
   p.name = "custom";
   if (root["mesh"]["file"])
-    p.mesh = mesh::read_gmsh(file.folder / r.text(root["mesh"]["file"], "mesh.file"));
+    p.mesh = mesh::read_gmsh(file.folder / r.text(root["mesh"]["file"], "mesh.file"), &p.mesh_from_cache);
   else
     p.mesh = boxes_mesh(root["mesh"]["boxes"], r);
 

@@ -1,6 +1,7 @@
 #pragma once
 /// @file Reading Gmsh .msh files (format 2.2 or 4.x, ASCII or binary) into a HexMesh through the
-/// Gmsh C++ API. This file and gmsh_reader.cpp are feticon's only contact with Gmsh.
+/// Gmsh C++ API, called in the Gmsh module (gmsh_module.hpp; the reading is in
+/// gmsh/model_reader.cpp). A file read before comes from the mesh cache (mesh_cache.hpp).
 ///
 /// What the file must contain, and what becomes of it:
 ///   - 3D physical groups are the bodies, one body per group, named by the physical name, in
@@ -29,7 +30,7 @@
 ///   const feticon::mesh::HexMesh mesh = feticon::mesh::read_gmsh("examples/x/x.msh");
 ///   const auto& contact_faces = mesh.face_set("punch_contact");
 ///
-/// Gmsh keeps process-wide state: read_gmsh initializes and finalizes the Gmsh API itself, so it
+/// Gmsh keeps process-wide state: the module initializes and finalizes the Gmsh API itself, so it
 /// must not be called from several threads at once nor while the caller has the Gmsh API
 /// initialized. Gmsh's own messages are silenced (General.Terminal = 0, no user option files
 /// read); its errors become feticon::Error.
@@ -48,5 +49,6 @@ namespace feticon::mesh
 ///         no 3D physical group, unnamed, duplicate or empty groups, elements other than hex8 in
 ///         3D groups or quad4 in 2D groups, a quadrangle that is not a boundary face of a
 ///         hexahedron, bodies sharing nodes, inverted or degenerate cells.
-HexMesh read_gmsh(const std::filesystem::path& path);
+/// @param[out] from_cache whether the mesh came from the mesh cache (may be null)
+HexMesh read_gmsh(const std::filesystem::path& path, bool* from_cache = nullptr);
 } // namespace feticon::mesh

@@ -13,7 +13,7 @@ fem::Problem hertz_problem(const HertzParameters& parameters)
                 "hertz: line_load = " << parameters.line_load << " N/m must be positive");
   fem::Problem p;
   p.name = "hertz";
-  p.mesh = generate_hertz(parameters.mesh);
+  p.mesh = generate_hertz(parameters.mesh, &p.mesh_from_cache);
   p.materials = {parameters.material, parameters.block()}; // bodies "cylinder", "block"
   p.eliminated = {false, false, true};
   p.dirichlet = {

@@ -2,13 +2,16 @@
 
 #include "mesh/box.hpp"
 #include "mesh/cross_section.hpp"
+#include "mesh/mesh_cache.hpp"
 
 #include "common/error.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <iterator>
 #include <limits>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -162,6 +165,18 @@ HexMesh graded_bodies(const HertzMeshParameters& p)
   merge_sets(mesh, {"block_support"}, "support");
   return mesh;
 }
+/// Every input of graded_bodies, exactly (the mesh cache's key).
+std::string graded_cache_key(const HertzMeshParameters& p)
+{
+  std::ostringstream key;
+  key << std::setprecision(17) << "hertz graded: radius " << p.cylinder_radius << " cylinder_width "
+      << p.cylinder_width << " block_width " << p.block_width << " block_depth " << p.block_depth
+      << " thickness " << p.thickness << " element_size " << p.element_size << " master_ratio "
+      << p.master_ratio << " fine_width " << p.fine_width << " fine_depth " << p.fine_depth
+      << " growth_ratio " << p.growth_ratio << " refinement " << p.refinement;
+  return key.str();
+}
+
 /// Cells of a graded_positions spacing along `length`, counted without building it.
 double graded_cell_count(double length, double spacing, double fine_length, double ratio)
 {
@@ -226,10 +241,14 @@ int64_t hertz_node_estimate(const HertzMeshParameters& p)
   return static_cast<int64_t>(std::min(2 * quad_factor * cells, 4e18));
 }
 
-HexMesh generate_hertz(const HertzMeshParameters& parameters)
+HexMesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache)
 {
   check_parameters(parameters);
-  HexMesh mesh = parameters.kind == HertzMeshKind::graded ? graded_bodies(parameters) : tensor_bodies(parameters);
+  if (from_cache)
+    *from_cache = false;
+  HexMesh mesh = parameters.kind == HertzMeshKind::graded
+                     ? mesh::cached_mesh(graded_cache_key(parameters), [&] { return graded_bodies(parameters); }, from_cache)
+                     : tensor_bodies(parameters);
   merge_sets(mesh, {"cylinder_zmin", "block_zmin"}, "zmin");
   merge_sets(mesh, {"cylinder_zmax", "block_zmax"}, "zmax");
   std::vector<int32_t> symmetry;

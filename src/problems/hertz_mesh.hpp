@@ -88,7 +88,9 @@ struct HertzMeshParameters
 
 /// @brief Builds the Hertz mesh described in the file comment.
 /// @throws feticon::Error naming the offending parameter if one is out of range.
-mesh::HexMesh generate_hertz(const HertzMeshParameters& parameters);
+/// The graded mesh comes from the mesh cache when it was made before (mesh/mesh_cache.hpp).
+/// @param[out] from_cache whether it did (may be null)
+mesh::HexMesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache = nullptr);
 
 /// Nodes of the mesh generate_hertz would build, estimated without building it (memory guard):
 /// exact up to rounding for `tensor`, the integral of the size field for `graded`.

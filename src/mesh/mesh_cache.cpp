@@ -1,0 +1,403 @@
+#include "mesh/mesh_cache.hpp"
+
+#include "common/error.hpp"
+#include "common/log.hpp"
+
+#include <elf.h>
+#include <link.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <random>
+#include <sstream>
+#include <system_error>
+#include <vector>
+
+namespace feticon::mesh
+{
+namespace
+{
+constexpr char magic[] = "feticon mesh cache 1\n";
+
+struct Fnv1a
+{
+  uint64_t hash = 14695981039346656037ull;
+  void add(const char* data, size_t size)
+  {
+    for (size_t k = 0; k < size; ++k)
+    {
+      hash ^= static_cast<unsigned char>(data[k]);
+      hash *= 1099511628211ull;
+    }
+  }
+  std::string hex() const
+  {
+    std::ostringstream out;
+    out << std::hex << std::setw(16) << std::setfill('0') << hash;
+    return out.str();
+  }
+};
+
+/// The GNU build id of the executable (hex), empty if it has none.
+std::string executable_build_id()
+{
+  std::string id;
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, size_t, void* data) -> int
+      {
+        // The first object is the executable; its notes hold NT_GNU_BUILD_ID.
+        auto& out = *static_cast<std::string*>(data);
+        for (int h = 0; h < info->dlpi_phnum; ++h)
+        {
+          const ElfW(Phdr)& header = info->dlpi_phdr[h];
+          if (header.p_type != PT_NOTE)
+            continue;
+          const char* note = reinterpret_cast<const char*>(info->dlpi_addr + header.p_vaddr);
+          const char* end = note + header.p_memsz;
+          while (note + sizeof(ElfW(Nhdr)) <= end)
+          {
+            const auto* n = reinterpret_cast<const ElfW(Nhdr)*>(note);
+            const char* name = note + sizeof(ElfW(Nhdr));
+            const char* desc = name + ((n->n_namesz + 3) & ~3u);
+            if (n->n_type == NT_GNU_BUILD_ID && n->n_namesz == 4 && std::memcmp(name, "GNU", 4) == 0)
+            {
+              std::ostringstream hex;
+              for (unsigned k = 0; k < n->n_descsz; ++k)
+                hex << std::hex << std::setw(2) << std::setfill('0')
+                    << static_cast<int>(static_cast<unsigned char>(desc[k]));
+              out = hex.str();
+              return 1;
+            }
+            note = desc + ((n->n_descsz + 3) & ~3u);
+          }
+        }
+        return 1; // only the executable
+      },
+      &id);
+  return id;
+}
+
+// Binary writing and reading of the mesh (native byte order: the cache is per machine).
+template <class T>
+void put(std::string& out, const T& value)
+{
+  out.append(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+void put_string(std::string& out, const std::string& s)
+{
+  put<uint64_t>(out, s.size());
+  out += s;
+}
+template <class T>
+void put_vector(std::string& out, const std::vector<T>& v)
+{
+  put<uint64_t>(out, v.size());
+  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+
+std::string serialize(const HexMesh& mesh)
+{
+  std::string out;
+  put<uint64_t>(out, static_cast<uint64_t>(mesh.nodes.rows()));
+  out.append(reinterpret_cast<const char*>(mesh.nodes.data()), mesh.nodes.size() * sizeof(double));
+  put_vector(out, mesh.cells);
+  put_vector(out, mesh.cell_body);
+  put<uint64_t>(out, mesh.body_names.size());
+  for (const std::string& name : mesh.body_names)
+    put_string(out, name);
+  put<uint64_t>(out, mesh.node_sets.size());
+  for (const auto& [name, nodes] : mesh.node_sets)
+  {
+    put_string(out, name);
+    put_vector(out, nodes);
+  }
+  put<uint64_t>(out, mesh.face_sets.size());
+  for (const auto& [name, faces] : mesh.face_sets)
+  {
+    put_string(out, name);
+    put_vector(out, faces);
+  }
+  return out;
+}
+
+/// Reads what serialize wrote; false on any inconsistency (the entry is then a miss).
+class Reader
+{
+public:
+  explicit Reader(const std::string& data) : _data(data) {}
+  template <class T>
+  bool get(T& value)
+  {
+    if (_data.size() - _at < sizeof(T))
+      return false;
+    std::memcpy(&value, _data.data() + _at, sizeof(T));
+    _at += sizeof(T);
+    return true;
+  }
+  bool get_bytes(void* target, uint64_t count, uint64_t size)
+  {
+    if (size != 0 && count > (_data.size() - _at) / size)
+      return false;
+    if (count * size > 0)
+      std::memcpy(target, _data.data() + _at, count * size);
+    _at += count * size;
+    return true;
+  }
+  bool get_string(std::string& s)
+  {
+    uint64_t size = 0;
+    if (!get(size) || size > _data.size() - _at)
+      return false;
+    s.assign(_data, _at, size);
+    _at += size;
+    return true;
+  }
+  template <class T>
+  bool get_vector(std::vector<T>& v)
+  {
+    uint64_t size = 0;
+    if (!get(size) || size > (_data.size() - _at) / sizeof(T))
+      return false;
+    v.resize(size);
+    return get_bytes(v.data(), size, sizeof(T));
+  }
+  template <class T>
+  bool get_named_vectors(std::map<std::string, std::vector<T>>& sets)
+  {
+    uint64_t count = 0;
+    if (!get(count) || count > _data.size())
+      return false;
+    for (uint64_t k = 0; k < count; ++k)
+    {
+      std::string name;
+      if (!get_string(name) || !get_vector(sets[name]))
+        return false;
+    }
+    return true;
+  }
+  bool at_end() const { return _at == _data.size(); }
+
+private:
+  const std::string& _data;
+  size_t _at = 0;
+};
+
+bool deserialize(const std::string& data, HexMesh& mesh)
+{
+  Reader in(data);
+  uint64_t rows = 0;
+  if (!in.get(rows) || rows > data.size() / (3 * sizeof(double)))
+    return false;
+  mesh.nodes.resize(static_cast<Eigen::Index>(rows), 3);
+  if (!in.get_bytes(mesh.nodes.data(), 3 * rows, sizeof(double)) || !in.get_vector(mesh.cells) ||
+      !in.get_vector(mesh.cell_body))
+    return false;
+  uint64_t count = 0;
+  if (!in.get(count) || count > data.size())
+    return false;
+  mesh.body_names.resize(count);
+  for (std::string& name : mesh.body_names)
+    if (!in.get_string(name))
+      return false;
+  if (!in.get_named_vectors(mesh.node_sets) || !in.get_named_vectors(mesh.face_sets))
+    return false;
+  // Ids in range, so that a damaged entry that passed the checksum cannot crash a later step.
+  const auto n = static_cast<int32_t>(rows);
+  const auto in_range = [n](int32_t id) { return id >= 0 && id < n; };
+  for (const Cell& cell : mesh.cells)
+    if (!std::ranges::all_of(cell, in_range))
+      return false;
+  for (const auto& [name, nodes] : mesh.node_sets)
+    if (!std::ranges::all_of(nodes, in_range))
+      return false;
+  for (const auto& [name, faces] : mesh.face_sets)
+    for (const Face& face : faces)
+      if (!std::ranges::all_of(face, in_range))
+        return false;
+  const auto bodies = static_cast<int32_t>(mesh.body_names.size());
+  return in.at_end() && mesh.cell_body.size() == mesh.cells.size() &&
+         std::ranges::all_of(mesh.cell_body, [bodies](int32_t b) { return b >= 0 && b < bodies; });
+}
+
+/// File content: magic, key, payload, checksum of key and payload.
+std::string entry_content(const std::string& key, const std::string& payload)
+{
+  std::string out = magic;
+  put_string(out, key);
+  put_string(out, payload);
+  Fnv1a sum;
+  sum.add(out.data(), out.size());
+  put(out, sum.hash);
+  return out;
+}
+
+bool read_entry(const std::filesystem::path& path, const std::string& key, HexMesh& mesh)
+{
+  std::ifstream file(path, std::ios::binary);
+  if (!file)
+    return false;
+  const std::string data((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const size_t magic_size = sizeof(magic) - 1;
+  if (data.size() < magic_size + sizeof(uint64_t) || data.compare(0, magic_size, magic) != 0)
+    return false;
+  Fnv1a sum;
+  sum.add(data.data(), data.size() - sizeof(uint64_t));
+  uint64_t stored = 0;
+  std::memcpy(&stored, data.data() + data.size() - sizeof(uint64_t), sizeof(uint64_t));
+  if (stored != sum.hash)
+    return false;
+  const std::string body = data.substr(magic_size, data.size() - magic_size - sizeof(uint64_t));
+  Reader in(body);
+  std::string stored_key, payload;
+  if (!in.get_string(stored_key) || stored_key != key || !in.get_string(payload) || !in.at_end())
+    return false;
+  HexMesh read;
+  if (!deserialize(payload, read))
+    return false;
+  mesh = std::move(read);
+  return true;
+}
+
+/// Removes the least recently used entries while the folder holds more than the limit.
+void prune(const std::filesystem::path& folder, std::uintmax_t limit_bytes)
+{
+  std::error_code error;
+  struct Entry
+  {
+    std::filesystem::path path;
+    std::filesystem::file_time_type time;
+    std::uintmax_t size;
+  };
+  std::vector<Entry> entries;
+  std::uintmax_t total = 0;
+  for (const auto& item : std::filesystem::directory_iterator(folder, error))
+  {
+    if (item.path().extension() != ".mesh")
+      continue;
+    std::error_code e1, e2;
+    const auto size = item.file_size(e1);
+    const auto time = item.last_write_time(e2);
+    if (e1 || e2)
+      continue;
+    entries.push_back({item.path(), time, size});
+    total += size;
+  }
+  std::ranges::sort(entries, {}, &Entry::time);
+  for (const Entry& entry : entries)
+  {
+    if (total <= limit_bytes)
+      break;
+    if (std::filesystem::remove(entry.path, error))
+      total -= entry.size;
+  }
+}
+
+bool write_entry(const std::filesystem::path& path, const std::string& content, std::string& why)
+{
+  std::error_code error;
+  std::filesystem::create_directories(path.parent_path(), error);
+  if (error)
+  {
+    why = error.message();
+    return false;
+  }
+  // A name of its own per writer: ranks and concurrent runs may store the same entry.
+  std::random_device random;
+  const std::filesystem::path temporary =
+      path.string() + ".tmp." + std::to_string(getpid()) + "." + std::to_string(random());
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    file.write(content.data(), static_cast<std::streamsize>(content.size()));
+    file.close();
+    if (!file)
+    {
+      std::filesystem::remove(temporary, error);
+      why = "cannot write " + temporary.string();
+      return false;
+    }
+  }
+  std::filesystem::rename(temporary, path, error);
+  if (error)
+  {
+    why = error.message();
+    std::filesystem::remove(temporary, error);
+    return false;
+  }
+  return true;
+}
+} // namespace
+
+MeshCacheLocation mesh_cache_location()
+{
+  MeshCacheLocation location;
+  const char* setting = std::getenv("FETICON_MESH_CACHE");
+  if (setting && std::string(setting) == "off")
+    return location;
+  if (setting && *setting)
+    location.folder = setting;
+  else if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+    location.folder = std::filesystem::path(xdg) / "feticon" / "meshes";
+  else if (const char* home = std::getenv("HOME"); home && *home)
+    location.folder = std::filesystem::path(home) / ".cache" / "feticon" / "meshes";
+  else
+    return location;
+  location.enabled = !executable_build_id().empty();
+  return location;
+}
+
+HexMesh cached_mesh(const MeshCacheLocation& location, const std::string& key,
+                    const std::function<HexMesh()>& build, bool* hit)
+{
+  if (hit)
+    *hit = false;
+  if (!location.enabled)
+    return build();
+  const std::string full_key = key + "\nbuild " + executable_build_id();
+  Fnv1a name;
+  name.add(full_key.data(), full_key.size());
+  const std::filesystem::path path = location.folder / (name.hex() + ".mesh");
+  HexMesh mesh;
+  if (read_entry(path, full_key, mesh))
+  {
+    std::error_code error; // the time of last use orders the pruning
+    std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), error);
+    if (hit)
+      *hit = true;
+    return mesh;
+  }
+  mesh = build();
+  std::string why;
+  if (write_entry(path, entry_content(full_key, serialize(mesh)), why))
+    prune(location.folder, location.limit_bytes);
+  else
+    log::warning("mesh cache: cannot store the mesh in " + location.folder.string() + " (" + why +
+                 "); set FETICON_MESH_CACHE to a writable folder, or to off");
+  return mesh;
+}
+
+HexMesh cached_mesh(const std::string& key, const std::function<HexMesh()>& build, bool* hit)
+{
+  return cached_mesh(mesh_cache_location(), key, build, hit);
+}
+
+std::string file_digest(const std::filesystem::path& path)
+{
+  std::ifstream file(path, std::ios::binary);
+  FETICON_CHECK(file, "cannot read '" << path.string() << "'");
+  Fnv1a sum;
+  std::vector<char> buffer(1 << 16);
+  while (file)
+  {
+    file.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    sum.add(buffer.data(), static_cast<size_t>(file.gcount()));
+  }
+  FETICON_CHECK(file.eof(), "cannot read '" << path.string() << "'");
+  return sum.hex();
+}
+} // namespace feticon::mesh
