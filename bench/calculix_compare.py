@@ -5,7 +5,9 @@ written by bench/calculix.sh and computes every figure with the same code for bo
     bench/calculix_compare.py CASE_DIR          # writes CASE_DIR/comparison.json, prints it
 
 CASE_DIR holds deck/feticon.inp (the export), ccx.rep<i>/ (feticon.frd, feticon.dat, stdout,
-time), feticon.rep<i>/ (summary.json, contact_pressure.csv, time) and export.log.
+time), feticon.rep<i>/ (summary.json, contact_pressure.csv, time) and export.log, and
+feticon.meshing/ when bench/calculix.sh also timed a run that makes its mesh (the reps read
+theirs from the mesh cache, which the export filled, as ccx reads its mesh from the deck).
 
 Conventions. Both pressures are per deformed area: CalculiX's CPRESS is the penalty pressure
 (Cauchy traction) at the slave nodes, extrapolated from its integration points; feticon's is
@@ -193,7 +195,8 @@ def feticon_run(folder, plane_strain):
             "subdomains": summary["subdomains"], "converged": summary["converged"],
             "outer_iterations": sum(s["outer_iterations"] for s in summary.get("steps", [])),
             "mprgp_iterations": qp.get("iterations"), "hessian_multiplications": qp.get("hessian_multiplications"),
-            "total_normal_force": summary.get("contact", {}).get("total_normal_force")}, rows, summary
+            "total_normal_force": summary.get("contact", {}).get("total_normal_force"),
+            "mesh_from_cache": summary.get("mesh_from_cache", False)}, rows, summary
 
 
 def median_run(runs):
@@ -242,8 +245,14 @@ def main(case):
                 if large:
                     out[name]["hertz_reference_frame"] = hertz_figures(rows, h["a_analytic"], h["p0_analytic"],
                                                                        False, radial)
+    meshing = os.path.join(case, "feticon.meshing")
+    if os.path.isdir(meshing):
+        out["feticon_meshing"] = feticon_run(meshing, plane_strain)[0]
     if out["feticon"] and out["calculix"]:
         out["time_ratio_calculix_over_feticon"] = out["calculix"]["seconds"] / out["feticon"]["seconds"]
+        if "feticon_meshing" in out:
+            out["time_ratio_calculix_over_feticon_meshing"] = (out["calculix"]["seconds"] /
+                                                               out["feticon_meshing"]["seconds"])
         out["memory_ratio_calculix_over_feticon"] = (out["calculix"]["peak_memory_bytes"] /
                                                      out["feticon"]["peak_memory_bytes"])
         out["peak_pressure_difference"] = (out["calculix"]["peak_pressure"] / out["feticon"]["peak_pressure"] - 1)
