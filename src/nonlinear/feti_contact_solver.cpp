@@ -81,8 +81,10 @@ std::vector<char> schur_boundary_nodes(const fem::Problem& problem, const fem::C
 /// products by BLAS dsymv: Hertz, 19k DOFs, 8 subdomains, |b_s| ~ 320: a dual product
 /// 2.5 ms implicit, 0.32 ms explicit (model: 4.6x); sphere on block, 17k DOFs, 4 subdomains,
 /// |b_s| ~ 1 560: 9.2 ms against 3.4 ms (model 2.8x; the blocks, 75 MiB, stream from memory
-/// at every step). Expected steps: 100 per load step, 5 times as many with large
-/// displacements (docs/benchmarks.md).
+/// at every step). Expected steps: 150 per load step, with small or large displacements
+/// (operator applications measured at 76593aa: sphere on block 174 in one load step and 263 in
+/// two, hertz3d r1 219 and 315, Hertz 240 across large 296; large-displacement runs took
+/// five times as many before the outer loop's rows near contact, 1dfc320).
 std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, const decomposition::SubdomainSystem& system,
                                              const decomposition::SchurComplements* schur, const par::Communicator& comm)
 {
@@ -107,7 +109,7 @@ std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, con
   }
   const int64_t bytes = comm.sum(decomposition::explicit_operator_bytes(system, *schur));
   const double budget = std::min(0.25 * static_cast<double>(available_memory_bytes()), 4.0 * (1L << 30)) * comm.size();
-  const double steps = 100.0 * settings.steps() * (settings.kinematics == fem::Kinematics::linear ? 1 : 5);
+  const double steps = 150.0 * settings.steps();
   setup = static_cast<double>(comm.sum(static_cast<int64_t>(setup)));
   implicit_step = static_cast<double>(comm.sum(static_cast<int64_t>(implicit_step)));
   explicit_step = static_cast<double>(comm.sum(static_cast<int64_t>(explicit_step)));
