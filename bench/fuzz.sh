@@ -28,5 +28,8 @@ done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cp "$feticon" "$work/feticon"
+cp "$(dirname "$feticon")/libfeticon_gmsh.so" "$work/" # its Gmsh module, opened beside it
+# Mutated meshes must not fill the user's mesh cache.
+export FETICON_MESH_CACHE=off
 /usr/bin/python3 "$root/tests/tools/fuzz_inputs.py" "$work/feticon" "$root" \
   --minutes "$minutes" --seed "$seed" "${extra[@]}"
