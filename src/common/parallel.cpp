@@ -17,10 +17,17 @@ namespace
 {
 /// OpenBLAS is found at run time: CHOLMOD links the generic libblas, which Debian's
 /// alternatives may point to OpenBLAS (threaded) or to the reference BLAS (no threads).
+/// One thread also stops OpenBLAS's idle server threads: it starts them when it is loaded,
+/// and each spins (sched_yield) for about 0.1 s before it sleeps, on the core our workers
+/// need (Hertz 60 across: 0.22-0.27 s -> 0.18-0.23 s, as with OPENBLAS_NUM_THREADS=1). A
+/// later call with more threads starts them again at the next BLAS call.
 void set_blas_threads(int n)
 {
   if (auto* set = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
     set(n);
+  if (n == 1)
+    if (auto* shutdown = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "blas_thread_shutdown_")))
+      shutdown();
 }
 
 /// No OpenMP teams: CHOLMOD 5.12 zeroes its supernodal factor in an OpenMP loop with
