@@ -1,7 +1,7 @@
 #include "app/checkpoint.hpp"
 
 #include "common/error.hpp"
-#include "io/atomic_file.hpp"
+#include "common/atomic_file.hpp"
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -56,7 +56,7 @@ void write_checkpoint(const std::filesystem::path& path, const nonlinear::Contac
 {
   const auto& r = solution.restart;
   const std::string json = records(solution).dump();
-  io::write_file_atomically(path, [&](std::ostream& os) {
+  feticon::write_file_atomically(path, [&](std::ostream& os) {
     os.write(magic, 8);
     write_block(os, r.u_stacked.data(), r.u_stacked.size());
     write_block(os, r.lambda.data(), r.lambda.size());

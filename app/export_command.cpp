@@ -11,7 +11,7 @@
 #include "app/problem_setup.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
-#include "io/atomic_file.hpp"
+#include "common/atomic_file.hpp"
 #include "io/calculix_deck.hpp"
 
 #include <filesystem>
@@ -56,7 +56,7 @@ void export_model(const ExportOptions& options)
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   FETICON_CHECK(!ec, "cannot create the output folder " << dir.string() << ": " << ec.message());
-  io::write_file_atomically(dir / "feticon.inp", text.str());
+  feticon::write_file_atomically(dir / "feticon.inp", text.str());
 
   std::ostringstream message;
   message << "export: " << (dir / "feticon.inp").string() << ": " << s.n_nodes << " nodes, " << s.n_elements

@@ -9,7 +9,7 @@
 #include "par/communicator.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
-#include "io/atomic_file.hpp"
+#include "common/atomic_file.hpp"
 #include "io/problem_file.hpp"
 #include "io/settings.hpp"
 #include "mesh/mesh_quality.hpp"
@@ -137,7 +137,7 @@ void run(const RunOptions& options)
     if (!restart)
     {
       prepare_output_folder(out_dir, options.overwrite);
-      io::write_file_atomically(out_dir / "problem.yaml", effective_problem(file));
+      feticon::write_file_atomically(out_dir / "problem.yaml", effective_problem(file));
     }
   }
   comm.barrier();

@@ -4,7 +4,7 @@
 #include "fem/hex8_element.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
-#include "io/atomic_file.hpp"
+#include "common/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -100,7 +100,7 @@ void write_pressure_csv(const std::filesystem::path& path,
                   s.z, s.force, s.area, s.pressure, s.stress_pressure, s.analytic, s.deformed_x, s.deformed_y);
     os << line;
   }
-  io::write_file_atomically(path, os.str());
+  feticon::write_file_atomically(path, os.str());
 }
 
 void write_history_csv(const std::filesystem::path& path,
@@ -114,7 +114,7 @@ void write_history_csv(const std::filesystem::path& path,
        << it.qp.hessian_multiplications << ',' << it.qp.outer_iterations << ',' << it.residual_norm << ','
        << it.displacement_change << ',' << it.active_contacts << ',' << it.feasibility_error << ','
        << it.seconds << '\n';
-  io::write_file_atomically(path, os.str());
+  feticon::write_file_atomically(path, os.str());
 }
 
 std::string format_summary(const nlohmann::ordered_json& s)
@@ -260,6 +260,6 @@ void prepare_output_folder(const std::filesystem::path& out_dir, bool overwrite)
 
 void write_json(const std::filesystem::path& path, const nlohmann::ordered_json& json)
 {
-  io::write_file_atomically(path, json.dump(2) + "\n");
+  feticon::write_file_atomically(path, json.dump(2) + "\n");
 }
 } // namespace feticon::app

@@ -1,6 +1,6 @@
 #include "io/vtu.hpp"
 
-#include "io/atomic_file.hpp"
+#include "common/atomic_file.hpp"
 #include "io/base64.hpp"
 
 #include "common/error.hpp"

@@ -8,7 +8,7 @@
 ///   - cell data "body" (Int32): the body index of each cell (mesh.cell_body);
 ///   - point data "set_<name>" (UInt8, 0 or 1) for every node set of the mesh, to show boundary
 ///     conditions and contact surfaces in ParaView.
-/// Files are written atomically (atomic_file.hpp).
+/// Files are written atomically (common/atomic_file.hpp).
 ///
 /// Usage:
 ///   PvdWriter series(out / "hertz.pvd");

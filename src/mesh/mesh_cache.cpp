@@ -1,11 +1,11 @@
 #include "mesh/mesh_cache.hpp"
 
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
 
 #include <elf.h>
 #include <link.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -14,7 +14,6 @@
 #include <fstream>
 #include <iomanip>
 #include <map>
-#include <random>
 #include <sstream>
 #include <system_error>
 #include <vector>
@@ -130,11 +129,15 @@ std::string serialize(const HexMesh& mesh)
 class Reader
 {
 public:
-  explicit Reader(const std::string& data) : _data(data) {}
+  /// Reads data[first, end) (default: all of it).
+  explicit Reader(const std::string& data, size_t first = 0, size_t end = std::string::npos)
+      : _data(data), _at(first), _end(std::min(end, data.size()))
+  {
+  }
   template <class T>
   bool get(T& value)
   {
-    if (_data.size() - _at < sizeof(T))
+    if (_end - _at < sizeof(T))
       return false;
     std::memcpy(&value, _data.data() + _at, sizeof(T));
     _at += sizeof(T);
@@ -142,7 +145,7 @@ public:
   }
   bool get_bytes(void* target, uint64_t count, uint64_t size)
   {
-    if (size != 0 && count > (_data.size() - _at) / size)
+    if (size != 0 && count > (_end - _at) / size)
       return false;
     if (count * size > 0)
       std::memcpy(target, _data.data() + _at, count * size);
@@ -152,7 +155,7 @@ public:
   bool get_string(std::string& s)
   {
     uint64_t size = 0;
-    if (!get(size) || size > _data.size() - _at)
+    if (!get(size) || size > _end - _at)
       return false;
     s.assign(_data, _at, size);
     _at += size;
@@ -162,7 +165,7 @@ public:
   bool get_vector(std::vector<T>& v)
   {
     uint64_t size = 0;
-    if (!get(size) || size > (_data.size() - _at) / sizeof(T))
+    if (!get(size) || size > (_end - _at) / sizeof(T))
       return false;
     v.resize(size);
     return get_bytes(v.data(), size, sizeof(T));
@@ -181,11 +184,12 @@ public:
     }
     return true;
   }
-  bool at_end() const { return _at == _data.size(); }
+  bool at_end() const { return _at == _end; }
 
 private:
   const std::string& _data;
-  size_t _at = 0;
+  size_t _at;
+  size_t _end;
 };
 
 bool deserialize(const std::string& data, HexMesh& mesh)
@@ -252,8 +256,7 @@ bool read_entry(const std::filesystem::path& path, const std::string& key, HexMe
   std::memcpy(&stored, data.data() + data.size() - sizeof(uint64_t), sizeof(uint64_t));
   if (stored != sum.hash)
     return false;
-  const std::string body = data.substr(magic_size, data.size() - magic_size - sizeof(uint64_t));
-  Reader in(body);
+  Reader in(data, magic_size, data.size() - sizeof(uint64_t));
   std::string stored_key, payload;
   if (!in.get_string(stored_key) || stored_key != key || !in.get_string(payload) || !in.at_end())
     return false;
@@ -298,39 +301,6 @@ void prune(const std::filesystem::path& folder, std::uintmax_t limit_bytes)
   }
 }
 
-bool write_entry(const std::filesystem::path& path, const std::string& content, std::string& why)
-{
-  std::error_code error;
-  std::filesystem::create_directories(path.parent_path(), error);
-  if (error)
-  {
-    why = error.message();
-    return false;
-  }
-  // A name of its own per writer: ranks and concurrent runs may store the same entry.
-  std::random_device random;
-  const std::filesystem::path temporary =
-      path.string() + ".tmp." + std::to_string(getpid()) + "." + std::to_string(random());
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    file.write(content.data(), static_cast<std::streamsize>(content.size()));
-    file.close();
-    if (!file)
-    {
-      std::filesystem::remove(temporary, error);
-      why = "cannot write " + temporary.string();
-      return false;
-    }
-  }
-  std::filesystem::rename(temporary, path, error);
-  if (error)
-  {
-    why = error.message();
-    std::filesystem::remove(temporary, error);
-    return false;
-  }
-  return true;
-}
 } // namespace
 
 MeshCacheLocation mesh_cache_location()
@@ -347,7 +317,8 @@ MeshCacheLocation mesh_cache_location()
     location.folder = std::filesystem::path(home) / ".cache" / "feticon" / "meshes";
   else
     return location;
-  location.enabled = !executable_build_id().empty();
+  location.build_id = executable_build_id();
+  location.enabled = !location.build_id.empty();
   return location;
 }
 
@@ -358,7 +329,7 @@ HexMesh cached_mesh(const MeshCacheLocation& location, const std::string& key,
     *hit = false;
   if (!location.enabled)
     return build();
-  const std::string full_key = key + "\nbuild " + executable_build_id();
+  const std::string full_key = key + "\nbuild " + location.build_id;
   Fnv1a name;
   name.add(full_key.data(), full_key.size());
   const std::filesystem::path path = location.folder / (name.hex() + ".mesh");
@@ -372,12 +343,16 @@ HexMesh cached_mesh(const MeshCacheLocation& location, const std::string& key,
     return mesh;
   }
   mesh = build();
-  std::string why;
-  if (write_entry(path, entry_content(full_key, serialize(mesh)), why))
+  try
+  {
+    write_file_atomically(path, entry_content(full_key, serialize(mesh)));
     prune(location.folder, location.limit_bytes);
-  else
-    log::warning("mesh cache: cannot store the mesh in " + location.folder.string() + " (" + why +
-                 "); set FETICON_MESH_CACHE to a writable folder, or to off");
+  }
+  catch (const Error& error)
+  {
+    log::warning("mesh cache: " + std::string(error.what()) +
+                 "; set FETICON_MESH_CACHE to a writable folder, or to off");
+  }
   return mesh;
 }
 

@@ -30,6 +30,7 @@ struct MeshCacheLocation
 {
   bool enabled = false;
   std::filesystem::path folder;
+  std::string build_id; ///< of the running executable, part of every key
   std::uintmax_t limit_bytes = std::uintmax_t{256} << 20; ///< entries beyond it are pruned
 };
 MeshCacheLocation mesh_cache_location();

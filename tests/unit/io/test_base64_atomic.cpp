@@ -1,7 +1,7 @@
 /// Tests of the base64 encoder (reference: the test vectors of RFC 4648, section 10) and of
 /// atomic file writing (reference: the file system after each call).
 
-#include "io/atomic_file.hpp"
+#include "common/atomic_file.hpp"
 #include "io/base64.hpp"
 
 #include "common/error.hpp"

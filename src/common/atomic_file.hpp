@@ -11,7 +11,7 @@
 #include <ostream>
 #include <string>
 
-namespace feticon::io
+namespace feticon
 {
 /// @brief Writes `content` to `path` atomically, creating missing parent directories.
 /// @throws feticon::Error naming the path if a directory cannot be created or the write or the
@@ -27,4 +27,4 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 ///         `write`.
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write);
-} // namespace feticon::io
+} // namespace feticon

@@ -1,4 +1,4 @@
-#include "io/atomic_file.hpp"
+#include "common/atomic_file.hpp"
 
 #include "common/error.hpp"
 
@@ -10,7 +10,7 @@
 
 #include <unistd.h>
 
-namespace feticon::io
+namespace feticon
 {
 namespace
 {
@@ -73,4 +73,4 @@ void write_file_atomically(const std::filesystem::path& path,
     throw;
   }
 }
-} // namespace feticon::io
+} // namespace feticon
