@@ -32,7 +32,15 @@ run --output "$work/rebuilt"
 [[ $(from_cache "$work/rebuilt") == False ]] || { echo "a truncated entry was read"; exit 1; }
 cmp "$work/made/contact_pressure.csv" "$work/rebuilt/contact_pressure.csv"
 
-# 4. Gmsh is loaded only when a mesh is made: not for the mapped (tensor) mesh nor a cached
+# 4. A cache that cannot be written (a file where its folder should be) costs one warning line
+#    naming it, not the run.
+echo "not a folder" > "$work/blocked"
+FETICON_MESH_CACHE="$work/blocked" run --output "$work/blocked_run" 2> "$work/stderr"
+[[ $(wc -l < "$work/stderr") -eq 1 ]] && grep -q "mesh cache: .*$work/blocked" "$work/stderr" \
+  || { echo "expected one warning naming the cache folder:"; cat "$work/stderr"; exit 1; }
+cmp "$work/made/contact_pressure.csv" "$work/blocked_run/contact_pressure.csv"
+
+# 5. Gmsh is loaded only when a mesh is made: not for the mapped (tensor) mesh nor a cached
 #    one (the dynamic linker's trace of the files it opens).
 libs_of() { LD_DEBUG=files "$@" 2>&1 >/dev/null | grep -c "file=libgmsh" || true; }
 [[ $(libs_of "$feticon" run -q --overwrite --output "$work/t" --set hertz.mesh=tensor --set hertz.refinement=0.5 \
