@@ -8,7 +8,7 @@
 
 namespace feticon::decomposition
 {
-SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vector<char>& boundary_node,
+SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vector<char>& boundary_dof,
                                    bool factorize_interior)
     : _system(system)
 {
@@ -20,8 +20,9 @@ SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vec
     Local& local = _local[s - decomp.first_owned()];
     for (int32_t dof = 0; dof < sub.n_dofs(); ++dof)
     {
-      const int32_t node = sub.domain.local_to_global[sub.full_of_active[dof] / 3];
-      const bool on_boundary = boundary_node[node] || decomp.copies(node).size() > 1;
+      const int32_t full = sub.full_of_active[dof];
+      const int32_t node = sub.domain.local_to_global[full / 3];
+      const bool on_boundary = boundary_dof[3 * static_cast<size_t>(node) + full % 3] || decomp.copies(node).size() > 1;
       (on_boundary ? local.boundary : local.interior).push_back(dof);
     }
   });

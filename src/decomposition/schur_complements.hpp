@@ -13,9 +13,11 @@
 /// S_s is applied implicitly: one sparse product with K_ib, one CHOLMOD solve with K_ii and
 /// one product with K_bi, about the cost of one K_s+ application. The boundary is fixed for
 /// the run (contact rows change every outer iteration, K_ii is factorized once per stiffness):
-/// the DOFs of nodes shared with another subdomain and of the nodes flagged by the caller
-/// (Dirichlet and contact-surface nodes). A boundary DOF no row touches makes B S B' a
-/// slightly different SPD operator, still a preconditioner.
+/// the DOFs of nodes shared with another subdomain and the DOFs flagged by the caller (the
+/// supported components, every component of the contact-surface nodes). Each boundary DOF no
+/// row touches is held fixed in S_s instead of eliminated, which makes B S B' a different,
+/// weaker SPD preconditioner and costs a larger S_s: a symmetry plane's node is on the
+/// boundary with its one supported component only (docs/benchmarks.md, sphere on block).
 
 #include "decomposition/subdomain_operators.hpp"
 #include "la/cholmod.hpp"
@@ -31,8 +33,9 @@ public:
   /// this rank owns. Without (the explicit dual operators form S_s densely themselves,
   /// explicit_boundary_operators.hpp) apply() must not be called.
   /// @param system        subdomain stiffnesses (kept by reference, must outlive this)
-  /// @param boundary_node one flag per mesh node: on the boundary whatever subdomain has it
-  SchurComplements(const SubdomainSystem& system, const std::vector<char>& boundary_node,
+  /// @param boundary_dof one flag per mesh DOF (3 node + component): on the boundary
+  ///        whatever subdomain has it
+  SchurComplements(const SubdomainSystem& system, const std::vector<char>& boundary_dof,
                    bool factorize_interior = true);
 
   /// Factorizes K_ii of the owned subdomains (once; the boundaries stay as found), for apply().

@@ -53,19 +53,21 @@ par::BlockSpace owned_subdomain_space(const decomposition::Decomposition& decomp
   return par::BlockSpace(decomp.comm(), std::move(blocks), std::move(global_index));
 }
 
-/// Nodes whose DOFs are on the boundary of the Dirichlet preconditioner's Schur complements
-/// besides the subdomain interfaces: supported nodes and the nodes of both contact surfaces
-/// (decomposition/schur_complements.hpp).
-std::vector<char> schur_boundary_nodes(const fem::Problem& problem, const fem::ConstrainedDofs& dirichlet)
+/// DOFs on the boundary of the Dirichlet preconditioner's Schur complements besides the
+/// subdomain interfaces (decomposition/schur_complements.hpp): the supported components,
+/// which the Dirichlet rows touch, and every component of both contact surfaces' nodes, which
+/// the contact rows may touch in whatever direction their normals take.
+std::vector<char> schur_boundary_dofs(const fem::Problem& problem, const fem::ConstrainedDofs& dirichlet)
 {
-  std::vector<char> boundary(problem.mesh.n_nodes(), 0);
+  std::vector<char> boundary(3 * static_cast<size_t>(problem.mesh.n_nodes()), 0);
   for (int64_t dof : dirichlet.dofs)
     if (!problem.eliminated[dof % 3]) // plane strain's u_z = 0 is no row
-      boundary[dof / 3] = 1;
+      boundary[dof] = 1;
   for (const auto& pair : problem.contacts)
     for (const std::string& set : {pair.slave, pair.master})
       for (int32_t node : problem.mesh.face_set_nodes(set))
-        boundary[node] = 1;
+        for (int c = 0; c < 3; ++c)
+          boundary[3 * static_cast<size_t>(node) + c] = 1;
   return boundary;
 }
 
@@ -81,7 +83,8 @@ std::vector<char> schur_boundary_nodes(const fem::Problem& problem, const fem::C
 /// products by BLAS dsymv: Hertz, 19k DOFs, 8 subdomains, |b_s| ~ 320: a dual product
 /// 2.5 ms implicit, 0.32 ms explicit (model: 4.6x); sphere on block, 17k DOFs, 4 subdomains,
 /// |b_s| ~ 1 560: 9.2 ms against 3.4 ms (model 2.8x; the blocks, 75 MiB, stream from memory
-/// at every step). Expected steps: 150 per load step, with small or large displacements
+/// at every step; |b_s| ~ 1 240 and 50 MiB since the supports' free components left the
+/// boundary, when auto turned explicit there: 1.25 s implicit against 0.99 s). Expected steps: 150 per load step, with small or large displacements
 /// (operator applications measured at 76593aa: sphere on block 174 in one load step and 263 in
 /// two, hertz3d r1 219 and 315, Hertz 240 across large 296; large-displacement runs took
 /// five times as many before the outer loop's rows near contact, 1dfc320).
@@ -234,7 +237,7 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
   }
   _u = la::Vector::Zero(_decomp->n_primal());
   if (settings.dual.preconditioner == dual::DualPreconditioner::dirichlet)
-    _schur_boundary = schur_boundary_nodes(problem, _dirichlet);
+    _schur_boundary = schur_boundary_dofs(problem, _dirichlet);
   update_stiffness(); // K_0 and R(X), kept for the whole run (modified Newton)
   const la::Vector f_ext = problem.external_force();
   _f_ext_stacked = _decomp->scatter_split(f_ext);

@@ -49,13 +49,15 @@ void check_blocks(GeneralizedInverseMethod method, bool whole_surface_on_boundar
   system.update(la::Vector::Zero(decomp.n_primal()));
   // Boundary: the interfaces alone (fixing nodes, far from each centroid, mostly off it), or
   // every node on the box's surface too.
-  std::vector<char> flagged(m.n_nodes(), 0);
+  std::vector<char> flagged(3 * static_cast<size_t>(m.n_nodes()), 0);
   if (whole_surface_on_boundary)
     for (int32_t i = 0; i < m.n_nodes(); ++i)
       for (int d = 0; d < 3; ++d)
       {
         const double x = m.nodes(i, d), top = d == 0 ? 2 : 1;
-        flagged[i] |= std::abs(x) < 0.05 || std::abs(x - top) < 0.05;
+        if (std::abs(x) < 0.05 || std::abs(x - top) < 0.05)
+          for (int c = 0; c < 3; ++c)
+            flagged[3 * static_cast<size_t>(i) + c] = 1;
       }
   const decomposition::SchurComplements boundaries(system, flagged, false);
   const decomposition::ExplicitBoundaryOperators ops(system, boundaries);
