@@ -246,7 +246,8 @@ void run(const RunOptions& options)
   summary["rho"] = settings.number("rho");
   summary["dual_operator"] = {{"mode", solution.dual_operator},
                               {"reason", solution.dual_operator_reason},
-                              {"bytes", solution.explicit_operator_bytes}};
+                              {"bytes", solution.explicit_operator_bytes},
+                              {"boundary_widened", solution.schur_boundary_widened}};
   if (solver.method == nonlinear::ContactMethod::primal_penalty)
     summary["eps_n"] = solution.penalty;
 

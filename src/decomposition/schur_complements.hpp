@@ -14,7 +14,7 @@
 /// one product with K_bi, about the cost of one K_s+ application. The boundary is fixed for
 /// the run (contact rows change every outer iteration, K_ii is factorized once per stiffness):
 /// the DOFs of nodes shared with another subdomain and the DOFs flagged by the caller (the
-/// supported components, every component of the contact-surface nodes). Each boundary DOF no
+/// supported components and the contact DOFs the rows may touch). Each boundary DOF no
 /// row touches is held fixed in S_s instead of eliminated, which makes B S B' a different,
 /// weaker SPD preconditioner and costs a larger S_s: a symmetry plane's node is on the
 /// boundary with its one supported component only (docs/benchmarks.md, sphere on block).

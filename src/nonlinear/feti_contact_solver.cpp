@@ -53,22 +53,64 @@ par::BlockSpace owned_subdomain_space(const decomposition::Decomposition& decomp
   return par::BlockSpace(decomp.comm(), std::move(blocks), std::move(global_index));
 }
 
+/// f(dof) for each DOF a contact row has a nonzero on; plane strain's u_z, no unknown and so in
+/// no subdomain's B, is skipped (a 2D row's normal has a stored zero there).
+template <class F>
+void for_each_touched_dof(const fem::Problem& problem, const contact::ContactConstraints& contact_rows, F&& f)
+{
+  const auto& B = contact_rows.B;
+  for (int row = 0; row < B.outerSize(); ++row)
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(B, row); it; ++it)
+      if (it.value() != 0 && !problem.eliminated[it.col() % 3])
+        f(it.col());
+}
+
 /// DOFs on the boundary of the Dirichlet preconditioner's Schur complements besides the
-/// subdomain interfaces (decomposition/schur_complements.hpp): the supported components,
-/// which the Dirichlet rows touch, and every component of both contact surfaces' nodes, which
-/// the contact rows may touch in whatever direction their normals take.
-std::vector<char> schur_boundary_dofs(const fem::Problem& problem, const fem::ConstrainedDofs& dirichlet)
+/// subdomain interfaces (decomposition/schur_complements.hpp): the supported components, which
+/// the Dirichlet rows touch, and the contact DOFs the rows may touch. `contact_rows` null: every
+/// component of both contact surfaces' nodes. Otherwise the DOFs these rows touch, or, with
+/// `all_components`, every component of their nodes (normals turn with large displacements).
+/// The fewer contact DOFs, the smaller the dense blocks (|b_s|^2 bytes, |b_s|^3 flops to form)
+/// and the better the preconditioner: a DOF no row touches is held fixed in S_s instead of
+/// eliminated.
+std::vector<char> schur_boundary_dofs(const fem::Problem& problem, const fem::ConstrainedDofs& dirichlet,
+                                      const contact::ContactConstraints* contact_rows, bool all_components)
 {
   std::vector<char> boundary(3 * static_cast<size_t>(problem.mesh.n_nodes()), 0);
   for (int64_t dof : dirichlet.dofs)
     if (!problem.eliminated[dof % 3]) // plane strain's u_z = 0 is no row
       boundary[dof] = 1;
-  for (const auto& pair : problem.contacts)
-    for (const std::string& set : {pair.slave, pair.master})
-      for (int32_t node : problem.mesh.face_set_nodes(set))
-        for (int c = 0; c < 3; ++c)
-          boundary[3 * static_cast<size_t>(node) + c] = 1;
+  const auto flag_node = [&](int64_t node)
+  {
+    for (int c = 0; c < 3; ++c)
+      if (!problem.eliminated[c])
+        boundary[3 * node + c] = 1;
+  };
+  if (!contact_rows)
+  {
+    for (const auto& pair : problem.contacts)
+      for (const std::string& set : {pair.slave, pair.master})
+        for (int32_t node : problem.mesh.face_set_nodes(set))
+          flag_node(node);
+    return boundary;
+  }
+  for_each_touched_dof(problem, *contact_rows, [&](int64_t dof)
+  {
+    if (all_components)
+      flag_node(dof / 3);
+    else
+      boundary[dof] = 1;
+  });
   return boundary;
+}
+
+/// Whether every DOF the rows touch is flagged in `boundary`.
+bool covers(const fem::Problem& problem, const std::vector<char>& boundary,
+            const contact::ContactConstraints& contact_rows)
+{
+  bool all = true;
+  for_each_touched_dof(problem, contact_rows, [&](int64_t dof) { all = all && boundary[dof]; });
+  return all;
 }
 
 /// dual.operator = auto: explicit when the dense blocks fit a quarter of the available
@@ -162,6 +204,9 @@ public:
 private:
   /// K, R and their factors at the current u; the preconditioner and explicit blocks with them.
   void update_stiffness();
+  /// The Schur complements' boundaries from _schur_boundary, and the K_ii factors or the
+  /// explicit blocks on them, for the current K.
+  void update_boundary_operators();
   /// f_int and its assembled norm at the current u.
   void update_internal_force();
   /// max(||t f_ext||, ||f_int(u)||): the scale of the relative residual (OuterConvergence).
@@ -236,17 +281,26 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
     std::sort(_out.owned_cells.begin(), _out.owned_cells.end());
   }
   _u = la::Vector::Zero(_decomp->n_primal());
+  _pair = {problem.contacts[0].slave, problem.contacts[0].master};
+  _contact_options.search_distance = settings.search_distance;
+  _contact_options.formulation = settings.formulation;
   if (settings.dual.preconditioner == dual::DualPreconditioner::dirichlet)
-    _schur_boundary = schur_boundary_dofs(problem, _dirichlet);
+  {
+    // The rows within the search distance of the reference configuration: those of a linear
+    // run's one QP; with large displacements, those the contact will most likely reach (a
+    // later row outside them widens the boundary, outer_iteration).
+    ScopedTimer t(timers, "contact search");
+    const contact::ContactConstraints reach =
+        contact::build_contact_constraints(problem.mesh, la::Vector::Zero(3 * problem.mesh.n_nodes()), _pair,
+                                           _contact_options);
+    _schur_boundary = schur_boundary_dofs(problem, _dirichlet, &reach, !_linear);
+  }
   update_stiffness(); // K_0 and R(X), kept for the whole run (modified Newton)
   const la::Vector f_ext = problem.external_force();
   _f_ext_stacked = _decomp->scatter_split(f_ext);
   _f_norm = f_ext.norm();
   const Eigen::Vector3d extent = problem.mesh.nodes.colwise().maxCoeff() - problem.mesh.nodes.colwise().minCoeff();
   _convergence = {settings.displacement_tolerance, settings.residual_tolerance, extent.norm()};
-  _pair = {problem.contacts[0].slave, problem.contacts[0].master};
-  _contact_options.search_distance = settings.search_distance;
-  _contact_options.formulation = settings.formulation;
   // The outer loop rebuilds the rows at every iteration, so rows near contact suffice; a linear
   // run solves once and needs every node within the search distance.
   if (!_linear)
@@ -258,6 +312,11 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
 void FetiContactSolve::update_stiffness()
 {
   _system->update(_u, &_timers);
+  update_boundary_operators();
+}
+
+void FetiContactSolve::update_boundary_operators()
+{
   if (!_schur_boundary.empty()) // the boundaries first: the choice below depends on their sizes
     _schur = std::make_unique<decomposition::SchurComplements>(*_system, _schur_boundary, false);
   const auto [use_explicit, reason] = choose_explicit(_settings, *_system, _schur.get(), _decomp->comm());
@@ -347,6 +406,15 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   {
     ScopedTimer t(_timers, "contact search");
     contact_rows = contact::build_contact_constraints(_problem.mesh, u_global, _pair, _contact_options);
+  }
+  if (_schur && !covers(_problem, _schur_boundary, contact_rows))
+  {
+    // Rows beyond the reach found at set-up (a sliding or spreading contact): the whole
+    // contact surfaces from now on, so that this happens at most once per run.
+    log::info(where + "contact rows beyond the Schur boundary: re-forming it on the whole contact surfaces");
+    _schur_boundary = schur_boundary_dofs(_problem, _dirichlet, nullptr, true);
+    _out.schur_boundary_widened = true;
+    update_boundary_operators();
   }
   const la::Vector residual = _t * _f_ext_stacked - _f_int;
   decomposition::ConstraintRows rows = _equality->rows;

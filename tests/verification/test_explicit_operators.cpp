@@ -83,3 +83,41 @@ TEST(ExplicitDualOperators, NeedTheDirichletPreconditioner)
   s.dual_operator = nonlinear::DualOperatorMode::automatic; // falls back to implicit
   EXPECT_EQ(nonlinear::solve_feti_contact(problem, s, timers).dual_operator, "implicit");
 }
+
+// The Dirichlet preconditioner's boundary starts with the contact DOFs of the rows within the
+// search distance at set-up. With a search distance of 1 mm on Hertz (large displacements, the
+// cylinder approaches by more than that), later rows reach nodes beyond those: the boundary is
+// formed again on the whole contact surfaces, which the explicit blocks need (a row touching a
+// DOF off their boundary is an error, FetiOperators::use_explicit). Reference: the lumped
+// preconditioner, which has no boundary, on the same rows: the same QP solutions, so the same
+// peak pressure to the QP tolerance.
+TEST(ExplicitDualOperators, ContactBeyondTheInitialReachWidensTheBoundary)
+{
+  problems::HertzParameters parameters;
+  parameters.mesh.refinement = 0.5;
+  const fem::Problem problem = problems::hertz_problem(parameters);
+  nonlinear::SolverSettings s;
+  s.kinematics = fem::Kinematics::total_lagrangian;
+  s.load_steps = 2;
+  s.search_distance = 1e-3;
+  s.dual_operator = nonlinear::DualOperatorMode::explicit_;
+  double peak[2] = {0, 0};
+  bool widened[2] = {false, false};
+  const dual::DualPreconditioner kinds[2] = {dual::DualPreconditioner::dirichlet, dual::DualPreconditioner::lumped};
+  for (int k = 0; k < 2; ++k)
+  {
+    s.dual.preconditioner = kinds[k];
+    if (kinds[k] == dual::DualPreconditioner::lumped)
+      s.dual_operator = nonlinear::DualOperatorMode::implicit;
+    TimerTable timers;
+    const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
+    ASSERT_TRUE(solution.converged) << solution.reason;
+    widened[k] = solution.schur_boundary_widened;
+    for (const auto& sample : nonlinear::slave_pressure_by_x(problem, solution, s.kinematics))
+      peak[k] = std::max(peak[k], sample.pressure);
+  }
+  std::printf("peak %.10g (Dirichlet, explicit) / %.10g (lumped)\n", peak[0], peak[1]);
+  EXPECT_TRUE(widened[0]);
+  EXPECT_FALSE(widened[1]);
+  EXPECT_NEAR(peak[0], peak[1], 1e-6 * peak[1]);
+}
