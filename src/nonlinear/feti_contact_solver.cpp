@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <cstdio>
 
@@ -126,7 +127,8 @@ bool covers(const fem::Problem& problem, const std::vector<char>& boundary,
 /// 2.5 ms implicit, 0.32 ms explicit (model: 4.6x); sphere on block, 17k DOFs, 4 subdomains,
 /// |b_s| ~ 1 560: 9.2 ms against 3.4 ms (model 2.8x; the blocks, 75 MiB, stream from memory
 /// at every step; |b_s| ~ 1 240 and 50 MiB since the supports' free components left the
-/// boundary, when auto turned explicit there: 1.25 s implicit against 0.99 s). Expected steps: 150 per load step, with small or large displacements
+/// boundary, when auto turned explicit there: 1.25 s implicit against 0.99 s). Expected
+/// steps: 150 per load step, with small or large displacements
 /// (operator applications measured at 76593aa: sphere on block 174 in one load step and 263 in
 /// two, hertz3d r1 219 and 315, Hertz 240 across large 296; large-displacement runs took
 /// five times as many before the outer loop's rows near contact, 1dfc320).
@@ -235,6 +237,9 @@ private:
   OuterConvergence _convergence;
   contact::ContactPair _pair;
   contact::ContactOptions _contact_options;
+  /// A linear run's rows at the reference configuration, found at set-up for the Schur
+  /// boundary and used by its first outer iteration instead of searching again.
+  std::optional<contact::ContactConstraints> _reference_rows;
 
   la::Vector _u;     ///< stacked displacement of the owned subdomains
   la::Vector _f_int; ///< internal force at _u, kept up to date after every update
@@ -290,10 +295,12 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
     // run's one QP; with large displacements, those the contact will most likely reach (a
     // later row outside them widens the boundary, outer_iteration).
     ScopedTimer t(timers, "contact search");
-    const contact::ContactConstraints reach =
+    contact::ContactConstraints reach =
         contact::build_contact_constraints(problem.mesh, la::Vector::Zero(3 * problem.mesh.n_nodes()), _pair,
                                            _contact_options);
     _schur_boundary = schur_boundary_dofs(problem, _dirichlet, &reach, !_linear);
+    if (_linear)
+      _reference_rows = std::move(reach);
   }
   update_stiffness(); // K_0 and R(X), kept for the whole run (modified Newton)
   const la::Vector f_ext = problem.external_force();
@@ -405,7 +412,11 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   contact::ContactConstraints contact_rows;
   {
     ScopedTimer t(_timers, "contact search");
-    contact_rows = contact::build_contact_constraints(_problem.mesh, u_global, _pair, _contact_options);
+    if (_reference_rows && (u_global.array() == 0).all()) // same mesh, u and options: same rows
+      contact_rows = std::move(*_reference_rows);
+    else
+      contact_rows = contact::build_contact_constraints(_problem.mesh, u_global, _pair, _contact_options);
+    _reference_rows.reset();
   }
   if (_schur && !covers(_problem, _schur_boundary, contact_rows))
   {
