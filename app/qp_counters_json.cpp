@@ -29,7 +29,8 @@ nlohmann::ordered_json qp_counters_json(const qp::QpCounters& c)
     json["solution_face_spectrum"] = {{"ritz_min", c.solution_face.min},
                                       {"ritz_max", c.solution_face.max},
                                       {"condition_estimate", c.solution_face.max / c.solution_face.min},
-                                      {"cg_steps", c.solution_face.cg_steps}};
+                                      {"cg_steps", c.solution_face.cg_steps},
+                                      {"steps_to_qp_rtol", c.solution_face_steps_to_rtol}};
   return json;
 }
 

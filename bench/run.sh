@@ -11,6 +11,7 @@
 #   bench/run.sh --only scalability                # parts: contact, scalability, weak, mprgp
 #   bench/run.sh --only weak --weak 1,2,4,8,16     # punch cells x k (k = 16: 1.5M DOFs, 2.8-3.5 GiB)
 #   bench/run.sh --only weak --weak-cells 236,15   # cells per subdomain of the weak series
+#   bench/run.sh --only weak --weak-problems gluing # the punch (contact) and/or its gluing-only twin
 #   bench/run.sh --feticon build-bench/feticon     # another build (default build/feticon)
 #   bench/run.sh --obstacle 1000 --obstacle-steps 1000   # MPRGP QP size n^2 and step cap
 #   bench/run.sh --preconditioners none,dirichlet  # dual preconditioners of the contact cases
@@ -25,6 +26,7 @@ reps=3
 only=contact,scalability,weak,mprgp
 weak=1,2,4,8
 weak_cells=236,15
+weak_problems=punch,gluing
 out=$root/bench/results
 obstacle=1000
 obstacle_steps=1000
@@ -44,6 +46,7 @@ while [[ $# -gt 0 ]]; do
     --operators) operators=$2; shift 2 ;;
     --weak) weak=$2; shift 2 ;;
     --weak-cells) weak_cells=$2; shift 2 ;;
+    --weak-problems) weak_problems=$2; shift 2 ;;
     -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1 (see --help)" >&2; exit 1 ;;
   esac
@@ -109,11 +112,24 @@ if [[ ,$only, == *,weak,* ]]; then
     sed -e "s/cells: \[40, 20, 1\]/cells: [$((40 * k)), $((20 * k)), 1]/" \
         -e "s/cells: \[12, 12, 1\]/cells: [$((12 * k)), $((12 * k)), 1]/" \
         "$root/examples/flat_punch/problem.yaml" > "$punch_dir/punch$k.yaml"
+    # The same meshes without contact: the punch lifted 0.1 m (beyond the search distance, so
+    # no contact rows) and held at its top, the traction on the block's top. Its dual has
+    # gluing and Dirichlet rows only and MPRGP is plain PCG: the growth of the linear FETI
+    # solve with the same operator and preconditioner, the floor under the contact series.
+    sed -e "s/origin: \[0, 0, 0\]/origin: [0, 0.1, 0]/" \
+        -e "s/{set: punch_ymax, traction/{set: base_ymax, traction/" \
+        -e "s/^  - {set: punch_xmin, x: 0}/  - {set: punch_xmin, x: 0}\n  - {set: punch_ymax, y: 0}/" \
+        "$punch_dir/punch$k.yaml" > "$punch_dir/gluing$k.yaml"
     for cells in ${weak_cells//,/ }; do
       for partitioner in metis rcb; do
+        [[ ,$weak_problems, == *,punch,* ]] || continue
         run_case "weak.punch.c$cells.k$k.$partitioner" --no-direct "$punch_dir/punch$k.yaml" \
           --set subdomain_cells=$cells --set partitioner=$partitioner
       done
+      if [[ ,$weak_problems, == *,gluing,* ]]; then
+        run_case "weak.gluing.c$cells.k$k.rcb" --no-direct "$punch_dir/gluing$k.yaml" \
+          --set subdomain_cells=$cells --set partitioner=rcb
+      fi
     done
   done
 fi

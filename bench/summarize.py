@@ -99,6 +99,7 @@ SCALABILITY = {
     "reps": lambda c: c["reps"],
 }
 WEAK = {
+    "problem": lambda c: c["case"].split(".")[1],
     "cells per subdomain": lambda c: c["case"].split(".")[2][1:],
     "k": lambda c: c["case"].split(".")[3][1:],
     "partitioner": lambda c: c["case"].split(".")[4],
@@ -112,7 +113,7 @@ WEAK = {
     "condition estimate": lambda c: c.get("qp.face_spectrum.condition_estimate"),
     "longest CG run": lambda c: c.get("qp.face_spectrum.cg_steps"),
     "dual solve (s)": lambda c: c["timings_seconds.dual solve (MPRGP)"],
-    "contact force (N)": lambda c: c["total_normal_force"],
+    "contact force (N)": lambda c: c.get("total_normal_force", 0),
     "peak MiB": lambda c: c["peak_memory_bytes"] / 2**20,
     "reps": lambda c: c["reps"],
 }
@@ -178,7 +179,7 @@ def main():
     scalability = sorted((c for n, c in cases.items() if n.startswith("scalability.")),
                          key=lambda c: (c.get("preconditioner", ""), float(c["case"].split(".")[1][1:])))
     weak = sorted((c for n, c in cases.items() if n.startswith("weak.")),
-                  key=lambda c: (-int(c["case"].split(".")[2][1:]), c["case"].split(".")[4],
+                  key=lambda c: (c["case"].split(".")[1] != "punch", -int(c["case"].split(".")[2][1:]), c["case"].split(".")[4],
                                  int(c["case"].split(".")[3][1:])))
     mprgp = [c for n, c in sorted(cases.items()) if n.startswith("mprgp.")]
     text = ""

@@ -123,11 +123,11 @@ private:
 /// contact multipliers), H = P F^ P + rho Q and M its preconditioner for the same rho (exact
 /// on Im Q), from `steps` preconditioned CG steps on D_F H D_F x = D_F r: what MPRGP's CG
 /// steps see once the active set has settled, from a run longer than MPRGP's, which restarts
-/// at every change of the active set. r has entries from a hash of the row id, so the
-/// estimate is the same on any number of ranks.
-qp::RitzValues solution_face_spectrum(const FetiOperators& feti, const CoarseProjector& projector,
-                                      const FOperator& F, const DualPenaltyOptions& options, double s,
-                                      int64_t n_equality, double rho, const std::vector<char>& free)
+/// at every change of the active set, and the step at which that run met the QP's rtol. r has
+/// entries from a hash of the row id, so the estimate is the same on any number of ranks.
+void measure_solution_face(const FetiOperators& feti, const CoarseProjector& projector, const FOperator& F,
+                           const DualPenaltyOptions& options, double s, int64_t n_equality, double rho,
+                           const std::vector<char>& free, qp::QpCounters& out)
 {
   const ProjectedOperator H(F, projector, rho);
   std::optional<DualPreconditionerOperator> M;
@@ -147,9 +147,20 @@ qp::RitzValues solution_face_spectrum(const FetiOperators& feti, const CoarsePro
   cg.rtol = 1e-13; // beyond that the recurrence is round-off
   cg.max_iterations = options.spectrum_steps;
   cg.preconditioner = M ? &*M : nullptr;
+  // The step at which the residual first meets the QP's own tolerance: the PCG count on the
+  // final face (an active-set method's floor), read off the same run.
+  double initial = 0;
+  out.solution_face_steps_to_rtol = 0;
+  cg.monitor = [&](int iteration, double residual)
+  {
+    if (iteration == 0)
+      initial = residual;
+    else if (out.solution_face_steps_to_rtol == 0 && residual <= options.rtol * initial)
+      out.solution_face_steps_to_rtol = iteration;
+  };
   la::Vector face_r;
   face.apply(r, face_r);
-  return qp::conjugate_gradient(H, face_r, x, cg, &face).ritz;
+  out.solution_face = qp::conjugate_gradient(H, face_r, x, cg, &face).ritz;
 }
 } // namespace
 
@@ -278,8 +289,8 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
     }
   out.active_contacts = feti.comm().sum(active_contacts);
   if (options.spectrum_steps > 0)
-    out.report.solution_face = solution_face_spectrum(feti, projector, F, options, norm.value, n_equality,
-                                                      smalbe_method ? out.smalbe_rho : options.rho, active);
+    measure_solution_face(feti, projector, F, options, norm.value, n_equality,
+                          smalbe_method ? out.smalbe_rho : options.rho, active, out.report);
   PrimalSolution primal = recover_primal(feti, f_stacked, c, out.lambda, active);
   out.u = std::move(primal.u);
   out.alpha = std::move(primal.alpha);

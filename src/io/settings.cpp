@@ -105,7 +105,7 @@ std::vector<SettingSpec> make_specs()
       {"qp.max_iterations", "20000", "MPRGP iteration limit", Type::integer, {}, 1, 1e9, false},
       {"qp.spectrum_steps", "0", "diagnostic: after each QP, this many preconditioned CG steps on the face "
        "of its solution estimate the spectrum of the preconditioned dual operator there "
-       "(summary.json qp.solution_face_spectrum); 0: off", Type::integer, {}, 0, 100000, false},
+       "and count the steps CG needs there to qp.rtol (summary.json qp.solution_face_spectrum); 0: off", Type::integer, {}, 0, 100000, false},
       {"memory_limit", "0", "memory budget of a run in bytes (e.g. 8e9): a run whose estimated peak "
        "exceeds it is refused before it allocates; 0: /proc/meminfo's MemAvailable, shared by the ranks "
        "of a node", Type::number, {}, 0, inf, false},

@@ -57,6 +57,9 @@ struct QpCounters
   /// The same from a long CG run on the face of a QP's solution (dual::DualPenaltyOptions::
   /// spectrum_steps), of the last QP that measured it; all 0 when none did.
   RitzValues solution_face;
+  /// Steps of that run until ||r|| <= (the QP's rtol) ||r_0|| first held: what preconditioned
+  /// CG needs on the solution's face, the active set known in advance (0 when not measured).
+  int solution_face_steps_to_rtol = 0;
 
   /// Sums the counters and times; keeps the Ritz values of the longer CG run.
   QpCounters& operator+=(const QpCounters& other)
@@ -77,7 +80,10 @@ struct QpCounters
     if (other.ritz.cg_steps > ritz.cg_steps)
       ritz = other.ritz;
     if (other.solution_face.cg_steps > 0)
+    {
       solution_face = other.solution_face;
+      solution_face_steps_to_rtol = other.solution_face_steps_to_rtol;
+    }
     return *this;
   }
 };

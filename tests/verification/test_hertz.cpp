@@ -151,12 +151,17 @@ TEST(HertzBenchmark, DirichletSpectrumOnTheSolutionFace)
                                         s.dual.spectrum_steps = 300;
                                       });
   const qp::RitzValues& face = measured.qp.solution_face;
-  std::printf("solution face: Ritz values [%.4f, %.2f] after %d CG steps; MPRGP's longest run [%.4f, %.2f] (%d steps)\n",
-              face.min, face.max, face.cg_steps, measured.qp.ritz.min, measured.qp.ritz.max, measured.qp.ritz.cg_steps);
+  std::printf("solution face: Ritz values [%.4f, %.2f] after %d CG steps (qp.rtol met at %d); MPRGP's longest run "
+              "[%.4f, %.2f] (%d steps)\n",
+              face.min, face.max, face.cg_steps, measured.qp.solution_face_steps_to_rtol, measured.qp.ritz.min,
+              measured.qp.ritz.max, measured.qp.ritz.cg_steps);
   EXPECT_EQ(plain.qp.solution_face.cg_steps, 0);
   EXPECT_GT(face.cg_steps, 20);
   EXPECT_GT(face.min, 1 - 1e-3);
   EXPECT_LT(face.max, 60);
+  // The run goes on to 1e-13, so it passed the QP's rtol (1e-8) on the way.
+  EXPECT_GT(measured.qp.solution_face_steps_to_rtol, 0);
+  EXPECT_LT(measured.qp.solution_face_steps_to_rtol, face.cg_steps);
   EXPECT_EQ(measured.u, plain.u);
 }
 
