@@ -65,6 +65,10 @@ std::vector<SettingSpec> make_specs()
       {"contact.formulation", "mortar", "contact rows: node_to_segment (slave node on master "
                                                  "face) or mortar (dual mortar, segment-to-segment)",
        Type::text, {"node_to_segment", "mortar"}, 0, 0, false},
+      {"contact.linear_band", "0.25", "small displacements: the QP gets the contact rows whose gap is "
+       "below the smallest plus this many master face diagonals, and another QP follows with the "
+       "rows near contact if the answer penetrates a row left out (a large value: every row within "
+       "the search distance)", Type::number, {}, 0, inf, true},
       {"contact.feasibility_tolerance", "1e-3", "warn (summary.json warnings, stderr) when the dual "
        "penalty leaves ||G lambda - e|| / ||e|| above this", Type::number, {}, 0, 1, true},
       {"eps_n", "100", "primal penalty eps_n as a multiple of max diag K", Type::number, {}, 0, inf, true},

@@ -1,4 +1,5 @@
 #include "nonlinear/feti_contact_solver.hpp"
+#include "nonlinear/linear_contact_rows.hpp"
 
 #include "common/error.hpp"
 #include "common/log.hpp"
@@ -237,9 +238,9 @@ private:
   OuterConvergence _convergence;
   contact::ContactPair _pair;
   contact::ContactOptions _contact_options;
-  /// A linear run's rows at the reference configuration, found at set-up for the Schur
-  /// boundary and used by its first outer iteration instead of searching again.
-  std::optional<contact::ContactConstraints> _reference_rows;
+  /// A linear run's rows: the candidates at the reference configuration (found at set-up,
+  /// also for the Schur boundary) and the subset near contact that its QPs get.
+  std::optional<LinearContactRows> _linear_rows;
 
   la::Vector _u;     ///< stacked displacement of the owned subdomains
   la::Vector _f_int; ///< internal force at _u, kept up to date after every update
@@ -300,7 +301,7 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
                                            _contact_options);
     _schur_boundary = schur_boundary_dofs(problem, _dirichlet, &reach, !_linear);
     if (_linear)
-      _reference_rows = std::move(reach);
+      _linear_rows.emplace(problem.mesh, _pair.master, std::move(reach), settings.linear_contact_band);
   }
   update_stiffness(); // K_0 and R(X), kept for the whole run (modified Newton)
   const la::Vector f_ext = problem.external_force();
@@ -412,11 +413,10 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   contact::ContactConstraints contact_rows;
   {
     ScopedTimer t(_timers, "contact search");
-    if (_reference_rows && (u_global.array() == 0).all()) // same mesh, u and options: same rows
-      contact_rows = std::move(*_reference_rows);
+    if (_linear_rows)
+      contact_rows = _linear_rows->selected_rows(u_global);
     else
       contact_rows = contact::build_contact_constraints(_problem.mesh, u_global, _pair, _contact_options);
-    _reference_rows.reset();
   }
   if (_schur && !covers(_problem, _schur_boundary, contact_rows))
   {
@@ -486,8 +486,25 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
                                           "load_steps or newton.stiffness=iteration",
                                   false);
   }
-  _out.constraints = std::move(contact_rows);
-  _out.contact_lambda = contact_lambda;
+  // A linear run's QP had the rows near contact only; if a left-out candidate is penetrated
+  // at its answer, another QP follows with the rows near contact at u (LinearContactRows).
+  bool more_rows = false;
+  if (_linear_rows)
+  {
+    const int64_t before = _linear_rows->n_selected();
+    more_rows = solution.report.converged && _linear_rows->expand(_decomp->gather_mean(_decomp->gather_stacked(_u)));
+    if (more_rows)
+      log::info(where + "a contact row left out is penetrated: " + std::to_string(_linear_rows->n_selected() - before) +
+                " rows added, " + std::to_string(_linear_rows->n_selected()) + " of " +
+                std::to_string(_linear_rows->n_candidates()));
+    _out.contact_lambda = _linear_rows->all_multipliers(contact_rows, contact_lambda);
+    _out.constraints = _linear_rows->candidates();
+  }
+  else
+  {
+    _out.constraints = std::move(contact_rows);
+    _out.contact_lambda = contact_lambda;
+  }
   _out.n_dual = feti->n_dual_global();
   _out.n_kernel = feti->n_kernel();
   _out.feasibility_error = solution.feasibility_error;
@@ -500,7 +517,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   // test passes after a forced one, the next QP, warm-started at the answer, is exact.
   const bool exact_qp = dual_options.rtol <= _settings.dual.rtol;
   const bool converged =
-      _linear || _convergence.converged(du_norm, u_norm, du_max, it.residual_norm, active, _previous_active);
+      _linear ? !more_rows : _convergence.converged(du_norm, u_norm, du_max, it.residual_norm, active, _previous_active);
   _previous_active = std::move(active);
   if (converged && !exact_qp)
     _forcing = false;

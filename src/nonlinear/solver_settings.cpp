@@ -32,5 +32,6 @@ SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
   formulation = s.text("contact.formulation") == "mortar" ? contact::ContactFormulation::mortar
                                                           : contact::ContactFormulation::node_to_segment;
   eps_n_factor = s.number("eps_n");
+  linear_contact_band = s.number("contact.linear_band");
 }
 } // namespace feticon::nonlinear

@@ -90,6 +90,7 @@ struct SolverSettings
       decomposition::GeneralizedInverseMethod::fixing_dofs;
   dual::DualPenaltyOptions dual;
   double search_distance = 0;          ///< 0: automatic (about one master element)
+  double linear_contact_band = 0.25;   ///< LinearContactRows' band (master face diagonals)
   contact::ContactFormulation formulation;
   double eps_n_factor;                 ///< primal penalty eps_n = factor * max diag K
 };

@@ -1,0 +1,109 @@
+#include "nonlinear/linear_contact_rows.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace feticon::nonlinear
+{
+namespace
+{
+/// Linearized gaps g_i - |b_i| B_i u (m) of every row; the reference gaps for u empty.
+la::Vector linearized_gaps(const contact::ContactConstraints& rows, const la::Vector& u)
+{
+  la::Vector gap = rows.c;
+  if (u.size() > 0)
+    gap -= rows.B * u;
+  for (la::Index i = 0; i < gap.size(); ++i)
+    gap(i) *= rows.row_norm[i];
+  return gap;
+}
+} // namespace
+
+LinearContactRows::LinearContactRows(const mesh::HexMesh& mesh, const std::string& master,
+                                     contact::ContactConstraints candidates, double band)
+    : _candidates(std::move(candidates))
+{
+  const std::vector<mesh::Face>& faces = mesh.face_set(master);
+  const auto n = static_cast<size_t>(_candidates.n_rows());
+  _band_gap.resize(n);
+  double smallest = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < n; ++i)
+  {
+    const auto quad = contact::current_face_coordinates(mesh, {}, faces[_candidates.master_face[i]]);
+    _band_gap[i] = band * contact::face_diagonal(quad);
+    smallest = std::min(smallest, _candidates.gap[i]);
+  }
+  const double contact_level = std::max(smallest, 0.0);
+  _selected.resize(n);
+  for (size_t i = 0; i < n; ++i)
+    _selected[i] = _candidates.gap[i] < contact_level + _band_gap[i];
+}
+
+contact::ContactConstraints LinearContactRows::selected_rows(const la::Vector& u) const
+{
+  return subset(_selected, u);
+}
+
+bool LinearContactRows::expand(const la::Vector& u)
+{
+  const la::Vector gap = linearized_gaps(_candidates, u);
+  bool penetrates = false;
+  for (la::Index i = 0; i < gap.size(); ++i)
+    penetrates |= !_selected[i] && gap(i) < 0;
+  if (!penetrates)
+    return false;
+  for (la::Index i = 0; i < gap.size(); ++i)
+    _selected[i] |= gap(i) < _band_gap[i];
+  return true;
+}
+
+la::Vector LinearContactRows::all_multipliers(const contact::ContactConstraints& selected,
+                                               const la::Vector& lambda) const
+{
+  la::Vector all = la::Vector::Zero(_candidates.n_rows());
+  la::Index k = 0;
+  for (la::Index i = 0; i < all.size() && k < lambda.size(); ++i)
+    if (_candidates.slave_node[i] == selected.slave_node[k])
+      all(i) = lambda(k++);
+  return all;
+}
+
+int64_t LinearContactRows::n_selected() const
+{
+  return std::count(_selected.begin(), _selected.end(), 1);
+}
+
+contact::ContactConstraints LinearContactRows::subset(const std::vector<char>& keep, const la::Vector& u) const
+{
+  const contact::ContactConstraints& all = _candidates;
+  contact::ContactConstraints out;
+  out.search_distance = all.search_distance;
+  out.n_slave_nodes = all.n_slave_nodes;
+  out.n_overhanging = all.n_overhanging;
+  const la::Vector gap = linearized_gaps(all, u);
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (la::Index i = 0; i < all.n_rows(); ++i)
+  {
+    if (!keep[i])
+      continue;
+    const auto row = static_cast<int>(out.slave_node.size());
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(all.B, i); it; ++it)
+      triplets.emplace_back(row, static_cast<int>(it.col()), it.value());
+    out.slave_node.push_back(all.slave_node[i]);
+    out.normal.push_back(all.normal[i]);
+    out.gap.push_back(gap(i));
+    out.row_norm.push_back(all.row_norm[i]);
+    out.slave_area.push_back(all.slave_area[i]);
+    out.master_face.push_back(all.master_face[i]);
+    out.xi.push_back(all.xi[i]);
+    out.kind.push_back(all.kind[i]);
+  }
+  const auto n_rows = static_cast<la::Index>(out.slave_node.size());
+  out.B.resize(n_rows, all.B.cols());
+  out.B.setFromTriplets(triplets.begin(), triplets.end());
+  out.c.resize(n_rows);
+  for (la::Index i = 0; i < n_rows; ++i)
+    out.c(i) = out.gap[i] / out.row_norm[i];
+  return out;
+}
+} // namespace feticon::nonlinear

@@ -1,0 +1,57 @@
+#pragma once
+/// @file The contact rows of a linear (small-displacement) run: the candidates within the
+/// search distance, and the subset the QP gets.
+///
+/// A linear run has one set of candidate rows, those of every slave node within the search
+/// distance of the master surface in the reference configuration (the automatic distance is
+/// the largest master face diagonal, so on a graded mesh the band reaches far beyond the
+/// contact zone). Rows that stay inactive do not change the answer, but they are not free:
+/// on the Hertz mesh at refinement 2, the rows of nodes 5-40 mm away from the master surface
+/// (58 of 1 146 dual rows) raised the largest eigenvalue of the preconditioned dual operator on
+/// the solution's face from 9.3 to 76 and doubled the MPRGP steps (docs/contact.md, "The far
+/// contact rows of a linear run").
+///
+/// So the QP gets only the rows near contact, g_i < max(g_min, 0) + band d_i (d_i the
+/// longer diagonal of the row's master face), with the linearized gaps c_i - B_i u of the
+/// current u. After each QP, expand(u) checks the other candidates' linearized gaps: if one
+/// is negative (a node would penetrate), every candidate within the band of contact at u is
+/// added and another QP follows; if none is, the answer satisfies every candidate row with a
+/// zero multiplier on the left-out ones, so it is the solution of the QP with all of them
+/// (a convex QP whose solution with fewer constraints satisfies the others).
+
+#include "contact/contact_constraints.hpp"
+#include "mesh/hex_mesh.hpp"
+
+#include <vector>
+
+namespace feticon::nonlinear
+{
+class LinearContactRows
+{
+public:
+  /// @param candidates rows at the reference configuration (u = 0)
+  /// @param band       the near-contact band in master face diagonals
+  LinearContactRows(const mesh::HexMesh& mesh, const std::string& master, contact::ContactConstraints candidates,
+                    double band);
+
+  /// The selected rows with c = c_ref - B u (u global, 3 per node).
+  contact::ContactConstraints selected_rows(const la::Vector& u) const;
+  /// Adds the candidates within the band of contact at u if one of the left-out ones has a
+  /// negative linearized gap there; returns whether it added any (another QP is needed).
+  bool expand(const la::Vector& u);
+  /// Every candidate row (reference gaps), and the multipliers of `selected` (by slave node)
+  /// spread over them, zero on the left-out ones: the output of a converged run.
+  const contact::ContactConstraints& candidates() const { return _candidates; }
+  la::Vector all_multipliers(const contact::ContactConstraints& selected, const la::Vector& lambda) const;
+
+  int64_t n_selected() const;
+  int64_t n_candidates() const { return _candidates.n_rows(); }
+
+private:
+  contact::ContactConstraints subset(const std::vector<char>& keep, const la::Vector& u) const;
+
+  contact::ContactConstraints _candidates;
+  std::vector<double> _band_gap; ///< band d_i per row (m)
+  std::vector<char> _selected;
+};
+} // namespace feticon::nonlinear

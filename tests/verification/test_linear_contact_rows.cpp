@@ -1,0 +1,81 @@
+/// A linear run's QP gets only the contact rows near contact (nonlinear/linear_contact_rows.hpp).
+/// Reference: the same run with every candidate row within the search distance (band 1e300,
+/// the QP of the seed). The left-out rows are inactive at the answer, so both QPs have the
+/// same solution: displacements and peak pressure agree to the QP tolerance (1e-8 relative on
+/// the projected gradient; 1e-6 allows for the conditioning of the two dual problems), and the
+/// answer satisfies every candidate row (linearized gap >= 0, multiplier >= 0, zero
+/// multiplier on an open row): the KKT conditions of the QP with all of them.
+
+#include "nonlinear/contact_pressure.hpp"
+#include "nonlinear/feti_contact_solver.hpp"
+#include "problems/hertz.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+
+using namespace feticon;
+
+namespace
+{
+struct BandRun
+{
+  nonlinear::ContactSolution solution;
+  double peak = 0;
+  int mprgp = 0;
+};
+
+BandRun run(const fem::Problem& problem, double band)
+{
+  nonlinear::SolverSettings s;
+  s.kinematics = fem::Kinematics::linear;
+  s.load_steps = 1;
+  s.dual.preconditioner = dual::DualPreconditioner::dirichlet;
+  s.linear_contact_band = band;
+  TimerTable timers;
+  BandRun out{nonlinear::solve_feti_contact(problem, s, timers)};
+  EXPECT_TRUE(out.solution.converged) << out.solution.reason;
+  for (const auto& sample : nonlinear::slave_pressure_by_x(problem, out.solution, s.kinematics))
+    out.peak = std::max(out.peak, sample.pressure);
+  for (const auto& it : out.solution.history)
+    out.mprgp += it.qp.iterations;
+  return out;
+}
+} // namespace
+
+TEST(LinearContactRows, RowsNearContactGiveTheAnswerOfEveryRow)
+{
+  problems::HertzParameters parameters;
+  parameters.mesh.refinement = 1;
+  const fem::Problem problem = problems::hertz_problem(parameters);
+  const BandRun every = run(problem, 1e300);
+  const BandRun near = run(problem, 0.25);  // the default
+  const BandRun narrow = run(problem, 0.02); // too few rows at first: more QPs
+  std::printf("MPRGP steps: every row %d, band 0.25 %d, band 0.02 %d in %zu QPs; dual sizes %lld / %lld\n",
+              every.mprgp, near.mprgp, narrow.mprgp, narrow.solution.history.size(),
+              static_cast<long long>(every.solution.n_dual), static_cast<long long>(near.solution.n_dual));
+  EXPECT_EQ(every.solution.history.size(), 1u);
+  EXPECT_GE(narrow.solution.history.size(), 2u);
+  EXPECT_LT(near.solution.n_dual, every.solution.n_dual);
+  for (const BandRun* r : {&near, &narrow})
+  {
+    EXPECT_LT((r->solution.u - every.solution.u).norm(), 1e-6 * every.solution.u.norm());
+    EXPECT_NEAR(r->peak, every.peak, 1e-6 * every.peak);
+    // The output holds every candidate row, and the answer satisfies all of them.
+    const contact::ContactConstraints& rows = r->solution.constraints;
+    ASSERT_EQ(rows.n_rows(), every.solution.constraints.n_rows());
+    const la::Vector gap = rows.c - rows.B * r->solution.u; // normalized, m / |b_i|
+    const double tolerance = 1e-6 * r->solution.u.cwiseAbs().maxCoeff();
+    const double lambda_max = r->solution.contact_lambda.maxCoeff();
+    for (la::Index i = 0; i < gap.size(); ++i)
+    {
+      EXPECT_GT(gap(i), -tolerance) << "row " << i;
+      EXPECT_GT(r->solution.contact_lambda(i), -1e-8 * lambda_max) << "row " << i;
+      if (gap(i) > tolerance)
+      {
+        EXPECT_LT(r->solution.contact_lambda(i), 1e-8 * lambda_max) << "row " << i;
+      }
+    }
+  }
+}
