@@ -290,16 +290,18 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
   _pair = {problem.contacts[0].slave, problem.contacts[0].master};
   _contact_options.search_distance = settings.search_distance;
   _contact_options.formulation = settings.formulation;
-  if (settings.dual.preconditioner == dual::DualPreconditioner::dirichlet)
+  const bool dirichlet = settings.dual.preconditioner == dual::DualPreconditioner::dirichlet;
+  if (dirichlet || _linear)
   {
-    // The rows within the search distance of the reference configuration: those of a linear
-    // run's one QP; with large displacements, those the contact will most likely reach (a
+    // The rows within the search distance of the reference configuration: a linear run's
+    // candidates; with large displacements, those the contact will most likely reach (a
     // later row outside them widens the boundary, outer_iteration).
     ScopedTimer t(timers, "contact search");
     contact::ContactConstraints reach =
         contact::build_contact_constraints(problem.mesh, la::Vector::Zero(3 * problem.mesh.n_nodes()), _pair,
                                            _contact_options);
-    _schur_boundary = schur_boundary_dofs(problem, _dirichlet, &reach, !_linear);
+    if (dirichlet)
+      _schur_boundary = schur_boundary_dofs(problem, _dirichlet, &reach, !_linear);
     if (_linear)
       _linear_rows.emplace(problem.mesh, _pair.master, std::move(reach), settings.linear_contact_band);
   }

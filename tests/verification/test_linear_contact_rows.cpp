@@ -26,12 +26,13 @@ struct BandRun
   int mprgp = 0;
 };
 
-BandRun run(const fem::Problem& problem, double band)
+BandRun run(const fem::Problem& problem, double band,
+           dual::DualPreconditioner preconditioner = dual::DualPreconditioner::dirichlet)
 {
   nonlinear::SolverSettings s;
   s.kinematics = fem::Kinematics::linear;
   s.load_steps = 1;
-  s.dual.preconditioner = dual::DualPreconditioner::dirichlet;
+  s.dual.preconditioner = preconditioner;
   s.linear_contact_band = band;
   TimerTable timers;
   BandRun out{nonlinear::solve_feti_contact(problem, s, timers)};
@@ -52,13 +53,15 @@ TEST(LinearContactRows, RowsNearContactGiveTheAnswerOfEveryRow)
   const BandRun every = run(problem, 1e300);
   const BandRun near = run(problem, 0.25);  // the default
   const BandRun narrow = run(problem, 0.02); // too few rows at first: more QPs
+  const BandRun lumped = run(problem, 0.25, dual::DualPreconditioner::lumped); // no Schur boundary
   std::printf("MPRGP steps: every row %d, band 0.25 %d, band 0.02 %d in %zu QPs; dual sizes %lld / %lld\n",
               every.mprgp, near.mprgp, narrow.mprgp, narrow.solution.history.size(),
               static_cast<long long>(every.solution.n_dual), static_cast<long long>(near.solution.n_dual));
   EXPECT_EQ(every.solution.history.size(), 1u);
   EXPECT_GE(narrow.solution.history.size(), 2u);
   EXPECT_LT(near.solution.n_dual, every.solution.n_dual);
-  for (const BandRun* r : {&near, &narrow})
+  EXPECT_LT(lumped.solution.n_dual, every.solution.n_dual);
+  for (const BandRun* r : {&near, &narrow, &lumped})
   {
     EXPECT_LT((r->solution.u - every.solution.u).norm(), 1e-6 * every.solution.u.norm());
     EXPECT_NEAR(r->peak, every.peak, 1e-6 * every.peak);
