@@ -4,6 +4,7 @@
 #include "la/schur_complement.hpp"
 #include "la/symmetric_product.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace feticon::decomposition
@@ -68,13 +69,25 @@ la::Vector form_blocks(const la::SparseMatrix& K, const GeneralizedInverse& K_pl
 } // namespace
 
 ExplicitBoundaryOperators::ExplicitBoundaryOperators(const SubdomainSystem& system,
-                                                     const SchurComplements& schur)
+                                                     const SchurComplements& schur,
+                                                     ExplicitBoundaryOperators* reuse)
 {
   const Decomposition& decomp = system.decomposition();
   _first = decomp.first_owned();
   _local.resize(decomp.end_owned() - decomp.first_owned());
+  std::vector<char> form(_local.size(), 1);
+  if (reuse && reuse->_first == _first && reuse->_local.size() == _local.size())
+    for (size_t k = 0; k < _local.size(); ++k)
+      if (reuse->_local[k].boundary == schur.boundary(_first + static_cast<int32_t>(k)))
+      {
+        _local[k] = std::move(reuse->_local[k]);
+        form[k] = 0;
+      }
+  _formed = static_cast<int32_t>(std::count(form.begin(), form.end(), 1));
   parallel_for(decomp.first_owned(), decomp.end_owned(), setup_work, [&](int32_t s)
   {
+    if (!form[s - _first])
+      return;
     Local& local = _local[s - _first];
     local.boundary = schur.boundary(s);
     const la::Vector schur_diagonal = form_blocks(system.operators(s).K, system.operators(s).K_plus, local.boundary,

@@ -38,7 +38,10 @@ class ExplicitBoundaryOperators
 public:
   /// @param system subdomain K+ (kept by reference; must outlive this object)
   /// @param schur  the boundaries b_s (used during construction only; its K_ii factors are not needed)
-  ExplicitBoundaryOperators(const SubdomainSystem& system, const SchurComplements& schur);
+  /// @param reuse  optional operators of the same K: the blocks of every subdomain whose
+  ///               boundary is unchanged are moved from it instead of formed again
+  ExplicitBoundaryOperators(const SubdomainSystem& system, const SchurComplements& schur,
+                            ExplicitBoundaryOperators* reuse = nullptr);
 
   /// Boundary DOFs of owned subdomain s (active DOFs, increasing).
   const std::vector<int32_t>& boundary(int32_t s) const { return local(s).boundary; }
@@ -47,6 +50,8 @@ public:
   la::Vector apply_schur(int32_t s, const la::Vector& v) const;
   /// Bytes of the dense blocks of this rank.
   int64_t bytes() const;
+  /// Owned subdomains whose blocks the constructor formed (the others were reused).
+  int32_t formed() const { return _formed; }
 
 private:
   struct Local
@@ -58,6 +63,7 @@ private:
   const Local& local(int32_t s) const { return _local[s - _first]; }
 
   int32_t _first = 0;
+  int32_t _formed = 0;
   std::vector<Local> _local; ///< per owned subdomain (index s - first owned)
 };
 

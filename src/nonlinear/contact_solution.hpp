@@ -70,8 +70,8 @@ struct ContactSolution
   std::string dual_operator = "implicit", dual_operator_reason;
   int64_t explicit_operator_bytes = 0; ///< dense boundary blocks of all ranks (0: implicit)
   /// Whether contact rows left the contact DOFs the Dirichlet preconditioner's boundary started
-  /// with (those within the search distance at set-up), so that it was formed again on the
-  /// whole contact surfaces (feti_contact_solver.cpp).
+  /// with, so that it grew by the rows near contact at the current u and the operators of the
+  /// subdomains whose boundary changed were formed again (feti_contact_solver.cpp).
   bool schur_boundary_widened = false;
   double penalty = 0; ///< eps_n (N/m) for the primal penalty
   RestartState restart; ///< state after the last converged load step (FETI solver)

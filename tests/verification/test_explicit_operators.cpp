@@ -84,11 +84,12 @@ TEST(ExplicitDualOperators, NeedTheDirichletPreconditioner)
   EXPECT_EQ(nonlinear::solve_feti_contact(problem, s, timers).dual_operator, "implicit");
 }
 
-// The Dirichlet preconditioner's boundary starts with the contact DOFs of the rows within the
-// search distance at set-up. With a search distance of 1 mm on Hertz (large displacements, the
-// cylinder approaches by more than that), later rows reach nodes beyond those: the boundary is
-// formed again on the whole contact surfaces, which the explicit blocks need (a row touching a
-// DOF off their boundary is an error, FetiOperators::use_explicit). Reference: the lumped
+// The Dirichlet preconditioner's boundary starts with the contact DOFs of the rows near contact
+// at set-up. With a search distance of 1 mm on Hertz (large displacements, the cylinder
+// approaches by more than that), later rows reach nodes beyond those: the boundary grows by
+// the rows near contact at the current u, which the explicit blocks need (a row touching a
+// DOF off their boundary is an error, FetiOperators::use_explicit), and the blocks of the
+// subdomains whose boundary changed are formed again. Reference: the lumped
 // preconditioner, which has no boundary, on the same rows: the same QP solutions, so the same
 // peak pressure to the QP tolerance.
 TEST(ExplicitDualOperators, ContactBeyondTheInitialReachWidensTheBoundary)
