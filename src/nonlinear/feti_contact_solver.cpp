@@ -303,9 +303,10 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
   const bool dirichlet = settings.dual.preconditioner == dual::DualPreconditioner::dirichlet;
   if (dirichlet || _linear)
   {
-    // The rows within the search distance of the reference configuration: a linear run's
-    // candidates; with large displacements, those the contact will most likely reach (a
-    // later row outside them widens the boundary, outer_iteration).
+    // In the reference configuration: a linear run's candidates, every row within the search
+    // distance (LinearContactRows picks its QPs' rows among them); with large displacements,
+    // the rows near contact (reach_fraction), which a later row beyond them grows
+    // (outer_iteration).
     ScopedTimer t(timers, "contact search");
     const la::Vector zero = la::Vector::Zero(3 * problem.mesh.n_nodes());
     contact::ContactConstraints reach =
