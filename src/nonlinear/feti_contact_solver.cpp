@@ -443,12 +443,13 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   {
     // Rows beyond the reach found so far (a sliding or spreading contact): the boundary grows
     // by the reach at u, and the subdomains whose boundary did not change keep their blocks.
-    // (A linear run's rows are among the candidates the boundary was made for: never here.)
+    // The reach holds the rows (the same search at u with a wider band than
+    // near_contact_fraction). A linear run's rows are among the candidates the boundary was
+    // made for: never here.
     const contact::ContactConstraints reach = reach_rows(u_global);
     const std::vector<char> grown = schur_boundary_dofs(_problem, _dirichlet, &reach, true);
-    const std::vector<char> touched = schur_boundary_dofs(_problem, _dirichlet, &contact_rows, true);
     for (size_t i = 0; i < grown.size(); ++i)
-      _schur_boundary[i] |= grown[i] | touched[i];
+      _schur_boundary[i] |= grown[i];
     _out.schur_boundary_widened = true;
     const int reformed = update_boundary_operators(true);
     log::info(where + "contact rows beyond the Schur boundary: grown to the rows near contact, " +

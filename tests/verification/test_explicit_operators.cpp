@@ -5,13 +5,12 @@
 /// and displacements to 1e-8 relative.
 
 #include "common/error.hpp"
-#include "nonlinear/contact_pressure.hpp"
 #include "nonlinear/feti_contact_solver.hpp"
 #include "problems/hertz.hpp"
+#include "tests/support/feti_contact_run.hpp"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -19,15 +18,7 @@ using namespace feticon;
 
 namespace
 {
-struct OperatorRun
-{
-  la::Vector u;
-  double peak = 0;
-  int mprgp = 0;
-  std::string mode;
-};
-
-OperatorRun run(fem::Kinematics kinematics, nonlinear::DualOperatorMode mode)
+test::FetiContactRun run(fem::Kinematics kinematics, nonlinear::DualOperatorMode mode)
 {
   problems::HertzParameters parameters;
   parameters.mesh.refinement = 1;
@@ -37,17 +28,7 @@ OperatorRun run(fem::Kinematics kinematics, nonlinear::DualOperatorMode mode)
   s.load_steps = kinematics == fem::Kinematics::linear ? 1 : 2;
   s.dual.preconditioner = dual::DualPreconditioner::dirichlet;
   s.dual_operator = mode;
-  TimerTable timers;
-  const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
-  EXPECT_TRUE(solution.converged) << solution.reason;
-  OperatorRun out;
-  out.u = solution.u;
-  for (const auto& sample : nonlinear::slave_pressure_by_x(problem, solution, kinematics))
-    out.peak = std::max(out.peak, sample.pressure);
-  for (const auto& it : solution.history)
-    out.mprgp += it.qp.iterations;
-  out.mode = solution.dual_operator;
-  return out;
+  return test::run_feti_contact(problem, s);
 }
 } // namespace
 
@@ -55,11 +36,11 @@ TEST(ExplicitDualOperators, SameSolutionAsImplicit)
 {
   for (auto kinematics : {fem::Kinematics::linear, fem::Kinematics::total_lagrangian})
   {
-    const OperatorRun implicit = run(kinematics, nonlinear::DualOperatorMode::implicit);
-    const OperatorRun explicit_ = run(kinematics, nonlinear::DualOperatorMode::explicit_);
-    EXPECT_EQ(implicit.mode, "implicit");
-    EXPECT_EQ(explicit_.mode, "explicit");
-    const double du = (explicit_.u - implicit.u).norm() / implicit.u.norm();
+    const test::FetiContactRun implicit = run(kinematics, nonlinear::DualOperatorMode::implicit);
+    const test::FetiContactRun explicit_ = run(kinematics, nonlinear::DualOperatorMode::explicit_);
+    EXPECT_EQ(implicit.solution.dual_operator, "implicit");
+    EXPECT_EQ(explicit_.solution.dual_operator, "explicit");
+    const double du = (explicit_.solution.u - implicit.solution.u).norm() / implicit.solution.u.norm();
     std::printf("%s: MPRGP %d implicit, %d explicit; |du|/|u| = %.1e, peak %.10g / %.10g\n",
                 kinematics == fem::Kinematics::linear ? "small" : "large", implicit.mprgp, explicit_.mprgp,
                 du, implicit.peak, explicit_.peak);
@@ -110,12 +91,10 @@ TEST(ExplicitDualOperators, ContactBeyondTheInitialReachWidensTheBoundary)
     s.dual.preconditioner = kinds[k];
     if (kinds[k] == dual::DualPreconditioner::lumped)
       s.dual_operator = nonlinear::DualOperatorMode::implicit;
-    TimerTable timers;
-    const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
-    ASSERT_TRUE(solution.converged) << solution.reason;
-    widened[k] = solution.schur_boundary_widened;
-    for (const auto& sample : nonlinear::slave_pressure_by_x(problem, solution, s.kinematics))
-      peak[k] = std::max(peak[k], sample.pressure);
+    const test::FetiContactRun run = test::run_feti_contact(problem, s);
+    ASSERT_TRUE(run.solution.converged);
+    widened[k] = run.solution.schur_boundary_widened;
+    peak[k] = run.peak;
   }
   std::printf("peak %.10g (Dirichlet, explicit) / %.10g (lumped)\n", peak[0], peak[1]);
   EXPECT_TRUE(widened[0]);

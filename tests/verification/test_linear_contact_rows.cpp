@@ -6,42 +6,26 @@
 /// answer satisfies every candidate row (linearized gap >= 0, multiplier >= 0, zero
 /// multiplier on an open row): the KKT conditions of the QP with all of them.
 
-#include "nonlinear/contact_pressure.hpp"
-#include "nonlinear/feti_contact_solver.hpp"
 #include "problems/hertz.hpp"
+#include "tests/support/feti_contact_run.hpp"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstdio>
 
 using namespace feticon;
 
 namespace
 {
-struct BandRun
-{
-  nonlinear::ContactSolution solution;
-  double peak = 0;
-  int mprgp = 0;
-};
-
-BandRun run(const fem::Problem& problem, double band,
-           dual::DualPreconditioner preconditioner = dual::DualPreconditioner::dirichlet)
+test::FetiContactRun run(const fem::Problem& problem, double band,
+                         dual::DualPreconditioner preconditioner = dual::DualPreconditioner::dirichlet)
 {
   nonlinear::SolverSettings s;
   s.kinematics = fem::Kinematics::linear;
   s.load_steps = 1;
   s.dual.preconditioner = preconditioner;
   s.linear_contact_band = band;
-  TimerTable timers;
-  BandRun out{nonlinear::solve_feti_contact(problem, s, timers)};
-  EXPECT_TRUE(out.solution.converged) << out.solution.reason;
-  for (const auto& sample : nonlinear::slave_pressure_by_x(problem, out.solution, s.kinematics))
-    out.peak = std::max(out.peak, sample.pressure);
-  for (const auto& it : out.solution.history)
-    out.mprgp += it.qp.iterations;
-  return out;
+  return test::run_feti_contact(problem, s);
 }
 } // namespace
 
@@ -50,10 +34,10 @@ TEST(LinearContactRows, RowsNearContactGiveTheAnswerOfEveryRow)
   problems::HertzParameters parameters;
   parameters.mesh.refinement = 1;
   const fem::Problem problem = problems::hertz_problem(parameters);
-  const BandRun every = run(problem, 1e300);
-  const BandRun near = run(problem, 0.25);  // the default
-  const BandRun narrow = run(problem, 0.02); // too few rows at first: more QPs
-  const BandRun lumped = run(problem, 0.25, dual::DualPreconditioner::lumped); // no Schur boundary
+  const test::FetiContactRun every = run(problem, 1e300);
+  const test::FetiContactRun near = run(problem, 0.25);  // the default
+  const test::FetiContactRun narrow = run(problem, 0.02); // too few rows at first: more QPs
+  const test::FetiContactRun lumped = run(problem, 0.25, dual::DualPreconditioner::lumped); // no Schur boundary
   std::printf("MPRGP steps: every row %d, band 0.25 %d, band 0.02 %d in %zu QPs; dual sizes %lld / %lld\n",
               every.mprgp, near.mprgp, narrow.mprgp, narrow.solution.history.size(),
               static_cast<long long>(every.solution.n_dual), static_cast<long long>(near.solution.n_dual));
@@ -61,7 +45,7 @@ TEST(LinearContactRows, RowsNearContactGiveTheAnswerOfEveryRow)
   EXPECT_GE(narrow.solution.history.size(), 2u);
   EXPECT_LT(near.solution.n_dual, every.solution.n_dual);
   EXPECT_LT(lumped.solution.n_dual, every.solution.n_dual);
-  for (const BandRun* r : {&near, &narrow, &lumped})
+  for (const test::FetiContactRun* r : {&near, &narrow, &lumped})
   {
     EXPECT_LT((r->solution.u - every.solution.u).norm(), 1e-6 * every.solution.u.norm());
     EXPECT_NEAR(r->peak, every.peak, 1e-6 * every.peak);
