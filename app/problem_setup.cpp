@@ -80,8 +80,15 @@ MeshPrediction predict_mesh(const io::ProblemFile& file)
   return {size.nodes, size.plane_strain};
 }
 
-fem::Problem build_problem(const io::ProblemFile& file)
+fem::Problem build_problem(const io::ProblemFile& file, io::DeckInfo* deck)
 {
+  if (!file.deck.empty())
+  {
+    io::Deck read = io::read_deck(file.deck);
+    if (deck)
+      *deck = std::move(read.info);
+    return std::move(read.problem);
+  }
   const std::string& kind = file.settings.text("problem");
   if (kind == "hertz")
     return problems::hertz_problem(hertz_parameters(file.settings));

@@ -26,8 +26,8 @@ struct MeshPrediction
 MeshPrediction predict_mesh(const io::ProblemFile& file);
 
 /// The problem of `problem`: built-in hertz or cantilever_obstacle, else the file's custom
-/// sections.
-fem::Problem build_problem(const io::ProblemFile& file);
+/// sections or input deck; a deck's numbering, steps and warnings go to `deck` if given.
+fem::Problem build_problem(const io::ProblemFile& file, io::DeckInfo* deck = nullptr);
 
 /// Solver settings of the method, QP, contact, Newton and decomposition settings; with
 /// `subdomain_cells` > 0 the subdomain count follows from the problem's cell count.

@@ -149,9 +149,10 @@ void run(const RunOptions& options)
   const bool is_hertz3d = kind == "hertz3d";
   const problems::Hertz3dParameters hertz3d = hertz3d_parameters(settings);
   std::unique_ptr<fem::Problem> problem;
+  io::DeckInfo deck; // the model's input deck, if it is one
   {
     ScopedTimer t(timers, "mesh");
-    problem = std::make_unique<fem::Problem>(build_problem(file));
+    problem = std::make_unique<fem::Problem>(build_problem(file, &deck));
   }
   const MemoryEstimate memory_estimate =
       guard_memory(settings, problem->mesh.n_nodes(), problem->eliminated[2], what); // the mesh as made
@@ -309,6 +310,8 @@ void run(const RunOptions& options)
   summary["qp"] = qp_json(solution);
   // No silent wrong answers: a converged result that is not what it claims says so.
   nlohmann::ordered_json warnings = nlohmann::ordered_json::array();
+  for (const std::string& w : deck.warnings)
+    warnings.push_back("deck: " + w);
   const double feasibility_tolerance = settings.number("contact.feasibility_tolerance");
   if (solution.converged && solver.method == nonlinear::ContactMethod::dual_penalty &&
       solution.feasibility_error > feasibility_tolerance)
@@ -380,7 +383,8 @@ void register_run_command(CLI::App& app)
   CLI::App* cmd = app.add_subcommand("run", "Solve a contact problem (default: the seed's Hertz "
                                             "benchmark) and write a results folder");
   // No CLI11 file check: feticon's own one-line error names a missing file.
-  cmd->add_option("problem", options->problem_file, "problem file (YAML); omit for the built-in Hertz problem");
+  cmd->add_option("problem", options->problem_file,
+                  "problem file (YAML) or CalculiX / Abaqus input deck (.inp); omit for the built-in Hertz problem");
   cmd->add_option("--output,-o", options->output, "results folder")->capture_default_str();
   cmd->add_option("--set,-s", options->overrides, "override a setting, KEY=VALUE (repeatable)");
   cmd->add_option("--restart", options->restart,

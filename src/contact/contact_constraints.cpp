@@ -194,6 +194,17 @@ double largest_face_diagonal(const mesh::HexMesh& mesh, const la::Vector& u,
   return diagonal;
 }
 
+std::vector<int32_t> slave_nodes(const mesh::HexMesh& mesh, const ContactPair& pair)
+{
+  std::vector<int32_t> nodes = mesh.face_set_nodes(pair.slave);
+  if (pair.slave_nodes.empty())
+    return nodes;
+  const std::vector<int32_t>& restriction = mesh.node_set(pair.slave_nodes);
+  std::vector<int32_t> out;
+  std::ranges::set_intersection(nodes, restriction, std::back_inserter(out));
+  return out;
+}
+
 ContactConstraints build_contact_constraints(const mesh::HexMesh& mesh, const la::Vector& u,
                                              const ContactPair& pair, const ContactOptions& options)
 {
@@ -223,7 +234,7 @@ ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh,
                                                  << " must be in (0, 1]");
   const std::vector<mesh::Face>& faces = mesh.face_set(pair.master);
   FETICON_CHECK(!faces.empty(), "contact: master face set '" << pair.master << "' is empty");
-  const std::vector<int32_t> slave_nodes = mesh.face_set_nodes(pair.slave);
+  const std::vector<int32_t> slave_nodes = contact::slave_nodes(mesh, pair);
 
   std::vector<QuadCoordinates> quads;
   quads.reserve(faces.size());

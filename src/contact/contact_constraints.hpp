@@ -90,7 +90,12 @@ struct ContactPair
 {
   std::string slave;
   std::string master;
+  /// If not empty, the node set that restricts the slave nodes (fem::ContactPairNames).
+  std::string slave_nodes = {};
 };
+
+/// The slave nodes of a pair, sorted: the slave faces' nodes, restricted to pair.slave_nodes.
+std::vector<int32_t> slave_nodes(const mesh::HexMesh& mesh, const ContactPair& pair);
 
 /// How the rows are built: one closest point per slave node (node_to_segment, this file) or
 /// integrated dual mortar weights (mortar, mortar_constraints.hpp). Both give rows of the same

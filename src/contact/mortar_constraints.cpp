@@ -92,6 +92,8 @@ MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vect
   check_displacement(mesh, u);
   FETICON_CHECK(std::isfinite(search_distance) && search_distance > 0,
                 "mortar: search distance = " << search_distance << " m must be > 0");
+  FETICON_CHECK(pair.slave_nodes.empty(), "mortar: the slave surface '" << pair.slave << "' is given by nodes; mortar "
+                                         "integrates whole slave faces: use contact.formulation=node_to_segment");
   const std::vector<mesh::Face>& slave_faces = mesh.face_set(pair.slave);
   const std::vector<mesh::Face>& master_faces = mesh.face_set(pair.master);
   FETICON_CHECK(!slave_faces.empty(), "mortar: slave face set '" << pair.slave << "' is empty");

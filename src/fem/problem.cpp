@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "fem/loads.hpp"
 
+#include <cmath>
 #include <map>
 
 namespace feticon::fem
@@ -12,6 +13,10 @@ la::Vector Problem::external_force() const
   la::Vector f = la::Vector::Zero(3 * mesh.n_nodes());
   for (const FaceTraction& t : tractions)
     add_face_traction(mesh, mesh.face_set(t.set), t.traction, f);
+  for (const FacePressure& p : pressures)
+    add_face_pressure(mesh, mesh.face_set(p.set), p.pressure, f);
+  for (const NodalForce& n : nodal_forces)
+    f(3 * static_cast<la::Index>(n.node) + n.component) += n.value;
   for (int i = 0; i < 3; ++i)
     if (eliminated[i])
       for (int32_t n = 0; n < mesh.n_nodes(); ++n)
@@ -52,8 +57,28 @@ void Problem::validate() const
     FETICON_CHECK(!mesh.face_set(t.set).empty(), "traction face set '" << t.set << "' is empty");
     FETICON_CHECK(t.traction.allFinite(), "traction on '" << t.set << "' is not finite");
   }
+  for (const auto& p : pressures)
+  {
+    FETICON_CHECK(!mesh.face_set(p.set).empty(), "pressure face set '" << p.set << "' is empty");
+    FETICON_CHECK(std::isfinite(p.pressure), "pressure on '" << p.set << "' is not finite");
+  }
+  for (const auto& n : nodal_forces)
+    FETICON_CHECK(n.node >= 0 && n.node < mesh.n_nodes() && n.component >= 0 && n.component < 3 &&
+                      std::isfinite(n.value),
+                  "nodal force on node " << n.node << ", component " << n.component << " is out of range or not finite");
+  for (const auto& e : equations)
+  {
+    FETICON_CHECK(!e.terms.empty(), "a linear equation has no terms");
+    for (const auto& t : e.terms)
+      FETICON_CHECK(t.node >= 0 && t.node < mesh.n_nodes() && t.component >= 0 && t.component < 3 &&
+                        std::isfinite(t.coefficient),
+                    "a linear equation names node " << t.node << ", component " << t.component
+                                                    << " out of range or a coefficient that is not finite");
+  }
   for (const auto& c : contacts)
   {
+    if (!c.slave_nodes.empty())
+      FETICON_CHECK(!mesh.node_set(c.slave_nodes).empty(), "contact slave node set '" << c.slave_nodes << "' is empty");
     FETICON_CHECK(!mesh.face_set(c.slave).empty(), "contact slave surface '" << c.slave
                                                                              << "' is empty");
     FETICON_CHECK(!mesh.face_set(c.master).empty(), "contact master surface '" << c.master

@@ -219,6 +219,31 @@ mesh::HexMesh boxes_mesh(const YAML::Node& boxes, const Reader& r)
 
 bool is_structured_key(const std::string& key) { return structured_keys.count(key) > 0; }
 
+bool is_deck_file(const std::filesystem::path& path)
+{
+  std::string extension = path.extension().string();
+  for (char& c : extension)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".inp";
+}
+
+namespace
+{
+/// The settings a deck implies, below the overrides: `feticon run model.inp`.
+void settings_of_deck(ProblemFile& file, const std::filesystem::path& path)
+{
+  const DeckOutline outline = deck_outline(path);
+  file.deck = std::filesystem::absolute(path);
+  // The model's whole description is the deck; the tree names it, so problem.yaml reruns it.
+  file.root["problem"] = "custom";
+  file.root["mesh"]["file"] = file.deck.string();
+  const std::string source = path.string();
+  file.settings.set("displacements", outline.nlgeom ? "large" : "small", source);
+  file.settings.set("load_steps", std::to_string(outline.increments), source);
+  file.settings.set("contact.formulation", outline.contact_formulation, source);
+}
+} // namespace
+
 ProblemFile load_problem_file(const std::filesystem::path& path,
                               const std::vector<std::string>& overrides)
 {
@@ -226,7 +251,9 @@ ProblemFile load_problem_file(const std::filesystem::path& path,
   file.source = path.empty() ? std::string("defaults") : path.string();
   file.folder = path.empty() ? std::filesystem::current_path() : path.parent_path();
   file.root = YAML::Node(YAML::NodeType::Map);
-  if (!path.empty())
+  if (!path.empty() && is_deck_file(path))
+    settings_of_deck(file, path);
+  else if (!path.empty())
   {
     FETICON_CHECK(std::filesystem::exists(path), "problem file " << path.string() << " does not exist");
     // Problem files hold settings and small lists; 16 MiB is far beyond any real one.
@@ -303,6 +330,15 @@ ProblemFile load_problem_file(const std::filesystem::path& path,
   }
   for (const auto& [k, v] : section_settings)
     file.settings.set(k, v, "--set");
+  // mesh.file naming a deck: the deck gives the whole model.
+  if (file.deck.empty() && file.root["mesh"] && file.root["mesh"].IsMap() && file.root["mesh"]["file"] &&
+      file.root["mesh"]["file"].IsScalar() && is_deck_file(file.root["mesh"]["file"].Scalar()))
+  {
+    file.deck = std::filesystem::absolute(file.folder / file.root["mesh"]["file"].Scalar());
+    for (const char* section : {"bodies", "plane_strain", "supports", "loads", "contact"})
+      FETICON_CHECK(!file.root[section], file.source << ": section '" << section << "' is not read when mesh.file is "
+                                                     << "an input deck: the deck gives the whole model");
+  }
   // The structured sections describe a custom problem; a built-in one would ignore them.
   if (file.settings.text("problem") != "custom")
     for (const auto& kv : file.root)
@@ -328,6 +364,12 @@ CustomMeshSize custom_mesh_size(const ProblemFile& file)
   {
     const std::filesystem::path path = file.folder / r.text(root["mesh"]["file"], "mesh.file");
     std::error_code ec;
+    if (is_deck_file(path))
+    {
+      size.nodes = deck_outline(path).nodes;
+      size.plane_strain = false; // known once read; the estimate takes three components
+      return size;
+    }
     // A missing or unreadable file is left to the reader's messages; 0 nodes passes the guard.
     if (std::filesystem::is_regular_file(path, ec))
       size.nodes = std::max<int64_t>(0, mesh::precheck_gmsh_file(path, "Gmsh file '" + path.string() + "'").nodes);
@@ -353,6 +395,8 @@ fem::Problem build_custom_problem(const ProblemFile& file)
   const YAML::Node& root = file.root;
   FETICON_CHECK(root["mesh"], file.source << ": problem: custom needs a 'mesh' section (file: or boxes:)");
   r.only_keys(root["mesh"], "mesh", {"file", "boxes"});
+  if (!file.deck.empty())
+    return read_deck(file.deck).problem;
   fem::Problem p;
   p.name = "custom";
   if (root["mesh"]["file"])

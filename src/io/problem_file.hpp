@@ -18,6 +18,7 @@
 /// loads.0.traction=[0,0,-2e8]); VALUE is parsed as YAML.
 
 #include "fem/problem.hpp"
+#include "io/deck.hpp"
 #include "io/settings.hpp"
 
 #include <yaml-cpp/yaml.h>
@@ -34,9 +35,18 @@ struct ProblemFile
   Settings settings;            ///< solver, output and built-in problem keys
   std::string source;           ///< file name for messages ("defaults" without a file)
   std::filesystem::path folder; ///< folder of the file: relative mesh paths start here
+  /// The input deck that gives the model (`feticon run model.inp`, or mesh.file: model.inp),
+  /// empty if none.
+  std::filesystem::path deck;
 };
 
-/// Reads `path` (empty: defaults only), applies `overrides`, validates every key.
+/// True for the file names of input decks: `.inp` in any case.
+bool is_deck_file(const std::filesystem::path& path);
+
+/// Reads `path` (empty: defaults only), applies `overrides`, validates every key. An input
+/// deck (is_deck_file) is a custom problem whose model is the deck, with the settings it
+/// implies (displacements from NLGEOM, load_steps from *STATIC, contact.formulation from the
+/// pairs' TYPE) below the overrides.
 ProblemFile load_problem_file(const std::filesystem::path& path,
                               const std::vector<std::string>& overrides);
 
@@ -50,6 +60,7 @@ struct CustomMeshSize
 CustomMeshSize custom_mesh_size(const ProblemFile& file);
 
 /// The problem of a `problem: custom` file: mesh, bodies, supports, loads, contact.
+/// A deck's model is read by io::read_deck instead (the caller keeps its DeckInfo).
 fem::Problem build_custom_problem(const ProblemFile& file);
 
 /// The structured sections (not in the Settings registry).

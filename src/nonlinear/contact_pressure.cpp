@@ -1,6 +1,7 @@
 #include "nonlinear/contact_pressure.hpp"
 
 #include "common/error.hpp"
+#include "contact/contact_constraints.hpp"
 #include "fem/loads.hpp"
 #include "fem/stress.hpp"
 
@@ -54,7 +55,8 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
   };
   std::map<std::tuple<long, long, long, int32_t>, PressureSample> by_x;
   std::map<std::tuple<long, long, long, int32_t>, int> nodes_in_sample, rows_in_sample;
-  for (int32_t node : problem.mesh.face_set_nodes(problem.contacts[0].slave))
+  const fem::ContactPairNames& pair = problem.contacts[0];
+  for (int32_t node : contact::slave_nodes(problem.mesh, {pair.slave, pair.master, pair.slave_nodes}))
   {
     const auto key = key_of(node);
     auto& s = by_x[key];

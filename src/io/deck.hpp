@@ -1,0 +1,94 @@
+#pragma once
+/// @file A CalculiX / Abaqus input deck (`.inp`) as feticon's model: the problem, the step's
+/// settings, the output requests and the deck's own numbering, for `feticon run model.inp`.
+///
+/// The keyword format is the one of the CalculiX CrunchiX user's manual, chapter "Input deck
+/// format" (shared with Abaqus). deck_tokenizer.hpp splits the text into keyword and data
+/// lines with their positions, deck_keywords.cpp handles each keyword, deck_model.cpp turns
+/// what they collected into a fem::Problem. What feticon does not implement is a one-line
+/// error naming the keyword, file and line; what it reads but does not honour is a line of
+/// `warnings`.
+
+#include "fem/problem.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace feticon::io
+{
+/// One output request of a step (*NODE PRINT, *EL PRINT, *CONTACT PRINT, *NODE FILE,
+/// *EL FILE, *CONTACT FILE): what CalculiX would write to the .dat or .frd file.
+struct DeckOutputRequest
+{
+  enum class Kind
+  {
+    node_print,
+    el_print,
+    contact_print,
+    node_file,
+    el_file,
+    contact_file
+  };
+  enum class Totals
+  {
+    no,
+    yes,
+    only
+  };
+  Kind kind = Kind::node_print;
+  std::string set;                    ///< NSET= or ELSET= as in the deck (upper case); empty: all
+  std::vector<std::string> variables; ///< upper case: U, RF, S, E, CSTR, CDIS, ...
+  Totals totals = Totals::no;
+  std::string where; ///< "file:line" of the keyword, for messages
+};
+
+/// A *STEP of the deck: its kinematics, increments and output requests.
+struct DeckStep
+{
+  bool nlgeom = false;
+  int increments = 1; ///< load steps: total time / initial increment of *STATIC (rounded up)
+  std::vector<DeckOutputRequest> outputs;
+  std::string where;
+};
+
+/// What a deck holds beside the problem: its steps, numbering, element sets and warnings.
+struct DeckInfo
+{
+  std::vector<DeckStep> steps;
+  std::vector<int64_t> node_labels;    ///< deck number of every mesh node
+  std::vector<int64_t> element_labels; ///< deck number of every mesh cell
+  /// Element sets by deck name (mesh cell indices, sorted).
+  std::map<std::string, std::vector<int32_t>> element_sets;
+  /// What the deck says that feticon reads but does not honour exactly, one line each.
+  std::vector<std::string> warnings;
+  std::filesystem::path path;
+};
+
+struct Deck
+{
+  fem::Problem problem; ///< nodes and cells renumbered 0.., sets under their deck names (upper case)
+  DeckInfo info;
+};
+
+/// Reads the deck `path` (and its *INCLUDEs).
+/// @throws feticon::Error with one line "FILE:LINE: what is wrong" for anything malformed or
+///   not implemented.
+Deck read_deck(const std::filesystem::path& path);
+
+/// What a scan of the keyword lines tells before the deck is read (memory guard, settings):
+/// data lines under *NODE and *ELEMENT are counted, not parsed.
+struct DeckOutline
+{
+  int64_t nodes = 0;
+  int64_t elements = 0;
+  bool nlgeom = false; ///< some *STEP has NLGEOM
+  int increments = 1;  ///< of the first *STATIC
+  /// node_to_segment when every *CONTACT PAIR is NODE TO SURFACE (CalculiX's default TYPE),
+  /// else mortar: the setting contact.formulation.
+  std::string contact_formulation = "mortar";
+};
+DeckOutline deck_outline(const std::filesystem::path& path);
+} // namespace feticon::io

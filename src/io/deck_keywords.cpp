@@ -1,0 +1,870 @@
+/// The keyword handlers of an input deck: each reads its keyword line's parameters and its
+/// data lines into DeckData (deck_data.hpp). Keywords and their data follow the CalculiX
+/// CrunchiX user's manual, chapter "Input deck format".
+
+#include "common/error.hpp"
+#include "io/deck_data.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace feticon::io
+{
+namespace
+{
+/// Labels up to this beyond twice the count so far go into the dense table (4 bytes each).
+constexpr int64_t dense_label_slack = int64_t{1} << 20;
+
+/// Keywords that change nothing a static elastic contact run computes: read, reported.
+const std::map<std::string, std::string> inert_keywords = {
+    {"DENSITY", "a static run has no inertia or gravity load"},
+    {"EXPANSION", "the run has no temperature field"},
+    {"CONDUCTIVITY", "the run is mechanical only"},
+    {"SPECIFIC HEAT", "the run is mechanical only"},
+    {"GAP CONDUCTANCE", "the run is mechanical only"},
+    {"NODE OUTPUT", "use *NODE FILE / *NODE PRINT; feticon writes U and S to the .frd"},
+    {"ELEMENT OUTPUT", "use *EL FILE / *EL PRINT; feticon writes U and S to the .frd"},
+    {"CONTACT OUTPUT", "use *CONTACT FILE / *CONTACT PRINT"},
+    {"OUTPUT", "feticon writes its results folder and the .frd / .dat of the print and file requests"},
+    {"ENERGY PRINT", "not written"},
+    {"SECTION PRINT", "not written"},
+    {"RESTART", "feticon restarts from its own checkpoint (feticon run --restart)"},
+    {"CONTROLS", "feticon's solver settings are its own (feticon run --help)"},
+    {"ORIENTATION", "the materials are isotropic, so an orientation changes nothing"},
+    {"AMPLITUDE", "loads are ramped linearly over a step; an amplitude used by a load is an error"},
+    {"PREPRINT", "not written"},
+};
+
+/// Keywords feticon does not implement, with what they are (for the one-line error).
+const std::map<std::string, std::string> unsupported_keywords = {
+    {"FRICTION", "friction (feticon's contact is frictionless)"},
+    {"DYNAMIC", "dynamics"},
+    {"MODAL DYNAMIC", "dynamics"},
+    {"FREQUENCY", "eigenfrequencies"},
+    {"BUCKLE", "buckling"},
+    {"HEAT TRANSFER", "heat transfer"},
+    {"COUPLED TEMPERATURE-DISPLACEMENT", "thermo-mechanics"},
+    {"VISCO", "viscous materials"},
+    {"PLASTIC", "plasticity"},
+    {"CYCLIC HARDENING", "plasticity"},
+    {"DEFORMATION PLASTICITY", "plasticity"},
+    {"HYPERELASTIC", "hyperelastic materials"},
+    {"HYPERFOAM", "hyperelastic materials"},
+    {"CREEP", "creep"},
+    {"USER MATERIAL", "user materials"},
+    {"SHELL SECTION", "shell elements"},
+    {"BEAM SECTION", "beam elements"},
+    {"MEMBRANE SECTION", "membrane elements"},
+    {"PART", "parts and assemblies (flatten the deck into one model)"},
+    {"ASSEMBLY", "parts and assemblies (flatten the deck into one model)"},
+    {"INSTANCE", "parts and assemblies (flatten the deck into one model)"},
+    {"TIE", "tied contact"},
+    {"RIGID BODY", "rigid bodies"},
+    {"COUPLING", "coupling constraints"},
+    {"MPC", "nonlinear multi-point constraints (linear ones: *EQUATION)"},
+    {"INITIAL CONDITIONS", "initial conditions"},
+    {"TEMPERATURE", "temperature loads"},
+    {"SPRING", "spring elements"},
+    {"DASHPOT", "dashpot elements"},
+    {"MASS", "mass elements"},
+    {"GAP", "gap elements"},
+    {"TRANSFORM", "local coordinate systems for supports and loads"},
+    {"CFLUX", "heat fluxes"},
+    {"DFLUX", "heat fluxes"},
+    {"FILM", "heat transfer"},
+    {"RADIATE", "heat transfer"},
+    {"SUBMODEL", "submodels"},
+    {"CHANGE SURFACE BEHAVIOR", "contact laws that change between steps"},
+    {"MODEL CHANGE", "elements removed or added between steps"},
+    {"DISTRIBUTING COUPLING", "coupling constraints"},
+};
+
+std::string text(std::string_view v) { return std::string(v); }
+
+/// Upper-case name of a data field (set, surface and material names are case-insensitive).
+std::string name_of(std::string_view v)
+{
+  std::string out(v);
+  for (char& c : out)
+    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+bool is_integer(std::string_view v)
+{
+  if (v.empty())
+    return false;
+  size_t i = v.front() == '+' || v.front() == '-' ? 1 : 0;
+  if (i == v.size())
+    return false;
+  for (; i < v.size(); ++i)
+    if (v[i] < '0' || v[i] > '9')
+      return false;
+  return true;
+}
+
+class KeywordReader
+{
+public:
+  explicit KeywordReader(const std::filesystem::path& path) : _tokens(path), _path(path.string()) {}
+
+  DeckData run()
+  {
+    DeckKeyword keyword;
+    bool have = _tokens.next_keyword(keyword);
+    FETICON_CHECK(have, "input deck " << _path << " has no keyword line (*NODE, *ELEMENT, ...)");
+    while (have)
+    {
+      _keyword = keyword;
+      handle();
+      have = _tokens.next_keyword(keyword);
+    }
+    FETICON_CHECK(!_in_step, _step_where.str() << ": *STEP has no *END STEP");
+    FETICON_CHECK(!_data.steps.empty(), "input deck has no *STEP: feticon solves the loads of a *STEP with *STATIC");
+    FETICON_CHECK(!_data.cells.empty(), "input deck has no *ELEMENT");
+    _data.file_names = _tokens.take_file_names();
+    return std::move(_data);
+  }
+
+private:
+  // ---- access to the current keyword and its data -------------------------------------
+  std::string where() const { return _keyword.where.str() + ": *" + _keyword.name; }
+
+  [[noreturn]] void fail_at(const DeckPosition& at, const std::string& what) const
+  {
+    throw Error(at.str() + ": *" + _keyword.name + ": " + what);
+  }
+
+  const std::string& required(std::string_view key) const
+  {
+    const std::string* v = _keyword.value(key);
+    if (!v || v->empty())
+      throw Error(where() + " needs " + std::string(key) + "=");
+    return *v;
+  }
+
+  /// Parameters this handler knows; any other is an error naming it.
+  void known_parameters(std::initializer_list<std::string_view> keys) const
+  {
+    for (const auto& [k, v] : _keyword.parameters)
+      if (std::find(keys.begin(), keys.end(), k) == keys.end())
+        throw Error(where() + ": parameter " + k + " is not implemented by feticon");
+  }
+
+  double real(const DeckDataLine& line, size_t i, const char* what) const
+  {
+    if (i >= line.fields.size() || line.fields[i].empty())
+      fail_at(line.at(i), std::string("missing ") + what);
+    std::string_view v = line.fields[i];
+    if (v.front() == '+')
+      v.remove_prefix(1);
+    double out = 0;
+    auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
+    if (ec == std::errc() && end != v.data() + v.size() && (*end == 'd' || *end == 'D'))
+    {
+      // Fortran's double-precision exponent: 1.5D3.
+      std::string copy(v);
+      copy[end - v.data()] = 'e';
+      auto r = std::from_chars(copy.data(), copy.data() + copy.size(), out);
+      ec = r.ec;
+      end = r.ptr == copy.data() + copy.size() ? v.data() + v.size() : v.data();
+    }
+    if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(out))
+      fail_at(line.at(i), "'" + text(line.fields[i]) + "' is not a finite number (" + what + ")");
+    return out;
+  }
+
+  int64_t integer(const DeckDataLine& line, size_t i, const char* what) const
+  {
+    if (i >= line.fields.size() || line.fields[i].empty())
+      fail_at(line.at(i), std::string("missing ") + what);
+    std::string_view v = line.fields[i];
+    if (v.front() == '+')
+      v.remove_prefix(1);
+    int64_t out = 0;
+    auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
+    if (ec != std::errc() || end != v.data() + v.size())
+      fail_at(line.at(i), "'" + text(line.fields[i]) + "' is not an integer (" + what + ")");
+    return out;
+  }
+
+  /// The mesh index of the node or element labelled by field i.
+  int32_t entity(const DeckDataLine& line, size_t i, bool is_node) const
+  {
+    const int64_t label = integer(line, i, is_node ? "node number" : "element number");
+    const int32_t index = (is_node ? _data.node_index : _data.element_index).find(label);
+    if (index < 0)
+      fail_at(line.at(i), (is_node ? "node " : "element ") + std::to_string(label) + " is not defined (by " +
+                              (is_node ? "a *NODE" : "an *ELEMENT") + " before this line)");
+    return index;
+  }
+  int32_t node(const DeckDataLine& line, size_t i) const { return entity(line, i, true); }
+
+  /// The nodes (elements) of field i: a number or the name of a node (element) set.
+  std::vector<int32_t> members(const DeckDataLine& line, size_t i, bool is_node) const
+  {
+    if (i < line.fields.size() && !line.fields[i].empty() && !is_integer(line.fields[i]))
+    {
+      const auto& sets = is_node ? _data.node_sets : _data.element_sets;
+      const auto it = sets.find(name_of(line.fields[i]));
+      if (it == sets.end())
+        fail_at(line.at(i), std::string(is_node ? "no node set '" : "no element set '") + name_of(line.fields[i]) +
+                                "' is defined");
+      return it->second;
+    }
+    return {entity(line, i, is_node)};
+  }
+  std::vector<int32_t> nodes(const DeckDataLine& line, size_t i) const { return members(line, i, true); }
+  std::vector<int32_t> elements(const DeckDataLine& line, size_t i) const { return members(line, i, false); }
+
+  /// Data lines of a keyword that takes none must have none.
+  void no_data()
+  {
+    DeckDataLine line;
+    if (_tokens.next_data(line))
+      fail_at(line.where, "takes no data lines");
+  }
+
+  void skip_data()
+  {
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+    {
+    }
+  }
+
+  // ---- dispatch -------------------------------------------------------------------------
+  void handle()
+  {
+    static const std::map<std::string, void (KeywordReader::*)()> handlers = {
+        {"HEADING", &KeywordReader::heading},
+        {"NODE", &KeywordReader::node_block},
+        {"ELEMENT", &KeywordReader::element_block},
+        {"NSET", &KeywordReader::set_block},
+        {"ELSET", &KeywordReader::set_block},
+        {"SURFACE", &KeywordReader::surface},
+        {"MATERIAL", &KeywordReader::material},
+        {"ELASTIC", &KeywordReader::elastic},
+        {"SOLID SECTION", &KeywordReader::solid_section},
+        {"BOUNDARY", &KeywordReader::boundary},
+        {"CLOAD", &KeywordReader::cload},
+        {"DLOAD", &KeywordReader::dload},
+        {"DSLOAD", &KeywordReader::dsload},
+        {"EQUATION", &KeywordReader::equation},
+        {"SURFACE INTERACTION", &KeywordReader::surface_interaction},
+        {"SURFACE BEHAVIOR", &KeywordReader::surface_behavior},
+        {"CONTACT PAIR", &KeywordReader::contact_pair},
+        {"STEP", &KeywordReader::step},
+        {"STATIC", &KeywordReader::static_procedure},
+        {"END STEP", &KeywordReader::end_step},
+        {"NODE PRINT", &KeywordReader::output_request},
+        {"EL PRINT", &KeywordReader::output_request},
+        {"CONTACT PRINT", &KeywordReader::output_request},
+        {"NODE FILE", &KeywordReader::output_request},
+        {"EL FILE", &KeywordReader::output_request},
+        {"CONTACT FILE", &KeywordReader::output_request},
+    };
+    if (const auto it = handlers.find(_keyword.name); it != handlers.end())
+    {
+      (this->*(it->second))();
+      return;
+    }
+    if (const auto it = inert_keywords.find(_keyword.name); it != inert_keywords.end())
+    {
+      _data.warn("*" + _keyword.name + " (first at " + _keyword.where.str() + ") is read and not used: " + it->second);
+      skip_data();
+      return;
+    }
+    if (const auto it = unsupported_keywords.find(_keyword.name); it != unsupported_keywords.end())
+      throw Error(where() + " is not implemented by feticon (" + it->second + ")");
+    throw Error(where() + " is not a keyword feticon implements");
+  }
+
+  // ---- model data ---------------------------------------------------------------------------
+  void heading() { skip_data(); }
+
+  void node_block()
+  {
+    known_parameters({"NSET", "SYSTEM"});
+    if (_keyword.has("SYSTEM"))
+      throw Error(where() + ": SYSTEM= (local coordinates) is not implemented by feticon");
+    std::vector<int32_t>* set = nullptr;
+    if (_keyword.has("NSET"))
+      set = &_data.node_sets[required("NSET")];
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+    {
+      const int64_t label = integer(line, 0, "node number");
+      if (label <= 0)
+        fail_at(line.at(0), "node number " + std::to_string(label) + " must be positive");
+      if (line.fields.size() > 4)
+        fail_at(line.at(4), "a node line has at most a number and three coordinates");
+      const int32_t index = static_cast<int32_t>(_data.node_labels.size());
+      if (index == std::numeric_limits<int32_t>::max())
+        fail_at(line.where, "more nodes than feticon's 32-bit node indices hold");
+      if (!_data.node_index.insert(label, index))
+        fail_at(line.at(0), "node " + std::to_string(label) + " is defined twice");
+      _data.node_labels.push_back(label);
+      for (size_t k = 1; k <= 3; ++k)
+        _data.coordinates.push_back(k < line.fields.size() && !line.fields[k].empty()
+                                        ? real(line, k, "coordinate")
+                                        : 0.0);
+      if (set)
+        set->push_back(index);
+    }
+  }
+
+  void element_block()
+  {
+    known_parameters({"TYPE", "ELSET"});
+    const std::string& type = required("TYPE");
+    if (type == "C3D8R" || type == "C3D8I")
+      _data.warn("element type " + type + " (" + _keyword.where.str() + ") is solved as C3D8 (full 2x2x2 "
+                 "integration" + (type == "C3D8R" ? std::string(", not reduced with hourglass control)")
+                                                  : std::string(", without incompatible modes: stiffer in bending)")));
+    else if (type != "C3D8")
+      throw Error(where() + ": element type " + type + " is not implemented by feticon (C3D8, C3D8R, C3D8I)");
+    std::vector<int32_t>* set = _keyword.has("ELSET") ? &_data.element_sets[required("ELSET")] : nullptr;
+    DeckDataLine line;
+    std::vector<int32_t> nodes_of_element;
+    int64_t label = 0;
+    DeckPosition start;
+    while (_tokens.next_data(line))
+    {
+      size_t first = 0;
+      if (nodes_of_element.empty() && label == 0)
+      {
+        label = integer(line, 0, "element number");
+        if (label <= 0)
+          fail_at(line.at(0), "element number " + std::to_string(label) + " must be positive");
+        start = line.where;
+        first = 1;
+      }
+      for (size_t k = first; k < line.fields.size(); ++k)
+      {
+        if (nodes_of_element.size() == 8)
+          fail_at(line.at(k), "element " + std::to_string(label) + " of type " + type + " has more than 8 nodes");
+        nodes_of_element.push_back(node(line, k));
+      }
+      if (nodes_of_element.size() < 8)
+      {
+        if (line.continues)
+          continue;
+        fail_at(line.where, "element " + std::to_string(label) + " of type " + type + " has " +
+                                std::to_string(nodes_of_element.size()) + " nodes, not 8");
+      }
+      const int32_t index = static_cast<int32_t>(_data.cells.size());
+      if (!_data.element_index.insert(label, index))
+        fail_at(start, "element " + std::to_string(label) + " is defined twice");
+      mesh::Cell cell;
+      std::copy(nodes_of_element.begin(), nodes_of_element.end(), cell.begin());
+      _data.cells.push_back(cell);
+      _data.element_labels.push_back(label);
+      if (set)
+        set->push_back(index);
+      nodes_of_element.clear();
+      label = 0;
+    }
+    if (label != 0)
+      fail_at(start, "element " + std::to_string(label) + " of type " + type + " has fewer than 8 nodes");
+  }
+
+  /// *NSET and *ELSET: numbers, names of sets of the same kind, or GENERATE triples.
+  void set_block()
+  {
+    const bool nodes_kind = _keyword.name == "NSET";
+    known_parameters({nodes_kind ? "NSET" : "ELSET", "GENERATE"});
+    const std::string name = required(nodes_kind ? "NSET" : "ELSET");
+    auto& sets = nodes_kind ? _data.node_sets : _data.element_sets;
+    std::vector<int32_t> listed;
+    DeckDataLine line;
+    const bool generate = _keyword.has("GENERATE");
+    while (_tokens.next_data(line))
+    {
+      if (generate)
+      {
+        const int64_t first = integer(line, 0, "first number"), last = integer(line, 1, "last number");
+        const int64_t step = line.fields.size() > 2 && !line.fields[2].empty() ? integer(line, 2, "increment") : 1;
+        if (step <= 0 || last < first)
+          fail_at(line.where, "GENERATE needs first <= last and a positive increment");
+        for (int64_t label = first; label <= last; label += step)
+        {
+          const int32_t i = nodes_kind ? _data.node_index.find(label) : _data.element_index.find(label);
+          if (i < 0)
+            fail_at(line.where, std::string(nodes_kind ? "node " : "element ") + std::to_string(label) +
+                                    " of the generated range is not defined");
+          listed.push_back(i);
+        }
+        continue;
+      }
+      for (size_t k = 0; k < line.fields.size(); ++k)
+      {
+        if (line.fields[k].empty())
+          continue;
+        const std::vector<int32_t> more = members(line, k, nodes_kind);
+        listed.insert(listed.end(), more.begin(), more.end());
+      }
+    }
+    auto& set = sets[name];
+    set.insert(set.end(), listed.begin(), listed.end());
+  }
+
+  void surface()
+  {
+    known_parameters({"NAME", "TYPE"});
+    const std::string name = required("NAME");
+    const std::string* type = _keyword.value("TYPE");
+    if (type && *type != "ELEMENT" && *type != "NODE")
+      throw Error(where() + ": TYPE=" + *type + " is not implemented by feticon (ELEMENT or NODE)");
+    DeckSurface& s = _data.surfaces[name];
+    s.where = _keyword.where;
+    s.node_based = type && *type == "NODE";
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+    {
+      if (s.node_based)
+      {
+        const std::vector<int32_t> more = nodes(line, 0);
+        s.nodes.insert(s.nodes.end(), more.begin(), more.end());
+        continue;
+      }
+      const std::vector<int32_t> cells = elements(line, 0);
+      if (line.fields.size() < 2)
+        fail_at(line.where, "an element face needs its face, S1 to S6");
+      const std::string face = name_of(line.fields[1]);
+      if (face.size() != 2 || face[0] != 'S' || face[1] < '1' || face[1] > '6')
+        fail_at(line.at(1), "face '" + text(line.fields[1]) + "' of a C3D8 element is not S1 to S6");
+      for (int32_t c : cells)
+        s.faces.push_back({c, face[1] - '0'});
+    }
+  }
+
+  void material()
+  {
+    known_parameters({"NAME"});
+    _material = required("NAME");
+    _data.materials[_material] = fem::Material{0.0, 0.0};
+    no_data();
+  }
+
+  void elastic()
+  {
+    known_parameters({"TYPE"});
+    const std::string* type = _keyword.value("TYPE");
+    if (type && *type != "ISO" && *type != "ISOTROPIC")
+      throw Error(where() + ": TYPE=" + *type + " is not implemented by feticon (isotropic elasticity)");
+    if (_material.empty())
+      throw Error(where() + " comes before any *MATERIAL");
+    DeckDataLine line;
+    if (!_tokens.next_data(line))
+      throw Error(where() + " needs a data line: Young's modulus, Poisson's ratio");
+    fem::Material& m = _data.materials[_material];
+    m.young = real(line, 0, "Young's modulus");
+    m.poisson = real(line, 1, "Poisson's ratio");
+    try
+    {
+      m.check("material " + _material);
+    }
+    catch (const Error& e)
+    {
+      fail_at(line.where, e.what());
+    }
+    if (_tokens.next_data(line))
+      fail_at(line.where, "temperature-dependent elastic constants are not implemented by feticon (one data line)");
+  }
+
+  void solid_section()
+  {
+    known_parameters({"ELSET", "MATERIAL", "ORIENTATION"});
+    if (_keyword.has("ORIENTATION"))
+      _data.warn(where() + ": ORIENTATION= changes nothing for the isotropic material, and is not used");
+    _data.sections.push_back({required("ELSET"), required("MATERIAL"), _keyword.where});
+    skip_data(); // a 3D solid section's data line (a thickness for 2D elements) has no meaning here
+  }
+
+  // ---- loads and supports ------------------------------------------------------------------
+  /// OP=NEW clears the kind's values set in steps (model supports stay); MOD keeps them.
+  bool op_new() const
+  {
+    const std::string* op = _keyword.value("OP");
+    if (op && *op != "NEW" && *op != "MOD")
+      throw Error(where() + ": OP=" + *op + " must be NEW or MOD");
+    return op && *op == "NEW";
+  }
+
+  void no_amplitude() const
+  {
+    if (_keyword.has("AMPLITUDE"))
+      throw Error(where() + ": AMPLITUDE= is not implemented by feticon (loads ramp linearly over the step)");
+  }
+
+  void boundary()
+  {
+    known_parameters({"OP", "AMPLITUDE", "TYPE", "FIXED", "USER", "LOAD CASE"});
+    no_amplitude();
+    for (const char* p : {"FIXED", "USER", "LOAD CASE"})
+      if (_keyword.has(p))
+        throw Error(where() + ": " + p + " is not implemented by feticon");
+    if (const std::string* t = _keyword.value("TYPE"); t && *t != "DISPLACEMENT")
+      throw Error(where() + ": TYPE=" + *t + " is not implemented by feticon (displacements)");
+    auto& target = _in_step ? _data.state.boundary : _data.model_boundary;
+    if (op_new())
+      _data.state.boundary.clear();
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+    {
+      const std::vector<int32_t> targets = nodes(line, 0);
+      int64_t first = 0, last = 0;
+      double value = 0;
+      if (line.fields.size() >= 2 && !is_integer(line.fields[1]))
+      {
+        // Abaqus's named conditions.
+        const std::string kind = name_of(line.fields[1]);
+        if (kind == "ENCASTRE" || kind == "PINNED")
+          first = 1, last = 3;
+        else if (kind == "XSYMM")
+          first = last = 1;
+        else if (kind == "YSYMM")
+          first = last = 2;
+        else if (kind == "ZSYMM")
+          first = last = 3;
+        else
+          fail_at(line.at(1), "'" + text(line.fields[1]) + "' is no degree of freedom or known condition");
+      }
+      else
+      {
+        first = integer(line, 1, "first degree of freedom");
+        last = line.fields.size() > 2 && !line.fields[2].empty() ? integer(line, 2, "last degree of freedom") : first;
+        value = line.fields.size() > 3 && !line.fields[3].empty() ? real(line, 3, "prescribed value") : 0.0;
+      }
+      if (first < 1 || last < first || last > 6)
+        fail_at(line.where, "degrees of freedom " + std::to_string(first) + " to " + std::to_string(last) +
+                                " are not within 1 to 6");
+      if (last > 3)
+        _data.warn(line.where.str() + ": *BOUNDARY on degrees of freedom 4 to 6 (rotations): solid elements "
+                                      "have none, so they are not used");
+      for (int64_t dof = first; dof <= std::min<int64_t>(last, 3); ++dof)
+        for (int32_t n : targets)
+          target[3 * int64_t{n} + dof - 1] = value;
+    }
+  }
+
+  void cload()
+  {
+    known_parameters({"OP", "AMPLITUDE"});
+    no_amplitude();
+    if (op_new())
+      _data.state.cload.clear();
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+    {
+      const std::vector<int32_t> targets = nodes(line, 0);
+      const int64_t dof = integer(line, 1, "degree of freedom");
+      if (dof < 1 || dof > 3)
+        fail_at(line.at(1), "degree of freedom " + std::to_string(dof) + ": forces act on 1 to 3 (solid nodes have no moments)");
+      const double value = real(line, 2, "force");
+      for (int32_t n : targets)
+        _data.state.cload[3 * int64_t{n} + dof - 1] = value;
+    }
+  }
+
+  /// Pressure `value` on face `face_field` (P1..P6) of the cells of field 0.
+  void pressure_on(const DeckDataLine& line, const std::vector<int32_t>& cells, size_t face_field, double value)
+  {
+    const std::string kind = name_of(line.fields[face_field]);
+    if (kind.size() != 2 || kind[0] != 'P' || kind[1] < '1' || kind[1] > '6')
+      fail_at(line.at(face_field), "load type '" + text(line.fields[face_field]) +
+                                        "' is not implemented by feticon (pressure P1 to P6)");
+    for (int32_t c : cells)
+      _data.state.dload[{c, kind[1] - '0'}] = value;
+  }
+
+  void dload()
+  {
+    known_parameters({"OP", "AMPLITUDE"});
+    no_amplitude();
+    if (op_new())
+      _data.state.dload.clear();
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+    {
+      const std::vector<int32_t> cells = elements(line, 0);
+      if (line.fields.size() < 3)
+        fail_at(line.where, "a *DLOAD line is: element or set, P1 to P6, pressure");
+      pressure_on(line, cells, 1, real(line, 2, "pressure"));
+    }
+  }
+
+  void dsload()
+  {
+    known_parameters({"OP", "AMPLITUDE"});
+    no_amplitude();
+    if (op_new())
+      _data.state.dload.clear();
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+    {
+      const std::string name = line.fields.empty() ? std::string() : name_of(line.fields[0]);
+      const auto it = _data.surfaces.find(name);
+      if (it == _data.surfaces.end() || it->second.node_based)
+        fail_at(line.at(0), "no element surface '" + name + "' is defined");
+      if (line.fields.size() < 3 || name_of(line.fields[1]) != "P")
+        fail_at(line.where, "a *DSLOAD line is: surface, P, pressure");
+      const double value = real(line, 2, "pressure");
+      for (const DeckFace& f : it->second.faces)
+        _data.state.dload[{f.cell, f.face}] = value;
+    }
+  }
+
+  void equation()
+  {
+    known_parameters({});
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+    {
+      const int64_t n = integer(line, 0, "number of terms");
+      if (n < 1 || n > 1000)
+        fail_at(line.at(0), "an equation has 1 to 1000 terms, not " + std::to_string(n));
+      fem::LinearEquation eq;
+      const DeckPosition start = line.where;
+      while (static_cast<int64_t>(eq.terms.size()) < n)
+      {
+        if (!_tokens.next_data(line))
+          fail_at(start, "the equation has fewer than its " + std::to_string(n) + " terms");
+        if (line.fields.size() % 3 != 0)
+          fail_at(line.where, "equation terms come in triples: node, degree of freedom, coefficient");
+        for (size_t k = 0; k + 2 < line.fields.size(); k += 3)
+        {
+          const std::vector<int32_t> targets = nodes(line, k);
+          if (targets.size() != 1)
+            fail_at(line.at(k), "an equation term names one node; this set has " + std::to_string(targets.size()));
+          const int64_t dof = integer(line, k + 1, "degree of freedom");
+          if (dof < 1 || dof > 3)
+            fail_at(line.at(k + 1), "degree of freedom " + std::to_string(dof) + " is not 1 to 3");
+          eq.terms.push_back({targets[0], static_cast<int>(dof - 1), real(line, k + 2, "coefficient")});
+        }
+      }
+      if (static_cast<int64_t>(eq.terms.size()) != n)
+        fail_at(line.where, "the equation has more terms than its " + std::to_string(n));
+      if (eq.terms[0].coefficient == 0)
+        fail_at(start, "the first term of an equation (the dependent one) has coefficient zero");
+      _data.equations.push_back(std::move(eq));
+    }
+  }
+
+  // ---- contact --------------------------------------------------------------------------
+  void surface_interaction()
+  {
+    known_parameters({"NAME"});
+    _interaction = required("NAME");
+    _data.interactions.insert(_interaction);
+    no_data();
+  }
+
+  void surface_behavior()
+  {
+    known_parameters({"PRESSURE-OVERCLOSURE"});
+    if (_interaction.empty())
+      throw Error(where() + " comes before any *SURFACE INTERACTION");
+    const std::string law = required("PRESSURE-OVERCLOSURE");
+    std::string parameters;
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+      for (size_t k = 0; k < line.fields.size(); ++k)
+        parameters += (parameters.empty() ? "" : ", ") + text(line.fields[k]);
+    if (law == "HARD")
+      return; // what feticon enforces
+    if (law == "TIED")
+      throw Error(where() + ": PRESSURE-OVERCLOSURE=TIED (tied contact) is not implemented by feticon");
+    if (law != "LINEAR" && law != "EXPONENTIAL" && law != "TABULAR")
+      throw Error(where() + ": PRESSURE-OVERCLOSURE=" + law + " is not a law feticon knows");
+    _data.warn("interaction " + _interaction + ": PRESSURE-OVERCLOSURE=" + law + " (" + parameters + ", " +
+               _keyword.where.str() + ") is a penalty law; feticon enforces non-penetration exactly, so its "
+               "answer differs from CalculiX's by the penetration the law allows (pressure / slope)");
+  }
+
+  void contact_pair()
+  {
+    known_parameters({"INTERACTION", "TYPE", "SMALL SLIDING", "ADJUST", "NLGEOM"});
+    DeckContactPair pair;
+    pair.interaction = required("INTERACTION");
+    pair.where = _keyword.where;
+    if (const std::string* type = _keyword.value("TYPE"))
+    {
+      if (*type != "SURFACE TO SURFACE" && *type != "NODE TO SURFACE")
+        throw Error(where() + ": TYPE=" + *type + " is not implemented by feticon (SURFACE TO SURFACE, NODE TO SURFACE)");
+      pair.node_to_surface = *type == "NODE TO SURFACE";
+    }
+    if (_keyword.has("ADJUST"))
+      _data.warn(where() + ": ADJUST= is not used; feticon takes the gap as meshed");
+    if (_keyword.has("SMALL SLIDING"))
+      _data.warn(where() + ": SMALL SLIDING is not used; feticon searches the contact in every outer iteration");
+    DeckDataLine line;
+    bool any = false;
+    while (_tokens.next_data(line))
+    {
+      if (line.fields.size() != 2 || line.fields[0].empty() || line.fields[1].empty())
+        fail_at(line.where, "a contact pair line is: slave surface, master surface");
+      pair.slave = name_of(line.fields[0]);
+      pair.master = name_of(line.fields[1]);
+      _data.pairs.push_back(pair);
+      any = true;
+    }
+    if (!any)
+      throw Error(where() + " needs a data line: slave surface, master surface");
+  }
+
+  // ---- steps ----------------------------------------------------------------------------
+  void step()
+  {
+    known_parameters({"NLGEOM", "INC", "INCF", "AMPLITUDE", "PERTURBATION", "THERMAL NETWORK", "SHOCK SMOOTHING"});
+    if (_in_step)
+      throw Error(where() + ": the *STEP at " + _step_where.str() + " has no *END STEP before this one");
+    for (const char* p : {"PERTURBATION", "THERMAL NETWORK"})
+      if (_keyword.has(p))
+        throw Error(where() + ": " + p + " is not implemented by feticon");
+    _in_step = true;
+    _step_where = _keyword.where;
+    _step = DeckStep{};
+    _step.where = _keyword.where.str();
+    const std::string* nlgeom = _keyword.value("NLGEOM");
+    // NLGEOM stays on once a step has set it (CalculiX: "it remains active in all steps").
+    _step.nlgeom = (!_data.steps.empty() && _data.steps.back().nlgeom) || (nlgeom && (nlgeom->empty() || *nlgeom == "YES"));
+    _have_procedure = false;
+    no_data();
+  }
+
+  void static_procedure()
+  {
+    known_parameters({"DIRECT", "SOLVER", "TIME RESET", "TOTAL TIME"});
+    if (!_in_step)
+      throw Error(where() + " belongs inside a *STEP");
+    if (const std::string* solver = _keyword.value("SOLVER"))
+      _data.warn(where() + ": SOLVER=" + *solver + " is not used; feticon solves by FETI");
+    _have_procedure = true;
+    DeckDataLine line;
+    if (!_tokens.next_data(line))
+      return; // one increment
+    const double initial = line.fields.size() > 0 && !line.fields[0].empty() ? real(line, 0, "initial increment") : 1.0;
+    const double total = line.fields.size() > 1 && !line.fields[1].empty() ? real(line, 1, "step time") : 1.0;
+    if (!(initial > 0) || !(total > 0))
+      fail_at(line.where, "the initial increment and the step time must be positive");
+    const double increments = std::ceil(total / initial - 1e-9);
+    if (increments > 1000)
+      fail_at(line.where, "the step asks for " + std::to_string(static_cast<int64_t>(increments)) +
+                              " increments; feticon takes at most 1000 load steps per step");
+    _step.increments = std::max(1, static_cast<int>(increments));
+    if (!_keyword.has("DIRECT"))
+      _data.warn(where() + ": feticon takes the initial increment as fixed (" + std::to_string(_step.increments) +
+                 " load steps); CalculiX adapts it");
+    if (_tokens.next_data(line))
+      fail_at(line.where, "*STATIC takes one data line");
+  }
+
+  void end_step()
+  {
+    if (!_in_step)
+      throw Error(where() + " without a *STEP");
+    if (!_have_procedure)
+      throw Error(_step_where.str() + ": *STEP has no *STATIC procedure (the only one feticon implements)");
+    _in_step = false;
+    _data.steps.push_back(_step);
+    DeckLoadState state = _data.state;
+    for (const auto& [dof, value] : _data.model_boundary)
+      state.boundary.emplace(dof, value); // a step's own value of a model support wins
+    _data.step_states.push_back(std::move(state));
+    no_data();
+  }
+
+  void output_request()
+  {
+    known_parameters({"NSET", "ELSET", "TOTALS", "FREQUENCY", "FREQUENCYF", "GLOBAL", "OUTPUT", "SLAVE",
+                      "MASTER", "TIME POINTS", "LAST ITERATIONS", "CONTACT ELEMENTS", "SECTION FORCES",
+                      "OUTPUT ALL", "NSETF", "POSITION"});
+    if (!_in_step)
+      throw Error(where() + " belongs inside a *STEP");
+    using Kind = DeckOutputRequest::Kind;
+    static const std::map<std::string, Kind> kinds = {
+        {"NODE PRINT", Kind::node_print}, {"EL PRINT", Kind::el_print}, {"CONTACT PRINT", Kind::contact_print},
+        {"NODE FILE", Kind::node_file},   {"EL FILE", Kind::el_file},   {"CONTACT FILE", Kind::contact_file}};
+    DeckOutputRequest request;
+    request.kind = kinds.at(_keyword.name);
+    request.where = _keyword.where.str();
+    if (const std::string* s = _keyword.value("NSET"))
+      request.set = *s;
+    if (const std::string* s = _keyword.value("ELSET"))
+      request.set = *s;
+    if (!request.set.empty())
+    {
+      const bool node_set = _keyword.has("NSET");
+      const auto& sets = node_set ? _data.node_sets : _data.element_sets;
+      if (!sets.count(request.set))
+        throw Error(where() + ": no " + (node_set ? "node" : "element") + " set '" + request.set + "' is defined");
+    }
+    if (const std::string* t = _keyword.value("TOTALS"))
+    {
+      if (*t != "YES" && *t != "ONLY" && *t != "NO")
+        throw Error(where() + ": TOTALS=" + *t + " must be YES, ONLY or NO");
+      request.totals = *t == "YES" ? DeckOutputRequest::Totals::yes
+                       : *t == "ONLY" ? DeckOutputRequest::Totals::only
+                                      : DeckOutputRequest::Totals::no;
+    }
+    for (const char* p : {"FREQUENCY", "FREQUENCYF", "TIME POINTS", "LAST ITERATIONS", "CONTACT ELEMENTS"})
+      if (_keyword.has(p))
+        _data.warn(where() + ": " + p + " is not honoured; feticon writes every converged increment");
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+      for (const std::string_view v : line.fields)
+        if (!v.empty())
+          request.variables.push_back(name_of(v));
+    if (request.variables.empty())
+      request.variables = request.kind == Kind::node_print || request.kind == Kind::node_file
+                              ? std::vector<std::string>{"U"}
+                              : request.kind == Kind::el_print || request.kind == Kind::el_file
+                                    ? std::vector<std::string>{"S"}
+                                    : std::vector<std::string>{"CSTR"};
+    _step.outputs.push_back(std::move(request));
+  }
+
+  DeckTokenizer _tokens;
+  std::string _path;
+  DeckKeyword _keyword;
+  DeckData _data;
+  std::string _material, _interaction;
+  bool _in_step = false, _have_procedure = false;
+  DeckPosition _step_where;
+  DeckStep _step;
+};
+} // namespace
+
+bool LabelIndex::insert(int64_t label, int32_t index)
+{
+  if (find(label) >= 0)
+    return false;
+  ++_count;
+  if (label >= 0 && label < 2 * _count + dense_label_slack)
+  {
+    if (static_cast<size_t>(label) >= _dense.size())
+      _dense.resize(std::max<size_t>(static_cast<size_t>(label) + 1, _dense.size() * 3 / 2), 0);
+    _dense[label] = index + 1;
+    return true;
+  }
+  _sparse.emplace(label, index); // a label far beyond the count: a dense table would be mostly empty
+  return true;
+}
+
+int32_t LabelIndex::find(int64_t label) const
+{
+  if (label >= 0 && static_cast<size_t>(label) < _dense.size() && _dense[label] != 0)
+    return _dense[label] - 1;
+  if (_sparse.empty())
+    return -1;
+  const auto it = _sparse.find(label);
+  return it == _sparse.end() ? -1 : it->second;
+}
+
+DeckData read_deck_data(const std::filesystem::path& path) { return KeywordReader(path).run(); }
+} // namespace feticon::io

@@ -1,0 +1,479 @@
+/// The fem::Problem of an input deck: nodes that elements use, bodies as the connected
+/// components of the element graph, a material per body from the solid sections, surfaces as
+/// outward face sets, supports and loads per step as the stages of the load history.
+
+#include "common/error.hpp"
+#include "io/deck.hpp"
+#include "io/deck_data.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <set>
+#include <tuple>
+#include <unordered_map>
+
+namespace feticon::io
+{
+namespace
+{
+/// CalculiX's C3D8 face Sk (k = 1..6) as the index of mesh::hex_faces with the same nodes
+/// (CalculiX manual, C3D8: S1 = 1-2-3-4, S2 = 5-8-7-6, S3 = 1-5-6-2, S4 = 2-6-7-3,
+/// S5 = 3-7-8-4, S6 = 4-8-5-1), so that the face comes out oriented outward.
+constexpr std::array<int, 7> hex_face_of_calculix = {-1, 0, 1, 2, 5, 3, 4};
+
+mesh::Face face_nodes(const mesh::Cell& cell, int calculix_face)
+{
+  const auto& local = mesh::hex_faces[hex_face_of_calculix[calculix_face]];
+  return {cell[local[0]], cell[local[1]], cell[local[2]], cell[local[3]]};
+}
+
+std::string step_name(const DeckStep& step, size_t k)
+{
+  return "step " + std::to_string(k + 1) + " (" + step.where + ")";
+}
+
+/// Union-find over nodes: cells that share a node are one body.
+class Components
+{
+public:
+  explicit Components(int32_t n) : _parent(n) { std::iota(_parent.begin(), _parent.end(), 0); }
+  int32_t find(int32_t a)
+  {
+    while (_parent[a] != a)
+      a = _parent[a] = _parent[_parent[a]];
+    return a;
+  }
+  void join(int32_t a, int32_t b) { _parent[find(a)] = find(b); }
+
+private:
+  std::vector<int32_t> _parent;
+};
+
+class ModelBuilder
+{
+public:
+  ModelBuilder(DeckData& data, Deck& deck) : _d(data), _deck(deck.info), _p(deck.problem) {}
+
+  void build()
+  {
+    nodes_and_cells();
+    bodies_and_materials();
+    sets_and_surfaces();
+    contact_pairs();
+    load_stages();
+    equations();
+  }
+
+private:
+  /// The nodes elements use, renumbered in reading order; cells in mesh numbering.
+  void nodes_and_cells()
+  {
+    const int32_t n_read = static_cast<int32_t>(_d.node_labels.size());
+    _mesh_node.assign(n_read, -1);
+    for (const mesh::Cell& cell : _d.cells)
+      for (int32_t n : cell)
+        _mesh_node[n] = 0;
+    int32_t count = 0;
+    for (int32_t& m : _mesh_node)
+      if (m == 0)
+        m = count++;
+    if (count < n_read)
+      _d.warn(std::to_string(n_read - count) + " nodes of the deck belong to no element; supports on them are "
+              "not used");
+    mesh::HexMesh& mesh = _p.mesh;
+    mesh.nodes.resize(count, 3);
+    _deck.node_labels.resize(count);
+    for (int32_t n = 0; n < n_read; ++n)
+      if (const int32_t m = _mesh_node[n]; m >= 0)
+      {
+        mesh.nodes.row(m) = Eigen::RowVector3d(_d.coordinates[3 * n], _d.coordinates[3 * n + 1], _d.coordinates[3 * n + 2]);
+        _deck.node_labels[m] = _d.node_labels[n];
+      }
+    _d.coordinates = {};
+    mesh.cells = std::move(_d.cells);
+    for (size_t c = 0; c < mesh.cells.size(); ++c)
+    {
+      for (int32_t& n : mesh.cells[c])
+        n = _mesh_node[n];
+      const double det = mesh::centre_jacobian_determinant(mesh, mesh.cells[c]);
+      FETICON_CHECK(det > 0, "element " << _d.element_labels[c] << " is inverted or degenerate (Jacobian "
+                                        << det << " at its centre): its nodes are not in C3D8 order");
+    }
+    _deck.element_labels = std::move(_d.element_labels);
+  }
+
+  int32_t mesh_node(int32_t read_node, const std::string& what) const
+  {
+    const int32_t m = _mesh_node[read_node];
+    FETICON_CHECK(m >= 0, what << " names node " << _d.node_labels[read_node] << ", which belongs to no element");
+    return m;
+  }
+
+  void bodies_and_materials()
+  {
+    mesh::HexMesh& mesh = _p.mesh;
+    Components components(mesh.n_nodes());
+    for (const mesh::Cell& cell : mesh.cells)
+      for (int k = 1; k < 8; ++k)
+        components.join(cell[0], cell[k]);
+
+    // The material of every cell from the sections.
+    std::vector<int32_t> section_of_cell(mesh.n_cells(), -1);
+    for (size_t s = 0; s < _d.sections.size(); ++s)
+    {
+      const DeckSection& section = _d.sections[s];
+      const auto set = _d.element_sets.find(section.elset);
+      FETICON_CHECK(set != _d.element_sets.end(), section.where.str() << ": *SOLID SECTION: no element set '"
+                                                                      << section.elset << "' is defined");
+      const auto material = _d.materials.find(section.material);
+      FETICON_CHECK(material != _d.materials.end(), section.where.str() << ": *SOLID SECTION: no material '"
+                                                                        << section.material << "' is defined");
+      FETICON_CHECK(material->second.young > 0, section.where.str() << ": *SOLID SECTION: material '"
+                                                                    << section.material << "' has no *ELASTIC");
+      for (int32_t c : set->second)
+      {
+        FETICON_CHECK(section_of_cell[c] < 0 || section_of_cell[c] == static_cast<int32_t>(s),
+                      section.where.str() << ": *SOLID SECTION: element " << _deck.element_labels[c]
+                                          << " has a section already (" << _d.sections[section_of_cell[c]].where.str() << ")");
+        section_of_cell[c] = static_cast<int32_t>(s);
+      }
+    }
+
+    std::unordered_map<int32_t, int32_t> body_of_root;
+    mesh.cell_body.resize(mesh.n_cells());
+    std::vector<int32_t> body_section;
+    for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    {
+      FETICON_CHECK(section_of_cell[c] >= 0, "element " << _deck.element_labels[c]
+                                                        << " has no *SOLID SECTION (no material)");
+      const auto [it, added] = body_of_root.emplace(components.find(mesh.cells[c][0]), static_cast<int32_t>(body_section.size()));
+      if (added)
+        body_section.push_back(section_of_cell[c]);
+      const int32_t body = it->second;
+      mesh.cell_body[c] = body;
+      const DeckSection& mine = _d.sections[section_of_cell[c]];
+      const DeckSection& first = _d.sections[body_section[body]];
+      FETICON_CHECK(mine.material == first.material,
+                    "element " << _deck.element_labels[c] << " (material " << mine.material << ") shares nodes with "
+                               << "elements of material " << first.material << "; feticon takes one material per "
+                               << "body (a connected set of elements)");
+      if (body_section[body] != section_of_cell[c])
+        body_section[body] = -1 - body_section[body]; // the body spans several sections
+    }
+    // Names: the section's element set where one section makes the body, else BODY<k>.
+    std::map<std::string, int> uses;
+    std::vector<std::string> names(body_section.size());
+    for (size_t b = 0; b < body_section.size(); ++b)
+    {
+      const int32_t s = body_section[b] >= 0 ? body_section[b] : -1 - body_section[b];
+      names[b] = body_section[b] >= 0 ? _d.sections[s].elset : "BODY" + std::to_string(b + 1);
+      ++uses[names[b]];
+      _p.materials.push_back(_d.materials.at(_d.sections[s].material));
+    }
+    for (size_t b = 0; b < names.size(); ++b)
+      mesh.body_names.push_back(uses[names[b]] > 1 ? names[b] + "_" + std::to_string(b + 1) : names[b]);
+  }
+
+  void sets_and_surfaces()
+  {
+    mesh::HexMesh& mesh = _p.mesh;
+    for (auto& [name, members] : _d.node_sets)
+    {
+      std::vector<int32_t> nodes;
+      nodes.reserve(members.size());
+      for (int32_t n : members)
+        if (_mesh_node[n] >= 0)
+          nodes.push_back(_mesh_node[n]);
+      std::sort(nodes.begin(), nodes.end());
+      nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+      members = {};
+      mesh.node_sets[name] = std::move(nodes);
+    }
+    for (auto& [name, members] : _d.element_sets)
+    {
+      std::sort(members.begin(), members.end());
+      members.erase(std::unique(members.begin(), members.end()), members.end());
+      _deck.element_sets[name] = std::move(members);
+    }
+    for (const auto& [name, surface] : _d.surfaces)
+    {
+      std::vector<mesh::Face> faces;
+      if (surface.node_based)
+        faces = faces_of_node_surface(name, surface);
+      else
+        for (const DeckFace& f : surface.faces)
+          faces.push_back(face_nodes(mesh.cells[f.cell], f.face));
+      FETICON_CHECK(!faces.empty(), surface.where.str() << ": *SURFACE " << name << " has no faces");
+      mesh.face_sets[name] = std::move(faces);
+    }
+  }
+
+  /// The faces of a node surface: the boundary faces whose four nodes are all in it, and for a
+  /// node on none of those (a single slave node) the boundary faces around it; then the
+  /// node set `slave_nodes_NAME` restricts the contact rows to the surface's own nodes.
+  std::vector<mesh::Face> faces_of_node_surface(const std::string& name, const DeckSurface& surface)
+  {
+    const mesh::HexMesh& mesh = _p.mesh;
+    std::vector<char> in_surface(mesh.n_nodes(), 0);
+    for (int32_t n : surface.nodes)
+      if (_mesh_node[n] >= 0)
+        in_surface[_mesh_node[n]] = 1;
+    std::map<std::array<int32_t, 4>, std::pair<mesh::Face, int>> candidates;
+    for (const mesh::Cell& cell : mesh.cells)
+      for (const auto& local : mesh::hex_faces)
+      {
+        mesh::Face face{cell[local[0]], cell[local[1]], cell[local[2]], cell[local[3]]};
+        if (!(in_surface[face[0]] && in_surface[face[1]] && in_surface[face[2]] && in_surface[face[3]]))
+          continue;
+        std::array<int32_t, 4> key = face;
+        std::sort(key.begin(), key.end());
+        auto [it, added] = candidates.emplace(key, std::pair{face, 0});
+        ++it->second.second;
+      }
+    std::vector<mesh::Face> faces;
+    std::vector<char> covered(mesh.n_nodes(), 0);
+    for (const auto& [key, face_count] : candidates)
+      if (face_count.second == 1) // on the boundary: one cell has it
+      {
+        faces.push_back(face_count.first);
+        for (int32_t n : face_count.first)
+          covered[n] = 1;
+      }
+    std::vector<int32_t> nodes;
+    bool restricted = false;
+    for (int32_t n = 0; n < mesh.n_nodes(); ++n)
+      if (in_surface[n])
+      {
+        nodes.push_back(n);
+        restricted = restricted || !covered[n];
+      }
+    if (!restricted)
+      return faces;
+    // Boundary faces around the uncovered nodes: every cell face counted once is on the boundary.
+    std::map<std::array<int32_t, 4>, std::pair<mesh::Face, int>> around;
+    for (const mesh::Cell& cell : mesh.cells)
+      for (const auto& local : mesh::hex_faces)
+      {
+        mesh::Face face{cell[local[0]], cell[local[1]], cell[local[2]], cell[local[3]]};
+        std::array<int32_t, 4> key = face;
+        std::sort(key.begin(), key.end());
+        auto [it, added] = around.emplace(key, std::pair{face, 0});
+        ++it->second.second;
+      }
+    for (const auto& [key, face_count] : around)
+      if (face_count.second == 1 && !candidates.count(key) &&
+          std::any_of(key.begin(), key.end(), [&](int32_t n) { return in_surface[n] && !covered[n]; }))
+        faces.push_back(face_count.first);
+    _p.mesh.node_sets["slave_nodes_" + name] = std::move(nodes);
+    _restricted_surfaces.insert(name);
+    return faces;
+  }
+
+  void contact_pairs()
+  {
+    bool any_node_to_surface = false, any_surface_to_surface = false;
+    for (const DeckContactPair& pair : _d.pairs)
+    {
+      const std::string at = pair.where.str() + ": *CONTACT PAIR";
+      FETICON_CHECK(_d.interactions.count(pair.interaction), at << ": no *SURFACE INTERACTION '" << pair.interaction
+                                                                << "' is defined");
+      for (const std::string& s : {pair.slave, pair.master})
+        FETICON_CHECK(_d.surfaces.count(s), at << ": no *SURFACE '" << s << "' is defined");
+      FETICON_CHECK(pair.slave != pair.master, at << ": slave and master are the same surface '" << pair.slave << "'");
+      FETICON_CHECK(_p.contacts.empty(), at << ": a second contact pair; feticon's solvers take one pair per model");
+      FETICON_CHECK(!_d.surfaces.at(pair.master).node_based,
+                    at << ": master surface '" << pair.master << "' must be made of element faces (TYPE=ELEMENT)");
+      _p.contacts.push_back(
+          {pair.slave, pair.master, _restricted_surfaces.count(pair.slave) ? "slave_nodes_" + pair.slave : ""});
+      (pair.node_to_surface ? any_node_to_surface : any_surface_to_surface) = true;
+    }
+    if (any_node_to_surface && any_surface_to_surface)
+      _d.warn("the deck has NODE TO SURFACE and SURFACE TO SURFACE pairs; feticon takes one formulation for "
+              "all (mortar, the surface-to-surface one)");
+  }
+
+  /// Supports as node sets grouped by their prescribed components and values.
+  std::vector<fem::DirichletCondition> supports(const std::map<int64_t, double>& boundary, const std::string& prefix)
+  {
+    std::map<int32_t, std::array<std::optional<double>, 3>> by_node;
+    for (const auto& [dof, value] : boundary)
+    {
+      const int32_t m = _mesh_node[dof / 3];
+      if (m < 0 || _p.eliminated[dof % 3])
+        continue;
+      by_node[m][dof % 3] = value;
+    }
+    std::map<std::array<std::optional<double>, 3>, std::vector<int32_t>> groups;
+    for (const auto& [node, values] : by_node)
+      groups[values].push_back(node);
+    std::vector<fem::DirichletCondition> out;
+    for (auto& [values, nodes] : groups)
+    {
+      const std::string name = prefix + std::to_string(out.size() + 1);
+      _p.mesh.node_sets[name] = std::move(nodes);
+      out.push_back({name, values});
+    }
+    return out;
+  }
+
+  std::vector<fem::NodalForce> nodal_forces(const std::map<int64_t, double>& cload, const std::string& what)
+  {
+    std::vector<fem::NodalForce> out;
+    for (const auto& [dof, value] : cload)
+      out.push_back({mesh_node(static_cast<int32_t>(dof / 3), what + ": *CLOAD"), static_cast<int>(dof % 3), value});
+    return out;
+  }
+
+  /// Pressures as face sets grouped by value.
+  std::vector<fem::FacePressure> pressures(const std::map<std::pair<int32_t, int>, double>& dload, const std::string& prefix)
+  {
+    std::map<double, std::vector<mesh::Face>> groups;
+    for (const auto& [face, value] : dload)
+      groups[value].push_back(face_nodes(_p.mesh.cells[face.first], face.second));
+    std::vector<fem::FacePressure> out;
+    for (auto& [value, faces] : groups)
+    {
+      const std::string name = prefix + std::to_string(out.size() + 1);
+      _p.mesh.face_sets[name] = std::move(faces);
+      out.push_back({name, value});
+    }
+    return out;
+  }
+
+  /// Plane strain as CalculiX decks state it (feticon export writes it so): u_z = 0 on every
+  /// node in every step is the eliminated component, not a support.
+  bool every_node_fixes_z() const
+  {
+    for (const DeckLoadState& state : _d.step_states)
+    {
+      int32_t fixed = 0;
+      std::vector<char> seen(_p.mesh.n_nodes(), 0);
+      for (const auto& [dof, value] : state.boundary)
+        if (dof % 3 == 2 && value == 0 && _mesh_node[dof / 3] >= 0 && !seen[_mesh_node[dof / 3]])
+        {
+          seen[_mesh_node[dof / 3]] = 1;
+          ++fixed;
+        }
+      if (fixed != _p.mesh.n_nodes())
+        return false;
+    }
+    return true;
+  }
+
+  void load_stages()
+  {
+    _p.eliminated = {false, false, every_node_fixes_z()};
+    // The prescribed DOFs of the first step; later steps may change values only.
+    std::vector<int64_t> first_dofs;
+    for (size_t k = 0; k < _d.step_states.size(); ++k)
+    {
+      const DeckLoadState& state = _d.step_states[k];
+      const std::string name = step_name(_deck.steps[k], k);
+      std::vector<int64_t> dofs;
+      for (const auto& [dof, value] : state.boundary)
+        if (_mesh_node[dof / 3] >= 0 && !_p.eliminated[dof % 3])
+          dofs.push_back(dof);
+      if (k == 0)
+        first_dofs = dofs;
+      else if (dofs != first_dofs)
+      {
+        std::vector<int64_t> differ;
+        std::set_symmetric_difference(dofs.begin(), dofs.end(), first_dofs.begin(), first_dofs.end(),
+                                      std::back_inserter(differ));
+        FETICON_CHECK(false, name << " prescribes other degrees of freedom than step 1 (node "
+                                  << _d.node_labels[differ[0] / 3] << ", degree of freedom " << differ[0] % 3 + 1
+                                  << "); feticon keeps the supports of the first step and lets later steps change "
+                                  << "their values only");
+      }
+      const std::string prefix = "step" + std::to_string(k + 1) + "_";
+      if (k == 0)
+      {
+        _p.dirichlet = supports(state.boundary, prefix + "support_");
+        _p.nodal_forces = nodal_forces(state.cload, name);
+        _p.pressures = pressures(state.dload, prefix + "pressure_");
+        continue;
+      }
+      fem::LoadStage stage;
+      stage.dirichlet = supports(state.boundary, prefix + "support_");
+      stage.nodal_forces = nodal_forces(state.cload, name);
+      stage.pressures = pressures(state.dload, prefix + "pressure_");
+      stage.increments = _deck.steps[k].increments;
+      _p.later_stages.push_back(std::move(stage));
+    }
+  }
+
+  void equations()
+  {
+    for (fem::LinearEquation& eq : _d.equations)
+    {
+      for (auto& term : eq.terms)
+        term.node = mesh_node(term.node, "*EQUATION");
+      _p.equations.push_back(std::move(eq));
+    }
+  }
+
+  DeckData& _d;
+  DeckInfo& _deck;
+  fem::Problem& _p;
+  std::vector<int32_t> _mesh_node; ///< mesh node of every node read, -1 if no element uses it
+  std::set<std::string> _restricted_surfaces; ///< node surfaces with a slave_nodes_NAME set
+};
+} // namespace
+
+Deck read_deck(const std::filesystem::path& path)
+{
+  DeckData data = read_deck_data(path);
+  Deck deck;
+  deck.info.path = path;
+  deck.info.steps = data.steps;
+  deck.problem.name = path.stem().string();
+  ModelBuilder(data, deck).build();
+  const auto& steps = deck.info.steps;
+  if (steps.back().nlgeom && !steps.front().nlgeom)
+    data.warn("NLGEOM is set from a later step on; feticon takes one kinematics for the run, large displacements");
+  deck.info.warnings = std::move(data.warnings);
+  deck.problem.validate();
+  return deck;
+}
+
+DeckOutline deck_outline(const std::filesystem::path& path)
+{
+  DeckOutline out;
+  DeckTokenizer tokens(path);
+  DeckKeyword keyword;
+  bool first_step = true, node_to_surface = false, surface_to_surface = false;
+  while (tokens.next_keyword(keyword))
+  {
+    if (keyword.name == "CONTACT PAIR")
+    {
+      const std::string* type = keyword.value("TYPE");
+      (!type || *type == "NODE TO SURFACE" ? node_to_surface : surface_to_surface) = true;
+    }
+    if (keyword.name == "NODE")
+      out.nodes += tokens.count_data_lines();
+    else if (keyword.name == "ELEMENT")
+      out.elements += tokens.count_data_lines();
+    else if (keyword.name == "STEP")
+    {
+      const std::string* nlgeom = keyword.value("NLGEOM");
+      out.nlgeom = out.nlgeom || (nlgeom && (nlgeom->empty() || *nlgeom == "YES"));
+    }
+    else if (keyword.name == "STATIC" && first_step)
+    {
+      first_step = false;
+      DeckDataLine line;
+      if (tokens.next_data(line) && !line.fields.empty())
+      {
+        // The reader checks these numbers; here a malformed one leaves the default.
+        const double initial = std::strtod(std::string(line.fields[0]).c_str(), nullptr);
+        const double total = line.fields.size() > 1 ? std::strtod(std::string(line.fields[1]).c_str(), nullptr) : 1.0;
+        if (initial > 0 && total > 0 && total / initial <= 1000)
+          out.increments = std::max(1, static_cast<int>(std::ceil(total / initial - 1e-9)));
+      }
+    }
+  }
+  out.contact_formulation = node_to_surface && !surface_to_surface ? "node_to_segment" : "mortar";
+  return out;
+}
+} // namespace feticon::io

@@ -1,0 +1,349 @@
+/// Tests of the input deck reader. References: (1) the deck writer's model (io/calculix_deck,
+/// tested on its own against the text) read back, compared entity by entity with the
+/// fem::Problem it was written from; (2) hand-written decks whose content is stated in the
+/// test (CalculiX manual, "Input deck format": keyword syntax, C3D8 faces S1-S6, OP=NEW/MOD);
+/// (3) malformed decks, each a one-line error naming file and line.
+
+#include "io/calculix_deck.hpp"
+#include "io/deck.hpp"
+#include "io/problem_file.hpp"
+
+#include "common/error.hpp"
+#include "io_test_files.hpp"
+#include "mesh/box.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace feticon::io
+{
+namespace
+{
+std::filesystem::path write(const std::filesystem::path& dir, const std::string& name, const std::string& text)
+{
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+/// Base 1 x 0.5 x 0.4 and a punch 0.5 x 0.5 x 0.4 on it, supports and a traction.
+fem::Problem punch_problem()
+{
+  fem::Problem p;
+  p.name = "punch";
+  mesh::append_mesh(p.mesh, mesh::generate_box({.origin = {0, -0.5, 0}, .lengths = {1, 0.5, 0.4}, .nx = 4, .ny = 2, .nz = 2,
+                                                .body_name = "base"}), "base_");
+  mesh::append_mesh(p.mesh, mesh::generate_box({.origin = {0, 0, 0}, .lengths = {0.5, 0.5, 0.4}, .nx = 3, .ny = 3, .nz = 2,
+                                                .body_name = "punch"}), "punch_");
+  p.materials = {{2e11, 0.3}, {1e11, 0.25}};
+  p.dirichlet = {{"base_ymin", {0.0, 0.0, 0.0}}, {"punch_xmin", {0.0, std::nullopt, std::nullopt}},
+                 {"punch_ymax", {std::nullopt, -1e-4, std::nullopt}}};
+  p.tractions = {{"punch_ymax", {0.0, -1e7, 0.0}}};
+  p.contacts = {{"punch_ymin", "base_ymax"}};
+  return p;
+}
+
+std::set<std::vector<int32_t>> face_keys(const std::vector<mesh::Face>& faces, bool sorted)
+{
+  std::set<std::vector<int32_t>> out;
+  for (const mesh::Face& f : faces)
+  {
+    std::vector<int32_t> key(f.begin(), f.end());
+    if (sorted)
+      std::sort(key.begin(), key.end());
+    else // the same cyclic order from its smallest node
+      std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+    out.insert(key);
+  }
+  return out;
+}
+
+/// The message of the feticon::Error `read_deck(path)` throws, "" if none.
+std::string error_of(const std::filesystem::path& path)
+{
+  try
+  {
+    read_deck(path);
+  }
+  catch (const Error& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
+const char* two_cubes = R"(*HEADING
+two unit cubes, the upper one pressed on the lower
+** a comment line
+*Node, nset=all
+1, 0, 0, 0
+2, 1, 0, 0
+3, 1, 1, 0
+4, 0, 1, 0
+5, 0, 0, 1
+6, 1, 0, 1
+7, 1, 1, 1
+8, 0, 1, 1
+11, 0, 0, 1
+12, 1, 0, 1
+13, 1, 1, 1
+14, 0, 1, 1
+15, 0, 0, 2
+16, 1, 0, 2
+17, 1, 1, 2
+18, 0, 1, 2
+*ELEMENT, TYPE=C3D8, ELSET=lower
+1, 1, 2, 3, 4,
+   5, 6, 7, 8
+*element, type=c3d8, elset=UPPER
+2, 11, 12, 13, 14, 15, 16, 17, 18
+*NSET, NSET=bottom, GENERATE
+1, 4, 1
+*NSET, NSET=top
+15, 16
+17, 18
+*NSET, NSET=both
+bottom, top
+*ELSET, ELSET=EALL
+lower, 2
+*MATERIAL, NAME=steel
+*ELASTIC
+2.1e11, 0.3
+*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL
+*SURFACE, NAME=upper_bottom, TYPE=ELEMENT
+2, S1
+*SURFACE, NAME=lower_top
+lower, s2
+*SURFACE INTERACTION, NAME=si
+*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD
+*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE
+upper_bottom, lower_top
+*BOUNDARY
+bottom, 1, 3
+*EQUATION
+2
+11, 1, 1.0, 12, 1, -1.0
+*STEP, NLGEOM
+*STATIC
+0.25, 1.0
+*BOUNDARY
+top, 1, 2
+*DLOAD
+2, P2, 1e6
+*CLOAD
+17, 3, -10.0
+*NODE PRINT, NSET=top, TOTALS=YES
+U, RF
+*END STEP
+*STEP
+*STATIC
+*CLOAD, OP=NEW
+18, 3, -20.0
+*DLOAD
+2, P2, 2e6
+*BOUNDARY
+top, 1, 2, 1e-3
+*END STEP
+)";
+
+TEST(DeckReader, ExportedDeckReadsBackAsTheProblem)
+{
+  const fem::Problem p = punch_problem();
+  CalculixOptions options;
+  options.overclosure = 0; // the model as it is
+  const auto dir = test::fresh_directory("deck_round_trip");
+  std::ostringstream text;
+  write_calculix_deck(p, options, text);
+  const Deck deck = read_deck(write(dir, "punch.inp", text.str()));
+  const fem::Problem& q = deck.problem;
+
+  ASSERT_EQ(q.mesh.n_nodes(), p.mesh.n_nodes());
+  ASSERT_EQ(q.mesh.n_cells(), p.mesh.n_cells());
+  // The writer numbers nodes n + 1 and cells by body; the reader keeps reading order.
+  EXPECT_LE((q.mesh.nodes - p.mesh.nodes).cwiseAbs().maxCoeff(), 1e-12);
+  std::set<std::array<int32_t, 8>> cells_p(p.mesh.cells.begin(), p.mesh.cells.end()),
+      cells_q(q.mesh.cells.begin(), q.mesh.cells.end());
+  EXPECT_EQ(cells_p, cells_q);
+  ASSERT_EQ(q.mesh.n_bodies(), 2);
+  EXPECT_EQ(q.mesh.body_names[0], "B_BASE");
+  EXPECT_EQ(q.mesh.body_names[1], "B_PUNCH");
+  EXPECT_EQ(q.materials[1].young, 1e11);
+  EXPECT_EQ(q.materials[1].poisson, 0.25);
+  // Loads: the writer's *CLOAD are the consistent forces of the traction.
+  EXPECT_LE((q.external_force() - p.external_force()).cwiseAbs().maxCoeff(), 1e-12 * p.external_force().cwiseAbs().maxCoeff());
+  const fem::ConstrainedDofs cp = p.all_constrained_dofs(), cq = q.all_constrained_dofs();
+  EXPECT_EQ(cp.dofs, cq.dofs);
+  EXPECT_LE((cp.values - cq.values).cwiseAbs().maxCoeff(), 1e-16);
+  // Contact faces: the same faces with the same outward cyclic order.
+  ASSERT_EQ(q.contacts.size(), 1u);
+  EXPECT_EQ(face_keys(q.mesh.face_set(q.contacts[0].slave), false), face_keys(p.mesh.face_set("punch_ymin"), false));
+  EXPECT_EQ(face_keys(q.mesh.face_set(q.contacts[0].master), false), face_keys(p.mesh.face_set("base_ymax"), false));
+  EXPECT_TRUE(q.contacts[0].slave_nodes.empty());
+  // The writer's penalty interaction is reported, not dropped.
+  ASSERT_FALSE(deck.info.warnings.empty());
+  EXPECT_TRUE(std::any_of(deck.info.warnings.begin(), deck.info.warnings.end(),
+                          [](const std::string& w) { return w.find("PRESSURE-OVERCLOSURE=LINEAR") != std::string::npos; }));
+  EXPECT_EQ(deck.info.node_labels.front(), 1);
+  EXPECT_EQ(deck.info.node_labels.back(), p.mesh.n_nodes());
+}
+
+TEST(DeckReader, PlaneStrainDeckEliminatesUz)
+{
+  fem::Problem p = punch_problem();
+  p.eliminated = {false, false, true};
+  p.dirichlet = {{"base_ymin", {0.0, 0.0, std::nullopt}}, {"punch_xmin", {0.0, std::nullopt, std::nullopt}}};
+  CalculixOptions options;
+  options.overclosure = 0;
+  const auto dir = test::fresh_directory("deck_plane_strain");
+  std::ostringstream text;
+  write_calculix_deck(p, options, text);
+  const Deck deck = read_deck(write(dir, "punch.inp", text.str()));
+  EXPECT_TRUE(deck.problem.eliminated[2]); // *BOUNDARY NALL, 3, 3 is plane strain, not a support
+  EXPECT_EQ(deck.problem.all_constrained_dofs().dofs, p.all_constrained_dofs().dofs);
+}
+
+TEST(DeckReader, KeywordsSetsSurfacesAndSteps)
+{
+  const auto dir = test::fresh_directory("deck_keywords");
+  const Deck deck = read_deck(write(dir, "two_cubes.inp", two_cubes));
+  const fem::Problem& p = deck.problem;
+  EXPECT_EQ(p.mesh.n_nodes(), 16);
+  EXPECT_EQ(p.mesh.n_cells(), 2);
+  ASSERT_EQ(p.mesh.n_bodies(), 2); // no shared node: two components
+  EXPECT_EQ(p.mesh.body_names[0], "EALL_1");
+  EXPECT_EQ(p.mesh.body_names[1], "EALL_2");
+  EXPECT_EQ(deck.info.node_labels[8], 11);
+  EXPECT_EQ(p.mesh.node_set("BOTH"), (std::vector<int32_t>{0, 1, 2, 3, 12, 13, 14, 15}));
+  EXPECT_EQ(deck.info.element_sets.at("EALL"), (std::vector<int32_t>{0, 1}));
+  // S1 of the upper cube is its bottom (z = 1), S2 of the lower its top: outward normals.
+  const auto normal = [&](const mesh::Face& f)
+  {
+    const Eigen::Vector3d x0 = p.mesh.nodes.row(f[0]), x1 = p.mesh.nodes.row(f[1]), x3 = p.mesh.nodes.row(f[3]);
+    return Eigen::Vector3d((x1 - x0).cross(x3 - x0).normalized());
+  };
+  EXPECT_LE((normal(p.mesh.face_set("UPPER_BOTTOM")[0]) - Eigen::Vector3d(0, 0, -1)).norm(), 1e-14);
+  EXPECT_LE((normal(p.mesh.face_set("LOWER_TOP")[0]) - Eigen::Vector3d(0, 0, 1)).norm(), 1e-14);
+  ASSERT_EQ(p.contacts.size(), 1u);
+  EXPECT_EQ(p.contacts[0].slave, "UPPER_BOTTOM");
+  ASSERT_EQ(p.equations.size(), 1u);
+  EXPECT_EQ(p.equations[0].terms[1].node, 9);
+  EXPECT_EQ(p.equations[0].terms[1].coefficient, -1.0);
+
+  ASSERT_EQ(deck.info.steps.size(), 2u);
+  EXPECT_TRUE(deck.info.steps[0].nlgeom);
+  EXPECT_TRUE(deck.info.steps[1].nlgeom); // NLGEOM stays on
+  EXPECT_EQ(deck.info.steps[0].increments, 4);
+  ASSERT_EQ(deck.info.steps[0].outputs.size(), 1u);
+  EXPECT_EQ(deck.info.steps[0].outputs[0].set, "TOP");
+  EXPECT_EQ(deck.info.steps[0].outputs[0].variables, (std::vector<std::string>{"U", "RF"}));
+  // Step 1: bottom fixed, top held in x and y; the pressure on the upper cube's top face.
+  const fem::ConstrainedDofs c = p.all_constrained_dofs();
+  EXPECT_EQ(c.dofs.size(), 4u * 3 + 4 * 2);
+  EXPECT_EQ(c.values.cwiseAbs().maxCoeff(), 0.0);
+  const la::Vector f = p.external_force();
+  EXPECT_NEAR(f(3 * 14 + 2), -10.0 - 0.25e6, 1e-6); // node 17: its force and a quarter of the pressure
+  EXPECT_NEAR(f.sum(), -10.0 - 1e6, 1e-6);
+  // Step 2: OP=NEW replaced the force, the pressure doubled, the top moved 1 mm.
+  ASSERT_EQ(p.later_stages.size(), 1u);
+  const fem::LoadStage& s = p.later_stages[0];
+  ASSERT_EQ(s.nodal_forces.size(), 1u);
+  EXPECT_EQ(s.nodal_forces[0].node, 15);
+  EXPECT_EQ(s.nodal_forces[0].value, -20.0);
+  ASSERT_EQ(s.pressures.size(), 1u);
+  EXPECT_EQ(s.pressures[0].pressure, 2e6);
+  int moved = 0;
+  for (const fem::DirichletCondition& d : s.dirichlet)
+    moved += d.value[0] && *d.value[0] == 1e-3 ? static_cast<int>(p.mesh.node_set(d.set).size()) : 0;
+  EXPECT_EQ(moved, 4);
+}
+
+TEST(DeckReader, IncludeContinuationAndNodeSurface)
+{
+  const auto dir = test::fresh_directory("deck_include");
+  std::string text = two_cubes;
+  // The nodes in an included file; the slave surface as the one node 13 (CalculiX's contact1
+  // has such a one-node slave surface).
+  const size_t begin = text.find("*Node"), end = text.find("*ELEMENT");
+  write(dir, "nodes.inc", text.substr(begin, end - begin));
+  text = text.substr(0, begin) + "*INCLUDE,\n INPUT=nodes.inc\n" + text.substr(end);
+  const std::string from = "*SURFACE, NAME=upper_bottom, TYPE=ELEMENT\n2, S1\n";
+  text.replace(text.find(from), from.size(), "*SURFACE, NAME=upper_bottom, TYPE=NODE\n13\n");
+  const Deck deck = read_deck(write(dir, "main.inp", text));
+  const fem::Problem& p = deck.problem;
+  EXPECT_EQ(p.mesh.n_nodes(), 16);
+  ASSERT_EQ(p.contacts.size(), 1u);
+  EXPECT_EQ(p.mesh.node_set(p.contacts[0].slave_nodes), (std::vector<int32_t>{10}));
+  // The faces around the node on the boundary: its tributary area.
+  EXPECT_EQ(p.mesh.face_set(p.contacts[0].slave).size(), 3u);
+}
+
+TEST(DeckReader, MalformedDecksEndInOneLineNamingFileAndLine)
+{
+  const auto dir = test::fresh_directory("deck_errors");
+  struct Case
+  {
+    std::string from, to, expected;
+  };
+  const std::vector<Case> cases = {
+      {"*HEADING", "*DYNAMIC", "two_cubes.inp:1: *DYNAMIC is not implemented by feticon"},
+      {"*HEADING", "*FOO BAR", "two_cubes.inp:1: *FOO BAR is not a keyword feticon implements"},
+      {"2, S1", "2, S7", "two_cubes.inp:40:4: *SURFACE: face 'S7'"},
+      {"2, 11, 12, 13, 14, 15, 16, 17, 18", "2, 11, 12, 13, 14, 15, 16, 17, 99",
+       "two_cubes.inp:25:32: *ELEMENT: node 99 is not defined"},
+      {"2, 11, 12, 13, 14, 15, 16, 17, 18", "2, 11, 12, 13, 14, 15, 16, 17", "has 7 nodes, not 8"},
+      {"TYPE=C3D8, ELSET=lower", "TYPE=C3D10, ELSET=lower", "two_cubes.inp:21: *ELEMENT: element type C3D10 is not implemented"},
+      {"upper_bottom, lower_top", "lower_top, lower_top", "slave and master are the same surface 'LOWER_TOP'"},
+      {"lower, s2", "nothere, s2", "two_cubes.inp:42:1: *SURFACE: no element set 'NOTHERE'"},
+      {"15, 0, 0, 2", "15, 0, zero, 2", "two_cubes.inp:17:8: *NODE: 'zero' is not a finite number"},
+      {"*SURFACE INTERACTION, NAME=si", "*SURFACE INTERACTION, NAME=si\n*FRICTION\n0.3",
+       "*FRICTION is not implemented by feticon (friction"},
+      {"*END STEP\n*STEP\n", "*STEP\n", "has no *END STEP before this one"},
+      {"*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL", "*SOLID SECTION, ELSET=EALL, MATERIAL=IRON",
+       "*SOLID SECTION: no material 'IRON'"},
+      {"bottom, 1, 3", "bottom, 1, 9", "are not within 1 to 6"},
+  };
+  for (const Case& c : cases)
+  {
+    std::string text = two_cubes;
+    const size_t at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    text.replace(at, c.from.size(), c.to);
+    const std::string message = error_of(write(dir, "two_cubes.inp", text));
+    EXPECT_NE(message.find(c.expected), std::string::npos) << "expected '" << c.expected << "', got '" << message << "'";
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  // Circular includes and an empty file.
+  write(dir, "a.inp", "*INCLUDE, INPUT=b.inp\n");
+  write(dir, "b.inp", "*INCLUDE, INPUT=a.inp\n");
+  EXPECT_NE(error_of(dir / "a.inp").find("b.inp:1: *INCLUDE: circular *INCLUDE"), std::string::npos) << error_of(dir / "a.inp");
+  EXPECT_NE(error_of(write(dir, "empty.inp", "** nothing\n")).find("has no keyword line"), std::string::npos);
+  EXPECT_NE(error_of(dir / "absent.inp").find("does not exist"), std::string::npos);
+}
+
+TEST(DeckReader, OutlineCountsWithoutReading)
+{
+  const auto dir = test::fresh_directory("deck_outline");
+  const DeckOutline outline = deck_outline(write(dir, "two_cubes.inp", two_cubes));
+  EXPECT_EQ(outline.nodes, 16);
+  EXPECT_EQ(outline.elements, 3); // the continued element line counts as two lines: an upper bound
+  EXPECT_TRUE(outline.nlgeom);
+  EXPECT_EQ(outline.increments, 4);
+  EXPECT_EQ(outline.contact_formulation, "mortar");
+}
+
+TEST(DeckReader, ProblemFileOfADeckTakesItsSettings)
+{
+  const auto dir = test::fresh_directory("deck_settings");
+  const auto path = write(dir, "two_cubes.inp", two_cubes);
+  const ProblemFile file = load_problem_file(path, {"load_steps=3"});
+  EXPECT_EQ(file.settings.text("problem"), "custom");
+  EXPECT_EQ(file.settings.text("displacements"), "large");
+  EXPECT_EQ(file.settings.integer("load_steps"), 3); // --set wins over the deck's 4
+  EXPECT_EQ(file.deck, std::filesystem::absolute(path));
+  EXPECT_EQ(custom_mesh_size(file).nodes, 16);
+}
+} // namespace
+} // namespace feticon::io
