@@ -1,5 +1,6 @@
 /// `feticon run`: solve a problem and write its results folder.
 
+#include "app/calculix_results.hpp"
 #include "app/checkpoint.hpp"
 #include "app/commands.hpp"
 #include "app/memory_guard.hpp"
@@ -164,11 +165,20 @@ void run(const RunOptions& options)
             (problem->mesh_from_cache ? "; mesh from the mesh cache (FETICON_MESH_CACHE=off remeshes)" : ""));
 
   const bool write_vtu = settings.flag("output.vtu");
+  // A deck's results also in CalculiX's files (rank 0 holds the gathered solution).
+  std::optional<CalculixResults> calculix;
+  if (!deck.path.empty() && writer)
+    calculix.emplace(out_dir, *problem, deck, solver.kinematics);
   std::optional<io::PvdWriter> pvd;
   if (writer)
     pvd.emplace(out_dir / "solution.pvd");
   auto on_step = [&](int step, const nonlinear::ContactSolution& solution)
   {
+    if (calculix)
+    {
+      ScopedTimer t(timers, "output");
+      calculix->add_step(solution);
+    }
     if (!write_vtu)
       return;
     ScopedTimer t(timers, "output");
@@ -312,6 +322,9 @@ void run(const RunOptions& options)
   nlohmann::ordered_json warnings = nlohmann::ordered_json::array();
   for (const std::string& w : deck.warnings)
     warnings.push_back("deck: " + w);
+  if (calculix)
+    for (const std::string& w : calculix->warnings())
+      warnings.push_back("deck output: " + w);
   const double feasibility_tolerance = settings.number("contact.feasibility_tolerance");
   if (solution.converged && solver.method == nonlinear::ContactMethod::dual_penalty &&
       solution.feasibility_error > feasibility_tolerance)

@@ -52,6 +52,7 @@ struct PointState
 {
   Eigen::Matrix3d Fd;
   Voigt S;
+  Voigt strain; ///< small strain or Green-Lagrange E, engineering shears
 };
 
 PointState point_state(const ShapeGradients& dN, const NodeCoords& u,
@@ -67,6 +68,7 @@ PointState point_state(const ShapeGradients& dN, const NodeCoords& u,
     eps << grad_u(0, 0), grad_u(1, 1), grad_u(2, 2), grad_u(0, 1) + grad_u(1, 0),
         grad_u(1, 2) + grad_u(2, 1), grad_u(2, 0) + grad_u(0, 2);
     state.S = D * eps;
+    state.strain = eps;
     return state;
   }
   state.Fd = Eigen::Matrix3d::Identity() + grad_u;
@@ -79,6 +81,7 @@ PointState point_state(const ShapeGradients& dN, const NodeCoords& u,
   const Eigen::Matrix3d S =
       material.lame_lambda() * E.trace() * Eigen::Matrix3d::Identity() + 2 * material.lame_mu() * E;
   state.S = tensor_to_voigt(S);
+  state.strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(1, 2), 2 * E(2, 0);
   return state;
 }
 } // namespace
@@ -113,25 +116,38 @@ void hex8_element(const NodeCoords& X, const NodeCoords& u, const Material& mate
   }
 }
 
+Hex8PointResults hex8_point_results(const NodeCoords& X, const NodeCoords& u, const Material& material,
+                                    Kinematics kinematics, int64_t cell)
+{
+  const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
+  Hex8PointResults out;
+  for (size_t g = 0; g < 8; ++g)
+  {
+    const GaussGeometry geo = hex8_gauss_geometry(X, hex8_gauss_points()[g], cell);
+    const PointState state = point_state(geo.dN_dX, u, D, material, kinematics, cell);
+    out.stress[g] = state.S;
+    if (kinematics == Kinematics::total_lagrangian)
+    {
+      const double J = state.Fd.determinant(); // > 0, checked in point_state
+      out.stress[g] = tensor_to_voigt(state.Fd * voigt_to_tensor(state.S) * state.Fd.transpose() / J);
+    }
+    out.strain[g] = state.strain;
+    out.weight[g] = geo.weight_det_j;
+  }
+  return out;
+}
+
 Eigen::Matrix<double, 6, 1> hex8_cauchy_stress(const NodeCoords& X, const NodeCoords& u,
                                                const Material& material, Kinematics kinematics,
                                                int64_t cell)
 {
-  const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
+  const Hex8PointResults points = hex8_point_results(X, u, material, kinematics, cell);
   Voigt sum = Voigt::Zero();
   double volume = 0;
-  for (const Eigen::Vector3d& xi : hex8_gauss_points())
+  for (size_t g = 0; g < 8; ++g)
   {
-    const GaussGeometry geo = hex8_gauss_geometry(X, xi, cell);
-    const PointState state = point_state(geo.dN_dX, u, D, material, kinematics, cell);
-    Voigt sigma = state.S;
-    if (kinematics == Kinematics::total_lagrangian)
-    {
-      const double J = state.Fd.determinant(); // > 0, checked in point_state
-      sigma = tensor_to_voigt(state.Fd * voigt_to_tensor(state.S) * state.Fd.transpose() / J);
-    }
-    sum += sigma * geo.weight_det_j;
-    volume += geo.weight_det_j;
+    sum += points.stress[g] * points.weight[g];
+    volume += points.weight[g];
   }
   return sum / volume;
 }

@@ -12,6 +12,8 @@
 #include "fem/hex8.hpp"
 #include "fem/material.hpp"
 
+#include <array>
+
 namespace feticon::fem
 {
 using ElementVector = Eigen::Matrix<double, 24, 1>;
@@ -34,6 +36,17 @@ enum class StiffnessKind
 void hex8_element(const NodeCoords& X, const NodeCoords& u, const Material& material,
                   Kinematics kinematics, StiffnessKind kind, ElementVector& f, ElementMatrix* K,
                   int64_t cell);
+
+/// Cauchy stress (Pa) and strain (small strain, or Green-Lagrange E with large displacements;
+/// engineering shears) at the Gauss points of hex8_gauss_points(), Voigt [11,22,33,12,23,31],
+/// and each point's weight times det J (m^3).
+struct Hex8PointResults
+{
+  std::array<Eigen::Matrix<double, 6, 1>, 8> stress, strain;
+  std::array<double, 8> weight;
+};
+Hex8PointResults hex8_point_results(const NodeCoords& X, const NodeCoords& u, const Material& material,
+                                    Kinematics kinematics, int64_t cell);
 
 /// Volume-averaged Cauchy stress of one cell (Pa), Voigt [11,22,33,12,23,31].
 /// Linear: sigma = D eps. TL: sigma = Fdef S Fdef' / det Fdef.

@@ -757,6 +757,7 @@ private:
       fail_at(line.where, "the step asks for " + std::to_string(static_cast<int64_t>(increments)) +
                               " increments; feticon takes at most 1000 load steps per step");
     _step.increments = std::max(1, static_cast<int>(increments));
+    _step.time = total;
     if (!_keyword.has("DIRECT"))
       _data.warn(where() + ": feticon takes the initial increment as fixed (" + std::to_string(_step.increments) +
                  " load steps); CalculiX adapts it");

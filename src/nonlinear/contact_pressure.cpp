@@ -20,6 +20,23 @@ double total_normal_force(const ContactSolution& solution)
   return total;
 }
 
+la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& u, fem::Kinematics kinematics)
+{
+  // The x-component of the consistent load of a unit x-traction, on the surface the kinematics
+  // has: the small-strain model has no deformed surface (dividing by it put the surface strain,
+  // ~0.9 % at the Hertz centre, into the pressure).
+  mesh::HexMesh surface = problem.mesh;
+  if (kinematics == fem::Kinematics::total_lagrangian)
+    for (int32_t n = 0; n < surface.n_nodes(); ++n)
+      surface.nodes.row(n) += u.segment<3>(3 * n).transpose();
+  la::Vector load = la::Vector::Zero(3 * surface.n_nodes());
+  fem::add_face_traction(surface, surface.face_set(problem.contacts[0].slave), Eigen::Vector3d(1, 0, 0), load);
+  la::Vector areas(surface.n_nodes());
+  for (int32_t n = 0; n < surface.n_nodes(); ++n)
+    areas(n) = load(3 * n);
+  return areas;
+}
+
 std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
                                                 const ContactSolution& solution,
                                                 fem::Kinematics kinematics)
@@ -27,16 +44,7 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
   const auto& rows = solution.constraints;
   FETICON_CHECK(static_cast<la::Index>(rows.slave_node.size()) == solution.contact_lambda.size(),
                 "contact multipliers do not match the contact rows");
-  // Tributary areas integral(N_a dA), the x-component of the consistent load of a unit
-  // x-traction: on the surface the kinematics has, the reference one with small
-  // displacements (dividing by the deformed area there puts the surface strain, ~0.9 % at
-  // the Hertz centre, into the pressure) and the current one with large displacements.
-  mesh::HexMesh surface = problem.mesh;
-  if (kinematics == fem::Kinematics::total_lagrangian)
-    for (int32_t n = 0; n < surface.n_nodes(); ++n)
-      surface.nodes.row(n) += solution.u.segment<3>(3 * n).transpose();
-  la::Vector tributary = la::Vector::Zero(3 * surface.n_nodes());
-  fem::add_face_traction(surface, surface.face_set(problem.contacts[0].slave), Eigen::Vector3d(1, 0, 0), tributary);
+  const la::Vector tributary = slave_tributary_areas(problem, solution.u, kinematics);
 
   const auto stresses = fem::nodal_average(
       problem.mesh, fem::cell_cauchy_stresses(problem.mesh, solution.u, problem.materials, kinematics));
@@ -66,7 +74,7 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
       s.y = problem.mesh.nodes(node, 1);
       s.z = problem.mesh.nodes(node, 2);
     }
-    s.area += tributary(3 * node);
+    s.area += tributary(node);
     s.deformed_x += problem.mesh.nodes(node, 0) + solution.u(3 * node);
     s.deformed_y += problem.mesh.nodes(node, 1) + solution.u(3 * node + 1);
   }

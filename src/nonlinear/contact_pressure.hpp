@@ -3,8 +3,8 @@
 ///
 /// From multipliers: row i (normalized by ||b_i||) carries the normal force
 /// lambda_i / ||b_i|| on its slave node (ALGORITHMS.md section 4); the nodal pressure is that
-/// force over the node's tributary area integral(N_a dA) on the slave surface, taken in the
-/// current configuration. In plane strain the nodes through the thickness at one x are
+/// force over the node's tributary area integral(N_a dA) on the slave surface, taken on the
+/// reference surface with small displacements and on the current one with large. In plane strain the nodes through the thickness at one x are
 /// summed: p(x) = sum F / sum A.
 /// From stresses: p = -n' sigma n with the nodally averaged Cauchy stress of the slave body.
 
@@ -35,6 +35,10 @@ struct PressureSample
 std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
                                                 const ContactSolution& solution,
                                                 fem::Kinematics kinematics);
+
+/// Tributary area integral(N_a dA) of every mesh node on the slave surface of pair 0 (m^2;
+/// 0 off it): reference surface with linear kinematics, current one (X + u) otherwise.
+la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& u, fem::Kinematics kinematics);
 
 /// Total normal contact force (N): sum of lambda_i / ||b_i||.
 double total_normal_force(const ContactSolution& solution);

@@ -1,0 +1,170 @@
+#include "app/calculix_results.hpp"
+
+#include "contact/contact_constraints.hpp"
+#include "fem/assembler.hpp"
+#include "fem/hex8_element.hpp"
+#include "fem/stress.hpp"
+#include "nonlinear/contact_pressure.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace feticon::app
+{
+namespace
+{
+bool prints_anything(const io::DeckInfo& deck)
+{
+  using Kind = io::DeckOutputRequest::Kind;
+  for (const io::DeckStep& step : deck.steps)
+    for (const io::DeckOutputRequest& r : step.outputs)
+      if (r.kind == Kind::node_print || r.kind == Kind::el_print || r.kind == Kind::contact_print)
+        return true;
+  return false;
+}
+
+/// Deck step (0-based) and CalculiX's total time at the load factor t of the load history
+/// (stage k runs over t in (k, k + 1], CalculiX's step k + 1 over its own step time).
+std::pair<size_t, double> step_and_time(const io::DeckInfo& deck, double t)
+{
+  const size_t k = std::min(deck.steps.size() - 1, static_cast<size_t>(std::max(0.0, std::ceil(t - 1e-12) - 1)));
+  double time = 0;
+  for (size_t j = 0; j < k; ++j)
+    time += deck.steps[j].time;
+  return {k, time + (t - static_cast<double>(k)) * deck.steps[k].time};
+}
+
+/// Appends lines not seen before.
+void add_warnings(std::vector<std::string>& to, const std::vector<std::string>& lines)
+{
+  for (const std::string& line : lines)
+    if (std::find(to.begin(), to.end(), line) == to.end())
+      to.push_back(line);
+}
+} // namespace
+
+CalculixResults::CalculixResults(const std::filesystem::path& out_dir, const fem::Problem& problem,
+                                 const io::DeckInfo& deck, fem::Kinematics kinematics)
+    : _problem(problem), _deck(deck), _kinematics(kinematics)
+{
+  const std::string stem = deck.path.stem().string();
+  _frd = std::make_unique<io::FrdWriter>(out_dir / (stem + ".frd"), problem.mesh, deck.node_labels,
+                                         deck.element_labels);
+  if (!prints_anything(deck))
+    return;
+  io::DatModel model;
+  model.n_nodes = problem.mesh.n_nodes();
+  model.n_cells = problem.mesh.n_cells();
+  model.node_labels = deck.node_labels;
+  model.element_labels = deck.element_labels;
+  model.node_sets = problem.mesh.node_sets;
+  model.element_sets = deck.element_sets;
+  if (!problem.contacts.empty())
+  {
+    const fem::ContactPairNames& pair = problem.contacts[0];
+    model.contact_slave_nodes = contact::slave_nodes(problem.mesh, {pair.slave, pair.master, pair.slave_nodes});
+  }
+  _dat = std::make_unique<io::DatWriter>(out_dir / (stem + ".dat"), std::move(model));
+}
+
+void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
+{
+  const fem::Problem& p = _problem;
+  const mesh::HexMesh& mesh = p.mesh;
+  const int32_t n = mesh.n_nodes();
+  const auto [k, time] = step_and_time(_deck, solution.steps.back().load_factor);
+  const io::DeckStep& step = _deck.steps[k];
+
+  // Contact: pressure = normal force / tributary area per slave node, and the linearized gap.
+  const auto& rows = solution.constraints;
+  std::vector<double> pressure(n, 0.0), gap(n, 0.0);
+  if (!p.contacts.empty() && rows.n_rows() > 0)
+  {
+    const la::Vector areas = nonlinear::slave_tributary_areas(p, solution.u, _kinematics);
+    const la::Vector Bu = rows.B * solution.u;
+    for (int64_t i = 0; i < rows.n_rows(); ++i)
+    {
+      const int32_t node = rows.slave_node[i];
+      const double force = solution.contact_lambda(i) / rows.row_norm[i];
+      pressure[node] = areas(node) > 0 ? force / areas(node) : 0.0;
+      gap[node] = (rows.c(i) - Bu(i)) * rows.row_norm[i];
+    }
+  }
+  // CalculiX's RF: f_int(u) + B_I' lambda (internal force less the contact force on the body),
+  // the support reactions plus the applied nodal loads.
+  const fem::Assembler assembler(mesh, fem::whole_mesh_domain(mesh), p.materials, _kinematics);
+  la::Vector reaction = assembler.internal_force(solution.u);
+  if (rows.n_rows() > 0)
+    reaction += rows.B.transpose() * solution.contact_lambda;
+
+  // Gauss point stresses and strains (tensor shears), and their nodal averages for the .frd.
+  std::vector<double> point_stress(static_cast<size_t>(mesh.n_cells()) * 48), point_strain(point_stress.size());
+  std::vector<Eigen::Matrix<double, 6, 1>> cell_stress(mesh.n_cells()), cell_strain(mesh.n_cells());
+  fem::NodeCoords X, ue;
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+  {
+    for (int a = 0; a < 8; ++a)
+    {
+      X.row(a) = mesh.nodes.row(mesh.cells[c][a]);
+      ue.row(a) = solution.u.segment<3>(3 * mesh.cells[c][a]).transpose();
+    }
+    const fem::Hex8PointResults r = fem::hex8_point_results(X, ue, p.materials[mesh.cell_body[c]], _kinematics, c);
+    Eigen::Matrix<double, 6, 1> s = Eigen::Matrix<double, 6, 1>::Zero(), e = s;
+    double volume = 0;
+    for (size_t g = 0; g < 8; ++g)
+    {
+      Eigen::Matrix<double, 6, 1> strain = r.strain[g];
+      strain.tail<3>() *= 0.5; // engineering to tensor shears
+      for (int j = 0; j < 6; ++j)
+      {
+        point_stress[48 * c + 6 * g + j] = r.stress[g](j);
+        point_strain[48 * c + 6 * g + j] = strain(j);
+      }
+      s += r.weight[g] * r.stress[g];
+      e += r.weight[g] * strain;
+      volume += r.weight[g];
+    }
+    cell_stress[c] = s / volume;
+    cell_strain[c] = e / volume;
+  }
+  const auto nodal_stress = fem::nodal_average(mesh, cell_stress), nodal_strain = fem::nodal_average(mesh, cell_strain);
+  std::vector<double> stress(6 * static_cast<size_t>(n)), strain(stress.size());
+  for (int32_t i = 0; i < n; ++i)
+    for (int j = 0; j < 6; ++j)
+    {
+      stress[6 * i + j] = nodal_stress[i](j);
+      strain[6 * i + j] = nodal_strain[i](j);
+    }
+
+  const std::span<const double> u(solution.u.data(), static_cast<size_t>(solution.u.size()));
+  const std::span<const double> rf(reaction.data(), static_cast<size_t>(reaction.size()));
+  // The .frd always holds U, S and the contact (what feticon's VTU holds), RF if a request asks.
+  std::vector<std::string> frd_warnings;
+  const io::FrdFields fields = io::frd_fields(step.outputs, frd_warnings);
+  add_warnings(_warnings, frd_warnings);
+  io::FrdStep frd;
+  frd.time = time;
+  frd.step = static_cast<int32_t>(k + 1);
+  frd.displacement = u;
+  frd.stress = stress;
+  if (fields.strain)
+    frd.strain = strain;
+  if (fields.reaction_force)
+    frd.reaction_force = rf;
+  frd.contact_pressure = pressure;
+  frd.contact_gap = gap;
+  _frd->add_step(frd);
+
+  if (!_dat)
+    return;
+  io::DatStep dat;
+  dat.time = time;
+  dat.displacement = u;
+  dat.reaction_force = rf;
+  dat.stress = point_stress;
+  dat.strain = point_strain;
+  dat.contact_pressure = pressure;
+  dat.contact_gap = gap;
+  add_warnings(_warnings, _dat->add_step(dat, step.outputs));
+}
+} // namespace feticon::app

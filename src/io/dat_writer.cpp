@@ -1,0 +1,347 @@
+#include "io/dat_writer.hpp"
+
+#include "common/error.hpp"
+#include "io/fixed_width.hpp"
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+
+namespace feticon::io
+{
+namespace
+{
+using Kind = DeckOutputRequest::Kind;
+using Totals = DeckOutputRequest::Totals;
+
+/// The I10 field of node and element labels.
+constexpr int64_t largest_label = 9'999'999'999;
+
+/// Integration point j of CalculiX's C3D8 (gauss3d2 in gauss.f: xi fastest, then eta, zeta)
+/// as an index into fem::hex8_gauss_points() (VTK corner order: 0 (-,-,-) 1 (+,-,-) 2 (+,+,-)
+/// 3 (-,+,-), then the same at zeta = +).
+constexpr std::array<int, 8> feticon_point_of_calculix = {0, 1, 3, 2, 4, 5, 7, 6};
+
+/// CalculiX prints tensors as xx yy zz xy xz yz; feticon's arrays hold xx yy zz xy yz zx.
+constexpr std::array<int, 6> feticon_component_of_calculix = {0, 1, 2, 3, 5, 4};
+
+void check_labels(const std::vector<int64_t>& labels, int64_t n, const char* what,
+                  const std::filesystem::path& path)
+{
+  if (labels.empty())
+    return;
+  FETICON_CHECK(static_cast<int64_t>(labels.size()) == n,
+                "dat '" << path.string() << "': " << labels.size() << " " << what
+                        << " labels for " << n << " " << what << "s; pass one per " << what
+                        << " or none (1..n)");
+  for (const int64_t label : labels)
+    FETICON_CHECK(label >= 1 && label <= largest_label,
+                  "dat '" << path.string() << "': " << what << " label " << label
+                          << " does not fit the I10 field [1, " << largest_label << "]");
+}
+
+void check_members(const std::vector<int32_t>& ids, int32_t n, const std::string& what,
+                   const std::filesystem::path& path)
+{
+  for (const int32_t id : ids)
+    FETICON_CHECK(id >= 0 && id < n, "dat '" << path.string() << "': " << what << " holds index "
+                                             << id << " outside [0, " << n << ")");
+}
+
+void check_size(std::span<const double> values, std::size_t expected, const char* name,
+                const std::filesystem::path& path)
+{
+  FETICON_CHECK(values.empty() || values.size() == expected,
+                "dat '" << path.string() << "': " << name << " has " << values.size()
+                        << " values, expected " << expected);
+}
+
+int64_t label_of(const std::vector<int64_t>& labels, int32_t index)
+{
+  return labels.empty() ? int64_t{index} + 1 : labels[static_cast<std::size_t>(index)];
+}
+
+/// Blank line, " <what> for set <set> and time <E14.7>", blank line (printout.f formats 100-107).
+void append_set_header(std::string& out, const char* what, const std::string& set, double time)
+{
+  out += "\n ";
+  out += what;
+  out += " for set ";
+  out += set;
+  out += " and time ";
+  append_fortran_e(out, time, 14, 7);
+  out += "\n\n";
+}
+
+/// Rows I10, n x (1X, 1PE13.6).
+void append_row(std::string& out, int64_t label, const double* values, int n)
+{
+  append_integer(out, label, 10);
+  for (int k = 0; k < n; ++k)
+  {
+    out += ' ';
+    append_fortran_1pe(out, values[k], 13, 6);
+  }
+  out += '\n';
+}
+
+void add_to_list(std::string& list, const std::string& item)
+{
+  if (!list.empty())
+    list += ", ";
+  list += item;
+}
+
+const char* keyword_of(Kind kind)
+{
+  return kind == Kind::node_print ? "*NODE PRINT" : kind == Kind::el_print ? "*EL PRINT" : "*CONTACT PRINT";
+}
+} // namespace
+
+DatWriter::DatWriter(const std::filesystem::path& path, DatModel model)
+    : _path(path), _model(std::move(model))
+{
+  FETICON_CHECK(_model.n_nodes >= 0 && _model.n_cells >= 0,
+                "dat '" << path.string() << "': negative mesh size " << _model.n_nodes << " nodes, "
+                        << _model.n_cells << " cells");
+  check_labels(_model.node_labels, _model.n_nodes, "node", path);
+  check_labels(_model.element_labels, _model.n_cells, "element", path);
+  for (const auto& [name, ids] : _model.node_sets)
+    check_members(ids, _model.n_nodes, "node set " + name, path);
+  for (const auto& [name, ids] : _model.element_sets)
+    check_members(ids, _model.n_cells, "element set " + name, path);
+  check_members(_model.contact_slave_nodes, _model.n_nodes, "contact_slave_nodes", path);
+
+  _sorted_slaves = _model.contact_slave_nodes;
+  std::sort(_sorted_slaves.begin(), _sorted_slaves.end(), [&](int32_t a, int32_t b)
+            { return label_of(_model.node_labels, a) < label_of(_model.node_labels, b); });
+  _sorted_slaves.erase(std::unique(_sorted_slaves.begin(), _sorted_slaves.end()), _sorted_slaves.end());
+
+  _file = create_file(path);
+}
+
+void DatWriter::close() { close_file(_file, _path); }
+
+const std::vector<int32_t>& DatWriter::sorted_set(bool nodes, const std::string& name,
+                                                  const std::string& where)
+{
+  const auto key = std::make_pair(nodes, name);
+  if (const auto found = _sorted_sets.find(key); found != _sorted_sets.end())
+    return found->second;
+  const std::map<std::string, std::vector<int32_t>>& sets = nodes ? _model.node_sets : _model.element_sets;
+  std::vector<int32_t> members;
+  if (name.empty())
+  {
+    members.resize(static_cast<std::size_t>(nodes ? _model.n_nodes : _model.n_cells));
+    std::iota(members.begin(), members.end(), 0);
+  }
+  else
+  {
+    const auto found = sets.find(name);
+    if (found == sets.end())
+    {
+      std::string known;
+      for (const auto& entry : sets)
+        add_to_list(known, entry.first);
+      FETICON_CHECK(false, where << ": " << (nodes ? "node" : "element") << " set " << name
+                                 << " is not defined (defined: " << (known.empty() ? "none" : known)
+                                 << ")");
+    }
+    members = found->second;
+  }
+  const std::vector<int64_t>& labels = nodes ? _model.node_labels : _model.element_labels;
+  std::sort(members.begin(), members.end(),
+            [&](int32_t a, int32_t b) { return label_of(labels, a) < label_of(labels, b); });
+  members.erase(std::unique(members.begin(), members.end()), members.end());
+  return _sorted_sets.emplace(key, std::move(members)).first->second;
+}
+
+void DatWriter::print_nodal(TextFileBuffer& file, const DatStep& step, const DeckOutputRequest& request,
+                            std::string& unavailable)
+{
+  std::string& out = file.buffer;
+  const std::vector<int32_t>& nodes = sorted_set(true, request.set, request.where);
+  const std::string set = request.set.empty() ? "NALL" : request.set;
+  for (const std::string& variable : request.variables)
+  {
+    if (variable == "U" && !step.displacement.empty())
+    {
+      append_set_header(out, "displacements (vx,vy,vz)", set, step.time);
+      for (const int32_t node : nodes)
+      {
+        append_row(out, label_of(_model.node_labels, node), &step.displacement[3 * std::size_t(node)], 3);
+        file.flush_if_full();
+      }
+    }
+    else if (variable == "RF" && !step.reaction_force.empty())
+    {
+      if (request.totals != Totals::only)
+      {
+        append_set_header(out, "forces (fx,fy,fz)", set, step.time);
+        for (const int32_t node : nodes)
+        {
+          append_row(out, label_of(_model.node_labels, node), &step.reaction_force[3 * std::size_t(node)], 3);
+          file.flush_if_full();
+        }
+      }
+      if (request.totals != Totals::no)
+      {
+        // printoutnode.f sums in set order, printout.f prints 6X, 3 x (1X, 1PE13.6).
+        std::array<double, 3> total = {0.0, 0.0, 0.0};
+        for (const int32_t node : nodes)
+          for (int k = 0; k < 3; ++k)
+            total[k] += step.reaction_force[3 * std::size_t(node) + k];
+        append_set_header(out, "total force (fx,fy,fz)", set, step.time);
+        out += "      ";
+        for (const double value : total)
+        {
+          out += ' ';
+          append_fortran_1pe(out, value, 13, 6);
+        }
+        out += '\n';
+      }
+    }
+    else
+      add_to_list(unavailable, variable);
+  }
+}
+
+void DatWriter::print_integration_points(TextFileBuffer& file, const DatStep& step,
+                                         const DeckOutputRequest& request, std::string& unavailable)
+{
+  std::string& out = file.buffer;
+  const std::vector<int32_t>& cells = sorted_set(false, request.set, request.where);
+  const std::string set = request.set.empty() ? "EALL" : request.set;
+  for (const std::string& variable : request.variables)
+  {
+    std::span<const double> values;
+    const char* header = nullptr;
+    if (variable == "S")
+    {
+      values = step.stress;
+      header = "stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz)";
+    }
+    else if (variable == "E")
+    {
+      values = step.strain;
+      header = "strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)";
+    }
+    if (values.empty())
+    {
+      add_to_list(unavailable, variable);
+      continue;
+    }
+    append_set_header(out, header, set, step.time);
+    for (const int32_t cell : cells)
+    {
+      const int64_t label = label_of(_model.element_labels, cell);
+      for (int j = 0; j < 8; ++j)
+      {
+        // printoutint.f: I10, 1X, I3, 6 x (1X, 1PE13.6).
+        const double* point = &values[(std::size_t(cell) * 8 + feticon_point_of_calculix[j]) * 6];
+        std::array<double, 6> tensor;
+        for (int k = 0; k < 6; ++k)
+          tensor[k] = point[feticon_component_of_calculix[k]];
+        append_integer(out, label, 10);
+        out += ' ';
+        append_integer(out, j + 1, 3);
+        for (const double value : tensor)
+        {
+          out += ' ';
+          append_fortran_1pe(out, value, 13, 6);
+        }
+        out += '\n';
+      }
+      file.flush_if_full();
+    }
+  }
+}
+
+void DatWriter::print_contact(TextFileBuffer& file, const DatStep& step, const DeckOutputRequest& request,
+                              std::string& unavailable)
+{
+  std::string& out = file.buffer;
+  for (const std::string& variable : request.variables)
+  {
+    // ccx reads the first four characters of a label (CSTRESS = CSTR).
+    const std::string head = variable.substr(0, 4);
+    std::span<const double> values;
+    const char* header = nullptr;
+    if (head == "CSTR")
+    {
+      values = step.contact_pressure;
+      header = " contact stress (slave node,press,tang1,tang2) for all contact elements and time";
+    }
+    else if (head == "CDIS")
+    {
+      values = step.contact_gap;
+      header = " relative contact displacement (slave node,normal,tang1,tang2) for all contact "
+               "elements and time";
+    }
+    if (values.empty())
+    {
+      add_to_list(unavailable, variable);
+      continue;
+    }
+    // printout.f formats 122 and 123: the time follows "time" directly as E14.7.
+    out += '\n';
+    out += header;
+    append_fortran_e(out, step.time, 14, 7);
+    out += "\n\n";
+    for (const int32_t node : _sorted_slaves)
+    {
+      const std::array<double, 3> row = {values[node], 0.0, 0.0};
+      append_row(out, label_of(_model.node_labels, node), row.data(), 3);
+      file.flush_if_full();
+    }
+  }
+}
+
+std::vector<std::string> DatWriter::add_step(const DatStep& step,
+                                             const std::vector<DeckOutputRequest>& requests)
+{
+  FETICON_CHECK(_file != nullptr, "dat '" << _path.string() << "': add_step after close");
+  const std::size_t n_nodes = static_cast<std::size_t>(_model.n_nodes);
+  const std::size_t n_cells = static_cast<std::size_t>(_model.n_cells);
+  check_size(step.displacement, 3 * n_nodes, "displacement", _path);
+  check_size(step.reaction_force, 3 * n_nodes, "reaction_force", _path);
+  check_size(step.stress, 48 * n_cells, "stress (cells x 8 points x 6)", _path);
+  check_size(step.strain, 48 * n_cells, "strain (cells x 8 points x 6)", _path);
+  check_size(step.contact_pressure, n_nodes, "contact_pressure", _path);
+  check_size(step.contact_gap, n_nodes, "contact_gap", _path);
+
+  std::vector<std::string> warnings;
+  auto warn = [&](const std::string& line)
+  {
+    if (_warned.insert(line).second)
+      warnings.push_back(line);
+  };
+  TextFileBuffer out(_file.get(), _path.string());
+  for (const DeckOutputRequest& request : requests)
+  {
+    std::string unavailable;
+    if (request.kind == Kind::node_print)
+      print_nodal(out, step, request, unavailable);
+    else if (request.kind == Kind::el_print)
+      print_integration_points(out, step, request, unavailable);
+    else if (request.kind == Kind::contact_print)
+    {
+      print_contact(out, step, request, unavailable);
+      for (const std::string& variable : request.variables)
+        if (variable.substr(0, 4) == "CDIS" && !step.contact_gap.empty())
+          warn(request.where + ": *CONTACT PRINT: " + variable +
+               ": tang1, tang2 (tangential relative displacements) are not computed by feticon, "
+               "printed as 0");
+    }
+    else
+      continue;
+    if (!unavailable.empty())
+      warn(request.where + ": " + keyword_of(request.kind) + ": " + unavailable +
+           " not available in feticon, not printed to the .dat file");
+    out.flush_if_full();
+  }
+  out.write();
+  FETICON_CHECK(std::fflush(_file.get()) == 0, "cannot write '" << _path.string() << "': is the disk full?");
+  return warnings;
+}
+} // namespace feticon::io
