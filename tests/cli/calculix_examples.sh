@@ -6,7 +6,8 @@
 # estimate.py) to 1e-6 of max |u| and of the contact force; as the deck asks (NLGEOM), CalculiX's
 # reference output to within 3 times the penetration its penalty law allows, the contact
 # force to 1e-4 of the linear solve's, and the reactions balancing the load where RF is printed.
-# Also: each run writes DECK.frd and DECK.dat.
+# Also: each run writes DECK.frd and DECK.dat, the .frd's displacements equal to the VTU's to
+# its printed digits (tests/tools/frd_vs_vtu.py).
 # Usage: calculix_examples.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -29,6 +30,8 @@ for deck in contact1 contact3 contact6 contactenergy cubespring; do
       echo "$deck ($kind): feticon failed"; cat "$work/stderr"; status=1; continue
     fi
     [[ -s "$out/$deck.frd" && -s "$out/$deck.dat" ]] || { echo "$deck ($kind): no .frd or .dat"; status=1; }
+    last_vtu="$(ls "$out"/step_*.vtu | tail -n 1)"
+    /usr/bin/python3 "$src/tests/tools/frd_vs_vtu.py" "$out/$deck.frd" "$last_vtu" || status=1
     /usr/bin/python3 "$src/tests/tools/check_calculix_example.py" "$deck" "$out" --json "${checks[@]}" || status=1
   done
 done
