@@ -210,9 +210,7 @@ void run(const RunOptions& options)
                 "--restart is available for the FETI methods (smalbe, dual_penalty), not primal_penalty");
   if (solver.method == nonlinear::ContactMethod::primal_penalty)
   {
-    solution = nonlinear::solve_primal_penalty(*problem, solver, timers);
-    if (solution.converged)
-      on_step(static_cast<int>(solution.steps.size()), solution);
+    solution = nonlinear::solve_primal_penalty(*problem, solver, timers, on_step);
   }
   else if (restart)
   {

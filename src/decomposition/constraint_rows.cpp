@@ -1,8 +1,11 @@
 #include "decomposition/constraint_rows.hpp"
 
 #include "common/error.hpp"
+#include "fem/linear_equations.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace feticon::decomposition
 {
@@ -42,8 +45,124 @@ la::Vector ConstraintRows::c_vector() const
   return Eigen::Map<const la::Vector>(_c.data(), static_cast<la::Index>(_c.size()));
 }
 
+namespace
+{
+/// Groups of equations linked by shared DOFs (union-find), each as increasing equation
+/// indices, the groups in the order of their first equation.
+std::vector<std::vector<size_t>> equation_groups(const std::vector<fem::ReducedEquation>& equations)
+{
+  std::vector<size_t> parent(equations.size());
+  for (size_t e = 0; e < parent.size(); ++e)
+    parent[e] = e;
+  const auto root = [&](size_t e)
+  {
+    while (parent[e] != e)
+      e = parent[e] = parent[parent[e]];
+    return e;
+  };
+  std::map<int64_t, size_t> first_user;
+  for (size_t e = 0; e < equations.size(); ++e)
+    for (const int64_t dof : equations[e].dofs)
+      if (const auto [it, added] = first_user.emplace(dof, e); !added)
+      {
+        const size_t a = root(it->second), b = root(e);
+        parent[std::max(a, b)] = std::min(a, b);
+      }
+  std::map<size_t, std::vector<size_t>> by_root;
+  for (size_t e = 0; e < equations.size(); ++e)
+    by_root[root(e)].push_back(e);
+  std::vector<std::vector<size_t>> out;
+  for (auto& [r, group] : by_root)
+    out.push_back(std::move(group));
+  return out;
+}
+
+/// The rows of the linear equations (build_equality_rows' comment): per equation, the global
+/// DOFs and coefficients of the orthonormalized row before the split over copies, and c.
+struct EquationRow
+{
+  std::vector<int64_t> dofs;
+  std::vector<double> values;
+  double c = 0;
+};
+
+std::vector<EquationRow> orthonormal_equation_rows(const Decomposition& decomposition,
+                                                   const fem::ConstrainedDofs& dirichlet,
+                                                   const std::vector<fem::LinearEquation>& equations)
+{
+  const mesh::HexMesh& mesh = decomposition.mesh();
+  const std::vector<fem::ReducedEquation> reduced =
+      fem::reduce_equations(equations, 3 * static_cast<int64_t>(mesh.n_nodes()), dirichlet,
+                            decomposition.eliminated(), &mesh);
+  std::vector<EquationRow> out(reduced.size());
+  for (const std::vector<size_t>& group : equation_groups(reduced))
+  {
+    std::vector<int64_t> dofs;
+    for (const size_t e : group)
+      dofs.insert(dofs.end(), reduced[e].dofs.begin(), reduced[e].dofs.end());
+    std::sort(dofs.begin(), dofs.end());
+    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+    // The split row of a DOF with p copies has a/p on each: its inner products are those of
+    // a / sqrt(p), the columns of X.
+    la::Vector root_copies(static_cast<la::Index>(dofs.size()));
+    for (size_t k = 0; k < dofs.size(); ++k)
+      root_copies(static_cast<la::Index>(k)) =
+          std::sqrt(static_cast<double>(decomposition.copies(static_cast<int32_t>(dofs[k] / 3)).size()));
+    const auto n_dofs = static_cast<la::Index>(dofs.size());
+    const auto n_equations = static_cast<la::Index>(group.size());
+    la::Matrix X = la::Matrix::Zero(n_dofs, n_equations);
+    la::Vector c(n_equations);
+    for (la::Index j = 0; j < n_equations; ++j)
+    {
+      const fem::ReducedEquation& eq = reduced[group[j]];
+      for (size_t k = 0; k < eq.dofs.size(); ++k)
+      {
+        const auto row = std::lower_bound(dofs.begin(), dofs.end(), eq.dofs[k]) - dofs.begin();
+        X(row, j) = eq.coefficients[k] / root_copies(row);
+      }
+      c(j) = eq.rhs;
+    }
+    // X = Q R by Gram-Schmidt with reorthogonalization (CGS2, which keeps Q orthonormal to
+    // round-off): column j of Q combines equations 1..j (R upper triangular, R_jj > 0: the sign
+    // of the equation as written), exactly zero off their DOFs, and c' = R^{-T} c. R_jj is the
+    // distance of equation j from the span of the ones before it.
+    la::Matrix Q(n_dofs, n_equations);
+    la::Matrix R = la::Matrix::Zero(n_equations, n_equations);
+    for (la::Index j = 0; j < n_equations; ++j)
+    {
+      la::Vector v = X.col(j);
+      for (int pass = 0; pass < 2; ++pass)
+        for (la::Index i = 0; i < j; ++i)
+        {
+          const double r = Q.col(i).dot(v);
+          v -= r * Q.col(i);
+          R(i, j) += r;
+        }
+      R(j, j) = v.norm();
+      FETICON_CHECK(R(j, j) > fem::equation_dependence_tolerance * X.col(j).norm(),
+                    fem::dependent_equation_message(equations, group[j], &mesh));
+      Q.col(j) = v / R(j, j);
+    }
+    const la::Vector c_orthonormal = R.transpose().triangularView<Eigen::Lower>().solve(c);
+    for (la::Index j = 0; j < n_equations; ++j)
+    {
+      EquationRow& row = out[group[j]];
+      for (la::Index k = 0; k < n_dofs; ++k)
+        if (Q(k, j) != 0.0)
+        {
+          row.dofs.push_back(dofs[k]);
+          row.values.push_back(Q(k, j) * root_copies(k)); // back from a / sqrt(p) to a
+        }
+      row.c = c_orthonormal(j);
+    }
+  }
+  return out;
+}
+} // namespace
+
 EqualityRows build_equality_rows(const Decomposition& decomposition,
-                                 const fem::ConstrainedDofs& dirichlet)
+                                 const fem::ConstrainedDofs& dirichlet,
+                                 const std::vector<fem::LinearEquation>& equations)
 {
   const mesh::HexMesh& mesh = decomposition.mesh();
   // Prescribed value per global DOF (NaN where free).
@@ -98,6 +217,26 @@ EqualityRows build_equality_rows(const Decomposition& decomposition,
     }
   }
   out.rows.append(dirichlet_rows, out.n_gluing);
+
+  const int64_t first_equation_id = out.n_gluing + out.n_dirichlet;
+  for (const EquationRow& row : orthonormal_equation_rows(decomposition, dirichlet, equations))
+  {
+    entries.clear();
+    for (size_t k = 0; k < row.dofs.size(); ++k)
+    {
+      const auto& copies = decomposition.copies(static_cast<int32_t>(row.dofs[k] / 3));
+      const int component = static_cast<int>(row.dofs[k] % 3);
+      const double value = row.values[k] / static_cast<double>(copies.size());
+      for (const NodeCopy& copy : copies)
+      {
+        const Subdomain& sub = decomposition.subdomain(copy.subdomain);
+        entries.push_back({copy.subdomain, sub.active_of_full[3 * copy.local_node + component], value});
+      }
+    }
+    if (touches_owned(decomposition, entries))
+      out.rows.add_row(entries, row.c, first_equation_id + out.n_equations);
+    ++out.n_equations;
+  }
   return out;
 }
 

@@ -9,6 +9,7 @@
 
 #include "decomposition/decomposition.hpp"
 #include "fem/dirichlet.hpp"
+#include "fem/problem.hpp"
 
 #include <span>
 #include <string>
@@ -47,17 +48,35 @@ private:
 /// Equality rows B_E of Total FETI: orthonormal gluing rows (Helmert rows for a node with
 /// p copies: (sum_{t<=q} e_t - q e_{q+1}) / sqrt(q(q+1)), q = 1..p-1) for every component
 /// that is not prescribed, and for prescribed components a unit row on every copy with
-/// c = prescribed value (ALGORITHMS.md section 3). B_E B_E' = I. Ids: gluing rows in node
-/// order, then Dirichlet rows; only rows touching owned subdomains are kept.
+/// c = prescribed value (ALGORITHMS.md section 3); then one row per linear equation
+/// (*EQUATION, fem/linear_equations.hpp) with c = 0, or minus its terms on prescribed DOFs.
+///
+/// B_E B_E' = I, which the projectors do not need but the preconditioners' scaling does
+/// (dual/constraint_scaling.hpp takes the equality block as I, and B S B' approximates F^-1 only
+/// for orthonormal rows). The equation rows keep it: a term's coefficient is split equally over
+/// the p copies of its node, a/p on each, which is orthogonal to that node's gluing rows (they
+/// span the complement of (1,...,1)) and, on glued displacements, says the same as the whole
+/// coefficient on one copy; terms on prescribed DOFs move to c (orthogonal to the unit rows,
+/// and the same on their feasible set); the equations that share a DOF are orthonormalized
+/// among themselves (thin QR in the inner product of the split rows: a combination of
+/// equations, with c combined alike, is the same constraint). Row e of the result combines
+/// equations 1..e of its group, so a multiplier is no longer that of one equation.
+///
+/// Ids: gluing rows in node order, then Dirichlet rows, then equation rows in equation order;
+/// only rows touching owned subdomains are kept (every rank builds every row, the same way).
+/// @throws feticon::Error naming the equation if one has no free term or is linearly dependent
+///         on the supports and the equations before it (fem/linear_equations.hpp).
 struct EqualityRows
 {
   ConstraintRows rows;
   int64_t n_gluing = 0;    ///< global counts
   int64_t n_dirichlet = 0;
-  int64_t n_global() const { return n_gluing + n_dirichlet; }
+  int64_t n_equations = 0;
+  int64_t n_global() const { return n_gluing + n_dirichlet + n_equations; }
 };
 EqualityRows build_equality_rows(const Decomposition& decomposition,
-                                 const fem::ConstrainedDofs& dirichlet);
+                                 const fem::ConstrainedDofs& dirichlet,
+                                 const std::vector<fem::LinearEquation>& equations = {});
 
 /// Converts rows over global mesh DOFs (3*node + component; `B_global` row-major, one row
 /// per constraint) to subdomain rows. A DOF shared by several subdomains is put on its

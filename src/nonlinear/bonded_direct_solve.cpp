@@ -4,6 +4,7 @@
 #include "common/parallel.hpp"
 #include "common/timer.hpp"
 #include "fem/assembler.hpp"
+#include "fem/constraint_elimination.hpp"
 #include "la/cholmod.hpp"
 #include "nonlinear/contact_penalty.hpp"
 
@@ -41,7 +42,7 @@ BondedSolve bonded_direct_solve(const fem::Problem& problem, const SolverSetting
   options.search_distance = settings.search_distance;
   options.formulation = settings.formulation;
   out.constraints = contact::build_contact_constraints(
-      problem.mesh, zero, {problem.contacts[0].slave, problem.contacts[0].master}, options);
+      problem.mesh, zero, {problem.contacts[0].slave, problem.contacts[0].master, problem.contacts[0].slave_nodes}, options);
   const auto& rows = out.constraints;
   // Rows are sorted by slave node, one row per node.
   std::vector<char> bonded(rows.c.size(), 0);
@@ -59,7 +60,7 @@ BondedSolve bonded_direct_solve(const fem::Problem& problem, const SolverSetting
   la::Vector f_pen;
   penalty_terms(rows, bonded, eps, K_pen, f_pen);
   const la::SparseMatrix A = K + K_pen;
-  const fem::DirichletElimination elimination(n, problem.all_constrained_dofs());
+  const fem::ConstraintElimination elimination(n, problem.all_constrained_dofs(), problem.equations, &problem.mesh);
   const la::SparseMatrix A_free = elimination.reduce_matrix(A);
   const la::Vector rhs_free = elimination.reduce_rhs(A, problem.external_force() + f_pen);
   out.assembly_seconds = seconds_since(start);

@@ -8,7 +8,7 @@
 /// (usually the nodes in contact in a contact solution, active_slave_nodes()) form B_A, c_A
 /// and get the springs of the primal penalty solver (contact_penalty.hpp):
 ///   eps_i = eps_n A_i / mean(A),  eps_n = eps_n_factor * max diag K,
-///   (K + B_A' E B_A) u = f_ext + B_A' E c_A,  Dirichlet DOFs eliminated,
+///   (K + B_A' E B_A) u = f_ext + B_A' E c_A,  Dirichlet DOFs and linear equations eliminated,
 /// with K the linear stiffness of the whole mesh and f_ext the full load. It is the linear
 /// system of the primal penalty solver with that active set fixed: the bonded nodes are tied
 /// to the master surface at their initial gap, in tension as in compression, so one

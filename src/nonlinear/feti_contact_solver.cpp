@@ -69,9 +69,10 @@ void for_each_touched_dof(const fem::Problem& problem, const contact::ContactCon
 
 /// DOFs on the boundary of the Dirichlet preconditioner's Schur complements besides the
 /// subdomain interfaces (decomposition/schur_complements.hpp): the supported components, which
-/// the Dirichlet rows touch, and the contact DOFs the rows may touch. `contact_rows` null: every
-/// component of both contact surfaces' nodes. Otherwise the DOFs these rows touch, or, with
-/// `all_components`, every component of their nodes (normals turn with large displacements).
+/// the Dirichlet rows touch, the linear equations' DOFs, and the contact DOFs the rows may
+/// touch. `contact_rows` null: every component of both contact surfaces' nodes. Otherwise the
+/// DOFs these rows touch, or, with `all_components`, every component of their nodes (normals
+/// turn with large displacements).
 /// The fewer contact DOFs, the smaller the dense blocks (|b_s|^2 bytes, |b_s|^3 flops to form)
 /// and the better the preconditioner: a DOF no row touches is held fixed in S_s instead of
 /// eliminated.
@@ -82,6 +83,10 @@ std::vector<char> schur_boundary_dofs(const fem::Problem& problem, const fem::Co
   for (int64_t dof : dirichlet.dofs)
     if (!problem.eliminated[dof % 3]) // plane strain's u_z = 0 is no row
       boundary[dof] = 1;
+  for (const fem::LinearEquation& equation : problem.equations) // rows on every copy of these nodes
+    for (const auto& term : equation.terms)
+      if (!problem.eliminated[term.component])
+        boundary[3 * static_cast<size_t>(term.node) + term.component] = 1;
   const auto flag_node = [&](int64_t node)
   {
     for (int c = 0; c < 3; ++c)
@@ -134,7 +139,8 @@ bool covers(const fem::Problem& problem, const std::vector<char>& boundary,
 /// two, hertz3d r1 219 and 315, Hertz 240 across large 296; large-displacement runs took
 /// five times as many before the outer loop's rows near contact, 1dfc320).
 std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, const decomposition::SubdomainSystem& system,
-                                             const decomposition::SchurComplements* schur, const par::Communicator& comm)
+                                             const decomposition::SchurComplements* schur, int n_load_steps,
+                                             const par::Communicator& comm)
 {
   if (settings.dual_operator == DualOperatorMode::implicit)
     return {false, "dual.operator = implicit"};
@@ -157,7 +163,7 @@ std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, con
   }
   const int64_t bytes = comm.sum(decomposition::explicit_operator_bytes(system, *schur));
   const double budget = std::min(0.25 * static_cast<double>(available_memory_bytes()), 4.0 * (1L << 30)) * comm.size();
-  const double steps = 150.0 * settings.steps();
+  const double steps = 150.0 * n_load_steps;
   setup = static_cast<double>(comm.sum(static_cast<int64_t>(setup)));
   implicit_step = static_cast<double>(comm.sum(static_cast<int64_t>(implicit_step)));
   explicit_step = static_cast<double>(comm.sum(static_cast<int64_t>(explicit_step)));
@@ -203,6 +209,7 @@ public:
   IterationOutcome outer_iteration(int k, OuterIteration& it) override;
   void end_load_step(const LoadStep& record) override;
   std::string format(const OuterIteration& it) const override { return format_iteration(it); }
+  const fem::LoadHistory& history() const { return _history; }
 
 private:
   /// K, R and their factors at the current u; the preconditioner and explicit blocks with them.
@@ -214,8 +221,8 @@ private:
   int update_boundary_operators(bool same_K);
   /// f_int and its assembled norm at the current u.
   void update_internal_force();
-  /// max(||t f_ext||, ||f_int(u)||): the scale of the relative residual (OuterConvergence).
-  double force_scale() const { return std::max(_t * _f_norm, _f_int_norm); }
+  /// max(||f(t_n)||, ||f_int(u)||): the scale of the relative residual (OuterConvergence).
+  double force_scale() const { return std::max(_f_step_norm, _f_int_norm); }
   /// The QP tolerance of outer iteration k (SolverSettings::forcing).
   double qp_rtol(int k);
   /// Rows of the outer loop only where g < max(g_min, 0) + 0.05 master diagonals
@@ -236,6 +243,7 @@ private:
   TimerTable& _timers;
   ContactSolution& _out;
   const bool _linear;
+  const fem::LoadHistory _history;
   std::unique_ptr<decomposition::Decomposition> _decomp;
   par::BlockSpace _primal_space;
   std::unique_ptr<decomposition::SubdomainSystem> _system;
@@ -243,8 +251,7 @@ private:
   std::vector<char> _schur_boundary; ///< empty without the Dirichlet preconditioner
   std::unique_ptr<decomposition::SchurComplements> _schur;
   std::unique_ptr<decomposition::ExplicitBoundaryOperators> _explicit_operators;
-  la::Vector _f_ext_stacked;
-  double _f_norm = 0;
+  std::vector<la::Vector> _f_stages_stacked; ///< the external forces at the stages' ends, stacked
   OuterConvergence _convergence;
   contact::ContactPair _pair;
   contact::ContactOptions _contact_options;
@@ -263,7 +270,8 @@ private:
 
   // The current load step.
   int _step = 0;
-  double _t = 0;
+  la::Vector _f_step;        ///< f(t_n), stacked
+  double _f_step_norm = 0;   ///< ||f(t_n)|| (fem::LoadHistory::external_force_norm)
   std::unique_ptr<decomposition::EqualityRows> _equality;
   int64_t _n_equality = 0;
   bool _forcing = false;
@@ -274,7 +282,7 @@ private:
 FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSettings& settings,
                                    TimerTable& timers, par::Communicator comm, ContactSolution& out)
     : _problem(problem), _settings(settings), _timers(timers), _out(out),
-      _linear(settings.kinematics == fem::Kinematics::linear),
+      _linear(settings.kinematics == fem::Kinematics::linear), _history(settings.load_history(problem)),
       _decomp([&]
               {
                 ScopedTimer t(timers, "decomposition");
@@ -297,7 +305,7 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
     std::sort(_out.owned_cells.begin(), _out.owned_cells.end());
   }
   _u = la::Vector::Zero(_decomp->n_primal());
-  _pair = {problem.contacts[0].slave, problem.contacts[0].master};
+  _pair = {problem.contacts[0].slave, problem.contacts[0].master, problem.contacts[0].slave_nodes};
   _contact_options.search_distance = settings.search_distance;
   _contact_options.formulation = settings.formulation;
   const bool dirichlet = settings.dual.preconditioner == dual::DualPreconditioner::dirichlet;
@@ -317,9 +325,8 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
       _linear_rows.emplace(problem.mesh, _pair.master, std::move(reach), settings.linear_contact_band);
   }
   update_stiffness(); // K_0 and R(X), kept for the whole run (modified Newton)
-  const la::Vector f_ext = problem.external_force();
-  _f_ext_stacked = _decomp->scatter_split(f_ext);
-  _f_norm = f_ext.norm();
+  for (int stage = 1; stage <= _history.n_stages(); ++stage)
+    _f_stages_stacked.push_back(_decomp->scatter_split(_history.stage_end(stage).force));
   const Eigen::Vector3d extent = problem.mesh.nodes.colwise().maxCoeff() - problem.mesh.nodes.colwise().minCoeff();
   _convergence = {settings.displacement_tolerance, settings.residual_tolerance, extent.norm()};
   // The outer loop rebuilds the rows at every iteration, so rows near contact suffice; a linear
@@ -347,7 +354,8 @@ int FetiContactSolve::update_boundary_operators(bool same_K)
 {
   if (!_schur_boundary.empty()) // the boundaries first: the choice below depends on their sizes
     _schur = std::make_unique<decomposition::SchurComplements>(*_system, _schur_boundary, false);
-  const auto [use_explicit, reason] = choose_explicit(_settings, *_system, _schur.get(), _decomp->comm());
+  const auto [use_explicit, reason] =
+      choose_explicit(_settings, *_system, _schur.get(), _history.n_steps(), _decomp->comm());
   if (_schur && !use_explicit)
   {
     ScopedTimer t(_timers, "preconditioner setup"); // K_ii factorizations for the implicit S_s
@@ -372,8 +380,17 @@ int FetiContactSolve::restore(const ContactSolution& previous)
   FETICON_CHECK(r.u_stacked.size() == _decomp->n_primal_global(),
                 "restart: the checkpoint has " << r.u_stacked.size() << " unknowns, this problem "
                                                << _decomp->n_primal_global() << " (different mesh or subdomains?)");
-  FETICON_CHECK(r.completed_steps < _settings.steps(),
-                "restart: all " << _settings.steps() << " load steps are already done");
+  FETICON_CHECK(r.completed_steps < _history.n_steps(),
+                "restart: all " << _history.n_steps() << " load steps are already done");
+  // The step numbers name points of the load history: a checkpoint of other load_steps or
+  // stages would continue at the wrong load.
+  const double saved_t = static_cast<int>(previous.steps.size()) >= r.completed_steps
+                             ? previous.steps[r.completed_steps - 1].load_factor
+                             : std::nan("");
+  FETICON_CHECK(std::abs(saved_t - _history.load_factor(r.completed_steps)) <= 1e-12 * r.completed_steps,
+                "restart: the checkpoint's load step " << r.completed_steps << " is at load factor " << saved_t
+                                                       << ", this run's at " << _history.load_factor(r.completed_steps)
+                                                       << " (different load_steps or load stages?)");
   _u = _decomp->owned_slice(r.u_stacked);
   _multipliers.restore(r.lambda, r.contact_slave, r.contact_lambda,
                        {{}, r.smalbe_coarse_multiplier, r.smalbe_M, r.smalbe_rho, r.pfp_norm});
@@ -387,13 +404,14 @@ int FetiContactSolve::restore(const ContactSolution& previous)
   return r.completed_steps + 1;
 }
 
-void FetiContactSolve::begin_load_step(int step, double t)
+void FetiContactSolve::begin_load_step(int step, double)
 {
   _step = step;
-  _t = t;
-  fem::ConstrainedDofs target = _dirichlet;
-  target.values *= t;
-  _equality = std::make_unique<decomposition::EqualityRows>(decomposition::build_equality_rows(*_decomp, target));
+  fem::ConstrainedDofs target = _history.prescribed(step);
+  _f_step = _history.interpolate(step, _f_stages_stacked);
+  _f_step_norm = _history.external_force_norm(step);
+  _equality = std::make_unique<decomposition::EqualityRows>(
+      decomposition::build_equality_rows(*_decomp, target, _problem.equations));
   _n_equality = _equality->n_global();
   _forcing = !_linear && _settings.forcing > 0;
   _equality_by_id.resize(0);
@@ -455,7 +473,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
     log::info(where + "contact rows beyond the Schur boundary: grown to the rows near contact, " +
               std::to_string(reformed) + " subdomains' operators formed again");
   }
-  const la::Vector residual = _t * _f_ext_stacked - _f_int;
+  const la::Vector residual = _f_step - _f_int;
   decomposition::ConstraintRows rows = _equality->rows;
   rows.append(decomposition::rows_from_global(*_decomp, contact_rows.B, contact_rows.c), _n_equality);
 
@@ -466,7 +484,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
     if (_explicit_operators)
       feti->use_explicit(*_explicit_operators);
   }
-  // c_E = target - B_E u (gluing 0, Dirichlet t_n u_D); c_I = current gaps.
+  // c_E = target - B_E u (gluing 0, Dirichlet u_D(t_n)); c_I = current gaps.
   const la::Index m = feti->n_dual();
   la::Vector c = feti->owned(rows.c_vector());
   const la::Vector Bu = feti->apply_B(_u);
@@ -502,7 +520,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   {
     ScopedTimer t(_timers, "internal forces");
     update_internal_force(); // also the next iteration's, at the same u
-    const la::Vector r_new = _t * _f_ext_stacked - _f_int - feti->apply_Bt(solution.lambda);
+    const la::Vector r_new = _f_step - _f_int - feti->apply_Bt(solution.lambda);
     it.residual_norm = _decomp->gather_sum(_decomp->gather_stacked(r_new)).norm() / std::max(force_scale(), 1e-300);
   }
   // A diverging outer loop shows as a non-finite residual before anything else fails; the
@@ -595,7 +613,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
   ContactSolution out;
   FetiContactSolve solve(problem, settings, timers, comm, out);
   const int first_step = previous ? solve.restore(*previous) : 1;
-  run_load_steps(solve, first_step, settings.steps(), settings.max_outer_iterations, out, on_step);
+  run_load_steps(solve, solve.history(), first_step, settings.max_outer_iterations, out, on_step);
   if (out.converged)
     timers.add("total solve", seconds_since(run_start));
   return out;

@@ -2,9 +2,10 @@
 /// @file Contact by Total FETI with the dual penalty / SMALBE-M, inside the seed's
 /// modified Newton–Raphson outer loop (seed section 5; ALGORITHMS.md section 8).
 ///
-/// Per load step t_n and outer iteration k:
-///   r = t_n f_ext - f_int(u)  (no contact forces),  contact rows B_I, c_I = g(u) built in
-///   the current configuration x = X + u,  c_E = target - B_E u,
+/// Per load step t_n of the problem's load history (fem/load_history.hpp; one step per load
+/// stage with small displacements) and outer iteration k:
+///   r = f(t_n) - f_int(u)  (no contact forces),  contact rows B_I, c_I = g(u) built in
+///   the current configuration x = X + u,  c_E = u_D(t_n) - B_E u,
 ///   solve the dual QP for du with lambda the total multipliers (warm-started),
 ///   u <- u + du,  stop when ||du|| <= tol ||u||.
 /// By default K (and so F, K+, R) is assembled and factorized once (K_0, the seed's initial
@@ -26,8 +27,9 @@
 
 namespace feticon::nonlinear
 {
-/// @param restart if given, continue after its completed load steps (its history and steps
-///                are taken from `previous`, the solution of the interrupted run)
+/// @param previous if given, continue after its completed load steps (its history and steps
+///                 are taken from `previous`, the solution of the interrupted run; its step
+///                 count names a point of the same load history, which is checked)
 ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings,
                                    TimerTable& timers, const StepCallback& on_step = {},
                                    const ContactSolution* previous = nullptr,

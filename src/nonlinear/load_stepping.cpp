@@ -8,12 +8,12 @@
 
 namespace feticon::nonlinear
 {
-void run_load_steps(LoadStepPhases& phases, int first_step, int n_steps, int max_outer_iterations,
-                    ContactSolution& out, const StepCallback& on_step)
+void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int first_step,
+                    int max_outer_iterations, ContactSolution& out, const StepCallback& on_step)
 {
-  for (int step = first_step; step <= n_steps; ++step)
+  for (int step = first_step; step <= history.n_steps(); ++step)
   {
-    const double t = static_cast<double>(step) / n_steps;
+    const double t = history.load_factor(step);
     phases.begin_load_step(step, t);
     LoadStep record;
     record.load_factor = t;

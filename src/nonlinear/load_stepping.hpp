@@ -1,10 +1,13 @@
 #pragma once
-/// @file The load-stepping loop of the contact solvers (FETI and primal penalty): load steps
-/// t_n = n / N, in each outer iterations until the solver reports the step converged; the
+/// @file The load-stepping loop of the contact solvers (FETI and primal penalty): the load
+/// steps of a fem::LoadHistory (t_n = n / N for a one-stage problem; stage s - 1 + j / N_s
+/// over several stages), in each outer iterations until the solver reports the step
+/// converged; the
 /// records of both (LoadStep, OuterIteration), the progress lines and the reason of a run
 /// that stops. A solver supplies its phases: begin a load step, one outer iteration, end a
 /// load step.
 
+#include "fem/load_history.hpp"
 #include "nonlinear/contact_solution.hpp"
 
 #include <functional>
@@ -37,7 +40,7 @@ class LoadStepPhases
 {
 public:
   virtual ~LoadStepPhases() = default;
-  /// Prepares load step `step` at the load factor t.
+  /// Prepares load step `step` at the load factor t (the history's t_n).
   virtual void begin_load_step(int step, double t) = 0;
   /// Outer iteration k of the current load step; fills `it` (its load_step and iteration are
   /// set, the driver times it).
@@ -48,9 +51,10 @@ public:
   virtual std::string format(const OuterIteration& it) const = 0;
 };
 
-/// Runs load steps first_step, ..., n_steps of `phases` with at most max_outer_iterations
-/// outer iterations each, appending to out.history and out.steps; `on_step` after every
-/// converged step. Ends with out.converged, or out.reason saying where and why it stopped.
-void run_load_steps(LoadStepPhases& phases, int first_step, int n_steps, int max_outer_iterations,
-                    ContactSolution& out, const StepCallback& on_step = {});
+/// Runs load steps first_step, ..., history.n_steps() of `phases` at the history's load
+/// factors (LoadStep::load_factor) with at most max_outer_iterations outer iterations each,
+/// appending to out.history and out.steps; `on_step` after every converged step. Ends with
+/// out.converged, or out.reason saying where and why it stopped.
+void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int first_step,
+                    int max_outer_iterations, ContactSolution& out, const StepCallback& on_step = {});
 } // namespace feticon::nonlinear

@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/parallel.hpp"
 #include "fem/assembler.hpp"
+#include "fem/constraint_elimination.hpp"
 #include "la/cholmod.hpp"
 #include "nonlinear/contact_penalty.hpp"
 #include "nonlinear/load_stepping.hpp"
@@ -27,6 +28,7 @@ public:
   IterationOutcome outer_iteration(int k, OuterIteration& it) override;
   void end_load_step(const LoadStep&) override { _out.u = _u; }
   std::string format(const OuterIteration& it) const override;
+  const fem::LoadHistory& history() const { return _history; }
 
 private:
   /// Small displacements: the penalized system for the total u.
@@ -42,8 +44,7 @@ private:
   const bool _linear;
   const int64_t _n;
   fem::Assembler _assembler;
-  const fem::ConstrainedDofs _all;
-  const la::Vector _f_ext;
+  const fem::LoadHistory _history;
   contact::ContactPair _pair;
   contact::ContactOptions _contact_options;
   la::Vector _u;
@@ -52,7 +53,7 @@ private:
   la::Vector _f_pen;
 
   int _step = 0;
-  double _t = 0;
+  la::Vector _f_step;           ///< f(t_n) of the load history
   fem::ConstrainedDofs _target; ///< the supports' values at this load step
   std::vector<char> _active;    ///< penalized rows
 };
@@ -62,8 +63,8 @@ PrimalPenaltySolve::PrimalPenaltySolve(const fem::Problem& problem, const Solver
     : _problem(problem), _settings(settings), _timers(timers), _out(out),
       _linear(settings.kinematics == fem::Kinematics::linear), _n(3 * static_cast<int64_t>(problem.mesh.n_nodes())),
       _assembler(problem.mesh, fem::whole_mesh_domain(problem.mesh), problem.materials, settings.kinematics),
-      _all(problem.all_constrained_dofs()), _f_ext(problem.external_force()),
-      _pair{problem.contacts[0].slave, problem.contacts[0].master}, _u(la::Vector::Zero(_n))
+      _history(settings.load_history(problem)),
+      _pair{problem.contacts[0].slave, problem.contacts[0].master, problem.contacts[0].slave_nodes}, _u(la::Vector::Zero(_n))
 {
   _contact_options.search_distance = settings.search_distance;
   _contact_options.formulation = settings.formulation;
@@ -85,12 +86,11 @@ std::string PrimalPenaltySolve::format(const OuterIteration& it) const
   return line;
 }
 
-void PrimalPenaltySolve::begin_load_step(int step, double t)
+void PrimalPenaltySolve::begin_load_step(int step, double)
 {
   _step = step;
-  _t = t;
-  _target = _all;
-  _target.values *= t;
+  _f_step = _history.external_force(step);
+  _target = _history.prescribed(step);
   _active.clear();
 }
 
@@ -146,9 +146,11 @@ void PrimalPenaltySolve::solve_linear(const contact::ContactConstraints& rows, c
 {
   la::CholmodFactor factor;
   const la::SparseMatrix A = _K + _K_pen;
-  const fem::DirichletElimination elim(_n, _target);
+  // Supports and linear equations are eliminated exactly; the penalty is contact's alone
+  // (fem/constraint_elimination.hpp).
+  const fem::ConstraintElimination elim(_n, _target, _problem.equations, &_problem.mesh);
   factor.factorize(elim.reduce_matrix(A), "the penalized stiffness");
-  const la::Vector u_new = elim.expand(factor.solve(elim.reduce_rhs(A, _t * _f_ext + _f_pen)));
+  const la::Vector u_new = elim.expand(factor.solve(elim.reduce_rhs(A, _f_step + _f_pen)));
   it.displacement_change = (u_new - _u).norm() / std::max(u_new.norm(), 1e-300);
   _u = u_new;
   _out.contact_lambda = eps.cwiseProduct(rows.B * _u - rows.c).cwiseMax(0.0);
@@ -157,11 +159,12 @@ void PrimalPenaltySolve::solve_linear(const contact::ContactConstraints& rows, c
 void PrimalPenaltySolve::solve_increment(const contact::ContactConstraints& rows, const la::Vector& eps,
                                          const la::Vector& f_int, OuterIteration& it)
 {
-  for (size_t j = 0; j < _target.dofs.size(); ++j)
-    _u(_target.dofs[j]) = _target.values(static_cast<la::Index>(j));
+  // This step's supports (and the linear equations' dependent DOFs) first; then every
+  // correction is zero there.
+  fem::ConstraintElimination(_n, _target, _problem.equations, &_problem.mesh).impose(_u);
   fem::ConstrainedDofs homogeneous = _target;
   homogeneous.values.setZero();
-  const fem::DirichletElimination elim(_n, homogeneous);
+  const fem::ConstraintElimination elim(_n, homogeneous, _problem.equations, &_problem.mesh);
   // Active set of the linearized step made consistent first (rows violated after the
   // step, B du - c > 0), as in the linear case: taking it from the current gaps alone
   // lets nodes at the contact edge flip at every Newton iteration.
@@ -170,7 +173,7 @@ void PrimalPenaltySolve::solve_increment(const contact::ContactConstraints& rows
   for (int inner = 0; inner < 30; ++inner)
   {
     factor.factorize(elim.reduce_matrix(_K + _K_pen), "the penalized tangent stiffness");
-    du = elim.expand(factor.solve(elim.restrict(_t * _f_ext - f_int + _f_pen)));
+    du = elim.expand(factor.solve(elim.reduce_force(_f_step - f_int + _f_pen)));
     const la::Vector predicted = rows.B * du - rows.c;
     std::vector<char> consistent(rows.c.size());
     for (la::Index i = 0; i < predicted.size(); ++i)
@@ -187,7 +190,7 @@ void PrimalPenaltySolve::solve_increment(const contact::ContactConstraints& rows
 } // namespace
 
 ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSettings& settings,
-                                     TimerTable& timers)
+                                     TimerTable& timers, const StepCallback& on_step)
 {
   // One undecomposed factorization: BLAS is the parallelism (common/parallel.hpp).
   const ScopedBlasThreads blas(threads());
@@ -196,7 +199,7 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
   const auto run_start = std::chrono::steady_clock::now();
   ContactSolution out;
   PrimalPenaltySolve solve(problem, settings, timers, out);
-  run_load_steps(solve, 1, settings.steps(), settings.max_outer_iterations, out);
+  run_load_steps(solve, solve.history(), 1, settings.max_outer_iterations, out, on_step);
   if (out.converged)
     timers.add("total solve", seconds_since(run_start));
   return out;

@@ -15,10 +15,13 @@
 #include "common/timer.hpp"
 #include "fem/problem.hpp"
 #include "nonlinear/contact_solution.hpp"
+#include "nonlinear/load_stepping.hpp"
 #include "nonlinear/solver_settings.hpp"
 
 namespace feticon::nonlinear
 {
+/// Runs the problem's load history (SolverSettings::load_history: one load step per stage with
+/// small displacements); `on_step` after every converged load step, with the solution so far.
 ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSettings& settings,
-                                     TimerTable& timers);
+                                     TimerTable& timers, const StepCallback& on_step = {});
 } // namespace feticon::nonlinear

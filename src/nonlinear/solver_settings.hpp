@@ -4,6 +4,7 @@
 #include "contact/contact_constraints.hpp"
 #include "decomposition/generalized_inverse.hpp"
 #include "dual/dual_penalty_problem.hpp"
+#include "fem/load_history.hpp"
 #include "fem/material.hpp"
 #include "io/settings.hpp"
 
@@ -54,10 +55,20 @@ struct SolverSettings
   /// smalbe.*, qp.*). `subdomain_cells` needs the mesh: app::solver_settings applies it.
   explicit SolverSettings(const io::Settings& settings);
 
-  /// Load steps of the solve: load_steps with large displacements, one with small ones
-  /// (linear elasticity takes the whole load in one step; contact's own nonlinearity is the
-  /// outer loop's).
+  /// Load steps of the first load stage (all of a one-stage problem): load_steps with large
+  /// displacements, one with small ones (linear elasticity takes the whole load in one step;
+  /// contact's own nonlinearity is the outer loop's).
   int steps() const { return kinematics == fem::Kinematics::linear ? 1 : load_steps; }
+  /// The load history of `problem` under these settings: steps() for stage 1; each later stage
+  /// in its increments with large displacements, in one load step with small ones
+  /// (frictionless contact of linear elastic bodies: the answer at a stage's end does not
+  /// depend on the path, so one QP per stage gives CalculiX's per-step results).
+  fem::LoadHistory load_history(const fem::Problem& problem) const
+  {
+    return fem::LoadHistory(problem, steps(), kinematics == fem::Kinematics::linear);
+  }
+  /// Load steps of the whole run on `problem` (load_history(problem).n_steps()).
+  int steps(const fem::Problem& problem) const { return load_history(problem).n_steps(); }
 
   ContactMethod method;
   fem::Kinematics kinematics;

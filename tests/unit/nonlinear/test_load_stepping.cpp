@@ -39,6 +39,12 @@ private:
   std::function<IterationOutcome(int, int)> _script;
   int _step = 0;
 };
+
+/// A one-stage history of n equal load steps (no loads: the scripts need none).
+fem::LoadHistory equal_steps(int n)
+{
+  return fem::LoadHistory({}, {{la::Vector(), la::Vector(), n}});
+}
 } // namespace
 
 TEST(LoadStepping, RecordsEveryIterationAndCallsBackAfterConvergedSteps)
@@ -47,7 +53,7 @@ TEST(LoadStepping, RecordsEveryIterationAndCallsBackAfterConvergedSteps)
                         { return k == step + 1 ? IterationOutcome::step_converged() : IterationOutcome::next(); });
   ContactSolution out;
   std::vector<int> called_back;
-  run_load_steps(phases, 1, 2, 10, out, [&](int step, const ContactSolution&) { called_back.push_back(step); });
+  run_load_steps(phases, equal_steps(2), 1, 10, out, [&](int step, const ContactSolution&) { called_back.push_back(step); });
   EXPECT_TRUE(out.converged);
   EXPECT_TRUE(out.reason.empty());
   ASSERT_EQ(out.steps.size(), 2u);
@@ -70,7 +76,7 @@ TEST(LoadStepping, UnrecordedConvergenceKeepsTheLastRecordedIteration)
   ScriptedPhases phases([](int, int k)
                         { return k == 3 ? IterationOutcome::step_converged(false) : IterationOutcome::next(); });
   ContactSolution out;
-  run_load_steps(phases, 1, 1, 10, out);
+  run_load_steps(phases, equal_steps(1), 1, 10, out);
   EXPECT_TRUE(out.converged);
   EXPECT_EQ(out.history.size(), 2u);
   EXPECT_EQ(out.steps[0].outer_iterations, 2);
@@ -82,7 +88,7 @@ TEST(LoadStepping, StopsWithTheReasonOfAFailedIteration)
                         { return step == 2 && k == 2 ? IterationOutcome::stop("QP failed", false) : IterationOutcome::next(); });
   ContactSolution out;
   int called_back = 0;
-  run_load_steps(phases, 2, 3, 10, out, [&](int, const ContactSolution&) { ++called_back; });
+  run_load_steps(phases, equal_steps(3), 2, 10, out, [&](int, const ContactSolution&) { ++called_back; });
   EXPECT_FALSE(out.converged);
   EXPECT_EQ(out.reason, "QP failed");
   EXPECT_EQ(out.history.size(), 1u); // the failed iteration is no result
@@ -94,10 +100,26 @@ TEST(LoadStepping, ReportsAStepThatDoesNotConverge)
 {
   ScriptedPhases phases([](int, int) { return IterationOutcome::next(); });
   ContactSolution out;
-  run_load_steps(phases, 1, 2, 4, out);
+  run_load_steps(phases, equal_steps(2), 1, 4, out);
   EXPECT_FALSE(out.converged);
   EXPECT_EQ(out.history.size(), 4u);
   EXPECT_EQ(out.steps.size(), 1u);
   EXPECT_NE(out.reason.find("load step 1 did not converge in 4 outer iterations"), std::string::npos) << out.reason;
+}
+// Reference: the history's load factors (fem/load_history.hpp): stage 1 in 2 steps (0.5, 1),
+// stage 2 in 3 (4/3, 5/3, 2), passed to the phases and recorded per step.
+TEST(LoadStepping, StepsThroughTheStagesOfAHistory)
+{
+  ScriptedPhases phases([](int, int) { return IterationOutcome::step_converged(); });
+  ContactSolution out;
+  run_load_steps(phases, fem::LoadHistory({}, {{la::Vector(), la::Vector(), 2}, {la::Vector(), la::Vector(), 3}}), 1,
+                 10, out);
+  EXPECT_TRUE(out.converged);
+  ASSERT_EQ(out.steps.size(), 5u);
+  const std::vector<double> t = {0.5, 1.0, 4.0 / 3, 5.0 / 3, 2.0};
+  for (size_t i = 0; i < t.size(); ++i)
+    EXPECT_DOUBLE_EQ(out.steps[i].load_factor, t[i]) << "step " << i + 1;
+  EXPECT_EQ(phases.calls[4], "begin 3 1.33");
+  EXPECT_EQ(out.history.back().load_step, 5);
 }
 } // namespace feticon::nonlinear

@@ -1,0 +1,244 @@
+/// Tests of the load history (fem/load_history.hpp) on a 2x2x2 box: load factors, the
+/// piecewise-linear forces and prescribed values, stage boundaries, one-stage problems bit for
+/// bit as t * f, and the errors of a stage that changes the prescribed DOF set.
+/// References: the rule of the file comment of load_history.hpp, evaluated by hand, and the
+/// total force of a uniform traction = traction * face area (the unit square: 1 m^2).
+
+#include "common/error.hpp"
+#include "fem/load_history.hpp"
+#include "mesh/box.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+using namespace feticon;
+
+namespace
+{
+/// The unit cube in 2x2x2 cells, u_x = 0 on xmin, u_z = d on zmax, traction (p, 0, 0) on xmax.
+fem::Problem box_problem(double p, double d)
+{
+  fem::Problem problem;
+  problem.name = "box";
+  mesh::BoxParameters box;
+  box.nx = box.ny = box.nz = 2;
+  problem.mesh = mesh::generate_box(box);
+  problem.materials = {fem::Material{2e11, 0.3}};
+  problem.dirichlet = {{"xmin", {0.0, std::nullopt, std::nullopt}}, {"zmax", {std::nullopt, std::nullopt, d}}};
+  problem.tractions = {{"xmax", Eigen::Vector3d(p, 0, 0)}};
+  problem.validate();
+  return problem;
+}
+
+/// A later stage with traction (p, 0, 0) on xmax and the supports of box_problem with u_z = d.
+fem::LoadStage box_stage(double p, double d, int increments)
+{
+  fem::LoadStage stage;
+  stage.tractions = {{"xmax", Eigen::Vector3d(p, 0, 0)}};
+  stage.dirichlet = {{"xmin", {0.0, std::nullopt, std::nullopt}}, {"zmax", {std::nullopt, std::nullopt, d}}};
+  stage.increments = increments;
+  return stage;
+}
+
+double total_x(const la::Vector& f)
+{
+  return f(Eigen::seq(0, Eigen::last, 3)).sum();
+}
+
+bool identical(const la::Vector& a, const la::Vector& b)
+{
+  return a.size() == b.size() && (a.array() == b.array()).all();
+}
+
+std::string error_of(const fem::Problem& problem)
+{
+  try
+  {
+    const fem::LoadHistory history(problem, 1);
+    (void)history;
+  }
+  catch (const Error& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+} // namespace
+
+// Reference: a one-stage solver's t = n / N, f = t * f_ext, u_D = t * u_D (feti_contact_solver,
+// primal_penalty_solver, direct_newton before stages): equal bit for bit.
+TEST(LoadHistory, OneStageIsTTimesTheLoadBitForBit)
+{
+  const fem::Problem problem = box_problem(3e6, 1e-3);
+  const int N = 7;
+  const fem::LoadHistory history(problem, N);
+  ASSERT_EQ(history.n_stages(), 1);
+  ASSERT_EQ(history.n_steps(), N);
+  const la::Vector f = problem.external_force();
+  const fem::ConstrainedDofs constrained = problem.all_constrained_dofs();
+  EXPECT_EQ(history.dofs(), constrained.dofs);
+  for (int n = 1; n <= N; ++n)
+  {
+    const double t = static_cast<double>(n) / N;
+    EXPECT_EQ(history.load_factor(n), t);
+    EXPECT_EQ(history.point(n).stage, 1);
+    EXPECT_TRUE(identical(history.external_force(n), t * f)) << "step " << n;
+    EXPECT_EQ(history.external_force_norm(n), t * f.norm());
+    fem::ConstrainedDofs target = constrained;
+    target.values *= t;
+    EXPECT_TRUE(identical(history.prescribed_values(n), target.values)) << "step " << n;
+    EXPECT_TRUE(identical(history.interpolate(n, {2 * f}), t * (2 * f)));
+  }
+  EXPECT_THROW(history.point(0), Error);
+  EXPECT_THROW(history.point(N + 1), Error);
+}
+
+// Reference: the rule by hand. Stage 1: p = 1e6, d = 1e-3 in 2 steps; stage 2: p = 3e6,
+// d = -1e-3 in 4 increments; stage 3: p = 0, d = 0 in 1. Load factors 0.5, 1, 1.25 ... 2, 3;
+// the total x force is p(t) * 1 m^2 with p(t) piecewise linear through (0, 0), (1, 1e6),
+// (2, 3e6), (3, 0); the stage ends are reached exactly.
+TEST(LoadHistory, PiecewiseLinearThroughTheStageEnds)
+{
+  fem::Problem problem = box_problem(1e6, 1e-3);
+  problem.later_stages = {box_stage(3e6, -1e-3, 4), box_stage(0, 0, 1)};
+  const fem::LoadHistory history(problem, 2);
+  ASSERT_EQ(history.n_stages(), 3);
+  ASSERT_EQ(history.n_steps(), 7);
+  EXPECT_EQ(history.last_step(0), 0);
+  EXPECT_EQ(history.last_step(1), 2);
+  EXPECT_EQ(history.last_step(2), 6);
+  EXPECT_EQ(history.last_step(3), 7);
+  const std::vector<double> t = {0.5, 1, 1.25, 1.5, 1.75, 2, 3};
+  const std::vector<int> stage = {1, 1, 2, 2, 2, 2, 3};
+  const std::vector<double> p = {0.5e6, 1e6, 1.5e6, 2e6, 2.5e6, 3e6, 0};
+  const std::vector<double> d = {0.5e-3, 1e-3, 0.5e-3, 0, -0.5e-3, -1e-3, 0};
+  for (int n = 1; n <= 7; ++n)
+  {
+    SCOPED_TRACE("load step " + std::to_string(n));
+    const fem::LoadPoint point = history.point(n);
+    EXPECT_EQ(point.stage, stage[n - 1]);
+    EXPECT_DOUBLE_EQ(point.load_factor, t[n - 1]);
+    EXPECT_NEAR(total_x(history.external_force(n)), p[n - 1], 1e-9 * 3e6);
+    EXPECT_NEAR(history.external_force_norm(n), history.external_force(n).norm(), 1e-15 * 3e6);
+    const la::Vector values = history.prescribed_values(n);
+    for (size_t k = 0; k < history.dofs().size(); ++k)
+    {
+      const double expected = history.dofs()[k] % 3 == 2 ? d[n - 1] : 0.0;
+      EXPECT_NEAR(values(static_cast<la::Index>(k)), expected, 1e-18) << "DOF " << history.dofs()[k];
+    }
+  }
+  // Exactly the stage ends at the last step of each stage.
+  for (int s = 1; s <= 3; ++s)
+  {
+    EXPECT_TRUE(identical(history.external_force(history.last_step(s)), history.stage_end(s).force));
+    EXPECT_TRUE(identical(history.prescribed_values(history.last_step(s)), history.stage_end(s).values));
+  }
+  EXPECT_TRUE(identical(history.stage_end(1).force, problem.external_force()));
+  EXPECT_NEAR(total_x(history.stage_end(2).force), 3e6, 1e-9 * 3e6);
+}
+
+// Reference: SolverSettings::load_history with small displacements: one load step per stage,
+// at the stage ends t = 1, 2, 3, whatever the increments.
+TEST(LoadHistory, OneStepPerStage)
+{
+  fem::Problem problem = box_problem(1e6, 1e-3);
+  problem.later_stages = {box_stage(3e6, -1e-3, 4), box_stage(0, 0, 5)};
+  const fem::LoadHistory history(problem, 1, true);
+  ASSERT_EQ(history.n_steps(), 3);
+  for (int n = 1; n <= 3; ++n)
+  {
+    EXPECT_EQ(history.load_factor(n), n);
+    EXPECT_TRUE(identical(history.external_force(n), history.stage_end(n).force));
+  }
+}
+
+// Reference: Problem::eliminated adds its components to every stage's DOF set (plane strain:
+// u_z = 0 on every node), so a later stage need not list them.
+TEST(LoadHistory, EliminatedComponentsBelongToEveryStage)
+{
+  fem::Problem problem = box_problem(1e6, 0.0);
+  problem.dirichlet = {{"xmin", {0.0, std::nullopt, std::nullopt}}};
+  problem.eliminated = {false, false, true};
+  fem::LoadStage stage = box_stage(2e6, 0, 1);
+  stage.dirichlet = {{"xmin", {-1e-3, std::nullopt, std::nullopt}}};
+  problem.later_stages = {stage};
+  const fem::LoadHistory history(problem, 1);
+  EXPECT_EQ(history.dofs(), problem.all_constrained_dofs().dofs);
+  const la::Vector values = history.prescribed_values(2);
+  for (size_t k = 0; k < history.dofs().size(); ++k)
+    EXPECT_EQ(values(static_cast<la::Index>(k)), history.dofs()[k] % 3 == 0 ? -1e-3 : 0.0);
+  EXPECT_EQ(history.stage_end(2).force(3 * 26 + 2), 0.0); // eliminated components carry no force
+}
+
+// Reference: the brief's rule: the DOF set is stage 1's; a later stage that adds or drops a
+// prescribed component is an error naming the stage and the set.
+TEST(LoadHistory, ALaterStageMayNotChangeThePrescribedSet)
+{
+  fem::Problem problem = box_problem(1e6, 1e-3);
+  fem::LoadStage added = box_stage(1e6, 1e-3, 1);
+  added.dirichlet.push_back({"ymin", {std::nullopt, 0.0, std::nullopt}});
+  problem.later_stages = {box_stage(2e6, 0, 1), added};
+  std::string message = error_of(problem);
+  std::printf("%s\n", message.c_str());
+  EXPECT_NE(message.find("load stage 3 prescribes u_y"), std::string::npos) << message;
+  EXPECT_NE(message.find("'ymin'"), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+
+  fem::LoadStage omitted = box_stage(1e6, 1e-3, 1);
+  omitted.dirichlet.pop_back(); // drops zmax's u_z
+  problem.later_stages = {omitted};
+  message = error_of(problem);
+  std::printf("%s\n", message.c_str());
+  EXPECT_NE(message.find("load stage 2 leaves u_z"), std::string::npos) << message;
+  EXPECT_NE(message.find("'zmax'"), std::string::npos) << message;
+
+  fem::LoadStage other_component = box_stage(1e6, 1e-3, 1);
+  other_component.dirichlet[1].value = {std::nullopt, 1e-3, std::nullopt}; // u_y on zmax instead of u_z
+  problem.later_stages = {other_component};
+  message = error_of(problem);
+  EXPECT_NE(message.find("load stage 2 prescribes u_y"), std::string::npos) << message;
+  EXPECT_NE(message.find("'zmax'"), std::string::npos) << message;
+}
+
+// Reference: input checks (STYLE.md, Errors): every message names the stage.
+TEST(LoadHistory, BadStagesAreErrorsNamingTheStage)
+{
+  fem::Problem problem = box_problem(1e6, 1e-3);
+  fem::LoadStage stage = box_stage(1e6, 1e-3, 0);
+  problem.later_stages = {stage};
+  EXPECT_NE(error_of(problem).find("load stage 2 has 0 increments"), std::string::npos) << error_of(problem);
+
+  stage = box_stage(1e6, 1e-3, 1);
+  stage.tractions[0].set = "no_such_set";
+  problem.later_stages = {stage};
+  EXPECT_NE(error_of(problem).find("load stage 2: "), std::string::npos) << error_of(problem);
+  EXPECT_NE(error_of(problem).find("no_such_set"), std::string::npos) << error_of(problem);
+
+  stage = box_stage(1e6, 1e-3, 1);
+  stage.nodal_forces = {{1000, 0, 1.0}};
+  problem.later_stages = {stage};
+  EXPECT_NE(error_of(problem).find("load stage 2: the nodal force on node 1000"), std::string::npos)
+      << error_of(problem);
+
+  stage = box_stage(1e6, 1e-3, 1);
+  stage.dirichlet.push_back({"zmax", {std::nullopt, std::nullopt, 2e-3}}); // two values for one DOF
+  problem.later_stages = {stage};
+  EXPECT_NE(error_of(problem).find("load stage 2: "), std::string::npos) << error_of(problem);
+
+  EXPECT_THROW(fem::LoadHistory(problem.all_constrained_dofs().dofs, {}), Error);
+  EXPECT_THROW(fem::LoadHistory({}, {{la::Vector::Zero(3), la::Vector::Zero(1), 1}}), Error);
+}
+
+// Reference: a quantity in another layout (here scaled by 2) follows the same rule.
+TEST(LoadHistory, InterpolatesAnyQuantityGivenAtTheStageEnds)
+{
+  fem::Problem problem = box_problem(1e6, 1e-3);
+  problem.later_stages = {box_stage(3e6, -1e-3, 4)};
+  const fem::LoadHistory history(problem, 2);
+  const std::vector<la::Vector> ends = {2 * history.stage_end(1).force, 2 * history.stage_end(2).force};
+  for (int n = 1; n <= history.n_steps(); ++n)
+    EXPECT_LE((history.interpolate(n, ends) - 2 * history.external_force(n)).norm(), 1e-15 * ends[1].norm());
+  EXPECT_THROW(history.interpolate(1, {ends[0]}), Error);
+}
