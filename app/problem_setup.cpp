@@ -109,8 +109,8 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Prob
     out.subdomains = std::max<int>(problem.mesh.n_bodies(),
                                    static_cast<int>((problem.mesh.n_cells() + cells - 1) / cells));
   // A small model (a user's deck of a few elements) gets at most a subdomain per cell rather
-  // than an error for the default count.
-  if (out.subdomains > problem.mesh.n_cells())
+  // than an error for the default count; a count the user gives is checked by the partition.
+  if (!s.given("subdomains") && out.subdomains > problem.mesh.n_cells())
   {
     log::info("subdomains: " + std::to_string(out.subdomains) + " asked for, the mesh has " +
               std::to_string(problem.mesh.n_cells()) + " cells: one subdomain per cell");

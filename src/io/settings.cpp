@@ -206,6 +206,7 @@ void Settings::set(const std::string& key, const std::string& raw, const std::st
     break;
   }
   _values[key] = value;
+  _given.insert(key);
 }
 
 double Settings::number(const std::string& key) const

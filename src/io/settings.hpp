@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <map>
+#include <set>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,6 +52,8 @@ public:
   int integer(const std::string& key) const;
   const std::string& text(const std::string& key) const;
   bool flag(const std::string& key) const;
+  /// True if `key` was set (problem file, deck, --set), false if it has its default.
+  bool given(const std::string& key) const { return _given.count(key) > 0; }
 
   /// The effective settings as YAML (written to the results folder).
   std::string to_yaml() const;
@@ -60,5 +63,6 @@ public:
 
 private:
   std::map<std::string, std::string> _values;
+  std::set<std::string> _given;
 };
 } // namespace feticon::io
