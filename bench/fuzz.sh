@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The long run of the input fuzzer (tests/tools/fuzz_inputs.py; tests/cli/fuzz_inputs.sh is
-# the short one in CTest): mutants of problem files, Gmsh meshes and Matrix Market files for
-# a number of minutes; prints the outcome counts per kind and saves failing mutants with a
-# command.sh to reproduce them.
+# the short one in CTest): mutants of problem files, Gmsh meshes, Matrix Market files and
+# CalculiX input decks for a number of minutes; prints the outcome counts per kind and saves
+# failing mutants with a command.sh to reproduce them.
 #
-#   bench/fuzz.sh                          # 10 minutes, seed 1, build/feticon
+#   bench/fuzz.sh                          # 10 minutes, seed 1, build/feticon, all kinds
 #   bench/fuzz.sh --minutes 60 --seed 7
 #   bench/fuzz.sh --feticon build-asan/feticon --kinds gmsh --keep /tmp/gmsh-failures
+#   bench/fuzz.sh --kinds deck --timeout 10  # decks only (each runs in well under 1 s)
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)

@@ -380,6 +380,7 @@ private:
     const std::string name = required(nodes_kind ? "NSET" : "ELSET");
     auto& sets = nodes_kind ? _data.node_sets : _data.element_sets;
     std::vector<int32_t> listed;
+    const size_t n_entities = nodes_kind ? _data.node_labels.size() : _data.cells.size();
     DeckDataLine line;
     const bool generate = _keyword.has("GENERATE");
     while (_tokens.next_data(line))
@@ -390,14 +391,17 @@ private:
         const int64_t step = line.fields.size() > 2 && !line.fields[2].empty() ? integer(line, 2, "increment") : 1;
         if (step <= 0 || last < first)
           fail_at(line.where, "GENERATE needs first <= last and a positive increment");
-        for (int64_t label = first; label <= last; label += step)
+        for (int64_t label = first;; label += step)
         {
           const int32_t i = nodes_kind ? _data.node_index.find(label) : _data.element_index.find(label);
           if (i < 0)
             fail_at(line.where, std::string(nodes_kind ? "node " : "element ") + std::to_string(label) +
                                     " of the generated range is not defined");
           listed.push_back(i);
+          if (last - label < step) // the next label would pass `last` (or overflow int64)
+            break;
         }
+        compact(listed, n_entities);
         continue;
       }
       for (size_t k = 0; k < line.fields.size(); ++k)
@@ -406,10 +410,23 @@ private:
           continue;
         const std::vector<int32_t> more = members(line, k, nodes_kind);
         listed.insert(listed.end(), more.begin(), more.end());
+        compact(listed, n_entities);
       }
     }
     auto& set = sets[name];
     set.insert(set.end(), listed.begin(), listed.end());
+    compact(set, n_entities);
+  }
+
+  /// Sorts a set and drops its repeats once it holds more than twice the entities there are:
+  /// a set that names itself ("*NSET, NSET=A" / "A, A") doubles with each block, and a few
+  /// lines would take all memory. The model sorts and unifies every set anyway.
+  static void compact(std::vector<int32_t>& set, size_t n_entities)
+  {
+    if (set.size() <= 2 * n_entities + 1024)
+      return;
+    std::sort(set.begin(), set.end());
+    set.erase(std::unique(set.begin(), set.end()), set.end());
   }
 
   void surface()
@@ -552,12 +569,19 @@ private:
     }
   }
 
-  void cload()
+  /// The parameters of a load keyword: OP=NEW clears the loads of its kind set so far.
+  template <class Loads>
+  void begin_load(Loads& loads)
   {
     known_parameters({"OP", "AMPLITUDE"});
     no_amplitude();
     if (op_new())
-      _data.state.cload.clear();
+      loads.clear();
+  }
+
+  void cload()
+  {
+    begin_load(_data.state.cload);
     DeckDataLine line;
     while (_tokens.next_data(line))
     {
@@ -584,10 +608,7 @@ private:
 
   void dload()
   {
-    known_parameters({"OP", "AMPLITUDE"});
-    no_amplitude();
-    if (op_new())
-      _data.state.dload.clear();
+    begin_load(_data.state.dload);
     DeckDataLine line;
     while (_tokens.next_data(line))
     {
@@ -600,10 +621,7 @@ private:
 
   void dsload()
   {
-    known_parameters({"OP", "AMPLITUDE"});
-    no_amplitude();
-    if (op_new())
-      _data.state.dload.clear();
+    begin_load(_data.state.dload);
     DeckDataLine line;
     while (_tokens.next_data(line))
     {

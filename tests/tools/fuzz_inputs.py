@@ -1,14 +1,16 @@
 #!/usr/bin/python3
-"""Mutation fuzzing of feticon's three input kinds (issue 21, item 7): problem files (YAML) of
-`feticon run`, Gmsh MSH meshes a custom problem file names, and the Matrix Market files of
-`feticon qp`. Each mutant is a seed of tests/data/fuzz/ with one to three mutations, run in a
+"""Mutation fuzzing of feticon's four input kinds (issue 21, item 7): problem files (YAML) of
+`feticon run`, Gmsh MSH meshes a custom problem file names, the Matrix Market files of
+`feticon qp`, and CalculiX / Abaqus input decks of `feticon run model.inp`. Each mutant is a
+seed of tests/data/fuzz/ (decks: tests/data/calculix/) with one to three mutations, run in a
 fresh folder under a time limit. A mutant fails when feticon dies of a signal, hangs (timeout),
 exits with another status than 0 or 1 (or 3, "not converged", for `feticon qp`), writes a
-non-finite number (summary.json, the CSV files, the qp JSON report, x.mtx), ends an exit 1
+non-finite number (summary.json, the CSV files, the qp JSON report, x.mtx, the data rows of
+a deck run's .dat and .frd), ends an exit 1
 with more or less than one line on stderr, or reports success without its report.
 
 Usage: fuzz_inputs.py FETICON SOURCE_DIR [--mutants N | --minutes M] [--seed S]
-                      [--kinds problem,gmsh,mm] [--timeout SECONDS] [--keep DIR]
+                      [--kinds problem,gmsh,mm,deck] [--timeout SECONDS] [--keep DIR]
 The mutants are a function of the seed: mutant i of seed S is the same in every run, so
 --minutes M runs a prefix of the same sequence. Failing mutants are saved in --keep DIR
 (default: a new temporary folder) with their inputs, diff.txt against the seed, the output
@@ -367,6 +369,361 @@ def mm_size(text, rng):
 
 MM_MUTATORS = [number_replacer(EXTREMES), mm_header, mm_size]
 
+
+# ---- CalculiX / Abaqus input decks -----------------------------------------------------------
+# Mutations aimed at the deck reader (src/io/deck_*.cpp): its keyword and data lines, the
+# numbers it parses, the references between nodes, elements, sets and surfaces, *INCLUDE, and
+# the magnitudes a valid deck may carry (1e-30 to 1e30 moduli, loads and coordinates).
+
+DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp"]
+DECK_EXTREMES = EXTREMES + ["1e400", "-1e400", "NaN", "-nan", "Infinity", "1.5D3", "1d999",
+                            "9223372036854775807", "9223372036854775808",
+                            "-9223372036854775809", "-0", "1e-30", "1e30", "-1e30"]
+# Words where the reader wants a number (and numbers it must refuse as such).
+DECK_WORDS = ["abc", "", "NALL", "S1", "P5", "1.5.2", "1e", "--1", "0x10", "1 2", "+", "-",
+              ".", "e5", "1d", "'1'", '"1"', "1_000", "\xb9", "1e5x", "EALL", "SMAST"]
+# Keyword lines (with data) a deck may wrongly hold; NAME is replaced by a random name.
+DECK_KEYWORDS = [
+    "*FOO", "*", "* ", "*,", "*, NSET=A", "*NODE", "*NODE,", "*NODE, NSET", "*NODE, SYSTEM=R",
+    "*ELEMENT", "*ELEMENT, TYPE=C3D20", "*ELEMENT, TYPE=C3D8\n1,1,2,3,4,5,6,7",
+    "*ELEMENT, TYPE=C3D8R, ELSET=EALL\n999,1,2,3,4,5,6,7,8", "*STEP", "*END STEP", "*STATIC",
+    "*STATIC\n1e-300,1e300", "*STATIC\n0,0", "*FRICTION\n0.3", "*DENSITY\n7.8e-9", "*INCLUDE",
+    "*INCLUDE, INPUT=", "*INCLUDE, INPUT=.", "*MATERIAL, NAME=", "*MATERIAL, NAME=EL",
+    "*ELASTIC\n1,0.3", "*ELASTIC\n1e30,0.49999999", "*heading\ntitle", "*SURFACE, NAME=@",
+    "*SURFACE, NAME=@, TYPE=NODE", "*SURFACE, NAME=SMAST\n1,S1",
+    "*CONTACT PAIR, INTERACTION=SI1", "*CONTACT PAIR, INTERACTION=SI1, TYPE=SURFACE TO SURFACE\nSSLAV,SMAST",
+    "*BOUNDARY\n1,1,3,1e30", "*BOUNDARY\nNALL,1,3", "*BOUNDARY\nNALL,ENCASTRE", "*CLOAD\n1,3,-1e30",
+    "*DLOAD\nEALL,P1,1e30", "*DSLOAD\nSMAST,P,1", "*NSET, NSET=@, GENERATE\n1,1000000000",
+    "*NSET, NSET=@, GENERATE\n1,9223372036854775807,9223372036854775807",
+    "*ELSET, ELSET=@, GENERATE\n1,2,0", "*ELSET, ELSET=@\n@", "*NSET, NSET=NALL\nNALL",
+    "*EQUATION\n2\n1,1,1.", "*EQUATION\n1000\n1,1,1.", "*EQUATION\n2\n1,1,0.,2,1,1.",
+    "*SOLID SECTION, ELSET=EALL, MATERIAL=EL", "*SOLID SECTION, ELSET=@, MATERIAL=@",
+    "*SURFACE INTERACTION, NAME=SI1", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD",
+    "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED", "*NODE PRINT, NSET=@", "*EL FILE\nS,E,XYZ",
+    "*AMPLITUDE, NAME=A\n0,0,1,1", "*CLOAD, AMPLITUDE=A\n1,1,1", "*CLOAD, OP=NEW",
+    "*BOUNDARY, OP=NEW", "*DLOAD, OP=XYZ", "*NODE, NSET=@\n1,0,0,0", "*NODE\n0,1,2,3",
+    "*NODE\n2147483647,0,0,0", "*NODE\n9223372036854775807,0,0,0",
+    "*ELEMENT, TYPE=C3D8\n5,1,1,1,1,1,1,1,1", "*" + "A" * 5000, "*NODE, NSET=" + "N" * 5000,
+    # Sets that name themselves: each block multiplies the set's length.
+    "*NSET, NSET=NALL\n" + "NALL," * 2000 + "NALL\n*NSET, NSET=NALL\n" + "NALL," * 2000 + "NALL",
+    ("*ELSET, ELSET=EALL\n" + "EALL," * 1000 + "EALL\n") * 4 + "*DLOAD\nEALL,P1,1"]
+
+
+def deck_is_keyword(line):
+    stripped = line.lstrip(" \t")
+    return stripped.startswith("*") and not stripped.startswith("**")
+
+
+def deck_is_data(line):
+    stripped = line.strip(" \t\r\n")
+    return bool(stripped) and not stripped.startswith("*")
+
+
+def deck_blocks(lines):
+    """(first line, end line, upper-case keyword name) of every keyword block."""
+    starts = [(i, line.lstrip(" \t")[1:].split(",")[0].strip().upper())
+              for i, line in enumerate(lines) if deck_is_keyword(line)]
+    return [(i, starts[k + 1][0] if k + 1 < len(starts) else len(lines), name)
+            for k, (i, name) in enumerate(starts)]
+
+
+def deck_lines(text):
+    return [line if line.endswith("\n") else line + "\n" for line in text.splitlines(keepends=True)]
+
+
+def deck_data_lines(lines, names):
+    """Indices of the data lines of blocks named in `names`."""
+    return [i for first, end, name in deck_blocks(lines) if name in names
+            for i in range(first + 1, end) if deck_is_data(lines[i])]
+
+
+def deck_names(text):
+    names = re.findall(r"(?:NSET|ELSET|NAME)\s*=\s*(\w+)", text, re.I)
+    return names or ["NALL"]
+
+
+def deck_truncate_line(text, rng):
+    lines = deck_lines(text)
+    candidates = [i for i, line in enumerate(lines) if line.strip()]
+    if not candidates:
+        return None
+    i = rng.choice(candidates)
+    body = lines[i].rstrip("\r\n")
+    cut = rng.randrange(len(body))
+    lines[i] = body[:cut] + "\n"
+    return "".join(lines), f"line {i + 1} cut after {cut} characters"
+
+
+def deck_keyword(text, rng):
+    lines = deck_lines(text)
+    i = rng.randrange(len(lines) + 1)
+    if rng.random() < 0.2:
+        letters = "ABCDEFGHIJKLMNOPQRSTUVWXYZ -=,"
+        keyword = "*" + "".join(rng.choice(letters) for _ in range(rng.randint(1, 20)))
+    else:
+        keyword = rng.choice(DECK_KEYWORDS).replace("@", rng.choice(deck_names(text) + ["X"]))
+    if rng.random() < 0.2:
+        keyword = keyword.lower()
+    lines.insert(i, keyword + "\n")
+    return "".join(lines), f"line {i + 1} inserted: {keyword[:80]!r}"
+
+
+def deck_word(text, rng):
+    return number_replacer(DECK_WORDS)(text, rng)
+
+
+def deck_face(text, rng):
+    matches = list(re.finditer(r"(?<=,)[ \t]*([SsPp])([1-6])\b", text))
+    if not matches:
+        return None
+    m = rng.choice(matches)
+    letter = m.group(1).upper()
+    value = rng.choice([f"{letter}0", f"{letter}7", f"{letter}9", f"{letter}10", f"{letter}-1",
+                        letter, "S" if letter == "P" else "P", f"{'SP'[letter == 'S']}{m.group(2)}",
+                        f"{letter.lower()}{m.group(2)}", f"{letter} {m.group(2)}", "", "X1"])
+    line = text.count("\n", 0, m.start()) + 1
+    return text[:m.start()] + value + text[m.end():], f"face {m.group().strip()} on line {line} -> {value!r}"
+
+
+def deck_absent_node(text, rng):
+    lines = deck_lines(text)
+    elements = deck_data_lines(lines, {"ELEMENT"})
+    if not elements:
+        return None
+    labels = [int(m.group(1)) for i in deck_data_lines(lines, {"NODE"})
+              for m in [re.match(r"\s*(\d+)", lines[i])] if m]
+    i = rng.choice(elements)
+    fields = lines[i].rstrip("\r\n").split(",")
+    k = rng.randrange(len(fields)) if rng.random() < 0.2 else rng.randrange(1, max(2, len(fields)))
+    k = min(k, len(fields) - 1)
+    value = str(rng.choice([max(labels, default=0) + 1, 0, -1, 2147483647, 2147483648,
+                            9223372036854775807, 99999999999999999999, "1.0", "1e3",
+                            rng.choice(labels) if labels else 1]))
+    old = fields[k].strip()
+    fields[k] = value
+    lines[i] = ",".join(fields) + "\n"
+    return "".join(lines), f"element line {i + 1}: field {k + 1} {old!r} -> {value}"
+
+
+def deck_empty_surface(text, rng):
+    lines = deck_lines(text)
+    surfaces = [b for b in deck_blocks(lines) if b[2] == "SURFACE"]
+    sets = [b for b in deck_blocks(lines) if b[2] in ("NSET", "ELSET")]
+    if not surfaces and not sets:
+        return None
+    if not surfaces or (sets and rng.random() < 0.3):
+        first, end, name = rng.choice(sets)
+        kept = [line for line in lines[first + 1:end] if not deck_is_data(line)]
+        return ("".join(lines[:first + 1] + kept + lines[end:]),
+                f"*{name} at line {first + 1} emptied")
+    first, end, _ = rng.choice(surfaces)
+    kept = [line for line in lines[first + 1:end] if not deck_is_data(line)]
+    if rng.random() < 0.5:
+        return "".join(lines[:first + 1] + kept + lines[end:]), f"*SURFACE at line {first + 1} emptied"
+    node_based = "TYPE=NODE" in lines[first].upper().replace(" ", "")
+    empty = ("*NSET, NSET=EMPTYSET\n" if node_based else "*ELSET, ELSET=EMPTYSET\n")
+    data = "EMPTYSET\n" if node_based else "EMPTYSET, S3\n"
+    return ("".join(lines[:first] + [empty, lines[first], data] + kept + lines[end:]),
+            f"*SURFACE at line {first + 1} made of an empty set")
+
+
+def deck_same_surface(text, rng):
+    lines = deck_lines(text)
+    pairs = deck_data_lines(lines, {"CONTACT PAIR"})
+    if not pairs:
+        return None
+    i = rng.choice(pairs)
+    fields = [f.strip() for f in lines[i].rstrip("\r\n").split(",")]
+    a, b = (fields + [""])[:2]
+    value = rng.choice([f"{a},{a}", f"{b},{b}", f"{b},{a}", a, f"{a},{b},{a}", f",{b}", f"{a},",
+                        f"NOPE,{b}", f"{a.lower()},{a.upper()}", ","])
+    lines[i] = value + "\n"
+    return "".join(lines), f"contact pair line {i + 1} -> {value!r}"
+
+
+def deck_scale_field(lines, indices, field, factor):
+    """Multiplies field `field` of the given data lines by factor; returns how many changed."""
+    changed = 0
+    for i in indices:
+        fields = lines[i].rstrip("\r\n").split(",")
+        if field >= len(fields):
+            continue
+        try:
+            value = float(fields[field].replace("d", "e").replace("D", "e"))
+        except ValueError:
+            continue
+        fields[field] = f"{value * factor:.9e}"
+        lines[i] = ",".join(fields) + "\n"
+        changed += 1
+    return changed
+
+
+def deck_magnitude(text, rng):
+    """Moduli, loads or coordinates scaled by 10^k, k in -30..30: all of a kind, or one."""
+    lines = deck_lines(text)
+    exponent = rng.choice([-30, 30, rng.randint(-30, 30)])
+    factor = 10.0 ** exponent
+    what = rng.choice(["moduli", "loads", "coordinates"])
+    if what == "moduli":
+        targets = [(deck_data_lines(lines, {"ELASTIC"}), 0)]
+    elif what == "loads":
+        targets = [(deck_data_lines(lines, {"CLOAD", "DLOAD", "DSLOAD"}), 2)]
+    else:
+        nodes = deck_data_lines(lines, {"NODE"})
+        targets = [(nodes, k) for k in (1, 2, 3)]
+    single = rng.random() < 0.3
+    changed = 0
+    for indices, field in targets:
+        if single and indices:
+            indices = [rng.choice(indices)]
+        changed += deck_scale_field(lines, indices, field, factor)
+        if single and changed:
+            break
+    if not changed:
+        return None
+    return "".join(lines), f"{'one of the' if single else 'all'} {what} times 1e{exponent}"
+
+
+def deck_parameter(text, rng):
+    lines = deck_lines(text)
+    keywords = [i for i, line in enumerate(lines) if deck_is_keyword(line) and "," in line]
+    if not keywords:
+        return None
+    i = rng.choice(keywords)
+    parts = lines[i].rstrip("\r\n").split(",")
+    change = rng.choice(["drop", "value", "value", "add", "repeat", "no value"])
+    k = rng.randrange(1, len(parts))
+    key = parts[k].split("=")[0]
+    if change == "drop":
+        del parts[k]
+    elif change == "value":
+        parts[k] = key + "=" + rng.choice(["", "C3D20", "NODE", "ELEMENT", "SURFACE TO SURFACE",
+                                           "NODE TO SURFACE", "XYZ", "YES", "NEW", "MOD",
+                                           "NALL", "EALL", "SI1", "EL", "=", "A B", "x" * 300])
+    elif change == "add":
+        parts.insert(rng.randrange(1, len(parts) + 1),
+                     rng.choice(["FOO=1", "NSET=NALL", "TYPE=NODE", "INPUT=x.inp", "GENERATE", "OP=NEW",
+                                 "AMPLITUDE=A", "NLGEOM", "DIRECT", "TOTALS=ONLY", " "]))
+    elif change == "repeat":
+        parts.insert(k + 1, key + "=" + rng.choice(["OTHER", "NALL", parts[k].split("=")[-1]]))
+    else:
+        parts[k] = key
+    lines[i] = ",".join(parts) + "\n"
+    return "".join(lines), f"keyword line {i + 1} ({change}) -> {lines[i].strip()[:80]!r}"
+
+
+def deck_block(text, rng):
+    lines = deck_lines(text)
+    blocks = deck_blocks(lines)
+    if not blocks:
+        return None
+    first, end, name = rng.choice(blocks)
+    block = lines[first:end]
+    rest = lines[:first] + lines[end:]
+    change = rng.choice(["duplicate", "delete", "move", "data only"])
+    if change == "duplicate":
+        lines = lines[:end] + block + lines[end:]
+    elif change == "delete":
+        lines = rest
+    elif change == "move":
+        at = rng.randrange(len(rest) + 1)
+        lines = rest[:at] + block + rest[at:]
+    else:
+        lines = lines[:first] + lines[first + 1:]
+    return "".join(lines), f"*{name} block at line {first + 1}: {change}"
+
+
+def deck_continuation(text, rng):
+    lines = deck_lines(text)
+    candidates = [i for i, line in enumerate(lines) if line.strip() and not line.lstrip().startswith("**")]
+    if not candidates:
+        return None
+    i = rng.choice(candidates)
+    body = lines[i].rstrip("\r\n")
+    if rng.random() < 0.5 or "," not in body:
+        lines[i] = body + ",\n"
+        return "".join(lines), f"line {i + 1} ends with a comma"
+    commas = [m.end() for m in re.finditer(",", body)]
+    cut = rng.choice(commas)
+    lines[i] = body[:cut] + "\n" + body[cut:] + "\n"
+    return "".join(lines), f"line {i + 1} split after column {cut}"
+
+
+def deck_case(text, rng):
+    lines = deck_lines(text)
+    i = rng.randrange(len(lines))
+    lines[i] = lines[i].lower() if rng.random() < 0.5 else lines[i].swapcase()
+    return "".join(lines), f"line {i + 1} case changed"
+
+
+DECK_MUTATORS = [number_replacer(DECK_EXTREMES), deck_word, deck_truncate_line, deck_keyword,
+                 deck_face, deck_absent_node, deck_empty_surface, deck_same_surface,
+                 deck_magnitude, deck_magnitude, deck_parameter, deck_block, deck_continuation,
+                 deck_case]
+
+
+def deck_include(text, target, rng):
+    """*INCLUDE: part of the deck moved to a file it includes (fine), or an include of a missing
+    file, of itself, in a cycle, too deep, of a folder or of a file that is no deck."""
+    lines = deck_lines(text)
+    blocks = deck_blocks(lines)
+    change = rng.choice(["split", "split", "missing", "self", "cycle", "deep", "folder", "empty",
+                         "long line", "binary", "parent"])
+    at = rng.choice([b[0] for b in blocks]) if blocks else 0
+    files = {}
+    if change in ("split", "cycle"):
+        first, end, name = rng.choice(blocks) if blocks else (0, len(lines), "")
+        part = lines[first:end]
+        if change == "cycle":
+            part.append(f"*INCLUDE, INPUT={rng.choice([target, 'part.inp'])}\n")
+        files["part.inp"] = "".join(part)
+        lines[first:end] = ["*INCLUDE, INPUT=part.inp\n"]
+        return "".join(lines), files, f"*INCLUDE ({change}) of the *{name} block at line {first + 1}"
+    if change == "deep":
+        depth = rng.choice([5, 31, 32, 33, 100])
+        for k in range(depth):
+            files[f"part{k}.inp"] = f"*INCLUDE, INPUT=part{k + 1}.inp\n" if k + 1 < depth else ""
+        include = "part0.inp"
+    elif change == "empty":
+        files["part.inp"] = rng.choice(["", "\n", "**\n", "\r\n", ","])
+        include = "part.inp"
+    elif change == "long line":
+        files["part.inp"] = "1," * rng.choice([600000, 2000000])
+        include = "part.inp"
+    elif change == "binary":
+        files["part.inp"] = "".join(chr(rng.randrange(256)) for _ in range(rng.choice([10, 5000])))
+        include = "part.inp"
+    else:
+        include = {"missing": "missing.inp", "self": target, "folder": ".", "parent": "../" + target}[change]
+    lines.insert(at, f"*INCLUDE, INPUT={include}\n")
+    return "".join(lines), files, f"*INCLUDE, INPUT={include} ({change}) at line {at + 1}"
+
+
+def mutate_deck(files, target, rng):
+    """One to three mutations of the deck `target`, most of them of the deck format; returns the
+    case's files (the deck and any files it now includes) and the descriptions."""
+    text = files[target].decode("latin-1")
+    extra = {}
+    done = []
+    wanted = rng.choice([1, 1, 1, 2, 3])
+    while len(done) < wanted:
+        roll = rng.random()
+        if roll < 0.1:
+            result = deck_include(text, target, rng)
+            if result is not None:
+                text, more, what = result
+                extra.update(more)
+                done.append(what)
+            continue
+        result = rng.choice(DECK_MUTATORS if roll < 0.7 else GENERIC)(text, rng)
+        if result is not None:
+            text, what = result
+            done.append(what)
+    out = dict(files)
+    out[target] = text.encode("latin-1")
+    out.update({name: data.encode("latin-1") for name, data in extra.items()})
+    return out, done
+
 SPECIFIC = {".yaml": YAML_MUTATORS, ".msh": MSH_MUTATORS, ".mtx": MM_MUTATORS}
 
 
@@ -386,8 +743,13 @@ def mutate(data, suffix, rng):
 
 # ---- running and judging a mutant -----------------------------------------------------------------
 
-def make_case(kind, rng, seed_dir):
+def make_case(kind, rng, source_dir):
     """Files of the case (name -> bytes), the mutated file's name, the command after FETICON."""
+    seed_dir = os.path.join(source_dir, "tests", "data", "fuzz")
+    if kind == "deck":
+        name = rng.choice(DECK_SEEDS)
+        files = {name: read(os.path.join(source_dir, "tests", "data", "calculix"), name)}
+        return files, name, ["run", name, "--output", "out"] + RUN_OPTIONS
     if kind == "mm":
         files = {name: read(seed_dir, name) for name in MM_FILES}
         target = rng.choices(MM_FILES, weights=[2, 1, 1])[0]
@@ -448,6 +810,26 @@ def non_finite_text(text):
     return False
 
 
+def non_finite_calculix(out):
+    """A non-finite number in a data row of the .dat (a line of numbers only) or the .frd (a
+    " -1" record line, whose fixed-width numbers may touch: any nan or inf in it)."""
+    for name in os.listdir(out) if os.path.isdir(out) else []:
+        path = os.path.join(out, name)
+        if name.endswith(".dat"):
+            for line in read_text(path).splitlines():
+                try:
+                    values = [float(token) for token in line.split()]
+                except ValueError:
+                    continue
+                if not all(math.isfinite(v) for v in values):
+                    return True
+        elif name.endswith(".frd"):
+            if any(line.startswith(" -1") and re.search(r"nan|inf", line, re.I)
+                   for line in read_text(path, 64 << 20).splitlines()):
+                return True
+    return False
+
+
 def parse_json(text):
     try:
         return json.loads(text, parse_constant=float)
@@ -476,7 +858,8 @@ def judge(kind, folder, status, stdout, stderr):
         csvs = [os.path.join(out, f) for f in os.listdir(out) if f.endswith(".csv")] \
             if os.path.isdir(out) else []
         if (report is not None and non_finite_json(report)) or \
-                any(non_finite_text(read_text(f)) for f in csvs):
+                any(non_finite_text(read_text(f)) for f in csvs) or \
+                (kind == "deck" and non_finite_calculix(out)):
             return "non-finite"
     # Lines as `wc -l` counts them (tests/cli/bad_inputs.sh): a '\r' echoed from the input
     # does not end a line.
@@ -513,16 +896,15 @@ def main():
     amount.add_argument("--mutants", type=int, default=60)
     amount.add_argument("--minutes", type=float)
     parser.add_argument("--seed", type=int, default=1)
-    parser.add_argument("--kinds", default="problem,gmsh,mm")
+    parser.add_argument("--kinds", default="problem,gmsh,mm,deck")
     parser.add_argument("--timeout", type=float, default=30)
     parser.add_argument("--keep")
     args = parser.parse_args()
     kinds = args.kinds.split(",")
-    unknown = set(kinds) - {"problem", "gmsh", "mm"}
+    unknown = set(kinds) - {"problem", "gmsh", "mm", "deck"}
     if unknown:
         parser.error(f"unknown kinds {sorted(unknown)}")
     feticon = os.path.abspath(args.feticon)
-    seed_dir = os.path.join(args.source_dir, "tests", "data", "fuzz")
     keep = args.keep
     work = tempfile.mkdtemp(prefix="feticon-fuzz-run-")
     counts = {kind: dict.fromkeys(OUTCOMES, 0) for kind in kinds}
@@ -534,9 +916,12 @@ def main():
                else time.monotonic() - start < 60 * args.minutes):
             kind = kinds[index % len(kinds)]
             rng = random.Random(f"{args.seed}/{index}")
-            seed_files, target, command = make_case(kind, rng, seed_dir)
-            files = dict(seed_files)
-            files[target], what = mutate(seed_files[target], os.path.splitext(target)[1], rng)
+            seed_files, target, command = make_case(kind, rng, args.source_dir)
+            if kind == "deck":
+                files, what = mutate_deck(seed_files, target, rng)
+            else:
+                files = dict(seed_files)
+                files[target], what = mutate(seed_files[target], os.path.splitext(target)[1], rng)
             folder = os.path.join(work, f"{kind}-{index:05d}")
             os.mkdir(folder)
             for name, data in files.items():
