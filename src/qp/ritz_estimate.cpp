@@ -27,7 +27,11 @@ void RitzEstimate::end_run()
 RitzValues RitzEstimate::longest_run()
 {
   end_run();
-  const auto k = static_cast<Eigen::Index>(_best_alpha.size());
+  // The first 500 steps: the leading block of the Lanczos matrix is that of a 500-step run, so
+  // its Ritz values are exact for it, and the dense solver below stays at 2 MB and a fraction
+  // of a second. A stalled QP of 20 000 steps made it a 3.2 GB matrix that never finished.
+  constexpr Eigen::Index max_steps = 500;
+  const Eigen::Index k = std::min(static_cast<Eigen::Index>(_best_alpha.size()), max_steps);
   if (k < 2)
     return {};
   // The last beta belongs to a direction the run never used.
@@ -43,7 +47,7 @@ RitzValues RitzEstimate::longest_run()
   }
   // The dense solver, not computeFromTridiagonal: Eigen 3.4's tridiagonal QR reported no
   // convergence on a 53-step run of a Hertz QP whose dense eigenvalues are [1.00007, 66.68],
-  // and the estimate went missing; k is at most a few hundred.
+  // and the estimate went missing; k is at most max_steps.
   Eigen::MatrixXd T = Eigen::MatrixXd::Zero(k, k);
   T.diagonal() = diagonal;
   T.diagonal(1) = off_diagonal;
