@@ -73,7 +73,9 @@ struct DeckLoadState
 struct DeckData
 {
   std::vector<int64_t> node_labels;
-  std::vector<double> coordinates; ///< x, y, z per node
+  /// Rows 0 .. node_labels.size() hold x, y, z per node; sized from the outline's count, so
+  /// that it becomes the mesh's node array without a copy when every node is used.
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> coordinates;
   LabelIndex node_index;
   std::vector<int64_t> element_labels;
   std::vector<mesh::Cell> cells; ///< node indices, VTK hex order (= CalculiX C3D8 order)
@@ -105,6 +107,6 @@ struct DeckData
   }
 };
 
-/// Runs the keyword handlers over the whole deck.
-DeckData read_deck_data(const std::filesystem::path& path);
+/// Runs the keyword handlers over the whole deck; `outline` sizes the node and cell arrays.
+DeckData read_deck_data(const std::filesystem::path& path, const DeckOutline& outline);
 } // namespace feticon::io

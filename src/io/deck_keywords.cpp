@@ -109,7 +109,13 @@ bool is_integer(std::string_view v)
 class KeywordReader
 {
 public:
-  explicit KeywordReader(const std::filesystem::path& path) : _tokens(path), _path(path.string()) {}
+  KeywordReader(const std::filesystem::path& path, const DeckOutline& outline) : _tokens(path), _path(path.string())
+  {
+    _data.coordinates.resize(outline.nodes, 3);
+    _data.node_labels.reserve(outline.nodes);
+    _data.cells.reserve(outline.elements);
+    _data.element_labels.reserve(outline.elements);
+  }
 
   DeckData run()
   {
@@ -308,10 +314,12 @@ private:
       if (!_data.node_index.insert(label, index))
         fail_at(line.at(0), "node " + std::to_string(label) + " is defined twice");
       _data.node_labels.push_back(label);
-      for (size_t k = 1; k <= 3; ++k)
-        _data.coordinates.push_back(k < line.fields.size() && !line.fields[k].empty()
-                                        ? real(line, k, "coordinate")
-                                        : 0.0);
+      if (index >= _data.coordinates.rows()) // more nodes than the outline counted
+        _data.coordinates.conservativeResize(2 * static_cast<Eigen::Index>(index) + 1024, 3);
+      for (int k = 1; k <= 3; ++k)
+        _data.coordinates(index, k - 1) = static_cast<size_t>(k) < line.fields.size() && !line.fields[k].empty()
+                                              ? real(line, k, "coordinate")
+                                              : 0.0;
       if (set)
         set->push_back(index);
     }
@@ -885,5 +893,8 @@ int32_t LabelIndex::find(int64_t label) const
   return it == _sparse.end() ? -1 : it->second;
 }
 
-DeckData read_deck_data(const std::filesystem::path& path) { return KeywordReader(path).run(); }
+DeckData read_deck_data(const std::filesystem::path& path, const DeckOutline& outline)
+{
+  return KeywordReader(path, outline).run();
+}
 } // namespace feticon::io

@@ -82,15 +82,25 @@ private:
       _d.warn(std::to_string(n_read - count) + " nodes of the deck belong to no element; supports on them are "
               "not used");
     mesh::HexMesh& mesh = _p.mesh;
-    mesh.nodes.resize(count, 3);
-    _deck.node_labels.resize(count);
+    // The label tables are done with: free them before the mesh arrays are formed.
+    _d.node_index = {};
+    _d.element_index = {};
+    // Nodes in reading order, compacted in place (m <= n), so no second node array is held.
     for (int32_t n = 0; n < n_read; ++n)
-      if (const int32_t m = _mesh_node[n]; m >= 0)
-      {
-        mesh.nodes.row(m) = Eigen::RowVector3d(_d.coordinates[3 * n], _d.coordinates[3 * n + 1], _d.coordinates[3 * n + 2]);
-        _deck.node_labels[m] = _d.node_labels[n];
-      }
-    _d.coordinates = {};
+      if (const int32_t m = _mesh_node[n]; m >= 0 && m != n)
+        _d.coordinates.row(m) = _d.coordinates.row(n);
+    if (_d.coordinates.rows() != count)
+      _d.coordinates.conservativeResize(count, 3);
+    mesh.nodes = std::move(_d.coordinates);
+    if (count == n_read) // mesh numbering is reading numbering: read_label() takes the moved labels
+      _deck.node_labels = std::move(_d.node_labels);
+    else
+    {
+      _deck.node_labels.resize(count);
+      for (int32_t n = 0; n < n_read; ++n)
+        if (const int32_t m = _mesh_node[n]; m >= 0)
+          _deck.node_labels[m] = _d.node_labels[n];
+    }
     mesh.cells = std::move(_d.cells);
     for (size_t c = 0; c < mesh.cells.size(); ++c)
     {
@@ -103,10 +113,16 @@ private:
     _deck.element_labels = std::move(_d.element_labels);
   }
 
+  /// The deck label of a node in reading order.
+  int64_t read_label(int32_t read_node) const
+  {
+    return _d.node_labels.empty() ? _deck.node_labels[read_node] : _d.node_labels[read_node];
+  }
+
   int32_t mesh_node(int32_t read_node, const std::string& what) const
   {
     const int32_t m = _mesh_node[read_node];
-    FETICON_CHECK(m >= 0, what << " names node " << _d.node_labels[read_node] << ", which belongs to no element");
+    FETICON_CHECK(m >= 0, what << " names node " << read_label(read_node) << ", which belongs to no element");
     return m;
   }
 
@@ -382,7 +398,7 @@ private:
         std::set_symmetric_difference(dofs.begin(), dofs.end(), first_dofs.begin(), first_dofs.end(),
                                       std::back_inserter(differ));
         FETICON_CHECK(false, name << " prescribes other degrees of freedom than step 1 (node "
-                                  << _d.node_labels[differ[0] / 3] << ", degree of freedom " << differ[0] % 3 + 1
+                                  << read_label(static_cast<int32_t>(differ[0] / 3)) << ", degree of freedom " << differ[0] % 3 + 1
                                   << "); feticon keeps the supports of the first step and lets later steps change "
                                   << "their values only");
       }
@@ -423,7 +439,7 @@ private:
 
 Deck read_deck(const std::filesystem::path& path)
 {
-  DeckData data = read_deck_data(path);
+  DeckData data = read_deck_data(path, deck_outline(path));
   Deck deck;
   deck.info.path = path;
   deck.info.steps = data.steps;
