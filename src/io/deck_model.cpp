@@ -22,6 +22,26 @@ namespace
 /// S5 = 3-7-8-4, S6 = 4-8-5-1), so that the face comes out oriented outward.
 constexpr std::array<int, 7> hex_face_of_calculix = {-1, 0, 1, 2, 5, 3, 4};
 
+/// The first corner of a hex8 cell where the trilinear map's Jacobian (the triple product of
+/// the three edges there, in the reference directions) is below 1e-10 of the centre's `centre`
+/// (8 x volume), or -1. The centre test alone passes a cell with a repeated node.
+int first_degenerate_corner(const mesh::HexMesh& mesh, const mesh::Cell& cell, double centre)
+{
+  static constexpr int sign[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                     {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+  for (int a = 0; a < 8; ++a)
+  {
+    Eigen::Matrix3d edges;
+    for (int d = 0; d < 3; ++d)
+      for (int b = 0; b < 8; ++b)
+        if (b != a && sign[b][(d + 1) % 3] == sign[a][(d + 1) % 3] && sign[b][(d + 2) % 3] == sign[a][(d + 2) % 3])
+          edges.col(d) = sign[a][d] * (mesh.nodes.row(cell[a]) - mesh.nodes.row(cell[b])).transpose();
+    if (!(edges.determinant() > 1e-10 * centre / 8))
+      return a;
+  }
+  return -1;
+}
+
 mesh::Face face_nodes(const mesh::Cell& cell, int calculix_face)
 {
   const auto& local = mesh::hex_faces[hex_face_of_calculix[calculix_face]];
@@ -101,6 +121,7 @@ private:
         if (const int32_t m = _mesh_node[n]; m >= 0)
           _deck.node_labels[m] = _d.node_labels[n];
     }
+    const std::vector<mesh::Cell> cell_read_nodes = _d.cells; // for messages naming read nodes
     mesh.cells = std::move(_d.cells);
     for (size_t c = 0; c < mesh.cells.size(); ++c)
     {
@@ -109,6 +130,10 @@ private:
       const double det = mesh::centre_jacobian_determinant(mesh, mesh.cells[c]);
       FETICON_CHECK(det > 0, "element " << _d.element_labels[c] << " is inverted or degenerate (Jacobian "
                                         << det << " at its centre): its nodes are not in C3D8 order");
+      const int corner = first_degenerate_corner(mesh, mesh.cells[c], det);
+      FETICON_CHECK(corner < 0, "element " << _d.element_labels[c] << " is degenerate at its node "
+                                           << read_label(cell_read_nodes[c][corner]) << " (a repeated node, "
+                                           << "or edges there that span no volume): a collapsed C3D8 is not implemented");
     }
     _deck.element_labels = std::move(_d.element_labels);
   }

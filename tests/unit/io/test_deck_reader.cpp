@@ -294,6 +294,8 @@ TEST(DeckReader, MalformedDecksEndInOneLineNamingFileAndLine)
       {"2, 11, 12, 13, 14, 15, 16, 17, 18", "2, 11, 12, 13, 14, 15, 16, 17, 99",
        "two_cubes.inp:25:32: *ELEMENT: node 99 is not defined"},
       {"2, 11, 12, 13, 14, 15, 16, 17, 18", "2, 11, 12, 13, 14, 15, 16, 17", "has 7 nodes, not 8"},
+      {"2, 11, 12, 13, 14, 15, 16, 17, 18", "2, 11, 12, 13, 14, 15, 16, 17, 17",
+       "element 2 is degenerate at its node 17"},
       {"TYPE=C3D8, ELSET=lower", "TYPE=C3D10, ELSET=lower", "two_cubes.inp:21: *ELEMENT: element type C3D10 is not implemented"},
       {"upper_bottom, lower_top", "lower_top, lower_top", "slave and master are the same surface 'LOWER_TOP'"},
       {"lower, s2", "nothere, s2", "two_cubes.inp:42:1: *SURFACE: no element set 'NOTHERE'"},
