@@ -121,7 +121,6 @@ private:
         if (const int32_t m = _mesh_node[n]; m >= 0)
           _deck.node_labels[m] = _d.node_labels[n];
     }
-    const std::vector<mesh::Cell> cell_read_nodes = _d.cells; // for messages naming read nodes
     mesh.cells = std::move(_d.cells);
     for (size_t c = 0; c < mesh.cells.size(); ++c)
     {
@@ -132,7 +131,7 @@ private:
                                         << det << " at its centre): its nodes are not in C3D8 order");
       const int corner = first_degenerate_corner(mesh, mesh.cells[c], det);
       FETICON_CHECK(corner < 0, "element " << _d.element_labels[c] << " is degenerate at its node "
-                                           << read_label(cell_read_nodes[c][corner]) << " (a repeated node, "
+                                           << _deck.node_labels[mesh.cells[c][corner]] << " (a repeated node, "
                                            << "or edges there that span no volume): a collapsed C3D8 is not implemented");
     }
     _deck.element_labels = std::move(_d.element_labels);
