@@ -1,5 +1,6 @@
 #include "decomposition/explicit_boundary_operators.hpp"
 
+#include "common/error.hpp"
 #include "common/parallel.hpp"
 #include "la/schur_complement.hpp"
 #include "la/symmetric_product.hpp"
@@ -60,7 +61,14 @@ la::Vector form_blocks(const la::SparseMatrix& K, const GeneralizedInverse& K_pl
 
   la::Matrix S = S_ext.topLeftCorner(nb, nb);
   if (ng > 0) // eliminate the fixing DOFs outside b
-    S -= S_ext.topRightCorner(nb, ng) * S_ext.bottomRightCorner(ng, ng).llt().solve(S_ext.bottomLeftCorner(ng, nb));
+  {
+    // S'_gg is positive definite for a subdomain fixed by these DOFs; a status other than
+    // success is a singular or non-finite subdomain, named here (the implicit path throws too).
+    const Eigen::LLT<la::Matrix> S_gg(S_ext.bottomRightCorner(ng, ng));
+    FETICON_CHECK(S_gg.info() == Eigen::Success, "the Schur complement S'_gg of the fixing DOFs of " << what
+                                                     << " is not positive definite (a singular or non-finite subdomain)");
+    S -= S_ext.topRightCorner(nb, ng) * S_gg.solve(S_ext.bottomLeftCorner(ng, nb));
+  }
 
   blocks = K_plus_bb.triangularView<Eigen::Lower>();
   blocks.triangularView<Eigen::StrictlyUpper>() = S;
