@@ -15,6 +15,23 @@ namespace feticon::decomposition
 namespace
 {
 /// Cells sharing a face (4 common nodes) with each cell: CSR adjacency.
+/// True if the graph (CSR) is connected: a breadth-first search from vertex 0 reaches all.
+bool face_graph_connected(const std::vector<idx_t>& xadj, const std::vector<idx_t>& adjncy)
+{
+  const size_t n = xadj.size() - 1;
+  std::vector<char> seen(n, 0);
+  std::vector<idx_t> queue{0};
+  seen[0] = 1;
+  for (size_t head = 0; head < queue.size(); ++head)
+    for (idx_t k = xadj[queue[head]]; k < xadj[queue[head] + 1]; ++k)
+      if (!seen[adjncy[k]])
+      {
+        seen[adjncy[k]] = 1;
+        queue.push_back(adjncy[k]);
+      }
+  return queue.size() == n;
+}
+
 void cell_face_graph(const mesh::HexMesh& mesh, std::vector<idx_t>& xadj,
                      std::vector<idx_t>& adjncy)
 {
@@ -239,7 +256,11 @@ Partition partition_metis(const mesh::HexMesh& mesh, int n_subdomains)
     std::vector<idx_t> part(cells.size());
     idx_t options[METIS_NOPTIONS];
     METIS_SetDefaultOptions(options);
-    options[METIS_OPTION_CONTIG] = 1; // connected parts: 6 rigid modes each
+    // Connected parts (6 rigid modes each) where the body's face graph is connected; a body
+    // whose cells touch only at edges or nodes somewhere is one body to feticon but not to the
+    // face graph, and METIS refuses CONTIG there (printing its own message): split_disconnected
+    // below makes such parts connected.
+    options[METIS_OPTION_CONTIG] = face_graph_connected(sub_xadj, sub_adjncy) ? 1 : 0;
     options[METIS_OPTION_SEED] = 1;   // reproducible partitions
     const int status = METIS_PartGraphKway(&nvtxs, &ncon, sub_xadj.data(), sub_adjncy.data(),
                                            nullptr, nullptr, nullptr, &nparts, nullptr, nullptr,
