@@ -5,6 +5,7 @@
 # Usage: bad_inputs.sh FETICON SOURCE_DIR
 set -uo pipefail
 feticon="$1"
+src_dir="$2"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -120,6 +121,17 @@ expect "body free to fly away" "rigid-body motion\|free to move" -- "$(variant '
 expect "index out of range" "index" -- "$(variant 's/x/x/' plain)" --set loads.5.traction=[0,0,1]
 expect "mesh too coarse for the subdomains" "subdomains" -- "$(variant 's/x/x/' plain2)" --set subdomains=500
 expect "QP iteration limit" "converge\|iteration" -- --set qp.max_iterations=3 --set hertz.refinement=0.5
+
+# Input decks (CalculiX's contactenergy.inp mutated): each a line naming file, line and keyword.
+deck_variant() { sed "$1" "$src_dir/tests/data/calculix/contactenergy.inp" > "$work/$2.inp"; echo "$work/$2.inp"; }
+expect "deck missing" "does not exist" -- "$work/absent.inp"
+expect "deck with friction" "FRICTION" -- "$(deck_variant 's/^\*SURFACE BEHAVIOR.*/&\n*FRICTION\n0.3/' friction)"
+expect "deck element type" "C3D10" -- "$(deck_variant 's/TYPE=C3D8/TYPE=C3D10/I' c3d10)"
+expect "deck face S7" "S7" -- "$(deck_variant '0,/, *S[1-6]/s//, S7/' s7)"
+expect "deck absent node" "not defined" -- "$(deck_variant 's/^ *1, *1, *2,/1, 1, 999,/' absent_node)"
+expect "deck without step" "STEP" -- "$(deck_variant '/^\*STEP/,$d' nostep)"
+printf '*INCLUDE, INPUT=loop.inp\n' > "$work/loop.inp"
+expect "deck circular include" "circular" -- "$work/loop.inp"
 
 # Gmsh meshes: a missing file, a truncated file, a mesh without the named groups.
 gmsh_problem() { # MESH NAME
