@@ -86,7 +86,7 @@ fem::Problem build_problem(const io::ProblemFile& file, io::DeckInfo* deck)
 {
   if (!file.deck.empty())
   {
-    io::Deck read = io::read_deck(file.deck);
+    io::Deck read = io::read_deck(file.deck, file.deck_outline);
     if (deck)
       *deck = std::move(read.info);
     return std::move(read.problem);

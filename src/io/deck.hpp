@@ -92,4 +92,7 @@ struct DeckOutline
   std::string contact_formulation = "mortar";
 };
 DeckOutline deck_outline(const std::filesystem::path& path);
+
+/// read_deck with the outline already scanned (the problem file keeps it: one scan a run).
+Deck read_deck(const std::filesystem::path& path, const DeckOutline& outline);
 } // namespace feticon::io

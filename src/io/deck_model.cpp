@@ -461,9 +461,11 @@ private:
 };
 } // namespace
 
-Deck read_deck(const std::filesystem::path& path)
+Deck read_deck(const std::filesystem::path& path) { return read_deck(path, deck_outline(path)); }
+
+Deck read_deck(const std::filesystem::path& path, const DeckOutline& outline)
 {
-  DeckData data = read_deck_data(path, deck_outline(path));
+  DeckData data = read_deck_data(path, outline);
   Deck deck;
   deck.info.path = path;
   deck.info.steps = data.steps;

@@ -232,7 +232,8 @@ namespace
 /// The settings a deck implies, below the overrides: `feticon run model.inp`.
 void settings_of_deck(ProblemFile& file, const std::filesystem::path& path)
 {
-  const DeckOutline outline = deck_outline(path);
+  file.deck_outline = deck_outline(path);
+  const DeckOutline& outline = file.deck_outline;
   file.deck = std::filesystem::absolute(path);
   // The model's whole description is the deck; the tree names it, so problem.yaml reruns it.
   file.root["problem"] = "custom";
@@ -335,6 +336,7 @@ ProblemFile load_problem_file(const std::filesystem::path& path,
       file.root["mesh"]["file"].IsScalar() && is_deck_file(file.root["mesh"]["file"].Scalar()))
   {
     file.deck = std::filesystem::absolute(file.folder / file.root["mesh"]["file"].Scalar());
+    file.deck_outline = deck_outline(file.deck);
     for (const char* section : {"bodies", "plane_strain", "supports", "loads", "contact"})
       FETICON_CHECK(!file.root[section], file.source << ": section '" << section << "' is not read when mesh.file is "
                                                      << "an input deck: the deck gives the whole model");
@@ -366,7 +368,7 @@ CustomMeshSize custom_mesh_size(const ProblemFile& file)
     std::error_code ec;
     if (is_deck_file(path))
     {
-      size.nodes = deck_outline(path).nodes;
+      size.nodes = file.deck_outline.nodes;
       size.plane_strain = false; // known once read; the estimate takes three components
       return size;
     }
@@ -396,7 +398,7 @@ fem::Problem build_custom_problem(const ProblemFile& file)
   FETICON_CHECK(root["mesh"], file.source << ": problem: custom needs a 'mesh' section (file: or boxes:)");
   r.only_keys(root["mesh"], "mesh", {"file", "boxes"});
   if (!file.deck.empty())
-    return read_deck(file.deck).problem;
+    return read_deck(file.deck, file.deck_outline).problem;
   fem::Problem p;
   p.name = "custom";
   if (root["mesh"]["file"])

@@ -38,6 +38,7 @@ struct ProblemFile
   /// The input deck that gives the model (`feticon run model.inp`, or mesh.file: model.inp),
   /// empty if none.
   std::filesystem::path deck;
+  DeckOutline deck_outline; ///< of `deck`, scanned once when the file is loaded
 };
 
 /// True for the file names of input decks: `.inp` in any case.
