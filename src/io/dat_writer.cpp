@@ -15,7 +15,6 @@ using Kind = DeckOutputRequest::Kind;
 using Totals = DeckOutputRequest::Totals;
 
 /// The I10 field of node and element labels.
-constexpr int64_t largest_label = 9'999'999'999;
 
 /// Integration point j of CalculiX's C3D8 (gauss3d2 in gauss.f: xi fastest, then eta, zeta)
 /// as an index into fem::hex8_gauss_points() (VTK corner order: 0 (-,-,-) 1 (+,-,-) 2 (+,+,-)
@@ -24,21 +23,6 @@ constexpr std::array<int, 8> feticon_point_of_calculix = {0, 1, 3, 2, 4, 5, 7, 6
 
 /// CalculiX prints tensors as xx yy zz xy xz yz; feticon's arrays hold xx yy zz xy yz zx.
 constexpr std::array<int, 6> feticon_component_of_calculix = {0, 1, 2, 3, 5, 4};
-
-void check_labels(const std::vector<int64_t>& labels, int64_t n, const char* what,
-                  const std::filesystem::path& path)
-{
-  if (labels.empty())
-    return;
-  FETICON_CHECK(static_cast<int64_t>(labels.size()) == n,
-                "dat '" << path.string() << "': " << labels.size() << " " << what
-                        << " labels for " << n << " " << what << "s; pass one per " << what
-                        << " or none (1..n)");
-  for (const int64_t label : labels)
-    FETICON_CHECK(label >= 1 && label <= largest_label,
-                  "dat '" << path.string() << "': " << what << " label " << label
-                          << " does not fit the I10 field [1, " << largest_label << "]");
-}
 
 void check_members(const std::vector<int32_t>& ids, int32_t n, const std::string& what,
                    const std::filesystem::path& path)
@@ -54,11 +38,6 @@ void check_size(std::span<const double> values, std::size_t expected, const char
   FETICON_CHECK(values.empty() || values.size() == expected,
                 "dat '" << path.string() << "': " << name << " has " << values.size()
                         << " values, expected " << expected);
-}
-
-int64_t label_of(const std::vector<int64_t>& labels, int32_t index)
-{
-  return labels.empty() ? int64_t{index} + 1 : labels[static_cast<std::size_t>(index)];
 }
 
 /// Blank line, " <what> for set <set> and time <E14.7>", blank line (printout.f formats 100-107).
@@ -104,8 +83,8 @@ DatWriter::DatWriter(const std::filesystem::path& path, DatModel model)
   FETICON_CHECK(_model.n_nodes >= 0 && _model.n_cells >= 0,
                 "dat '" << path.string() << "': negative mesh size " << _model.n_nodes << " nodes, "
                         << _model.n_cells << " cells");
-  check_labels(_model.node_labels, _model.n_nodes, "node", path);
-  check_labels(_model.element_labels, _model.n_cells, "element", path);
+  check_labels(_model.node_labels, _model.n_nodes, "node", "dat", path);
+  check_labels(_model.element_labels, _model.n_cells, "element", "dat", path);
   for (const auto& [name, ids] : _model.node_sets)
     check_members(ids, _model.n_nodes, "node set " + name, path);
   for (const auto& [name, ids] : _model.element_sets)
@@ -149,7 +128,7 @@ const std::vector<int32_t>& DatWriter::sorted_set(bool nodes, const std::string&
     }
     members = found->second;
   }
-  const std::vector<int64_t>& labels = nodes ? _model.node_labels : _model.element_labels;
+  const Labels& labels = nodes ? _model.node_labels : _model.element_labels;
   std::sort(members.begin(), members.end(),
             [&](int32_t a, int32_t b) { return label_of(labels, a) < label_of(labels, b); });
   members.erase(std::unique(members.begin(), members.end()), members.end());

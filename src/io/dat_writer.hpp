@@ -34,6 +34,7 @@
 
 #include "io/deck.hpp"
 #include "io/fixed_width.hpp"
+#include "io/result_labels.hpp"
 
 #include <cstdint>
 #include <cstdio>
@@ -51,8 +52,8 @@ struct DatModel
 {
   int32_t n_nodes = 0;
   int32_t n_cells = 0;
-  std::vector<int64_t> node_labels;    ///< deck number of every mesh node; empty: 1..n_nodes
-  std::vector<int64_t> element_labels; ///< deck number of every mesh cell; empty: 1..n_cells
+  Labels node_labels;    ///< deck number of every mesh node; empty: 1..n_nodes
+  Labels element_labels; ///< deck number of every mesh cell; empty: 1..n_cells
   /// Node sets by deck name (upper case), mesh node indices.
   std::map<std::string, std::vector<int32_t>> node_sets;
   /// Element sets by deck name (upper case), mesh cell indices.

@@ -10,6 +10,7 @@
 /// `warnings`.
 
 #include "fem/problem.hpp"
+#include "io/result_labels.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -59,8 +60,8 @@ struct DeckStep
 struct DeckInfo
 {
   std::vector<DeckStep> steps;
-  std::vector<int64_t> node_labels;    ///< deck number of every mesh node
-  std::vector<int64_t> element_labels; ///< deck number of every mesh cell
+  Labels node_labels;    ///< deck number of every mesh node
+  Labels element_labels; ///< deck number of every mesh cell
   /// Element sets by deck name (mesh cell indices, sorted).
   std::map<std::string, std::vector<int32_t>> element_sets;
   /// What the deck says that feticon reads but does not honour exactly, one line each.

@@ -8,6 +8,7 @@
 #include "io/deck_tokenizer.hpp"
 #include "mesh/hex_mesh.hpp"
 
+#include <algorithm>
 #include <deque>
 #include <map>
 #include <set>
@@ -17,20 +18,87 @@
 
 namespace feticon::io
 {
-/// Deck label -> index in reading order: a dense table while the labels are compact (the
-/// usual 1..n), a hash map otherwise.
+/// Deck label -> index in reading order. No table at all while every label is its index + 1
+/// (the numbering of most decks); then a dense table while the labels are compact, and a hash
+/// map for labels far beyond the count.
 class LabelIndex
 {
 public:
   /// Registers `label` as index `index`; false if the label is known already.
   bool insert(int64_t label, int32_t index);
+  /// Makes room for `labels` labels numbered from 1 (the outline's count).
+  void reserve(int64_t labels);
   /// The index of `label`, or -1.
   int32_t find(int64_t label) const;
 
 private:
+  /// Labels 1.._identity are indices 0.._identity-1 (no table), until the first label that
+  /// breaks the rule; -1 after that.
+  int64_t _identity = 0;
+  int64_t _reserve = 0; ///< the outline's count, for the dense table once it is needed
   std::vector<int32_t> _dense; ///< index + 1 by label, 0 if absent
   int64_t _count = 0;
   std::unordered_map<int64_t, int32_t> _sparse;
+};
+
+/// A node or element set while reading: runs of consecutive indices in the order given. The
+/// sets *NODE, NSET= and *ELEMENT, ELSET= and GENERATE build are a single run however large,
+/// so the reader holds them in a few bytes, not 4 bytes a member.
+class IndexRuns
+{
+public:
+  void push_back(int32_t index)
+  {
+    if (!_runs.empty() && _runs.back().last + 1 == index)
+      ++_runs.back().last;
+    else
+      _runs.push_back({index, index});
+    ++_size;
+  }
+  void append(const std::vector<int32_t>& indices)
+  {
+    for (const int32_t i : indices)
+      push_back(i);
+  }
+  int64_t size() const { return _size; }
+  template <class F> void for_each(F&& f) const
+  {
+    for (const Run& run : _runs)
+      for (int32_t i = run.first;; ++i)
+      {
+        f(i);
+        if (i == run.last)
+          break;
+      }
+  }
+  std::vector<int32_t> expand() const
+  {
+    std::vector<int32_t> out;
+    out.reserve(static_cast<size_t>(_size));
+    for_each([&](int32_t i) { out.push_back(i); });
+    return out;
+  }
+  /// Sorts and drops repeats once the set holds more than twice the entities there are: a set
+  /// that names itself ("*NSET, NSET=A" / "A, A") doubles with each line, and a few lines
+  /// would take all memory. The model sorts and unifies every set anyway.
+  void compact(size_t n_entities)
+  {
+    if (static_cast<size_t>(_size) <= 2 * n_entities + 1024)
+      return;
+    std::vector<int32_t> members = expand();
+    std::sort(members.begin(), members.end());
+    members.erase(std::unique(members.begin(), members.end()), members.end());
+    *this = {};
+    append(members);
+  }
+
+private:
+  struct Run
+  {
+    int32_t first, last;
+  };
+  std::vector<Run> _runs;
+  int64_t _size = 0;
 };
 
 /// A face of an element surface: cell index and CalculiX face number 1..6.
@@ -72,17 +140,17 @@ struct DeckLoadState
 
 struct DeckData
 {
-  std::vector<int64_t> node_labels;
+  Labels node_labels;
   /// Rows 0 .. node_labels.size() hold x, y, z per node; sized from the outline's count, so
   /// that it becomes the mesh's node array without a copy when every node is used.
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> coordinates;
   LabelIndex node_index;
-  std::vector<int64_t> element_labels;
+  Labels element_labels;
   std::vector<mesh::Cell> cells; ///< node indices, VTK hex order (= CalculiX C3D8 order)
   LabelIndex element_index;
 
-  std::map<std::string, std::vector<int32_t>> node_sets;    ///< node indices, may repeat
-  std::map<std::string, std::vector<int32_t>> element_sets; ///< cell indices, may repeat
+  std::map<std::string, IndexRuns> node_sets;    ///< node indices, may repeat
+  std::map<std::string, IndexRuns> element_sets; ///< cell indices, may repeat
   std::map<std::string, DeckSurface> surfaces;
   std::map<std::string, fem::Material> materials;
   std::vector<DeckSection> sections;

@@ -17,6 +17,8 @@ namespace
 {
 /// Labels up to this beyond twice the count so far go into the dense table (4 bytes each).
 constexpr int64_t dense_label_slack = int64_t{1} << 20;
+/// Node and element numbers are 32-bit, as in CalculiX (io/result_labels.hpp).
+constexpr int64_t largest_label = std::numeric_limits<int32_t>::max();
 
 /// Keywords that change nothing a static elastic contact run computes: read, reported.
 const std::map<std::string, std::string> inert_keywords = {
@@ -115,6 +117,8 @@ public:
     _data.node_labels.reserve(outline.nodes);
     _data.cells.reserve(outline.elements);
     _data.element_labels.reserve(outline.elements);
+    _data.node_index.reserve(outline.nodes);
+    _data.element_index.reserve(outline.elements);
   }
 
   DeckData run()
@@ -219,7 +223,7 @@ private:
       if (it == sets.end())
         fail_at(line.at(i), std::string(is_node ? "no node set '" : "no element set '") + name_of(line.fields[i]) +
                                 "' is defined");
-      return it->second;
+      return it->second.expand();
     }
     return {entity(line, i, is_node)};
   }
@@ -297,15 +301,15 @@ private:
     known_parameters({"NSET", "SYSTEM"});
     if (_keyword.has("SYSTEM"))
       throw Error(where() + ": SYSTEM= (local coordinates) is not implemented by feticon");
-    std::vector<int32_t>* set = nullptr;
+    IndexRuns* set = nullptr;
     if (_keyword.has("NSET"))
       set = &_data.node_sets[required("NSET")];
     DeckDataLine line;
     while (_tokens.next_data(line))
     {
       const int64_t label = integer(line, 0, "node number");
-      if (label <= 0)
-        fail_at(line.at(0), "node number " + std::to_string(label) + " must be positive");
+      if (label <= 0 || label > largest_label)
+        fail_at(line.at(0), "node number " + std::to_string(label) + " is outside 1.." + std::to_string(largest_label));
       if (line.fields.size() > 4)
         fail_at(line.at(4), "a node line has at most a number and three coordinates");
       const int32_t index = static_cast<int32_t>(_data.node_labels.size());
@@ -313,7 +317,7 @@ private:
         fail_at(line.where, "more nodes than feticon's 32-bit node indices hold");
       if (!_data.node_index.insert(label, index))
         fail_at(line.at(0), "node " + std::to_string(label) + " is defined twice");
-      _data.node_labels.push_back(label);
+      _data.node_labels.push_back(static_cast<int32_t>(label));
       if (index >= _data.coordinates.rows()) // more nodes than the outline counted
         _data.coordinates.conservativeResize(2 * static_cast<Eigen::Index>(index) + 1024, 3);
       for (int k = 1; k <= 3; ++k)
@@ -335,7 +339,7 @@ private:
                                                   : std::string(", without incompatible modes: stiffer in bending)")));
     else if (type != "C3D8")
       throw Error(where() + ": element type " + type + " is not implemented by feticon (C3D8, C3D8R, C3D8I)");
-    std::vector<int32_t>* set = _keyword.has("ELSET") ? &_data.element_sets[required("ELSET")] : nullptr;
+    IndexRuns* set = _keyword.has("ELSET") ? &_data.element_sets[required("ELSET")] : nullptr;
     DeckDataLine line;
     std::vector<int32_t> nodes_of_element;
     int64_t label = 0;
@@ -346,8 +350,9 @@ private:
       if (nodes_of_element.empty() && label == 0)
       {
         label = integer(line, 0, "element number");
-        if (label <= 0)
-          fail_at(line.at(0), "element number " + std::to_string(label) + " must be positive");
+        if (label <= 0 || label > largest_label)
+          fail_at(line.at(0), "element number " + std::to_string(label) + " is outside 1.." +
+                                  std::to_string(largest_label));
         start = line.where;
         first = 1;
       }
@@ -370,7 +375,7 @@ private:
       mesh::Cell cell;
       std::copy(nodes_of_element.begin(), nodes_of_element.end(), cell.begin());
       _data.cells.push_back(cell);
-      _data.element_labels.push_back(label);
+      _data.element_labels.push_back(static_cast<int32_t>(label));
       if (set)
         set->push_back(index);
       nodes_of_element.clear();
@@ -387,7 +392,7 @@ private:
     known_parameters({nodes_kind ? "NSET" : "ELSET", "GENERATE"});
     const std::string name = required(nodes_kind ? "NSET" : "ELSET");
     auto& sets = nodes_kind ? _data.node_sets : _data.element_sets;
-    std::vector<int32_t> listed;
+    IndexRuns listed;
     const size_t n_entities = nodes_kind ? _data.node_labels.size() : _data.cells.size();
     DeckDataLine line;
     const bool generate = _keyword.has("GENERATE");
@@ -409,32 +414,20 @@ private:
           if (last - label < step) // the next label would pass `last` (or overflow int64)
             break;
         }
-        compact(listed, n_entities);
+        listed.compact(n_entities);
         continue;
       }
       for (size_t k = 0; k < line.fields.size(); ++k)
       {
         if (line.fields[k].empty())
           continue;
-        const std::vector<int32_t> more = members(line, k, nodes_kind);
-        listed.insert(listed.end(), more.begin(), more.end());
-        compact(listed, n_entities);
+        listed.append(members(line, k, nodes_kind));
+        listed.compact(n_entities);
       }
     }
-    auto& set = sets[name];
-    set.insert(set.end(), listed.begin(), listed.end());
-    compact(set, n_entities);
-  }
-
-  /// Sorts a set and drops its repeats once it holds more than twice the entities there are:
-  /// a set that names itself ("*NSET, NSET=A" / "A, A") doubles with each block, and a few
-  /// lines would take all memory. The model sorts and unifies every set anyway.
-  static void compact(std::vector<int32_t>& set, size_t n_entities)
-  {
-    if (set.size() <= 2 * n_entities + 1024)
-      return;
-    std::sort(set.begin(), set.end());
-    set.erase(std::unique(set.begin(), set.end()), set.end());
+    IndexRuns& set = sets[name];
+    set.append(listed.expand());
+    set.compact(n_entities);
   }
 
   void surface()
@@ -869,13 +862,35 @@ private:
 
 bool LabelIndex::insert(int64_t label, int32_t index)
 {
+  if (_identity >= 0 && label == _identity + 1 && index == _identity)
+  {
+    ++_identity;
+    ++_count;
+    return true;
+  }
   if (find(label) >= 0)
     return false;
+  if (_identity >= 0) // the first label off the rule: the labels so far go to the dense table
+  {
+    // Sized once for the outline's count where it fits, so that the usual numbering 1..n is
+    // not regrown (a regrowth holds the old and the new table at once).
+    if (_reserve > 0 && _reserve < largest_label)
+      _dense.reserve(static_cast<size_t>(_reserve) + 1);
+    _dense.resize(static_cast<size_t>(_identity) + 1, 0);
+    for (int64_t l = 1; l <= _identity; ++l)
+      _dense[l] = static_cast<int32_t>(l);
+    _identity = -1;
+  }
   ++_count;
   if (label >= 0 && label < 2 * _count + dense_label_slack)
   {
     if (static_cast<size_t>(label) >= _dense.size())
-      _dense.resize(std::max<size_t>(static_cast<size_t>(label) + 1, _dense.size() * 3 / 2), 0);
+    {
+      size_t size = std::max<size_t>(static_cast<size_t>(label) + 1, _dense.size() * 3 / 2);
+      if (static_cast<size_t>(label) < _dense.capacity()) // within the reserved table: stay there
+        size = std::min(size, _dense.capacity());
+      _dense.resize(size, 0);
+    }
     _dense[label] = index + 1;
     return true;
   }
@@ -883,8 +898,15 @@ bool LabelIndex::insert(int64_t label, int32_t index)
   return true;
 }
 
+void LabelIndex::reserve(int64_t labels)
+{
+  _reserve = labels;
+}
+
 int32_t LabelIndex::find(int64_t label) const
 {
+  if (_identity >= 0)
+    return label >= 1 && label <= _identity ? static_cast<int32_t>(label - 1) : -1;
   if (label >= 0 && static_cast<size_t>(label) < _dense.size() && _dense[label] != 0)
     return _dense[label] - 1;
   if (_sparse.empty())

@@ -135,6 +135,8 @@ private:
                                            << "or edges there that span no volume): a collapsed C3D8 is not implemented");
     }
     _deck.element_labels = std::move(_d.element_labels);
+    if (count == n_read)
+      _mesh_node = std::vector<int32_t>(); // the identity: mesh_of() needs no table (and "= {}" would keep the capacity)
   }
 
   /// The deck label of a node in reading order.
@@ -143,9 +145,12 @@ private:
     return _d.node_labels.empty() ? _deck.node_labels[read_node] : _d.node_labels[read_node];
   }
 
+  /// The mesh node of a node in reading order, -1 if no element uses it.
+  int32_t mesh_of(int32_t read_node) const { return _mesh_node.empty() ? read_node : _mesh_node[read_node]; }
+
   int32_t mesh_node(int32_t read_node, const std::string& what) const
   {
-    const int32_t m = _mesh_node[read_node];
+    const int32_t m = mesh_of(read_node);
     FETICON_CHECK(m >= 0, what << " names node " << read_label(read_node) << ", which belongs to no element");
     return m;
   }
@@ -158,8 +163,10 @@ private:
       for (int k = 1; k < 8; ++k)
         components.join(cell[0], cell[k]);
 
-    // The material of every cell from the sections.
-    std::vector<int32_t> section_of_cell(mesh.n_cells(), -1);
+    // The section of every cell, held in cell_body until the bodies replace it below (one
+    // array of a million cells fewer at the peak of reading).
+    std::vector<int32_t>& section_of_cell = mesh.cell_body;
+    section_of_cell.assign(mesh.n_cells(), -1);
     for (size_t s = 0; s < _d.sections.size(); ++s)
     {
       const DeckSection& section = _d.sections[s];
@@ -171,34 +178,33 @@ private:
                                                                         << section.material << "' is defined");
       FETICON_CHECK(material->second.young > 0, section.where.str() << ": *SOLID SECTION: material '"
                                                                     << section.material << "' has no *ELASTIC");
-      for (int32_t c : set->second)
+      set->second.for_each([&](int32_t c)
       {
         FETICON_CHECK(section_of_cell[c] < 0 || section_of_cell[c] == static_cast<int32_t>(s),
                       section.where.str() << ": *SOLID SECTION: element " << _deck.element_labels[c]
                                           << " has a section already (" << _d.sections[section_of_cell[c]].where.str() << ")");
         section_of_cell[c] = static_cast<int32_t>(s);
-      }
+      });
     }
 
     std::unordered_map<int32_t, int32_t> body_of_root;
-    mesh.cell_body.resize(mesh.n_cells());
     std::vector<int32_t> body_section;
     for (int32_t c = 0; c < mesh.n_cells(); ++c)
     {
-      FETICON_CHECK(section_of_cell[c] >= 0, "element " << _deck.element_labels[c]
-                                                        << " has no *SOLID SECTION (no material)");
+      const int32_t section = section_of_cell[c];
+      FETICON_CHECK(section >= 0, "element " << _deck.element_labels[c] << " has no *SOLID SECTION (no material)");
       const auto [it, added] = body_of_root.emplace(components.find(mesh.cells[c][0]), static_cast<int32_t>(body_section.size()));
       if (added)
-        body_section.push_back(section_of_cell[c]);
+        body_section.push_back(section);
       const int32_t body = it->second;
-      mesh.cell_body[c] = body;
-      const DeckSection& mine = _d.sections[section_of_cell[c]];
+      mesh.cell_body[c] = body; // section_of_cell[c] is read above, not after
+      const DeckSection& mine = _d.sections[section];
       const DeckSection& first = _d.sections[body_section[body]];
       FETICON_CHECK(mine.material == first.material,
                     "element " << _deck.element_labels[c] << " (material " << mine.material << ") shares nodes with "
                                << "elements of material " << first.material << "; feticon takes one material per "
                                << "body (a connected set of elements)");
-      if (body_section[body] != section_of_cell[c])
+      if (body_section[body] != section)
         body_section[body] = -1 - body_section[body]; // the body spans several sections
     }
     // Names: the section's element set where one section makes the body, else BODY<k>.
@@ -221,10 +227,12 @@ private:
     for (auto& [name, members] : _d.node_sets)
     {
       std::vector<int32_t> nodes;
-      nodes.reserve(members.size());
-      for (int32_t n : members)
-        if (_mesh_node[n] >= 0)
-          nodes.push_back(_mesh_node[n]);
+      nodes.reserve(static_cast<size_t>(members.size()));
+      members.for_each([&](int32_t n)
+      {
+        if (mesh_of(n) >= 0)
+          nodes.push_back(mesh_of(n));
+      });
       std::sort(nodes.begin(), nodes.end());
       nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
       members = {};
@@ -232,9 +240,11 @@ private:
     }
     for (auto& [name, members] : _d.element_sets)
     {
-      std::sort(members.begin(), members.end());
-      members.erase(std::unique(members.begin(), members.end()), members.end());
-      _deck.element_sets[name] = std::move(members);
+      std::vector<int32_t> cells = members.expand();
+      members = {};
+      std::sort(cells.begin(), cells.end());
+      cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+      _deck.element_sets[name] = std::move(cells);
     }
     for (const auto& [name, surface] : _d.surfaces)
     {
@@ -257,8 +267,8 @@ private:
     const mesh::HexMesh& mesh = _p.mesh;
     std::vector<char> in_surface(mesh.n_nodes(), 0);
     for (int32_t n : surface.nodes)
-      if (_mesh_node[n] >= 0)
-        in_surface[_mesh_node[n]] = 1;
+      if (mesh_of(n) >= 0)
+        in_surface[mesh_of(n)] = 1;
     std::map<std::array<int32_t, 4>, std::pair<mesh::Face, int>> candidates;
     for (const mesh::Cell& cell : mesh.cells)
       for (const auto& local : mesh::hex_faces)
@@ -339,7 +349,7 @@ private:
     std::map<int32_t, std::array<std::optional<double>, 3>> by_node;
     for (const auto& [dof, value] : boundary)
     {
-      const int32_t m = _mesh_node[dof / 3];
+      const int32_t m = mesh_of(dof / 3);
       if (m < 0 || _p.eliminated[dof % 3])
         continue;
       by_node[m][dof % 3] = value;
@@ -390,9 +400,9 @@ private:
       int32_t fixed = 0;
       std::vector<char> seen(_p.mesh.n_nodes(), 0);
       for (const auto& [dof, value] : state.boundary)
-        if (dof % 3 == 2 && value == 0 && _mesh_node[dof / 3] >= 0 && !seen[_mesh_node[dof / 3]])
+        if (dof % 3 == 2 && value == 0 && mesh_of(dof / 3) >= 0 && !seen[mesh_of(dof / 3)])
         {
-          seen[_mesh_node[dof / 3]] = 1;
+          seen[mesh_of(dof / 3)] = 1;
           ++fixed;
         }
       if (fixed != _p.mesh.n_nodes())
@@ -412,7 +422,7 @@ private:
       const std::string name = step_name(_deck.steps[k], k);
       std::vector<int64_t> dofs;
       for (const auto& [dof, value] : state.boundary)
-        if (_mesh_node[dof / 3] >= 0 && !_p.eliminated[dof % 3])
+        if (mesh_of(dof / 3) >= 0 && !_p.eliminated[dof % 3])
           dofs.push_back(dof);
       if (k == 0)
         first_dofs = dofs;
@@ -456,7 +466,9 @@ private:
   DeckData& _d;
   DeckInfo& _deck;
   fem::Problem& _p;
-  std::vector<int32_t> _mesh_node; ///< mesh node of every node read, -1 if no element uses it
+  /// Mesh node of every node read, -1 if no element uses it; empty when every node is used
+  /// (mesh numbering = reading numbering).
+  std::vector<int32_t> _mesh_node;
   std::set<std::string> _restricted_surfaces; ///< node surfaces with a slave_nodes_NAME set
 };
 } // namespace

@@ -12,30 +12,8 @@ namespace feticon::io
 namespace
 {
 /// The I10 field of node and element labels.
-constexpr int64_t largest_label = 9'999'999'999;
-
 /// frd element type of the 8-node brick (C3D8).
 constexpr int frd_hex8 = 1;
-
-void check_labels(const std::vector<int64_t>& labels, int64_t n, const char* what,
-                  const std::filesystem::path& path)
-{
-  if (labels.empty())
-    return;
-  FETICON_CHECK(static_cast<int64_t>(labels.size()) == n,
-                "frd '" << path.string() << "': " << labels.size() << " " << what
-                        << " labels for " << n << " " << what << "s; pass one per " << what
-                        << " or none (1..n)");
-  for (const int64_t label : labels)
-    FETICON_CHECK(label >= 1 && label <= largest_label,
-                  "frd '" << path.string() << "': " << what << " label " << label
-                          << " does not fit the I10 field [1, " << largest_label << "]");
-}
-
-int64_t label_of(const std::vector<int64_t>& labels, int64_t index)
-{
-  return labels.empty() ? index + 1 : labels[static_cast<std::size_t>(index)];
-}
 
 /// A "    1U" record: keyword from column 6, value from column 24, 72 characters.
 void append_user_record(std::string& out, const std::string& keyword, const std::string& value)
@@ -143,12 +121,11 @@ FrdFields frd_fields(const std::vector<DeckOutputRequest>& outputs, std::vector<
 }
 
 FrdWriter::FrdWriter(const std::filesystem::path& path, const mesh::HexMesh& mesh,
-                     const std::vector<int64_t>& node_labels,
-                     const std::vector<int64_t>& element_labels)
+                     const Labels& node_labels, const Labels& element_labels)
     : _path(path), _node_labels(node_labels), _n_nodes(mesh.n_nodes())
 {
-  check_labels(node_labels, mesh.n_nodes(), "node", path);
-  check_labels(element_labels, mesh.n_cells(), "element", path);
+  check_labels(node_labels, mesh.n_nodes(), "node", "frd", path);
+  check_labels(element_labels, mesh.n_cells(), "element", "frd", path);
   FETICON_CHECK(mesh.cell_body.empty() || mesh.cell_body.size() == mesh.cells.size(),
                 "frd '" << path.string() << "': mesh has " << mesh.cells.size() << " cells but "
                         << mesh.cell_body.size() << " body indices");

@@ -33,6 +33,7 @@
 
 #include "io/deck.hpp"
 #include "io/fixed_width.hpp"
+#include "io/result_labels.hpp"
 #include "mesh/hex_mesh.hpp"
 
 #include <cstdint>
@@ -90,8 +91,7 @@ public:
   /// @throws feticon::Error if a label vector has the wrong size, a label is outside
   ///   [1, 9999999999] (the I10 field), or the file cannot be written.
   FrdWriter(const std::filesystem::path& path, const mesh::HexMesh& mesh,
-            const std::vector<int64_t>& node_labels = {},
-            const std::vector<int64_t>& element_labels = {});
+            const Labels& node_labels = {}, const Labels& element_labels = {});
   FrdWriter(const FrdWriter&) = delete;
   FrdWriter& operator=(const FrdWriter&) = delete;
 
@@ -114,7 +114,7 @@ private:
 
   std::filesystem::path _path;
   CFile _file;
-  std::vector<int64_t> _node_labels; ///< empty: 1..n
+  Labels _node_labels; ///< empty: 1..n
   int32_t _n_nodes = 0;
   int32_t _n_steps = 0;
   int32_t _n_blocks = 0;      ///< ccx's "icounter" in 1PSTEP

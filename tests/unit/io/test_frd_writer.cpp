@@ -193,7 +193,9 @@ TEST(FrdWriter, ReproducesWhatCcxWrites)
   mesh.body_names = {"EL"}; // ccx's material 1 of the deck
 
   const fs::path path = fresh_directory("frd_reproduces_ccx") / "two_blocks.frd";
-  FrdWriter writer(path, mesh, reference.node_labels, reference.element_labels);
+  const io::Labels node_labels(reference.node_labels.begin(), reference.node_labels.end());
+  const io::Labels element_labels(reference.element_labels.begin(), reference.element_labels.end());
+  FrdWriter writer(path, mesh, node_labels, element_labels);
   const int n = mesh.n_nodes();
   int kode = 0;
   for (std::size_t b = 0; b < reference.blocks.size();)
@@ -298,17 +300,19 @@ TEST(FrdWriter, WritesKnownValuesStepByStep)
   // Reference: the values set here; the parser reads them back by fixed columns. %12.5E of a
   // float-rounded value keeps 6 significant digits: relative error <= 5e-6 + 6e-8.
   const mesh::HexMesh mesh = two_cells();
-  std::vector<int64_t> node_labels(12), element_labels = {70, 9};
+  io::Labels node_labels(12), element_labels = {70, 9};
   for (int i = 0; i < 12; ++i)
     node_labels[i] = 1000 + 10 * i;
+  const std::vector<int64_t> node_labels_read(node_labels.begin(), node_labels.end());
+  const std::vector<int64_t> element_labels_read(element_labels.begin(), element_labels.end());
   const fs::path path = fresh_directory("frd_known_values") / "out" / "known.frd";
   FrdWriter writer(path, mesh, node_labels, element_labels);
 
   const Frd empty = parse_frd(read_lines(path));
   EXPECT_TRUE(empty.closed);
   EXPECT_TRUE(empty.blocks.empty());
-  EXPECT_EQ(empty.node_labels, node_labels);
-  EXPECT_EQ(empty.element_labels, element_labels);
+  EXPECT_EQ(empty.node_labels, node_labels_read);
+  EXPECT_EQ(empty.element_labels, element_labels_read);
   EXPECT_EQ(empty.element_type_group_material[0], (std::array<int, 3>{1, 0, 1})); // C3D8, body 0
   EXPECT_EQ(empty.element_type_group_material[1], (std::array<int, 3>{1, 0, 2}));
   EXPECT_EQ(empty.element_nodes[1][0], 1010);
@@ -349,7 +353,7 @@ TEST(FrdWriter, WritesKnownValuesStepByStep)
       EXPECT_EQ(block.step, deck_steps[s]);
       EXPECT_EQ(block.increment, s == 2 ? 1 : s + 1); // counted within each deck step
       EXPECT_EQ(block.n_nodes, 12);
-      EXPECT_EQ(block.labels, node_labels);
+      EXPECT_EQ(block.labels, node_labels_read);
     }
     // frdheader.c: fixed point with 10 significant digits for 1 <= t < 1e10, else %12.5E.
     EXPECT_EQ(frd.blocks[3 * s].time_field,
@@ -375,12 +379,12 @@ TEST(FrdWriter, WritesKnownValuesStepByStep)
 
 TEST(FrdWriter, RejectsWrongSizesAndLabels)
 {
-  // Reference: the sizes the header documents (n x 3, n x 6, n; labels in I10).
+  // Reference: the sizes the header documents (n x 3, n x 6, n; positive labels).
   const mesh::HexMesh mesh = two_cells();
   const fs::path directory = fresh_directory("frd_rejects");
-  EXPECT_THROW(FrdWriter(directory / "a.frd", mesh, std::vector<int64_t>(11, 1)), Error);
+  EXPECT_THROW(FrdWriter(directory / "a.frd", mesh, io::Labels(11, 1)), Error);
   EXPECT_THROW(FrdWriter(directory / "b.frd", mesh, {}, {1, 0}), Error);
-  EXPECT_THROW(FrdWriter(directory / "c.frd", mesh, {}, {1, 10'000'000'000}), Error);
+  EXPECT_THROW(FrdWriter(directory / "c.frd", mesh, {}, {1, -3}), Error);
   FrdWriter writer(directory / "d.frd", mesh);
   const std::vector<double> short_field(35);
   FrdStep step;
@@ -433,7 +437,7 @@ TEST(FrdWriter, CgxReadsTheFile)
   if (!on_path("cgx"))
     GTEST_SKIP() << "cgx is not installed (Debian: calculix-cgx)";
   const mesh::HexMesh mesh = two_cells();
-  std::vector<int64_t> node_labels(12);
+  io::Labels node_labels(12);
   for (int i = 0; i < 12; ++i)
     node_labels[i] = 1000 + 10 * i;
   const fs::path directory = fresh_directory("frd_cgx");
