@@ -52,13 +52,15 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
                 "feticon bench measures the FETI methods; set method=smalbe or dual_penalty");
   TimerTable timers;
   const MeshPrediction predicted = predict_mesh(file);
-  guard_memory(file.settings, predicted.nodes, predicted.plane_strain, "problem " + file.settings.text("problem"));
+  const MemoryEstimate estimate =
+      guard_memory(file.settings, predicted.nodes, predicted.plane_strain, "problem " + file.settings.text("problem"));
   std::unique_ptr<fem::Problem> problem;
   {
     ScopedTimer t(timers, "mesh");
     problem = std::make_unique<fem::Problem>(build_problem(file));
   }
-  const nonlinear::SolverSettings solver = solver_settings(file.settings, *problem);
+  nonlinear::SolverSettings solver = solver_settings(file.settings, *problem);
+  solver.explicit_block_budget = estimate.explicit_block_budget;
   const nonlinear::ContactSolution solution = nonlinear::solve_feti_contact(*problem, solver, timers);
   const long peak_contact = peak_memory_bytes();
 
@@ -70,6 +72,7 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   out["dual_operator"] = solution.dual_operator; // implicit or explicit, after dual.operator = auto
   out["explicit_operator_bytes"] = solution.explicit_operator_bytes;
   out["converged"] = solution.converged;
+  out["completed"] = solution.completed;
   if (!solution.converged)
     out["reason"] = solution.reason;
   out["degrees_of_freedom"] = 3 * static_cast<int64_t>(problem->mesh.n_nodes());
@@ -101,7 +104,7 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
       qp_seconds / std::max(iterations, 1) / (per_application + per_preconditioner);
   out["peak_memory_bytes"] = peak_contact;
   out["total_normal_force"] = nonlinear::total_normal_force(solution);
-  if (!options.direct || !solution.converged)
+  if (!options.direct || !solution.completed)
     return out;
 
   const nonlinear::BondedSolve direct =

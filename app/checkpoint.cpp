@@ -37,7 +37,7 @@ nlohmann::json records(const nonlinear::ContactSolution& s)
   nlohmann::json steps = nlohmann::json::array(), history = nlohmann::json::array();
   for (const auto& st : s.steps)
     steps.push_back({st.load_factor, st.outer_iterations, st.converged, st.displacement_change,
-                     st.residual_norm, st.inner_iterations});
+                     st.residual_norm, st.inner_iterations, st.floor});
   for (const auto& it : s.history)
     history.push_back({it.load_step, it.iteration, it.qp.iterations, it.qp.cg_steps, it.qp.expansion_steps,
                        it.qp.proportioning_steps, it.qp.hessian_multiplications, it.qp.outer_iterations,
@@ -66,6 +66,7 @@ void write_checkpoint(const std::filesystem::path& path, const nonlinear::Contac
     // Last, so that checkpoints written before it existed still read (their runs continue
     // with a cold SMALBE-M start).
     write_block(os, r.smalbe_coarse_multiplier.data(), r.smalbe_coarse_multiplier.size());
+    write_block(os, r.schur_boundary.data(), static_cast<int64_t>(r.schur_boundary.size())); // likewise
   });
 }
 
@@ -98,8 +99,19 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
     r.pfp_norm = json.value("pfp_norm", 0.0);
     solution.steps.clear();
     for (const auto& st : json.at("steps"))
-      solution.steps.push_back({st[0].get<double>(), st[1].get<int>(), st[2].get<bool>(),
-                                st[3].get<double>(), st[4].get<double>(), st[5].get<std::vector<int>>()});
+    {
+      nonlinear::LoadStep step;
+      step.load_factor = st[0].get<double>();
+      step.outer_iterations = st[1].get<int>();
+      step.converged = st[2].get<bool>();
+      step.displacement_change = st[3].get<double>();
+      step.residual_norm = st[4].get<double>();
+      step.inner_iterations = st[5].get<std::vector<int>>();
+      step.floor = st.size() > 6 ? st[6].get<std::string>() : std::string();
+      if (!step.floor.empty()) // the run's warnings name the steps that ended at a floor
+        solution.warnings.push_back(nonlinear::floor_warning(static_cast<int>(solution.steps.size()) + 1, step));
+      solution.steps.push_back(std::move(step));
+    }
     solution.history.clear();
     for (const auto& h : json.at("history"))
     {
@@ -149,6 +161,8 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
     const auto beta = read_block<double>(is, path);
     r.smalbe_coarse_multiplier = Eigen::Map<const la::Vector>(beta.data(), static_cast<la::Index>(beta.size()));
   }
+  if (is.peek() != std::char_traits<char>::eof())
+    r.schur_boundary = read_block<int32_t>(is, path);
   FETICON_CHECK(r.completed_steps >= 1 && r.u_stacked.allFinite(),
                 path.string() << ": the checkpoint holds no converged step");
 }

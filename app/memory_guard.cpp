@@ -1,13 +1,15 @@
 #include "app/memory_guard.hpp"
 
+#include "common/available_memory.hpp"
 #include "common/error.hpp"
 #include "common/parallel.hpp"
-#include "common/timer.hpp"
+#include "nonlinear/feti_contact_solver.hpp"
 #include "par/communicator.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace feticon::app
 {
@@ -15,7 +17,9 @@ namespace
 {
 constexpr double MiB = 1024.0 * 1024.0, GiB = 1024.0 * MiB;
 
-/// The process with MPI, Gmsh, CHOLMOD and BLAS loaded, before any mesh (measured: 55-65 MiB).
+/// The process with MPI, Gmsh, CHOLMOD and BLAS loaded, before any mesh (measured: 55-66 MiB;
+/// 12-23 MiB without Gmsh, which only a mesh made or read by Gmsh loads). Once the mesh is
+/// built, the guard uses what the process holds instead.
 constexpr double process_bytes = 64 * MiB;
 
 std::string gib(double bytes)
@@ -24,39 +28,60 @@ std::string gib(double bytes)
   std::snprintf(text, sizeof text, bytes < GiB ? "%.0f MiB" : "%.1f GiB", bytes < GiB ? bytes / MiB : bytes / GiB);
   return text;
 }
+
+/// Bytes per DOF of the data without explicit blocks (see estimate_run_memory) for subdomains
+/// of `per_subdomain` DOFs.
+double bytes_per_dof(double per_subdomain, bool plane_strain, bool interior_factors)
+{
+  // Fitted to the peaks of docs/benchmarks.md ("The memory guard's estimate", issue 36) less
+  // what the process held once its mesh was built; the factor of a subdomain grows like
+  // n log n (2D) and n^(4/3) (3D). Measured: plane strain 1.1-1.6 KB at 1.5k-3.8k DOFs per
+  // subdomain (the most with large displacements); 3D with the K_ii factors 6.8 / 7.1 / 8.3 KB
+  // at 4.2k / 4.9k / 12k. The 0.73 for the factor part without K_ii was fitted on hertz3d with
+  // the lumped preconditioner (97k and 924k DOFs, issue 21).
+  const double factors = interior_factors ? 1.0 : 0.73;
+  return plane_strain ? 850 + 70 * std::log2(std::max(2.0, per_subdomain)) * factors
+                      : 1100 + 315 * std::cbrt(per_subdomain) * factors;
+}
 } // namespace
 
 MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdomains, int ranks,
-                                   bool explicit_blocks, bool interior_factors)
+                                   bool explicit_blocks, bool interior_factors, double process)
 {
+  if (process <= 0)
+    process = process_bytes;
   MemoryEstimate out;
   out.nodes = nodes;
   out.subdomains = std::max(1, subdomains);
   ranks = std::max(1, ranks);
   const double dofs = 3.0 * static_cast<double>(nodes);
   const double per_subdomain = dofs / out.subdomains;
-  // Bytes per DOF fitted to the peaks of docs/benchmarks.md (without the explicit blocks);
-  // the factor of a subdomain grows like n log n (2D) and n^(4/3) (3D). Plane strain 1.3-2.3 KB
-  // at 1.5k-4k DOFs per subdomain; 3D with the K_ii factors 4.7 / 7.8 / 8.7 KB at 1.5k / 12k /
-  // 14k, without them (lumped) 3.8 / 4.1 / 4.7 KB at 1.8k / 2.4k / 3.6k (hertz3d, 97k and 924k DOFs).
-  // The 0.73 for the factor part without K_ii is that 3D fit; plane strain uses it unmeasured.
-  const double factors = interior_factors ? 1.0 : 0.73;
-  const double per_dof = plane_strain ? 1200 + 100 * std::log2(std::max(2.0, per_subdomain)) * factors
-                                      : 1000 + 315 * std::cbrt(per_subdomain) * factors;
-  double data = dofs * per_dof;
+  double data = dofs * bytes_per_dof(per_subdomain, plane_strain, interior_factors);
+  double rank_data = data / ranks;
   if (explicit_blocks)
   {
     // One dense b x b array per subdomain (K+ and S in its two triangles), b its boundary
-    // DOFs: fitted b = 6.5 sqrt(n) in plane strain, 5.8 n^(2/3) in 3D (Hertz, sphere, tensor deck).
-    const double b = plane_strain ? 6.5 * std::sqrt(per_subdomain) : 5.8 * std::pow(per_subdomain, 2.0 / 3.0);
-    const double block = 8.0 * std::min(b, per_subdomain) * std::min(b, per_subdomain);
-    // Forming one holds about four more such arrays (la::schur_complement's result, the
-    // matrix it inverts, the two blocks) on each thread forming them.
-    data += (out.subdomains + 4.0 * std::min(threads(), out.subdomains)) * block;
+    // DOFs: b = 5.2 sqrt(n) in plane strain (Hertz: 4.6-5.3; flat punch 6.5), 6.0 n^(2/3) in
+    // 3D (hertz3d 6.3, sphere on block 3.9); the busiest rank holds ceil(subdomains / ranks)
+    // of them, and forms them on its threads.
+    const double b = std::min(per_subdomain, plane_strain ? 5.2 * std::sqrt(per_subdomain)
+                                                          : 6.0 * std::pow(per_subdomain, 2.0 / 3.0));
+    const int owned = (out.subdomains + ranks - 1) / ranks;
+    const double block = 8.0 * b * b;
+    data += out.subdomains * block;
+    rank_data += owned * block + nonlinear::explicit_forming_bytes(std::vector<double>(owned, b), threads());
   }
-  out.bytes = ranks * process_bytes + data;
-  out.per_rank = process_bytes + data / ranks;
+  out.bytes = ranks * process + data;
+  out.per_rank = process + rank_data;
   return out;
+}
+
+MemoryEstimate estimate_primal_penalty_memory(int64_t nodes, bool plane_strain, double process)
+{
+  // The undecomposed matrix in one factor: the model of one subdomain, counted with the
+  // factor part of the K_ii factors' runs (the penalized and the reduced matrix beside K and
+  // the factor; measured 2.6 KB per DOF on Hertz at 19k DOFs, 11.4 KB on hertz3d at 39k).
+  return estimate_run_memory(nodes, plane_strain, 1, 1, false, true, process);
 }
 
 MemoryEstimate estimate_mesh_memory(int64_t nodes)
@@ -87,38 +112,62 @@ MemoryBudget memory_budget(double limit)
   const int ranks = par::Communicator::world().size();
   if (limit > 0)
     return {limit / ranks, "memory_limit"};
-  return {static_cast<double>(available_memory_bytes()) / par::ranks_on_this_node(), "MemAvailable"};
+  const AvailableMemory available = available_memory();
+  if (available.bytes < 0)
+    return {-1, available.source};
+  return {static_cast<double>(available.bytes) / par::ranks_on_this_node(), available.source};
 }
 
 void check_fits(const MemoryEstimate& estimate, const MemoryBudget& budget, const std::string& what)
 {
-  // MemAvailable unknown (0: no /proc/meminfo): nothing to check against.
-  if (budget.per_rank <= 0 || estimate.per_rank <= budget.per_rank)
+  // Available memory unknown (no /proc/meminfo, no cgroup limit): nothing to check against.
+  if (budget.per_rank < 0 || estimate.per_rank <= budget.per_rank)
     return;
-  const bool shared = budget.source == "MemAvailable" && par::ranks_on_this_node() > 1;
+  const bool shared = budget.source != "memory_limit" && par::ranks_on_this_node() > 1;
+  const bool cgroup = budget.source.rfind("the cgroup", 0) == 0;
   const std::string size = estimate.nodes > 0 ? " (estimate for " + std::to_string(3 * estimate.nodes) + " DOFs in " +
                                                      std::to_string(estimate.subdomains) + " subdomains)"
                                                : std::string();
-  FETICON_CHECK(false, what << " needs about " << gib(estimate.bytes) << size << ", more than the "
-                            << gib(budget.per_rank * par::Communicator::world().size()) << " available ("
-                            << budget.source << (shared ? " shared by the ranks of a node" : "")
-                            << (estimate.nodes > 0 ? "); coarsen the mesh, or set memory_limit (bytes) if more is free"
-                                                   : "); a smaller problem, or a machine with more memory"));
+  const std::string fix = estimate.nodes == 0 ? "a smaller problem, or a machine with more memory"
+                          : cgroup            ? "coarsen the mesh, or raise the cgroup's memory limit"
+                                              : "coarsen the mesh, or set memory_limit (bytes) if more is free";
+  FETICON_CHECK(false, what << " needs about " << gib(estimate.per_rank * par::Communicator::world().size()) << size
+                            << ", more than the " << gib(budget.per_rank * par::Communicator::world().size())
+                            << " available (" << budget.source << (cgroup ? " less its usage" : "")
+                            << (shared ? ", shared by the ranks of a node" : "") << "); " << fix);
 }
 
-MemoryEstimate guard_memory(const io::Settings& settings, int64_t nodes, bool plane_strain, const std::string& what)
+MemoryEstimate guard_memory(const io::Settings& settings, int64_t nodes, bool plane_strain, const std::string& what,
+                            double resident)
 {
+  const MemoryBudget budget = memory_budget(settings);
+  if (settings.text("method") == "primal_penalty")
+  {
+    const MemoryEstimate estimate = estimate_primal_penalty_memory(nodes, plane_strain, resident);
+    check_fits(estimate, budget, what);
+    return estimate;
+  }
   const int ranks = par::Communicator::world().size();
   int subdomains = settings.integer("subdomains");
   const int cells_per_subdomain = settings.integer("subdomain_cells");
   if (cells_per_subdomain > 0) // about as many cells as nodes (half in a plane-strain layer)
     subdomains = static_cast<int>(std::max<int64_t>(1, (plane_strain ? nodes / 2 : nodes) / cells_per_subdomain));
-  const bool explicit_blocks = settings.text("dual.operator") == "explicit";
-  // auto decides after the mesh is built: counted with the K_ii factors, the larger case.
-  const bool interior_factors = settings.text("qp.preconditioner") == "dirichlet" && !explicit_blocks;
-  const MemoryEstimate estimate =
-      estimate_run_memory(nodes, plane_strain, subdomains, ranks, explicit_blocks, interior_factors);
-  check_fits(estimate, memory_budget(settings), what);
+  const std::string& mode = settings.text("dual.operator");
+  const bool dirichlet = settings.text("qp.preconditioner") == "dirichlet";
+  const bool explicit_blocks = mode == "explicit";
+  // auto is checked as implicit, with the K_ii factors: the run it can always fall back to.
+  MemoryEstimate estimate = estimate_run_memory(nodes, plane_strain, subdomains, ranks, explicit_blocks,
+                                                dirichlet && !explicit_blocks, resident);
+  check_fits(estimate, budget, what);
+  if (mode == "auto" && dirichlet)
+  {
+    estimate.per_rank_explicit =
+        estimate_run_memory(nodes, plane_strain, subdomains, ranks, true, false, resident).per_rank;
+    // The blocks get what the budget leaves beside an explicit run without them.
+    const MemoryEstimate rest = estimate_run_memory(nodes, plane_strain, subdomains, ranks, false, false, resident);
+    if (budget.per_rank >= 0)
+      estimate.explicit_block_budget = std::max(0.0, budget.per_rank - rest.per_rank);
+  }
   return estimate;
 }
 } // namespace feticon::app

@@ -11,6 +11,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "common/atomic_file.hpp"
+#include "common/available_memory.hpp"
 #include "io/problem_file.hpp"
 #include "io/settings.hpp"
 #include "mesh/mesh_quality.hpp"
@@ -155,9 +156,11 @@ void run(const RunOptions& options)
     ScopedTimer t(timers, "mesh");
     problem = std::make_unique<fem::Problem>(build_problem(file, &deck));
   }
-  const MemoryEstimate memory_estimate =
-      guard_memory(settings, problem->mesh.n_nodes(), problem->eliminated[2], what); // the mesh as made
-  const nonlinear::SolverSettings solver = solver_settings(settings, *problem);
+  // Again for the mesh as made, from what the ranks hold now (with or without Gmsh loaded).
+  const MemoryEstimate memory_estimate = guard_memory(settings, problem->mesh.n_nodes(), problem->eliminated[2], what,
+                                                      comm.max(static_cast<double>(resident_memory_bytes())));
+  nonlinear::SolverSettings solver = solver_settings(settings, *problem);
+  solver.explicit_block_budget = memory_estimate.explicit_block_budget;
   const int64_t n_dofs = 3 * static_cast<int64_t>(problem->mesh.n_nodes());
   log::info("feticon: problem " + problem->name + ", " + std::to_string(problem->mesh.n_cells()) +
             " hex8 cells, " + std::to_string(n_dofs) + " DOFs, method " + settings.text("method") +
@@ -238,6 +241,7 @@ void run(const RunOptions& options)
   summary["method"] = settings.text("method");
   summary["displacements"] = settings.text("displacements");
   summary["converged"] = solution.converged;
+  summary["completed"] = solution.completed; // every load step ran; converged: and met the stopping test
   if (!solution.converged)
     summary["reason"] = solution.reason;
   summary["degrees_of_freedom"] = n_dofs;
@@ -262,7 +266,7 @@ void run(const RunOptions& options)
 
   // Contact figures only of a converged state: the last iterate of a failed solve is no
   // result (the converged load steps are on disk as VTU and in "steps").
-  if (solution.converged && solution.contact_lambda.size() > 0)
+  if (solution.completed && solution.contact_lambda.size() > 0)
   {
     ScopedTimer t(timers, "post-processing");
     // Pressure along the slave surface; the analytic column is filled for Hertz only.
@@ -320,11 +324,13 @@ void run(const RunOptions& options)
   nlohmann::ordered_json warnings = nlohmann::ordered_json::array();
   for (const std::string& w : deck.warnings)
     warnings.push_back("deck: " + w);
+  for (const std::string& w : solution.warnings)
+    warnings.push_back(w);
   if (calculix)
     for (const std::string& w : calculix->warnings())
       warnings.push_back("deck output: " + w);
   const double feasibility_tolerance = settings.number("contact.feasibility_tolerance");
-  if (solution.converged && solver.method == nonlinear::ContactMethod::dual_penalty &&
+  if (solution.completed && solver.method == nonlinear::ContactMethod::dual_penalty &&
       solution.feasibility_error > feasibility_tolerance)
   {
     char line[320];
@@ -360,6 +366,7 @@ void run(const RunOptions& options)
                      {"outer_iterations", s.outer_iterations},
                      {"inner_iterations", s.inner_iterations},
                      {"converged", s.converged},
+                     {"floor", s.floor},
                      {"relative_displacement_change", s.displacement_change},
                      {"residual_norm", s.residual_norm}});
   summary["steps"] = steps;
@@ -372,17 +379,17 @@ void run(const RunOptions& options)
   summary["ranks"] = comm.size();
   const std::vector<int64_t> memory = comm.all_gather(std::vector<int64_t>{static_cast<int64_t>(peak_memory_bytes())});
   summary["peak_memory_bytes"] = *std::max_element(memory.begin(), memory.end());
-  summary["memory_estimate_bytes"] = memory_estimate.per_rank;
+  summary["memory_estimate_bytes"] = memory_estimate.per_rank_for(solution.dual_operator);
   if (!comm.serial())
     summary["peak_memory_bytes_per_rank"] = memory;
   if (writer)
     write_json(out_dir / "summary.json", summary);
 
   log::info(format_summary(summary));
-  if (solution.converged && writer && settings.flag("output.plots"))
+  if (solution.completed && writer && settings.flag("output.plots"))
     plot_results(out_dir);
   log::info("results written to " + out_dir.string());
-  FETICON_CHECK(solution.converged, "the solve did not converge: " << solution.reason
+  FETICON_CHECK(solution.completed, "the solve did not converge: " << solution.reason
                                                                    << " (converged steps are in "
                                                                    << out_dir.string() << ")");
 }
@@ -391,7 +398,7 @@ void run(const RunOptions& options)
 void register_run_command(CLI::App& app)
 {
   auto options = std::make_shared<RunOptions>();
-  CLI::App* cmd = app.add_subcommand("run", "Solve a contact problem (default: the seed's Hertz "
+  CLI::App* cmd = app.add_subcommand("run", "Solve a contact problem (default: Vondrák et al.'s Hertz "
                                             "benchmark) and write a results folder");
   // No CLI11 file check: feticon's own one-line error names a missing file.
   cmd->add_option("problem", options->problem_file,

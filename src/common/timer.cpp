@@ -69,6 +69,4 @@ long proc_bytes(const char* path, const std::string& key)
 } // namespace
 
 long peak_memory_bytes() { return proc_bytes("/proc/self/status", "VmHWM:"); }
-
-long available_memory_bytes() { return proc_bytes("/proc/meminfo", "MemAvailable:"); }
 } // namespace feticon

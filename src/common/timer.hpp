@@ -44,8 +44,4 @@ double seconds_since(std::chrono::steady_clock::time_point start);
 
 /// Peak resident memory of this process in bytes (VmHWM from /proc/self/status).
 long peak_memory_bytes();
-
-/// Memory the kernel can give without swapping, in bytes (MemAvailable of /proc/meminfo; 0 if
-/// unknown).
-long available_memory_bytes();
 } // namespace feticon

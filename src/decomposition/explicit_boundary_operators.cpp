@@ -6,14 +6,31 @@
 #include "la/symmetric_product.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace feticon::decomposition
 {
+la::Matrix eliminate_fixing_dofs(const la::Matrix& S_ext, la::Index nb, const std::string& what)
+{
+  const la::Index ng = S_ext.rows() - nb;
+  la::Matrix S = S_ext.topLeftCorner(nb, nb);
+  if (ng == 0)
+    return S;
+  // S'_gg is positive definite for a subdomain fixed by these DOFs; a status other than
+  // success is a singular or non-finite subdomain, named here (the implicit path throws too).
+  const Eigen::LLT<la::Matrix> S_gg(S_ext.bottomRightCorner(ng, ng));
+  FETICON_CHECK(S_gg.info() == Eigen::Success && S_gg.matrixLLT().allFinite(),
+                "the Schur complement S'_gg of the fixing DOFs of " << what
+                    << " is not positive definite (a singular or non-finite subdomain)");
+  S -= S_ext.topRightCorner(nb, ng) * S_gg.solve(S_ext.bottomLeftCorner(ng, nb));
+  return S;
+}
+
 namespace
 {
-/// The dense blocks of one subdomain (see the header): (K_s+)_bb in the lower triangle and
-/// the diagonal of `blocks`, S_s in its strict upper triangle; returns diag(S_s).
+/// The dense blocks of one subdomain, unscaled: (K_s+)_bb in the lower triangle and the
+/// diagonal of `blocks`, S_s in its strict upper triangle; returns diag(S_s).
 la::Vector form_blocks(const la::SparseMatrix& K, const GeneralizedInverse& K_plus,
                        const std::vector<int32_t>& boundary, la::Matrix& blocks, const std::string& what)
 {
@@ -30,7 +47,6 @@ la::Vector form_blocks(const la::SparseMatrix& K, const GeneralizedInverse& K_pl
       extended.push_back(dof);
     }
   const la::Matrix S_ext = la::schur_complement(K, extended, what.c_str());
-  const la::Index ng = static_cast<la::Index>(extended.size()) - nb;
 
   la::Matrix K_plus_bb = la::Matrix::Zero(nb, nb);
   const std::string inverse_of = "the boundary Schur complement of " + what;
@@ -59,17 +75,7 @@ la::Vector form_blocks(const la::SparseMatrix& K, const GeneralizedInverse& K_pl
     K_plus_bb = M.topLeftCorner(nb, nb);
   }
 
-  la::Matrix S = S_ext.topLeftCorner(nb, nb);
-  if (ng > 0) // eliminate the fixing DOFs outside b
-  {
-    // S'_gg is positive definite for a subdomain fixed by these DOFs; a status other than
-    // success is a singular or non-finite subdomain, named here (the implicit path throws too).
-    const Eigen::LLT<la::Matrix> S_gg(S_ext.bottomRightCorner(ng, ng));
-    FETICON_CHECK(S_gg.info() == Eigen::Success, "the Schur complement S'_gg of the fixing DOFs of " << what
-                                                     << " is not positive definite (a singular or non-finite subdomain)");
-    S -= S_ext.topRightCorner(nb, ng) * S_gg.solve(S_ext.bottomLeftCorner(ng, nb));
-  }
-
+  const la::Matrix S = eliminate_fixing_dofs(S_ext, nb, what);
   blocks = K_plus_bb.triangularView<Eigen::Lower>();
   blocks.triangularView<Eigen::StrictlyUpper>() = S;
   return S.diagonal();
@@ -100,7 +106,12 @@ ExplicitBoundaryOperators::ExplicitBoundaryOperators(const SubdomainSystem& syst
     local.boundary = schur.boundary(s);
     const la::Vector schur_diagonal = form_blocks(system.operators(s).K, system.operators(s).K_plus, local.boundary,
                                                   local.blocks, "subdomain " + std::to_string(s));
-    local.schur_minus_K_plus = schur_diagonal - local.blocks.diagonal();
+    const la::Vector K_plus_diagonal = local.blocks.diagonal();
+    const double K_plus_mean = K_plus_diagonal.mean(), schur_mean = schur_diagonal.mean();
+    local.sigma = K_plus_mean > 0 && schur_mean > 0 ? std::sqrt(schur_mean / K_plus_mean) : 1.0;
+    local.blocks.triangularView<Eigen::Lower>() *= local.sigma;
+    local.blocks.triangularView<Eigen::StrictlyUpper>() /= local.sigma;
+    local.schur_minus_K_plus = schur_diagonal / local.sigma - local.sigma * K_plus_diagonal;
   });
 }
 
@@ -108,7 +119,7 @@ la::Vector ExplicitBoundaryOperators::apply_K_plus(int32_t s, const la::Vector& 
 {
   la::Vector y;
   la::symmetric_product(local(s).blocks, la::Triangle::lower, v, y);
-  return y;
+  return y / local(s).sigma;
 }
 
 la::Vector ExplicitBoundaryOperators::apply_schur(int32_t s, const la::Vector& v) const
@@ -116,7 +127,7 @@ la::Vector ExplicitBoundaryOperators::apply_schur(int32_t s, const la::Vector& v
   la::Vector y;
   la::symmetric_product(local(s).blocks, la::Triangle::upper, v, y);
   y += local(s).schur_minus_K_plus.cwiseProduct(v);
-  return y;
+  return local(s).sigma * y;
 }
 
 int64_t ExplicitBoundaryOperators::bytes() const

@@ -24,11 +24,16 @@
 /// Both blocks are symmetric and share one square array: (K_s+)_bb in the lower triangle and the
 /// diagonal, S_s in the strict upper triangle (its diagonal aside), applied by BLAS dsymv
 /// (la/symmetric_product.hpp), which reads one triangle: half the memory, and the products,
-/// bound by memory traffic, read half as much.
+/// bound by memory traffic, read half as much. The array holds sigma (K_s+)_bb and S_s / sigma,
+/// sigma^2 = mean diag(S_s) / mean diag((K_s+)_bb): K+ scales like 1 / E and S like E, and
+/// unscaled, a modulus far from 1 made the shared diagonal K+'s alone, so that S's diagonal,
+/// restored by adding diag(S) - diag(K+), was lost to cancellation (E = 1e-30 Pa: the
+/// Dirichlet preconditioner was noise and MPRGP stalled; issue 36).
 
 #include "decomposition/schur_complements.hpp"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace feticon::decomposition
@@ -57,8 +62,9 @@ private:
   struct Local
   {
     std::vector<int32_t> boundary;
-    la::Matrix blocks;               ///< (K_s+)_bb in the lower triangle, S_s in the upper
-    la::Vector schur_minus_K_plus;   ///< diag(S_s) - diag((K_s+)_bb)
+    la::Matrix blocks;               ///< sigma (K_s+)_bb in the lower triangle, S_s / sigma in the upper
+    la::Vector schur_minus_K_plus;   ///< diag(S_s) / sigma - sigma diag((K_s+)_bb)
+    double sigma = 1;
   };
   const Local& local(int32_t s) const { return _local[s - _first]; }
 
@@ -66,6 +72,11 @@ private:
   int32_t _formed = 0;
   std::vector<Local> _local; ///< per owned subdomain (index s - first owned)
 };
+
+/// S_s from S' = [S'_bb S'_bg; S'_gb S'_gg], the Schur complement of K_s on its boundary b (the
+/// first nb rows) followed by the fixing DOFs g outside b: S'_bb - S'_bg S'_gg^-1 S'_gb.
+/// Throws a one-line error naming `what` (the subdomain) if S'_gg is not positive definite.
+la::Matrix eliminate_fixing_dofs(const la::Matrix& S_ext, la::Index nb, const std::string& what);
 
 /// Bytes the dense blocks of the owned subdomains would take: |b_s|^2 doubles each.
 int64_t explicit_operator_bytes(const SubdomainSystem& system, const SchurComplements& schur);

@@ -1,6 +1,6 @@
 #pragma once
-/// @file The seed's contact dual: problem (9) solved by MPRGP (dual penalty), or the same
-/// problem with G lambda = e enforced exactly by SMALBE-M (ALGORITHMS.md section 1).
+/// @file The contact dual of Vondrák et al. (DD XVI, 2007): their problem (9) solved by
+/// MPRGP (dual penalty), or the same problem with G lambda = e enforced exactly by SMALBE-M (ALGORITHMS.md section 1).
 ///
 ///   lambda = lambda~ + mu,  lambda~ = [G_E'(G_E G_E')^{-1} e; 0] when the equality rows fix
 ///   every rigid mode, else G'(GG')^{-1} e (minimal norm: the Hertz cylinder is held only by

@@ -55,14 +55,14 @@ void MultiplierMemory::restore(la::Vector equality_by_id, const std::vector<int3
   _smalbe.lambda.resize(0);
 }
 
-std::set<int32_t> MultiplierMemory::active_slave_nodes() const
+std::set<int32_t> MultiplierMemory::active_slave_nodes(double floor) const
 {
   double largest = 0;
   for (const auto& [node, value] : _contact)
     largest = std::max(largest, value);
   std::set<int32_t> active;
   for (const auto& [node, value] : _contact)
-    if (value > 1e-12 * largest)
+    if (value > std::max(1e-12 * largest, floor))
       active.insert(node);
   return active;
 }

@@ -45,8 +45,9 @@ public:
   /// SMALBE-M's state after the last solve.
   const DualWarmStart& smalbe() const { return _smalbe; }
   /// Slave nodes whose contact multiplier is positive, with the dual solver's threshold
-  /// against round-off (1e-12 of the largest).
-  std::set<int32_t> active_slave_nodes() const;
+  /// against round-off (1e-12 of the largest) and above `floor` (a force at round-off: when
+  /// nothing is loaded, the largest multiplier is itself noise).
+  std::set<int32_t> active_slave_nodes(double floor = 0) const;
 
 private:
   la::Vector _owned;            ///< owned multipliers of the last solve (equality rows first)

@@ -111,8 +111,8 @@ std::vector<SettingSpec> make_specs()
        "of its solution estimate the spectrum of the preconditioned dual operator there "
        "and count the steps CG needs there to qp.rtol (summary.json qp.solution_face_spectrum); 0: off", Type::integer, {}, 0, 100000, false},
       {"memory_limit", "0", "memory budget of a run in bytes (e.g. 8e9): a run whose estimated peak "
-       "exceeds it is refused before it allocates; 0: /proc/meminfo's MemAvailable, shared by the ranks "
-       "of a node", Type::number, {}, 0, inf, false},
+       "exceeds it is refused before it allocates; 0: /proc/meminfo's MemAvailable or, if smaller, the room "
+       "under the cgroup's memory limit, shared by the ranks of a node", Type::number, {}, 0, inf, false},
       {"output.vtu", "true", "write VTU/PVD files", Type::boolean, {}, 0, 0, false},
       {"output.plots", "true", "draw contact_pressure.png and iterations.png (Debian's python3-matplotlib)",
        Type::boolean, {}, 0, 0, false},

@@ -32,10 +32,18 @@ struct LoadStep
   double load_factor = 0;
   int outer_iterations = 0;
   bool converged = false;
+  /// Not empty: the step ended at a floor above the residual tolerance (OuterVerdict::floor).
+  std::string floor;
   double displacement_change = 0;
   double residual_norm = 0;
   std::vector<int> inner_iterations;
 };
+
+/// The warning of load step `number` (1-based) that ended at a floor.
+inline std::string floor_warning(int number, const LoadStep& step)
+{
+  return "load step " + std::to_string(number) + " ended above the residual tolerance: " + step.floor;
+}
 
 /// What a run needs to continue after its last converged load step (checkpoint/restart):
 /// the stacked displacement and the multipliers that warm-start the next solve.
@@ -50,6 +58,10 @@ struct RestartState
   la::Vector smalbe_coarse_multiplier;
   double smalbe_M = 0, smalbe_rho = 0;
   double pfp_norm = 0; ///< the last ||PFP|| estimate (dual::DualWarmStart)
+  /// The Dirichlet preconditioner's boundary DOFs (3 node + component) once contact rows made
+  /// it grow (ContactSolution::schur_boundary_widened); empty while it has its initial extent.
+  /// A restart forms its operators on it, as the uninterrupted run has them.
+  std::vector<int32_t> schur_boundary;
 };
 
 struct ContactSolution
@@ -59,8 +71,12 @@ struct ContactSolution
   la::Vector contact_lambda;                 ///< their (row-normalized) multipliers
   std::vector<OuterIteration> history;
   std::vector<LoadStep> steps;
+  /// Every load step ran: u and the multipliers are the run's answer.
+  bool completed = false;
+  /// Completed, and every load step met the outer loop's stopping test.
   bool converged = false;
-  std::string reason;
+  std::string reason; ///< why the run is not converged
+  std::vector<std::string> warnings; ///< steps that ended at a floor, one line each
   // Figures of the last solve:
   int64_t n_dual = 0;
   int64_t n_kernel = 0;
@@ -73,6 +89,7 @@ struct ContactSolution
   /// with, so that it grew by the rows near contact at the current u and the operators of the
   /// subdomains whose boundary changed were formed again (feti_contact_solver.cpp).
   bool schur_boundary_widened = false;
+  int schur_boundary_growths = 0; ///< how often it grew in this run (not counting a restart's restore)
   double penalty = 0; ///< eps_n (N/m) for the primal penalty
   RestartState restart; ///< state after the last converged load step (FETI solver)
   /// Under MPI with more than one rank: the cells of this rank's subdomains (its piece of

@@ -1,8 +1,10 @@
 #include "nonlinear/feti_contact_solver.hpp"
 #include "nonlinear/linear_contact_rows.hpp"
 
+#include "common/available_memory.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
+#include "common/parallel.hpp"
 #include "decomposition/constraint_rows.hpp"
 #include "decomposition/explicit_boundary_operators.hpp"
 #include "decomposition/subdomain_operators.hpp"
@@ -18,6 +20,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <functional>
 #include <set>
 #include <cstdio>
 
@@ -120,9 +123,21 @@ bool covers(const fem::Problem& problem, const std::vector<char>& boundary,
   return all;
 }
 
-/// dual.operator = auto: explicit when the dense blocks fit a quarter of the available
-/// memory (and 4 GiB per rank) and forming them costs less than they save over the steps
-/// the run is expected to take. Costs in flops of the factor substitutions: an implicit step
+/// SolverSettings::explicit_block_budget, or without it a quarter of this rank's share of the
+/// node's available memory; at most 4 GiB per rank.
+double explicit_block_budget(const SolverSettings& settings)
+{
+  constexpr double at_most = 4.0 * (1L << 30);
+  if (settings.explicit_block_budget >= 0)
+    return std::min(settings.explicit_block_budget, at_most);
+  return std::min(0.25 * static_cast<double>(available_memory_bytes()) / par::ranks_on_this_node(), at_most);
+}
+
+/// dual.operator = auto: explicit when the dense blocks fit the memory left to them on every
+/// rank and forming them costs less than they save over the steps the run is expected to
+/// take. Memory: a rank's blocks, the arrays of forming them (explicit_forming_bytes) and
+/// `held` bytes of older blocks alive meanwhile must fit explicit_block_budget on every rank.
+/// Costs in flops of the factor substitutions: an implicit step
 /// applies K_s+ and the K_ii solve of S_s once each, about 4 (nnz(L_s) + nnz(L_ii)) ~
 /// 8 nnz(L_s); an explicit one two dense products of 2 |b_s|^2, which run at 3 times the
 /// flop rate of the substitutions; forming the blocks (one factorization with b_s last and
@@ -140,7 +155,7 @@ bool covers(const fem::Problem& problem, const std::vector<char>& boundary,
 /// five times as many before the outer loop's rows near contact, 1dfc320).
 std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, const decomposition::SubdomainSystem& system,
                                              const decomposition::SchurComplements* schur, int n_load_steps,
-                                             const par::Communicator& comm)
+                                             int64_t held, const par::Communicator& comm)
 {
   if (settings.dual_operator == DualOperatorMode::implicit)
     return {false, "dual.operator = implicit"};
@@ -153,25 +168,33 @@ std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, con
     return {true, "dual.operator = explicit"};
   const auto& decomp = system.decomposition();
   double setup = 0, implicit_step = 0, explicit_step = 0;
+  std::vector<double> boundary_sizes;
   for (int32_t s = decomp.first_owned(); s < decomp.end_owned(); ++s)
   {
     const double nb = static_cast<double>(schur->boundary(s).size());
+    boundary_sizes.push_back(nb);
     const double substitution = 8.0 * static_cast<double>(system.operators(s).K_plus.factor_nonzeros());
     setup += 0.42 * nb * nb * nb;
     implicit_step += substitution;
     explicit_step += 4 * nb * nb / 3;
   }
-  const int64_t bytes = comm.sum(decomposition::explicit_operator_bytes(system, *schur));
-  const double budget = std::min(0.25 * static_cast<double>(available_memory_bytes()), 4.0 * (1L << 30)) * comm.size();
+  // Each rank against its own budget: the ranks of a node share its memory.
+  const int64_t rank_bytes = decomposition::explicit_operator_bytes(system, *schur);
+  const double need = static_cast<double>(rank_bytes + held) + explicit_forming_bytes(boundary_sizes, threads());
+  const double budget = explicit_block_budget(settings);
+  const double worst = comm.max(need - budget);
+  const int64_t bytes = comm.sum(rank_bytes);
   const double steps = 150.0 * n_load_steps;
   setup = static_cast<double>(comm.sum(static_cast<int64_t>(setup)));
   implicit_step = static_cast<double>(comm.sum(static_cast<int64_t>(implicit_step)));
   explicit_step = static_cast<double>(comm.sum(static_cast<int64_t>(explicit_step)));
   char reason[256];
-  if (static_cast<double>(bytes) > budget)
+  if (worst > 0)
   {
-    std::snprintf(reason, sizeof reason, "auto: the dense blocks (%.2g GiB) exceed the memory budget (%.2g GiB)",
-                  static_cast<double>(bytes) / (1L << 30), budget / (1L << 30));
+    std::snprintf(reason, sizeof reason,
+                  "auto: the dense blocks (%.3g MiB) and forming them exceed their memory budget by %.3g MiB on a rank "
+                  "(budget %.3g MiB per rank)",
+                  static_cast<double>(bytes) / (1 << 20), worst / (1 << 20), budget / (1 << 20));
     return {false, reason};
   }
   const bool pays = setup + steps * explicit_step < steps * implicit_step;
@@ -222,7 +245,7 @@ private:
   /// f_int and its assembled norm at the current u.
   void update_internal_force();
   /// max(||f(t_n)||, ||f_int(u)||): the scale of the relative residual (OuterConvergence).
-  double force_scale() const { return std::max(_f_step_norm, _f_int_norm); }
+  double force_scale() const { return std::max({_f_step_norm, _f_int_norm, _force_floor}); }
   /// The QP tolerance of outer iteration k (SolverSettings::forcing).
   double qp_rtol(int k);
   /// Rows of the outer loop only where g < max(g_min, 0) + 0.05 master diagonals
@@ -253,6 +276,10 @@ private:
   std::unique_ptr<decomposition::ExplicitBoundaryOperators> _explicit_operators;
   std::vector<la::Vector> _f_stages_stacked; ///< the external forces at the stages' ends, stacked
   OuterConvergence _convergence;
+  /// A force at round-off: what a round-off displacement (1e-9 L) costs at the stiffest DOF of
+  /// K_0. The residual's scale and the contact set's threshold do not go below it, so that an
+  /// unloaded model, whose loads, forces and multipliers are all round-off, converges.
+  double _force_floor = 0;
   contact::ContactPair _pair;
   contact::ContactOptions _contact_options;
   /// A linear run's rows: the candidates at the reference configuration (found at set-up,
@@ -329,6 +356,11 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
     _f_stages_stacked.push_back(_decomp->scatter_split(_history.stage_end(stage).force));
   const Eigen::Vector3d extent = problem.mesh.nodes.colwise().maxCoeff() - problem.mesh.nodes.colwise().minCoeff();
   _convergence = {settings.displacement_tolerance, settings.residual_tolerance, extent.norm()};
+  double stiffest = 0;
+  for (int32_t s = 0; s < _system->n_subdomains(); ++s)
+    if (_system->operators(s).K.size() > 0)
+      stiffest = std::max(stiffest, _system->operators(s).K.diagonal().cwiseAbs().maxCoeff());
+  _force_floor = _primal_space.max(stiffest) * _convergence.roundoff_displacement();
   // The outer loop rebuilds the rows at every iteration, so rows near contact suffice; a linear
   // run solves once and needs every node within the search distance.
   if (!_linear)
@@ -339,6 +371,9 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
 
 void FetiContactSolve::update_stiffness()
 {
+  // Blocks of the old K are of no use: freed before K is factorized and the new ones are
+  // formed, so that a refresh does not hold two sets at its peak.
+  _explicit_operators.reset();
   _system->update(_u, &_timers);
   update_boundary_operators(false);
 }
@@ -352,10 +387,27 @@ contact::ContactConstraints FetiContactSolve::reach_rows(const la::Vector& u_glo
 
 int FetiContactSolve::update_boundary_operators(bool same_K)
 {
+  // Of the same K (a grown boundary) the unchanged subdomains' blocks are kept, and the others
+  // live until the new ones are formed (counted in the budget); of another K none are left.
+  if (!same_K)
+    _explicit_operators.reset();
   if (!_schur_boundary.empty()) // the boundaries first: the choice below depends on their sizes
     _schur = std::make_unique<decomposition::SchurComplements>(*_system, _schur_boundary, false);
+  int64_t held = 0; // the old blocks of the subdomains to be formed again
+  if (_explicit_operators)
+    for (int32_t s = _decomp->first_owned(); s < _decomp->end_owned(); ++s)
+      if (_explicit_operators->boundary(s) != _schur->boundary(s))
+      {
+        const auto nb = static_cast<int64_t>(_explicit_operators->boundary(s).size());
+        held += static_cast<int64_t>(sizeof(double)) * (nb * nb + nb);
+      }
   const auto [use_explicit, reason] =
-      choose_explicit(_settings, *_system, _schur.get(), _history.n_steps(), _decomp->comm());
+      choose_explicit(_settings, *_system, _schur.get(), _history.n_steps(), held, _decomp->comm());
+  if (!use_explicit)
+  {
+    _explicit_operators.reset();
+    _out.explicit_operator_bytes = 0;
+  }
   if (_schur && !use_explicit)
   {
     ScopedTimer t(_timers, "preconditioner setup"); // K_ii factorizations for the implicit S_s
@@ -394,7 +446,18 @@ int FetiContactSolve::restore(const ContactSolution& previous)
   _u = _decomp->owned_slice(r.u_stacked);
   _multipliers.restore(r.lambda, r.contact_slave, r.contact_lambda,
                        {{}, r.smalbe_coarse_multiplier, r.smalbe_M, r.smalbe_rho, r.pfp_norm});
-  _previous_active = _multipliers.active_slave_nodes();
+  _previous_active = _multipliers.active_slave_nodes(_force_floor);
+  if (!r.schur_boundary.empty() && _schur) // the boundary had grown: its operators as they were
+  {
+    for (const int32_t dof : r.schur_boundary)
+    {
+      FETICON_CHECK(dof >= 0 && static_cast<size_t>(dof) < _schur_boundary.size(),
+                    "restart: the checkpoint's Schur boundary names DOF " << dof << " of " << _schur_boundary.size());
+      _schur_boundary[dof] = 1;
+    }
+    _out.schur_boundary_widened = true;
+    update_boundary_operators(true);
+  }
   _out.history = previous.history;
   _out.steps = previous.steps;
   ScopedTimer t(_timers, "internal forces");
@@ -469,6 +532,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
     for (size_t i = 0; i < grown.size(); ++i)
       _schur_boundary[i] |= grown[i];
     _out.schur_boundary_widened = true;
+    ++_out.schur_boundary_growths;
     const int reformed = update_boundary_operators(true);
     log::info(where + "contact rows beyond the Schur boundary: grown to the rows near contact, " +
               std::to_string(reformed) + " subdomains' operators formed again");
@@ -508,7 +572,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   }
   _u += solution.u;
   const la::Vector contact_lambda = _multipliers.remember(*feti, solution, _n_equality, contact_rows.slave_node);
-  std::set<int32_t> active = _multipliers.active_slave_nodes();
+  std::set<int32_t> active = _multipliers.active_slave_nodes(_force_floor);
 
   it.qp = solution.report;
   it.final_rho = solution.smalbe_rho;
@@ -562,17 +626,28 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   // peak pressure 14 % high). So a step ends only after a QP solved to qp.rtol; if the
   // test passes after a forced one, the next QP, warm-started at the answer, is exact.
   const bool exact_qp = dual_options.rtol <= _settings.dual.rtol;
-  const bool converged =
-      _linear ? !more_rows : _convergence.converged(du_norm, u_norm, du_max, it.residual_norm, active, _previous_active);
+  const OuterVerdict verdict =
+      _linear ? (more_rows ? OuterVerdict::iterate : OuterVerdict::converged)
+              : _convergence.verdict(du_norm, u_norm, du_max, it.residual_norm, active, _previous_active);
   _previous_active = std::move(active);
-  if (converged && !exact_qp)
-    _forcing = false;
-  else if (converged)
+  if (verdict == OuterVerdict::iterate)
+    return IterationOutcome::next();
+  if (!exact_qp) // the step ends only after a QP solved to qp.rtol
   {
-    _equality_by_id = dual::multipliers_by_id(*feti, solution.lambda, 0, _n_equality);
-    return IterationOutcome::step_converged();
+    _forcing = false;
+    return IterationOutcome::next();
   }
-  return IterationOutcome::next();
+  _equality_by_id = dual::multipliers_by_id(*feti, solution.lambda, 0, _n_equality);
+  if (verdict == OuterVerdict::converged)
+    return IterationOutcome::step_converged();
+  char floor[400];
+  std::snprintf(floor, sizeof floor,
+                "residual %.2e > newton.residual_tolerance %.2e with a round-off correction (|du|_inf %.1e m <= "
+                "1e-9 L) and the same contact set, so another iteration repeats this one; the residual left is "
+                "the dual QP's equilibrium error (its feasibility %.1e at qp.rtol %.0e): a smaller qp.rtol or a "
+                "larger residual_tolerance",
+                it.residual_norm, _convergence.residual_tolerance, du_max, solution.feasibility_error, _settings.dual.rtol);
+  return IterationOutcome::step_at_floor(floor);
 }
 
 void FetiContactSolve::end_load_step(const LoadStep& record)
@@ -581,10 +656,15 @@ void FetiContactSolve::end_load_step(const LoadStep& record)
     return; // u is not finite: the solution keeps the last converged step's
   const la::Vector u_stacked_global = _decomp->gather_stacked(_u);
   _out.u = _decomp->gather_mean(u_stacked_global);
-  if (!record.converged)
+  if (!record.converged && record.floor.empty())
     return;
   RestartState& r = _out.restart;
   r.completed_steps = _step;
+  r.schur_boundary.clear();
+  if (_out.schur_boundary_widened)
+    for (size_t i = 0; i < _schur_boundary.size(); ++i)
+      if (_schur_boundary[i])
+        r.schur_boundary.push_back(static_cast<int32_t>(i));
   r.u_stacked = u_stacked_global;
   r.lambda = _equality_by_id;
   const dual::DualWarmStart& smalbe = _multipliers.smalbe();
@@ -602,6 +682,20 @@ void FetiContactSolve::end_load_step(const LoadStep& record)
 }
 } // namespace
 
+double explicit_forming_bytes(std::vector<double> boundary_sizes, int threads)
+{
+  // Arrays of |b_s|^2 doubles held beside the kept blocks while one subdomain is formed, the
+  // partial factor of K_s among them (its size grows as |b_s|^2 does in 3D): fitted to the
+  // peaks of hertz3d at 97k DOFs with explicit operators, 1 rank on 2 threads and 2 ranks on
+  // one thread each (docs/benchmarks.md, "The memory guard's estimate").
+  constexpr double arrays = 3;
+  std::sort(boundary_sizes.begin(), boundary_sizes.end(), std::greater<>());
+  double bytes = 0;
+  for (size_t k = 0; k < boundary_sizes.size() && k < static_cast<size_t>(std::max(1, threads)); ++k)
+    bytes += arrays * sizeof(double) * boundary_sizes[k] * boundary_sizes[k];
+  return bytes;
+}
+
 ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings,
                                    TimerTable& timers, const StepCallback& on_step,
                                    const ContactSolution* previous, par::Communicator comm)
@@ -614,7 +708,7 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
   FetiContactSolve solve(problem, settings, timers, comm, out);
   const int first_step = previous ? solve.restore(*previous) : 1;
   run_load_steps(solve, solve.history(), first_step, settings.max_outer_iterations, out, on_step);
-  if (out.converged)
+  if (out.completed)
     timers.add("total solve", seconds_since(run_start));
   return out;
 }

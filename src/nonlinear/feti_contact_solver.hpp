@@ -25,8 +25,18 @@
 #include "nonlinear/solver_settings.hpp"
 #include "par/communicator.hpp"
 
+#include <vector>
+
 namespace feticon::nonlinear
 {
+/// Bytes a rank holds while it forms its explicit blocks (decomposition/explicit_boundary_operators.hpp),
+/// beyond the blocks it keeps: each of its `threads` threads forms one subdomain at a time and
+/// holds arrays of |b_s|^2 doubles (la::schur_complement's dense trailing factor block, its U
+/// and result; the inverse and the Schur block formed from it), counted for the largest
+/// subdomains in `boundary_sizes` (the |b_s| of the rank's subdomains). The memory guard's
+/// model and dual.operator = auto's budget use it.
+double explicit_forming_bytes(std::vector<double> boundary_sizes, int threads);
+
 /// @param previous if given, continue after its completed load steps (its history and steps
 ///                 are taken from `previous`, the solution of the interrupted run; its step
 ///                 count names a point of the same load history, which is checked)

@@ -3,6 +3,7 @@
 #include "common/log.hpp"
 #include "common/timer.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -18,7 +19,7 @@ void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int
     LoadStep record;
     record.load_factor = t;
     std::string failure;
-    for (int k = 1; k <= max_outer_iterations && !record.converged && failure.empty(); ++k)
+    for (int k = 1; k <= max_outer_iterations && !record.converged && record.floor.empty() && failure.empty(); ++k)
     {
       const auto start = std::chrono::steady_clock::now();
       OuterIteration it;
@@ -36,6 +37,7 @@ void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int
         log::info(phases.format(it));
       }
       record.converged = outcome.converged;
+      record.floor = std::move(outcome.floor);
       failure = std::move(outcome.failure);
     }
     out.steps.push_back(record);
@@ -45,7 +47,13 @@ void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int
       out.reason = failure;
       return;
     }
-    if (!record.converged)
+    if (!record.floor.empty())
+    {
+      const std::string warning = floor_warning(step, record);
+      log::warning(warning);
+      out.warnings.push_back(warning);
+    }
+    else if (!record.converged)
     {
       char reason[160];
       std::snprintf(reason, sizeof reason, "load step %d did not converge in %d outer iterations (|du|/|u| = %g)",
@@ -56,6 +64,9 @@ void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int
     if (on_step)
       on_step(step, out);
   }
-  out.converged = true;
+  out.completed = true;
+  out.converged = std::all_of(out.steps.begin(), out.steps.end(), [](const LoadStep& s) { return s.converged; });
+  if (!out.converged)
+    out.reason = "every load step ran, but not every one met the stopping test (warnings)";
 }
 } // namespace feticon::nonlinear

@@ -16,7 +16,7 @@
 
 namespace feticon::nonlinear
 {
-/// Called after every converged load step with the solution so far (for output).
+/// Called after every accepted load step (converged, or at a floor) with the solution so far.
 using StepCallback = std::function<void(int load_step, const ContactSolution&)>;
 
 /// How one outer iteration ended.
@@ -27,13 +27,18 @@ struct IterationOutcome
   bool recorded = true;
   bool converged = false; ///< the load step has converged
   std::string failure;    ///< not empty: the run stops, and this is why
+  /// Not empty: the load step ends short of the stopping test, at a floor the loop cannot go
+  /// below (OuterVerdict::floor); this says which. The run goes on and reports it.
+  std::string floor;
 
   /// The next iteration follows.
   static IterationOutcome next() { return {}; }
   /// The load step has converged (`recorded`: with this iteration in the history).
-  static IterationOutcome step_converged(bool recorded = true) { return {recorded, true, {}}; }
+  static IterationOutcome step_converged(bool recorded = true) { return {recorded, true, {}, {}}; }
   /// The run stops, for `why`.
-  static IterationOutcome stop(std::string why, bool recorded = true) { return {recorded, false, std::move(why)}; }
+  static IterationOutcome stop(std::string why, bool recorded = true) { return {recorded, false, std::move(why), {}}; }
+  /// The load step ends at a floor, for `why`.
+  static IterationOutcome step_at_floor(std::string why) { return {true, false, {}, std::move(why)}; }
 };
 
 class LoadStepPhases
@@ -53,8 +58,9 @@ public:
 
 /// Runs load steps first_step, ..., history.n_steps() of `phases` at the history's load
 /// factors (LoadStep::load_factor) with at most max_outer_iterations outer iterations each,
-/// appending to out.history and out.steps; `on_step` after every converged step. Ends with
-/// out.converged, or out.reason saying where and why it stopped.
+/// appending to out.history and out.steps; `on_step` after every converged step (or one ended
+/// at a floor, which goes into out.warnings). Ends with out.completed (and out.converged if
+/// every step met the stopping test), or out.reason saying where and why it stopped.
 void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int first_step,
                     int max_outer_iterations, ContactSolution& out, const StepCallback& on_step = {});
 } // namespace feticon::nonlinear

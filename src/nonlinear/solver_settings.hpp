@@ -97,6 +97,11 @@ struct SolverSettings
   int subdomains;
   Partitioner partitioner;
   DualOperatorMode dual_operator;
+  /// Bytes per rank that dual.operator = auto may give the explicit blocks with the arrays of
+  /// forming them (the memory guard's budget less its estimate of the rest of the run:
+  /// app/memory_guard.hpp); negative: a quarter of the rank's share of the node's available
+  /// memory. At most 4 GiB either way.
+  double explicit_block_budget = -1;
   decomposition::GeneralizedInverseMethod generalized_inverse =
       decomposition::GeneralizedInverseMethod::fixing_dofs;
   dual::DualPenaltyOptions dual;

@@ -1,7 +1,7 @@
 #pragma once
-/// @file The seed's Hertz benchmark (section 6): a cylinder of radius R1 = 1 m on a
-/// half-space, both steel (E = 2e11 Pa, nu = 0.3), line load Q = 4e8 N/m, plane strain,
-/// modelled with symmetry about x = 0. Analytic reference: Hertz / McEwen (Johnson 1985,
+/// @file The Hertz benchmark of Vondrák, Dostál, Dobiáš and Pták (DD XVI, 2007, section 6):
+/// a cylinder of radius R1 = 1 m on a half-space, both steel (E = 2e11 Pa, nu = 0.3), line
+/// load Q = 4e8 N/m, plane strain, modelled with symmetry about x = 0. Analytic reference: Hertz / McEwen (Johnson 1985,
 /// ch. 4; ALGORITHMS.md section 9).
 ///
 /// Boundary conditions of the half model: u_x = 0 on the symmetry plane x = 0 (both

@@ -49,7 +49,7 @@ check_error "KEY=VALUE" --set rho
 printf 'rho: [1, 2\n' > "$work/broken.yaml"
 check_error "broken.yaml" "$work/broken.yaml"
 
-# The default is the seed's benchmark: large displacements in two load steps.
+# The default is Vondrák et al.'s benchmark: large displacements in two load steps.
 "$feticon" run -q --output "$work/default" --set hertz.refinement=0.5 --set subdomains=4
 $py -c "import json; s=json.load(open('$work/default/summary.json')); assert s['displacements'] == 'large' and len(s['steps']) == 2 and s['converged']"
 

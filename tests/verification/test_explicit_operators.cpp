@@ -30,6 +30,26 @@ test::FetiContactRun run(fem::Kinematics kinematics, nonlinear::DualOperatorMode
   s.dual_operator = mode;
   return test::run_feti_contact(problem, s);
 }
+
+/// Hertz at refinement 0.5 with large displacements in 2 load steps.
+fem::Problem coarse_hertz()
+{
+  problems::HertzParameters parameters;
+  parameters.mesh.refinement = 0.5;
+  return problems::hertz_problem(parameters);
+}
+
+/// Explicit operators with a search distance (1 mm) below the contact zone's growth, so that
+/// contact rows leave the boundary the Dirichlet preconditioner started with.
+nonlinear::SolverSettings growing_boundary_settings()
+{
+  nonlinear::SolverSettings s;
+  s.kinematics = fem::Kinematics::total_lagrangian;
+  s.load_steps = 2;
+  s.search_distance = 1e-3;
+  s.dual_operator = nonlinear::DualOperatorMode::explicit_;
+  return s;
+}
 } // namespace
 
 TEST(ExplicitDualOperators, SameSolutionAsImplicit)
@@ -75,14 +95,8 @@ TEST(ExplicitDualOperators, NeedTheDirichletPreconditioner)
 // peak pressure to the QP tolerance.
 TEST(ExplicitDualOperators, ContactBeyondTheInitialReachWidensTheBoundary)
 {
-  problems::HertzParameters parameters;
-  parameters.mesh.refinement = 0.5;
-  const fem::Problem problem = problems::hertz_problem(parameters);
-  nonlinear::SolverSettings s;
-  s.kinematics = fem::Kinematics::total_lagrangian;
-  s.load_steps = 2;
-  s.search_distance = 1e-3;
-  s.dual_operator = nonlinear::DualOperatorMode::explicit_;
+  const fem::Problem problem = coarse_hertz();
+  nonlinear::SolverSettings s = growing_boundary_settings();
   double peak[2] = {0, 0};
   bool widened[2] = {false, false};
   const dual::DualPreconditioner kinds[2] = {dual::DualPreconditioner::dirichlet, dual::DualPreconditioner::lumped};
@@ -100,4 +114,41 @@ TEST(ExplicitDualOperators, ContactBeyondTheInitialReachWidensTheBoundary)
   EXPECT_TRUE(widened[0]);
   EXPECT_FALSE(widened[1]);
   EXPECT_NEAR(peak[0], peak[1], 1e-6 * peak[1]);
+}
+
+// Reference: the uninterrupted run. The run of the test above whose Schur boundary grows in
+// its first load step, restarted from the state after that step (the checkpoint's
+// RestartState, in memory here), forms its operators on the grown boundary and repeats the
+// uninterrupted run's second step: the same outer and MPRGP iteration counts, the same answer
+// to round-off. Before the checkpoint carried the boundary, the restart formed the initial
+// boundary's operators and grew it again within step 2 (here to the same counters, since it
+// grows before the first QP of the step, but with one growth more than the uninterrupted run).
+TEST(ExplicitDualOperators, RestartKeepsTheGrownBoundary)
+{
+  const fem::Problem problem = coarse_hertz();
+  nonlinear::SolverSettings s = growing_boundary_settings();
+  s.dual.preconditioner = dual::DualPreconditioner::dirichlet;
+  nonlinear::ContactSolution after_step_1;
+  TimerTable timers;
+  const nonlinear::ContactSolution full = nonlinear::solve_feti_contact(
+      problem, s, timers, [&](int step, const nonlinear::ContactSolution& so_far) {
+        if (step == 1)
+          after_step_1 = so_far;
+      });
+  ASSERT_TRUE(full.converged) << full.reason;
+  ASSERT_EQ(after_step_1.restart.completed_steps, 1);
+  ASSERT_FALSE(after_step_1.restart.schur_boundary.empty()) << "the boundary did not grow in step 1";
+
+  const nonlinear::ContactSolution restarted = nonlinear::solve_feti_contact(problem, s, timers, {}, &after_step_1);
+  ASSERT_TRUE(restarted.converged) << restarted.reason;
+  ASSERT_EQ(restarted.history.size(), full.history.size());
+  for (size_t k = 0; k < full.history.size(); ++k)
+  {
+    EXPECT_EQ(restarted.history[k].load_step, full.history[k].load_step);
+    EXPECT_EQ(restarted.history[k].qp.iterations, full.history[k].qp.iterations) << "outer iteration " << k;
+  }
+  EXPECT_EQ(restarted.restart.schur_boundary, full.restart.schur_boundary);
+  // It grows in step 2 only where the uninterrupted run's grew there too.
+  EXPECT_EQ(restarted.schur_boundary_growths, full.schur_boundary_growths - after_step_1.schur_boundary_growths);
+  EXPECT_LT((restarted.u - full.u).norm(), 1e-10 * full.u.norm());
 }

@@ -1,4 +1,5 @@
-/// The seed's Hertz benchmark with small displacements against Hertz/McEwen (issue 4).
+/// The Hertz benchmark of Vondrák et al. (DD XVI, 2007) with small displacements against
+/// Hertz/McEwen (issue 4).
 /// Reference: a = sqrt(4QR/(pi E*)), p0 = 2Q/(pi a), p(x) = p0 sqrt(1 - x^2/a^2)
 /// (Johnson 1985, ch. 4; ALGORITHMS.md section 9). Tolerances are the issue's: peak within
 /// 3% of p0, half-width within one contact element, RMS error below 3% of p0, contact force
@@ -132,7 +133,7 @@ TEST(HertzBenchmark, DirichletPreconditionerGivesTheSameSolutionInFewerSteps)
   EXPECT_NEAR(dirichlet.force, dirichlet.hertz.applied_load, 1e-6 * dirichlet.hertz.applied_load);
 }
 
-// Reference: Theorem 2 of the seed (Dostál & Horák 2004), ||G lambda - e|| <= C/rho: the
+// Reference: Theorem 2 of Vondrák et al. 2007 (from Dostál & Horák 2004), ||G lambda - e|| <= C/rho: the
 // dual penalty's feasibility error falls like 1/rho (a factor 10 per decade, within 20%),
 // and once it is below 1e-3 the peak pressure changes by less than 1%.
 // Reference: Mandel & Tezaur (1996), "Convergence of a substructuring method with Lagrange
@@ -198,7 +199,7 @@ TEST(HertzBenchmark, DualPenaltyFeasibilityFallsLikeOneOverRho)
 }
 
 // Reference: the SMALBE-M solution of the same discrete problem (exact multipliers). The
-// primal penalty of the seed's section 2 allows a penetration lambda/eps_n, so its pressure
+// primal penalty of Vondrák et al.'s section 2 allows a penetration lambda/eps_n, so its pressure
 // approaches the exact one like 1/eps_n: measured 1.5e-1, 2.0e-2, 2.0e-3 of p0 for
 // eps_n = 1e-2, 1e-1, 1 max diag K on the graded mesh (3.1e-2, 3.8e-3, 3.8e-4 on the tensor
 // mesh, whose needle cells make max diag K larger against the contact cells' stiffness);

@@ -1,6 +1,6 @@
 /// A linear run's QP gets only the contact rows near contact (nonlinear/linear_contact_rows.hpp).
 /// Reference: the same run with every candidate row within the search distance (band 1e300,
-/// the QP of the seed). The left-out rows are inactive at the answer, so both QPs have the
+/// the QP of Vondrák et al. 2007). The left-out rows are inactive at the answer, so both QPs have the
 /// same solution: displacements and peak pressure agree to the QP tolerance (1e-8 relative on
 /// the projected gradient; 1e-6 allows for the conditioning of the two dual problems), and the
 /// answer satisfies every candidate row (linearized gap >= 0, multiplier >= 0, zero

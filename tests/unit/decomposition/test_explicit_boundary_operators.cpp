@@ -4,6 +4,7 @@
 /// Floating subdomains of a distorted box, both K+ variants, with the fixing nodes on the
 /// boundary and off it.
 
+#include "common/error.hpp"
 #include "decomposition/explicit_boundary_operators.hpp"
 #include "mesh/box.hpp"
 #include "tests/support/dense_schur.hpp"
@@ -41,11 +42,11 @@ la::Matrix dense_of(la::Index n, const Apply& apply)
   return M;
 }
 
-void check_blocks(GeneralizedInverseMethod method, bool whole_surface_on_boundary)
+void check_blocks(GeneralizedInverseMethod method, bool whole_surface_on_boundary, double young = 2e11)
 {
   const mesh::HexMesh m = distorted_box();
   const decomposition::Decomposition decomp(m, decomposition::partition_structured(m, {3, 1, 1}));
-  decomposition::SubdomainSystem system(decomp, {fem::Material{2e11, 0.3}}, fem::Kinematics::linear, method);
+  decomposition::SubdomainSystem system(decomp, {fem::Material{young, 0.3}}, fem::Kinematics::linear, method);
   system.update(la::Vector::Zero(decomp.n_primal()));
   // Boundary: the interfaces alone (fixing nodes, far from each centroid, mostly off it), or
   // every node on the box's surface too.
@@ -99,10 +100,54 @@ TEST(ExplicitBoundaryOperators, FixingDofsOnAndOffTheBoundary)
   check_blocks(GeneralizedInverseMethod::fixing_dofs, true);
 }
 
+// Moduli far from 1 (issue 36): K+ scales like 1 / E and S like E, and the two share one
+// array; S's diagonal was lost to cancellation once diag(K+) outgrew it by 1e16 (E = 1e-30 Pa
+// made the Dirichlet preconditioner noise). Same references, same tolerances.
+TEST(ExplicitBoundaryOperators, ModuliFarFromOne)
+{
+  for (const double young : {1e-30, 1e-3, 1e30})
+  {
+    SCOPED_TRACE(testing::Message() << "E = " << young);
+    check_blocks(GeneralizedInverseMethod::fixing_dofs, false, young);
+    check_blocks(GeneralizedInverseMethod::fixing_dofs, true, young);
+  }
+}
+
 TEST(ExplicitBoundaryOperators, Regularization)
 {
   check_blocks(GeneralizedInverseMethod::regularization, false);
   check_blocks(GeneralizedInverseMethod::regularization, true);
+}
+
+// Reference: the block elimination by hand. S' = [[4, 1, 1], [1, 3, 1], [1, 1, 2]] with b the
+// first two rows: S = S'_bb - S'_bg S'_gb / 2 = [[3.5, 0.5], [0.5, 2.5]]. An indefinite or NaN
+// S'_gg (a singular or non-finite subdomain) is a one-line error naming the subdomain.
+TEST(ExplicitBoundaryOperators, EliminatesFixingDofsAndRefusesASingularSgg)
+{
+  la::Matrix S_ext(3, 3);
+  S_ext << 4, 1, 1, 1, 3, 1, 1, 1, 2;
+  const la::Matrix S = decomposition::eliminate_fixing_dofs(S_ext, 2, "subdomain 7");
+  la::Matrix expected(2, 2);
+  expected << 3.5, 0.5, 0.5, 2.5;
+  EXPECT_LT((S - expected).norm(), 1e-15);
+  EXPECT_EQ(decomposition::eliminate_fixing_dofs(S_ext, 3, "subdomain 7"), S_ext) << "no fixing DOF outside b";
+  for (const double gg : {-1.0, 0.0, std::nan("")})
+  {
+    la::Matrix singular = S_ext;
+    singular(2, 2) = gg;
+    try
+    {
+      decomposition::eliminate_fixing_dofs(singular, 2, "subdomain 7");
+      ADD_FAILURE() << "S'_gg = " << gg << " accepted";
+    }
+    catch (const Error& e)
+    {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("S'_gg"), std::string::npos) << message;
+      EXPECT_NE(message.find("subdomain 7"), std::string::npos) << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+  }
 }
 
 // A boundary grown in one subdomain (the box's face x = 0, inside subdomain 0 only): with the

@@ -1,6 +1,6 @@
 /// The settings table (io/settings.cpp) declares each user-facing default once. The solver
 /// options take theirs from it by construction (SolverSettings, DualPenaltyOptions); the
-/// built-in problems' structs keep the seed's geometry for the tests that build them
+/// built-in problems' structs keep the geometry of Vondrák et al. 2007 for the tests that build them
 /// directly, and this test holds them to the table. Reference: the table itself.
 
 #include "io/settings.hpp"
