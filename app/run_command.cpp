@@ -107,230 +107,264 @@ std::string piece_file_name(int step, int rank)
   return name;
 }
 
-void run(const RunOptions& options)
+/// What the phases of a run share: the problem and its settings, where the results go, and
+/// the output writers that the load steps feed.
+struct RunContext
+{
+  io::ProblemFile file;
+  par::Communicator comm = par::Communicator::world();
+  bool writer = false; ///< rank 0: writes the folder's shared files
+  bool restart = false;
+  std::filesystem::path out_dir;
+  TimerTable timers;
+  std::unique_ptr<fem::Problem> problem;
+  io::DeckInfo deck; ///< the model's input deck, if it is one
+  MemoryEstimate memory_estimate;
+  nonlinear::SolverSettings solver;
+  std::optional<CalculixResults> calculix; ///< a deck's results also in CalculiX's files
+  std::optional<io::PvdWriter> pvd;
+
+  const io::Settings& settings() const { return file.settings; }
+};
+
+/// Set-up: the settings, the memory guard (before anything large is allocated and before an
+/// earlier run's results are cleared by --overwrite, then again for the mesh as made), the
+/// output folder, the problem and the solver's settings.
+void set_up(const RunOptions& options, RunContext& run)
 {
   if (options.quiet)
     log::set_level(log::Level::warning);
   if (options.verbose)
     log::set_level(log::Level::iterations);
-  const bool restart = !options.restart.empty();
-  if (restart)
+  run.restart = !options.restart.empty();
+  if (run.restart)
     FETICON_CHECK(options.problem_file.empty() && options.overrides.empty(),
                   "--restart continues a run exactly as it was set up: give no problem file or --set");
   const std::filesystem::path restart_dir(options.restart);
-  const io::ProblemFile file = io::load_problem_file(
-      restart ? restart_dir / "problem.yaml" : std::filesystem::path(options.problem_file), options.overrides);
-  const io::Settings& settings = file.settings;
+  run.file = io::load_problem_file(
+      run.restart ? restart_dir / "problem.yaml" : std::filesystem::path(options.problem_file), options.overrides);
+  const io::Settings& settings = run.settings();
 
-  // The memory guard, before anything large is allocated and before an earlier run's results
-  // are cleared (--overwrite): the mesh's size predicted from the settings or the Gmsh header.
-  // It is checked again for the mesh as made, before the factorizations.
   const std::string what = "problem " + settings.text("problem");
-  const MeshPrediction predicted = predict_mesh(file);
+  const MeshPrediction predicted = predict_mesh(run.file);
   guard_memory(settings, predicted.nodes, predicted.plane_strain, what);
 
   // Under MPI every rank runs this function; rank 0 writes the folder's shared files, every
   // rank its piece of each step's VTU.
-  const par::Communicator comm = par::Communicator::world();
-  const bool writer = comm.rank() == 0;
-  const std::filesystem::path out_dir(restart ? options.restart : options.output);
-  if (writer)
+  run.writer = run.comm.rank() == 0;
+  run.out_dir = run.restart ? options.restart : options.output;
+  if (run.writer && !run.restart)
   {
-    if (!restart)
-    {
-      prepare_output_folder(out_dir, options.overwrite);
-      feticon::write_file_atomically(out_dir / "problem.yaml", effective_problem(file));
-    }
+    prepare_output_folder(run.out_dir, options.overwrite);
+    feticon::write_file_atomically(run.out_dir / "problem.yaml", effective_problem(run.file));
   }
-  comm.barrier();
+  run.comm.barrier();
 
-  TimerTable timers;
-  const std::string& kind = settings.text("problem");
-  const bool is_hertz = kind == "hertz";
-  const problems::HertzParameters hertz = hertz_parameters(settings);
-  const bool is_hertz3d = kind == "hertz3d";
-  const problems::Hertz3dParameters hertz3d = hertz3d_parameters(settings);
-  std::unique_ptr<fem::Problem> problem;
-  io::DeckInfo deck; // the model's input deck, if it is one
   {
-    ScopedTimer t(timers, "mesh");
-    problem = std::make_unique<fem::Problem>(build_problem(file, &deck));
+    ScopedTimer t(run.timers, "mesh");
+    run.problem = std::make_unique<fem::Problem>(build_problem(run.file, &run.deck));
   }
+  const fem::Problem& problem = *run.problem;
   // Again for the mesh as made, from what the ranks hold now (with or without Gmsh loaded).
-  const MemoryEstimate memory_estimate = guard_memory(settings, problem->mesh.n_nodes(), problem->eliminated[2], what,
-                                                      comm.max(static_cast<double>(resident_memory_bytes())));
-  nonlinear::SolverSettings solver = solver_settings(settings, *problem);
-  solver.explicit_block_budget = memory_estimate.explicit_block_budget;
-  const int64_t n_dofs = 3 * static_cast<int64_t>(problem->mesh.n_nodes());
-  log::info("feticon: problem " + problem->name + ", " + std::to_string(problem->mesh.n_cells()) +
-            " hex8 cells, " + std::to_string(n_dofs) + " DOFs, method " + settings.text("method") +
-            ", " + settings.text("displacements") + " displacements" +
-            (problem->mesh_from_cache ? "; mesh from the mesh cache (FETICON_MESH_CACHE=off remeshes)" : ""));
+  run.memory_estimate = guard_memory(settings, problem.mesh.n_nodes(), problem.eliminated[2], what,
+                                     run.comm.max(static_cast<double>(resident_memory_bytes())));
+  run.solver = solver_settings(settings, problem);
+  run.solver.explicit_block_budget = run.memory_estimate.explicit_block_budget;
+  log::info("feticon: problem " + problem.name + ", " + std::to_string(problem.mesh.n_cells()) + " hex8 cells, " +
+            std::to_string(3 * static_cast<int64_t>(problem.mesh.n_nodes())) + " DOFs, method " +
+            settings.text("method") + ", " + settings.text("displacements") + " displacements" +
+            (problem.mesh_from_cache ? "; mesh from the mesh cache (FETICON_MESH_CACHE=off remeshes)" : ""));
+  if (!run.deck.path.empty() && run.writer) // rank 0 holds the gathered solution
+    run.calculix.emplace(run.out_dir, problem, run.deck, run.solver.kinematics);
+  if (run.writer)
+    run.pvd.emplace(run.out_dir / "solution.pvd");
+}
 
-  const bool write_vtu = settings.flag("output.vtu");
-  // A deck's results also in CalculiX's files (rank 0 holds the gathered solution).
-  std::optional<CalculixResults> calculix;
-  if (!deck.path.empty() && writer)
-    calculix.emplace(out_dir, *problem, deck, solver.kinematics);
-  std::optional<io::PvdWriter> pvd;
-  if (writer)
-    pvd.emplace(out_dir / "solution.pvd");
-  auto on_step = [&](int step, const nonlinear::ContactSolution& solution)
+/// The output of one accepted load step: CalculiX's files, the VTU (one piece per rank under
+/// MPI), the .pvd entry, and after them the checkpoint.
+void write_step(RunContext& run, int step, const nonlinear::ContactSolution& solution)
+{
+  if (run.calculix)
   {
-    if (calculix)
-    {
-      ScopedTimer t(timers, "output");
-      calculix->add_step(solution);
-    }
-    if (!write_vtu)
-      return;
-    ScopedTimer t(timers, "output");
-    const std::string name = step_file_name(step, comm.serial());
-    if (comm.serial())
-      write_step_vtu(out_dir / name, *problem, solution, solver.kinematics);
-    else
-    {
-      std::vector<std::string> pieces;
-      for (int r = 0; r < comm.size(); ++r)
-        pieces.push_back(piece_file_name(step, r));
-      write_step_vtu(out_dir / pieces[comm.rank()], *problem, solution, solver.kinematics,
-                     solution.owned_cells);
-      comm.barrier();
-      if (writer)
-        write_step_pvtu(out_dir / name, *problem, pieces);
-    }
-    if (!writer)
-      return;
-    pvd->add(solution.steps.back().load_factor, name);
-    // After the VTU: a checkpoint always names a step whose output is complete.
-    if (solver.method != nonlinear::ContactMethod::primal_penalty)
-      write_checkpoint(out_dir / "checkpoint.bin", solution);
-  };
-  nonlinear::ContactSolution solution;
-  FETICON_CHECK(comm.serial() || solver.method != nonlinear::ContactMethod::primal_penalty,
+    ScopedTimer t(run.timers, "output");
+    run.calculix->add_step(solution);
+  }
+  if (!run.settings().flag("output.vtu"))
+    return;
+  ScopedTimer t(run.timers, "output");
+  const par::Communicator& comm = run.comm;
+  const std::string name = step_file_name(step, comm.serial());
+  if (comm.serial())
+    write_step_vtu(run.out_dir / name, *run.problem, solution, run.solver.kinematics);
+  else
+  {
+    std::vector<std::string> pieces;
+    for (int r = 0; r < comm.size(); ++r)
+      pieces.push_back(piece_file_name(step, r));
+    write_step_vtu(run.out_dir / pieces[comm.rank()], *run.problem, solution, run.solver.kinematics,
+                   solution.owned_cells);
+    comm.barrier();
+    if (run.writer)
+      write_step_pvtu(run.out_dir / name, *run.problem, pieces);
+  }
+  if (!run.writer)
+    return;
+  run.pvd->add(solution.steps.back().load_factor, name);
+  // After the VTU: a checkpoint always names a step whose output is complete.
+  if (run.solver.method != nonlinear::ContactMethod::primal_penalty)
+    write_checkpoint(run.out_dir / "checkpoint.bin", solution);
+}
+
+/// Solve: the primal penalty, or FETI from the start or from the folder's checkpoint.
+nonlinear::ContactSolution solve(RunContext& run)
+{
+  const nonlinear::SolverSettings& solver = run.solver;
+  const auto on_step = [&run](int step, const nonlinear::ContactSolution& solution) { write_step(run, step, solution); };
+  FETICON_CHECK(run.comm.serial() || solver.method != nonlinear::ContactMethod::primal_penalty,
                 "method primal_penalty solves the undecomposed problem on one rank; run it without mpirun");
-  FETICON_CHECK(!restart || solver.method != nonlinear::ContactMethod::primal_penalty,
+  FETICON_CHECK(!run.restart || solver.method != nonlinear::ContactMethod::primal_penalty,
                 "--restart is available for the FETI methods (smalbe, dual_penalty), not primal_penalty");
   if (solver.method == nonlinear::ContactMethod::primal_penalty)
+    return nonlinear::solve_primal_penalty(*run.problem, solver, run.timers, on_step);
+  if (!run.restart)
+    return nonlinear::solve_feti_contact(*run.problem, solver, run.timers, on_step);
+  nonlinear::ContactSolution previous;
+  read_checkpoint(run.out_dir / "checkpoint.bin", previous);
+  for (int step = 1; step <= previous.restart.completed_steps; ++step)
   {
-    solution = nonlinear::solve_primal_penalty(*problem, solver, timers, on_step);
-  }
-  else if (restart)
-  {
-    nonlinear::ContactSolution previous;
-    read_checkpoint(out_dir / "checkpoint.bin", previous);
-    for (int step = 1; step <= previous.restart.completed_steps; ++step)
+    const std::string name = step_file_name(step, run.comm.serial());
+    if (run.settings().flag("output.vtu"))
     {
-      const std::string name = step_file_name(step, comm.serial());
-      if (write_vtu)
-      {
-        FETICON_CHECK(std::filesystem::exists(out_dir / name), "restart: " << (out_dir / name).string()
-                                                                           << " of a converged step is missing");
-        if (writer)
-          pvd->add(previous.steps[step - 1].load_factor, name);
-      }
+      FETICON_CHECK(std::filesystem::exists(run.out_dir / name),
+                    "restart: " << (run.out_dir / name).string() << " of a converged step is missing");
+      if (run.writer)
+        run.pvd->add(previous.steps[step - 1].load_factor, name);
     }
-    log::info("restart: continuing after load step " + std::to_string(previous.restart.completed_steps));
-    solution = nonlinear::solve_feti_contact(*problem, solver, timers, on_step, &previous);
   }
-  else
-    solution = nonlinear::solve_feti_contact(*problem, solver, timers, on_step);
+  log::info("restart: continuing after load step " + std::to_string(previous.restart.completed_steps));
+  return nonlinear::solve_feti_contact(*run.problem, solver, run.timers, on_step, &previous);
+}
 
-  nlohmann::ordered_json summary;
-  summary["problem"] = problem->name;
+/// The run's size and set-up in summary.json.
+void summarize_problem(const RunContext& run, const nonlinear::ContactSolution& solution,
+                       nlohmann::ordered_json& summary)
+{
+  const fem::Problem& problem = *run.problem;
+  const io::Settings& settings = run.settings();
+  summary["problem"] = problem.name;
   summary["method"] = settings.text("method");
   summary["displacements"] = settings.text("displacements");
   summary["converged"] = solution.converged;
   summary["completed"] = solution.completed; // every load step ran; converged: and met the stopping test
   if (!solution.converged)
     summary["reason"] = solution.reason;
-  summary["degrees_of_freedom"] = n_dofs;
-  summary["nodes"] = problem->mesh.n_nodes();
-  summary["elements"] = problem->mesh.n_cells();
-  summary["mesh_from_cache"] = problem->mesh_from_cache;
+  summary["degrees_of_freedom"] = 3 * static_cast<int64_t>(problem.mesh.n_nodes());
+  summary["nodes"] = problem.mesh.n_nodes();
+  summary["elements"] = problem.mesh.n_cells();
+  summary["mesh_from_cache"] = problem.mesh_from_cache;
   summary["subdomains"] = solution.n_subdomains;
   summary["dual_size"] = solution.n_dual;
   summary["coarse_size"] = solution.n_kernel;
-  const mesh::MeshQuality quality = mesh::mesh_quality(problem->mesh, problem->eliminated[2]);
+  const mesh::MeshQuality quality = mesh::mesh_quality(problem.mesh, problem.eliminated[2]);
   summary["mesh_quality"] = {{"max_aspect_ratio", quality.max_aspect_ratio},
                              {"min_angle_deg", quality.min_angle_deg},
                              {"max_angle_deg", quality.max_angle_deg},
-                             {"measured", problem->eliminated[2] ? "in plane" : "all cell faces"}};
+                             {"measured", problem.eliminated[2] ? "in plane" : "all cell faces"}};
   summary["rho"] = settings.number("rho");
   summary["dual_operator"] = {{"mode", solution.dual_operator},
                               {"reason", solution.dual_operator_reason},
                               {"bytes", solution.explicit_operator_bytes},
                               {"boundary_widened", solution.schur_boundary_widened}};
-  if (solver.method == nonlinear::ContactMethod::primal_penalty)
+  if (run.solver.method == nonlinear::ContactMethod::primal_penalty)
     summary["eps_n"] = solution.penalty;
+}
 
-  // Contact figures only of a converged state: the last iterate of a failed solve is no
-  // result (the converged load steps are on disk as VTU and in "steps").
-  if (solution.completed && solution.contact_lambda.size() > 0)
+/// The Hertz problems' comparison with theory (2D: McEwen, 3D: Hertz's sphere) into summary
+/// and the analytic column of the pressure samples. Large displacements: the figures in the
+/// deformed frame, the reference frame's beside.
+void compare_with_hertz(const RunContext& run, const nonlinear::ContactSolution& solution,
+                        std::vector<nonlinear::PressureSample>& samples, nlohmann::ordered_json& summary)
+{
+  const io::Settings& settings = run.settings();
+  const bool is_hertz3d = settings.text("problem") == "hertz3d";
+  const bool large = run.solver.kinematics == fem::Kinematics::total_lagrangian;
+  const HertzProfiles profiles = hertz_profiles(samples, is_hertz3d);
+  const auto& in_frame = large ? profiles.deformed : profiles.reference;
+  std::function<double(double)> analytic;
+  if (!is_hertz3d)
   {
-    ScopedTimer t(timers, "post-processing");
-    // Pressure along the slave surface; the analytic column is filled for Hertz only.
-    auto samples = nonlinear::slave_pressure_by_x(*problem, solution, solver.kinematics);
-    int64_t active = 0;
-    for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)
-      active += solution.contact_lambda(i) > 0;
-    double peak = 0, area = 0;
-    for (const auto& sample : samples)
-      peak = std::max(peak, sample.pressure);
-    for (const auto& sample : samples)
-      area += sample.pressure > problems::loaded_fraction * peak ? sample.area : 0.0;
-    summary["contact"] = {{"total_normal_force", nonlinear::total_normal_force(solution)},
-                          {"peak_pressure", peak},
-                          {"contact_area", area},
-                          {"active_constraints", active},
-                          {"feasibility_error", solution.feasibility_error}};
-    if (is_hertz || is_hertz3d)
-    {
-      // Large displacements: the figures in the deformed frame, the reference frame's beside.
-      const bool large = solver.kinematics == fem::Kinematics::total_lagrangian;
-      const HertzProfiles profiles = hertz_profiles(samples, is_hertz3d);
-      const auto& in_frame = large ? profiles.deformed : profiles.reference;
-      std::function<double(double)> analytic;
-      if (is_hertz)
-      {
-        const problems::HertzComparison reference = problems::compare_with_hertz(hertz, profiles.reference);
-        const problems::HertzComparison h = large ? problems::compare_with_hertz(hertz, profiles.deformed) : reference;
-        summary["contact"]["applied_load"] = h.applied_load;
-        summary["hertz"] = hertz_json(h, reference, large);
-        summary["hertz"]["axis_approach"] = problems::hertz_axis_approach(*problem, solution.u);
-        summary["hertz"]["contact_element_size"] = h.element_size;
-        analytic = [m = problems::hertz_analytic(hertz)](double x) { return m.pressure(x); };
-      }
-      else
-      {
-        const auto reference = problems::compare_with_hertz3d(hertz3d, profiles.reference);
-        const auto h = large ? problems::compare_with_hertz3d(hertz3d, profiles.deformed) : reference;
-        summary["contact"]["applied_load"] = 0.25 * hertz3d.load;
-        summary["hertz"] = hertz_json(h, reference, large);
-        summary["hertz"]["rms_nodes"] = h.nodes_in_rms;
-        summary["hertz"]["approach_analytic"] = h.approach_analytic;
-        summary["hertz"]["approach_computed"] = problems::hertz3d_approach(*problem, solution.u);
-        summary["hertz"]["contact_element_size"] = hertz3d.element_size / hertz3d.refinement;
-        analytic = [m = problems::hertz3d_analytic(hertz3d)](double r) { return m.pressure(r); };
-      }
-      for (size_t i = 0; i < samples.size(); ++i)
-        samples[i].analytic = analytic(in_frame[i].r);
-    }
-    if (writer)
-      write_pressure_csv(out_dir / "contact_pressure.csv", samples);
+    const problems::HertzParameters hertz = hertz_parameters(settings);
+    const problems::HertzComparison reference = problems::compare_with_hertz(hertz, profiles.reference);
+    const problems::HertzComparison h = large ? problems::compare_with_hertz(hertz, profiles.deformed) : reference;
+    summary["contact"]["applied_load"] = h.applied_load;
+    summary["hertz"] = hertz_json(h, reference, large);
+    summary["hertz"]["axis_approach"] = problems::hertz_axis_approach(*run.problem, solution.u);
+    summary["hertz"]["contact_element_size"] = h.element_size;
+    analytic = [m = problems::hertz_analytic(hertz)](double x) { return m.pressure(x); };
   }
-  summary["qp"] = qp_json(solution);
-  // No silent wrong answers: a converged result that is not what it claims says so.
+  else
+  {
+    const problems::Hertz3dParameters hertz3d = hertz3d_parameters(settings);
+    const auto reference = problems::compare_with_hertz3d(hertz3d, profiles.reference);
+    const auto h = large ? problems::compare_with_hertz3d(hertz3d, profiles.deformed) : reference;
+    summary["contact"]["applied_load"] = 0.25 * hertz3d.load;
+    summary["hertz"] = hertz_json(h, reference, large);
+    summary["hertz"]["rms_nodes"] = h.nodes_in_rms;
+    summary["hertz"]["approach_analytic"] = h.approach_analytic;
+    summary["hertz"]["approach_computed"] = problems::hertz3d_approach(*run.problem, solution.u);
+    summary["hertz"]["contact_element_size"] = hertz3d.element_size / hertz3d.refinement;
+    analytic = [m = problems::hertz3d_analytic(hertz3d)](double r) { return m.pressure(r); };
+  }
+  for (size_t i = 0; i < samples.size(); ++i)
+    samples[i].analytic = analytic(in_frame[i].r);
+}
+
+/// Post-processing: the contact figures of a completed run (the last iterate of a failed solve
+/// is no result; its accepted load steps are on disk as VTU and in "steps"), with the Hertz
+/// problems' comparison, and contact_pressure.csv.
+void summarize_contact(RunContext& run, const nonlinear::ContactSolution& solution, nlohmann::ordered_json& summary)
+{
+  if (!solution.completed || solution.contact_lambda.size() == 0)
+    return;
+  ScopedTimer t(run.timers, "post-processing");
+  // Pressure along the slave surface; the analytic column is filled for Hertz only.
+  auto samples = nonlinear::slave_pressure_by_x(*run.problem, solution, run.solver.kinematics);
+  int64_t active = 0;
+  for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)
+    active += solution.contact_lambda(i) > 0;
+  double peak = 0, area = 0;
+  for (const auto& sample : samples)
+    peak = std::max(peak, sample.pressure);
+  for (const auto& sample : samples)
+    area += sample.pressure > problems::loaded_fraction * peak ? sample.area : 0.0;
+  summary["contact"] = {{"total_normal_force", nonlinear::total_normal_force(solution)},
+                        {"peak_pressure", peak},
+                        {"contact_area", area},
+                        {"active_constraints", active},
+                        {"feasibility_error", solution.feasibility_error}};
+  const std::string& kind = run.settings().text("problem");
+  if (kind == "hertz" || kind == "hertz3d")
+    compare_with_hertz(run, solution, samples, summary);
+  if (run.writer)
+    write_pressure_csv(run.out_dir / "contact_pressure.csv", samples);
+}
+
+/// No silent wrong answers: the deck's and the solver's warnings, and a completed result that
+/// is not what it claims (contact forces that do not balance the load) says so.
+nlohmann::ordered_json run_warnings(const RunContext& run, const nonlinear::ContactSolution& solution,
+                                    const nlohmann::ordered_json& summary)
+{
   nlohmann::ordered_json warnings = nlohmann::ordered_json::array();
-  for (const std::string& w : deck.warnings)
+  for (const std::string& w : run.deck.warnings)
     warnings.push_back("deck: " + w);
   for (const std::string& w : solution.warnings)
     warnings.push_back(w);
-  if (calculix)
-    for (const std::string& w : calculix->warnings())
+  if (run.calculix)
+    for (const std::string& w : run.calculix->warnings())
       warnings.push_back("deck output: " + w);
+  const io::Settings& settings = run.settings();
   const double feasibility_tolerance = settings.number("contact.feasibility_tolerance");
-  if (solution.completed && solver.method == nonlinear::ContactMethod::dual_penalty &&
+  if (solution.completed && run.solver.method == nonlinear::ContactMethod::dual_penalty &&
       solution.feasibility_error > feasibility_tolerance)
   {
     char line[320];
@@ -357,9 +391,12 @@ void run(const RunOptions& options)
       warnings.push_back(line);
     }
   }
-  for (const auto& w : warnings)
-    log::warning(w.get<std::string>());
-  summary["warnings"] = warnings;
+  return warnings;
+}
+
+/// Write: the steps, timings and memory into summary.json, history.csv, the plots.
+void write_results(RunContext& run, const nonlinear::ContactSolution& solution, nlohmann::ordered_json& summary)
+{
   nlohmann::ordered_json steps = nlohmann::ordered_json::array();
   for (const auto& s : solution.steps)
     steps.push_back({{"load_factor", s.load_factor},
@@ -370,28 +407,43 @@ void run(const RunOptions& options)
                      {"relative_displacement_change", s.displacement_change},
                      {"residual_norm", s.residual_norm}});
   summary["steps"] = steps;
-  if (writer)
-    write_history_csv(out_dir / "history.csv", solution.history);
+  if (run.writer)
+    write_history_csv(run.out_dir / "history.csv", solution.history);
   nlohmann::ordered_json timing;
-  for (const auto& [phase, seconds] : timers.entries())
+  for (const auto& [phase, seconds] : run.timers.entries())
     timing[phase] = seconds;
   summary["timings_seconds"] = timing;
-  summary["ranks"] = comm.size();
-  const std::vector<int64_t> memory = comm.all_gather(std::vector<int64_t>{static_cast<int64_t>(peak_memory_bytes())});
+  summary["ranks"] = run.comm.size();
+  const std::vector<int64_t> memory =
+      run.comm.all_gather(std::vector<int64_t>{static_cast<int64_t>(peak_memory_bytes())});
   summary["peak_memory_bytes"] = *std::max_element(memory.begin(), memory.end());
-  summary["memory_estimate_bytes"] = memory_estimate.per_rank_for(solution.dual_operator);
-  if (!comm.serial())
+  summary["memory_estimate_bytes"] = run.memory_estimate.per_rank_for(solution.dual_operator);
+  if (!run.comm.serial())
     summary["peak_memory_bytes_per_rank"] = memory;
-  if (writer)
-    write_json(out_dir / "summary.json", summary);
-
+  if (run.writer)
+    write_json(run.out_dir / "summary.json", summary);
   log::info(format_summary(summary));
-  if (solution.completed && writer && settings.flag("output.plots"))
-    plot_results(out_dir);
-  log::info("results written to " + out_dir.string());
-  FETICON_CHECK(solution.completed, "the solve did not converge: " << solution.reason
-                                                                   << " (converged steps are in "
-                                                                   << out_dir.string() << ")");
+  if (solution.completed && run.writer && run.settings().flag("output.plots"))
+    plot_results(run.out_dir);
+  log::info("results written to " + run.out_dir.string());
+}
+
+void run(const RunOptions& options)
+{
+  RunContext run;
+  set_up(options, run);
+  const nonlinear::ContactSolution solution = solve(run);
+  nlohmann::ordered_json summary;
+  summarize_problem(run, solution, summary);
+  summarize_contact(run, solution, summary);
+  summary["qp"] = qp_json(solution);
+  const nlohmann::ordered_json warnings = run_warnings(run, solution, summary);
+  for (const auto& w : warnings)
+    log::warning(w.get<std::string>());
+  summary["warnings"] = warnings;
+  write_results(run, solution, summary);
+  FETICON_CHECK(solution.completed, "the solve did not converge: " << solution.reason << " (converged steps are in "
+                                                                   << run.out_dir.string() << ")");
 }
 } // namespace
 

@@ -16,7 +16,7 @@ std::vector<SettingSpec> make_specs()
 {
   const double inf = 1e300;
   return {
-      {"problem", "hertz", "hertz (the seed's benchmark), hertz3d (a sphere on a half-space), "
+      {"problem", "hertz", "hertz (Vondrák et al.'s benchmark), hertz3d (a sphere on a half-space), "
                            "cantilever_obstacle (a cantilever bent onto a block: finite rotations) or "
                            "custom (mesh, bodies, supports, loads, contact sections of the problem file)",
        Type::text, {"hertz", "hertz3d", "cantilever_obstacle", "custom"}, 0, 0, false},
@@ -57,7 +57,7 @@ std::vector<SettingSpec> make_specs()
       {"hertz3d.block_poisson", "", "Poisson's ratio of the block, if it differs from material.poisson",
        Type::number, {}, -1, 0.5, true, true},
       {"method", "smalbe", "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "
-                           "(seed's problem (9)), primal_penalty (undecomposed, CHOLMOD)",
+                           "(problem (9) of Vondrák et al.), primal_penalty (undecomposed, CHOLMOD)",
        Type::text, {"smalbe", "dual_penalty", "primal_penalty"}, 0, 0, false},
       {"rho", "1", "dual penalty rho, dimensionless (F and d scaled by ||PFP||)", Type::number, {}, 0, inf, true},
       {"smalbe.M0", "1", "SMALBE-M initial M (scaled units: ||PFP|| = 1)", Type::number, {}, 0, 1e6, true},
@@ -72,8 +72,8 @@ std::vector<SettingSpec> make_specs()
       {"contact.feasibility_tolerance", "1e-3", "warn (summary.json warnings, stderr) when the dual "
        "penalty leaves ||G lambda - e|| / ||e|| above this", Type::number, {}, 0, 1, true},
       {"eps_n", "100", "primal penalty eps_n as a multiple of max diag K", Type::number, {}, 0, inf, true},
-      {"displacements", "large", "large (total Lagrangian, the seed's benchmark) or small (linear elasticity)", Type::text, {"small", "large"}, 0, 0, false},
-      {"newton.stiffness", "initial", "FETI outer-loop stiffness: initial (K_0 kept, the seed's "
+      {"displacements", "large", "large (total Lagrangian, Vondrák et al.'s benchmark) or small (linear elasticity)", Type::text, {"small", "large"}, 0, 0, false},
+      {"newton.stiffness", "initial", "FETI outer-loop stiffness: initial (K_0 kept, Vondrák et al.'s "
                                       "modified Newton), step or iteration (K_M(u) refreshed)",
        Type::text, {"initial", "step", "iteration"}, 0, 0, false},
       {"newton.max_iterations", "15", "outer iterations per load step", Type::integer, {}, 1, 10000, false},

@@ -1,6 +1,6 @@
 #pragma once
-/// @file Contact by Total FETI with the dual penalty / SMALBE-M, inside the seed's
-/// modified Newton–Raphson outer loop (seed section 5; ALGORITHMS.md section 8).
+/// @file Contact by Total FETI with the dual penalty / SMALBE-M, inside the
+/// modified Newton–Raphson outer loop (Vondrák et al. 2007, section 5; ALGORITHMS.md section 8).
 ///
 /// Per load step t_n of the problem's load history (fem/load_history.hpp; one step per load
 /// stage with small displacements) and outer iteration k:
@@ -8,7 +8,7 @@
 ///   the current configuration x = X + u,  c_E = u_D(t_n) - B_E u,
 ///   solve the dual QP for du with lambda the total multipliers (warm-started),
 ///   u <- u + du,  stop when ||du|| <= tol ||u||.
-/// By default K (and so F, K+, R) is assembled and factorized once (K_0, the seed's initial
+/// By default K (and so F, K+, R) is assembled and factorized once (K_0, Vondrák et al.'s initial
 /// step) and kept; only B_I, c_I and G change. Optionally K_M(u) with R(X + u) is refreshed
 /// per load step or per iteration. With linear kinematics one solve is exact.
 ///

@@ -15,7 +15,7 @@ namespace feticon::nonlinear
 enum class ContactMethod
 {
   smalbe,        ///< FETI, SMALBE-M + MPRGP (G lambda = e exact)
-  dual_penalty,  ///< FETI, MPRGP on the seed's problem (9)
+  dual_penalty,  ///< FETI, MPRGP on problem (9) of Vondrák et al. 2007
   primal_penalty ///< undecomposed, penalty springs eps_n <g>, CHOLMOD
 };
 
@@ -23,7 +23,7 @@ enum class ContactMethod
 /// tangent K_T: for a stressed floating subdomain its kernel is not the rigid modes.
 enum class StiffnessUpdate
 {
-  initial,   ///< K_0 assembled and factorized once (the seed's modified Newton–Raphson)
+  initial,   ///< K_0 assembled and factorized once (the modified Newton–Raphson of Vondrák et al. 2007)
   load_step, ///< K_M(u) with R from x = X + u, refreshed at the start of every load step
   iteration  ///< K_M(u) refreshed at every outer iteration
 };
