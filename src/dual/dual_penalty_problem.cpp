@@ -288,6 +288,16 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
       active_contacts += active[i];
     }
   out.active_contacts = feti.comm().sum(active_contacts);
+  // A body that only contact holds, with a load far below the force that would close the
+  // initial gaps elastically (b, in force units like lambda): the QP's tolerances, relative to
+  // ||b||, then admit lambda = 0 (measured on Hertz: from about 1e8 = 1 / qp.rtol on; issue 36).
+  const double b_norm = la::norm(feti.space(), b);
+  FETICON_CHECK(out.active_contacts > 0 || feti.n_kernel() == 0 || e_norm == 0 || b_norm * options.rtol < e_norm,
+                "the load on a body that only contact holds (" << e_norm << " N) is " << b_norm / e_norm
+                    << " times smaller than the force that would close the initial contact gaps elastically ("
+                    << b_norm << " N), beyond what the dual QP resolves at its tolerance (rtol " << options.rtol << ")"
+                    << ": it found no contact force. A softer material, a larger load, or bodies that touch "
+                       "where the load presses them");
   if (options.spectrum_steps > 0)
     measure_solution_face(feti, projector, F, options, norm.value, n_equality,
                           smalbe_method ? out.smalbe_rho : options.rho, active, out.report);
