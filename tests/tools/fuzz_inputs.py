@@ -232,8 +232,23 @@ def yaml_document(text, rng):
     return "".join(lines), f"{marker!r} inserted at line {i + 1}"
 
 
+def yaml_magnitude(text, rng):
+    """A number of a valid problem file (a modulus, a load, a size, a setting) times 10^k,
+    k in -30..30: a valid model far from steel's, which must solve or end in one line."""
+    numbers = [(v.start() + m.start(), v.start() + m.end(), float(m.group()))
+               for v in YAML_VALUE.finditer(text) for m in NUMBER.finditer(v.group())
+               if float(m.group()) != 0]
+    if not numbers:
+        return None
+    start, end, value = rng.choice(numbers)
+    exponent = rng.choice([-30, 30, rng.randint(-30, 30)])
+    new = f"{value * 10.0 ** exponent:.9e}"
+    line = text.count("\n", 0, start) + 1
+    return text[:start] + new + text[end:], f"{text[start:end]} on line {line} times 1e{exponent}"
+
+
 YAML_MUTATORS = [number_replacer(YAML_EXTREMES), yaml_value, yaml_insert, yaml_duplicate_key,
-                 yaml_alias, yaml_block_nesting, yaml_document]
+                 yaml_alias, yaml_block_nesting, yaml_document, yaml_magnitude, yaml_magnitude]
 
 
 # ---- Gmsh MSH sections ------------------------------------------------------------------------
