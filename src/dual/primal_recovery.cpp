@@ -6,7 +6,7 @@
 namespace feticon::dual
 {
 PrimalSolution recover_primal(const FetiOperators& feti, const la::Vector& f, const la::Vector& c,
-                              const la::Vector& lambda, const std::vector<char>& active)
+                              const la::Vector& lambda, const std::vector<char>& active, const std::string& unheld)
 {
   const la::Vector K_plus_r = feti.apply_K_plus(f - feti.apply_Bt(lambda));
   // F lambda - d = B K+ (B' lambda - f) + c = c - B K+ (f - B' lambda).
@@ -18,6 +18,7 @@ PrimalSolution recover_primal(const FetiOperators& feti, const la::Vector& f, co
   if (feti.n_kernel() > 0)
   {
     const CoarseProjector active_coarse(feti, std::nothrow, active);
+    FETICON_CHECK(active_coarse.full_rank() || unheld.empty(), unheld);
     FETICON_CHECK(active_coarse.full_rank(),
                   "no active contact holds a body that only contact can hold (the active constraints leave a "
                   "rigid-body motion free): is the load zero, too small to press the bodies together, or "
