@@ -1,4 +1,5 @@
 #include "contact/contact_constraints.hpp"
+#include "contact/contact_row_builder.hpp"
 
 #include "contact/mortar_constraints.hpp"
 
@@ -288,46 +289,21 @@ ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh,
            c.gap < contact_level + options.near_contact_fraction * face_diagonal(quads[c.face]);
   };
 
-  std::vector<Eigen::Triplet<double>> triplets;
+  const SlaveNodalAreas areas = slave_nodal_areas(mesh, u, pair.slave);
+  ContactRowBuilder rows;
+  std::vector<std::pair<int32_t, double>> weights(4);
   for (size_t i = 0; i < slave_nodes.size(); ++i)
   {
     const int32_t s = slave_nodes[i];
     const std::optional<ClosestPoint>& closest = closest_points[i];
     if (!closest || !(closest->gap < out.search_distance) || !near_contact(*closest))
       continue;
-
-    const auto row = static_cast<int>(out.slave_node.size());
     const Eigen::Vector4d shape = quad_shape_functions(closest->xi);
-    const double norm = std::sqrt(1 + shape.squaredNorm());
-    const Eigen::Vector3d n = closest->normal;
-    for (int k = 0; k < 3; ++k)
-    {
-      if (n(k) == 0)
-        continue;
-      triplets.emplace_back(row, 3 * s + k, -n(k) / norm);
-      for (int a = 0; a < 4; ++a)
-        if (shape(a) != 0)
-          triplets.emplace_back(row, 3 * faces[closest->face][a] + k, shape(a) * n(k) / norm);
-    }
-    out.slave_node.push_back(s);
-    out.normal.push_back(n);
-    out.gap.push_back(closest->gap);
-    out.row_norm.push_back(norm);
-    out.master_face.push_back(closest->face);
-    out.xi.push_back(closest->xi);
-    out.kind.push_back(closest->kind);
+    for (int a = 0; a < 4; ++a)
+      weights[a] = {faces[closest->face][a], shape(a)};
+    rows.add({s, closest->normal, closest->gap, areas.of(s), closest->face, closest->xi, closest->kind}, weights);
   }
-
-  const auto n_rows = static_cast<la::Index>(out.slave_node.size());
-  out.B.resize(n_rows, n_dofs);
-  out.B.setFromTriplets(triplets.begin(), triplets.end());
-  out.c.resize(n_rows);
-  for (la::Index i = 0; i < n_rows; ++i)
-    out.c(i) = out.gap[i] / out.row_norm[i];
-  const SlaveNodalAreas areas = slave_nodal_areas(mesh, u, pair.slave);
-  out.slave_area.reserve(out.slave_node.size());
-  for (const int32_t s : out.slave_node)
-    out.slave_area.push_back(areas.of(s));
+  rows.finish(n_dofs, out);
   return out;
 }
 

@@ -1,4 +1,5 @@
 #include "contact/mortar_constraints.hpp"
+#include "contact/contact_row_builder.hpp"
 
 #include "contact/surface_search.hpp"
 
@@ -201,7 +202,7 @@ ContactConstraints build_mortar_constraints(const mesh::HexMesh& mesh, const la:
   out.search_distance = closest.search_distance;
   out.n_slave_nodes = closest.n_slave_nodes;
   out.n_overhanging = closest.n_overhanging;
-  std::vector<Eigen::Triplet<double>> triplets;
+  ContactRowBuilder rows;
   CouplingRow weights;
   for (la::Index i = 0; i < closest.n_rows(); ++i)
   {
@@ -223,43 +224,17 @@ ContactConstraints build_mortar_constraints(const mesh::HexMesh& mesh, const la:
     }
     const Eigen::Vector3d n = closest.normal[i];
     Eigen::Vector3d master_point = Eigen::Vector3d::Zero();
-    double weights_squared = 0;
     for (auto& [node, weight] : weights)
     {
       weight /= overlap;
       master_point += weight * current_position(mesh, u, node);
-      weights_squared += weight * weight;
     }
     const double gap = n.dot(current_position(mesh, u, s) - master_point);
     if (!(gap < out.search_distance))
       continue;
-
-    const auto row = static_cast<int>(out.slave_node.size());
-    const double norm = std::sqrt(1 + weights_squared);
-    for (int k = 0; k < 3; ++k)
-    {
-      if (n(k) == 0)
-        continue;
-      triplets.emplace_back(row, 3 * s + k, -n(k) / norm);
-      for (const auto& [node, weight] : weights)
-        triplets.emplace_back(row, 3 * node + k, weight * n(k) / norm);
-    }
-    out.slave_node.push_back(s);
-    out.normal.push_back(n);
-    out.gap.push_back(gap);
-    out.row_norm.push_back(norm);
-    out.slave_area.push_back(nodal_area);
-    out.master_face.push_back(closest.master_face[i]);
-    out.xi.push_back(closest.xi[i]);
-    out.kind.push_back(closest.kind[i]);
+    rows.add({s, n, gap, nodal_area, closest.master_face[i], closest.xi[i], closest.kind[i]}, weights);
   }
-
-  const auto n_rows = static_cast<la::Index>(out.slave_node.size());
-  out.B.resize(n_rows, 3 * static_cast<la::Index>(mesh.n_nodes()));
-  out.B.setFromTriplets(triplets.begin(), triplets.end());
-  out.c.resize(n_rows);
-  for (la::Index i = 0; i < n_rows; ++i)
-    out.c(i) = out.gap[i] / out.row_norm[i];
+  rows.finish(3 * static_cast<la::Index>(mesh.n_nodes()), out);
   return out;
 }
 } // namespace feticon::contact

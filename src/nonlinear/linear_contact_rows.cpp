@@ -1,5 +1,7 @@
 #include "nonlinear/linear_contact_rows.hpp"
 
+#include "contact/contact_row_builder.hpp"
+
 #include <algorithm>
 #include <limits>
 
@@ -81,29 +83,11 @@ contact::ContactConstraints LinearContactRows::subset(const std::vector<char>& k
   out.n_slave_nodes = all.n_slave_nodes;
   out.n_overhanging = all.n_overhanging;
   const la::Vector gap = linearized_gaps(all, u);
-  std::vector<Eigen::Triplet<double>> triplets;
+  contact::ContactRowBuilder rows;
   for (la::Index i = 0; i < all.n_rows(); ++i)
-  {
-    if (!keep[i])
-      continue;
-    const auto row = static_cast<int>(out.slave_node.size());
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(all.B, i); it; ++it)
-      triplets.emplace_back(row, static_cast<int>(it.col()), it.value());
-    out.slave_node.push_back(all.slave_node[i]);
-    out.normal.push_back(all.normal[i]);
-    out.gap.push_back(gap(i));
-    out.row_norm.push_back(all.row_norm[i]);
-    out.slave_area.push_back(all.slave_area[i]);
-    out.master_face.push_back(all.master_face[i]);
-    out.xi.push_back(all.xi[i]);
-    out.kind.push_back(all.kind[i]);
-  }
-  const auto n_rows = static_cast<la::Index>(out.slave_node.size());
-  out.B.resize(n_rows, all.B.cols());
-  out.B.setFromTriplets(triplets.begin(), triplets.end());
-  out.c.resize(n_rows);
-  for (la::Index i = 0; i < n_rows; ++i)
-    out.c(i) = out.gap[i] / out.row_norm[i];
+    if (keep[i])
+      rows.copy(all, i, gap(i));
+  rows.finish(all.B.cols(), out);
   return out;
 }
 } // namespace feticon::nonlinear
