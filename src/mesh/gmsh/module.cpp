@@ -9,8 +9,7 @@ namespace feticon::mesh
 {
 namespace
 {
-template <class Operation>
-std::string error_of(Operation&& operation)
+template <class Operation> std::string error_of(Operation&& operation)
 {
   try
   {
