@@ -12,17 +12,20 @@ namespace
 {
 constexpr char magic[9] = "FETICKP1";
 
-template <class T> void write_block(std::ostream& os, const T* data, int64_t count)
+template <class T>
+void write_block(std::ostream& os, const T* data, int64_t count)
 {
   os.write(reinterpret_cast<const char*>(&count), sizeof count);
   os.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(count * sizeof(T)));
 }
 
-template <class T> std::vector<T> read_block(std::istream& is, const std::filesystem::path& path)
+template <class T>
+std::vector<T> read_block(std::istream& is, const std::filesystem::path& path)
 {
   int64_t count = -1;
   is.read(reinterpret_cast<char*>(&count), sizeof count);
-  FETICON_CHECK(is && count >= 0 && count < (int64_t(1) << 36), path.string() << ": truncated or corrupt checkpoint");
+  FETICON_CHECK(is && count >= 0 && count < (int64_t(1) << 36),
+                path.string() << ": truncated or corrupt checkpoint");
   std::vector<T> values(static_cast<size_t>(count));
   is.read(reinterpret_cast<char*>(values.data()), static_cast<std::streamsize>(count * sizeof(T)));
   FETICON_CHECK(is, path.string() << ": truncated checkpoint");
@@ -33,38 +36,18 @@ nlohmann::json records(const nonlinear::ContactSolution& s)
 {
   nlohmann::json steps = nlohmann::json::array(), history = nlohmann::json::array();
   for (const auto& st : s.steps)
-    steps.push_back({st.load_factor, st.outer_iterations, st.converged, st.displacement_change, st.residual_norm,
-                     st.inner_iterations, st.floor});
+    steps.push_back({st.load_factor, st.outer_iterations, st.converged, st.displacement_change,
+                     st.residual_norm, st.inner_iterations, st.floor});
   for (const auto& it : s.history)
-    history.push_back({it.load_step,
-                       it.iteration,
-                       it.qp.iterations,
-                       it.qp.cg_steps,
-                       it.qp.expansion_steps,
-                       it.qp.proportioning_steps,
-                       it.qp.hessian_multiplications,
-                       it.qp.outer_iterations,
-                       it.residual_norm,
-                       it.displacement_change,
-                       it.active_contacts,
-                       it.feasibility_error,
-                       it.seconds,
-                       it.qp.ritz.min,
-                       it.qp.ritz.max,
-                       it.qp.ritz.cg_steps,
-                       it.qp.rho_updates,
-                       it.final_rho,
-                       it.qp.expansion_fallbacks,
-                       it.qp.operator_applications,
-                       it.qp.operator_seconds,
-                       it.qp.preconditioner_applications,
-                       it.qp.preconditioner_seconds,
+    history.push_back({it.load_step, it.iteration, it.qp.iterations, it.qp.cg_steps, it.qp.expansion_steps,
+                       it.qp.proportioning_steps, it.qp.hessian_multiplications, it.qp.outer_iterations,
+                       it.residual_norm, it.displacement_change, it.active_contacts,
+                       it.feasibility_error, it.seconds, it.qp.ritz.min, it.qp.ritz.max, it.qp.ritz.cg_steps,
+                       it.qp.rho_updates, it.final_rho, it.qp.expansion_fallbacks, it.qp.operator_applications,
+                       it.qp.operator_seconds, it.qp.preconditioner_applications, it.qp.preconditioner_seconds,
                        it.qp.seconds});
-  return {{"completed_steps", s.restart.completed_steps},
-          {"steps", steps},
-          {"history", history},
-          {"smalbe_M", s.restart.smalbe_M},
-          {"smalbe_rho", s.restart.smalbe_rho},
+  return {{"completed_steps", s.restart.completed_steps}, {"steps", steps}, {"history", history},
+          {"smalbe_M", s.restart.smalbe_M}, {"smalbe_rho", s.restart.smalbe_rho},
           {"pfp_norm", s.restart.pfp_norm}};
 }
 } // namespace
@@ -73,9 +56,7 @@ void write_checkpoint(const std::filesystem::path& path, const nonlinear::Contac
 {
   const auto& r = solution.restart;
   const std::string json = records(solution).dump();
-  feticon::write_file_atomically(path,
-                                 [&](std::ostream& os)
-                                 {
+  feticon::write_file_atomically(path, [&](std::ostream& os) {
     os.write(magic, 8);
     write_block(os, r.u_stacked.data(), r.u_stacked.size());
     write_block(os, r.lambda.data(), r.lambda.size());
@@ -182,7 +163,7 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
   }
   if (is.peek() != std::char_traits<char>::eof())
     r.schur_boundary = read_block<int32_t>(is, path);
-  FETICON_CHECK(r.completed_steps >= 1 && r.u_stacked.allFinite(), path.string()
-                                                                       << ": the checkpoint holds no converged step");
+  FETICON_CHECK(r.completed_steps >= 1 && r.u_stacked.allFinite(),
+                path.string() << ": the checkpoint holds no converged step");
 }
 } // namespace feticon::app

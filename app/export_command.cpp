@@ -62,8 +62,8 @@ void export_model(const ExportOptions& options)
   message << "export: " << (dir / "feticon.inp").string() << ": " << s.n_nodes << " nodes, " << s.n_elements
           << " C3D8 elements, " << s.n_contact_pairs << " contact pair(s) (" << s.n_slave_faces << " slave, "
           << s.n_master_faces << " master faces, K = " << s.contact_stiffness << " Pa/m), " << s.n_cloads
-          << " nodal loads, total (" << s.total_load[0] << ", " << s.total_load[1] << ", " << s.total_load[2] << ") N, "
-          << deck.increments << " increment(s)" << (deck.nlgeom ? ", NLGEOM" : "");
+          << " nodal loads, total (" << s.total_load[0] << ", " << s.total_load[1] << ", " << s.total_load[2]
+          << ") N, " << deck.increments << " increment(s)" << (deck.nlgeom ? ", NLGEOM" : "");
   if (s.overclosure > 0)
     message << ", floating slave body shifted " << s.overclosure << " m into its master";
   log::info(message.str());

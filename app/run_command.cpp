@@ -87,7 +87,8 @@ nlohmann::ordered_json hertz_json(const Comparison& h, const Comparison& referen
                                 {"p_peak_computed", h.p_peak_computed},
                                 {"rms_error_over_p0", h.rms_error_over_p0}};
   if (large)
-    out["reference_frame"] = {{"a_computed", reference.a_computed}, {"rms_error_over_p0", reference.rms_error_over_p0}};
+    out["reference_frame"] = {{"a_computed", reference.a_computed},
+                              {"rms_error_over_p0", reference.rms_error_over_p0}};
   return out;
 }
 
@@ -218,8 +219,7 @@ void write_step(RunContext& run, int step, const nonlinear::ContactSolution& sol
 nonlinear::ContactSolution solve(RunContext& run)
 {
   const nonlinear::SolverSettings& solver = run.solver;
-  const auto on_step = [&run](int step, const nonlinear::ContactSolution& solution)
-  { write_step(run, step, solution); };
+  const auto on_step = [&run](int step, const nonlinear::ContactSolution& solution) { write_step(run, step, solution); };
   FETICON_CHECK(run.comm.serial() || solver.method != nonlinear::ContactMethod::primal_penalty,
                 "method primal_penalty solves the undecomposed problem on one rank; run it without mpirun");
   FETICON_CHECK(!run.restart || solver.method != nonlinear::ContactMethod::primal_penalty,

@@ -97,8 +97,8 @@ CgroupRoom cgroup_memory_room(const MemorySources& sources)
     std::string name;
     while (std::getline(names, name, ','))
       if (name == "memory")
-        tightest_room({root / "memory", "memory.limit_in_bytes", "memory.usage_in_bytes", "total_inactive_file"}, path,
-                      out);
+        tightest_room({root / "memory", "memory.limit_in_bytes", "memory.usage_in_bytes", "total_inactive_file"},
+                      path, out);
   }
   return out;
 }
@@ -112,13 +112,7 @@ AvailableMemory available_memory(const MemorySources& sources)
   return out;
 }
 
-int64_t available_memory_bytes()
-{
-  return available_memory().bytes;
-}
+int64_t available_memory_bytes() { return available_memory().bytes; }
 
-int64_t resident_memory_bytes()
-{
-  return read_keyed("/proc/self/status", "VmRSS", 1024).value_or(0);
-}
+int64_t resident_memory_bytes() { return read_keyed("/proc/self/status", "VmRSS", 1024).value_or(0); }
 } // namespace feticon

@@ -10,18 +10,9 @@ Level current_level = Level::summary;
 int current_rank = 0;
 } // namespace
 
-void set_level(Level l)
-{
-  current_level = l;
-}
-Level level()
-{
-  return current_level;
-}
-void set_rank(int rank)
-{
-  current_rank = rank;
-}
+void set_level(Level l) { current_level = l; }
+Level level() { return current_level; }
+void set_rank(int rank) { current_rank = rank; }
 
 void write(Level l, const std::string& line)
 {

@@ -23,20 +23,8 @@ Level level();
 void set_rank(int rank);
 
 void write(Level level, const std::string& line);
-inline void warning(const std::string& line)
-{
-  write(Level::warning, "warning: " + line);
-}
-inline void info(const std::string& line)
-{
-  write(Level::summary, line);
-}
-inline void iteration(const std::string& line)
-{
-  write(Level::iterations, line);
-}
-inline bool enabled(Level l)
-{
-  return static_cast<int>(l) <= static_cast<int>(level());
-}
+inline void warning(const std::string& line) { write(Level::warning, "warning: " + line); }
+inline void info(const std::string& line) { write(Level::summary, line); }
+inline void iteration(const std::string& line) { write(Level::iterations, line); }
+inline bool enabled(Level l) { return static_cast<int>(l) <= static_cast<int>(level()); }
 } // namespace feticon::log

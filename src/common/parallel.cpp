@@ -171,10 +171,7 @@ ThreadPool* pool()
 }
 } // namespace
 
-int hardware_cores()
-{
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
+int hardware_cores() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
 
 void set_threads(int threads)
 {
@@ -183,10 +180,7 @@ void set_threads(int threads)
   serialize_openmp();
 }
 
-int threads()
-{
-  return configured_threads();
-}
+int threads() { return configured_threads(); }
 
 void parallel_for(int32_t first, int32_t end, int64_t work, const std::function<void(int32_t)>& body)
 {
@@ -200,13 +194,7 @@ void parallel_for(int32_t first, int32_t end, int64_t work, const std::function<
   p->run(first, end, body);
 }
 
-ScopedBlasThreads::ScopedBlasThreads(int threads)
-{
-  set_blas_threads(std::max(1, threads));
-}
+ScopedBlasThreads::ScopedBlasThreads(int threads) { set_blas_threads(std::max(1, threads)); }
 
-ScopedBlasThreads::~ScopedBlasThreads()
-{
-  set_blas_threads(1);
-}
+ScopedBlasThreads::~ScopedBlasThreads() { set_blas_threads(1); }
 } // namespace feticon

@@ -32,8 +32,8 @@ std::string TimerTable::format() const
   std::ostringstream os;
   os << std::left << std::setw(28) << "phase" << std::right << std::setw(12) << "seconds\n";
   for (const auto& [name, seconds] : entries())
-    os << std::left << std::setw(28) << name << std::right << std::setw(11) << std::fixed << std::setprecision(3)
-       << seconds << '\n';
+    os << std::left << std::setw(28) << name << std::right << std::setw(11) << std::fixed
+       << std::setprecision(3) << seconds << '\n';
   return os.str();
 }
 
@@ -42,10 +42,7 @@ ScopedTimer::ScopedTimer(TimerTable& table, std::string phase)
 {
 }
 
-ScopedTimer::~ScopedTimer()
-{
-  _table.add(_phase, seconds_since(_start));
-}
+ScopedTimer::~ScopedTimer() { _table.add(_phase, seconds_since(_start)); }
 
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
@@ -71,8 +68,5 @@ long proc_bytes(const char* path, const std::string& key)
 }
 } // namespace
 
-long peak_memory_bytes()
-{
-  return proc_bytes("/proc/self/status", "VmHWM:");
-}
+long peak_memory_bytes() { return proc_bytes("/proc/self/status", "VmHWM:"); }
 } // namespace feticon

@@ -40,10 +40,7 @@ inline constexpr std::array<std::array<double, 2>, 4> quad_corners = {{
 }};
 
 /// Reference coordinates of corner a as a vector.
-inline Eigen::Vector2d quad_corner(int a)
-{
-  return {quad_corners[a][0], quad_corners[a][1]};
-}
+inline Eigen::Vector2d quad_corner(int a) { return {quad_corners[a][0], quad_corners[a][1]}; }
 
 /// Bilinear shape functions N_a(xi), a = 0..3; they sum to 1.
 Eigen::Vector4d quad_shape_functions(const Eigen::Vector2d& xi);
@@ -97,5 +94,6 @@ QuadProjection project_to_quad(const QuadCoordinates& quad, const Eigen::Vector3
                                const ProjectionOptions& options = {});
 
 /// Closest point on the straight segment [a, b]: the parameter t in [0, 1] of a + t (b - a).
-double closest_on_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& point);
+double closest_on_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                          const Eigen::Vector3d& point);
 } // namespace feticon::contact

@@ -7,12 +7,13 @@
 
 namespace feticon::decomposition
 {
-Decomposition::Decomposition(const mesh::HexMesh& mesh, const Partition& partition, std::array<bool, 3> eliminated,
-                             par::Communicator comm)
+Decomposition::Decomposition(const mesh::HexMesh& mesh, const Partition& partition,
+                             std::array<bool, 3> eliminated, par::Communicator comm)
     : _mesh(mesh), _partition(partition), _eliminated(eliminated), _comm(comm)
 {
   FETICON_CHECK(static_cast<int32_t>(partition.cell_subdomain.size()) == mesh.n_cells(),
-                "partition has " << partition.cell_subdomain.size() << " cells, the mesh " << mesh.n_cells());
+                "partition has " << partition.cell_subdomain.size() << " cells, the mesh "
+                                 << mesh.n_cells());
   std::vector<std::vector<int32_t>> cells(partition.n_subdomains);
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
     cells[partition.cell_subdomain[c]].push_back(c);
@@ -45,8 +46,9 @@ Decomposition::Decomposition(const mesh::HexMesh& mesh, const Partition& partiti
   // Contiguous ranges balanced by DOFs (factorization and solves scale with them): rank r
   // ends its range at the subdomain whose cumulative DOFs come closest to (r + 1) / size.
   const int n_ranks = _comm.size();
-  FETICON_CHECK(n_ranks <= partition.n_subdomains, n_ranks << " ranks but only " << partition.n_subdomains
-                                                           << " subdomains: use at least one subdomain per rank");
+  FETICON_CHECK(n_ranks <= partition.n_subdomains,
+                n_ranks << " ranks but only " << partition.n_subdomains
+                        << " subdomains: use at least one subdomain per rank");
   _rank_first.assign(n_ranks + 1, 0);
   _rank_first[n_ranks] = partition.n_subdomains;
   const double total = static_cast<double>(_offsets.back());
@@ -54,8 +56,9 @@ Decomposition::Decomposition(const mesh::HexMesh& mesh, const Partition& partiti
   {
     const double target = total * r / n_ranks;
     int32_t end = std::max(_rank_first[r - 1] + 1, int32_t{1});
-    while (end < partition.n_subdomains - (n_ranks - r) && std::abs(static_cast<double>(_offsets[end + 1]) - target) <
-                                                               std::abs(static_cast<double>(_offsets[end]) - target))
+    while (end < partition.n_subdomains - (n_ranks - r) &&
+           std::abs(static_cast<double>(_offsets[end + 1]) - target) <
+               std::abs(static_cast<double>(_offsets[end]) - target))
       ++end;
     _rank_first[r] = end;
   }
@@ -63,7 +66,8 @@ Decomposition::Decomposition(const mesh::HexMesh& mesh, const Partition& partiti
 
 int Decomposition::owner_rank(int32_t s) const
 {
-  return static_cast<int>(std::upper_bound(_rank_first.begin(), _rank_first.end(), s) - _rank_first.begin()) - 1;
+  return static_cast<int>(std::upper_bound(_rank_first.begin(), _rank_first.end(), s) -
+                          _rank_first.begin()) - 1;
 }
 
 la::Vector Decomposition::gather_stacked(const la::Vector& stacked) const
@@ -80,7 +84,8 @@ Eigen::VectorBlock<la::Vector> Decomposition::segment(la::Vector& stacked, int32
   return stacked.segment(offset(s), _offsets[s + 1] - _offsets[s]);
 }
 
-Eigen::VectorBlock<const la::Vector> Decomposition::segment(const la::Vector& stacked, int32_t s) const
+Eigen::VectorBlock<const la::Vector> Decomposition::segment(const la::Vector& stacked,
+                                                            int32_t s) const
 {
   FETICON_ASSERT(owns(s), "segment of a subdomain owned by another rank");
   return stacked.segment(offset(s), _offsets[s + 1] - _offsets[s]);

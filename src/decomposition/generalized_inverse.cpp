@@ -7,7 +7,8 @@
 
 namespace feticon::decomposition
 {
-std::vector<int32_t> choose_fixing_nodes(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& coords)
+std::vector<int32_t> choose_fixing_nodes(
+    const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& coords)
 {
   const la::Index n = coords.rows();
   FETICON_CHECK(n >= 3, "a subdomain needs at least 3 nodes, it has " << n);
@@ -29,15 +30,15 @@ std::vector<int32_t> choose_fixing_nodes(const Eigen::Matrix<double, Eigen::Dyna
 }
 
 void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
-                               const std::vector<int32_t>& fixing_candidates, GeneralizedInverseMethod method,
-                               const std::string& what)
+                               const std::vector<int32_t>& fixing_candidates,
+                               GeneralizedInverseMethod method, const std::string& what)
 {
   _method = method;
   _n = K.rows();
   const la::Index k = R.cols();
-  FETICON_CHECK(static_cast<la::Index>(fixing_candidates.size()) >= k, what << ": " << fixing_candidates.size()
-                                                                            << " fixing DOFs cannot remove a kernel of "
-                                                                            << "dimension " << k);
+  FETICON_CHECK(static_cast<la::Index>(fixing_candidates.size()) >= k,
+                what << ": " << fixing_candidates.size() << " fixing DOFs cannot remove a kernel of "
+                     << "dimension " << k);
   // Rows of R at the candidate DOFs; a column-pivoted QR of its transpose picks the k
   // candidates whose k x k block of R is best conditioned.
   la::Matrix R_fix(static_cast<la::Index>(fixing_candidates.size()), k);
@@ -72,7 +73,8 @@ void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
         position[i] = static_cast<int32_t>(_kept.size());
         _kept.push_back(static_cast<int32_t>(i));
       }
-    _factor.factorize(la::principal_submatrix(K, position, static_cast<int32_t>(_kept.size())), what.c_str());
+    _factor.factorize(la::principal_submatrix(K, position, static_cast<int32_t>(_kept.size())),
+                      what.c_str());
     return;
   }
 

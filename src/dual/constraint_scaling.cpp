@@ -8,7 +8,8 @@
 
 namespace feticon::dual
 {
-ConstraintScaling::ConstraintScaling(const FetiOperators& feti, int64_t n_equality) : _feti(feti)
+ConstraintScaling::ConstraintScaling(const FetiOperators& feti, int64_t n_equality)
+    : _feti(feti)
 {
   const auto is_contact = [n_equality](int64_t id) { return id >= n_equality; };
   std::vector<int64_t> local_keys;

@@ -23,7 +23,10 @@ class GTildeOperator : public qp::EqualityOperator
 public:
   explicit GTildeOperator(const CoarseProjector& projector) : _projector(projector) {}
   la::Vector apply(const la::Vector& x) const override { return _projector.apply_G_tilde(x); }
-  la::Vector apply_transpose(const la::Vector& y) const override { return _projector.apply_G_tilde_t(y); }
+  la::Vector apply_transpose(const la::Vector& y) const override
+  {
+    return _projector.apply_G_tilde_t(y);
+  }
 
 private:
   const CoarseProjector& _projector;
@@ -71,8 +74,8 @@ private:
 /// from the equality rows alone, when they fix every rigid mode; then the contact bounds
 /// are simply lambda_I >= 0 and mu = 0 is feasible. Otherwise (a body held only by
 /// contact, like the Hertz cylinder) variant A, the minimal-norm G'(GG')^{-1} e.
-la::Vector particular_solution(const FetiOperators& feti, const CoarseProjector& projector, const la::Vector& e,
-                               int64_t n_equality)
+la::Vector particular_solution(const FetiOperators& feti, const CoarseProjector& projector,
+                               const la::Vector& e, int64_t n_equality)
 {
   // Either variant must satisfy G lambda~ = e. The pivot test of G_E G_E' can miss a
   // mode that only contact holds once that matrix is large (a 1 025-subdomain punch: the
@@ -94,9 +97,9 @@ la::Vector particular_solution(const FetiOperators& feti, const CoarseProjector&
   }
   la::Vector lambda_tilde = projector.particular_solution(e);
   const double residual = (feti.apply_G(lambda_tilde) - e).norm();
-  FETICON_CHECK(residual <= tolerance,
-                "coarse problem: ||G lambda~ - e|| = " << residual << " exceeds " << tolerance
-                                                       << " (G G' too ill-conditioned to balance the loads)");
+  FETICON_CHECK(residual <= tolerance, "coarse problem: ||G lambda~ - e|| = "
+                                           << residual << " exceeds " << tolerance
+                                           << " (G G' too ill-conditioned to balance the loads)");
   return lambda_tilde;
 }
 /// D_F x: the components outside the face F set to 0, an orthogonal projector.
@@ -162,8 +165,9 @@ void measure_solution_face(const FetiOperators& feti, const CoarseProjector& pro
 }
 } // namespace
 
-DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked,
-                                int64_t n_equality, const DualPenaltyOptions& options, const DualWarmStart& warm)
+DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
+                                const la::Vector& f_stacked, int64_t n_equality,
+                                const DualPenaltyOptions& options, const DualWarmStart& warm)
 {
   const int64_t m = feti.n_dual();
   FETICON_CHECK(c.size() == m && n_equality <= feti.n_dual_global(), "dual problem: sizes do not match");
@@ -181,9 +185,11 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, 
   // caller passes the last estimate while F is the same, and the power iterations (6-7
   // products per QP on Hertz) are skipped. It only scales F; a too small value makes an
   // expansion step too long, which MPRGP detects and halves.
-  const qp::NormEstimate norm = warm.pfp_norm > 0 ? qp::NormEstimate{warm.pfp_norm, 0}
-                                                  : qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1);
-  FETICON_CHECK(norm.value > 0 && std::isfinite(norm.value), "||PFP|| estimate " << norm.value << " is not positive");
+  const qp::NormEstimate norm =
+      warm.pfp_norm > 0 ? qp::NormEstimate{warm.pfp_norm, 0}
+                        : qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1);
+  FETICON_CHECK(norm.value > 0 && std::isfinite(norm.value), "||PFP|| estimate " << norm.value
+                                                                                 << " is not positive");
   out.pfp_norm = norm.value;
   const double scale = 1.0 / norm.value;
   const FOperator F(feti, scale);
@@ -201,8 +207,8 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, 
   // Warm start projected onto Ker G: when K_M(u) or the contact rows change, G changes and
   // lambda_start - lambda~ is far from Ker G, which SMALBE-M would then repair slowly
   // through its multiplier (the inner stop ||g_P|| <= M ||G~ mu|| passes at once).
-  la::Vector mu =
-      warm.lambda.size() == m ? projector.apply_P(warm.lambda - lambda_tilde) : la::Vector(la::Vector::Zero(m));
+  la::Vector mu = warm.lambda.size() == m ? projector.apply_P(warm.lambda - lambda_tilde)
+                                          : la::Vector(la::Vector::Zero(m));
 
   qp::MprgpOptions mprgp;
   mprgp.rtol = options.rtol;
@@ -213,8 +219,8 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, 
   std::optional<DualPreconditionerOperator> preconditioner;
   std::optional<la::TimedOperator> timed_preconditioner;
   if (options.preconditioner != DualPreconditioner::none)
-    timed_preconditioner.emplace(
-        preconditioner.emplace(feti, projector, options, norm.value, n_equality, smalbe_method ? 0.0 : options.rho));
+    timed_preconditioner.emplace(preconditioner.emplace(feti, projector, options, norm.value, n_equality,
+                                                        smalbe_method ? 0.0 : options.rho));
   if (!smalbe_method)
   {
     mprgp.preconditioner = timed_preconditioner ? &*timed_preconditioner : nullptr;
@@ -245,7 +251,8 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, 
     std::optional<qp::SmalbeStart> start;
     if (warm.coarse_multiplier.size() == feti.n_kernel())
       start = qp::SmalbeStart{projector.tilde_multiplier(scale * warm.coarse_multiplier),
-                              warm.M > 0 ? warm.M : options.smalbe_M0, std::max(warm.rho, options.rho)};
+                              warm.M > 0 ? warm.M : options.smalbe_M0,
+                              std::max(warm.rho, options.rho)};
     const qp::SmalbeReport r = solver.solve(b, lower, mu, start ? &*start : nullptr);
     out.report = r;
     out.coarse_multiplier = projector.coarse_multiplier(r.omega) / scale;
@@ -262,7 +269,8 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, 
   }
   out.lambda = lambda_tilde + mu;
   const double e_norm = e.norm();
-  out.feasibility_error = (feti.apply_G(out.lambda) - e).norm() / (e_norm > 0 ? e_norm : 1.0);
+  out.feasibility_error =
+      (feti.apply_G(out.lambda) - e).norm() / (e_norm > 0 ? e_norm : 1.0);
 
   // Active rows: equalities and contact rows with a positive multiplier. MPRGP keeps
   // bound components exactly at the bound, so lambda_i = 0 there up to round-off; the

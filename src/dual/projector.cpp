@@ -31,7 +31,7 @@ CoarseProjector::CoarseProjector(const FetiOperators& feti, std::vector<char> ma
     : CoarseProjector(feti, std::nothrow, std::move(mask))
 {
   FETICON_CHECK(_full_rank, "the constraints do not suppress every rigid-body motion (G G' is "
-                            "singular): a body is free to move; add supports or symmetry conditions");
+                           "singular): a body is free to move; add supports or symmetry conditions");
 }
 
 la::Vector CoarseProjector::apply_G(const la::Vector& lambda) const
@@ -44,10 +44,7 @@ la::Vector CoarseProjector::apply_Gt(const la::Vector& alpha) const
   return _feti.apply_Gt(alpha, _mask.empty() ? nullptr : &_mask);
 }
 
-la::Vector CoarseProjector::coarse_solve(const la::Vector& y) const
-{
-  return _llt.solve(y);
-}
+la::Vector CoarseProjector::coarse_solve(const la::Vector& y) const { return _llt.solve(y); }
 
 la::Vector CoarseProjector::apply_Q(const la::Vector& lambda) const
 {

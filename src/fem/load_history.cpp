@@ -13,7 +13,8 @@ namespace feticon::fem
 namespace
 {
 /// Runs `check`, prefixing the message of a feticon::Error it throws with the stage.
-template <class F> auto in_stage(int stage, F&& check)
+template <class F>
+auto in_stage(int stage, F&& check)
 {
   try
   {
@@ -30,9 +31,8 @@ la::Vector stage_force(const Problem& problem, const LoadStage& stage, int numbe
 {
   const mesh::HexMesh& mesh = problem.mesh;
   la::Vector f = la::Vector::Zero(3 * static_cast<la::Index>(mesh.n_nodes()));
-  in_stage(number,
-           [&]
-           {
+  in_stage(number, [&]
+  {
     for (const FaceTraction& t : stage.tractions)
     {
       FETICON_CHECK(!mesh.face_set(t.set).empty() && t.traction.allFinite(),
@@ -47,9 +47,10 @@ la::Vector stage_force(const Problem& problem, const LoadStage& stage, int numbe
     }
     for (const NodalForce& n : stage.nodal_forces)
     {
-      FETICON_CHECK(
-          n.node >= 0 && n.node < mesh.n_nodes() && n.component >= 0 && n.component < 3 && std::isfinite(n.value),
-          "the nodal force on node " << n.node << ", component " << n.component << " is out of range or not finite");
+      FETICON_CHECK(n.node >= 0 && n.node < mesh.n_nodes() && n.component >= 0 && n.component < 3 &&
+                        std::isfinite(n.value),
+                    "the nodal force on node " << n.node << ", component " << n.component
+                                               << " is out of range or not finite");
       f(3 * static_cast<la::Index>(n.node) + n.component) += n.value;
     }
   });
@@ -64,9 +65,8 @@ la::Vector stage_force(const Problem& problem, const LoadStage& stage, int numbe
 /// Problem::all_constrained_dofs() makes stage 1's.
 ConstrainedDofs stage_dirichlet(const Problem& problem, const LoadStage& stage, int number)
 {
-  return in_stage(number,
-                  [&]
-                  {
+  return in_stage(number, [&]
+  {
     for (const DirichletCondition& d : stage.dirichlet)
       for (const std::optional<double>& v : d.value)
         FETICON_CHECK(!v || std::isfinite(*v), "a prescribed value on '" << d.set << "' is not finite");
@@ -79,8 +79,8 @@ ConstrainedDofs stage_dirichlet(const Problem& problem, const LoadStage& stage, 
         for (int32_t n = 0; n < problem.mesh.n_nodes(); ++n)
         {
           auto [it, inserted] = merged.emplace(3 * static_cast<int64_t>(n) + i, 0.0);
-          FETICON_CHECK(it->second == 0.0, "node " << n << " prescribes " << it->second << " for component " << i
-                                                   << ", which plane strain fixes to zero");
+          FETICON_CHECK(it->second == 0.0, "node " << n << " prescribes " << it->second << " for component "
+                                                   << i << ", which plane strain fixes to zero");
         }
     return to_constrained_dofs(merged);
   });
@@ -160,10 +160,11 @@ LoadHistory::LoadHistory(std::vector<int64_t> dofs, std::vector<StageEnd> stages
   {
     const StageEnd& end = _stages[s];
     FETICON_CHECK(end.steps >= 1, "load stage " << s + 1 << " has " << end.steps << " load steps, must be >= 1");
-    FETICON_CHECK(
-        end.force.size() == _stages[0].force.size() && end.values.size() == static_cast<la::Index>(_dofs.size()),
-        "load stage " << s + 1 << ": " << end.force.size() << " forces and " << end.values.size()
-                      << " prescribed values, expected " << _stages[0].force.size() << " and " << _dofs.size());
+    FETICON_CHECK(end.force.size() == _stages[0].force.size() &&
+                      end.values.size() == static_cast<la::Index>(_dofs.size()),
+                  "load stage " << s + 1 << ": " << end.force.size() << " forces and " << end.values.size()
+                                << " prescribed values, expected " << _stages[0].force.size() << " and "
+                                << _dofs.size());
     _last_step.push_back((s == 0 ? 0 : _last_step.back()) + end.steps);
     _force_norm.push_back(end.force.norm());
   }
@@ -178,8 +179,7 @@ int LoadHistory::last_step(int stage) const
 LoadPoint LoadHistory::point(int step) const
 {
   FETICON_CHECK(step >= 1 && step <= n_steps(), "load step " << step << " of " << n_steps());
-  const auto stage =
-      static_cast<int>(std::lower_bound(_last_step.begin(), _last_step.end(), step) - _last_step.begin());
+  const auto stage = static_cast<int>(std::lower_bound(_last_step.begin(), _last_step.end(), step) - _last_step.begin());
   const int j = step - (stage == 0 ? 0 : _last_step[stage - 1]);
   // As a one-stage run's t = n / N, so that stage 1 reproduces its numbers exactly.
   const double fraction = static_cast<double>(j) / _stages[stage].steps;

@@ -79,7 +79,7 @@ int32_t body_of_faces(const mesh::HexMesh& mesh, const std::string& set,
   for (const auto& [cell, f] : faces)
     bodies.insert(mesh.cell_body[cell]);
   FETICON_CHECK(bodies.size() == 1, "calculix export: contact surface '" << set << "' spans " << bodies.size()
-                                                                         << " bodies; it must lie on one");
+                                                                        << " bodies; it must lie on one");
   return *bodies.begin();
 }
 
@@ -121,12 +121,12 @@ bool floats_along(const fem::Problem& problem, int32_t body, const Eigen::Vector
 }
 } // namespace
 
-CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const CalculixOptions& options, std::ostream& out)
+CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const CalculixOptions& options,
+                                        std::ostream& out)
 {
   FETICON_CHECK(options.increments >= 1, "calculix export: increments = " << options.increments << " must be >= 1");
   FETICON_CHECK(std::isfinite(options.contact_stiffness_factor) && options.contact_stiffness_factor > 0,
-                "calculix export: contact stiffness factor " << options.contact_stiffness_factor
-                                                             << " must be positive");
+                "calculix export: contact stiffness factor " << options.contact_stiffness_factor << " must be positive");
   const mesh::HexMesh& mesh = problem.mesh;
   CalculixDeckSummary summary;
   summary.n_nodes = mesh.n_nodes();
@@ -153,8 +153,8 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
     pair.master = element_faces(mesh, names.master, cells_of_node);
     const int32_t slave_body = body_of_faces(mesh, names.slave, pair.slave);
     const int32_t master_body = body_of_faces(mesh, names.master, pair.master);
-    FETICON_CHECK(slave_body != master_body,
-                  "calculix export: contact pair " << names.slave << " / " << names.master << " lies on one body");
+    FETICON_CHECK(slave_body != master_body, "calculix export: contact pair " << names.slave << " / " << names.master
+                                                                              << " lies on one body");
     const double slave_size = mean_normal_and_size(mesh, names.slave).second;
     const Eigen::Vector3d master_normal = mean_normal_and_size(mesh, names.master).first;
     const double young = std::max(problem.materials[slave_body].young, problem.materials[master_body].young);
@@ -222,8 +222,7 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   for (size_t p = 0; p < pairs.size(); ++p)
   {
     const fem::ContactPairNames& names = problem.contacts[p];
-    for (const auto& [set, faces] :
-         {std::pair{names.slave, &pairs[p].slave}, std::pair{names.master, &pairs[p].master}})
+    for (const auto& [set, faces] : {std::pair{names.slave, &pairs[p].slave}, std::pair{names.master, &pairs[p].master}})
     {
       out << "*SURFACE, NAME=" << deck_name("S_", set) << ", TYPE=ELEMENT\n";
       for (const auto& [cell, f] : *faces)

@@ -84,10 +84,7 @@ const std::map<std::string, std::string> unsupported_keywords = {
     {"DISTRIBUTING COUPLING", "coupling constraints"},
 };
 
-std::string text(std::string_view v)
-{
-  return std::string(v);
-}
+std::string text(std::string_view v) { return std::string(v); }
 
 /// Upper-case name of a data field (set, surface and material names are case-insensitive).
 std::string name_of(std::string_view v)
@@ -224,8 +221,8 @@ private:
       const auto& sets = is_node ? _data.node_sets : _data.element_sets;
       const auto it = sets.find(name_of(line.fields[i]));
       if (it == sets.end())
-        fail_at(line.at(i),
-                std::string(is_node ? "no node set '" : "no element set '") + name_of(line.fields[i]) + "' is defined");
+        fail_at(line.at(i), std::string(is_node ? "no node set '" : "no element set '") + name_of(line.fields[i]) +
+                                "' is defined");
       return it->second.expand();
     }
     return {entity(line, i, is_node)};
@@ -324,8 +321,9 @@ private:
       if (index >= _data.coordinates.rows()) // more nodes than the outline counted
         _data.coordinates.conservativeResize(2 * static_cast<Eigen::Index>(index) + 1024, 3);
       for (int k = 1; k <= 3; ++k)
-        _data.coordinates(index, k - 1) =
-            static_cast<size_t>(k) < line.fields.size() && !line.fields[k].empty() ? real(line, k, "coordinate") : 0.0;
+        _data.coordinates(index, k - 1) = static_cast<size_t>(k) < line.fields.size() && !line.fields[k].empty()
+                                              ? real(line, k, "coordinate")
+                                              : 0.0;
       if (set)
         set->push_back(index);
     }
@@ -336,11 +334,9 @@ private:
     known_parameters({"TYPE", "ELSET"});
     const std::string& type = required("TYPE");
     if (type == "C3D8R" || type == "C3D8I")
-      _data.warn("element type " + type + " (" + _keyword.where.str() +
-                 ") is solved as C3D8 (full 2x2x2 "
-                 "integration" +
-                 (type == "C3D8R" ? std::string(", not reduced with hourglass control)")
-                                  : std::string(", without incompatible modes: stiffer in bending)")));
+      _data.warn("element type " + type + " (" + _keyword.where.str() + ") is solved as C3D8 (full 2x2x2 "
+                 "integration" + (type == "C3D8R" ? std::string(", not reduced with hourglass control)")
+                                                  : std::string(", without incompatible modes: stiffer in bending)")));
     else if (type != "C3D8")
       throw Error(where() + ": element type " + type + " is not implemented by feticon (C3D8, C3D8R, C3D8I)");
     IndexRuns* set = _keyword.has("ELSET") ? &_data.element_sets[required("ELSET")] : nullptr;
@@ -355,8 +351,8 @@ private:
       {
         label = integer(line, 0, "element number");
         if (label <= 0 || label > largest_label)
-          fail_at(line.at(0),
-                  "element number " + std::to_string(label) + " is outside 1.." + std::to_string(largest_label));
+          fail_at(line.at(0), "element number " + std::to_string(label) + " is outside 1.." +
+                                  std::to_string(largest_label));
         start = line.where;
         first = 1;
       }
@@ -575,7 +571,8 @@ private:
   }
 
   /// The parameters of a load keyword: OP=NEW clears the loads of its kind set so far.
-  template <class Loads> void begin_load(Loads& loads)
+  template <class Loads>
+  void begin_load(Loads& loads)
   {
     known_parameters({"OP", "AMPLITUDE"});
     no_amplitude();
@@ -592,8 +589,7 @@ private:
       const std::vector<int32_t> targets = nodes(line, 0);
       const int64_t dof = integer(line, 1, "degree of freedom");
       if (dof < 1 || dof > 3)
-        fail_at(line.at(1),
-                "degree of freedom " + std::to_string(dof) + ": forces act on 1 to 3 (solid nodes have no moments)");
+        fail_at(line.at(1), "degree of freedom " + std::to_string(dof) + ": forces act on 1 to 3 (solid nodes have no moments)");
       const double value = real(line, 2, "force");
       for (int32_t n : targets)
         _data.state.cload[3 * int64_t{n} + dof - 1] = value;
@@ -605,8 +601,8 @@ private:
   {
     const std::string kind = name_of(line.fields[face_field]);
     if (kind.size() != 2 || kind[0] != 'P' || kind[1] < '1' || kind[1] > '6')
-      fail_at(line.at(face_field),
-              "load type '" + text(line.fields[face_field]) + "' is not implemented by feticon (pressure P1 to P6)");
+      fail_at(line.at(face_field), "load type '" + text(line.fields[face_field]) +
+                                        "' is not implemented by feticon (pressure P1 to P6)");
     for (int32_t c : cells)
       _data.state.dload[{c, kind[1] - '0'}] = value;
   }
@@ -705,8 +701,7 @@ private:
     if (law != "LINEAR" && law != "EXPONENTIAL" && law != "TABULAR")
       throw Error(where() + ": PRESSURE-OVERCLOSURE=" + law + " is not a law feticon knows");
     _data.warn("interaction " + _interaction + ": PRESSURE-OVERCLOSURE=" + law + " (" + parameters + ", " +
-               _keyword.where.str() +
-               ") is a penalty law; feticon enforces non-penetration exactly, so its "
+               _keyword.where.str() + ") is a penalty law; feticon enforces non-penetration exactly, so its "
                "answer differs from CalculiX's by the penetration the law allows (pressure / slope)");
   }
 
@@ -719,8 +714,7 @@ private:
     if (const std::string* type = _keyword.value("TYPE"))
     {
       if (*type != "SURFACE TO SURFACE" && *type != "NODE TO SURFACE")
-        throw Error(where() + ": TYPE=" + *type +
-                    " is not implemented by feticon (SURFACE TO SURFACE, NODE TO SURFACE)");
+        throw Error(where() + ": TYPE=" + *type + " is not implemented by feticon (SURFACE TO SURFACE, NODE TO SURFACE)");
       pair.node_to_surface = *type == "NODE TO SURFACE";
     }
     if (_keyword.has("ADJUST"))
@@ -757,8 +751,7 @@ private:
     _step.where = _keyword.where.str();
     const std::string* nlgeom = _keyword.value("NLGEOM");
     // NLGEOM stays on once a step has set it (CalculiX: "it remains active in all steps").
-    _step.nlgeom =
-        (!_data.steps.empty() && _data.steps.back().nlgeom) || (nlgeom && (nlgeom->empty() || *nlgeom == "YES"));
+    _step.nlgeom = (!_data.steps.empty() && _data.steps.back().nlgeom) || (nlgeom && (nlgeom->empty() || *nlgeom == "YES"));
     _have_procedure = false;
     no_data();
   }
@@ -808,9 +801,9 @@ private:
 
   void output_request()
   {
-    known_parameters({"NSET", "ELSET", "TOTALS", "FREQUENCY", "FREQUENCYF", "GLOBAL", "OUTPUT", "SLAVE", "MASTER",
-                      "TIME POINTS", "LAST ITERATIONS", "CONTACT ELEMENTS", "SECTION FORCES", "OUTPUT ALL", "NSETF",
-                      "POSITION"});
+    known_parameters({"NSET", "ELSET", "TOTALS", "FREQUENCY", "FREQUENCYF", "GLOBAL", "OUTPUT", "SLAVE",
+                      "MASTER", "TIME POINTS", "LAST ITERATIONS", "CONTACT ELEMENTS", "SECTION FORCES",
+                      "OUTPUT ALL", "NSETF", "POSITION"});
     if (!_in_step)
       throw Error(where() + " belongs inside a *STEP");
     using Kind = DeckOutputRequest::Kind;
@@ -835,7 +828,7 @@ private:
     {
       if (*t != "YES" && *t != "ONLY" && *t != "NO")
         throw Error(where() + ": TOTALS=" + *t + " must be YES, ONLY or NO");
-      request.totals = *t == "YES"    ? DeckOutputRequest::Totals::yes
+      request.totals = *t == "YES" ? DeckOutputRequest::Totals::yes
                        : *t == "ONLY" ? DeckOutputRequest::Totals::only
                                       : DeckOutputRequest::Totals::no;
     }
@@ -848,10 +841,11 @@ private:
         if (!v.empty())
           request.variables.push_back(name_of(v));
     if (request.variables.empty())
-      request.variables =
-          request.kind == Kind::node_print || request.kind == Kind::node_file ? std::vector<std::string>{"U"}
-          : request.kind == Kind::el_print || request.kind == Kind::el_file   ? std::vector<std::string>{"S"}
-                                                                              : std::vector<std::string>{"CSTR"};
+      request.variables = request.kind == Kind::node_print || request.kind == Kind::node_file
+                              ? std::vector<std::string>{"U"}
+                              : request.kind == Kind::el_print || request.kind == Kind::el_file
+                                    ? std::vector<std::string>{"S"}
+                                    : std::vector<std::string>{"CSTR"};
     _step.outputs.push_back(std::move(request));
   }
 

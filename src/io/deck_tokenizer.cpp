@@ -16,10 +16,7 @@ constexpr size_t initial_buffer_bytes = size_t{4} << 20;
 constexpr size_t max_line_bytes = size_t{1} << 20;
 constexpr size_t max_include_depth = 32;
 
-bool is_blank(char c)
-{
-  return c == ' ' || c == '\t';
-}
+bool is_blank(char c) { return c == ' ' || c == '\t'; }
 
 std::string_view trim(std::string_view s)
 {
@@ -57,10 +54,7 @@ std::string DeckPosition::str() const
   return out;
 }
 
-bool DeckKeyword::has(std::string_view key) const
-{
-  return value(key) != nullptr;
-}
+bool DeckKeyword::has(std::string_view key) const { return value(key) != nullptr; }
 
 const std::string* DeckKeyword::value(std::string_view key) const
 {
@@ -130,10 +124,7 @@ struct DeckTokenizer::Source
   }
 };
 
-DeckTokenizer::DeckTokenizer(const std::filesystem::path& path)
-{
-  open(path, DeckPosition{});
-}
+DeckTokenizer::DeckTokenizer(const std::filesystem::path& path) { open(path, DeckPosition{}); }
 
 DeckTokenizer::~DeckTokenizer() = default;
 

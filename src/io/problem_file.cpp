@@ -17,7 +17,8 @@ namespace feticon::io
 {
 namespace
 {
-const std::set<std::string> structured_keys = {"mesh", "bodies", "plane_strain", "supports", "loads", "contact"};
+const std::set<std::string> structured_keys = {"mesh", "bodies", "plane_strain", "supports",
+                                               "loads", "contact"};
 
 std::vector<std::string> split_path(const std::string& path)
 {
@@ -29,7 +30,8 @@ std::vector<std::string> split_path(const std::string& path)
   return parts;
 }
 
-template <class Map> std::string names_of(const Map& map)
+template <class Map>
+std::string names_of(const Map& map)
 {
   std::string list;
   for (const auto& [name, value] : map)
@@ -43,22 +45,24 @@ bool is_index(const std::string& s)
 }
 
 /// Sets the node at `path` (creating maps on the way) to `value`.
-void set_path(YAML::Node node, const std::vector<std::string>& path, size_t i, const YAML::Node& value,
-              const std::string& full)
+void set_path(YAML::Node node, const std::vector<std::string>& path, size_t i,
+              const YAML::Node& value, const std::string& full)
 {
   const std::string& key = path[i];
   const bool last = i + 1 == path.size();
   if (node.IsSequence())
   {
     FETICON_CHECK(is_index(key) && std::stoul(key) < node.size(),
-                  "--set " << full << ": '" << key << "' is not an index of a list of " << node.size() << " entries");
+                  "--set " << full << ": '" << key << "' is not an index of a list of "
+                           << node.size() << " entries");
     if (last)
       node[std::stoul(key)] = value;
     else
       set_path(node[std::stoul(key)], path, i + 1, value, full);
     return;
   }
-  FETICON_CHECK(node.IsMap() || node.IsNull(), "--set " << full << ": '" << key << "' is below a single value");
+  FETICON_CHECK(node.IsMap() || node.IsNull(), "--set " << full << ": '" << key
+                                                        << "' is below a single value");
   if (last)
   {
     node[key] = value;
@@ -87,8 +91,8 @@ void reject_duplicate_keys(const YAML::Node& node, const std::string& path, cons
     {
       const std::string key = kv.first.Scalar();
       const std::string full = path.empty() ? key : path + "." + key;
-      FETICON_CHECK(seen.insert(key).second,
-                    source << ": key '" << full << "' is given twice (line " << kv.first.Mark().line + 1 << ")");
+      FETICON_CHECK(seen.insert(key).second, source << ": key '" << full << "' is given twice (line "
+                                                    << kv.first.Mark().line + 1 << ")");
       reject_duplicate_keys(kv.second, full, source, depth + 1);
     }
   }
@@ -97,8 +101,8 @@ void reject_duplicate_keys(const YAML::Node& node, const std::string& path, cons
       reject_duplicate_keys(node[i], path + "." + std::to_string(i), source, depth + 1);
 }
 
-void flatten(const YAML::Node& node, const std::string& prefix, std::vector<std::pair<std::string, std::string>>& out,
-             const std::string& source)
+void flatten(const YAML::Node& node, const std::string& prefix,
+             std::vector<std::pair<std::string, std::string>>& out, const std::string& source)
 {
   if (node.IsMap())
   {
@@ -109,8 +113,9 @@ void flatten(const YAML::Node& node, const std::string& prefix, std::vector<std:
     FETICON_CHECK(!is_setting, source << ": '" << prefix << "' must be a single value, not a map");
     FETICON_CHECK(prefix.empty() || node.size() > 0, source << ": section '" << prefix << "' is empty");
     for (const auto& kv : node)
-      flatten(kv.second, prefix.empty() ? kv.first.as<std::string>() : prefix + "." + kv.first.as<std::string>(), out,
-              source);
+      flatten(kv.second, prefix.empty() ? kv.first.as<std::string>()
+                                        : prefix + "." + kv.first.as<std::string>(),
+              out, source);
     return;
   }
   if (!node.IsScalar())
@@ -147,7 +152,8 @@ struct Reader
     FETICON_CHECK(node && node.IsScalar(), source << ": " << key << " must be a name");
     return node.as<std::string>();
   }
-  void only_keys(const YAML::Node& node, const std::string& where, const std::set<std::string>& allowed) const
+  void only_keys(const YAML::Node& node, const std::string& where,
+                 const std::set<std::string>& allowed) const
   {
     FETICON_CHECK(node.IsMap(), source << ": " << where << " must be a map of keys");
     for (const auto& kv : node)
@@ -175,7 +181,8 @@ std::array<int, 3> box_cells(const YAML::Node& box, const std::string& key, cons
 
 mesh::HexMesh boxes_mesh(const YAML::Node& boxes, const Reader& r)
 {
-  FETICON_CHECK(boxes.IsSequence() && boxes.size() > 0, r.source << ": mesh.boxes must be a non-empty list of boxes");
+  FETICON_CHECK(boxes.IsSequence() && boxes.size() > 0,
+                r.source << ": mesh.boxes must be a non-empty list of boxes");
   mesh::HexMesh out;
   for (size_t i = 0; i < boxes.size(); ++i)
   {
@@ -210,10 +217,7 @@ mesh::HexMesh boxes_mesh(const YAML::Node& boxes, const Reader& r)
 }
 } // namespace
 
-bool is_structured_key(const std::string& key)
-{
-  return structured_keys.count(key) > 0;
-}
+bool is_structured_key(const std::string& key) { return structured_keys.count(key) > 0; }
 
 bool is_deck_file(const std::filesystem::path& path)
 {
@@ -241,7 +245,8 @@ void settings_of_deck(ProblemFile& file, const std::filesystem::path& path)
 }
 } // namespace
 
-ProblemFile load_problem_file(const std::filesystem::path& path, const std::vector<std::string>& overrides)
+ProblemFile load_problem_file(const std::filesystem::path& path,
+                              const std::vector<std::string>& overrides)
 {
   ProblemFile file;
   file.source = path.empty() ? std::string("defaults") : path.string();
@@ -260,11 +265,9 @@ ProblemFile load_problem_file(const std::filesystem::path& path, const std::vect
     FETICON_CHECK(std::filesystem::is_regular_file(path, ec),
                   "problem file " << path.string() << " is not a regular file (a folder or a device?)");
     const auto bytes = std::filesystem::file_size(path, ec);
-    FETICON_CHECK(!ec && bytes <= max_problem_file_bytes, "problem file " << path.string() << " has " << bytes
-                                                                          << " bytes; a problem file holds settings "
-                                                                             "(at most "
-                                                                          << max_problem_file_bytes
-                                                                          << " bytes), a mesh goes in mesh.file");
+    FETICON_CHECK(!ec && bytes <= max_problem_file_bytes,
+                  "problem file " << path.string() << " has " << bytes << " bytes; a problem file holds settings "
+                                  "(at most " << max_problem_file_bytes << " bytes), a mesh goes in mesh.file");
     try
     {
       file.root = YAML::LoadFile(path.string());
@@ -276,11 +279,11 @@ ProblemFile load_problem_file(const std::filesystem::path& path, const std::vect
     }
     catch (const YAML::Exception& e)
     {
-      FETICON_CHECK(false, path.string() << ": invalid YAML at line " << e.mark.line + 1 << ", column "
-                                         << e.mark.column + 1 << ": " << e.msg);
+      FETICON_CHECK(false, path.string() << ": invalid YAML at line " << e.mark.line + 1
+                                         << ", column " << e.mark.column + 1 << ": " << e.msg);
     }
     FETICON_CHECK(!file.root.IsNull(), path.string() << ": the file holds no settings (empty or comments "
-                                                        "only); write at least 'problem: hertz'");
+                                                     "only); write at least 'problem: hertz'");
     FETICON_CHECK(file.root.IsMap(), path.string() << ": the top level must be a map of keys");
     reject_duplicate_keys(file.root, "", path.string());
   }
@@ -343,8 +346,7 @@ ProblemFile load_problem_file(const std::filesystem::path& path, const std::vect
     for (const auto& kv : file.root)
     {
       const std::string key = kv.first.as<std::string>();
-      FETICON_CHECK(!is_structured_key(key), file.source << ": section '" << key
-                                                         << "' is read only by custom problems, "
+      FETICON_CHECK(!is_structured_key(key), file.source << ": section '" << key << "' is read only by custom problems, "
                                                          << "but problem is " << file.settings.text("problem")
                                                          << "; add 'problem: custom' or remove it");
     }
@@ -358,8 +360,8 @@ CustomMeshSize custom_mesh_size(const ProblemFile& file)
   FETICON_CHECK(root["mesh"], file.source << ": problem: custom needs a 'mesh' section (file: or boxes:)");
   r.only_keys(root["mesh"], "mesh", {"file", "boxes"});
   CustomMeshSize size;
-  size.plane_strain =
-      root["plane_strain"] && root["plane_strain"].IsScalar() && root["plane_strain"].Scalar() == "true";
+  size.plane_strain = root["plane_strain"] && root["plane_strain"].IsScalar() &&
+                      root["plane_strain"].Scalar() == "true";
   if (root["mesh"]["file"])
   {
     const std::filesystem::path path = file.folder / r.text(root["mesh"]["file"], "mesh.file");
@@ -447,11 +449,10 @@ fem::Problem build_custom_problem(const ProblemFile& file)
       for (int d = 0; d < 3; ++d)
         if (s[names[d]])
           c.value[d] = r.number(s[names[d]], key + "." + names[d]);
-      FETICON_CHECK(c.value[0] || c.value[1] || c.value[2],
-                    file.source << ": " << key << " prescribes no component (x, y or z)");
-      FETICON_CHECK(p.mesh.node_sets.count(c.set), file.source
-                                                       << ": " << key << ".set: no node set '" << c.set
-                                                       << "' in the mesh; it has: " << names_of(p.mesh.node_sets));
+      FETICON_CHECK(c.value[0] || c.value[1] || c.value[2], file.source << ": " << key << " prescribes no component (x, y or z)");
+      FETICON_CHECK(p.mesh.node_sets.count(c.set), file.source << ": " << key << ".set: no node set '"
+                                                                << c.set << "' in the mesh; it has: "
+                                                                << names_of(p.mesh.node_sets));
       p.dirichlet.push_back(c);
     }
   }
@@ -464,9 +465,8 @@ fem::Problem build_custom_problem(const ProblemFile& file)
       const std::string key = "loads." + std::to_string(i);
       r.only_keys(l, key, {"set", "traction"});
       const std::string set = r.text(l["set"], key + ".set");
-      FETICON_CHECK(p.mesh.face_sets.count(set), file.source
-                                                     << ": " << key << ".set: no face set '" << set
-                                                     << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
+      FETICON_CHECK(p.mesh.face_sets.count(set), file.source << ": " << key << ".set: no face set '" << set
+                                                            << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
       p.tractions.push_back({set, r.vector3(l["traction"], key + ".traction")});
     }
   }
@@ -480,12 +480,10 @@ fem::Problem build_custom_problem(const ProblemFile& file)
       r.only_keys(c, key, {"slave", "master"});
       fem::ContactPairNames pair{r.text(c["slave"], key + ".slave"), r.text(c["master"], key + ".master")};
       for (const std::string& s : {pair.slave, pair.master})
-        FETICON_CHECK(p.mesh.face_sets.count(s), file.source
-                                                     << ": " << key << ": no face set '" << s
-                                                     << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
-      FETICON_CHECK(pair.slave != pair.master, file.source << ": " << key
-                                                           << ": slave and master are the same face set '" << pair.slave
-                                                           << "'; a contact pair needs two surfaces");
+        FETICON_CHECK(p.mesh.face_sets.count(s), file.source << ": " << key << ": no face set '" << s
+                                                              << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
+      FETICON_CHECK(pair.slave != pair.master, file.source << ": " << key << ": slave and master are the same face set '"
+                                                            << pair.slave << "'; a contact pair needs two surfaces");
       p.contacts.push_back(pair);
     }
   }

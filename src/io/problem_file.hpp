@@ -48,7 +48,8 @@ bool is_deck_file(const std::filesystem::path& path);
 /// deck (is_deck_file) is a custom problem whose model is the deck, with the settings it
 /// implies (displacements from NLGEOM, load_steps from *STATIC, contact.formulation from the
 /// pairs' TYPE) below the overrides.
-ProblemFile load_problem_file(const std::filesystem::path& path, const std::vector<std::string>& overrides);
+ProblemFile load_problem_file(const std::filesystem::path& path,
+                              const std::vector<std::string>& overrides);
 
 /// The size of a `problem: custom` file's mesh before it is built or read: nodes of the
 /// boxes, or as declared in the Gmsh file's header (memory guard).

@@ -16,347 +16,106 @@ std::vector<SettingSpec> make_specs()
 {
   const double inf = 1e300;
   return {
-      {"problem",
-       "hertz",
-       "hertz (Vondrák et al.'s benchmark), hertz3d (a sphere on a half-space), "
-       "cantilever_obstacle (a cantilever bent onto a block: finite rotations) or "
-       "custom (mesh, bodies, supports, loads, contact sections of the problem file)",
-       Type::text,
-       {"hertz", "hertz3d", "cantilever_obstacle", "custom"},
-       0,
-       0,
-       false},
+      {"problem", "hertz", "hertz (Vondrák et al.'s benchmark), hertz3d (a sphere on a half-space), "
+                           "cantilever_obstacle (a cantilever bent onto a block: finite rotations) or "
+                           "custom (mesh, bodies, supports, loads, contact sections of the problem file)",
+       Type::text, {"hertz", "hertz3d", "cantilever_obstacle", "custom"}, 0, 0, false},
       {"cantilever.gap", "0.25", "gap between the beam (L = 1 m) and the obstacle (m)", Type::number, {}, 0, 10, true},
       {"cantilever.load", "0.8", "tip load as its linear tip deflection over L", Type::number, {}, 0, 100, true},
       {"cantilever.cells", "40", "beam cells along its length", Type::integer, {}, 10, 10000, false},
       {"hertz.line_load", "4e8", "line load Q on the cylinder (N/m)", Type::number, {}, 0, inf, true},
-      {"hertz.mesh",
-       "graded",
-       "graded (Gmsh quadrilaterals with a size field growing by growth_ratio "
-       "away from the contact, shape-regular) or tensor (mapped blocks with "
-       "tensor-product grading)",
-       Type::text,
-       {"graded", "tensor"},
-       0,
-       0,
-       false},
+      {"hertz.mesh", "graded", "graded (Gmsh quadrilaterals with a size field growing by growth_ratio "
+                               "away from the contact, shape-regular) or tensor (mapped blocks with "
+                               "tensor-product grading)", Type::text, {"graded", "tensor"}, 0, 0, false},
       {"hertz.refinement", "1", "scales every element size by 1/refinement", Type::number, {}, 0.05, 64, false},
-      {"hertz.element_size",
-       "0.005",
-       "element size in the contact zone at refinement 1 (m)",
-       Type::number,
-       {},
-       0,
-       0.1,
-       true},
-      {"hertz.master_ratio",
-       "1.3",
-       "block (master) / cylinder (slave) contact element size",
-       Type::number,
-       {},
-       0.2,
-       5,
-       false},
+      {"hertz.element_size", "0.005", "element size in the contact zone at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
+      {"hertz.master_ratio", "1.3", "block (master) / cylinder (slave) contact element size", Type::number, {}, 0.2, 5, false},
       {"hertz.block_width", "1.5", "half-width of the block (m)", Type::number, {}, 0.2, 100, false},
-      {"hertz.cylinder_width",
-       "0.6",
-       "half-width of the modelled cylinder segment (m), < radius",
-       Type::number,
-       {},
-       0.1,
-       0.99,
-       false},
+      {"hertz.cylinder_width", "0.6", "half-width of the modelled cylinder segment (m), < radius", Type::number, {}, 0.1, 0.99, false},
       {"hertz.block_depth", "1.5", "depth of the block (m)", Type::number, {}, 0.2, 100, false},
-      {"hertz.growth_ratio",
-       "1.1",
-       "cell size ratio between neighbouring cells away from the contact "
-       "band (tensor: at refinement 1, and tables before the graded mesh "
-       "used 1.2; 1: uniform mesh)",
-       Type::number,
-       {},
-       1,
-       2,
-       false},
+      {"hertz.growth_ratio", "1.1", "cell size ratio between neighbouring cells away from the contact "
+                                    "band (tensor: at refinement 1, and tables before the graded mesh "
+                                    "used 1.2; 1: uniform mesh)", Type::number, {}, 1, 2, false},
       {"hertz3d.radius", "0.05", "sphere radius R (m)", Type::number, {}, 0, inf, true},
-      {"hertz3d.load",
-       "2e4",
-       "force F on the whole sphere (N); the quarter model carries F/4",
-       Type::number,
-       {},
-       0,
-       inf,
-       true},
+      {"hertz3d.load", "2e4", "force F on the whole sphere (N); the quarter model carries F/4", Type::number, {}, 0, inf, true},
       {"hertz3d.refinement", "1", "divides hertz3d.element_size", Type::number, {}, 0.05, 64, false},
-      {"hertz3d.element_size",
-       "0.00025",
-       "sphere cell size in the contact core at refinement 1 (m)",
-       Type::number,
-       {},
-       0,
-       0.1,
-       true},
-      {"hertz3d.master_ratio",
-       "1.3",
-       "block (master) / sphere (slave) cell size in the contact core",
-       Type::number,
-       {},
-       0.2,
-       5,
-       false},
-      {"hertz3d.block_radius",
-       "0.04",
-       "radius of the modelled half-space, an octant ball fixed on its curved face (m)",
-       Type::number,
-       {},
-       0,
-       inf,
-       true},
-      {"hertz3d.cap_radius",
-       "0.025",
-       "radius of the modelled part of the sphere about the contact point (m), "
-       "at most R / 2",
-       Type::number,
-       {},
-       0,
-       inf,
-       true},
-      {"hertz3d.radial_aspect",
-       "1.5",
-       "radial / tangential cell size outside the contact core",
-       Type::number,
-       {},
-       0.5,
-       3,
-       false},
+      {"hertz3d.element_size", "0.00025", "sphere cell size in the contact core at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
+      {"hertz3d.master_ratio", "1.3", "block (master) / sphere (slave) cell size in the contact core", Type::number, {}, 0.2, 5, false},
+      {"hertz3d.block_radius", "0.04", "radius of the modelled half-space, an octant ball fixed on its curved face (m)",
+       Type::number, {}, 0, inf, true},
+      {"hertz3d.cap_radius", "0.025", "radius of the modelled part of the sphere about the contact point (m), "
+       "at most R / 2", Type::number, {}, 0, inf, true},
+      {"hertz3d.radial_aspect", "1.5", "radial / tangential cell size outside the contact core", Type::number, {}, 0.5, 3, false},
       {"material.young", "2e11", "Young's modulus E (Pa) of every body", Type::number, {}, 0, inf, true},
-      {"material.poisson",
-       "0.3",
-       "Poisson's ratio nu of every body, in (-1, 0.5)",
-       Type::number,
-       {},
-       -1,
-       0.5,
-       true,
-       true},
-      {"hertz.block_young",
-       "",
-       "Young's modulus of the block (Pa), if it differs from the cylinder's "
-       "material.young (E* from both)",
-       Type::number,
-       {},
-       0,
-       inf,
-       true},
-      {"hertz.block_poisson",
-       "",
-       "Poisson's ratio of the block, if it differs from material.poisson",
-       Type::number,
-       {},
-       -1,
-       0.5,
-       true,
-       true},
-      {"hertz3d.block_young",
-       "",
-       "Young's modulus of the block (Pa), if it differs from the sphere's "
-       "material.young (E* from both)",
-       Type::number,
-       {},
-       0,
-       inf,
-       true},
-      {"hertz3d.block_poisson",
-       "",
-       "Poisson's ratio of the block, if it differs from material.poisson",
-       Type::number,
-       {},
-       -1,
-       0.5,
-       true,
-       true},
-      {"method",
-       "smalbe",
-       "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "
-       "(problem (9) of Vondrák et al.), primal_penalty (undecomposed, CHOLMOD)",
-       Type::text,
-       {"smalbe", "dual_penalty", "primal_penalty"},
-       0,
-       0,
-       false},
+      {"material.poisson", "0.3", "Poisson's ratio nu of every body, in (-1, 0.5)", Type::number, {}, -1, 0.5, true, true},
+      {"hertz.block_young", "", "Young's modulus of the block (Pa), if it differs from the cylinder's "
+       "material.young (E* from both)", Type::number, {}, 0, inf, true},
+      {"hertz.block_poisson", "", "Poisson's ratio of the block, if it differs from material.poisson",
+       Type::number, {}, -1, 0.5, true, true},
+      {"hertz3d.block_young", "", "Young's modulus of the block (Pa), if it differs from the sphere's "
+       "material.young (E* from both)", Type::number, {}, 0, inf, true},
+      {"hertz3d.block_poisson", "", "Poisson's ratio of the block, if it differs from material.poisson",
+       Type::number, {}, -1, 0.5, true, true},
+      {"method", "smalbe", "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "
+                           "(problem (9) of Vondrák et al.), primal_penalty (undecomposed, CHOLMOD)",
+       Type::text, {"smalbe", "dual_penalty", "primal_penalty"}, 0, 0, false},
       {"rho", "1", "dual penalty rho, dimensionless (F and d scaled by ||PFP||)", Type::number, {}, 0, inf, true},
       {"smalbe.M0", "1", "SMALBE-M initial M (scaled units: ||PFP|| = 1)", Type::number, {}, 0, 1e6, true},
-      {"smalbe.beta",
-       "2",
-       "SMALBE-M: M <- M / beta when the Lagrangian increases too little",
-       Type::number,
-       {},
-       1,
-       1e6,
-       true},
-      {"contact.formulation",
-       "mortar",
-       "contact rows: node_to_segment (slave node on master "
-       "face) or mortar (dual mortar, segment-to-segment)",
-       Type::text,
-       {"node_to_segment", "mortar"},
-       0,
-       0,
-       false},
-      {"contact.linear_band",
-       "0.25",
-       "small displacements: the QP gets the contact rows whose gap is "
+      {"smalbe.beta", "2", "SMALBE-M: M <- M / beta when the Lagrangian increases too little", Type::number, {}, 1, 1e6, true},
+      {"contact.formulation", "mortar", "contact rows: node_to_segment (slave node on master "
+                                                 "face) or mortar (dual mortar, segment-to-segment)",
+       Type::text, {"node_to_segment", "mortar"}, 0, 0, false},
+      {"contact.linear_band", "0.25", "small displacements: the QP gets the contact rows whose gap is "
        "below the smallest plus this many master face diagonals, and another QP follows with the "
        "rows near contact if the answer penetrates a row left out (a large value: every row within "
-       "the search distance)",
-       Type::number,
-       {},
-       0,
-       inf,
-       true},
-      {"contact.feasibility_tolerance",
-       "1e-3",
-       "warn (summary.json warnings, stderr) when the dual "
-       "penalty leaves ||G lambda - e|| / ||e|| above this",
-       Type::number,
-       {},
-       0,
-       1,
-       true},
+       "the search distance)", Type::number, {}, 0, inf, true},
+      {"contact.feasibility_tolerance", "1e-3", "warn (summary.json warnings, stderr) when the dual "
+       "penalty leaves ||G lambda - e|| / ||e|| above this", Type::number, {}, 0, 1, true},
       {"eps_n", "100", "primal penalty eps_n as a multiple of max diag K", Type::number, {}, 0, inf, true},
-      {"displacements",
-       "large",
-       "large (total Lagrangian, Vondrák et al.'s benchmark) or small (linear elasticity)",
-       Type::text,
-       {"small", "large"},
-       0,
-       0,
-       false},
-      {"newton.stiffness",
-       "initial",
-       "FETI outer-loop stiffness: initial (K_0 kept, Vondrák et al.'s "
-       "modified Newton), step or iteration (K_M(u) refreshed)",
-       Type::text,
-       {"initial", "step", "iteration"},
-       0,
-       0,
-       false},
+      {"displacements", "large", "large (total Lagrangian, Vondrák et al.'s benchmark) or small (linear elasticity)", Type::text, {"small", "large"}, 0, 0, false},
+      {"newton.stiffness", "initial", "FETI outer-loop stiffness: initial (K_0 kept, Vondrák et al.'s "
+                                      "modified Newton), step or iteration (K_M(u) refreshed)",
+       Type::text, {"initial", "step", "iteration"}, 0, 0, false},
       {"newton.max_iterations", "15", "outer iterations per load step", Type::integer, {}, 1, 10000, false},
-      {"newton.tolerance",
-       "1e-6",
-       "load step converged when ||du|| <= tolerance ||u||, the residual "
-       "test holds and the active set did not change",
-       Type::number,
-       {},
-       0,
-       1,
-       true},
-      {"newton.residual_tolerance",
-       "1e-6",
-       "and ||t f_ext - f_int - B'lambda|| <= residual_tolerance "
-       "max(||t f_ext||, ||f_int||) (FETI solvers)",
-       Type::number,
-       {},
-       0,
-       1,
-       true},
-      {"newton.forcing",
-       "0.001",
-       "inexact outer iterations: the QP of outer iteration k stops at "
-       "max(qp.rtol, min(1e-4, forcing * |du_(k-1)|/|u|)); 0 solves every QP to qp.rtol",
-       Type::number,
-       {},
-       0,
-       1,
-       false},
+      {"newton.tolerance", "1e-6", "load step converged when ||du|| <= tolerance ||u||, the residual "
+       "test holds and the active set did not change", Type::number, {}, 0, 1, true},
+      {"newton.residual_tolerance", "1e-6", "and ||t f_ext - f_int - B'lambda|| <= residual_tolerance "
+       "max(||t f_ext||, ||f_int||) (FETI solvers)", Type::number, {}, 0, 1, true},
+      {"newton.forcing", "0.001", "inexact outer iterations: the QP of outer iteration k stops at "
+       "max(qp.rtol, min(1e-4, forcing * |du_(k-1)|/|u|)); 0 solves every QP to qp.rtol", Type::number, {}, 0, 1, false},
       {"load_steps", "2", "load steps for large displacements", Type::integer, {}, 1, 1000, false},
       {"subdomains", "8", "number of FETI subdomains", Type::integer, {}, 1, 1e6, false},
-      {"subdomain_cells",
-       "0",
-       "cells per subdomain, (H/h)^3 in 3D or (H/h)^2 for one layer; if > 0 "
-       "it sets the number of subdomains instead of 'subdomains'",
-       Type::integer,
-       {},
-       0,
-       1e9,
-       false},
-      {"partitioner",
-       "metis",
-       "metis (k-way, edge cut), rcb (recursive coordinate bisection: box-like "
-       "subdomains) or structured (slabs along x)",
-       Type::text,
-       {"metis", "rcb", "structured"},
-       0,
-       0,
-       false},
-      {"dual.operator",
-       "auto",
-       "F and the Dirichlet preconditioner: implicit (substitutions with the subdomain "
-       "factors), explicit (dense blocks on the subdomain boundaries, formed once per "
-       "factorization; needs qp.preconditioner=dirichlet) or auto (explicit where the "
-       "blocks fit the memory and pay for their set-up)",
-       Type::text,
-       {"implicit", "explicit", "auto"},
-       0,
-       0,
-       false},
+      {"subdomain_cells", "0", "cells per subdomain, (H/h)^3 in 3D or (H/h)^2 for one layer; if > 0 "
+                               "it sets the number of subdomains instead of 'subdomains'",
+       Type::integer, {}, 0, 1e9, false},
+      {"partitioner", "metis", "metis (k-way, edge cut), rcb (recursive coordinate bisection: box-like "
+                              "subdomains) or structured (slabs along x)",
+       Type::text, {"metis", "rcb", "structured"}, 0, 0, false},
+      {"dual.operator", "auto", "F and the Dirichlet preconditioner: implicit (substitutions with the subdomain "
+                                "factors), explicit (dense blocks on the subdomain boundaries, formed once per "
+                                "factorization; needs qp.preconditioner=dirichlet) or auto (explicit where the "
+                                "blocks fit the memory and pay for their set-up)",
+       Type::text, {"implicit", "explicit", "auto"}, 0, 0, false},
       {"qp.rtol", "1e-8", "QP stopping tolerance ||g_P|| <= rtol ||b||", Type::number, {}, 0, 1, true},
-      {"qp.expansion",
-       "std",
-       "MPRGP expansion step: std (feasible half step and projected gradient step, "
+      {"qp.expansion", "std", "MPRGP expansion step: std (feasible half step and projected gradient step, "
        "ALGORITHMS.md 5) or projcg (the CG step projected, with std as fallback where it raises the cost)",
-       Type::text,
-       {"std", "projcg"},
-       0,
-       0,
-       false},
-      {"qp.preconditioner",
-       "dirichlet",
-       "MPRGP preconditioning in the face: none, lumped (P B K B' P) or "
+       Type::text, {"std", "projcg"}, 0, 0, false},
+      {"qp.preconditioner", "dirichlet", "MPRGP preconditioning in the face: none, lumped (P B K B' P) or "
        "dirichlet (P B S B' P, S the subdomain Schur complements on their boundary)",
-       Type::text,
-       {"none", "lumped", "dirichlet"},
-       0,
-       0,
-       false},
-      {"qp.constraint_scaling",
-       "true",
-       "scale the preconditioner by (B B')^-1 on both sides "
+       Type::text, {"none", "lumped", "dirichlet"}, 0, 0, false},
+      {"qp.constraint_scaling", "true", "scale the preconditioner by (B B')^-1 on both sides "
        "(mortar FETI): needed when contact rows are not orthogonal to each other and to the gluing rows",
-       Type::boolean,
-       {},
-       0,
-       0,
-       false},
+       Type::boolean, {}, 0, 0, false},
       {"qp.max_iterations", "20000", "MPRGP iteration limit", Type::integer, {}, 1, 1e9, false},
-      {"qp.spectrum_steps",
-       "0",
-       "diagnostic: after each QP, this many preconditioned CG steps on the face "
+      {"qp.spectrum_steps", "0", "diagnostic: after each QP, this many preconditioned CG steps on the face "
        "of its solution estimate the spectrum of the preconditioned dual operator there "
-       "and count the steps CG needs there to qp.rtol (summary.json qp.solution_face_spectrum); 0: off",
-       Type::integer,
-       {},
-       0,
-       100000,
-       false},
-      {"memory_limit",
-       "0",
-       "memory budget of a run in bytes (e.g. 8e9): a run whose estimated peak "
+       "and count the steps CG needs there to qp.rtol (summary.json qp.solution_face_spectrum); 0: off", Type::integer, {}, 0, 100000, false},
+      {"memory_limit", "0", "memory budget of a run in bytes (e.g. 8e9): a run whose estimated peak "
        "exceeds it is refused before it allocates; 0: /proc/meminfo's MemAvailable or, if smaller, the room "
-       "under the cgroup's memory limit, shared by the ranks of a node",
-       Type::number,
-       {},
-       0,
-       inf,
-       false},
+       "under the cgroup's memory limit, shared by the ranks of a node", Type::number, {}, 0, inf, false},
       {"output.vtu", "true", "write VTU/PVD files", Type::boolean, {}, 0, 0, false},
-      {"output.plots",
-       "true",
-       "draw contact_pressure.png and iterations.png (Debian's python3-matplotlib)",
-       Type::boolean,
-       {},
-       0,
-       0,
-       false},
+      {"output.plots", "true", "draw contact_pressure.png and iterations.png (Debian's python3-matplotlib)",
+       Type::boolean, {}, 0, 0, false},
   };
 }
 
@@ -385,8 +144,8 @@ std::string Settings::help()
 {
   std::ostringstream os;
   for (const auto& s : specs())
-    os << "  " << s.key << (s.default_value.empty() ? " (optional)" : " (default " + s.default_value + ")") << ": "
-       << s.help << '\n';
+    os << "  " << s.key << (s.default_value.empty() ? " (optional)" : " (default " + s.default_value + ")")
+       << ": " << s.help << '\n';
   return os.str();
 }
 
@@ -395,9 +154,8 @@ const SettingSpec& Settings::spec(const std::string& key, const std::string& sou
   for (const auto& s : specs())
     if (s.key == key)
       return s;
-  FETICON_CHECK(false, source << ": unknown key '" << key
-                              << "'; run 'feticon run --help' for "
-                                 "the list of keys");
+  FETICON_CHECK(false, source << ": unknown key '" << key << "'; run 'feticon run --help' for "
+                                                            "the list of keys");
   throw; // unreachable: FETICON_CHECK(false, ...) throws
 }
 
@@ -407,44 +165,45 @@ void Settings::set(const std::string& key, const std::string& raw, const std::st
   const std::string value = trim(raw);
   switch (s.type)
   {
-    case Type::number:
-    case Type::integer:
+  case Type::number:
+  case Type::integer:
+  {
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(value.c_str(), &end);
+    FETICON_CHECK(!value.empty() && end && *end == '\0' && std::isfinite(v),
+                  source << ": " << key << " = '" << value << "' is not a finite number");
+    // Underflow (1e-320, subnormal) as well: no setting means anything there, and number()
+    // would not read it back.
+    FETICON_CHECK(errno != ERANGE, source << ": " << key << " = " << value
+                                          << " is out of the range of normal double-precision numbers");
+    if (s.type == Type::integer)
+      FETICON_CHECK(v == std::floor(v), source << ": " << key << " = " << value
+                                               << " must be an integer");
+    const bool below = s.min_exclusive ? v <= s.min : v < s.min;
+    const bool above = s.max_exclusive ? v >= s.max : v > s.max;
+    FETICON_CHECK(!below && !above, source << ": " << key << " = " << value << " is out of range "
+                                           << (s.min_exclusive ? "(" : "[") << s.min << ", " << s.max
+                                           << (s.max_exclusive ? ")" : "]") << ": " << s.help);
+    break;
+  }
+  case Type::text:
+    if (!s.choices.empty())
     {
-      char* end = nullptr;
-      errno = 0;
-      const double v = std::strtod(value.c_str(), &end);
-      FETICON_CHECK(!value.empty() && end && *end == '\0' && std::isfinite(v),
-                    source << ": " << key << " = '" << value << "' is not a finite number");
-      // Underflow (1e-320, subnormal) as well: no setting means anything there, and number()
-      // would not read it back.
-      FETICON_CHECK(errno != ERANGE, source << ": " << key << " = " << value
-                                            << " is out of the range of normal double-precision numbers");
-      if (s.type == Type::integer)
-        FETICON_CHECK(v == std::floor(v), source << ": " << key << " = " << value << " must be an integer");
-      const bool below = s.min_exclusive ? v <= s.min : v < s.min;
-      const bool above = s.max_exclusive ? v >= s.max : v > s.max;
-      FETICON_CHECK(!below && !above, source << ": " << key << " = " << value << " is out of range "
-                                             << (s.min_exclusive ? "(" : "[") << s.min << ", " << s.max
-                                             << (s.max_exclusive ? ")" : "]") << ": " << s.help);
-      break;
-    }
-    case Type::text:
-      if (!s.choices.empty())
+      bool ok = false;
+      std::string list;
+      for (const auto& c : s.choices)
       {
-        bool ok = false;
-        std::string list;
-        for (const auto& c : s.choices)
-        {
-          ok = ok || c == value;
-          list += (list.empty() ? "" : ", ") + c;
-        }
-        FETICON_CHECK(ok, source << ": " << key << " = '" << value << "' must be one of: " << list);
+        ok = ok || c == value;
+        list += (list.empty() ? "" : ", ") + c;
       }
-      break;
-    case Type::boolean:
-      FETICON_CHECK(value == "true" || value == "false",
-                    source << ": " << key << " = '" << value << "' must be true or false");
-      break;
+      FETICON_CHECK(ok, source << ": " << key << " = '" << value << "' must be one of: " << list);
+    }
+    break;
+  case Type::boolean:
+    FETICON_CHECK(value == "true" || value == "false",
+                  source << ": " << key << " = '" << value << "' must be true or false");
+    break;
   }
   _values[key] = value;
   _given.insert(key);
@@ -462,18 +221,9 @@ std::optional<double> Settings::optional_number(const std::string& key) const
   const std::string& value = _values.at(key);
   return value.empty() ? std::nullopt : std::optional<double>(std::stod(value));
 }
-int Settings::integer(const std::string& key) const
-{
-  return static_cast<int>(std::stod(_values.at(key)));
-}
-const std::string& Settings::text(const std::string& key) const
-{
-  return _values.at(key);
-}
-bool Settings::flag(const std::string& key) const
-{
-  return _values.at(key) == "true";
-}
+int Settings::integer(const std::string& key) const { return static_cast<int>(std::stod(_values.at(key))); }
+const std::string& Settings::text(const std::string& key) const { return _values.at(key); }
+bool Settings::flag(const std::string& key) const { return _values.at(key) == "true"; }
 
 std::string Settings::to_yaml() const
 {

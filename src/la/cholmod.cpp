@@ -21,7 +21,8 @@ CholmodFactor& CholmodFactor::operator=(CholmodFactor&&) noexcept = default;
 
 void CholmodFactor::factorize(const SparseMatrix& A, const char* what)
 {
-  FETICON_CHECK(A.rows() == A.cols(), what << " is not square (" << A.rows() << " x " << A.cols() << ")");
+  FETICON_CHECK(A.rows() == A.cols(), what << " is not square (" << A.rows() << " x "
+                                          << A.cols() << ")");
   _impl = std::make_unique<Impl>();
   // CHOLMOD picks simplicial (small subdomains: no BLAS call overhead) or supernodal.
   _impl->solver.setMode(Eigen::CholmodAuto);
@@ -70,7 +71,8 @@ long CholmodFactor::factor_nonzeros() const
   if (!_impl)
     return 0;
   // Eigen exposes the cholmod_factor; for a supernodal factor xsize counts the entries.
-  auto& factor = const_cast<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>&>(_impl->solver);
+  auto& factor = const_cast<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>&>(
+      _impl->solver);
   cholmod_common& common = factor.cholmod();
   return static_cast<long>(common.lnz);
 }

@@ -52,7 +52,10 @@ public:
   const std::vector<std::vector<Index>>& blocks() const override { return _blocks; }
   int64_t global_index(Index i) const override { return i; }
   void combine(std::span<const double> partials, int k, double* totals) const override;
-  std::pair<double, Index> min_location(double value, Index local_index) const override { return {value, local_index}; }
+  std::pair<double, Index> min_location(double value, Index local_index) const override
+  {
+    return {value, local_index};
+  }
   double max(double value) const override { return value; }
 
 private:
@@ -61,7 +64,8 @@ private:
 };
 
 /// Sums K quantities over all entries: term(i, s) adds entry i's contributions to s[0..K).
-template <int K, class Term> std::array<double, K> reduce_sum(const VectorSpace& space, Term&& term)
+template <int K, class Term>
+std::array<double, K> reduce_sum(const VectorSpace& space, Term&& term)
 {
   const auto& blocks = space.blocks();
   std::vector<double> partials(K * blocks.size(), 0.0);

@@ -136,12 +136,12 @@ std::vector<int64_t> ascii_node_tags(LineReader& in, const std::vector<int64_t>&
   const int64_t declared = header[msh4 ? 1 : 0];
   auto read_tag = [&](int64_t low, int64_t high)
   {
-    FETICON_CHECK(in.next(line) && line != "$EndNodes",
-                  where << ": line " << in.number() << ": $Nodes declares " << declared << " nodes but lists fewer");
+    FETICON_CHECK(in.next(line) && line != "$EndNodes", where << ": line " << in.number() << ": $Nodes declares "
+                                                               << declared << " nodes but lists fewer");
     const std::string first = tokens(line).empty() ? std::string() : tokens(line)[0];
     const int64_t tag = parse_count(first, where, in.number(), "the node tag");
-    FETICON_CHECK(tag >= low && tag <= high,
-                  where << ": line " << in.number() << ": node tag " << tag << " is outside " << low << ".." << high);
+    FETICON_CHECK(tag >= low && tag <= high, where << ": line " << in.number() << ": node tag " << tag
+                                                   << " is outside " << low << ".." << high);
     tags.push_back(tag);
   };
   if (!msh4)
@@ -163,11 +163,12 @@ std::vector<int64_t> ascii_node_tags(LineReader& in, const std::vector<int64_t>&
         FETICON_CHECK(in.next(line) && line != "$EndNodes", where << ": ends inside a block of coordinates");
     }
   }
-  FETICON_CHECK(in.next(line) && line == "$EndNodes", where << ": line " << in.number() << ": $Nodes declares "
-                                                            << declared
-                                                            << " nodes but lists more (expected $EndNodes)");
+  FETICON_CHECK(in.next(line) && line == "$EndNodes",
+                where << ": line " << in.number() << ": $Nodes declares " << declared
+                      << " nodes but lists more (expected $EndNodes)");
   std::sort(tags.begin(), tags.end());
-  FETICON_CHECK(std::adjacent_find(tags.begin(), tags.end()) == tags.end(), where << ": $Nodes lists a node tag twice");
+  FETICON_CHECK(std::adjacent_find(tags.begin(), tags.end()) == tags.end(),
+                where << ": $Nodes lists a node tag twice");
   return tags;
 }
 
@@ -193,8 +194,9 @@ void check_ascii_elements(LineReader& in, const std::vector<int64_t>& header, bo
   };
   auto next_element = [&]()
   {
-    FETICON_CHECK(in.next(line) && line != "$EndElements", where << ": line " << in.number() << ": $Elements declares "
-                                                                 << declared << " elements but lists fewer");
+    FETICON_CHECK(in.next(line) && line != "$EndElements", where << ": line " << in.number()
+                                                                 << ": $Elements declares " << declared
+                                                                 << " elements but lists fewer");
     return tokens(line);
   };
   int64_t listed = 0;
@@ -234,8 +236,8 @@ GmshDeclaredSizes precheck_gmsh_file(const std::filesystem::path& path, const st
   while (in.next(line) && line.find_first_not_of(" \t") == std::string::npos)
   {
   }
-  FETICON_CHECK(line == "$MeshFormat",
-                where << ": line " << in.number() << ": expected $MeshFormat (is this a Gmsh MSH file?)");
+  FETICON_CHECK(line == "$MeshFormat", where << ": line " << in.number()
+                                             << ": expected $MeshFormat (is this a Gmsh MSH file?)");
   FETICON_CHECK(in.next(line), where << ": ends inside $MeshFormat");
   const std::vector<std::string> format = tokens(line);
   FETICON_CHECK(format.size() >= 3 && (format[0].rfind("2.", 0) == 0 || format[0].rfind("4.", 0) == 0) &&
@@ -280,8 +282,8 @@ GmshDeclaredSizes precheck_gmsh_file(const std::filesystem::path& path, const st
       FETICON_CHECK(in.next(line), where << ": ends after " << section);
       header = integers(line, where, in.number(), section);
       FETICON_CHECK(header.size() == (msh4 ? 4u : 1u), where << ": line " << in.number() << ": the " << section
-                                                             << " header '" << line << "' must have "
-                                                             << (msh4 ? "4 numbers" : "1 number"));
+                                                            << " header '" << line << "' must have "
+                                                            << (msh4 ? "4 numbers" : "1 number"));
     }
     plausible(header[msh4 ? 1 : 0], section);
     return header;

@@ -50,40 +50,41 @@ std::string executable_build_id()
   dl_iterate_phdr(
       [](dl_phdr_info* info, size_t, void* data) -> int
       {
-    // The first object is the executable; its notes hold NT_GNU_BUILD_ID.
-    auto& out = *static_cast<std::string*>(data);
-    for (int h = 0; h < info->dlpi_phnum; ++h)
-    {
-      const ElfW(Phdr)& header = info->dlpi_phdr[h];
-      if (header.p_type != PT_NOTE)
-        continue;
-      const char* note = reinterpret_cast<const char*>(info->dlpi_addr + header.p_vaddr);
-      const char* end = note + header.p_memsz;
-      while (note + sizeof(ElfW(Nhdr)) <= end)
-      {
-        const auto* n = reinterpret_cast<const ElfW(Nhdr)*>(note);
-        const char* name = note + sizeof(ElfW(Nhdr));
-        const char* desc = name + ((n->n_namesz + 3) & ~3u);
-        if (n->n_type == NT_GNU_BUILD_ID && n->n_namesz == 4 && std::memcmp(name, "GNU", 4) == 0)
+        // The first object is the executable; its notes hold NT_GNU_BUILD_ID.
+        auto& out = *static_cast<std::string*>(data);
+        for (int h = 0; h < info->dlpi_phnum; ++h)
         {
-          std::ostringstream hex;
-          for (unsigned k = 0; k < n->n_descsz; ++k)
-            hex << std::hex << std::setw(2) << std::setfill('0')
-                << static_cast<int>(static_cast<unsigned char>(desc[k]));
-          out = hex.str();
-          return 1;
+          const ElfW(Phdr)& header = info->dlpi_phdr[h];
+          if (header.p_type != PT_NOTE)
+            continue;
+          const char* note = reinterpret_cast<const char*>(info->dlpi_addr + header.p_vaddr);
+          const char* end = note + header.p_memsz;
+          while (note + sizeof(ElfW(Nhdr)) <= end)
+          {
+            const auto* n = reinterpret_cast<const ElfW(Nhdr)*>(note);
+            const char* name = note + sizeof(ElfW(Nhdr));
+            const char* desc = name + ((n->n_namesz + 3) & ~3u);
+            if (n->n_type == NT_GNU_BUILD_ID && n->n_namesz == 4 && std::memcmp(name, "GNU", 4) == 0)
+            {
+              std::ostringstream hex;
+              for (unsigned k = 0; k < n->n_descsz; ++k)
+                hex << std::hex << std::setw(2) << std::setfill('0')
+                    << static_cast<int>(static_cast<unsigned char>(desc[k]));
+              out = hex.str();
+              return 1;
+            }
+            note = desc + ((n->n_descsz + 3) & ~3u);
+          }
         }
-        note = desc + ((n->n_descsz + 3) & ~3u);
-      }
-    }
-    return 1; // only the executable
+        return 1; // only the executable
       },
       &id);
   return id;
 }
 
 // Binary writing and reading of the mesh (native byte order: the cache is per machine).
-template <class T> void put(std::string& out, const T& value)
+template <class T>
+void put(std::string& out, const T& value)
 {
   out.append(reinterpret_cast<const char*>(&value), sizeof(T));
 }
@@ -92,7 +93,8 @@ void put_string(std::string& out, const std::string& s)
   put<uint64_t>(out, s.size());
   out += s;
 }
-template <class T> void put_vector(std::string& out, const std::vector<T>& v)
+template <class T>
+void put_vector(std::string& out, const std::vector<T>& v)
 {
   put<uint64_t>(out, v.size());
   out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
@@ -132,7 +134,8 @@ public:
       : _data(data), _at(first), _end(std::min(end, data.size()))
   {
   }
-  template <class T> bool get(T& value)
+  template <class T>
+  bool get(T& value)
   {
     if (_end - _at < sizeof(T))
       return false;
@@ -158,7 +161,8 @@ public:
     _at += size;
     return true;
   }
-  template <class T> bool get_vector(std::vector<T>& v)
+  template <class T>
+  bool get_vector(std::vector<T>& v)
   {
     uint64_t size = 0;
     if (!get(size) || size > (_end - _at) / sizeof(T))
@@ -166,7 +170,8 @@ public:
     v.resize(size);
     return get_bytes(v.data(), size, sizeof(T));
   }
-  template <class T> bool get_named_vectors(std::map<std::string, std::vector<T>>& sets)
+  template <class T>
+  bool get_named_vectors(std::map<std::string, std::vector<T>>& sets)
   {
     uint64_t count = 0;
     if (!get(count) || count > _data.size())
@@ -317,8 +322,8 @@ MeshCacheLocation mesh_cache_location()
   return location;
 }
 
-HexMesh cached_mesh(const MeshCacheLocation& location, const std::string& key, const std::function<HexMesh()>& build,
-                    bool* hit)
+HexMesh cached_mesh(const MeshCacheLocation& location, const std::string& key,
+                    const std::function<HexMesh()>& build, bool* hit)
 {
   if (hit)
     *hit = false;

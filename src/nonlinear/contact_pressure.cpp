@@ -37,7 +37,8 @@ la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& 
   return areas;
 }
 
-std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, const ContactSolution& solution,
+std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
+                                                const ContactSolution& solution,
                                                 fem::Kinematics kinematics)
 {
   const auto& rows = solution.constraints;
@@ -56,7 +57,8 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
   {
     const auto& X = problem.mesh.nodes;
     return plane_strain ? std::make_tuple(std::lround(X(node, 0) * key_scale), 0L, 0L, 0)
-                        : std::make_tuple(std::lround(X(node, 0) * key_scale), std::lround(X(node, 1) * key_scale),
+                        : std::make_tuple(std::lround(X(node, 0) * key_scale),
+                                          std::lround(X(node, 1) * key_scale),
                                           std::lround(X(node, 2) * key_scale), node);
   };
   std::map<std::tuple<long, long, long, int32_t>, PressureSample> by_x;

@@ -36,7 +36,8 @@ decomposition::Partition make_partition(const fem::Problem& problem, const Solve
   if (s.partitioner == Partitioner::rcb)
     return decomposition::partition_rcb(problem.mesh, n);
   // Structured: split each body along x only (enough for studies; boxes via the API).
-  return decomposition::partition_structured(problem.mesh, {std::max(1, s.subdomains / problem.mesh.n_bodies()), 1, 1});
+  return decomposition::partition_structured(problem.mesh,
+                                             {std::max(1, s.subdomains / problem.mesh.n_bodies()), 1, 1});
 }
 
 /// Reductions over owned stacked vectors: one block per owned subdomain.
@@ -103,9 +104,8 @@ std::vector<char> schur_boundary_dofs(const fem::Problem& problem, const fem::Co
           flag_node(node);
     return boundary;
   }
-  for_each_touched_dof(problem, *contact_rows,
-                       [&](int64_t dof)
-                       {
+  for_each_touched_dof(problem, *contact_rows, [&](int64_t dof)
+  {
     if (all_components)
       flag_node(dof / 3);
     else
@@ -153,8 +153,7 @@ double explicit_block_budget(const SolverSettings& settings)
 /// (operator applications measured at 76593aa: sphere on block 174 in one load step and 263 in
 /// two, hertz3d r1 219 and 315, Hertz 240 across large 296; large-displacement runs took
 /// five times as many before the outer loop's rows near contact, 1dfc320).
-std::pair<bool, std::string> choose_explicit(const SolverSettings& settings,
-                                             const decomposition::SubdomainSystem& system,
+std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, const decomposition::SubdomainSystem& system,
                                              const decomposition::SchurComplements* schur, int n_load_steps,
                                              int64_t held, const par::Communicator& comm)
 {
@@ -211,9 +210,9 @@ std::string format_iteration(const OuterIteration& it)
 {
   char line[256];
   std::snprintf(line, sizeof line,
-                "step %2d  outer %2d  inner %5d  residual %9.2e  |du|/|u| %9.2e  active %5ld  %7.2f s", it.load_step,
-                it.iteration, it.qp.iterations, it.residual_norm, it.displacement_change,
-                static_cast<long>(it.active_contacts), it.seconds);
+                "step %2d  outer %2d  inner %5d  residual %9.2e  |du|/|u| %9.2e  active %5ld  %7.2f s",
+                it.load_step, it.iteration, it.qp.iterations, it.residual_norm,
+                it.displacement_change, static_cast<long>(it.active_contacts), it.seconds);
   return line;
 }
 
@@ -287,8 +286,8 @@ private:
   /// also for the Schur boundary) and the subset near contact that its QPs get.
   std::optional<LinearContactRows> _linear_rows;
 
-  la::Vector _u;          ///< stacked displacement of the owned subdomains
-  la::Vector _f_int;      ///< internal force at _u, kept up to date after every update
+  la::Vector _u;     ///< stacked displacement of the owned subdomains
+  la::Vector _f_int; ///< internal force at _u, kept up to date after every update
   double _f_int_norm = 0; ///< ||f_int|| assembled over the subdomains, with _f_int
   /// Warm start of the next QP. Without SMALBE-M's equality multiplier the next QP starts
   /// with the full gradient of the bound multipliers' coarse part and rebuilds it over ~10
@@ -298,8 +297,8 @@ private:
 
   // The current load step.
   int _step = 0;
-  la::Vector _f_step;      ///< f(t_n), stacked
-  double _f_step_norm = 0; ///< ||f(t_n)|| (fem::LoadHistory::external_force_norm)
+  la::Vector _f_step;        ///< f(t_n), stacked
+  double _f_step_norm = 0;   ///< ||f(t_n)|| (fem::LoadHistory::external_force_norm)
   std::unique_ptr<decomposition::EqualityRows> _equality;
   int64_t _n_equality = 0;
   bool _forcing = false;
@@ -307,20 +306,20 @@ private:
   la::Vector _equality_by_id; ///< for the checkpoint of a converged step
 };
 
-FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSettings& settings, TimerTable& timers,
-                                   par::Communicator comm, ContactSolution& out)
+FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSettings& settings,
+                                   TimerTable& timers, par::Communicator comm, ContactSolution& out)
     : _problem(problem), _settings(settings), _timers(timers), _out(out),
-      _linear(settings.kinematics == fem::Kinematics::linear), _history(settings.load_history(problem)), _decomp(
-                                                                                                             [&]
-                                                                                                             {
-  ScopedTimer t(timers, "decomposition");
-  return std::make_unique<decomposition::Decomposition>(problem.mesh, make_partition(problem, settings),
-                                                        problem.eliminated, comm);
-      }()),
-_primal_space(owned_subdomain_space(*_decomp)),
-_system(std::make_unique<decomposition::SubdomainSystem>(*_decomp, problem.materials, settings.kinematics,
-                                                         settings.generalized_inverse)),
-_dirichlet(problem.all_constrained_dofs())
+      _linear(settings.kinematics == fem::Kinematics::linear), _history(settings.load_history(problem)),
+      _decomp([&]
+              {
+                ScopedTimer t(timers, "decomposition");
+                return std::make_unique<decomposition::Decomposition>(
+                    problem.mesh, make_partition(problem, settings), problem.eliminated, comm);
+              }()),
+      _primal_space(owned_subdomain_space(*_decomp)),
+      _system(std::make_unique<decomposition::SubdomainSystem>(*_decomp, problem.materials, settings.kinematics,
+                                                               settings.generalized_inverse)),
+      _dirichlet(problem.all_constrained_dofs())
 {
   _out.n_subdomains = _decomp->n_subdomains();
   if (!comm.serial())
@@ -496,9 +495,9 @@ double FetiContactSolve::qp_rtol(int k)
     _forcing = false;
   if (!_forcing)
     return _settings.dual.rtol;
-  const double forced =
-      k == 1 ? _settings.max_forcing_rtol
-             : std::min(_settings.max_forcing_rtol, _settings.forcing * history.back().displacement_change);
+  const double forced = k == 1 ? _settings.max_forcing_rtol
+                               : std::min(_settings.max_forcing_rtol,
+                                          _settings.forcing * history.back().displacement_change);
   return std::max(_settings.dual.rtol, forced);
 }
 
@@ -647,8 +646,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
                 "1e-9 L) and the same contact set, so another iteration repeats this one; the residual left is "
                 "the dual QP's equilibrium error (its feasibility %.1e at qp.rtol %.0e): a smaller qp.rtol or a "
                 "larger residual_tolerance",
-                it.residual_norm, _convergence.residual_tolerance, du_max, solution.feasibility_error,
-                _settings.dual.rtol);
+                it.residual_norm, _convergence.residual_tolerance, du_max, solution.feasibility_error, _settings.dual.rtol);
   return IterationOutcome::step_at_floor(floor);
 }
 
@@ -698,13 +696,13 @@ double explicit_forming_bytes(std::vector<double> boundary_sizes, int threads)
   return bytes;
 }
 
-ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings, TimerTable& timers,
-                                   const StepCallback& on_step, const ContactSolution* previous, par::Communicator comm)
+ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings,
+                                   TimerTable& timers, const StepCallback& on_step,
+                                   const ContactSolution* previous, par::Communicator comm)
 {
   problem.validate();
   FETICON_CHECK(problem.contacts.size() == 1, "the FETI contact solver handles exactly one contact "
-                                              "pair; the problem has "
-                                                  << problem.contacts.size());
+                                              "pair; the problem has " << problem.contacts.size());
   const auto run_start = std::chrono::steady_clock::now();
   ContactSolution out;
   FetiContactSolve solve(problem, settings, timers, comm, out);

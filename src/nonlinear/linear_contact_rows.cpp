@@ -60,7 +60,7 @@ bool LinearContactRows::expand(const la::Vector& u)
 }
 
 la::Vector LinearContactRows::all_multipliers(const contact::ContactConstraints& selected,
-                                              const la::Vector& lambda) const
+                                               const la::Vector& lambda) const
 {
   la::Vector all = la::Vector::Zero(_candidates.n_rows());
   la::Index k = 0;

@@ -26,7 +26,10 @@ namespace
 void check_parameters(const HertzMeshParameters& p)
 {
   auto check_positive = [](double value, const char* name)
-  { FETICON_CHECK(std::isfinite(value) && value > 0, "Hertz mesh: " << name << " = " << value << " must be > 0"); };
+  {
+    FETICON_CHECK(std::isfinite(value) && value > 0,
+                  "Hertz mesh: " << name << " = " << value << " must be > 0");
+  };
   check_positive(p.cylinder_radius, "cylinder_radius");
   check_positive(p.cylinder_width, "cylinder_width");
   check_positive(p.block_width, "block_width");
@@ -40,17 +43,20 @@ void check_parameters(const HertzMeshParameters& p)
   FETICON_CHECK(std::isfinite(p.growth_ratio) && p.growth_ratio >= 1,
                 "Hertz mesh: growth_ratio = " << p.growth_ratio << " must be >= 1");
   FETICON_CHECK(p.cylinder_width < p.cylinder_radius,
-                "Hertz mesh: cylinder_width = " << p.cylinder_width
-                                                << " m must be < cylinder_radius = " << p.cylinder_radius << " m");
+                "Hertz mesh: cylinder_width = "
+                    << p.cylinder_width << " m must be < cylinder_radius = " << p.cylinder_radius
+                    << " m");
   FETICON_CHECK(p.fine_width < std::min(p.cylinder_width, p.block_width),
-                "Hertz mesh: fine_width = " << p.fine_width << " m must be < cylinder_width and block_width");
+                "Hertz mesh: fine_width = " << p.fine_width
+                                            << " m must be < cylinder_width and block_width");
   FETICON_CHECK(p.fine_depth < std::min(p.cylinder_radius, p.block_depth),
-                "Hertz mesh: fine_depth = " << p.fine_depth << " m must be < cylinder_radius and block_depth");
+                "Hertz mesh: fine_depth = " << p.fine_depth
+                                            << " m must be < cylinder_radius and block_depth");
   const double h_max = std::max(1.0, p.master_ratio) * p.element_size / p.refinement;
-  FETICON_CHECK(std::min(p.fine_width, p.fine_depth) >= h_max, "Hertz mesh: the fine region (fine_width, fine_depth >= "
-                                                                   << std::min(p.fine_width, p.fine_depth)
-                                                                   << " m) must hold at least one cell of " << h_max
-                                                                   << " m; decrease element_size or master_ratio");
+  FETICON_CHECK(std::min(p.fine_width, p.fine_depth) >= h_max,
+                "Hertz mesh: the fine region (fine_width, fine_depth >= "
+                    << std::min(p.fine_width, p.fine_depth) << " m) must hold at least one cell of "
+                    << h_max << " m; decrease element_size or master_ratio");
 }
 
 /// Replaces the face sets `sources` by their union `target` (with its node set).
@@ -78,21 +84,25 @@ HexMesh tensor_bodies(const HertzMeshParameters& p)
   const double ratio = std::pow(p.growth_ratio, 1 / p.refinement);
   const double thickness = p.thickness;
 
-  const std::vector<double> cylinder_x = mesh::graded_positions(p.cylinder_width, h_slave, p.fine_width, ratio);
+  const std::vector<double> cylinder_x =
+      mesh::graded_positions(p.cylinder_width, h_slave, p.fine_width, ratio);
   const std::vector<double> cylinder_t = mesh::graded_positions(radius, h_slave, p.fine_depth, ratio);
-  const std::vector<double> block_x = mesh::graded_positions(p.block_width, h_master, p.fine_width, ratio);
-  const std::vector<double> block_d = mesh::graded_positions(p.block_depth, h_master, p.fine_depth, ratio);
-  auto n_cells = [](const std::vector<double>& positions) { return static_cast<int32_t>(positions.size()) - 1; };
+  const std::vector<double> block_x =
+      mesh::graded_positions(p.block_width, h_master, p.fine_width, ratio);
+  const std::vector<double> block_d =
+      mesh::graded_positions(p.block_depth, h_master, p.fine_depth, ratio);
+  auto n_cells = [](const std::vector<double>& positions)
+  { return static_cast<int32_t>(positions.size()) - 1; };
 
   // Column at abscissa x spans from the arc to the axis plane, height sqrt(R1^2 - x^2).
   const HexMesh cylinder = mesh::generate_mapped_block(
       {n_cells(cylinder_x), n_cells(cylinder_t), 1},
       [&](int32_t i, int32_t j, int32_t k)
       {
-    const double x = cylinder_x[i];
-    const double height = std::sqrt(radius * radius - x * x);
-    const double y = (radius - height) + cylinder_t[j] / radius * height;
-    return Eigen::Vector3d(x, y, k * thickness);
+        const double x = cylinder_x[i];
+        const double height = std::sqrt(radius * radius - x * x);
+        const double y = (radius - height) + cylinder_t[j] / radius * height;
+        return Eigen::Vector3d(x, y, k * thickness);
       },
       "cylinder");
   // j counts upward, while the graded depths start at the contact surface y = 0.
@@ -107,14 +117,16 @@ HexMesh tensor_bodies(const HertzMeshParameters& p)
   mesh::append_mesh(mesh, cylinder, "cylinder_");
   mesh::append_mesh(mesh, block, "block_");
   const std::vector<std::pair<std::string, std::string>> renames = {
-      {"cylinder_ymin", "cylinder_contact"}, {"cylinder_ymax", "load"},       {"cylinder_xmin", "cylinder_symmetry"},
-      {"cylinder_xmax", "cylinder_side"},    {"block_ymax", "block_contact"}, {"block_ymin", "support"},
-      {"block_xmin", "block_symmetry"},      {"block_xmax", "block_side"},
+      {"cylinder_ymin", "cylinder_contact"},  {"cylinder_ymax", "load"},
+      {"cylinder_xmin", "cylinder_symmetry"}, {"cylinder_xmax", "cylinder_side"},
+      {"block_ymax", "block_contact"},        {"block_ymin", "support"},
+      {"block_xmin", "block_symmetry"},       {"block_xmax", "block_side"},
   };
   for (const auto& [from, to] : renames)
     merge_sets(mesh, {from}, to);
   return mesh;
 }
+
 
 /// Cell size of the graded mesh with size h at the contact band [0, fine_width] x {0}:
 /// h + (q - 1) d at the distance d from the band, i.e. cells growing by about q from one to
@@ -148,8 +160,7 @@ HexMesh graded_bodies(const HertzMeshParameters& p)
                   {{0, -p.block_depth}, "symmetry"}};
   HexMesh mesh;
   mesh::append_mesh(mesh, mesh::extrude_cross_section(cylinder, graded_size(p, h_slave), p.thickness), "cylinder_");
-  mesh::append_mesh(mesh, mesh::extrude_cross_section(block, graded_size(p, p.master_ratio * h_slave), p.thickness),
-                    "block_");
+  mesh::append_mesh(mesh, mesh::extrude_cross_section(block, graded_size(p, p.master_ratio * h_slave), p.thickness), "block_");
   merge_sets(mesh, {"cylinder_load"}, "load");
   merge_sets(mesh, {"block_support"}, "support");
   return mesh;
@@ -158,10 +169,11 @@ HexMesh graded_bodies(const HertzMeshParameters& p)
 std::string graded_cache_key(const HertzMeshParameters& p)
 {
   std::ostringstream key;
-  key << std::setprecision(17) << "hertz graded: radius " << p.cylinder_radius << " cylinder_width " << p.cylinder_width
-      << " block_width " << p.block_width << " block_depth " << p.block_depth << " thickness " << p.thickness
-      << " element_size " << p.element_size << " master_ratio " << p.master_ratio << " fine_width " << p.fine_width
-      << " fine_depth " << p.fine_depth << " growth_ratio " << p.growth_ratio << " refinement " << p.refinement;
+  key << std::setprecision(17) << "hertz graded: radius " << p.cylinder_radius << " cylinder_width "
+      << p.cylinder_width << " block_width " << p.block_width << " block_depth " << p.block_depth
+      << " thickness " << p.thickness << " element_size " << p.element_size << " master_ratio "
+      << p.master_ratio << " fine_width " << p.fine_width << " fine_depth " << p.fine_depth
+      << " growth_ratio " << p.growth_ratio << " refinement " << p.refinement;
   return key.str();
 }
 
@@ -209,10 +221,10 @@ int64_t hertz_node_estimate(const HertzMeshParameters& p)
   if (p.kind == HertzMeshKind::tensor)
   {
     const double q = std::pow(p.growth_ratio, 1 / p.refinement);
-    cells =
-        graded_cell_count(p.cylinder_width, h_slave, p.fine_width, q) * graded_cell_count(R, h_slave, p.fine_depth, q) +
-        graded_cell_count(p.block_width, h_master, p.fine_width, q) *
-            graded_cell_count(p.block_depth, h_master, p.fine_depth, q);
+    cells = graded_cell_count(p.cylinder_width, h_slave, p.fine_width, q) *
+                graded_cell_count(R, h_slave, p.fine_depth, q) +
+            graded_cell_count(p.block_width, h_master, p.fine_width, q) *
+                graded_cell_count(p.block_depth, h_master, p.fine_depth, q);
   }
   else
   {
@@ -235,8 +247,7 @@ HexMesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache)
   if (from_cache)
     *from_cache = false;
   HexMesh mesh = parameters.kind == HertzMeshKind::graded
-                     ? mesh::cached_mesh(
-                           graded_cache_key(parameters), [&] { return graded_bodies(parameters); }, from_cache)
+                     ? mesh::cached_mesh(graded_cache_key(parameters), [&] { return graded_bodies(parameters); }, from_cache)
                      : tensor_bodies(parameters);
   merge_sets(mesh, {"cylinder_zmin", "block_zmin"}, "zmin");
   merge_sets(mesh, {"cylinder_zmax", "block_zmax"}, "zmax");
@@ -247,7 +258,8 @@ HexMesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache)
   return mesh;
 }
 
-ContactZoneSummary summarize_contact_zone(const HexMesh& mesh, const std::string& face_set, double half_width)
+ContactZoneSummary summarize_contact_zone(const HexMesh& mesh, const std::string& face_set,
+                                          double half_width)
 {
   ContactZoneSummary summary;
   summary.min_size = std::numeric_limits<double>::infinity();
@@ -259,7 +271,8 @@ ContactZoneSummary summarize_contact_zone(const HexMesh& mesh, const std::string
     {
       min_x = std::min(min_x, mesh.nodes(face[a], 0));
       for (int b = 0; b < a; ++b)
-        size = std::max(size, (mesh.nodes.row(face[a]).head<2>() - mesh.nodes.row(face[b]).head<2>()).norm());
+        size = std::max(
+            size, (mesh.nodes.row(face[a]).head<2>() - mesh.nodes.row(face[b]).head<2>()).norm());
     }
     if (min_x >= half_width)
       continue;
@@ -267,7 +280,8 @@ ContactZoneSummary summarize_contact_zone(const HexMesh& mesh, const std::string
     summary.min_size = std::min(summary.min_size, size);
     summary.max_size = std::max(summary.max_size, size);
   }
-  FETICON_CHECK(summary.n_faces > 0, "face set '" << face_set << "' has no face with x < " << half_width << " m");
+  FETICON_CHECK(summary.n_faces > 0,
+                "face set '" << face_set << "' has no face with x < " << half_width << " m");
   return summary;
 }
 } // namespace feticon::problems

@@ -24,7 +24,8 @@ namespace
 class PlusCoarseTerm : public la::LinearOperator
 {
 public:
-  PlusCoarseTerm(const la::LinearOperator& B, const EqualityOperator& C, double factor) : factor(factor), _B(B), _C(C)
+  PlusCoarseTerm(const la::LinearOperator& B, const EqualityOperator& C, double factor)
+      : factor(factor), _B(B), _C(C)
   {
   }
   la::Index size() const override { return _B.size(); }
@@ -48,13 +49,15 @@ Smalbe::Smalbe(const la::LinearOperator& A, const EqualityOperator& C, SmalbeOpt
 {
   FETICON_CHECK(_options.rho > 0 && _options.M0 > 0 && _options.beta > 1 && _options.rtol > 0,
                 "SMALBE-M: need rho > 0, M0 > 0, beta > 1, rtol > 0");
-  FETICON_CHECK(_options.rho_growth >= 1 && _options.rho_limit >= 1 && _options.feasibility_reduction > 0 &&
-                    _options.feasibility_reduction < 1 && _options.feasibility_window >= 1,
+  FETICON_CHECK(_options.rho_growth >= 1 && _options.rho_limit >= 1 &&
+                    _options.feasibility_reduction > 0 && _options.feasibility_reduction < 1 &&
+                    _options.feasibility_window >= 1,
                 "SMALBE-M: need rho_growth >= 1, rho_limit >= 1, feasibility_reduction in (0, 1), "
                 "feasibility_window >= 1");
 }
 
-SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vector& x, const SmalbeStart* start)
+SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vector& x,
+                           const SmalbeStart* start)
 {
   const auto solve_start = std::chrono::steady_clock::now();
   std::unique_ptr<la::SerialSpace> serial;
@@ -113,7 +116,8 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
   // ||A + rho' C'C|| <= ||A + rho C'C|| + (rho' - rho) since ||C'C|| = 1: the step length
   // bound for a raised rho from the one for the current (its norm estimate 1.8/alpha_bar
   // grows by the difference).
-  auto raised_alpha_bar = [](double alpha_bar, double delta) { return alpha_bar / (1.0 + alpha_bar * delta / 1.8); };
+  auto raised_alpha_bar = [](double alpha_bar, double delta)
+  { return alpha_bar / (1.0 + alpha_bar * delta / 1.8); };
   if (rho > _options.rho && inner.alpha_bar > 0)
     inner.alpha_bar = raised_alpha_bar(inner.alpha_bar, rho - _options.rho);
   auto mprgp = std::make_unique<Mprgp>(H, inner);
@@ -140,8 +144,8 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
     }
     std::ostringstream line;
     line << "    SMALBE-M outer " << k + 1 << ": MPRGP steps " << r.iterations << ", ||g_P||/||b|| "
-         << r.projected_gradient_norm / b_norm << ", ||Cx||/||b|| " << report.equality_residual << ", M " << M
-         << ", rho " << rho;
+         << r.projected_gradient_norm / b_norm << ", ||Cx||/||b|| " << report.equality_residual
+         << ", M " << M << ", rho " << rho;
     // Long solves (a minute per QP at 1M DOFs) also report at the summary level, at most
     // every 10 s, so that a user sees progress between the outer-iteration lines.
     if (log::enabled(log::Level::iterations))
@@ -175,21 +179,25 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
       reference_feasibility = feasibility;
       reference_iteration = k;
     }
-    else if (k - reference_iteration >= _options.feasibility_window && rho < rho_max && _options.rho_growth > 1)
+    else if (k - reference_iteration >= _options.feasibility_window && rho < rho_max &&
+             _options.rho_growth > 1)
     {
       // Observed contraction per outer iteration q ~ 1 - rho s/(h + rho s) (see smalbe.hpp);
       // rho q/(1 - q) would make it 1/2. Grow by at least rho_growth, at most rho_growth^3.
-      const double q = std::pow(feasibility / reference_feasibility, 1.0 / (k - reference_iteration));
+      const double q = std::pow(feasibility / reference_feasibility,
+                                1.0 / (k - reference_iteration));
       const double wanted = q < 1 ? q / (1 - q) : std::numeric_limits<double>::infinity();
-      const double growth = std::clamp(wanted, _options.rho_growth, std::pow(_options.rho_growth, 3));
+      const double growth = std::clamp(wanted, _options.rho_growth,
+                                       std::pow(_options.rho_growth, 3));
       const double new_rho = std::min(rho * growth, rho_max);
       // From the alpha_bar in use (smaller if MPRGP has halved it); MPRGP still halves
       // alpha_bar whenever an expansion step increases the cost.
       MprgpOptions raised = inner;
       raised.alpha_bar = raised_alpha_bar(mprgp->alpha_bar(), new_rho - rho);
-      log::iteration("    SMALBE-M: ||Cx|| stalled at " + std::to_string(feasibility / b_norm) + " ||b|| for " +
-                     std::to_string(k - reference_iteration) + " outer iterations: rho " + std::to_string(rho) +
-                     " -> " + std::to_string(new_rho));
+      log::iteration("    SMALBE-M: ||Cx|| stalled at " + std::to_string(feasibility / b_norm) +
+                     " ||b|| for " + std::to_string(k - reference_iteration) +
+                     " outer iterations: rho " + std::to_string(rho) + " -> " +
+                     std::to_string(new_rho));
       rho = new_rho;
       H.factor = rho;
       mprgp = std::make_unique<Mprgp>(H, raised);
@@ -204,17 +212,14 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
   H.factor = _options.rho; // the cost is reported for the initial augmentation, as before a raise
   H.apply(x, Hx);
   report.hessian_multiplications += 1;
-  const auto [xHx, bx] = la::reduce_sum<2>(space,
-                                           [&](la::Index i, double* sum)
-                                           {
-    sum[0] += x[i] * Hx[i];
-    sum[1] += b[i] * x[i];
-  });
+  const auto [xHx, bx] = la::reduce_sum<2>(space, [&](la::Index i, double* sum)
+                                          { sum[0] += x[i] * Hx[i]; sum[1] += b[i] * x[i]; });
   report.cost = 0.5 * xHx - bx;
   report.final_M = M;
   report.final_rho = rho;
   report.omega = omega;
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();
+  report.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();
   return report;
 }
 } // namespace feticon::qp

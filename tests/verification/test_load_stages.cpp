@@ -37,9 +37,7 @@ struct StageAnswer
 
 StageAnswer answer(const fem::Problem& problem, const nonlinear::ContactSolution& solution, fem::Kinematics kinematics)
 {
-  StageAnswer out{solution.u,
-                  {},
-                  nonlinear::total_normal_force(solution),
+  StageAnswer out{solution.u, {}, nonlinear::total_normal_force(solution),
                   solution.steps.empty() ? 0.0 : solution.steps.back().load_factor};
   for (const auto& sample : nonlinear::slave_pressure_by_x(problem, solution, kinematics))
     out.pressure.push_back(sample.pressure);
@@ -61,7 +59,7 @@ struct Recorder
       steps[step] = answer(problem, s, kinematics);
       if (keep_solutions)
         solutions[step] = s;
-        };
+    };
   }
 };
 
@@ -159,7 +157,8 @@ void print(const char* what, const HertzStages& r)
               what, relative_difference(r.stage1.u, r.reference1.u),
               pressure_difference(r.stage1.pressure, r.reference1.pressure, r.p0),
               relative_difference(r.stage2.u, r.reference2.u),
-              pressure_difference(r.stage2.pressure, r.reference2.pressure, r.p0), r.stage2.force, r.reference2.force);
+              pressure_difference(r.stage2.pressure, r.reference2.pressure, r.p0), r.stage2.force,
+              r.reference2.force);
 }
 } // namespace
 
@@ -421,7 +420,8 @@ TEST(LoadStages, DirectNewtonFollowsTheHistory)
                   .converged);
   EXPECT_TRUE((u_plain.array() == u_one.array()).all());
   const double du = relative_difference(u_two, u_one);
-  std::printf("direct Newton, two stages against one: |du|/|u| %.2e, tip deflection %.6f m\n", du, -u_one.minCoeff());
+  std::printf("direct Newton, two stages against one: |du|/|u| %.2e, tip deflection %.6f m\n", du,
+              -u_one.minCoeff());
   EXPECT_GT(-u_one.minCoeff(), 0.5); // large deflection: path independence is not trivial
   EXPECT_LT(du, 1e-9);
 }

@@ -9,7 +9,8 @@ namespace feticon::mesh
 {
 namespace
 {
-template <class Operation> std::string error_of(Operation&& operation)
+template <class Operation>
+std::string error_of(Operation&& operation)
 {
   try
   {

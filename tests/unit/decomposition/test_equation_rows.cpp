@@ -171,14 +171,9 @@ TEST(EquationRows, DegenerateEquationsAreNamed)
   // The elimination of the undecomposed solves refuses the same equations.
   const int64_t n = 3 * m.n_nodes();
   message = error_of(
-      [&] {
-    fem::ConstraintElimination(n, clamp, {{{{a, 0, 1.0}, {b, 0, -1.0}}}, {{{a, 0, -2.5}, {b, 0, 2.5}}}}, &m);
-  });
+      [&] { fem::ConstraintElimination(n, clamp, {{{{a, 0, 1.0}, {b, 0, -1.0}}}, {{{a, 0, -2.5}, {b, 0, 2.5}}}}, &m); });
   EXPECT_NE(message.find("linear equation 2 of 2"), std::string::npos) << message;
-  message = error_of(
-      [&] {
-    fem::ConstraintElimination(n, clamp, {{{{a, 0, 1.0}, {s, 0, -1.0}}}, {{{a, 0, 3.0}}}}, &m);
-  });
+  message = error_of([&] { fem::ConstraintElimination(n, clamp, {{{{a, 0, 1.0}, {s, 0, -1.0}}}, {{{a, 0, 3.0}}}}, &m); });
   EXPECT_NE(message.find("linear equation 2 of 2"), std::string::npos) << message;
   message = error_of([&] { fem::ConstraintElimination(n, clamp, {{{{s, 0, 1.0}}}}, &m); });
   EXPECT_NE(message.find("no term on a free degree of freedom"), std::string::npos) << message;

@@ -33,7 +33,8 @@ mesh::HexMesh distorted_box()
 }
 
 /// The dense matrix of the operator `apply` on vectors of size n.
-template <class Apply> la::Matrix dense_of(la::Index n, const Apply& apply)
+template <class Apply>
+la::Matrix dense_of(la::Index n, const Apply& apply)
 {
   la::Matrix M(n, n);
   for (la::Index j = 0; j < n; ++j)

@@ -104,8 +104,14 @@ std::vector<DeckOutputRequest> two_blocks_requests(int line)
 }
 
 /// CalculiX's gauss3d2 (ccx_2.20/src/gauss.f): the C3D8 integration points, xi fastest.
-const std::array<std::array<double, 3>, 8> calculix_gauss3d2 = {
-    {{-1, -1, -1}, {+1, -1, -1}, {-1, +1, -1}, {+1, +1, -1}, {-1, -1, +1}, {+1, -1, +1}, {-1, +1, +1}, {+1, +1, +1}}};
+const std::array<std::array<double, 3>, 8> calculix_gauss3d2 = {{{-1, -1, -1},
+                                                                 {+1, -1, -1},
+                                                                 {-1, +1, -1},
+                                                                 {+1, +1, -1},
+                                                                 {-1, -1, +1},
+                                                                 {+1, -1, +1},
+                                                                 {-1, +1, +1},
+                                                                 {+1, +1, +1}}};
 
 /// feticon's Gauss point with the coordinates of CalculiX's point j (signs of +-1/sqrt(3)).
 int feticon_point(int j)
@@ -287,8 +293,8 @@ TEST(DatWriter, TotalsLineIsTheSum)
     for (int k = 0; k < 3; ++k)
       EXPECT_NEAR(blocks[0].rows[r][1 + k], rf[3 * fix[r] + k], 5e-7 * std::abs(rf[3 * fix[r] + k]));
   }
-  for (const auto& [block, members] :
-       {std::pair{&blocks[1], fix}, std::pair{&blocks[2], std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}}})
+  for (const auto& [block, members] : {std::pair{&blocks[1], fix},
+                                       std::pair{&blocks[2], std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}}})
   {
     ASSERT_EQ(block->rows.size(), 1u);
     ASSERT_EQ(block->rows[0].size(), 3u); // no label column

@@ -69,14 +69,7 @@ protected:
 
   HexMesh get(const std::string& key, bool& hit)
   {
-    return cached_mesh(
-        location, key,
-        [this]
-        {
-      ++builds;
-      return test_mesh();
-        },
-        &hit);
+    return cached_mesh(location, key, [this] { ++builds; return test_mesh(); }, &hit);
   }
 
   fs::path folder;
@@ -129,9 +122,7 @@ TEST_F(MeshCache, DamagedEntriesAreRebuiltAndReplaced)
 TEST_F(MeshCache, FailedBuildStoresNothing)
 {
   bool hit = true;
-  EXPECT_THROW(cached_mesh(
-                   location, "bad", []() -> HexMesh { throw Error("no mesh"); }, &hit),
-               Error);
+  EXPECT_THROW(cached_mesh(location, "bad", [] () -> HexMesh { throw Error("no mesh"); }, &hit), Error);
   EXPECT_FALSE(fs::exists(folder) && !fs::is_empty(folder));
 }
 

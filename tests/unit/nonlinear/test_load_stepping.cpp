@@ -53,8 +53,7 @@ TEST(LoadStepping, RecordsEveryIterationAndCallsBackAfterConvergedSteps)
                         { return k == step + 1 ? IterationOutcome::step_converged() : IterationOutcome::next(); });
   ContactSolution out;
   std::vector<int> called_back;
-  run_load_steps(phases, equal_steps(2), 1, 10, out,
-                 [&](int step, const ContactSolution&) { called_back.push_back(step); });
+  run_load_steps(phases, equal_steps(2), 1, 10, out, [&](int step, const ContactSolution&) { called_back.push_back(step); });
   EXPECT_TRUE(out.converged);
   EXPECT_TRUE(out.reason.empty());
   ASSERT_EQ(out.steps.size(), 2u);
@@ -67,8 +66,7 @@ TEST(LoadStepping, RecordsEveryIterationAndCallsBackAfterConvergedSteps)
   EXPECT_EQ(out.history[4].load_step, 2);
   EXPECT_EQ(out.history[4].iteration, 3);
   EXPECT_EQ(called_back, (std::vector<int>{1, 2}));
-  EXPECT_EQ(phases.calls,
-            (std::vector<std::string>{"begin 1 0.50", "end 1 converged", "begin 2 1.00", "end 2 converged"}));
+  EXPECT_EQ(phases.calls, (std::vector<std::string>{"begin 1 0.50", "end 1 converged", "begin 2 1.00", "end 2 converged"}));
 }
 
 TEST(LoadStepping, UnrecordedConvergenceKeepsTheLastRecordedIteration)
@@ -86,9 +84,8 @@ TEST(LoadStepping, UnrecordedConvergenceKeepsTheLastRecordedIteration)
 
 TEST(LoadStepping, StopsWithTheReasonOfAFailedIteration)
 {
-  ScriptedPhases phases(
-      [](int step, int k)
-      { return step == 2 && k == 2 ? IterationOutcome::stop("QP failed", false) : IterationOutcome::next(); });
+  ScriptedPhases phases([](int step, int k)
+                        { return step == 2 && k == 2 ? IterationOutcome::stop("QP failed", false) : IterationOutcome::next(); });
   ContactSolution out;
   int called_back = 0;
   run_load_steps(phases, equal_steps(3), 2, 10, out, [&](int, const ContactSolution&) { ++called_back; });

@@ -47,10 +47,7 @@ const int sizes[] = {5, 12, 25, 40, 60};
 const unsigned seeds[] = {1, 2, 3, 4, 5, 6};
 /// Every test below runs with each expansion step (qp/mprgp.hpp).
 const qp::MprgpExpansion expansions[] = {qp::MprgpExpansion::standard, qp::MprgpExpansion::projected_cg};
-std::string name(qp::MprgpExpansion e)
-{
-  return e == qp::MprgpExpansion::standard ? "std" : "projcg";
-}
+std::string name(qp::MprgpExpansion e) { return e == qp::MprgpExpansion::standard ? "std" : "projcg"; }
 } // namespace
 
 // Reference: the stopping test ||g_P|| <= rtol ||b|| of ALGORITHMS.md section 5 bounds every
@@ -60,24 +57,25 @@ TEST(Mprgp, RandomProblemsSatisfyKktAtRequestedTolerance)
 {
   int active = 0, total = 0;
   for (const qp::MprgpExpansion expansion : expansions)
-    for (const int n : sizes)
-      for (const unsigned seed : seeds)
-      {
-        SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
-        const test::BoundQp qp = test::random_bound_qp(n, seed);
-        test::CountingOperator A(qp.A);
-        const double rtol = 1e-5;
-        qp::Mprgp mprgp(A, {.rtol = rtol, .expansion = expansion});
-        la::Vector x = la::Vector::Zero(n);
-        const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
-        ASSERT_TRUE(report.converged) << report.reason;
-        const double tol = rtol * qp.b.norm() + 1e-12 * qp.A.norm() * x.norm();
-        expect_kkt(qp, x, tol);
-        EXPECT_EQ(report.hessian_multiplications, A.applications);
-        EXPECT_NEAR(report.cost, 0.5 * x.dot(qp.A * x) - qp.b.dot(x), 1e-10 * (1.0 + std::abs(report.cost)));
-        active += static_cast<int>((x.array() == qp.lower.array()).count());
-        total += n;
-      }
+  for (const int n : sizes)
+    for (const unsigned seed : seeds)
+    {
+      SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
+      const test::BoundQp qp = test::random_bound_qp(n, seed);
+      test::CountingOperator A(qp.A);
+      const double rtol = 1e-5;
+      qp::Mprgp mprgp(A, {.rtol = rtol, .expansion = expansion});
+      la::Vector x = la::Vector::Zero(n);
+      const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
+      ASSERT_TRUE(report.converged) << report.reason;
+      const double tol = rtol * qp.b.norm() + 1e-12 * qp.A.norm() * x.norm();
+      expect_kkt(qp, x, tol);
+      EXPECT_EQ(report.hessian_multiplications, A.applications);
+      EXPECT_NEAR(report.cost, 0.5 * x.dot(qp.A * x) - qp.b.dot(x),
+                  1e-10 * (1.0 + std::abs(report.cost)));
+      active += static_cast<int>((x.array() == qp.lower.array()).count());
+      total += n;
+    }
   // The problems must exercise the bounds, or this test would be plain CG.
   EXPECT_GT(active, total / 5);
 }
@@ -89,20 +87,21 @@ TEST(Mprgp, RandomProblemsSatisfyKktAtRequestedTolerance)
 TEST(Mprgp, RandomProblemsMatchActiveSetReference)
 {
   for (const qp::MprgpExpansion expansion : expansions)
-    for (const int n : sizes)
-      for (const unsigned seed : seeds)
-      {
-        SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
-        const test::BoundQp qp = test::random_bound_qp(n, seed + 100);
-        const la::Vector reference = test::reference_bound_qp(qp.A, qp.b, qp.lower);
-        ASSERT_LE(test::projected_gradient_norm(reference, qp.A * reference - qp.b, qp.lower), 1e-12 * qp.b.norm());
-        test::CountingOperator A(qp.A);
-        qp::Mprgp mprgp(A, {.rtol = 1e-12, .expansion = expansion});
-        la::Vector x = la::Vector::Zero(n);
-        const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
-        ASSERT_TRUE(report.converged) << report.reason;
-        EXPECT_LE((x - reference).norm(), 1e-8 * reference.norm());
-      }
+  for (const int n : sizes)
+    for (const unsigned seed : seeds)
+    {
+      SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
+      const test::BoundQp qp = test::random_bound_qp(n, seed + 100);
+      const la::Vector reference = test::reference_bound_qp(qp.A, qp.b, qp.lower);
+      ASSERT_LE(test::projected_gradient_norm(reference, qp.A * reference - qp.b, qp.lower),
+                1e-12 * qp.b.norm());
+      test::CountingOperator A(qp.A);
+      qp::Mprgp mprgp(A, {.rtol = 1e-12, .expansion = expansion});
+      la::Vector x = la::Vector::Zero(n);
+      const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
+      ASSERT_TRUE(report.converged) << report.reason;
+      EXPECT_LE((x - reference).norm(), 1e-8 * reference.norm());
+    }
 }
 
 // Reference: Dostal & Schoberl (2005): with alpha_bar in (0, 2/||A||] every MPRGP step
@@ -114,32 +113,31 @@ TEST(Mprgp, CostDecreasesMonotonically)
   std::set<qp::MprgpStep> kinds;
   int fallbacks = 0;
   for (const qp::MprgpExpansion expansion : expansions)
-    for (const double condition : {1e2, 1e4}) // 1e4: projected CG steps that raise f
-      for (const int n : sizes)
-        for (const unsigned seed : seeds)
-        {
-          SCOPED_TRACE(name(expansion) + ", condition " + std::to_string(condition) + ", n = " + std::to_string(n) +
-                       ", seed = " + std::to_string(seed));
-          const test::BoundQp qp = test::random_bound_qp(n, seed + 200, condition);
-          test::CountingOperator A(qp.A);
-          std::vector<double> costs;
-          qp::MprgpOptions options{.rtol = 1e-10, .expansion = expansion, .alpha_bar = 1.8 / largest_eigenvalue(qp.A)};
-          options.monitor = [&](const qp::MprgpIterate& it)
-          {
-            EXPECT_EQ(it.iteration, static_cast<int>(costs.size()));
-            costs.push_back(it.cost);
-            kinds.insert(it.step);
-          };
-          qp::Mprgp mprgp(A, options);
-          la::Vector x = la::Vector::Zero(n);
-          const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
-          ASSERT_TRUE(report.converged) << report.reason;
-          ASSERT_EQ(static_cast<int>(costs.size()), report.iterations + 1);
-          for (std::size_t k = 1; k < costs.size(); ++k)
-            EXPECT_LE(costs[k], costs[k - 1] + 1e-12 * std::abs(costs[k - 1])) << "step " << k;
-          EXPECT_EQ(mprgp.alpha_bar(), options.alpha_bar) << "no expansion may increase f";
-          fallbacks += report.expansion_fallbacks;
-        }
+  for (const double condition : {1e2, 1e4}) // 1e4: projected CG steps that raise f
+  for (const int n : sizes)
+    for (const unsigned seed : seeds)
+    {
+      SCOPED_TRACE(name(expansion) + ", condition " + std::to_string(condition) + ", n = " + std::to_string(n) +
+                   ", seed = " + std::to_string(seed));
+      const test::BoundQp qp = test::random_bound_qp(n, seed + 200, condition);
+      test::CountingOperator A(qp.A);
+      std::vector<double> costs;
+      qp::MprgpOptions options{.rtol = 1e-10, .expansion = expansion, .alpha_bar = 1.8 / largest_eigenvalue(qp.A)};
+      options.monitor = [&](const qp::MprgpIterate& it) {
+        EXPECT_EQ(it.iteration, static_cast<int>(costs.size()));
+        costs.push_back(it.cost);
+        kinds.insert(it.step);
+      };
+      qp::Mprgp mprgp(A, options);
+      la::Vector x = la::Vector::Zero(n);
+      const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
+      ASSERT_TRUE(report.converged) << report.reason;
+      ASSERT_EQ(static_cast<int>(costs.size()), report.iterations + 1);
+      for (std::size_t k = 1; k < costs.size(); ++k)
+        EXPECT_LE(costs[k], costs[k - 1] + 1e-12 * std::abs(costs[k - 1])) << "step " << k;
+      EXPECT_EQ(mprgp.alpha_bar(), options.alpha_bar) << "no expansion may increase f";
+      fallbacks += report.expansion_fallbacks;
+    }
   // The projected CG step does raise f on some of these problems: the fallback is exercised.
   EXPECT_GT(fallbacks, 0);
   EXPECT_EQ(kinds.count(qp::MprgpStep::cg), 1u);
@@ -159,7 +157,8 @@ TEST(Mprgp, ProductCountersFollowTheDocumentedFormula)
   ASSERT_TRUE(first.converged) << first.reason;
   ASSERT_GT(first.iterations, 50) << "the problem must be long enough to refresh g";
   const int power = qp::estimate_norm(A, 30).applications;
-  EXPECT_EQ(first.iterations, first.cg_steps + first.expansion_steps + first.proportioning_steps);
+  EXPECT_EQ(first.iterations,
+            first.cg_steps + first.expansion_steps + first.proportioning_steps);
   EXPECT_EQ(first.hessian_multiplications, predicted_products(first, power));
   EXPECT_EQ(first.hessian_multiplications + power, A.applications);
 
@@ -174,7 +173,8 @@ TEST(Mprgp, ProductCountersFollowTheDocumentedFormula)
   // Another refresh interval changes only the refresh term.
   const test::BoundQp small = test::random_bound_qp(30, 7);
   test::CountingOperator B(small.A);
-  qp::Mprgp refreshed(B, {.rtol = 1e-10, .alpha_bar = 1.0 / largest_eigenvalue(small.A), .gradient_refresh = 7});
+  qp::Mprgp refreshed(B, {.rtol = 1e-10, .alpha_bar = 1.0 / largest_eigenvalue(small.A),
+                          .gradient_refresh = 7});
   la::Vector z = la::Vector::Zero(30);
   const qp::QpReport third = refreshed.solve(small.b, small.lower, z);
   ASSERT_TRUE(third.converged) << third.reason;
@@ -211,8 +211,7 @@ TEST(Mprgp, InitialGuessIsProjectedAndWarmStartStopsAtOnce)
   la::Vector x = qp.lower.cwiseMax(0.0) - la::Vector::Constant(20, 5.0);
   const la::Vector projected = x.cwiseMax(qp.lower);
   qp::MprgpOptions options{.rtol = 1e-6, .alpha_bar = 1.0 / largest_eigenvalue(qp.A)};
-  options.monitor = [&](const qp::MprgpIterate& it)
-  {
+  options.monitor = [&](const qp::MprgpIterate& it) {
     if (it.iteration == 0)
       start_costs.push_back(it.cost);
   };

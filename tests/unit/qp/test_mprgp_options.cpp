@@ -27,8 +27,7 @@ TEST(MprgpOptions, CallerStoppingTestReplacesDefault)
   const double loose = 1e-2 * qp.b.norm();
   int calls = 0;
   qp::MprgpOptions options{.rtol = 1e-12};
-  options.stop = [&](const la::Vector& x, const la::Vector& g, double gp_norm)
-  {
+  options.stop = [&](const la::Vector& x, const la::Vector& g, double gp_norm) {
     ++calls;
     EXPECT_LE((g - (qp.A * x - qp.b)).norm(), 1e-10 * qp.b.norm());
     EXPECT_NEAR(gp_norm, test::projected_gradient_norm(x, g, qp.lower), 1e-12 * qp.b.norm());
