@@ -293,9 +293,9 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   // that would close the initial gaps elastically (b, in force units like lambda) is the likely
   // cause, since the QP's tolerances, relative to ||b||, then admit lambda = 0 (measured on
   // Hertz: from about 1e8 = 1 / qp.rtol on; issue 36).
-  const double b_norm = la::norm(feti.space(), b);
   std::string unheld;
-  if (out.active_contacts == 0 && e_norm > 0 && b_norm * options.rtol >= e_norm)
+  const double b_norm = out.active_contacts == 0 && e_norm > 0 ? la::norm(feti.space(), b) : 0.0; // a reduction only then
+  if (b_norm * options.rtol >= e_norm && e_norm > 0)
   {
     std::ostringstream why;
     why << "the load on a body that only contact holds (" << e_norm << " N) is " << b_norm / e_norm

@@ -460,6 +460,7 @@ int FetiContactSolve::restore(const ContactSolution& previous)
   }
   _out.history = previous.history;
   _out.steps = previous.steps;
+  _out.warnings = previous.warnings; // the floors of the steps before the checkpoint
   ScopedTimer t(_timers, "internal forces");
   update_internal_force();
   // A refreshed K_M(u) is rebuilt at the first outer iteration of the step, as it would
