@@ -47,11 +47,11 @@ struct BenchOptions
 /// The FETI contact solve and the bonded direct solve of one problem.
 nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
 {
-  const io::ProblemFile file = io::load_problem_file(options.problem_file, options.overrides);
+  const io::ProblemFile file = load_problem(options.problem_file, options.overrides);
   FETICON_CHECK(file.settings.text("method") != "primal_penalty",
                 "feticon bench measures the FETI methods; set method=smalbe or dual_penalty");
   TimerTable timers;
-  const MeshPrediction predicted = predict_mesh(file);
+  const problems::MeshPrediction predicted = predict_mesh(file);
   const MemoryEstimate estimate =
       guard_memory(file.settings, predicted.nodes, predicted.plane_strain, "problem " + file.settings.text("problem"));
   std::unique_ptr<fem::Problem> problem;

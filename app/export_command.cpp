@@ -36,9 +36,9 @@ void export_model(const ExportOptions& options)
 {
   FETICON_CHECK(options.format == "calculix",
                 "export: --format " << options.format << " is not known; the one format is calculix");
-  const io::ProblemFile file = io::load_problem_file(options.problem_file, options.overrides);
+  const io::ProblemFile file = load_problem(options.problem_file, options.overrides);
   // The mesh and the deck only: no solve, so the guard counts the mesh alone.
-  const MeshPrediction predicted = predict_mesh(file);
+  const problems::MeshPrediction predicted = predict_mesh(file);
   check_fits(estimate_mesh_memory(predicted.nodes), memory_budget(file.settings),
              "exporting problem " + file.settings.text("problem"));
   const fem::Problem problem = build_problem(file);

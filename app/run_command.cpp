@@ -17,6 +17,7 @@
 #include "mesh/mesh_quality.hpp"
 #include "nonlinear/feti_contact_solver.hpp"
 #include "nonlinear/primal_penalty_solver.hpp"
+#include "problems/pressure_profile.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -57,41 +58,6 @@ std::string effective_problem(const io::ProblemFile& file)
   return file.settings.to_yaml() + structured + "\n";
 }
 
-/// The slave pressure samples as profiles for the Hertz comparisons, at their distance from
-/// the symmetry plane x = 0 (2D) or from the axis (3D), in both frames.
-struct HertzProfiles
-{
-  std::vector<problems::ProfilePoint> reference, deformed;
-};
-HertzProfiles hertz_profiles(const std::vector<nonlinear::PressureSample>& samples, bool radial)
-{
-  HertzProfiles out;
-  for (const auto& s : samples)
-  {
-    out.reference.push_back({radial ? std::hypot(s.x, s.y) : s.x, s.pressure});
-    out.deformed.push_back({radial ? std::hypot(s.deformed_x, s.deformed_y) : s.deformed_x, s.pressure});
-  }
-  return out;
-}
-
-/// The figures of summary.json's `hertz` block that the 2D (McEwen) and 3D (Hertz)
-/// comparisons share, in the frame of `h`; `reference` is the reference frame's comparison,
-/// added as "reference_frame" with large displacements.
-template <class Comparison>
-nlohmann::ordered_json hertz_json(const Comparison& h, const Comparison& reference, bool large)
-{
-  nlohmann::ordered_json out = {{"frame", large ? "deformed" : "reference"},
-                                {"a_analytic", h.a_analytic},
-                                {"p0_analytic", h.p0_analytic},
-                                {"a_computed", h.a_computed},
-                                {"p_peak_computed", h.p_peak_computed},
-                                {"rms_error_over_p0", h.rms_error_over_p0}};
-  if (large)
-    out["reference_frame"] = {{"a_computed", reference.a_computed},
-                              {"rms_error_over_p0", reference.rms_error_over_p0}};
-  return out;
-}
-
 /// A step's VTU (one rank) or the .pvtu joining the ranks' pieces, and a piece's name.
 std::string step_file_name(int step, bool serial)
 {
@@ -117,7 +83,9 @@ struct RunContext
   bool restart = false;
   std::filesystem::path out_dir;
   TimerTable timers;
+  std::unique_ptr<problems::BuiltInProblem> built_in; ///< null for a custom problem or a deck
   std::unique_ptr<fem::Problem> problem;
+  std::string theory_line; ///< the built-in problem's comparison with theory, for the table
   io::DeckInfo deck; ///< the model's input deck, if it is one
   MemoryEstimate memory_estimate;
   nonlinear::SolverSettings solver;
@@ -141,12 +109,13 @@ void set_up(const RunOptions& options, RunContext& run)
     FETICON_CHECK(options.problem_file.empty() && options.overrides.empty(),
                   "--restart continues a run exactly as it was set up: give no problem file or --set");
   const std::filesystem::path restart_dir(options.restart);
-  run.file = io::load_problem_file(
+  run.file = load_problem(
       run.restart ? restart_dir / "problem.yaml" : std::filesystem::path(options.problem_file), options.overrides);
   const io::Settings& settings = run.settings();
 
   const std::string what = "problem " + settings.text("problem");
-  const MeshPrediction predicted = predict_mesh(run.file);
+  run.built_in = problems::make_built_in_problem(settings);
+  const problems::MeshPrediction predicted = predict_mesh(run.file);
   guard_memory(settings, predicted.nodes, predicted.plane_strain, what);
 
   // Under MPI every rank runs this function; rank 0 writes the folder's shared files, every
@@ -162,7 +131,8 @@ void set_up(const RunOptions& options, RunContext& run)
 
   {
     ScopedTimer t(run.timers, "mesh");
-    run.problem = std::make_unique<fem::Problem>(build_problem(run.file, &run.deck));
+    run.problem = std::make_unique<fem::Problem>(run.built_in ? run.built_in->build()
+                                                              : build_problem(run.file, &run.deck));
   }
   const fem::Problem& problem = *run.problem;
   // Again for the mesh as made, from what the ranks hold now (with or without Gmsh loaded).
@@ -279,55 +249,38 @@ void summarize_problem(const RunContext& run, const nonlinear::ContactSolution& 
     summary["eps_n"] = solution.penalty;
 }
 
-/// The Hertz problems' comparison with theory (2D: McEwen, 3D: Hertz's sphere) into summary
-/// and the analytic column of the pressure samples. Large displacements: the figures in the
-/// deformed frame, the reference frame's beside.
-void compare_with_hertz(const RunContext& run, const nonlinear::ContactSolution& solution,
-                        std::vector<nonlinear::PressureSample>& samples, nlohmann::ordered_json& summary)
+/// A built-in problem's comparison with theory into summary, its line for the end-of-run
+/// table and the analytic column of the pressure samples.
+void compare_with_theory(RunContext& run, const nonlinear::ContactSolution& solution,
+                         std::vector<nonlinear::PressureSample>& samples, nlohmann::ordered_json& summary)
 {
-  const io::Settings& settings = run.settings();
-  const bool is_hertz3d = settings.text("problem") == "hertz3d";
+  if (!run.built_in)
+    return;
+  std::vector<problems::SurfaceSample> surface;
+  surface.reserve(samples.size());
+  for (const nonlinear::PressureSample& s : samples)
+    surface.push_back({s.x, s.y, s.deformed_x, s.deformed_y, s.pressure});
   const bool large = run.solver.kinematics == fem::Kinematics::total_lagrangian;
-  const HertzProfiles profiles = hertz_profiles(samples, is_hertz3d);
-  const auto& in_frame = large ? profiles.deformed : profiles.reference;
-  std::function<double(double)> analytic;
-  if (!is_hertz3d)
-  {
-    const problems::HertzParameters hertz = hertz_parameters(settings);
-    const problems::HertzComparison reference = problems::compare_with_hertz(hertz, profiles.reference);
-    const problems::HertzComparison h = large ? problems::compare_with_hertz(hertz, profiles.deformed) : reference;
-    summary["contact"]["applied_load"] = h.applied_load;
-    summary["hertz"] = hertz_json(h, reference, large);
-    summary["hertz"]["axis_approach"] = problems::hertz_axis_approach(*run.problem, solution.u);
-    summary["hertz"]["contact_element_size"] = h.element_size;
-    analytic = [m = problems::hertz_analytic(hertz)](double x) { return m.pressure(x); };
-  }
-  else
-  {
-    const problems::Hertz3dParameters hertz3d = hertz3d_parameters(settings);
-    const auto reference = problems::compare_with_hertz3d(hertz3d, profiles.reference);
-    const auto h = large ? problems::compare_with_hertz3d(hertz3d, profiles.deformed) : reference;
-    summary["contact"]["applied_load"] = 0.25 * hertz3d.load;
-    summary["hertz"] = hertz_json(h, reference, large);
-    summary["hertz"]["rms_nodes"] = h.nodes_in_rms;
-    summary["hertz"]["approach_analytic"] = h.approach_analytic;
-    summary["hertz"]["approach_computed"] = problems::hertz3d_approach(*run.problem, solution.u);
-    summary["hertz"]["contact_element_size"] = hertz3d.element_size / hertz3d.refinement;
-    analytic = [m = problems::hertz3d_analytic(hertz3d)](double r) { return m.pressure(r); };
-  }
+  const std::optional<problems::TheoryComparison> theory =
+      run.built_in->compare_with_theory(*run.problem, solution.u, surface, large);
+  if (!theory)
+    return;
+  summary["contact"]["applied_load"] = theory->applied_load;
+  summary[theory->name] = theory->figures;
+  run.theory_line = theory->summary_line;
   for (size_t i = 0; i < samples.size(); ++i)
-    samples[i].analytic = analytic(in_frame[i].r);
+    samples[i].analytic = theory->analytic[i];
 }
 
 /// Post-processing: the contact figures of a completed run (the last iterate of a failed solve
-/// is no result; its accepted load steps are on disk as VTU and in "steps"), with the Hertz
-/// problems' comparison, and contact_pressure.csv.
+/// is no result; its accepted load steps are on disk as VTU and in "steps"), with a built-in
+/// problem's comparison with theory, and contact_pressure.csv.
 void summarize_contact(RunContext& run, const nonlinear::ContactSolution& solution, nlohmann::ordered_json& summary)
 {
   if (!solution.completed || solution.contact_lambda.size() == 0)
     return;
   ScopedTimer t(run.timers, "post-processing");
-  // Pressure along the slave surface; the analytic column is filled for Hertz only.
+  // Pressure along the slave surface; the analytic column is filled where theory is known.
   auto samples = nonlinear::slave_pressure_by_x(*run.problem, solution, run.solver.kinematics);
   int64_t active = 0;
   for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)
@@ -342,9 +295,7 @@ void summarize_contact(RunContext& run, const nonlinear::ContactSolution& soluti
                         {"contact_area", area},
                         {"active_constraints", active},
                         {"feasibility_error", solution.feasibility_error}};
-  const std::string& kind = run.settings().text("problem");
-  if (kind == "hertz" || kind == "hertz3d")
-    compare_with_hertz(run, solution, samples, summary);
+  compare_with_theory(run, solution, samples, summary);
   if (run.writer)
     write_pressure_csv(run.out_dir / "contact_pressure.csv", samples);
 }
@@ -375,7 +326,7 @@ nlohmann::ordered_json run_warnings(const RunContext& run, const nonlinear::Cont
                   settings.number("rho"), solution.feasibility_error, feasibility_tolerance);
     warnings.push_back(line);
   }
-  // Where the whole load goes through the contact (Hertz 2D and 3D), the contact force must
+  // Where a built-in problem says the whole load goes through the contact, the contact force must
   // equal it: to round-off with small displacements, to 1.5e-4 with large ones (the force is
   // summed along the rotated normals), far off when the multipliers are infeasible.
   if (summary.contains("contact") && summary["contact"].contains("applied_load"))
@@ -422,7 +373,7 @@ void write_results(RunContext& run, const nonlinear::ContactSolution& solution, 
     summary["peak_memory_bytes_per_rank"] = memory;
   if (run.writer)
     write_json(run.out_dir / "summary.json", summary);
-  log::info(format_summary(summary));
+  log::info(format_summary(summary, run.theory_line));
   if (solution.completed && run.writer && run.settings().flag("output.plots"))
     plot_results(run.out_dir);
   log::info("results written to " + run.out_dir.string());
@@ -466,7 +417,7 @@ void register_run_command(CLI::App& app)
   cmd->add_flag("--quiet,-q", options->quiet, "only warnings and errors");
   cmd->add_flag("--verbose,-v", options->verbose, "also one line per QP iteration");
   cmd->footer("Settings (KEY for --set or the problem file; nested YAML maps give dotted keys):\n" +
-              io::Settings::help() +
+              io::Settings(problems::setting_specs()).help() +
               "Sections of a custom problem (problem: custom), overridable as --set path.to.key=VALUE\n"
               "(list items by index, e.g. loads.0.traction=[0,0,-2e8]):\n"
               "  mesh: {file: MESH.msh} or {boxes: [{name, origin: [x,y,z], lengths: [..], cells: [nx,ny,nz]}]}\n"

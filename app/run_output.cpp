@@ -117,7 +117,7 @@ void write_history_csv(const std::filesystem::path& path,
   feticon::write_file_atomically(path, os.str());
 }
 
-std::string format_summary(const nlohmann::ordered_json& s)
+std::string format_summary(const nlohmann::ordered_json& s, const std::string& theory_line)
 {
   std::ostringstream os;
   char line[256];
@@ -155,16 +155,8 @@ std::string format_summary(const nlohmann::ordered_json& s)
         c["contact_area"].get<double>(), c["active_constraints"].get<long>(),
         c["feasibility_error"].get<double>());
   }
-  if (s.contains("hertz"))
-  {
-    const auto& h = s["hertz"];
-    put("Hertz: p_peak %.4g MPa (analytic p0 %.4g MPa, %+.2f%%), a %.3f mm (analytic %.3f mm), "
-        "RMS error %.2f%% of p0, load %.6g N",
-        h["p_peak_computed"].get<double>() / 1e6, h["p0_analytic"].get<double>() / 1e6,
-        100 * (h["p_peak_computed"].get<double>() / h["p0_analytic"].get<double>() - 1),
-        1e3 * h["a_computed"].get<double>(), 1e3 * h["a_analytic"].get<double>(),
-        100 * h["rms_error_over_p0"].get<double>(), s["contact"]["applied_load"].get<double>());
-  }
+  if (!theory_line.empty())
+    os << theory_line << '\n';
   os << "time (s):";
   for (const auto& [phase, seconds] : s["timings_seconds"].items())
   {

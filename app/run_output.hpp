@@ -33,9 +33,10 @@ void write_pressure_csv(const std::filesystem::path& path,
 void write_history_csv(const std::filesystem::path& path,
                        const std::vector<nonlinear::OuterIteration>& history);
 
-/// The end-of-run table: sizes, load steps, contact figures, Hertz comparison, timings,
-/// memory, all taken from summary.json so the two always agree.
-std::string format_summary(const nlohmann::ordered_json& summary);
+/// The end-of-run table: sizes, load steps, contact figures, timings, memory, all taken from
+/// summary.json so the two always agree, and a built-in problem's `theory_line` (its
+/// comparison with theory, also in summary.json) if not empty.
+std::string format_summary(const nlohmann::ordered_json& summary, const std::string& theory_line);
 
 /// PNG plots of the results folder (pressure along the contact, iterations) drawn by
 /// scripts/plot_hertz.py with Debian's /usr/bin/python3; a warning, not an error, if that

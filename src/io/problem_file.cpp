@@ -101,26 +101,24 @@ void reject_duplicate_keys(const YAML::Node& node, const std::string& path, cons
       reject_duplicate_keys(node[i], path + "." + std::to_string(i), source, depth + 1);
 }
 
-void flatten(const YAML::Node& node, const std::string& prefix,
+void flatten(const YAML::Node& node, const std::string& prefix, const Settings& settings,
              std::vector<std::pair<std::string, std::string>>& out, const std::string& source)
 {
   if (node.IsMap())
   {
     // A map where a setting's value belongs, or an empty section, would otherwise be
     // dropped without a word (`displacements: {}` ran with the default).
-    const bool is_setting = std::any_of(Settings::specs().begin(), Settings::specs().end(),
-                                        [&](const SettingSpec& spec) { return spec.key == prefix; });
-    FETICON_CHECK(!is_setting, source << ": '" << prefix << "' must be a single value, not a map");
+    FETICON_CHECK(!settings.knows(prefix), source << ": '" << prefix << "' must be a single value, not a map");
     FETICON_CHECK(prefix.empty() || node.size() > 0, source << ": section '" << prefix << "' is empty");
     for (const auto& kv : node)
       flatten(kv.second, prefix.empty() ? kv.first.as<std::string>()
                                         : prefix + "." + kv.first.as<std::string>(),
-              out, source);
+              settings, out, source);
     return;
   }
   if (!node.IsScalar())
   {
-    Settings::spec(prefix, source); // an unknown key is named as such whatever its value
+    settings.spec(prefix, source); // an unknown key is named as such whatever its value
     FETICON_CHECK(false, source << ": '" << prefix << "' must be a single value");
   }
   out.emplace_back(prefix, node.as<std::string>());
@@ -245,10 +243,11 @@ void settings_of_deck(ProblemFile& file, const std::filesystem::path& path)
 }
 } // namespace
 
-ProblemFile load_problem_file(const std::filesystem::path& path,
-                              const std::vector<std::string>& overrides)
+ProblemFile load_problem_file(const std::filesystem::path& path, const std::vector<std::string>& overrides,
+                              const std::vector<SettingSpec>& declared)
 {
   ProblemFile file;
+  file.settings = Settings(declared);
   file.source = path.empty() ? std::string("defaults") : path.string();
   file.folder = path.empty() ? std::filesystem::current_path() : path.parent_path();
   file.root = YAML::Node(YAML::NodeType::Map);
@@ -298,9 +297,8 @@ ProblemFile load_problem_file(const std::filesystem::path& path,
     const auto eq = o.find('=');
     FETICON_CHECK(eq != std::string::npos && eq > 0, "--set '" << o << "' must have the form KEY=VALUE");
     const std::string key = o.substr(0, eq);
-    if (const auto dot = key.find('.'); dot != std::string::npos && is_structured_key(key.substr(0, dot)) &&
-                                        std::any_of(Settings::specs().begin(), Settings::specs().end(),
-                                                    [&](const SettingSpec& spec) { return spec.key == key; }))
+    if (const auto dot = key.find('.');
+        dot != std::string::npos && is_structured_key(key.substr(0, dot)) && file.settings.knows(key))
     {
       section_settings.emplace_back(key, o.substr(eq + 1));
       continue;
@@ -325,7 +323,7 @@ ProblemFile load_problem_file(const std::filesystem::path& path,
     if (is_structured_key(key))
       continue;
     std::vector<std::pair<std::string, std::string>> scalars;
-    flatten(kv.second, key, scalars, file.source);
+    flatten(kv.second, key, file.settings, scalars, file.source);
     for (const auto& [k, v] : scalars)
       file.settings.set(k, v, overridden.count(k) ? std::string("--set") : file.source);
   }

@@ -3,7 +3,7 @@
 /// the solver settings of a run, with command-line overrides applied to the YAML tree.
 ///
 /// Top level (every key optional; see examples/ and `feticon run --help`):
-///   problem: hertz | cantilever_obstacle | custom
+///   problem: custom, or a built-in problem (problems/built_in_problem.hpp)
 ///   mesh:                          (custom)
 ///     file: punch.msh              Gmsh file, physical groups name bodies and sets, or
 ///     boxes:                       built-in boxes, each a body named <name>, its sets
@@ -47,9 +47,10 @@ bool is_deck_file(const std::filesystem::path& path);
 /// Reads `path` (empty: defaults only), applies `overrides`, validates every key. An input
 /// deck (is_deck_file) is a custom problem whose model is the deck, with the settings it
 /// implies (displacements from NLGEOM, load_steps from *STATIC, contact.formulation from the
-/// pairs' TYPE) below the overrides.
-ProblemFile load_problem_file(const std::filesystem::path& path,
-                              const std::vector<std::string>& overrides);
+/// pairs' TYPE) below the overrides. `declared`: the keys of the layers above io (the built-in
+/// problems' problems::setting_specs), see io::Settings.
+ProblemFile load_problem_file(const std::filesystem::path& path, const std::vector<std::string>& overrides,
+                              const std::vector<SettingSpec>& declared);
 
 /// The size of a `problem: custom` file's mesh before it is built or read: nodes of the
 /// boxes, or as declared in the Gmsh file's header (memory guard).

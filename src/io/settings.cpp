@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <sstream>
@@ -16,46 +17,8 @@ std::vector<SettingSpec> make_specs()
 {
   const double inf = 1e300;
   return {
-      {"problem", "hertz", "hertz (Vondrák et al.'s benchmark), hertz3d (a sphere on a half-space), "
-                           "cantilever_obstacle (a cantilever bent onto a block: finite rotations) or "
-                           "custom (mesh, bodies, supports, loads, contact sections of the problem file)",
-       Type::text, {"hertz", "hertz3d", "cantilever_obstacle", "custom"}, 0, 0, false},
-      {"cantilever.gap", "0.25", "gap between the beam (L = 1 m) and the obstacle (m)", Type::number, {}, 0, 10, true},
-      {"cantilever.load", "0.8", "tip load as its linear tip deflection over L", Type::number, {}, 0, 100, true},
-      {"cantilever.cells", "40", "beam cells along its length", Type::integer, {}, 10, 10000, false},
-      {"hertz.line_load", "4e8", "line load Q on the cylinder (N/m)", Type::number, {}, 0, inf, true},
-      {"hertz.mesh", "graded", "graded (Gmsh quadrilaterals with a size field growing by growth_ratio "
-                               "away from the contact, shape-regular) or tensor (mapped blocks with "
-                               "tensor-product grading)", Type::text, {"graded", "tensor"}, 0, 0, false},
-      {"hertz.refinement", "1", "scales every element size by 1/refinement", Type::number, {}, 0.05, 64, false},
-      {"hertz.element_size", "0.005", "element size in the contact zone at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
-      {"hertz.master_ratio", "1.3", "block (master) / cylinder (slave) contact element size", Type::number, {}, 0.2, 5, false},
-      {"hertz.block_width", "1.5", "half-width of the block (m)", Type::number, {}, 0.2, 100, false},
-      {"hertz.cylinder_width", "0.6", "half-width of the modelled cylinder segment (m), < radius", Type::number, {}, 0.1, 0.99, false},
-      {"hertz.block_depth", "1.5", "depth of the block (m)", Type::number, {}, 0.2, 100, false},
-      {"hertz.growth_ratio", "1.1", "cell size ratio between neighbouring cells away from the contact "
-                                    "band (tensor: at refinement 1, and tables before the graded mesh "
-                                    "used 1.2; 1: uniform mesh)", Type::number, {}, 1, 2, false},
-      {"hertz3d.radius", "0.05", "sphere radius R (m)", Type::number, {}, 0, inf, true},
-      {"hertz3d.load", "2e4", "force F on the whole sphere (N); the quarter model carries F/4", Type::number, {}, 0, inf, true},
-      {"hertz3d.refinement", "1", "divides hertz3d.element_size", Type::number, {}, 0.05, 64, false},
-      {"hertz3d.element_size", "0.00025", "sphere cell size in the contact core at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
-      {"hertz3d.master_ratio", "1.3", "block (master) / sphere (slave) cell size in the contact core", Type::number, {}, 0.2, 5, false},
-      {"hertz3d.block_radius", "0.04", "radius of the modelled half-space, an octant ball fixed on its curved face (m)",
-       Type::number, {}, 0, inf, true},
-      {"hertz3d.cap_radius", "0.025", "radius of the modelled part of the sphere about the contact point (m), "
-       "at most R / 2", Type::number, {}, 0, inf, true},
-      {"hertz3d.radial_aspect", "1.5", "radial / tangential cell size outside the contact core", Type::number, {}, 0.5, 3, false},
-      {"material.young", "2e11", "Young's modulus E (Pa) of every body", Type::number, {}, 0, inf, true},
-      {"material.poisson", "0.3", "Poisson's ratio nu of every body, in (-1, 0.5)", Type::number, {}, -1, 0.5, true, true},
-      {"hertz.block_young", "", "Young's modulus of the block (Pa), if it differs from the cylinder's "
-       "material.young (E* from both)", Type::number, {}, 0, inf, true},
-      {"hertz.block_poisson", "", "Poisson's ratio of the block, if it differs from material.poisson",
-       Type::number, {}, -1, 0.5, true, true},
-      {"hertz3d.block_young", "", "Young's modulus of the block (Pa), if it differs from the sphere's "
-       "material.young (E* from both)", Type::number, {}, 0, inf, true},
-      {"hertz3d.block_poisson", "", "Poisson's ratio of the block, if it differs from material.poisson",
-       Type::number, {}, -1, 0.5, true, true},
+      {"problem", "custom", "custom (mesh, bodies, supports, loads, contact sections of the problem file, "
+                            "or an input deck)", Type::text, {"custom"}, 0, 0, false},
       {"method", "smalbe", "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "
                            "(problem (9) of Vondrák et al.), primal_penalty (undecomposed, CHOLMOD)",
        Type::text, {"smalbe", "dual_penalty", "primal_penalty"}, 0, 0, false},
@@ -128,19 +91,23 @@ std::string trim(const std::string& s)
 
 } // namespace
 
-const std::vector<SettingSpec>& Settings::specs()
-{
-  static const std::vector<SettingSpec> all = make_specs();
-  return all;
-}
+Settings::Settings() : Settings(std::vector<SettingSpec>{}) {}
 
-Settings::Settings()
+Settings::Settings(std::vector<SettingSpec> declared)
 {
-  for (const auto& s : specs())
+  static const std::vector<SettingSpec> table = make_specs();
+  std::vector<SettingSpec> all = std::move(declared);
+  const size_t n_declared = all.size();
+  for (const SettingSpec& s : table)
+    if (std::none_of(all.begin(), all.begin() + n_declared, [&](const SettingSpec& d) { return d.key == s.key; }))
+      all.push_back(s);
+  for (const auto& s : all)
     _values[s.key] = s.default_value;
+  FETICON_ASSERT(_values.size() == all.size(), "a key declared twice");
+  _specs = std::make_shared<const std::vector<SettingSpec>>(std::move(all));
 }
 
-std::string Settings::help()
+std::string Settings::help() const
 {
   std::ostringstream os;
   for (const auto& s : specs())
@@ -149,7 +116,9 @@ std::string Settings::help()
   return os.str();
 }
 
-const SettingSpec& Settings::spec(const std::string& key, const std::string& source)
+bool Settings::knows(const std::string& key) const { return _values.count(key) > 0; }
+
+const SettingSpec& Settings::spec(const std::string& key, const std::string& source) const
 {
   for (const auto& s : specs())
     if (s.key == key)

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <set>
 #include <optional>
 #include <string>
@@ -33,15 +34,22 @@ struct SettingSpec
   bool max_exclusive = false;
 };
 
+/// The keys of a run at their values. The table is the solver's and the outputs' keys
+/// (io/settings.cpp) and those a layer above declares, as deal.II's ParameterHandler takes
+/// each class's declarations: the built-in problems (problems::setting_specs) declare their
+/// own keys and refine `problem`, whose table here knows only `custom`.
 class Settings
 {
 public:
-  /// All settings at their defaults.
+  /// The solver's and the outputs' keys at their defaults.
   Settings();
-  /// Every key feticon knows, in documentation order.
-  static const std::vector<SettingSpec>& specs();
+  /// Those and `declared`, which come first in the documentation; a declared key replaces the
+  /// table's key of that name.
+  explicit Settings(std::vector<SettingSpec> declared);
+  /// Every key of this table, in documentation order.
+  const std::vector<SettingSpec>& specs() const { return *_specs; }
   /// Help text listing every key with default and meaning.
-  static std::string help();
+  std::string help() const;
 
   /// Sets `key` from text; `source` (e.g. "--set" or a file name) names it in errors.
   void set(const std::string& key, const std::string& value, const std::string& source);
@@ -59,9 +67,12 @@ public:
   std::string to_yaml() const;
 
   /// The spec of `key`; throws feticon::Error "unknown key" naming `source` if there is none.
-  static const SettingSpec& spec(const std::string& key, const std::string& source);
+  const SettingSpec& spec(const std::string& key, const std::string& source) const;
+  /// True if `key` is in the table.
+  bool knows(const std::string& key) const;
 
 private:
+  std::shared_ptr<const std::vector<SettingSpec>> _specs; ///< shared by copies
   std::map<std::string, std::string> _values;
   std::set<std::string> _given;
 };

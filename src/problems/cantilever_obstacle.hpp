@@ -9,6 +9,7 @@
 /// configuration) is visibly wrong.
 
 #include "fem/problem.hpp"
+#include "problems/built_in_problem.hpp"
 
 namespace feticon::problems
 {
@@ -31,4 +32,10 @@ int64_t cantilever_obstacle_node_count(const CantileverObstacleParameters& param
 
 /// Total tip load P (N) of the parameters.
 double cantilever_tip_load(const CantileverObstacleParameters& parameters);
+
+/// The `cantilever.*` keys (problems/built_in_problem.hpp).
+std::vector<io::SettingSpec> cantilever_obstacle_setting_specs();
+/// The parameters of the `cantilever.*` and `material.*` settings.
+CantileverObstacleParameters cantilever_obstacle_parameters(const io::Settings& settings);
+std::unique_ptr<BuiltInProblem> make_cantilever_obstacle_problem(const io::Settings& settings);
 } // namespace feticon::problems

@@ -10,6 +10,7 @@
 /// The cylinder is held vertically only by contact.
 
 #include "fem/problem.hpp"
+#include "problems/built_in_problem.hpp"
 #include "problems/hertz_mesh.hpp"
 #include "problems/pressure_profile.hpp"
 
@@ -65,4 +66,10 @@ struct HertzComparison
 /// The figures; `samples` are the slave node lines at their distance r = x from the
 /// symmetry plane.
 HertzComparison compare_with_hertz(const HertzParameters& parameters, std::vector<ProfilePoint> samples);
+
+/// The `hertz.*` keys (problems/built_in_problem.hpp).
+std::vector<io::SettingSpec> hertz_setting_specs();
+/// The parameters of the `hertz.*` and `material.*` settings.
+HertzParameters hertz_parameters(const io::Settings& settings);
+std::unique_ptr<BuiltInProblem> make_hertz_problem(const io::Settings& settings);
 } // namespace feticon::problems

@@ -25,6 +25,7 @@
 ///   "block_support", "symmetry_x" (x = 0, both bodies), "symmetry_y" (y = 0, both bodies).
 
 #include "fem/problem.hpp"
+#include "problems/built_in_problem.hpp"
 #include "problems/pressure_profile.hpp"
 
 #include <optional>
@@ -82,4 +83,10 @@ struct Hertz3dComparison
 /// The figures against Hertz's p(r), the samples at their distance r from the axis.
 Hertz3dComparison compare_with_hertz3d(const Hertz3dParameters& parameters,
                                        const std::vector<ProfilePoint>& samples);
+
+/// The `hertz3d.*` keys (problems/built_in_problem.hpp).
+std::vector<io::SettingSpec> hertz3d_setting_specs();
+/// The parameters of the `hertz3d.*` and `material.*` settings.
+Hertz3dParameters hertz3d_parameters(const io::Settings& settings);
+std::unique_ptr<BuiltInProblem> make_hertz3d_problem(const io::Settings& settings);
 } // namespace feticon::problems

@@ -340,7 +340,7 @@ TEST(DeckReader, ProblemFileOfADeckTakesItsSettings)
 {
   const auto dir = test::fresh_directory("deck_settings");
   const auto path = write(dir, "two_cubes.inp", two_cubes);
-  const ProblemFile file = load_problem_file(path, {"load_steps=3"});
+  const ProblemFile file = load_problem_file(path, {"load_steps=3"}, {});
   EXPECT_EQ(file.settings.text("problem"), "custom");
   EXPECT_EQ(file.settings.text("displacements"), "large");
   EXPECT_EQ(file.settings.integer("load_steps"), 3); // --set wins over the deck's 4

@@ -1,0 +1,84 @@
+/// The 3D Hertz problem (a sphere on a half-space) as a built-in problem: its `hertz3d.*`
+/// keys, and its comparison with Hertz's p(r) and approach.
+
+#include "problems/hertz3d.hpp"
+#include "problems/hertz_figures.hpp"
+
+namespace feticon::problems
+{
+namespace
+{
+using Type = io::SettingSpec::Type;
+
+class Hertz3dProblem : public BuiltInProblem
+{
+public:
+  explicit Hertz3dProblem(const Hertz3dParameters& parameters) : _parameters(parameters) {}
+
+  MeshPrediction predict_mesh() const override { return {hertz3d_node_count(_parameters), false}; }
+  fem::Problem build() const override { return hertz3d_problem(_parameters); }
+
+  std::optional<TheoryComparison> compare_with_theory(const fem::Problem& problem, const la::Vector& u,
+                                                      const std::vector<SurfaceSample>& samples,
+                                                      bool large) const override
+  {
+    const auto reference = compare_with_hertz3d(_parameters, pressure_profile(samples, true, false));
+    const auto h = large ? compare_with_hertz3d(_parameters, pressure_profile(samples, true, true)) : reference;
+    TheoryComparison out = hertz_theory_comparison(h, reference, large, 0.25 * _parameters.load);
+    out.figures["rms_nodes"] = h.nodes_in_rms;
+    out.figures["approach_analytic"] = h.approach_analytic;
+    out.figures["approach_computed"] = hertz3d_approach(problem, u);
+    out.figures["contact_element_size"] = _parameters.element_size / _parameters.refinement;
+    const Hertz3dAnalytic analytic = hertz3d_analytic(_parameters);
+    for (const ProfilePoint& p : pressure_profile(samples, true, large))
+      out.analytic.push_back(analytic.pressure(p.r));
+    return out;
+  }
+
+private:
+  Hertz3dParameters _parameters;
+};
+} // namespace
+
+std::vector<io::SettingSpec> hertz3d_setting_specs()
+{
+  const double inf = 1e300;
+  return {
+      {"hertz3d.radius", "0.05", "sphere radius R (m)", Type::number, {}, 0, inf, true},
+      {"hertz3d.load", "2e4", "force F on the whole sphere (N); the quarter model carries F/4", Type::number, {}, 0, inf, true},
+      {"hertz3d.refinement", "1", "divides hertz3d.element_size", Type::number, {}, 0.05, 64, false},
+      {"hertz3d.element_size", "0.00025", "sphere cell size in the contact core at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
+      {"hertz3d.master_ratio", "1.3", "block (master) / sphere (slave) cell size in the contact core", Type::number, {}, 0.2, 5, false},
+      {"hertz3d.block_radius", "0.04", "radius of the modelled half-space, an octant ball fixed on its curved face (m)",
+       Type::number, {}, 0, inf, true},
+      {"hertz3d.cap_radius", "0.025", "radius of the modelled part of the sphere about the contact point (m), "
+       "at most R / 2", Type::number, {}, 0, inf, true},
+      {"hertz3d.radial_aspect", "1.5", "radial / tangential cell size outside the contact core", Type::number, {}, 0.5, 3, false},
+      {"hertz3d.block_young", "", "Young's modulus of the block (Pa), if it differs from the sphere's "
+       "material.young (E* from both)", Type::number, {}, 0, inf, true},
+      {"hertz3d.block_poisson", "", "Poisson's ratio of the block, if it differs from material.poisson",
+       Type::number, {}, -1, 0.5, true, true},
+  };
+}
+
+Hertz3dParameters hertz3d_parameters(const io::Settings& s)
+{
+  Hertz3dParameters p;
+  p.radius = s.number("hertz3d.radius");
+  p.load = s.number("hertz3d.load");
+  p.material = material_setting(s);
+  p.block_material = block_material_setting(s, "hertz3d", p.material);
+  p.element_size = s.number("hertz3d.element_size");
+  p.refinement = s.number("hertz3d.refinement");
+  p.master_ratio = s.number("hertz3d.master_ratio");
+  p.block_radius = s.number("hertz3d.block_radius");
+  p.cap_radius = s.number("hertz3d.cap_radius");
+  p.radial_aspect = s.number("hertz3d.radial_aspect");
+  return p;
+}
+
+std::unique_ptr<BuiltInProblem> make_hertz3d_problem(const io::Settings& settings)
+{
+  return std::make_unique<Hertz3dProblem>(hertz3d_parameters(settings));
+}
+} // namespace feticon::problems

@@ -1,0 +1,87 @@
+/// The 2D Hertz benchmark as a built-in problem: its `hertz.*` keys, and its comparison with
+/// McEwen's profile.
+
+#include "problems/hertz.hpp"
+#include "problems/hertz_figures.hpp"
+
+namespace feticon::problems
+{
+namespace
+{
+using Type = io::SettingSpec::Type;
+
+class HertzProblem : public BuiltInProblem
+{
+public:
+  explicit HertzProblem(HertzParameters parameters) : _parameters(std::move(parameters)) {}
+
+  MeshPrediction predict_mesh() const override { return {hertz_node_estimate(_parameters.mesh), true}; }
+  fem::Problem build() const override { return hertz_problem(_parameters); }
+
+  std::optional<TheoryComparison> compare_with_theory(const fem::Problem& problem, const la::Vector& u,
+                                                      const std::vector<SurfaceSample>& samples,
+                                                      bool large) const override
+  {
+    const HertzComparison reference = compare_with_hertz(_parameters, pressure_profile(samples, false, false));
+    const HertzComparison h =
+        large ? compare_with_hertz(_parameters, pressure_profile(samples, false, true)) : reference;
+    TheoryComparison out = hertz_theory_comparison(h, reference, large, h.applied_load);
+    out.figures["axis_approach"] = hertz_axis_approach(problem, u);
+    out.figures["contact_element_size"] = h.element_size;
+    const HertzAnalytic analytic = hertz_analytic(_parameters);
+    for (const ProfilePoint& p : pressure_profile(samples, false, large))
+      out.analytic.push_back(analytic.pressure(p.r));
+    return out;
+  }
+
+private:
+  HertzParameters _parameters;
+};
+} // namespace
+
+std::vector<io::SettingSpec> hertz_setting_specs()
+{
+  const double inf = 1e300;
+  return {
+      {"hertz.line_load", "4e8", "line load Q on the cylinder (N/m)", Type::number, {}, 0, inf, true},
+      {"hertz.mesh", "graded", "graded (Gmsh quadrilaterals with a size field growing by growth_ratio "
+                               "away from the contact, shape-regular) or tensor (mapped blocks with "
+                               "tensor-product grading)", Type::text, {"graded", "tensor"}, 0, 0, false},
+      {"hertz.refinement", "1", "scales every element size by 1/refinement", Type::number, {}, 0.05, 64, false},
+      {"hertz.element_size", "0.005", "element size in the contact zone at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
+      {"hertz.master_ratio", "1.3", "block (master) / cylinder (slave) contact element size", Type::number, {}, 0.2, 5, false},
+      {"hertz.block_width", "1.5", "half-width of the block (m)", Type::number, {}, 0.2, 100, false},
+      {"hertz.cylinder_width", "0.6", "half-width of the modelled cylinder segment (m), < radius", Type::number, {}, 0.1, 0.99, false},
+      {"hertz.block_depth", "1.5", "depth of the block (m)", Type::number, {}, 0.2, 100, false},
+      {"hertz.growth_ratio", "1.1", "cell size ratio between neighbouring cells away from the contact "
+                                    "band (tensor: at refinement 1, and tables before the graded mesh "
+                                    "used 1.2; 1: uniform mesh)", Type::number, {}, 1, 2, false},
+      {"hertz.block_young", "", "Young's modulus of the block (Pa), if it differs from the cylinder's "
+       "material.young (E* from both)", Type::number, {}, 0, inf, true},
+      {"hertz.block_poisson", "", "Poisson's ratio of the block, if it differs from material.poisson",
+       Type::number, {}, -1, 0.5, true, true},
+  };
+}
+
+HertzParameters hertz_parameters(const io::Settings& s)
+{
+  HertzParameters p;
+  p.line_load = s.number("hertz.line_load");
+  p.mesh.kind = s.text("hertz.mesh") == "tensor" ? HertzMeshKind::tensor : HertzMeshKind::graded;
+  p.mesh.refinement = s.number("hertz.refinement");
+  p.mesh.element_size = s.number("hertz.element_size");
+  p.mesh.master_ratio = s.number("hertz.master_ratio");
+  p.mesh.block_width = s.number("hertz.block_width");
+  p.mesh.block_depth = s.number("hertz.block_depth");
+  p.mesh.growth_ratio = s.number("hertz.growth_ratio");
+  p.mesh.cylinder_width = s.number("hertz.cylinder_width");
+  p.material = material_setting(s);
+  p.block_material = block_material_setting(s, "hertz", p.material);
+  return p;
+}
+
+std::unique_ptr<BuiltInProblem> make_hertz_problem(const io::Settings& settings)
+{
+  return std::make_unique<HertzProblem>(hertz_parameters(settings));
+}
+} // namespace feticon::problems
