@@ -63,8 +63,8 @@ int fail(const char* raw, int code)
 /// Freed memory stays with the allocator for the next allocation of its size. By default
 /// glibc maps blocks over 128 KiB (adapting up to 32 MiB) afresh and unmaps them on free, and
 /// every page of the next one faults in again: the stiffness copies, factor workspaces and
-/// dense blocks of each outer iteration. Page faults are dear on virtual machines (Hertz 240
-/// across, large: 1.265 -> 1.213 s, medians of 15; peak memory within 3 %).
+/// dense blocks of each outer iteration. Page faults are dear on virtual machines
+/// (docs/measurements.md).
 void keep_freed_memory()
 {
   mallopt(M_MMAP_THRESHOLD, 32 << 20); // glibc's largest; bigger blocks are still mapped

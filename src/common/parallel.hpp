@@ -11,7 +11,7 @@
 ///
 /// Why our own pool and not OpenMP: libgomp's workers spin at the end of a loop; with two
 /// processes on two cores (CTest -j2, two users' jobs) each spinning thread held the core the
-/// other process needed and the test suite took 3x longer. These workers sleep on a
+/// other process needed (docs/measurements.md). These workers sleep on a
 /// condition variable.
 ///
 /// Threads per rank: OMP_NUM_THREADS if set (the usual knob of HPC batch systems), else the
@@ -44,13 +44,10 @@ public:
 };
 
 /// Below this much work (degrees of freedom of the subdomains in the loop) a loop runs
-/// serially: waking the workers costs more than it saves. Measured on Hertz with 4
-/// subdomains and 2 threads: 9 744 DOFs 0.72 s serial against 0.93 s threaded, 37 620 DOFs
-/// 7.9 s against 5.3 s.
+/// serially: waking the workers costs more than it saves (docs/measurements.md).
 constexpr int64_t min_parallel_work = 20000;
 /// The work to pass for loops that assemble, factorize or form dense blocks: each iteration
-/// costs milliseconds even on small subdomains, so they always use the threads (Hertz, 19k
-/// DOFs, 8 subdomains: set-up 0.37 s serial).
+/// costs milliseconds even on small subdomains, so they always use the threads.
 constexpr int64_t setup_work = std::numeric_limits<int64_t>::max();
 
 /// body(i) for i in [first, end), spread over threads() threads (the caller is one of

@@ -14,7 +14,7 @@ namespace feticon::decomposition
 struct SubdomainOperators
 {
   /// Stiffness on active DOFs, lower triangle only: CHOLMOD reads no more, the products
-  /// use K.selfadjointView<Eigen::Lower>(), and the upper half cost 0.5 KB per DOF in 3D.
+  /// use K.selfadjointView<Eigen::Lower>(), and the upper half would double K's memory.
   la::SparseMatrix K;
   la::Matrix R;             ///< orthonormal kernel basis (n_dofs x k)
   GeneralizedInverse K_plus;

@@ -12,10 +12,9 @@ namespace feticon::dual
 FetiOperators::FetiOperators(const decomposition::SubdomainSystem& system,
                              const decomposition::ConstraintRows& rows)
     : _system(system), _layout(system.decomposition(), rows),
-      // A substitution costs its factor's nonzeros. Counted in DOFs, as before, the 3D
-      // subdomains (250 nonzeros per DOF against 45-65 in plane strain) ran serially below
-      // min_parallel_work DOFs: the sphere-on-block example with large displacements (18k
-      // DOFs, implicit) spent 3.58 s in the dual solve on one core, 2.56 s on two.
+      // A substitution costs its factor's nonzeros: counted in DOFs, the 3D subdomains (about
+      // five times the nonzeros per DOF of plane strain) would run serially where threads pay
+      // (docs/measurements.md).
       _implicit_work(system.factor_nonzeros() / factor_nonzeros_per_work_unit)
 {
   const auto& decomp = system.decomposition();
@@ -184,10 +183,9 @@ void FetiOperators::use_explicit(const decomposition::ExplicitBoundaryOperators&
   }
   _explicit = &ops;
   // A product reads each block once; the threads pay from about 25 * min_parallel_work block
-  // entries on (Hertz, medians of 11: 840k entries at 120 across, dual solve 0.152 -> 0.143 s
-  // on two threads; 1.5M at 240 across 0.295 -> 0.237 s). Counting these products as the
-  // subdomains' DOFs, as the substitutions are, left 120 across serial and 240 across threaded
-  // together with the sparse products with B and G, which are cheaper than waking the threads.
+  // entries on (docs/measurements.md). Counted as the subdomains' DOFs, as the substitutions
+  // are, these products would thread the sparse products with B and G with them, which are
+  // cheaper than waking the threads.
   constexpr int64_t block_entries_per_work_unit = 25;
   int64_t entries = 0;
   for (int32_t s = decomp.first_owned(); s < decomp.end_owned(); ++s)

@@ -115,7 +115,7 @@ private:
   const decomposition::ExplicitBoundaryOperators* _explicit = nullptr;
   std::vector<la::SparseMatrix> _B_boundary; ///< per owned subdomain: B_s on the columns b_s
   /// Nonzeros of the subdomain factors per unit of parallel_for's work (its DOFs): the
-  /// plane-strain Hertz and punch meshes have 45-65 per DOF, where min_parallel_work was measured.
+  /// plane-strain meshes, where min_parallel_work was measured, have about this many per DOF.
   static constexpr int64_t factor_nonzeros_per_work_unit = 50;
   int64_t _implicit_work = 0;                ///< one substitution with every owned factor, in parallel_for's units
   int64_t _explicit_work = 0;                ///< one product with the dense blocks, in parallel_for's units

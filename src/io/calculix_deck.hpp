@@ -17,10 +17,8 @@
 ///    K = contact_stiffness_factor * E / h (Pa/m), h the shortest slave face edge, E the larger
 ///    Young's modulus of the two bodies: a penalty layer 1/factor of an element thick, so the
 ///    factor, not the mesh, sets its share of the compliance. The default 5 is CalculiX's most
-///    accurate choice measured on Hertz (large displacements, 60 elements across 2a: RMS error
-///    of the pressure 1.94 / 1.77 / 1.45 / 1.51 / 2.45 % of p0 at factors 1 / 2 / 5 / 10 / 20;
-///    stiffer springs make CalculiX's nodal pressures oscillate between neighbouring nodes,
-///    98 % peak error at 200 on the coarse default mesh, and slow its Newton loop);
+///    accurate choice on Hertz (docs/measurements.md); stiffer springs make CalculiX's nodal
+///    pressures oscillate between neighbouring nodes and slow its Newton loop;
 ///  - a slave body held only by contact in the direction of the master normal (no Dirichlet
 ///    component there, like the Hertz cylinder) has no stiffness in CalculiX's first iteration
 ///    when the bodies touch at a line or point, and floats away; its nodes are shifted by

@@ -11,9 +11,8 @@
 
 namespace feticon::la
 {
-/// Right-hand sides per multi-column solve: measured when the explicit boundary operators
-/// were formed that way (19k DOFs, 8 subdomains: 0.54 / 0.49 / 0.63 s for blocks of 8 / 32 /
-/// 64 against 1.0 s for all ~320 columns at once); they now come from la::schur_complement.
+/// Right-hand sides per multi-column solve: enough columns for BLAS-3 substitutions, few
+/// enough that the workspace stays in cache (docs/measurements.md).
 inline constexpr Index solve_block = 32;
 
 class CholmodFactor

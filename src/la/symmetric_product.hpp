@@ -3,9 +3,8 @@
 ///
 /// Why BLAS and not Eigen: the explicit FETI operators spend every MPRGP step in these
 /// products, and they are bound by memory traffic. OpenBLAS's dsymv reads one triangle once
-/// with vector kernels chosen for the CPU at run time; measured on this machine (one thread,
-/// n = 800 / 1 550 / 3 000): 0.043 / 0.15 / 1.34 ms against 0.10 / 0.89 / 4.4 ms for Eigen's
-/// general product in our build. Reading one triangle also lets two symmetric matrices share
+/// with vector kernels chosen for the CPU at run time, two to six times faster than Eigen's
+/// general product in our build (docs/measurements.md). Reading one triangle also lets two symmetric matrices share
 /// one square array (decomposition/explicit_boundary_operators.hpp).
 
 #include "la/types.hpp"

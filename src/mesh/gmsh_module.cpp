@@ -28,7 +28,7 @@ const GmshModule* load_gmsh_module()
     }
     // RTLD_LOCAL: libgmsh stays out of the global scope of later loads. RTLD_LAZY: the
     // libraries of libgmsh not linked with BIND_NOW bind their functions on first call, as
-    // they would when linked (RTLD_NOW made the load take 0.18 s instead of 0.09 s).
+    // they would when linked (RTLD_NOW doubles the load time: docs/measurements.md).
     void* handle = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
     if (!handle)
     {

@@ -1,9 +1,9 @@
 #pragma once
 /// @file The Gmsh module: every call into libgmsh, in a shared object opened on first use.
 ///
-/// Linking libgmsh costs every process 0.09 s before main (the dynamic linker resolving the
-/// symbols of libgmsh and the ~110 libraries it pulls in, OpenCASCADE, FLTK, ...; a program
-/// linking feticon's other libraries starts in under 0.01 s): more than a whole small solve.
+/// Linking libgmsh costs every process more start-up time than a whole small solve (the
+/// dynamic linker resolving the symbols of libgmsh and the ~110 libraries it pulls in;
+/// figures in docs/measurements.md).
 /// So the code that calls Gmsh lives in libfeticon_gmsh.so (src/mesh/gmsh/), which
 /// gmsh_module() opens with dlopen the first time a mesh is made or read by Gmsh; runs that
 /// do neither (mapped meshes, hertz3d, a mesh from the cache) never load Gmsh.

@@ -2,9 +2,9 @@
 /// @file A disk cache of the meshes Gmsh makes or reads, so that a run whose mesh was made
 /// before neither loads Gmsh nor meshes again.
 ///
-/// Making the graded Hertz mesh takes Gmsh 0.10 s at 60 elements across 2a and 0.16 s at 120,
-/// plus 0.09 s to load libgmsh (mesh/gmsh_module.hpp): most of a small run, and the same work
-/// again in every run of a load or material study on one mesh. A cached mesh is a binary
+/// Making the graded Hertz mesh and loading libgmsh (mesh/gmsh_module.hpp) are most of a small
+/// run (docs/measurements.md), and the same work again in every run of a load or material
+/// study on one mesh. A cached mesh is a binary
 /// copy of the HexMesh, so a hit gives the identical mesh, bit for bit.
 ///
 /// An entry is found by its key, the text of every input of the mesh, together with the build

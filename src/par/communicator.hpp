@@ -25,8 +25,8 @@ int ranks_on_this_node();
 
 /// MPI_Init / MPI_Finalize for the lifetime of main(), when an MPI launcher started the
 /// process (mpirun, mpiexec, srun: they set OMPI_COMM_WORLD_SIZE, PMIX_RANK or PMI_RANK). A
-/// process started alone runs serial without MPI: OpenMPI's singleton start costs 0.5 s,
-/// a fifth of a 20k-DOF contact run, and one rank needs no communication
+/// process started alone runs serial without MPI: OpenMPI's singleton start costs a large
+/// part of a small contact run (docs/measurements.md), and one rank needs no communication
 /// (Communicator::world() is then Communicator::self()).
 class Environment
 {

@@ -28,8 +28,8 @@ RitzValues RitzEstimate::longest_run()
 {
   end_run();
   // The first 500 steps: the leading block of the Lanczos matrix is that of a 500-step run, so
-  // its Ritz values are exact for it, and the dense solver below stays at 2 MB and a fraction
-  // of a second. A stalled QP of 20 000 steps made it a 3.2 GB matrix that never finished.
+  // its Ritz values are exact for it, and the dense solver below stays small and fast whatever
+  // the run's length (a stalled QP of 20 000 steps: docs/measurements.md).
   constexpr Eigen::Index max_steps = 500;
   const Eigen::Index k = std::min(static_cast<Eigen::Index>(_best_alpha.size()), max_steps);
   if (k < 2)

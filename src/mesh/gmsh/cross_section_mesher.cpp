@@ -51,18 +51,13 @@ void generate_quadrilaterals(const SizeField& size)
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
   // Frontal-Delaunay triangles recombined by blossom matching and smoothed once: of Gmsh
-  // 4.8's algorithms the one with the best quadrilaterals on the Hertz sections (corners of
-  // 46-139 degrees at 120 cells across 2a before straighten_corners with five smoothing
-  // passes, against 32-170 without smoothing and 38-152 for Delaunay or packing of
-  // parallelograms). One pass instead of five: after straighten_corners every cell is within
-  // [50, 130] degrees and aspect ratio 2.8 either way (72 Hertz meshes, refinement 0.3-16,
-  // growth 1.05-1.4, master_ratio 1-2), the node count is the same to 0.5 % and the meshing
-  // takes 40-60 % less time; without any pass Gmsh 4.8 sometimes leaves triangles. Full-quad
-  // recombination (algorithms 2, 3) is faster still but leaves 44-45 degree corners where a
-  // domain corner is split and 6-15 % more nodes. Its frontal-Delaunay for quads (algorithm
-  // 8) crashes in 4.8 when the size comes from a callback. Meshing the Hertz bodies' surfaces
-  // on two threads (Mesh.MaxNumThreads2D) saved 0.03 s but crashes now and then in 4.8's
-  // recombineIntoQuads, which is not thread-safe (gdb, 1 run in ~5): keep one thread.
+  // 4.8's algorithms the one with the best quadrilaterals on the Hertz sections; more
+  // smoothing passes change nothing after straighten_corners but cost time, and without any
+  // Gmsh 4.8 sometimes leaves triangles. Full-quad recombination (algorithms 2, 3) leaves
+  // flat corners where a domain corner is split; frontal-Delaunay for quads (algorithm 8)
+  // crashes in 4.8 when the size comes from a callback. One thread: 4.8's
+  // recombineIntoQuads is not thread-safe (Mesh.MaxNumThreads2D crashed now and then).
+  // Figures: docs/measurements.md.
   gmsh::option::setNumber("Mesh.Algorithm", 6);
   gmsh::option::setNumber("Mesh.RecombineAll", 1);
   gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);
