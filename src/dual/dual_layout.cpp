@@ -32,9 +32,18 @@ std::vector<size_t> sizes_of(const std::vector<std::vector<int64_t>>& lists)
 DualLayout::DualLayout(const decomposition::Decomposition& decomp, const decomposition::ConstraintRows& rows)
     : _decomp(decomp), _comm(decomp.comm())
 {
-  const int me = _comm.rank();
-  const int32_t first = decomp.first_owned();
-  const int32_t n_local = decomp.end_owned() - first;
+  assign_rows(rows);
+  make_space();
+  list_subdomain_rows();
+  // Ghost exchange and contribution exchange, derived on both sides from the rows' entries
+  // in increasing (row id, subdomain) order; neighbours numbered in rank order.
+  const std::map<int, size_t> neighbour = number_neighbours();
+  list_exchanges(rows, neighbour);
+  list_sum_sources(neighbour);
+}
+
+void DualLayout::assign_rows(const decomposition::ConstraintRows& rows)
+{
   const int64_t n_kept = rows.n_rows();
 
   // Who touches and who owns every kept row; owned rows take slots 0.., ghosts follow.
@@ -47,7 +56,7 @@ DualLayout::DualLayout(const decomposition::Decomposition& decomp, const decompo
     std::sort(_touch[i].begin(), _touch[i].end());
     _touch[i].erase(std::unique(_touch[i].begin(), _touch[i].end()), _touch[i].end());
     FETICON_ASSERT(!_touch[i].empty(), "constraint row without entries");
-    (decomp.owns(_touch[i].front()) ? _owned : ghosts).push_back(i);
+    (_decomp.owns(_touch[i].front()) ? _owned : ghosts).push_back(i);
   }
   _slot.assign(n_kept, -1);
   for (int64_t i = 0; i < n_kept; ++i)
@@ -57,20 +66,28 @@ DualLayout::DualLayout(const decomposition::Decomposition& decomp, const decompo
   for (size_t k = 0; k < ghosts.size(); ++k)
     _slot[ghosts[k]] = static_cast<int64_t>(_owned.size() + k);
   _n_dual_global = _comm.sum(n_dual());
+}
 
+void DualLayout::make_space()
+{
   // Blocks of the dual space: the rows owned by each owned subdomain.
-  {
-    std::map<int32_t, std::vector<la::Index>> by_owner;
-    for (size_t k = 0; k < _owned.size(); ++k)
-      by_owner[_touch[_owned[k]].front()].push_back(static_cast<la::Index>(k));
-    std::vector<std::vector<la::Index>> blocks;
-    for (auto& [s, list] : by_owner)
-      blocks.push_back(std::move(list));
-    std::vector<int64_t> owned_ids;
-    for (la::Index i = 0; i < n_dual(); ++i)
-      owned_ids.push_back(row_id(i));
-    _space = std::make_unique<par::BlockSpace>(_comm, std::move(blocks), std::move(owned_ids));
-  }
+  std::map<int32_t, std::vector<la::Index>> by_owner;
+  for (size_t k = 0; k < _owned.size(); ++k)
+    by_owner[_touch[_owned[k]].front()].push_back(static_cast<la::Index>(k));
+  std::vector<std::vector<la::Index>> blocks;
+  for (auto& [s, list] : by_owner)
+    blocks.push_back(std::move(list));
+  std::vector<int64_t> owned_ids;
+  for (la::Index i = 0; i < n_dual(); ++i)
+    owned_ids.push_back(row_id(i));
+  _space = std::make_unique<par::BlockSpace>(_comm, std::move(blocks), std::move(owned_ids));
+}
+
+void DualLayout::list_subdomain_rows()
+{
+  const int32_t first = _decomp.first_owned();
+  const int32_t n_local = _decomp.end_owned() - first;
+  const int64_t n_kept = this->n_kept();
 
   // The rows of every owned subdomain in increasing index, and where each subdomain's
   // contributions start.
@@ -78,7 +95,7 @@ DualLayout::DualLayout(const decomposition::Decomposition& decomp, const decompo
   _sub_slots.resize(n_local);
   for (int64_t i = 0; i < n_kept; ++i)
     for (const int32_t s : _touch[i])
-      if (decomp.owns(s))
+      if (_decomp.owns(s))
       {
         _sub_rows[s - first].push_back(i);
         _sub_slots[s - first].push_back(_slot[i]);
@@ -86,19 +103,22 @@ DualLayout::DualLayout(const decomposition::Decomposition& decomp, const decompo
   _contribution_start.assign(1, 0);
   for (int32_t l = 0; l < n_local; ++l)
     _contribution_start.push_back(_contribution_start.back() + static_cast<int64_t>(_sub_rows[l].size()));
-  auto position = [&](int64_t i, int32_t s) // local row of kept row i in owned subdomain s
-  {
-    const auto& list = _sub_rows[s - first];
-    return static_cast<int64_t>(std::lower_bound(list.begin(), list.end(), i) - list.begin());
-  };
+}
 
-  // Ghost exchange and contribution exchange, derived on both sides from the rows' entries
-  // in increasing (row id, subdomain) order; neighbours numbered in rank order.
+int64_t DualLayout::position(int64_t i, int32_t s) const
+{
+  const auto& list = _sub_rows[s - _decomp.first_owned()];
+  return static_cast<int64_t>(std::lower_bound(list.begin(), list.end(), i) - list.begin());
+}
+
+std::map<int, size_t> DualLayout::number_neighbours()
+{
+  const int me = _comm.rank();
   std::map<int, size_t> neighbour;
-  for (int64_t i = 0; i < n_kept; ++i)
+  for (int64_t i = 0; i < n_kept(); ++i)
     for (const int32_t s : _touch[i])
-      if (decomp.owner_rank(s) != me)
-        neighbour.emplace(decomp.owner_rank(s), 0);
+      if (_decomp.owner_rank(s) != me)
+        neighbour.emplace(_decomp.owner_rank(s), 0);
   {
     size_t k = 0;
     for (auto& [rank, index] : neighbour)
@@ -113,14 +133,22 @@ DualLayout::DualLayout(const decomposition::Decomposition& decomp, const decompo
     for (const auto& [rank, index] : neighbour)
       ex->ranks.push_back(rank);
   }
+  return neighbour;
+}
+
+void DualLayout::list_exchanges(const decomposition::ConstraintRows& rows, const std::map<int, size_t>& neighbour)
+{
+  const int me = _comm.rank();
+  const int32_t first = _decomp.first_owned();
+  const size_t n_nb = neighbour.size();
   std::vector<std::vector<std::tuple<int64_t, int32_t, int64_t>>> to_owner(n_nb);
-  for (int64_t i = 0; i < n_kept; ++i)
+  for (int64_t i = 0; i < n_kept(); ++i)
   {
-    const int owner = decomp.owner_rank(_touch[i].front());
+    const int owner = _decomp.owner_rank(_touch[i].front());
     std::vector<int> others; // other ranks touching row i
     for (const int32_t s : _touch[i])
     {
-      const int r = decomp.owner_rank(s);
+      const int r = _decomp.owner_rank(s);
       if (r != me && std::find(others.begin(), others.end(), r) == others.end())
         others.push_back(r);
     }
@@ -131,7 +159,7 @@ DualLayout::DualLayout(const decomposition::Decomposition& decomp, const decompo
       _ghosts.recv[neighbour.at(owner)].push_back(_slot[i]);
     if (owner != me)
       for (const int32_t s : _touch[i])
-        if (decomp.owner_rank(s) == me)
+        if (_decomp.owner_rank(s) == me)
           to_owner[neighbour.at(owner)].emplace_back(rows.id(i), s, _contribution_start[s - first] + position(i, s));
   }
   for (size_t k = 0; k < n_nb; ++k)
@@ -140,6 +168,13 @@ DualLayout::DualLayout(const decomposition::Decomposition& decomp, const decompo
     for (const auto& [id, s, pos] : to_owner[k])
       _to_owner.send[k].push_back(pos);
   }
+}
+
+void DualLayout::list_sum_sources(const std::map<int, size_t>& neighbour)
+{
+  const int me = _comm.rank();
+  const int32_t first = _decomp.first_owned();
+  const size_t n_nb = neighbour.size();
   // Per owned row its contributions in increasing subdomain order: local positions, or the
   // next value received from the subdomain's rank.
   std::vector<int64_t> recv_count(n_nb, 0);
@@ -149,7 +184,7 @@ DualLayout::DualLayout(const decomposition::Decomposition& decomp, const decompo
   {
     for (const int32_t s : _touch[i])
     {
-      const int r = decomp.owner_rank(s);
+      const int r = _decomp.owner_rank(s);
       if (r == me)
         sources.emplace_back(-1, _contribution_start[s - first] + position(i, s));
       else

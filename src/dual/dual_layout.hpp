@@ -18,6 +18,7 @@
 #include "par/block_space.hpp"
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -66,6 +67,23 @@ public:
   la::Vector sum_contributions(const std::function<la::Vector(int32_t)>& local, int64_t work) const;
 
 private:
+  // The steps of the constructor.
+  /// _touch, the owned rows and the ghosts' slots after them, the kept rows' ids, n_dual_global.
+  void assign_rows(const decomposition::ConstraintRows& rows);
+  /// The dual space: one block of owned rows per owned subdomain.
+  void make_space();
+  /// The kept rows and slots of every owned subdomain, and where its contributions start.
+  void list_subdomain_rows();
+  /// Local row of kept row i in owned subdomain s.
+  int64_t position(int64_t i, int32_t s) const;
+  /// The ranks this rank shares rows with, numbered in rank order, and both exchanges sized for them.
+  std::map<int, size_t> number_neighbours();
+  /// What each exchange sends and receives: owned values to the ghosts' ranks, contributions
+  /// to the rows' owners in increasing (row id, subdomain) order.
+  void list_exchanges(const decomposition::ConstraintRows& rows, const std::map<int, size_t>& neighbour);
+  /// Per owned row, where its contributions sit among the local and the received ones.
+  void list_sum_sources(const std::map<int, size_t>& neighbour);
+
   const decomposition::Decomposition& _decomp;
   par::Communicator _comm;
   int64_t _n_dual_global = 0;

@@ -163,6 +163,135 @@ void measure_solution_face(const FetiOperators& feti, const CoarseProjector& pro
   face.apply(r, face_r);
   out.solution_face = qp::conjugate_gradient(H, face_r, x, cg, &face).ritz;
 }
+
+/// ||PFP||, the scale of the dual: the caller's last estimate, or power iterations.
+qp::NormEstimate pfp_norm_estimate(const la::LinearOperator& PFP_raw, const DualPenaltyOptions& options,
+                                   const DualWarmStart& warm)
+{
+  // ||PFP|| changes little when only the contact rows change (ALGORITHMS.md section 8): the
+  // caller passes the last estimate while F is the same, and the power iterations (6-7
+  // products per QP on Hertz) are skipped. It only scales F; a too small value makes an
+  // expansion step too long, which MPRGP detects and halves.
+  const qp::NormEstimate norm =
+      warm.pfp_norm > 0 ? qp::NormEstimate{warm.pfp_norm, 0}
+                        : qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1);
+  FETICON_CHECK(norm.value > 0 && std::isfinite(norm.value), "||PFP|| estimate " << norm.value
+                                                                                 << " is not positive");
+  return norm;
+}
+
+/// The bounds of the homogenized unknown mu = lambda - lambda~: mu_I >= -lambda~_I on the
+/// contact rows, none on the equality rows.
+la::Vector contact_lower_bound(const FetiOperators& feti, const la::Vector& lambda_tilde, int64_t n_equality)
+{
+  const int64_t m = feti.n_dual();
+  la::Vector lower = la::Vector::Constant(m, -std::numeric_limits<double>::infinity());
+  for (int64_t i = 0; i < m; ++i)
+    if (feti.row_id(i) >= n_equality)
+      lower(i) = -lambda_tilde(i);
+  return lower;
+}
+
+/// MPRGP's options for the scaled dual, with the step length bound known from the scaling.
+qp::MprgpOptions mprgp_options(const DualPenaltyOptions& options)
+{
+  qp::MprgpOptions mprgp;
+  mprgp.rtol = options.rtol;
+  mprgp.max_iterations = options.max_iterations;
+  mprgp.expansion = options.expansion;
+  // After scaling, ||H|| = max(||P F^ P||, rho) ~ max(1, rho): no second power iteration.
+  mprgp.alpha_bar = 1.8 / std::max(1.0, options.rho);
+  return mprgp;
+}
+
+/// SMALBE-M's options, with the equality error in the subdomains' net forces when the caller
+/// asks for a feasibility tolerance.
+qp::SmalbeOptions smalbe_options(const FetiOperators& feti, const CoarseProjector& projector,
+                                 const DualPenaltyOptions& options, const qp::MprgpOptions& mprgp)
+{
+  qp::SmalbeOptions smalbe;
+  smalbe.rtol = options.rtol;
+  smalbe.rho = options.rho;
+  smalbe.M0 = options.smalbe_M0;
+  smalbe.beta = options.smalbe_beta;
+  smalbe.max_inner_iterations = options.max_iterations;
+  smalbe.mprgp = mprgp;
+  if (options.feasibility_tolerance > 0)
+  {
+    // x = mu (force units: b and H carry the same scale), so G mu = G lambda - e, and the
+    // weights turn it into the subdomains' net forces (FetiOperators::net_force_weights).
+    smalbe.equality_error = [&projector, w = feti.net_force_weights()](const la::Vector& Cx)
+    { return projector.from_tilde(Cx).cwiseProduct(w).norm(); };
+    smalbe.equality_tolerance = options.feasibility_tolerance;
+  }
+  return smalbe;
+}
+
+/// SMALBE-M's start from the warm start's coarse multiplier, M and rho, if it has one for
+/// this coarse space.
+std::optional<qp::SmalbeStart> smalbe_start(const FetiOperators& feti, const CoarseProjector& projector,
+                                            const DualPenaltyOptions& options, const DualWarmStart& warm,
+                                            double scale)
+{
+  // The multiplier of G~ mu = 0 in the scaled dual is scale times the unscaled one.
+  std::optional<qp::SmalbeStart> start;
+  if (warm.coarse_multiplier.size() == feti.n_kernel())
+    start = qp::SmalbeStart{projector.tilde_multiplier(scale * warm.coarse_multiplier),
+                            warm.M > 0 ? warm.M : options.smalbe_M0,
+                            std::max(warm.rho, options.rho)};
+  return start;
+}
+
+/// The rows of primal recovery (ALGORITHMS.md section 1): the equalities and the contact rows
+/// with a positive multiplier; `active_contacts` counts the latter over all ranks.
+std::vector<char> active_rows(const FetiOperators& feti, const la::Vector& lambda, int64_t n_equality,
+                              int64_t& active_contacts)
+{
+  // Active rows: equalities and contact rows with a positive multiplier. MPRGP keeps
+  // bound components exactly at the bound, so lambda_i = 0 there up to round-off; the
+  // threshold only guards against round-off-sized values.
+  const int64_t m = feti.n_dual();
+  auto is_contact = [&](int64_t i) { return feti.row_id(i) >= n_equality; };
+  double lambda_max = 0;
+  for (int64_t i = 0; i < m; ++i)
+    if (is_contact(i))
+      lambda_max = std::max(lambda_max, lambda(i));
+  lambda_max = feti.space().max(lambda_max);
+  std::vector<char> active(m, 1);
+  int64_t local_active = 0;
+  for (int64_t i = 0; i < m; ++i)
+    if (is_contact(i))
+    {
+      active[i] = lambda(i) > 1e-12 * lambda_max;
+      local_active += active[i];
+    }
+  active_contacts = feti.comm().sum(local_active);
+  return active;
+}
+
+/// Why no contact force holds a body, for recover_primal's message when the active rows
+/// leave one free: empty unless the load is below what the QP resolves.
+std::string unheld_body_message(const FetiOperators& feti, const la::Vector& b, double e_norm,
+                                int64_t active_contacts, double rtol)
+{
+  // If the active rows leave a body free (recover_primal refuses): a load far below the force
+  // that would close the initial gaps elastically (b, in force units like lambda) is the likely
+  // cause, since the QP's tolerances, relative to ||b||, then admit lambda = 0 (measured on
+  // Hertz: from about 1e8 = 1 / qp.rtol on; issue 36).
+  std::string unheld;
+  const double b_norm = active_contacts == 0 && e_norm > 0 ? la::norm(feti.space(), b) : 0.0; // a reduction only then
+  if (b_norm * rtol >= e_norm && e_norm > 0)
+  {
+    std::ostringstream why;
+    why << "the load on a body that only contact holds (" << e_norm << " N) is " << b_norm / e_norm
+        << " times smaller than the force that would close the initial contact gaps elastically (" << b_norm
+        << " N), beyond what the dual QP resolves at its tolerance (rtol " << rtol
+        << "): it found no contact force. A softer material, a larger load, or bodies that touch where the load "
+           "presses them";
+    unheld = why.str();
+  }
+  return unheld;
+}
 } // namespace
 
 DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
@@ -173,7 +302,6 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   FETICON_CHECK(c.size() == m && n_equality <= feti.n_dual_global(), "dual problem: sizes do not match");
   FETICON_CHECK(options.rho > 0, "rho = " << options.rho << " must be positive");
   const CoarseProjector projector(feti);
-  auto is_contact = [&](int64_t i) { return feti.row_id(i) >= n_equality; };
   const la::Vector e = feti.apply_Rt(f_stacked);
   const la::Vector lambda_tilde = particular_solution(feti, projector, e, n_equality);
   const la::Vector d = feti.apply_B(feti.apply_K_plus(f_stacked)) - c;
@@ -181,15 +309,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   DualSolution out;
   const FOperator F_raw(feti);
   const ProjectedOperator PFP_raw(F_raw, projector, 0.0);
-  // ||PFP|| changes little when only the contact rows change (ALGORITHMS.md section 8): the
-  // caller passes the last estimate while F is the same, and the power iterations (6-7
-  // products per QP on Hertz) are skipped. It only scales F; a too small value makes an
-  // expansion step too long, which MPRGP detects and halves.
-  const qp::NormEstimate norm =
-      warm.pfp_norm > 0 ? qp::NormEstimate{warm.pfp_norm, 0}
-                        : qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1);
-  FETICON_CHECK(norm.value > 0 && std::isfinite(norm.value), "||PFP|| estimate " << norm.value
-                                                                                 << " is not positive");
+  const qp::NormEstimate norm = pfp_norm_estimate(PFP_raw, options, warm);
   out.pfp_norm = norm.value;
   const double scale = 1.0 / norm.value;
   const FOperator F(feti, scale);
@@ -200,22 +320,14 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   const la::TimedOperator H(H_untimed);
   const la::Vector b = projector.apply_P(scale * (d - feti.apply_F(lambda_tilde)));
 
-  la::Vector lower = la::Vector::Constant(m, -std::numeric_limits<double>::infinity());
-  for (int64_t i = 0; i < m; ++i)
-    if (is_contact(i))
-      lower(i) = -lambda_tilde(i);
+  const la::Vector lower = contact_lower_bound(feti, lambda_tilde, n_equality);
   // Warm start projected onto Ker G: when K_M(u) or the contact rows change, G changes and
   // lambda_start - lambda~ is far from Ker G, which SMALBE-M would then repair slowly
   // through its multiplier (the inner stop ||g_P|| <= M ||G~ mu|| passes at once).
   la::Vector mu = warm.lambda.size() == m ? projector.apply_P(warm.lambda - lambda_tilde)
                                           : la::Vector(la::Vector::Zero(m));
 
-  qp::MprgpOptions mprgp;
-  mprgp.rtol = options.rtol;
-  mprgp.max_iterations = options.max_iterations;
-  mprgp.expansion = options.expansion;
-  // After scaling, ||H|| = max(||P F^ P||, rho) ~ max(1, rho): no second power iteration.
-  mprgp.alpha_bar = 1.8 / std::max(1.0, options.rho);
+  qp::MprgpOptions mprgp = mprgp_options(options);
   std::optional<DualPreconditionerOperator> preconditioner;
   std::optional<la::TimedOperator> timed_preconditioner;
   if (options.preconditioner != DualPreconditioner::none)
@@ -231,28 +343,9 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   else
   {
     const GTildeOperator C(projector);
-    qp::SmalbeOptions smalbe;
-    smalbe.rtol = options.rtol;
-    smalbe.rho = options.rho;
-    smalbe.M0 = options.smalbe_M0;
-    smalbe.beta = options.smalbe_beta;
-    smalbe.max_inner_iterations = options.max_iterations;
-    smalbe.mprgp = mprgp;
-    if (options.feasibility_tolerance > 0)
-    {
-      // x = mu (force units: b and H carry the same scale), so G mu = G lambda - e, and the
-      // weights turn it into the subdomains' net forces (FetiOperators::net_force_weights).
-      smalbe.equality_error = [&projector, w = feti.net_force_weights()](const la::Vector& Cx)
-      { return projector.from_tilde(Cx).cwiseProduct(w).norm(); };
-      smalbe.equality_tolerance = options.feasibility_tolerance;
-    }
-    qp::Smalbe solver(H, C, smalbe, timed_preconditioner ? &*timed_preconditioner : nullptr);
-    // The multiplier of G~ mu = 0 in the scaled dual is scale times the unscaled one.
-    std::optional<qp::SmalbeStart> start;
-    if (warm.coarse_multiplier.size() == feti.n_kernel())
-      start = qp::SmalbeStart{projector.tilde_multiplier(scale * warm.coarse_multiplier),
-                              warm.M > 0 ? warm.M : options.smalbe_M0,
-                              std::max(warm.rho, options.rho)};
+    qp::Smalbe solver(H, C, smalbe_options(feti, projector, options, mprgp),
+                      timed_preconditioner ? &*timed_preconditioner : nullptr);
+    const std::optional<qp::SmalbeStart> start = smalbe_start(feti, projector, options, warm, scale);
     const qp::SmalbeReport r = solver.solve(b, lower, mu, start ? &*start : nullptr);
     out.report = r;
     out.coarse_multiplier = projector.coarse_multiplier(r.omega) / scale;
@@ -272,39 +365,8 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   out.feasibility_error =
       (feti.apply_G(out.lambda) - e).norm() / (e_norm > 0 ? e_norm : 1.0);
 
-  // Active rows: equalities and contact rows with a positive multiplier. MPRGP keeps
-  // bound components exactly at the bound, so lambda_i = 0 there up to round-off; the
-  // threshold only guards against round-off-sized values.
-  double lambda_max = 0;
-  for (int64_t i = 0; i < m; ++i)
-    if (is_contact(i))
-      lambda_max = std::max(lambda_max, out.lambda(i));
-  lambda_max = feti.space().max(lambda_max);
-  std::vector<char> active(m, 1);
-  int64_t active_contacts = 0;
-  for (int64_t i = 0; i < m; ++i)
-    if (is_contact(i))
-    {
-      active[i] = out.lambda(i) > 1e-12 * lambda_max;
-      active_contacts += active[i];
-    }
-  out.active_contacts = feti.comm().sum(active_contacts);
-  // If the active rows leave a body free (recover_primal refuses): a load far below the force
-  // that would close the initial gaps elastically (b, in force units like lambda) is the likely
-  // cause, since the QP's tolerances, relative to ||b||, then admit lambda = 0 (measured on
-  // Hertz: from about 1e8 = 1 / qp.rtol on; issue 36).
-  std::string unheld;
-  const double b_norm = out.active_contacts == 0 && e_norm > 0 ? la::norm(feti.space(), b) : 0.0; // a reduction only then
-  if (b_norm * options.rtol >= e_norm && e_norm > 0)
-  {
-    std::ostringstream why;
-    why << "the load on a body that only contact holds (" << e_norm << " N) is " << b_norm / e_norm
-        << " times smaller than the force that would close the initial contact gaps elastically (" << b_norm
-        << " N), beyond what the dual QP resolves at its tolerance (rtol " << options.rtol
-        << "): it found no contact force. A softer material, a larger load, or bodies that touch where the load "
-           "presses them";
-    unheld = why.str();
-  }
+  const std::vector<char> active = active_rows(feti, out.lambda, n_equality, out.active_contacts);
+  const std::string unheld = unheld_body_message(feti, b, e_norm, out.active_contacts, options.rtol);
   if (options.spectrum_steps > 0)
     measure_solution_face(feti, projector, F, options, norm.value, n_equality,
                           smalbe_method ? out.smalbe_rho : options.rho, active, out.report);

@@ -17,42 +17,76 @@ struct Expression
   std::map<int64_t, double> terms;
   double constant = 0;
 };
-} // namespace
 
-ConstraintElimination::ConstraintElimination(int64_t n_dofs, const ConstrainedDofs& prescribed,
-                                             const std::vector<LinearEquation>& equations, const mesh::HexMesh* mesh)
-    : _n_dofs(n_dofs), _dirichlet(n_dofs, prescribed), _with_equations(!equations.empty())
+/// The equation in independent DOFs: per DOF its coefficient and the magnitude of what was
+/// summed into it; `rhs` less the dependent DOFs' constants.
+std::map<int64_t, std::pair<double, double>> substitute_dependent(const ReducedEquation& equation,
+                                                                  const std::map<int64_t, Expression>& dependent,
+                                                                  double& rhs)
 {
-  if (!_with_equations)
-    return;
-  const std::vector<ReducedEquation> reduced = reduce_equations(equations, n_dofs, prescribed, {}, mesh);
+  // The equation in independent DOFs: the dependent ones substituted, with the magnitude of
+  // what was summed into each coefficient (cancellation to round-off of it is a zero).
+  std::map<int64_t, std::pair<double, double>> terms;
+  for (size_t k = 0; k < equation.dofs.size(); ++k)
+  {
+    const int64_t dof = equation.dofs[k];
+    const double a = equation.coefficients[k];
+    if (const auto it = dependent.find(dof); it != dependent.end())
+    {
+      for (const auto& [j, x] : it->second.terms)
+      {
+        terms[j].first += a * x;
+        terms[j].second += std::abs(a * x);
+      }
+      rhs -= a * it->second.constant;
+    }
+    else
+    {
+      terms[dof].first += a;
+      terms[dof].second += std::abs(a);
+    }
+  }
+  return terms;
+}
+
+/// The new dependent DOF `pivot` = x replaces the pivot in the expressions of the earlier ones.
+void substitute_pivot(int64_t pivot, const Expression& x, std::map<int64_t, Expression>& dependent,
+                      std::map<int64_t, std::set<int64_t>>& used_by)
+{
+  // The earlier dependent DOFs that used the pivot now use its expression.
+  if (const auto users = used_by.find(pivot); users != used_by.end())
+  {
+    for (const int64_t d : users->second)
+    {
+      Expression& y = dependent.at(d);
+      const auto it = y.terms.find(pivot);
+      if (it == y.terms.end())
+        continue;
+      const double y_pivot = it->second;
+      y.terms.erase(it);
+      for (const auto& [j, xj] : x.terms)
+      {
+        y.terms[j] += y_pivot * xj;
+        used_by[j].insert(d);
+      }
+      y.constant += y_pivot * x.constant;
+    }
+    used_by.erase(pivot);
+  }
+}
+
+/// Gaussian elimination of the equations, one dependent DOF (the pivot) per equation: the
+/// expressions of the dependent DOFs in the independent ones.
+std::map<int64_t, Expression> eliminate_equations(const std::vector<ReducedEquation>& reduced,
+                                                  const std::vector<LinearEquation>& equations,
+                                                  const mesh::HexMesh* mesh)
+{
   std::map<int64_t, Expression> dependent;
   std::map<int64_t, std::set<int64_t>> used_by; // independent DOF -> dependent DOFs whose expression has it
   for (size_t e = 0; e < reduced.size(); ++e)
   {
-    // The equation in independent DOFs: the dependent ones substituted, with the magnitude of
-    // what was summed into each coefficient (cancellation to round-off of it is a zero).
-    std::map<int64_t, std::pair<double, double>> terms;
     double rhs = reduced[e].rhs;
-    for (size_t k = 0; k < reduced[e].dofs.size(); ++k)
-    {
-      const int64_t dof = reduced[e].dofs[k];
-      const double a = reduced[e].coefficients[k];
-      if (const auto it = dependent.find(dof); it != dependent.end())
-      {
-        for (const auto& [j, x] : it->second.terms)
-        {
-          terms[j].first += a * x;
-          terms[j].second += std::abs(a * x);
-        }
-        rhs -= a * it->second.constant;
-      }
-      else
-      {
-        terms[dof].first += a;
-        terms[dof].second += std::abs(a);
-      }
-    }
+    const std::map<int64_t, std::pair<double, double>> terms = substitute_dependent(reduced[e], dependent, rhs);
     // Pivot: the largest coefficient (the first of equal ones).
     int64_t pivot = -1;
     double largest = 0, magnitude = 0;
@@ -73,30 +107,23 @@ ConstraintElimination::ConstraintElimination(int64_t n_dofs, const ConstrainedDo
       if (dof != pivot && std::abs(term.first) > 1e-14 * term.second)
         x.terms[dof] = -term.first / a_pivot;
     x.constant = rhs / a_pivot;
-    // The earlier dependent DOFs that used the pivot now use its expression.
-    if (const auto users = used_by.find(pivot); users != used_by.end())
-    {
-      for (const int64_t d : users->second)
-      {
-        Expression& y = dependent.at(d);
-        const auto it = y.terms.find(pivot);
-        if (it == y.terms.end())
-          continue;
-        const double y_pivot = it->second;
-        y.terms.erase(it);
-        for (const auto& [j, xj] : x.terms)
-        {
-          y.terms[j] += y_pivot * xj;
-          used_by[j].insert(d);
-        }
-        y.constant += y_pivot * x.constant;
-      }
-      used_by.erase(pivot);
-    }
+    substitute_pivot(pivot, x, dependent, used_by);
     for (const auto& [j, xj] : x.terms)
       used_by[j].insert(pivot);
     dependent.emplace(pivot, std::move(x));
   }
+  return dependent;
+}
+} // namespace
+
+ConstraintElimination::ConstraintElimination(int64_t n_dofs, const ConstrainedDofs& prescribed,
+                                             const std::vector<LinearEquation>& equations, const mesh::HexMesh* mesh)
+    : _n_dofs(n_dofs), _dirichlet(n_dofs, prescribed), _with_equations(!equations.empty())
+{
+  if (!_with_equations)
+    return;
+  const std::vector<ReducedEquation> reduced = reduce_equations(equations, n_dofs, prescribed, {}, mesh);
+  const std::map<int64_t, Expression> dependent = eliminate_equations(reduced, equations, mesh);
 
   // Columns of T: the DOFs neither prescribed nor dependent, in increasing order.
   std::vector<char> kind(_n_dofs, 0); // 1 prescribed, 2 dependent

@@ -119,36 +119,33 @@ bool floats_along(const fem::Problem& problem, int32_t body, const Eigen::Vector
             return false;
   return true;
 }
-} // namespace
 
-CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const CalculixOptions& options,
-                                        std::ostream& out)
+/// Node coordinates as the deck writes them (slave bodies shifted, see contact_pairs).
+using Coordinates = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+/// The faces of a contact pair and its penalty stiffness.
+struct ContactPairFaces
 {
-  FETICON_CHECK(options.increments >= 1, "calculix export: increments = " << options.increments << " must be >= 1");
-  FETICON_CHECK(std::isfinite(options.contact_stiffness_factor) && options.contact_stiffness_factor > 0,
-                "calculix export: contact stiffness factor " << options.contact_stiffness_factor << " must be positive");
-  const mesh::HexMesh& mesh = problem.mesh;
-  CalculixDeckSummary summary;
-  summary.n_nodes = mesh.n_nodes();
-  summary.n_elements = mesh.n_cells();
+  std::vector<std::pair<int32_t, int>> slave, master;
+  double stiffness;
+};
 
+/// Element faces and stiffness of every contact pair; a slave body that floats along the
+/// master normal is shifted into its master in `x` (the overclosure recorded in `summary`).
+std::vector<ContactPairFaces> contact_pairs(const fem::Problem& problem, const CalculixOptions& options,
+                                            Coordinates& x, CalculixDeckSummary& summary)
+{
+  const mesh::HexMesh& mesh = problem.mesh;
   std::vector<std::vector<int32_t>> cells_of_node(mesh.n_nodes());
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
     for (int32_t n : mesh.cells[c])
       cells_of_node[n].push_back(c);
 
-  // Contact pairs first: the shift of floating slave bodies changes the node coordinates.
-  struct Pair
-  {
-    std::vector<std::pair<int32_t, int>> slave, master;
-    double stiffness;
-  };
-  std::vector<Pair> pairs;
-  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> x = mesh.nodes;
+  std::vector<ContactPairFaces> pairs;
   std::vector<char> shifted_body(mesh.n_bodies(), 0);
   for (const fem::ContactPairNames& names : problem.contacts)
   {
-    Pair pair;
+    ContactPairFaces pair;
     pair.slave = element_faces(mesh, names.slave, cells_of_node);
     pair.master = element_faces(mesh, names.master, cells_of_node);
     const int32_t slave_body = body_of_faces(mesh, names.slave, pair.slave);
@@ -176,7 +173,14 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   summary.n_contact_pairs = static_cast<int64_t>(pairs.size());
   if (!pairs.empty())
     summary.contact_stiffness = pairs.front().stiffness;
+  return pairs;
+}
 
+/// The deck's heading, *NODE (coordinates x) and one *ELEMENT block per body.
+void write_mesh(std::ostream& out, const fem::Problem& problem, const Coordinates& x,
+                const CalculixDeckSummary& summary)
+{
+  const mesh::HexMesh& mesh = problem.mesh;
   out << "** CalculiX deck of the feticon problem '" << problem.name << "' (feticon export --format calculix)\n"
       << "** SI units: m, N, Pa. " << mesh.n_nodes() << " nodes, " << mesh.n_cells() << " C3D8 elements.\n";
   if (summary.overclosure > 0)
@@ -197,10 +201,11 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
         out << '\n';
       }
   }
+}
 
-  std::set<std::string> node_sets;
-  for (const fem::DirichletCondition& d : problem.dirichlet)
-    node_sets.insert(d.set);
+/// One *NSET per node set that a support names, 16 nodes a line.
+void write_node_sets(std::ostream& out, const mesh::HexMesh& mesh, const std::set<std::string>& node_sets)
+{
   for (const std::string& name : node_sets)
   {
     out << "*NSET, NSET=" << deck_name("N_", name) << '\n';
@@ -209,7 +214,12 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
       out << n + 1 << (++k % 16 == 0 ? ",\n" : ", ");
     out << '\n';
   }
+}
 
+/// *MATERIAL with *ELASTIC and its *SOLID SECTION, per body.
+void write_materials(std::ostream& out, const fem::Problem& problem)
+{
+  const mesh::HexMesh& mesh = problem.mesh;
   for (int32_t b = 0; b < mesh.n_bodies(); ++b)
   {
     const fem::Material& m = problem.materials[b];
@@ -218,7 +228,12 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
         << "*SOLID SECTION, ELSET=" << deck_name("B_", mesh.body_names[b])
         << ", MATERIAL=" << deck_name("M_", mesh.body_names[b]) << '\n';
   }
+}
 
+/// Per contact pair: its two *SURFACEs, a linear pressure-overclosure interaction and the
+/// surface-to-surface *CONTACT PAIR.
+void write_contact(std::ostream& out, const fem::Problem& problem, const std::vector<ContactPairFaces>& pairs)
+{
   for (size_t p = 0; p < pairs.size(); ++p)
   {
     const fem::ContactPairNames& names = problem.contacts[p];
@@ -234,7 +249,14 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
         << "*CONTACT PAIR, INTERACTION=" << interaction << ", TYPE=SURFACE TO SURFACE\n"
         << deck_name("S_", names.slave) << ", " << deck_name("S_", names.master) << '\n';
   }
+}
 
+/// The static *STEP with its increments, *BOUNDARY (supports, plane strain) and *CLOAD (the
+/// external force, totals counted in `summary`).
+void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
+                CalculixDeckSummary& summary)
+{
+  const mesh::HexMesh& mesh = problem.mesh;
   const double increment = 1.0 / options.increments;
   out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "") << ", INC=10000\n*STATIC\n"
       << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
@@ -259,7 +281,32 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
       summary.total_load[i] += value;
       ++summary.n_cloads;
     }
+}
+} // namespace
 
+CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const CalculixOptions& options,
+                                        std::ostream& out)
+{
+  FETICON_CHECK(options.increments >= 1, "calculix export: increments = " << options.increments << " must be >= 1");
+  FETICON_CHECK(std::isfinite(options.contact_stiffness_factor) && options.contact_stiffness_factor > 0,
+                "calculix export: contact stiffness factor " << options.contact_stiffness_factor << " must be positive");
+  const mesh::HexMesh& mesh = problem.mesh;
+  CalculixDeckSummary summary;
+  summary.n_nodes = mesh.n_nodes();
+  summary.n_elements = mesh.n_cells();
+
+  // Contact pairs first: the shift of floating slave bodies changes the node coordinates.
+  Coordinates x = mesh.nodes;
+  const std::vector<ContactPairFaces> pairs = contact_pairs(problem, options, x, summary);
+
+  write_mesh(out, problem, x, summary);
+  std::set<std::string> node_sets;
+  for (const fem::DirichletCondition& d : problem.dirichlet)
+    node_sets.insert(d.set);
+  write_node_sets(out, mesh, node_sets);
+  write_materials(out, problem);
+  write_contact(out, problem, pairs);
+  write_step(out, problem, options, summary);
   out << "*NODE FILE\nU, RF\n";
   if (!pairs.empty())
     out << "*CONTACT FILE\nCSTR\n";

@@ -71,6 +71,12 @@ void check_field(std::span<const double> values, int32_t n_nodes, int components
                                                    << " = " << expected);
 }
 
+/// value(i, k) of a field stored node after node, `components` values each.
+auto row_major(std::span<const double> values, int components)
+{
+  return [values, components](int32_t i, int k) { return values[static_cast<std::size_t>(i) * components + k]; };
+}
+
 /// Whether `name` (a deck variable) is one of `known`.
 bool is_one_of(const std::string& name, std::initializer_list<const char*> known)
 {
@@ -222,17 +228,7 @@ void FrdWriter::write_block_header(std::string& out, const FrdStep& step, int32_
 
 void FrdWriter::add_step(const FrdStep& step)
 {
-  FETICON_CHECK(_file != nullptr, "frd '" << _path.string() << "': add_step after close");
-  check_field(step.displacement, _n_nodes, 3, "displacement", _path);
-  check_field(step.stress, _n_nodes, 6, "stress", _path);
-  check_field(step.strain, _n_nodes, 6, "strain", _path);
-  check_field(step.reaction_force, _n_nodes, 3, "reaction_force", _path);
-  check_field(step.contact_pressure, _n_nodes, 1, "contact_pressure", _path);
-  check_field(step.contact_gap, _n_nodes, 1, "contact_gap", _path);
-  FETICON_CHECK(step.step >= 1, "frd '" << _path.string() << "': step " << step.step << " must be >= 1");
-  FETICON_CHECK(step.time >= 0.0 && step.time < 1e99,
-                "frd '" << _path.string() << "': time " << step.time << " outside [0, 1e99)");
-
+  check_step(step);
   if (step.step != _last_step)
   {
     _last_step = step.step;
@@ -246,27 +242,51 @@ void FrdWriter::add_step(const FrdStep& step)
                 "cannot seek in '" << _path.string() << "'");
   TextFileBuffer out(_file.get(), _path.string());
   std::string& text = out.buffer;
+  write_fields(out, step, increment);
+  out.write();
+  _end_of_results = std::ftell(_file.get());
+  text = " 9999\n";
+  out.write();
+  FETICON_CHECK(std::fflush(_file.get()) == 0, "cannot write '" << _path.string() << "': is the disk full?");
+}
 
-  // One block: header, name and component records, then per node `components` values
-  // value(i, k) (k < components).
-  auto block = [&](const char* records, int components, auto value)
+void FrdWriter::check_step(const FrdStep& step) const
+{
+  FETICON_CHECK(_file != nullptr, "frd '" << _path.string() << "': add_step after close");
+  check_field(step.displacement, _n_nodes, 3, "displacement", _path);
+  check_field(step.stress, _n_nodes, 6, "stress", _path);
+  check_field(step.strain, _n_nodes, 6, "strain", _path);
+  check_field(step.reaction_force, _n_nodes, 3, "reaction_force", _path);
+  check_field(step.contact_pressure, _n_nodes, 1, "contact_pressure", _path);
+  check_field(step.contact_gap, _n_nodes, 1, "contact_gap", _path);
+  FETICON_CHECK(step.step >= 1, "frd '" << _path.string() << "': step " << step.step << " must be >= 1");
+  FETICON_CHECK(step.time >= 0.0 && step.time < 1e99,
+                "frd '" << _path.string() << "': time " << step.time << " outside [0, 1e99)");
+}
+
+template <class Value>
+void FrdWriter::write_block(TextFileBuffer& out, const FrdStep& step, int32_t increment, const char* records,
+                            int components, Value value)
+{
+  std::string& text = out.buffer;
+  write_block_header(text, step, increment);
+  text += records;
+  for (int32_t i = 0; i < _n_nodes; ++i)
   {
-    write_block_header(text, step, increment);
-    text += records;
-    for (int32_t i = 0; i < _n_nodes; ++i)
-    {
-      text += " -1";
-      append_integer(text, label_of(_node_labels, i), 10);
-      for (int k = 0; k < components; ++k)
-        append_c_exponential(text, static_cast<float>(value(i, k)), 12, 5);
-      text += '\n';
-      out.flush_if_full();
-    }
-    text += " -3\n";
-  };
-  auto row_major = [](std::span<const double> values, int components)
-  { return [values, components](int32_t i, int k) { return values[static_cast<std::size_t>(i) * components + k]; }; };
+    text += " -1";
+    append_integer(text, label_of(_node_labels, i), 10);
+    for (int k = 0; k < components; ++k)
+      append_c_exponential(text, static_cast<float>(value(i, k)), 12, 5);
+    text += '\n';
+    out.flush_if_full();
+  }
+  text += " -3\n";
+}
 
+void FrdWriter::write_fields(TextFileBuffer& out, const FrdStep& step, int32_t increment)
+{
+  auto block = [&](const char* records, int components, auto value)
+  { write_block(out, step, increment, records, components, value); };
   if (!step.displacement.empty())
     block(" -4  DISP        4    1\n"
           " -5  D1          1    2    1    0\n"
@@ -319,10 +339,5 @@ void FrdWriter::add_step(const FrdStep& step)
             return k == 3 ? pressure[i] : 0.0;
           });
   }
-  out.write();
-  _end_of_results = std::ftell(_file.get());
-  text = " 9999\n";
-  out.write();
-  FETICON_CHECK(std::fflush(_file.get()) == 0, "cannot write '" << _path.string() << "': is the disk full?");
 }
 } // namespace feticon::io

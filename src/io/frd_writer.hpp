@@ -111,6 +111,15 @@ public:
 
 private:
   void write_block_header(std::string& out, const FrdStep& step, int32_t increment);
+  /// The checks of add_step: an open file, the fields' sizes, the step number and the time.
+  void check_step(const FrdStep& step) const;
+  /// The blocks of the step's non-empty fields, in ccx's order.
+  void write_fields(TextFileBuffer& out, const FrdStep& step, int32_t increment);
+  /// One block: header, name and component records, then per node `components` values
+  /// value(i, k) (k < components).
+  template <class Value>
+  void write_block(TextFileBuffer& out, const FrdStep& step, int32_t increment, const char* records,
+                   int components, Value value);
 
   std::filesystem::path _path;
   CFile _file;

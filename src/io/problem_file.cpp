@@ -241,57 +241,48 @@ void settings_of_deck(ProblemFile& file, const std::filesystem::path& path)
   file.settings.set("load_steps", std::to_string(outline.increments), source);
   file.settings.set("contact.formulation", outline.contact_formulation, source);
 }
-} // namespace
 
-ProblemFile load_problem_file(const std::filesystem::path& path, const std::vector<std::string>& overrides,
-                              const std::vector<SettingSpec>& declared)
+/// The tree of a YAML problem file, checked: a regular file of settings size, valid YAML, a
+/// map at the top, no key twice.
+void read_problem_tree(ProblemFile& file, const std::filesystem::path& path)
 {
-  ProblemFile file;
-  file.settings = Settings(declared);
-  file.source = path.empty() ? std::string("defaults") : path.string();
-  file.folder = path.empty() ? std::filesystem::current_path() : path.parent_path();
-  file.root = YAML::Node(YAML::NodeType::Map);
-  if (!path.empty() && is_deck_file(path))
-    settings_of_deck(file, path);
-  else if (!path.empty())
+  FETICON_CHECK(std::filesystem::exists(path), "problem file " << path.string() << " does not exist");
+  // Problem files hold settings and small lists; 16 MiB is far beyond any real one.
+  constexpr std::uintmax_t max_problem_file_bytes = 16u << 20;
+  // Not a folder, a device or a FIFO (/dev/zero would be read forever), and settings-sized:
+  // meshes go in their own files (mesh.file).
+  std::error_code ec;
+  FETICON_CHECK(std::filesystem::is_regular_file(path, ec),
+                "problem file " << path.string() << " is not a regular file (a folder or a device?)");
+  const auto bytes = std::filesystem::file_size(path, ec);
+  FETICON_CHECK(!ec && bytes <= max_problem_file_bytes,
+                "problem file " << path.string() << " has " << bytes << " bytes; a problem file holds settings "
+                                "(at most " << max_problem_file_bytes << " bytes), a mesh goes in mesh.file");
+  try
   {
-    FETICON_CHECK(std::filesystem::exists(path), "problem file " << path.string() << " does not exist");
-    // Problem files hold settings and small lists; 16 MiB is far beyond any real one.
-    constexpr std::uintmax_t max_problem_file_bytes = 16u << 20;
-    // Not a folder, a device or a FIFO (/dev/zero would be read forever), and settings-sized:
-    // meshes go in their own files (mesh.file).
-    std::error_code ec;
-    FETICON_CHECK(std::filesystem::is_regular_file(path, ec),
-                  "problem file " << path.string() << " is not a regular file (a folder or a device?)");
-    const auto bytes = std::filesystem::file_size(path, ec);
-    FETICON_CHECK(!ec && bytes <= max_problem_file_bytes,
-                  "problem file " << path.string() << " has " << bytes << " bytes; a problem file holds settings "
-                                  "(at most " << max_problem_file_bytes << " bytes), a mesh goes in mesh.file");
-    try
-    {
-      file.root = YAML::LoadFile(path.string());
-    }
-    catch (const YAML::DeepRecursion& e)
-    {
-      FETICON_CHECK(false, path.string() << ": YAML nested deeper than the reader's limit at line " << e.mark.line + 1
-                                         << "; a problem file nests a few levels (sections, lists of maps)");
-    }
-    catch (const YAML::Exception& e)
-    {
-      FETICON_CHECK(false, path.string() << ": invalid YAML at line " << e.mark.line + 1
-                                         << ", column " << e.mark.column + 1 << ": " << e.msg);
-    }
-    FETICON_CHECK(!file.root.IsNull(), path.string() << ": the file holds no settings (empty or comments "
-                                                     "only); write at least 'problem: hertz'");
-    FETICON_CHECK(file.root.IsMap(), path.string() << ": the top level must be a map of keys");
-    reject_duplicate_keys(file.root, "", path.string());
+    file.root = YAML::LoadFile(path.string());
   }
-  // Overrides act on the tree; the settings below remember which keys came from --set.
-  // Settings under the name of a structured section (contact.formulation beside a custom
-  // problem's list of contact pairs) go straight to the settings: in the tree they would
-  // turn the section into a map of settings, or collide with the list.
-  std::set<std::string> overridden;
-  std::vector<std::pair<std::string, std::string>> section_settings;
+  catch (const YAML::DeepRecursion& e)
+  {
+    FETICON_CHECK(false, path.string() << ": YAML nested deeper than the reader's limit at line " << e.mark.line + 1
+                                       << "; a problem file nests a few levels (sections, lists of maps)");
+  }
+  catch (const YAML::Exception& e)
+  {
+    FETICON_CHECK(false, path.string() << ": invalid YAML at line " << e.mark.line + 1
+                                       << ", column " << e.mark.column + 1 << ": " << e.msg);
+  }
+  FETICON_CHECK(!file.root.IsNull(), path.string() << ": the file holds no settings (empty or comments "
+                                                   "only); write at least 'problem: hertz'");
+  FETICON_CHECK(file.root.IsMap(), path.string() << ": the top level must be a map of keys");
+  reject_duplicate_keys(file.root, "", path.string());
+}
+
+/// The --set KEY=VALUE overrides: into the tree (their keys into `overridden`), or, for the
+/// settings under a structured section's name, into `section_settings`.
+void apply_overrides(const std::vector<std::string>& overrides, ProblemFile& file, std::set<std::string>& overridden,
+                     std::vector<std::pair<std::string, std::string>>& section_settings)
+{
   for (const std::string& o : overrides)
   {
     const auto eq = o.find('=');
@@ -317,6 +308,28 @@ ProblemFile load_problem_file(const std::filesystem::path& path, const std::vect
     set_path(file.root, split_path(key), 0, value, key);
     overridden.insert(key);
   }
+}
+} // namespace
+
+ProblemFile load_problem_file(const std::filesystem::path& path, const std::vector<std::string>& overrides,
+                              const std::vector<SettingSpec>& declared)
+{
+  ProblemFile file;
+  file.settings = Settings(declared);
+  file.source = path.empty() ? std::string("defaults") : path.string();
+  file.folder = path.empty() ? std::filesystem::current_path() : path.parent_path();
+  file.root = YAML::Node(YAML::NodeType::Map);
+  if (!path.empty() && is_deck_file(path))
+    settings_of_deck(file, path);
+  else if (!path.empty())
+    read_problem_tree(file, path);
+  // Overrides act on the tree; the settings below remember which keys came from --set.
+  // Settings under the name of a structured section (contact.formulation beside a custom
+  // problem's list of contact pairs) go straight to the settings: in the tree they would
+  // turn the section into a map of settings, or collide with the list.
+  std::set<std::string> overridden;
+  std::vector<std::pair<std::string, std::string>> section_settings;
+  apply_overrides(overrides, file, overridden, section_settings);
   for (const auto& kv : file.root)
   {
     const std::string key = kv.first.as<std::string>();

@@ -261,6 +261,35 @@ private:
   /// The rows of the Schur boundary's reach at u (global), for the large-displacement loop.
   contact::ContactConstraints reach_rows(const la::Vector& u_global) const;
 
+  // The parts of one outer iteration (ALGORITHMS.md section 8).
+  /// Norms of the correction du and of u after it, and ||du||_inf (assembled).
+  struct Correction
+  {
+    double du_norm;
+    double u_norm;
+    double du_max;
+  };
+  /// The contact rows at u (global): a linear run's rows near contact, otherwise a new search.
+  contact::ContactConstraints search_contact(const la::Vector& u_global) const;
+  /// The Schur boundary grown by the reach at u, and the operators of the subdomains it changed.
+  void grow_schur_boundary(const la::Vector& u_global, const std::string& where);
+  /// G, GG' and the FETI operators for the rows of this iteration.
+  std::unique_ptr<dual::FetiOperators> coarse_problem(const decomposition::ConstraintRows& rows) const;
+  /// The owned right-hand sides c of the rows: targets less B_E u for the equalities, gaps for contact.
+  la::Vector constraint_values(const dual::FetiOperators& feti, const decomposition::ConstraintRows& rows) const;
+  /// The dual QP's options at outer iteration k: its rtol and, for an exact QP, the feasibility tolerance.
+  dual::DualPenaltyOptions qp_options(int k);
+  /// The QP's counters, the relative correction and the force residual at the new u in `it`
+  /// (f_int updated on the way); returns the norms the convergence test needs.
+  Correction measure_iteration(const dual::FetiOperators& feti, const dual::DualSolution& solution,
+                               OuterIteration& it);
+  /// The contact rows and multipliers into the solution; true if a linear run must add
+  /// penetrated rows left out of this QP and solve again.
+  bool store_contact_result(const dual::DualSolution& solution, contact::ContactConstraints contact_rows,
+                            const la::Vector& contact_lambda, const std::string& where);
+  /// The warning of a step that ends at the floor of the QP's equilibrium error.
+  std::string floor_message(const OuterIteration& it, double du_max, double feasibility_error) const;
+
   const fem::Problem& _problem;
   const SolverSettings& _settings;
   TimerTable& _timers;
@@ -513,49 +542,115 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
     _multipliers.forget_operator_norm();
   }
   const la::Vector u_global = _decomp->gather_mean(_decomp->gather_stacked(_u));
-  contact::ContactConstraints contact_rows;
-  {
-    ScopedTimer t(_timers, "contact search");
-    if (_linear_rows)
-      contact_rows = _linear_rows->selected_rows(u_global);
-    else
-      contact_rows = contact::build_contact_constraints(_problem.mesh, u_global, _pair, _contact_options);
-  }
+  contact::ContactConstraints contact_rows = search_contact(u_global);
   if (_schur && !covers(_problem, _schur_boundary, contact_rows))
-  {
-    // Rows beyond the reach found so far (a sliding or spreading contact): the boundary grows
-    // by the reach at u, and the subdomains whose boundary did not change keep their blocks.
-    // The reach holds the rows (the same search at u with a wider band than
-    // near_contact_fraction). A linear run's rows are among the candidates the boundary was
-    // made for: never here.
-    const contact::ContactConstraints reach = reach_rows(u_global);
-    const std::vector<char> grown = schur_boundary_dofs(_problem, _dirichlet, &reach, true);
-    for (size_t i = 0; i < grown.size(); ++i)
-      _schur_boundary[i] |= grown[i];
-    _out.schur_boundary_widened = true;
-    ++_out.schur_boundary_growths;
-    const int reformed = update_boundary_operators(true);
-    log::info(where + "contact rows beyond the Schur boundary: grown to the rows near contact, " +
-              std::to_string(reformed) + " subdomains' operators formed again");
-  }
+    grow_schur_boundary(u_global, where);
   const la::Vector residual = _f_step - _f_int;
   decomposition::ConstraintRows rows = _equality->rows;
   rows.append(decomposition::rows_from_global(*_decomp, contact_rows.B, contact_rows.c), _n_equality);
 
-  std::unique_ptr<dual::FetiOperators> feti;
-  {
-    ScopedTimer t(_timers, "coarse problem");
-    feti = std::make_unique<dual::FetiOperators>(*_system, rows);
-    if (_explicit_operators)
-      feti->use_explicit(*_explicit_operators);
-  }
-  // c_E = target - B_E u (gluing 0, Dirichlet u_D(t_n)); c_I = current gaps.
-  const la::Index m = feti->n_dual();
-  la::Vector c = feti->owned(rows.c_vector());
-  const la::Vector Bu = feti->apply_B(_u);
-  for (la::Index i = 0; i < m && feti->row_id(i) < _n_equality; ++i)
-    c(i) -= Bu(i);
+  const std::unique_ptr<dual::FetiOperators> feti = coarse_problem(rows);
+  const la::Vector c = constraint_values(*feti, rows);
   const dual::DualWarmStart warm = _multipliers.warm_start(*feti, _n_equality, contact_rows.slave_node);
+  const dual::DualPenaltyOptions dual_options = qp_options(k);
+  dual::DualSolution solution;
+  {
+    ScopedTimer t(_timers, "dual solve (MPRGP)");
+    solution = dual::solve_contact_dual(*feti, c, residual, _n_equality, dual_options, warm);
+  }
+  _u += solution.u;
+  const la::Vector contact_lambda = _multipliers.remember(*feti, solution, _n_equality, contact_rows.slave_node);
+  std::set<int32_t> active = _multipliers.active_slave_nodes(_force_floor);
+
+  const Correction correction = measure_iteration(*feti, solution, it);
+  // A diverging outer loop shows as a non-finite residual before anything else fails; the
+  // iteration is no result, so it stays out of the history (no NaN in history.csv).
+  if (!std::isfinite(it.residual_norm) || !std::isfinite(it.displacement_change))
+  {
+    _diverged = true;
+    return IterationOutcome::stop(where + "the outer loop diverged (non-finite residual): use more "
+                                          "load_steps or newton.stiffness=iteration",
+                                  false);
+  }
+  const bool more_rows = store_contact_result(solution, std::move(contact_rows), contact_lambda, where);
+  _out.n_dual = feti->n_dual_global();
+  _out.n_kernel = feti->n_kernel();
+  _out.feasibility_error = solution.feasibility_error;
+  if (!solution.report.converged)
+    return IterationOutcome::stop(where + solution.report.reason);
+  // The multipliers are the answer (pressures), and an inexact QP leaves them off by far
+  // more than its tolerance suggests (that is relative to ||b||, which the gaps of the
+  // inactive rows dominate: Hertz at refinement 1 stopped after a QP at rtol 1e-7 had a
+  // peak pressure 14 % high). So a step ends only after a QP solved to qp.rtol; if the
+  // test passes after a forced one, the next QP, warm-started at the answer, is exact.
+  const bool exact_qp = dual_options.rtol <= _settings.dual.rtol;
+  const OuterVerdict verdict =
+      _linear ? (more_rows ? OuterVerdict::iterate : OuterVerdict::converged)
+              : _convergence.verdict(correction.du_norm, correction.u_norm, correction.du_max, it.residual_norm,
+                                     active, _previous_active);
+  _previous_active = std::move(active);
+  if (verdict == OuterVerdict::iterate)
+    return IterationOutcome::next();
+  if (!exact_qp) // the step ends only after a QP solved to qp.rtol
+  {
+    _forcing = false;
+    return IterationOutcome::next();
+  }
+  _equality_by_id = dual::multipliers_by_id(*feti, solution.lambda, 0, _n_equality);
+  if (verdict == OuterVerdict::converged)
+    return IterationOutcome::step_converged();
+  return IterationOutcome::step_at_floor(floor_message(it, correction.du_max, solution.feasibility_error));
+}
+
+contact::ContactConstraints FetiContactSolve::search_contact(const la::Vector& u_global) const
+{
+  ScopedTimer t(_timers, "contact search");
+  if (_linear_rows)
+    return _linear_rows->selected_rows(u_global);
+  return contact::build_contact_constraints(_problem.mesh, u_global, _pair, _contact_options);
+}
+
+void FetiContactSolve::grow_schur_boundary(const la::Vector& u_global, const std::string& where)
+{
+  // Rows beyond the reach found so far (a sliding or spreading contact): the boundary grows
+  // by the reach at u, and the subdomains whose boundary did not change keep their blocks.
+  // The reach holds the rows (the same search at u with a wider band than
+  // near_contact_fraction). A linear run's rows are among the candidates the boundary was
+  // made for: never here.
+  const contact::ContactConstraints reach = reach_rows(u_global);
+  const std::vector<char> grown = schur_boundary_dofs(_problem, _dirichlet, &reach, true);
+  for (size_t i = 0; i < grown.size(); ++i)
+    _schur_boundary[i] |= grown[i];
+  _out.schur_boundary_widened = true;
+  ++_out.schur_boundary_growths;
+  const int reformed = update_boundary_operators(true);
+  log::info(where + "contact rows beyond the Schur boundary: grown to the rows near contact, " +
+            std::to_string(reformed) + " subdomains' operators formed again");
+}
+
+std::unique_ptr<dual::FetiOperators> FetiContactSolve::coarse_problem(const decomposition::ConstraintRows& rows) const
+{
+  ScopedTimer t(_timers, "coarse problem");
+  auto feti = std::make_unique<dual::FetiOperators>(*_system, rows);
+  if (_explicit_operators)
+    feti->use_explicit(*_explicit_operators);
+  return feti;
+}
+
+la::Vector FetiContactSolve::constraint_values(const dual::FetiOperators& feti,
+                                               const decomposition::ConstraintRows& rows) const
+{
+  // c_E = target - B_E u (gluing 0, Dirichlet u_D(t_n)); c_I = current gaps.
+  const la::Index m = feti.n_dual();
+  la::Vector c = feti.owned(rows.c_vector());
+  const la::Vector Bu = feti.apply_B(_u);
+  for (la::Index i = 0; i < m && feti.row_id(i) < _n_equality; ++i)
+    c(i) -= Bu(i);
+  return c;
+}
+
+dual::DualPenaltyOptions FetiContactSolve::qp_options(int k)
+{
   dual::DualPenaltyOptions dual_options = _settings.dual;
   dual_options.schur = _schur.get();
   dual_options.rtol = qp_rtol(k);
@@ -566,15 +661,13 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   // of the residual tolerance (a tenth cost more steps where the residual was already low).
   if (!_linear && dual_options.rtol <= _settings.dual.rtol)
     dual_options.feasibility_tolerance = 0.25 * _convergence.residual_tolerance * force_scale();
-  dual::DualSolution solution;
-  {
-    ScopedTimer t(_timers, "dual solve (MPRGP)");
-    solution = dual::solve_contact_dual(*feti, c, residual, _n_equality, dual_options, warm);
-  }
-  _u += solution.u;
-  const la::Vector contact_lambda = _multipliers.remember(*feti, solution, _n_equality, contact_rows.slave_node);
-  std::set<int32_t> active = _multipliers.active_slave_nodes(_force_floor);
+  return dual_options;
+}
 
+FetiContactSolve::Correction FetiContactSolve::measure_iteration(const dual::FetiOperators& feti,
+                                                                 const dual::DualSolution& solution,
+                                                                 OuterIteration& it)
+{
   it.qp = solution.report;
   it.final_rho = solution.smalbe_rho;
   it.active_contacts = solution.active_contacts;
@@ -585,18 +678,16 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   {
     ScopedTimer t(_timers, "internal forces");
     update_internal_force(); // also the next iteration's, at the same u
-    const la::Vector r_new = _f_step - _f_int - feti->apply_Bt(solution.lambda);
+    const la::Vector r_new = _f_step - _f_int - feti.apply_Bt(solution.lambda);
     it.residual_norm = _decomp->gather_sum(_decomp->gather_stacked(r_new)).norm() / std::max(force_scale(), 1e-300);
   }
-  // A diverging outer loop shows as a non-finite residual before anything else fails; the
-  // iteration is no result, so it stays out of the history (no NaN in history.csv).
-  if (!std::isfinite(it.residual_norm) || !std::isfinite(it.displacement_change))
-  {
-    _diverged = true;
-    return IterationOutcome::stop(where + "the outer loop diverged (non-finite residual): use more "
-                                          "load_steps or newton.stiffness=iteration",
-                                  false);
-  }
+  return {du_norm, u_norm, du_max};
+}
+
+bool FetiContactSolve::store_contact_result(const dual::DualSolution& solution,
+                                            contact::ContactConstraints contact_rows,
+                                            const la::Vector& contact_lambda, const std::string& where)
+{
   // A linear run's QP had the rows near contact only; if a left-out candidate is penetrated
   // at its answer, another QP follows with the rows near contact at u (LinearContactRows).
   bool more_rows = false;
@@ -616,39 +707,19 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
     _out.constraints = std::move(contact_rows);
     _out.contact_lambda = contact_lambda;
   }
-  _out.n_dual = feti->n_dual_global();
-  _out.n_kernel = feti->n_kernel();
-  _out.feasibility_error = solution.feasibility_error;
-  if (!solution.report.converged)
-    return IterationOutcome::stop(where + solution.report.reason);
-  // The multipliers are the answer (pressures), and an inexact QP leaves them off by far
-  // more than its tolerance suggests (that is relative to ||b||, which the gaps of the
-  // inactive rows dominate: Hertz at refinement 1 stopped after a QP at rtol 1e-7 had a
-  // peak pressure 14 % high). So a step ends only after a QP solved to qp.rtol; if the
-  // test passes after a forced one, the next QP, warm-started at the answer, is exact.
-  const bool exact_qp = dual_options.rtol <= _settings.dual.rtol;
-  const OuterVerdict verdict =
-      _linear ? (more_rows ? OuterVerdict::iterate : OuterVerdict::converged)
-              : _convergence.verdict(du_norm, u_norm, du_max, it.residual_norm, active, _previous_active);
-  _previous_active = std::move(active);
-  if (verdict == OuterVerdict::iterate)
-    return IterationOutcome::next();
-  if (!exact_qp) // the step ends only after a QP solved to qp.rtol
-  {
-    _forcing = false;
-    return IterationOutcome::next();
-  }
-  _equality_by_id = dual::multipliers_by_id(*feti, solution.lambda, 0, _n_equality);
-  if (verdict == OuterVerdict::converged)
-    return IterationOutcome::step_converged();
+  return more_rows;
+}
+
+std::string FetiContactSolve::floor_message(const OuterIteration& it, double du_max, double feasibility_error) const
+{
   char floor[400];
   std::snprintf(floor, sizeof floor,
                 "residual %.2e > newton.residual_tolerance %.2e with a round-off correction (|du|_inf %.1e m <= "
                 "1e-9 L) and the same contact set, so another iteration repeats this one; the residual left is "
                 "the dual QP's equilibrium error (its feasibility %.1e at qp.rtol %.0e): a smaller qp.rtol or a "
                 "larger residual_tolerance",
-                it.residual_norm, _convergence.residual_tolerance, du_max, solution.feasibility_error, _settings.dual.rtol);
-  return IterationOutcome::step_at_floor(floor);
+                it.residual_norm, _convergence.residual_tolerance, du_max, feasibility_error, _settings.dual.rtol);
+  return floor;
 }
 
 void FetiContactSolve::end_load_step(const LoadStep& record)

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -177,209 +178,278 @@ MprgpExpansion expansion_from_name(const std::string& name)
   return name == "std" ? MprgpExpansion::standard : MprgpExpansion::projected_cg;
 }
 
+/// The iterate of one solve and its work vectors (ALGORITHMS.md section 5): x >= l, the
+/// gradient g = Ax - b, the direction p and q = A p, and the report counting the steps.
+struct Mprgp::SolveState
+{
+  SolveState(const la::VectorSpace& space, const Vector& b, const Vector& lower, Vector& x)
+      : space(space), b(b), lower(lower), x(x)
+  {
+  }
+
+  const la::VectorSpace& space;
+  const Vector& b;
+  const Vector& lower;
+  Vector& x;
+  Vector g, p, q, phi, beta, y, z, x_old, g_old;
+  QpReport report;
+  RitzEstimate ritz;
+  MprgpStep step = MprgpStep::start;
+};
+
+namespace
+{
+/// How a solve ends: the test that was met, or what stopped it.
+struct MprgpStop
+{
+  bool converged;
+  std::string reason;
+};
+
+/// Why the solve stops at the iterate x with ||g_P|| = gp_norm; no value while it goes on.
+std::optional<MprgpStop> stopping_test(const MprgpOptions& options, const QpReport& report, const Vector& x,
+                                       const Vector& g, double gp_norm, double tolerance, double b_norm)
+{
+  const bool custom_stop = static_cast<bool>(options.stop);
+  // Stopping tests, in this order: a NaN must not pass as converged.
+  if (!std::isfinite(gp_norm))
+    return MprgpStop{false, "projected gradient norm is not finite (" + format_number(gp_norm) +
+                                ") at iteration " + std::to_string(report.iterations)};
+  if (custom_stop && options.stop(x, g, gp_norm))
+    return MprgpStop{true, "caller's stopping test met, |g_P| = " + format_number(gp_norm)};
+  if (!custom_stop && gp_norm <= tolerance)
+    return MprgpStop{true, "|g_P| = " + format_number(gp_norm) + " <= " +
+                               (b_norm > 0.0 ? "rtol |b| = " : "rtol (b = 0) = ") +
+                               format_number(tolerance)};
+  if (gp_norm == 0.0)
+    return MprgpStop{true, "projected gradient is exactly zero (KKT conditions hold)"};
+  if (report.iterations >= options.max_iterations)
+    return MprgpStop{false, "maximum number of iterations (" + std::to_string(options.max_iterations) +
+                                ") reached, |g_P| = " + format_number(gp_norm)};
+  return std::nullopt;
+}
+} // namespace
+
 QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
 {
   const auto start_time = std::chrono::steady_clock::now();
   check_input(_A, b, lower, x);
-  QpReport report;
-  RitzEstimate ritz;
-  auto finish = [&](bool converged, std::string reason) {
-    report.ritz = ritz.longest_run();
-    report.converged = converged;
-    report.reason = std::move(reason);
-    report.seconds = seconds_since(start_time);
-    return report;
-  };
   std::unique_ptr<la::SerialSpace> serial;
   const la::VectorSpace& space =
       _A.space() ? *_A.space() : *(serial = std::make_unique<la::SerialSpace>(_A.size()));
+  SolveState s(space, b, lower, x);
+  auto finish = [&](bool converged, std::string reason) {
+    s.report.ritz = s.ritz.longest_run();
+    s.report.converged = converged;
+    s.report.reason = std::move(reason);
+    s.report.seconds = seconds_since(start_time);
+    return s.report;
+  };
   if (space.max(static_cast<double>(_A.size())) == 0.0)
     return finish(true, "empty problem");
 
   if (_alpha_bar == 0.0)
-  {
-    const NormEstimate norm = estimate_norm(_A, _options.power_iterations, 1e-3, 1);
-    report.hessian_multiplications += norm.applications;
-    if (!std::isfinite(norm.value))
-      return finish(false, "power iteration for ||A|| gave a non-finite Rayleigh quotient "
-                           "v'Av = " + format_number(norm.value));
-    if (!(norm.value > 0.0))
-      return finish(false, "operator is not positive definite: power iteration Rayleigh "
-                           "quotient v'Av = " + format_number(norm.value) + " <= 0");
-    _alpha_bar = 1.8 / norm.value;
-  }
+    if (std::optional<std::string> failure = estimate_alpha_bar(s.report))
+      return finish(false, std::move(*failure));
 
   x = x.cwiseMax(lower);
-  Vector g;
-  _A.apply(x, g);
-  g -= b;
-  ++report.hessian_multiplications;
+  refresh_gradient(s);
 
   const double b_norm = la::norm(space, b);
   const double tolerance = _options.rtol * (b_norm > 0.0 ? b_norm : 1.0);
-  const bool custom_stop = static_cast<bool>(_options.stop);
-  Vector p, q, phi, beta, y, z, x_old, g_old;
-  // Search direction in the current face: the free gradient, preconditioned in the face.
-  auto direction = [&](const Vector& xx, const Vector& gg, Vector& out)
-  {
-    free_gradient(xx, gg, lower, out);
-    if (!_options.preconditioner)
-      return;
-    _options.preconditioner->apply(out, z);
-    for (Index i = 0; i < z.size(); ++i)
-      if (!(xx[i] > lower[i]))
-        z[i] = 0.0;
-    out.swap(z);
-  };
-  direction(x, g, p);
-  MprgpStep step = MprgpStep::start;
+  direction(s, s.p);
 
   for (;;)
   {
-    const GradientSplit split = split_gradient(space, x, g, b, lower, _alpha_bar);
+    const GradientSplit split = split_gradient(space, x, s.g, b, lower, _alpha_bar);
     const double cost = split.cost;
     const double gp_norm = std::sqrt(split.free_norm2 + split.chopped_norm2);
-    report.projected_gradient_norm = gp_norm;
-    report.cost = cost;
-    const MprgpIterate iterate{report.iterations, step, gp_norm, std::sqrt(split.free_norm2),
+    s.report.projected_gradient_norm = gp_norm;
+    s.report.cost = cost;
+    const MprgpIterate iterate{s.report.iterations, s.step, gp_norm, std::sqrt(split.free_norm2),
                                std::sqrt(split.chopped_norm2), cost};
     if (_options.monitor)
       _options.monitor(iterate);
     if (log::enabled(log::Level::iterations))
-      log_iterate(iterate, tolerance, custom_stop);
+      log_iterate(iterate, tolerance, static_cast<bool>(_options.stop));
 
-    // Stopping tests, in this order: a NaN must not pass as converged.
-    if (!std::isfinite(gp_norm))
-      return finish(false, "projected gradient norm is not finite (" + format_number(gp_norm) +
-                               ") at iteration " + std::to_string(report.iterations));
-    if (custom_stop && _options.stop(x, g, gp_norm))
-      return finish(true, "caller's stopping test met, |g_P| = " + format_number(gp_norm));
-    if (!custom_stop && gp_norm <= tolerance)
-      return finish(true, "|g_P| = " + format_number(gp_norm) + " <= " +
-                              (b_norm > 0.0 ? "rtol |b| = " : "rtol (b = 0) = ") +
-                              format_number(tolerance));
-    if (gp_norm == 0.0)
-      return finish(true, "projected gradient is exactly zero (KKT conditions hold)");
-    if (report.iterations >= _options.max_iterations)
-      return finish(false, "maximum number of iterations (" +
-                               std::to_string(_options.max_iterations) + ") reached, |g_P| = " +
-                               format_number(gp_norm));
+    if (std::optional<MprgpStop> stop = stopping_test(_options, s.report, x, s.g, gp_norm, tolerance, b_norm))
+      return finish(stop->converged, std::move(stop->reason));
 
     const double gamma2 = _options.gamma * _options.gamma;
-    if (split.chopped_norm2 <= gamma2 * split.reduced_free_dot_free)
-    {
-      // Proportional x: CG direction p in the current face.
-      _A.apply(p, q);
-      ++report.hessian_multiplications;
-      const auto [pq, gp] = la::reduce_sum<2>(space, [&](Index i, double* sum)
-                                              { sum[0] += p[i] * q[i]; sum[1] += g[i] * p[i]; });
-      if (!(pq > 0.0))
-        return finish(false, "operator is not positive definite on the search direction: "
-                             "p'Ap = " + format_number(pq) + " <= 0 at iteration " +
-                                 std::to_string(report.iterations));
-      const double alpha_cg = gp / pq;
-      Index blocking = -1;
-      const double alpha_f = feasible_step(space, x, p, lower, blocking);
-      // A NaN alpha_cg takes the CG branch and is caught by the finiteness test.
-      if (!(alpha_cg > alpha_f))
-      {
-        // CG step. alpha_cg <= alpha_f keeps x feasible up to round-off, which the clamp
-        // removes so that x >= l holds exactly.
-        x -= alpha_cg * p;
-        x = x.cwiseMax(lower);
-        g -= alpha_cg * q;
-        direction(x, g, phi);
-        const double beta = la::dot(space, phi, q) / pq;
-        p = phi - beta * p;
-        ritz.cg_step(alpha_cg, -beta); // the standard PCG coefficient is -beta
-        ++report.cg_steps;
-        step = MprgpStep::cg;
-      }
-      else
-      {
-        const auto standard_expansion = [&]
-        {
-          // Feasible half step to the blocking bound, then the projected gradient step
-          // y = P(x - alpha_bar phi) = x - alpha_bar phi~ (the identity of ALGORITHMS.md
-          // section 5); the projection puts active components exactly on l. One pass over
-          // the vectors instead of six (bench: on a cheap operator MPRGP is bound by its own
-          // vector traffic), with the same arithmetic per component:
-          //   x_h = max(x - alpha_f p, l) (x_h = l at the blocking component),
-          //   g_h = g - alpha_f q,  phi = free part of g_h,  y = max(x_h - alpha_bar phi, l),
-          // and the step y - x_h for the gradient update g = g_h + A (y - x_h).
-          y.resize(x.size());
-          for (Index i = 0; i < x.size(); ++i)
-          {
-            const double x_half = i == blocking ? lower[i] : std::max(x[i] - alpha_f * p[i], lower[i]);
-            const double g_half = g[i] - alpha_f * q[i];
-            const double phi_i = x_half > lower[i] ? g_half : 0.0;
-            const double y_i = std::max(x_half - _alpha_bar * phi_i, lower[i]);
-            y[i] = y_i - x_half;
-            x[i] = y_i;
-            g[i] = g_half;
-          }
-          _A.apply(y, q);
-          ++report.hessian_multiplications;
-          g += q;
-          // f is monotone only for alpha_bar <= 2/||A||, and the power estimate of ||A|| is
-          // from below; the margin ignores round-off of the cost evaluation.
-          if (cost_of(space, x, g, b) > cost + 1e-12 * std::abs(cost))
-            _alpha_bar *= 0.5;
-        };
-        bool done = false;
-        if (_options.expansion == MprgpExpansion::projected_cg)
-        {
-          // P(x - alpha_cg p) with the gradient recomputed (the projection moves x off p).
-          x_old = x;
-          x = (x - alpha_cg * p).cwiseMax(lower);
-          g_old.swap(g);
-          _A.apply(x, g);
-          g -= b;
-          ++report.hessian_multiplications;
-          done = cost_of(space, x, g, b) <= cost + 1e-12 * std::abs(cost);
-          if (!done) // back to x and the standard step from there (q = A p still holds)
-          {
-            x.swap(x_old);
-            g.swap(g_old);
-            ++report.expansion_fallbacks;
-          }
-        }
-        if (!done)
-          standard_expansion();
-        direction(x, g, p);
-        ritz.end_run();
-        ++report.expansion_steps;
-        step = MprgpStep::expansion;
-      }
-    }
-    else
-    {
-      // Proportioning step along beta: releases active components with negative gradient.
-      chopped_gradient(x, g, lower, beta);
-      _A.apply(beta, q);
-      ++report.hessian_multiplications;
-      const auto [beta_q, g_beta] = la::reduce_sum<2>(
-          space, [&](Index i, double* sum) { sum[0] += beta[i] * q[i]; sum[1] += g[i] * beta[i]; });
-      if (!(beta_q > 0.0))
-        return finish(false, "operator is not positive definite on the search direction: "
-                             "beta'A beta = " + format_number(beta_q) + " <= 0 at iteration " +
-                                 std::to_string(report.iterations));
-      const double alpha = g_beta / beta_q;
-      x -= alpha * beta;
-      g -= alpha * q;
-      direction(x, g, p);
-      ritz.end_run();
-      ++report.proportioning_steps;
-      step = MprgpStep::proportioning;
-    }
-    ++report.iterations;
+    const std::optional<std::string> failure = split.chopped_norm2 <= gamma2 * split.reduced_free_dot_free
+                                                   ? cg_or_expansion_step(s, cost)
+                                                   : proportioning_step(s);
+    if (failure)
+      return finish(false, *failure);
+    ++s.report.iterations;
 
-    if (report.iterations % _options.gradient_refresh == 0)
-    {
-      _A.apply(x, g);
-      g -= b;
-      ++report.hessian_multiplications;
-    }
+    if (s.report.iterations % _options.gradient_refresh == 0)
+      refresh_gradient(s);
   }
+}
+
+std::optional<std::string> Mprgp::estimate_alpha_bar(QpReport& report)
+{
+  const NormEstimate norm = estimate_norm(_A, _options.power_iterations, 1e-3, 1);
+  report.hessian_multiplications += norm.applications;
+  if (!std::isfinite(norm.value))
+    return "power iteration for ||A|| gave a non-finite Rayleigh quotient "
+           "v'Av = " + format_number(norm.value);
+  if (!(norm.value > 0.0))
+    return "operator is not positive definite: power iteration Rayleigh "
+           "quotient v'Av = " + format_number(norm.value) + " <= 0";
+  _alpha_bar = 1.8 / norm.value;
+  return std::nullopt;
+}
+
+void Mprgp::refresh_gradient(SolveState& s) const
+{
+  _A.apply(s.x, s.g);
+  s.g -= s.b;
+  ++s.report.hessian_multiplications;
+}
+
+void Mprgp::direction(SolveState& s, Vector& out) const
+{
+  // Search direction in the current face: the free gradient, preconditioned in the face.
+  free_gradient(s.x, s.g, s.lower, out);
+  if (!_options.preconditioner)
+    return;
+  _options.preconditioner->apply(out, s.z);
+  for (Index i = 0; i < s.z.size(); ++i)
+    if (!(s.x[i] > s.lower[i]))
+      s.z[i] = 0.0;
+  out.swap(s.z);
+}
+
+std::optional<std::string> Mprgp::cg_or_expansion_step(SolveState& s, double cost)
+{
+  // Proportional x: CG direction p in the current face.
+  _A.apply(s.p, s.q);
+  ++s.report.hessian_multiplications;
+  const Vector& p = s.p;
+  const Vector& q = s.q;
+  const Vector& g = s.g;
+  const auto [pq, gp] = la::reduce_sum<2>(s.space, [&](Index i, double* sum)
+                                          { sum[0] += p[i] * q[i]; sum[1] += g[i] * p[i]; });
+  if (!(pq > 0.0))
+    return "operator is not positive definite on the search direction: "
+           "p'Ap = " + format_number(pq) + " <= 0 at iteration " +
+           std::to_string(s.report.iterations);
+  const double alpha_cg = gp / pq;
+  Index blocking = -1;
+  const double alpha_f = feasible_step(s.space, s.x, s.p, s.lower, blocking);
+  // A NaN alpha_cg takes the CG branch and is caught by the finiteness test.
+  if (!(alpha_cg > alpha_f))
+    cg_step(s, alpha_cg, pq);
+  else
+    expansion_step(s, alpha_cg, alpha_f, blocking, cost);
+  return std::nullopt;
+}
+
+void Mprgp::cg_step(SolveState& s, double alpha_cg, double pq) const
+{
+  // CG step. alpha_cg <= alpha_f keeps x feasible up to round-off, which the clamp
+  // removes so that x >= l holds exactly.
+  s.x -= alpha_cg * s.p;
+  s.x = s.x.cwiseMax(s.lower);
+  s.g -= alpha_cg * s.q;
+  direction(s, s.phi);
+  const double beta = la::dot(s.space, s.phi, s.q) / pq;
+  s.p = s.phi - beta * s.p;
+  s.ritz.cg_step(alpha_cg, -beta); // the standard PCG coefficient is -beta
+  ++s.report.cg_steps;
+  s.step = MprgpStep::cg;
+}
+
+void Mprgp::expansion_step(SolveState& s, double alpha_cg, double alpha_f, Index blocking, double cost)
+{
+  bool done = false;
+  if (_options.expansion == MprgpExpansion::projected_cg)
+    done = projected_cg_expansion(s, alpha_cg, cost);
+  if (!done)
+    standard_expansion(s, alpha_f, blocking, cost);
+  direction(s, s.p);
+  s.ritz.end_run();
+  ++s.report.expansion_steps;
+  s.step = MprgpStep::expansion;
+}
+
+bool Mprgp::projected_cg_expansion(SolveState& s, double alpha_cg, double cost) const
+{
+  // P(x - alpha_cg p) with the gradient recomputed (the projection moves x off p).
+  s.x_old = s.x;
+  s.x = (s.x - alpha_cg * s.p).cwiseMax(s.lower);
+  s.g_old.swap(s.g);
+  _A.apply(s.x, s.g);
+  s.g -= s.b;
+  ++s.report.hessian_multiplications;
+  const bool done = cost_of(s.space, s.x, s.g, s.b) <= cost + 1e-12 * std::abs(cost);
+  if (!done) // back to x and the standard step from there (q = A p still holds)
+  {
+    s.x.swap(s.x_old);
+    s.g.swap(s.g_old);
+    ++s.report.expansion_fallbacks;
+  }
+  return done;
+}
+
+void Mprgp::standard_expansion(SolveState& s, double alpha_f, Index blocking, double cost)
+{
+  // Feasible half step to the blocking bound, then the projected gradient step
+  // y = P(x - alpha_bar phi) = x - alpha_bar phi~ (the identity of ALGORITHMS.md
+  // section 5); the projection puts active components exactly on l. One pass over
+  // the vectors instead of six (bench: on a cheap operator MPRGP is bound by its own
+  // vector traffic), with the same arithmetic per component:
+  //   x_h = max(x - alpha_f p, l) (x_h = l at the blocking component),
+  //   g_h = g - alpha_f q,  phi = free part of g_h,  y = max(x_h - alpha_bar phi, l),
+  // and the step y - x_h for the gradient update g = g_h + A (y - x_h).
+  Vector& x = s.x;
+  Vector& g = s.g;
+  const Vector& lower = s.lower;
+  s.y.resize(x.size());
+  for (Index i = 0; i < x.size(); ++i)
+  {
+    const double x_half = i == blocking ? lower[i] : std::max(x[i] - alpha_f * s.p[i], lower[i]);
+    const double g_half = g[i] - alpha_f * s.q[i];
+    const double phi_i = x_half > lower[i] ? g_half : 0.0;
+    const double y_i = std::max(x_half - _alpha_bar * phi_i, lower[i]);
+    s.y[i] = y_i - x_half;
+    x[i] = y_i;
+    g[i] = g_half;
+  }
+  _A.apply(s.y, s.q);
+  ++s.report.hessian_multiplications;
+  g += s.q;
+  // f is monotone only for alpha_bar <= 2/||A||, and the power estimate of ||A|| is
+  // from below; the margin ignores round-off of the cost evaluation.
+  if (cost_of(s.space, x, g, s.b) > cost + 1e-12 * std::abs(cost))
+    _alpha_bar *= 0.5;
+}
+
+std::optional<std::string> Mprgp::proportioning_step(SolveState& s) const
+{
+  // Proportioning step along beta: releases active components with negative gradient.
+  chopped_gradient(s.x, s.g, s.lower, s.beta);
+  _A.apply(s.beta, s.q);
+  ++s.report.hessian_multiplications;
+  const Vector& beta = s.beta;
+  const Vector& q = s.q;
+  const Vector& g = s.g;
+  const auto [beta_q, g_beta] = la::reduce_sum<2>(
+      s.space, [&](Index i, double* sum) { sum[0] += beta[i] * q[i]; sum[1] += g[i] * beta[i]; });
+  if (!(beta_q > 0.0))
+    return "operator is not positive definite on the search direction: "
+           "beta'A beta = " + format_number(beta_q) + " <= 0 at iteration " +
+           std::to_string(s.report.iterations);
+  const double alpha = g_beta / beta_q;
+  s.x -= alpha * s.beta;
+  s.g -= alpha * s.q;
+  direction(s, s.p);
+  s.ritz.end_run();
+  ++s.report.proportioning_steps;
+  s.step = MprgpStep::proportioning;
+  return std::nullopt;
 }
 } // namespace feticon::qp

@@ -36,6 +36,7 @@
 #include "qp/qp_report.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace feticon::qp
@@ -146,6 +147,33 @@ public:
   double alpha_bar() const { return _alpha_bar; }
 
 private:
+  /// x, g = Ax - b, the direction p and the work vectors of one solve (mprgp.cpp).
+  struct SolveState;
+
+  /// alpha_bar = 1.8/||A|| from power iterations (counted in `report`); a reason if the
+  /// estimate is not finite or not positive.
+  std::optional<std::string> estimate_alpha_bar(QpReport& report);
+  /// g = Ax - b recomputed: the initial gradient, and every gradient_refresh steps against the
+  /// drift of the recursive update.
+  void refresh_gradient(SolveState& s) const;
+  /// The CG and restart direction: phi, preconditioned in the face when a preconditioner is set.
+  void direction(SolveState& s, la::Vector& out) const;
+  /// At a proportional x: the CG step along p, or the expansion step where the CG step would
+  /// leave the feasible set; a reason if p'Ap <= 0.
+  std::optional<std::string> cg_or_expansion_step(SolveState& s, double cost);
+  /// x and g moved by alpha_cg along p (within the feasible set), and the next conjugate p.
+  void cg_step(SolveState& s, double alpha_cg, double pq) const;
+  /// The expansion of the active set by the chosen MprgpExpansion, then p restarted.
+  void expansion_step(SolveState& s, double alpha_cg, double alpha_f, la::Index blocking, double cost);
+  /// MprgpExpansion::projected_cg: x = P(x - alpha_cg p); false, x and g restored, if f grew.
+  bool projected_cg_expansion(SolveState& s, double alpha_cg, double cost) const;
+  /// MprgpExpansion::standard: the feasible half step, then the projected gradient step of
+  /// length alpha_bar, which is halved if f grew.
+  void standard_expansion(SolveState& s, double alpha_f, la::Index blocking, double cost);
+  /// At a non-proportional x: the step along the chopped gradient beta; a reason if
+  /// beta'A beta <= 0.
+  std::optional<std::string> proportioning_step(SolveState& s) const;
+
   const la::LinearOperator& _A;
   MprgpOptions _options;
   double _alpha_bar;

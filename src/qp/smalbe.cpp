@@ -41,6 +41,11 @@ private:
   const la::LinearOperator& _B;
   const EqualityOperator& _C;
 };
+
+/// ||A + rho' C'C|| <= ||A + rho C'C|| + (rho' - rho) since ||C'C|| = 1: the step length
+/// bound for a raised rho from the one for the current (its norm estimate 1.8/alpha_bar
+/// grows by the difference).
+double raised_alpha_bar(double alpha_bar, double delta) { return alpha_bar / (1.0 + alpha_bar * delta / 1.8); }
 } // namespace
 
 Smalbe::Smalbe(const la::LinearOperator& A, const EqualityOperator& C, SmalbeOptions options,
@@ -56,71 +61,42 @@ Smalbe::Smalbe(const la::LinearOperator& A, const EqualityOperator& C, SmalbeOpt
                 "feasibility_window >= 1");
 }
 
-SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vector& x,
-                           const SmalbeStart* start)
+/// The outer loop's state (ALGORITHMS.md section 1): the multiplier omega, M and rho with the
+/// augmented Hessian H and the inner MPRGP for it, and the reference of the stall test.
+struct Smalbe::SolveState
 {
-  const auto solve_start = std::chrono::steady_clock::now();
-  std::unique_ptr<la::SerialSpace> serial;
-  const la::VectorSpace& space = _A.space() ? *_A.space() : *(serial = std::make_unique<la::SerialSpace>(b.size()));
-  // ||C x|| is a norm of a replicated coarse vector (no reduction); ||b|| and x'Hx are
-  // reduced over the space.
-  const double b_raw_norm = la::norm(space, b);
-  const double b_norm = b_raw_norm > 0 ? b_raw_norm : 1.0;
-  const double tolerance = _options.rtol * b_norm;
-  const double eta = _options.eta_factor * b_norm;
-  la::Vector omega = _C.apply(la::Vector::Zero(b.size()));
-  omega.setZero();
-  double M = _options.M0;
-  double rho = _options.rho;
-  const double rho_max = _options.rho * _options.rho_limit;
-  if (start)
-  {
-    FETICON_CHECK(start->omega.size() == omega.size() && start->M > 0 && start->rho >= _options.rho,
-                  "SMALBE-M start: need omega of the size of Cx, M > 0, rho >= the initial rho");
-    omega = start->omega;
-    M = start->M;
-    rho = std::min(start->rho, rho_max);
-  }
+  SolveState(const la::LinearOperator& A, const EqualityOperator& C) : H(A, C, 0.0) {} // H.factor: make_inner_solver
+
+  double b_norm = 0;
+  double tolerance = 0;
+  double eta = 0;
+  la::Vector omega;
+  double M = 0;
+  double rho = 0;
+  double rho_max = 0;
   double previous_L = 0;
   // Stall test of the feasibility: reference value and the outer iteration it was taken at.
   double reference_feasibility = std::numeric_limits<double>::infinity();
   int reference_iteration = 0;
   SmalbeReport report;
   bool final_test = false;
-
-  auto feasible = [&](const la::Vector& Cx)
-  {
-    return Cx.norm() <= tolerance &&
-           (!_options.equality_error || _options.equality_error(Cx) <= _options.equality_tolerance);
-  };
-  MprgpOptions inner = _options.mprgp;
-  inner.stop = [&](const la::Vector& xk, const la::Vector&, double gp)
-  {
-    const la::Vector Cx = _C.apply(xk);
-    const double cx = Cx.norm();
-    final_test = gp <= tolerance && feasible(Cx);
-    return final_test || gp <= std::min(M * cx, eta);
-  };
-  PlusCoarseTerm H(_A, _C, rho);
+  MprgpOptions inner;
+  PlusCoarseTerm H;
   std::optional<PlusCoarseTerm> preconditioner;
-  if (_preconditioner)
-  {
-    // With the initial rho, also after rho is raised: the exact inverse on Im C' for the
-    // current rho (C'C / rho) was measured to cost more steps than keeping C'C / rho_0
-    // (sphere on block, large displacements, rho raised to 10: 420 against 342 MPRGP steps;
-    // cantilever_obstacle, rho raised to ~3 000: 472 against 443).
-    preconditioner.emplace(*_preconditioner, _C, 1.0 / _options.rho);
-    inner.preconditioner = &*preconditioner;
-  }
-  auto last_progress = std::chrono::steady_clock::now();
-  // ||A + rho' C'C|| <= ||A + rho C'C|| + (rho' - rho) since ||C'C|| = 1: the step length
-  // bound for a raised rho from the one for the current (its norm estimate 1.8/alpha_bar
-  // grows by the difference).
-  auto raised_alpha_bar = [](double alpha_bar, double delta)
-  { return alpha_bar / (1.0 + alpha_bar * delta / 1.8); };
-  if (rho > _options.rho && inner.alpha_bar > 0)
-    inner.alpha_bar = raised_alpha_bar(inner.alpha_bar, rho - _options.rho);
-  auto mprgp = std::make_unique<Mprgp>(H, inner);
+  std::unique_ptr<Mprgp> mprgp;
+  std::chrono::steady_clock::time_point last_progress;
+};
+
+SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vector& x,
+                           const SmalbeStart* start)
+{
+  const auto solve_start = std::chrono::steady_clock::now();
+  std::unique_ptr<la::SerialSpace> serial;
+  const la::VectorSpace& space = _A.space() ? *_A.space() : *(serial = std::make_unique<la::SerialSpace>(b.size()));
+  SolveState s(_A, _C);
+  set_initial_state(s, space, b, start);
+  make_inner_solver(s);
+  SmalbeReport& report = s.report;
   for (int k = 0; k < _options.max_outer_iterations; ++k)
   {
     const int remaining = _options.max_inner_iterations - report.iterations;
@@ -129,97 +105,168 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
       report.reason = "SMALBE-M: inner iteration limit reached";
       break;
     }
-    final_test = false;
-    const QpReport r = mprgp->solve(b - _C.apply_transpose(omega), lower, x);
+    s.final_test = false;
+    const QpReport r = s.mprgp->solve(b - _C.apply_transpose(s.omega), lower, x);
     report += r; // counters; the seconds are the whole solve's, set at the end
     report.projected_gradient_norm = r.projected_gradient_norm;
     report.outer_iterations = k + 1;
     const la::Vector Cx = _C.apply(x);
     const double feasibility = Cx.norm();
-    report.equality_residual = feasibility / b_norm;
+    report.equality_residual = feasibility / s.b_norm;
     if (!r.converged)
     {
       report.reason = "SMALBE-M inner MPRGP: " + r.reason;
       break;
     }
-    std::ostringstream line;
-    line << "    SMALBE-M outer " << k + 1 << ": MPRGP steps " << r.iterations << ", ||g_P||/||b|| "
-         << r.projected_gradient_norm / b_norm << ", ||Cx||/||b|| " << report.equality_residual
-         << ", M " << M << ", rho " << rho;
-    // Long solves (a minute per QP at 1M DOFs) also report at the summary level, at most
-    // every 10 s, so that a user sees progress between the outer-iteration lines.
-    if (log::enabled(log::Level::iterations))
-      log::iteration(line.str());
-    else if (seconds_since(last_progress) >= 10)
-    {
-      log::info(line.str() + " (total MPRGP steps " + std::to_string(report.iterations) + ")");
-      last_progress = std::chrono::steady_clock::now();
-    }
+    log_outer_iteration(s, k, r);
     // r.cost is L(x, omega) = 1/2 x'(A + rho C'C)x - b'x + omega'Cx for the multiplier and
     // penalty of this solve.
     const double L = r.cost;
     if (_options.monitor)
-      _options.monitor({k, &x, &omega, M, rho, L});
-    if (r.projected_gradient_norm <= tolerance && feasible(Cx))
+      _options.monitor({k, &x, &s.omega, s.M, s.rho, L});
+    if (r.projected_gradient_norm <= s.tolerance && feasible(s, Cx))
     {
       report.converged = true;
       report.reason = _options.equality_error ? "||g_P||, ||Cx|| <= rtol ||b|| and the equality error <= its tolerance"
                                               : "||g_P|| and ||Cx|| <= rtol ||b||";
       break;
     }
-    omega += rho * Cx;
-    if (k > 0 && L < previous_L + 0.5 * rho * Cx.squaredNorm())
-      M /= _options.beta;
-    previous_L = L;
-
-    // Feasibility stall: raise rho (Dostal's SMALBE update; Bertsekas' penalty rule with a
-    // window, since inexact inner solves make single outer steps noisy).
-    if (feasibility <= _options.feasibility_reduction * reference_feasibility)
-    {
-      reference_feasibility = feasibility;
-      reference_iteration = k;
-    }
-    else if (k - reference_iteration >= _options.feasibility_window && rho < rho_max &&
-             _options.rho_growth > 1)
-    {
-      // Observed contraction per outer iteration q ~ 1 - rho s/(h + rho s) (see smalbe.hpp);
-      // rho q/(1 - q) would make it 1/2. Grow by at least rho_growth, at most rho_growth^3.
-      const double q = std::pow(feasibility / reference_feasibility,
-                                1.0 / (k - reference_iteration));
-      const double wanted = q < 1 ? q / (1 - q) : std::numeric_limits<double>::infinity();
-      const double growth = std::clamp(wanted, _options.rho_growth,
-                                       std::pow(_options.rho_growth, 3));
-      const double new_rho = std::min(rho * growth, rho_max);
-      // From the alpha_bar in use (smaller if MPRGP has halved it); MPRGP still halves
-      // alpha_bar whenever an expansion step increases the cost.
-      MprgpOptions raised = inner;
-      raised.alpha_bar = raised_alpha_bar(mprgp->alpha_bar(), new_rho - rho);
-      log::iteration("    SMALBE-M: ||Cx|| stalled at " + std::to_string(feasibility / b_norm) +
-                     " ||b|| for " + std::to_string(k - reference_iteration) +
-                     " outer iterations: rho " + std::to_string(rho) + " -> " +
-                     std::to_string(new_rho));
-      rho = new_rho;
-      H.factor = rho;
-      mprgp = std::make_unique<Mprgp>(H, raised);
-      ++report.rho_updates;
-      reference_feasibility = feasibility;
-      reference_iteration = k;
-    }
+    s.omega += s.rho * Cx;
+    if (k > 0 && L < s.previous_L + 0.5 * s.rho * Cx.squaredNorm())
+      s.M /= _options.beta;
+    s.previous_L = L;
+    raise_rho_if_stalled(s, k, feasibility);
   }
   if (!report.converged && report.reason.empty())
     report.reason = "SMALBE-M: outer iteration limit reached";
-  la::Vector Hx;
-  H.factor = _options.rho; // the cost is reported for the initial augmentation, as before a raise
-  H.apply(x, Hx);
-  report.hessian_multiplications += 1;
-  const auto [xHx, bx] = la::reduce_sum<2>(space, [&](la::Index i, double* sum)
-                                          { sum[0] += x[i] * Hx[i]; sum[1] += b[i] * x[i]; });
-  report.cost = 0.5 * xHx - bx;
-  report.final_M = M;
-  report.final_rho = rho;
-  report.omega = omega;
+  report.cost = cost_at_initial_rho(s, space, b, x);
+  report.final_M = s.M;
+  report.final_rho = s.rho;
+  report.omega = s.omega;
   report.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();
   return report;
+}
+
+void Smalbe::set_initial_state(SolveState& s, const la::VectorSpace& space, const la::Vector& b,
+                               const SmalbeStart* start) const
+{
+  // ||C x|| is a norm of a replicated coarse vector (no reduction); ||b|| and x'Hx are
+  // reduced over the space.
+  const double b_raw_norm = la::norm(space, b);
+  s.b_norm = b_raw_norm > 0 ? b_raw_norm : 1.0;
+  s.tolerance = _options.rtol * s.b_norm;
+  s.eta = _options.eta_factor * s.b_norm;
+  s.omega = _C.apply(la::Vector::Zero(b.size()));
+  s.omega.setZero();
+  s.M = _options.M0;
+  s.rho = _options.rho;
+  s.rho_max = _options.rho * _options.rho_limit;
+  if (start)
+  {
+    FETICON_CHECK(start->omega.size() == s.omega.size() && start->M > 0 && start->rho >= _options.rho,
+                  "SMALBE-M start: need omega of the size of Cx, M > 0, rho >= the initial rho");
+    s.omega = start->omega;
+    s.M = start->M;
+    s.rho = std::min(start->rho, s.rho_max);
+  }
+}
+
+bool Smalbe::feasible(const SolveState& s, const la::Vector& Cx) const
+{
+  return Cx.norm() <= s.tolerance &&
+         (!_options.equality_error || _options.equality_error(Cx) <= _options.equality_tolerance);
+}
+
+void Smalbe::make_inner_solver(SolveState& s) const
+{
+  s.inner = _options.mprgp;
+  s.inner.stop = [this, &s](const la::Vector& xk, const la::Vector&, double gp)
+  {
+    const la::Vector Cx = _C.apply(xk);
+    const double cx = Cx.norm();
+    s.final_test = gp <= s.tolerance && feasible(s, Cx);
+    return s.final_test || gp <= std::min(s.M * cx, s.eta);
+  };
+  s.H.factor = s.rho;
+  if (_preconditioner)
+  {
+    // With the initial rho, also after rho is raised: the exact inverse on Im C' for the
+    // current rho (C'C / rho) was measured to cost more steps than keeping C'C / rho_0
+    // (sphere on block, large displacements, rho raised to 10: 420 against 342 MPRGP steps;
+    // cantilever_obstacle, rho raised to ~3 000: 472 against 443).
+    s.preconditioner.emplace(*_preconditioner, _C, 1.0 / _options.rho);
+    s.inner.preconditioner = &*s.preconditioner;
+  }
+  s.last_progress = std::chrono::steady_clock::now();
+  if (s.rho > _options.rho && s.inner.alpha_bar > 0)
+    s.inner.alpha_bar = raised_alpha_bar(s.inner.alpha_bar, s.rho - _options.rho);
+  s.mprgp = std::make_unique<Mprgp>(s.H, s.inner);
+}
+
+void Smalbe::log_outer_iteration(SolveState& s, int k, const QpReport& r) const
+{
+  std::ostringstream line;
+  line << "    SMALBE-M outer " << k + 1 << ": MPRGP steps " << r.iterations << ", ||g_P||/||b|| "
+       << r.projected_gradient_norm / s.b_norm << ", ||Cx||/||b|| " << s.report.equality_residual
+       << ", M " << s.M << ", rho " << s.rho;
+  // Long solves (a minute per QP at 1M DOFs) also report at the summary level, at most
+  // every 10 s, so that a user sees progress between the outer-iteration lines.
+  if (log::enabled(log::Level::iterations))
+    log::iteration(line.str());
+  else if (seconds_since(s.last_progress) >= 10)
+  {
+    log::info(line.str() + " (total MPRGP steps " + std::to_string(s.report.iterations) + ")");
+    s.last_progress = std::chrono::steady_clock::now();
+  }
+}
+
+void Smalbe::raise_rho_if_stalled(SolveState& s, int k, double feasibility) const
+{
+  // Feasibility stall: raise rho (Dostal's SMALBE update; Bertsekas' penalty rule with a
+  // window, since inexact inner solves make single outer steps noisy).
+  if (feasibility <= _options.feasibility_reduction * s.reference_feasibility)
+  {
+    s.reference_feasibility = feasibility;
+    s.reference_iteration = k;
+  }
+  else if (k - s.reference_iteration >= _options.feasibility_window && s.rho < s.rho_max &&
+           _options.rho_growth > 1)
+  {
+    // Observed contraction per outer iteration q ~ 1 - rho s/(h + rho s) (see smalbe.hpp);
+    // rho q/(1 - q) would make it 1/2. Grow by at least rho_growth, at most rho_growth^3.
+    const double q = std::pow(feasibility / s.reference_feasibility,
+                              1.0 / (k - s.reference_iteration));
+    const double wanted = q < 1 ? q / (1 - q) : std::numeric_limits<double>::infinity();
+    const double growth = std::clamp(wanted, _options.rho_growth,
+                                     std::pow(_options.rho_growth, 3));
+    const double new_rho = std::min(s.rho * growth, s.rho_max);
+    // From the alpha_bar in use (smaller if MPRGP has halved it); MPRGP still halves
+    // alpha_bar whenever an expansion step increases the cost.
+    MprgpOptions raised = s.inner;
+    raised.alpha_bar = raised_alpha_bar(s.mprgp->alpha_bar(), new_rho - s.rho);
+    log::iteration("    SMALBE-M: ||Cx|| stalled at " + std::to_string(feasibility / s.b_norm) +
+                   " ||b|| for " + std::to_string(k - s.reference_iteration) +
+                   " outer iterations: rho " + std::to_string(s.rho) + " -> " +
+                   std::to_string(new_rho));
+    s.rho = new_rho;
+    s.H.factor = s.rho;
+    s.mprgp = std::make_unique<Mprgp>(s.H, raised);
+    ++s.report.rho_updates;
+    s.reference_feasibility = feasibility;
+    s.reference_iteration = k;
+  }
+}
+
+double Smalbe::cost_at_initial_rho(SolveState& s, const la::VectorSpace& space, const la::Vector& b,
+                                   const la::Vector& x) const
+{
+  la::Vector Hx;
+  s.H.factor = _options.rho; // the cost is reported for the initial augmentation, as before a raise
+  s.H.apply(x, Hx);
+  s.report.hessian_multiplications += 1;
+  const auto [xHx, bx] = la::reduce_sum<2>(space, [&](la::Index i, double* sum)
+                                          { sum[0] += x[i] * Hx[i]; sum[1] += b[i] * x[i]; });
+  return 0.5 * xHx - bx;
 }
 } // namespace feticon::qp

@@ -121,6 +121,26 @@ public:
                      const SmalbeStart* start = nullptr);
 
 private:
+  /// omega, M, rho, H and the inner MPRGP of one solve (smalbe.cpp).
+  struct SolveState;
+
+  /// ||b||, the tolerances, and omega, M and rho from `start` or the options.
+  void set_initial_state(SolveState& s, const la::VectorSpace& space, const la::Vector& b,
+                         const SmalbeStart* start) const;
+  /// The inner MPRGP on H = A + rho C'C with the inner stop ||g_P|| <= min(M ||Cx||, eta) or
+  /// the final test, and the preconditioner for the initial rho.
+  void make_inner_solver(SolveState& s) const;
+  /// The feasibility half of the final test: ||Cx|| <= rtol ||b|| and the caller's equality error.
+  bool feasible(const SolveState& s, const la::Vector& Cx) const;
+  /// One line per outer iteration (at the summary level every 10 s when iterations are not logged).
+  void log_outer_iteration(SolveState& s, int k, const QpReport& r) const;
+  /// The rho update: rho raised, with H and MPRGP following it, when ||Cx|| stalled for
+  /// feasibility_window outer iterations.
+  void raise_rho_if_stalled(SolveState& s, int k, double feasibility) const;
+  /// 1/2 x'Hx - b'x with H at the initial rho (one more product with H).
+  double cost_at_initial_rho(SolveState& s, const la::VectorSpace& space, const la::Vector& b,
+                             const la::Vector& x) const;
+
   const la::LinearOperator& _A;
   const EqualityOperator& _C;
   SmalbeOptions _options;
