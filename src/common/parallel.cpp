@@ -19,8 +19,7 @@ namespace
 /// alternatives may point to OpenBLAS (threaded) or to the reference BLAS (no threads).
 /// One thread also stops OpenBLAS's idle server threads: it starts them when it is loaded,
 /// and each spins (sched_yield) for about 0.1 s before it sleeps, on the core our workers
-/// need (Hertz 60 across large, 10 runs alternating with and without: wall median 0.235 ->
-/// 0.21 s, system time 0.105 -> 0.02 s; the same as OPENBLAS_NUM_THREADS=1). A
+/// need (docs/measurements.md). A
 /// later call with more threads starts them again at the next BLAS call.
 void set_blas_threads(int n)
 {

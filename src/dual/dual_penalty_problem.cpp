@@ -276,8 +276,8 @@ std::string unheld_body_message(const FetiOperators& feti, const la::Vector& b, 
 {
   // If the active rows leave a body free (recover_primal refuses): a load far below the force
   // that would close the initial gaps elastically (b, in force units like lambda) is the likely
-  // cause, since the QP's tolerances, relative to ||b||, then admit lambda = 0 (measured on
-  // Hertz: from about 1e8 = 1 / qp.rtol on; issue 36).
+  // cause, since the QP's tolerances, relative to ||b||, then admit lambda = 0 (on Hertz from
+  // a ratio of about 1 / qp.rtol on: docs/benchmarks.md, magnitudes).
   std::string unheld;
   const double b_norm = active_contacts == 0 && e_norm > 0 ? la::norm(feti.space(), b) : 0.0; // a reduction only then
   if (b_norm * rtol >= e_norm && e_norm > 0)

@@ -141,18 +141,9 @@ double explicit_block_budget(const SolverSettings& settings)
 /// applies K_s+ and the K_ii solve of S_s once each, about 4 (nnz(L_s) + nnz(L_ii)) ~
 /// 8 nnz(L_s); an explicit one two dense products of 2 |b_s|^2, which run at 3 times the
 /// flop rate of the substitutions; forming the blocks (one factorization with b_s last and
-/// dense LAPACK, about 1.7 |b_s|^3 flops at 4 times that rate) 0.42 |b_s|^3, measured on the
-/// tensor Hertz mesh at 318k DOFs (|b_s| ~ 1 180: 2.2 s, 27 implicit steps) and hertz3d at
-/// 39k DOFs (|b_s| ~ 2 350: 8.3 s, 500 implicit steps). Measured with the
-/// products by BLAS dsymv: Hertz, 19k DOFs, 8 subdomains, |b_s| ~ 320: a dual product
-/// 2.5 ms implicit, 0.32 ms explicit (model: 4.6x); sphere on block, 17k DOFs, 4 subdomains,
-/// |b_s| ~ 1 560: 9.2 ms against 3.4 ms (model 2.8x; the blocks, 75 MiB, stream from memory
-/// at every step; |b_s| ~ 1 240 and 50 MiB since the supports' free components left the
-/// boundary, when auto turned explicit there: 1.25 s implicit against 0.99 s). Expected
-/// steps: 150 per load step, with small or large displacements
-/// (operator applications measured at 76593aa: sphere on block 174 in one load step and 263 in
-/// two, hertz3d r1 219 and 315, Hertz 240 across large 296; large-displacement runs took
-/// five times as many before the outer loop's rows near contact, 1dfc320).
+/// dense LAPACK, about 1.7 |b_s|^3 flops at 4 times that rate) 0.42 |b_s|^3. Expected steps:
+/// 150 per load step, with small or large displacements. The rates and the step count are
+/// fitted to measured runs (docs/measurements.md, "dual.operator = auto").
 std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, const decomposition::SubdomainSystem& system,
                                              const decomposition::SchurComplements* schur, int n_load_steps,
                                              int64_t held, const par::Communicator& comm)
@@ -320,7 +311,7 @@ private:
   double _f_int_norm = 0; ///< ||f_int|| assembled over the subdomains, with _f_int
   /// Warm start of the next QP. Without SMALBE-M's equality multiplier the next QP starts
   /// with the full gradient of the bound multipliers' coarse part and rebuilds it over ~10
-  /// outer iterations (Hertz, large displacements: 787 -> 345 MPRGP steps).
+  /// outer iterations (docs/measurements.md: it halves the MPRGP steps of large Hertz).
   dual::MultiplierMemory _multipliers;
   std::set<int32_t> _previous_active; ///< slave nodes of the active rows, last iteration
 

@@ -19,8 +19,8 @@ namespace
 /// x -> B x + factor C'C x: the augmented Hessian H = A + rho C'C (factor rho), and its
 /// preconditioner M_A + C'C / rho_0 (factor 1/rho_0: H^{-1} on Im C' exactly while rho = rho_0,
 /// since A C' ~ 0 for FETI's PFP). C'C x is a second coarse projection per product beside the
-/// one inside FETI's PFP; Smalbe stays FETI-agnostic, and the Hertz dual solve took the same
-/// time before and after SMALBE-M formed H itself (0.14-0.15 s for 463 products).
+/// one inside FETI's PFP; Smalbe stays FETI-agnostic at no measurable cost
+/// (docs/measurements.md).
 class PlusCoarseTerm : public la::LinearOperator
 {
 public:
