@@ -19,6 +19,7 @@ packages=(
   gmsh libgmsh-dev       # mesh::read_gmsh (Gmsh C++ API) and examples/*/make_mesh.*
   python3-matplotlib python3-numpy  # plots (used through /usr/bin/python3)
   time                   # /usr/bin/time: the time and memory limits of the bad-input tests
+  clang-format-14        # tests/cli/code_style.sh: the format of .clang-format
 )
 
 missing=()

@@ -54,6 +54,21 @@ void check_displacement(const mesh::HexMesh& mesh, const la::Vector& u)
                 "mortar: displacement has " << u.size() << " entries, expected 3 * n_nodes = "
                                             << n_dofs << " (or 0 for u = 0)");
 }
+
+/// What mortar integration needs of its input: u of the mesh, a positive search distance and
+/// non-empty slave and master face sets (mortar integrates whole faces, not nodes).
+void check_mortar_input(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair,
+                        double search_distance)
+{
+  check_displacement(mesh, u);
+  FETICON_CHECK(std::isfinite(search_distance) && search_distance > 0,
+                "mortar: search distance = " << search_distance << " m must be > 0");
+  FETICON_CHECK(pair.slave_nodes.empty(),
+                "mortar: the slave surface '" << pair.slave << "' is given by nodes; mortar integrates whole "
+                                              << "slave faces: use contact.formulation=node_to_segment");
+  FETICON_CHECK(!mesh.face_set(pair.slave).empty(), "mortar: slave face set '" << pair.slave << "' is empty");
+  FETICON_CHECK(!mesh.face_set(pair.master).empty(), "mortar: master face set '" << pair.master << "' is empty");
+}
 } // namespace
 
 int32_t SlaveNodalAreas::index_of(int32_t node) const
@@ -90,15 +105,9 @@ MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vect
                                        const SegmentOptions& options,
                                        const std::vector<int32_t>* row_nodes)
 {
-  check_displacement(mesh, u);
-  FETICON_CHECK(std::isfinite(search_distance) && search_distance > 0,
-                "mortar: search distance = " << search_distance << " m must be > 0");
-  FETICON_CHECK(pair.slave_nodes.empty(), "mortar: the slave surface '" << pair.slave << "' is given by nodes; mortar "
-                                         "integrates whole slave faces: use contact.formulation=node_to_segment");
+  check_mortar_input(mesh, u, pair, search_distance);
   const std::vector<mesh::Face>& slave_faces = mesh.face_set(pair.slave);
   const std::vector<mesh::Face>& master_faces = mesh.face_set(pair.master);
-  FETICON_CHECK(!slave_faces.empty(), "mortar: slave face set '" << pair.slave << "' is empty");
-  FETICON_CHECK(!master_faces.empty(), "mortar: master face set '" << pair.master << "' is empty");
 
   std::vector<QuadCoordinates> master_quads;
   master_quads.reserve(master_faces.size());

@@ -16,6 +16,8 @@ using Type = SettingSpec::Type;
 std::vector<SettingSpec> make_specs()
 {
   const double inf = 1e300;
+  // One key per entry, as the help lists them.
+  // clang-format off
   return {
       {"problem", "custom", "custom (mesh, bodies, supports, loads, contact sections of the problem file, "
                             "or an input deck)", Type::text, {"custom"}, 0, 0, false},
@@ -80,6 +82,7 @@ std::vector<SettingSpec> make_specs()
       {"output.plots", "true", "draw contact_pressure.png and iterations.png (Debian's python3-matplotlib)",
        Type::boolean, {}, 0, 0, false},
   };
+  // clang-format on
 }
 
 std::string trim(const std::string& s)

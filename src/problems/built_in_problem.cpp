@@ -27,6 +27,8 @@ const Entry registry[] = {
 std::vector<io::SettingSpec> setting_specs()
 {
   const double inf = 1e300;
+  // One key per entry, as the help lists them.
+  // clang-format off
   std::vector<io::SettingSpec> out = {
       {"problem", "hertz", "hertz (Vondrák et al.'s benchmark), hertz3d (a sphere on a half-space), "
                            "cantilever_obstacle (a cantilever bent onto a block: finite rotations) or "
@@ -36,6 +38,7 @@ std::vector<io::SettingSpec> setting_specs()
       {"material.poisson", "0.3", "Poisson's ratio nu of every body of a built-in problem, in (-1, 0.5)",
        Type::number, {}, -1, 0.5, true, true},
   };
+  // clang-format on
   for (const Entry& e : registry)
   {
     out.front().choices.emplace_back(e.name);

@@ -24,11 +24,14 @@ private:
 
 std::vector<io::SettingSpec> cantilever_obstacle_setting_specs()
 {
+  // One key per entry, as the help lists them.
+  // clang-format off
   return {
       {"cantilever.gap", "0.25", "gap between the beam (L = 1 m) and the obstacle (m)", Type::number, {}, 0, 10, true},
       {"cantilever.load", "0.8", "tip load as its linear tip deflection over L", Type::number, {}, 0, 100, true},
       {"cantilever.cells", "40", "beam cells along its length", Type::integer, {}, 10, 10000, false},
   };
+  // clang-format on
 }
 
 CantileverObstacleParameters cantilever_obstacle_parameters(const io::Settings& s)

@@ -43,6 +43,8 @@ private:
 std::vector<io::SettingSpec> hertz3d_setting_specs()
 {
   const double inf = 1e300;
+  // One key per entry, as the help lists them.
+  // clang-format off
   return {
       {"hertz3d.radius", "0.05", "sphere radius R (m)", Type::number, {}, 0, inf, true},
       {"hertz3d.load", "2e4", "force F on the whole sphere (N); the quarter model carries F/4", Type::number, {}, 0, inf, true},
@@ -59,6 +61,7 @@ std::vector<io::SettingSpec> hertz3d_setting_specs()
       {"hertz3d.block_poisson", "", "Poisson's ratio of the block, if it differs from material.poisson",
        Type::number, {}, -1, 0.5, true, true},
   };
+  // clang-format on
 }
 
 Hertz3dParameters hertz3d_parameters(const io::Settings& s)

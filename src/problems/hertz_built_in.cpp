@@ -42,6 +42,8 @@ private:
 std::vector<io::SettingSpec> hertz_setting_specs()
 {
   const double inf = 1e300;
+  // One key per entry, as the help lists them.
+  // clang-format off
   return {
       {"hertz.line_load", "4e8", "line load Q on the cylinder (N/m)", Type::number, {}, 0, inf, true},
       {"hertz.mesh", "graded", "graded (Gmsh quadrilaterals with a size field growing by growth_ratio "
@@ -61,6 +63,7 @@ std::vector<io::SettingSpec> hertz_setting_specs()
       {"hertz.block_poisson", "", "Poisson's ratio of the block, if it differs from material.poisson",
        Type::number, {}, -1, 0.5, true, true},
   };
+  // clang-format on
 }
 
 HertzParameters hertz_parameters(const io::Settings& s)

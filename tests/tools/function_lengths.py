@@ -7,7 +7,7 @@ line a function, longest first: file, function, lines. Exit status 1 if any func
 longer than --max (default 100), 0 otherwise. The parsing is lexical (comments, strings and
 preprocessor lines stripped, braces matched), enough for this code's style, not a compiler.
 
-    /usr/bin/python3 bench/function_lengths.py [--max 100] [--ignore src/io/settings.cpp]
+    /usr/bin/python3 tests/tools/function_lengths.py [--max 100] [--ignore src/io/settings.cpp]
                                                 [--all] [ROOT ...]
 """
 import argparse
