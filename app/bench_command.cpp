@@ -94,8 +94,7 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   // preconditioner the limit of an iteration is one H and one preconditioner application.
   // The ratios say what MPRGP and SMALBE-M add per iteration on top of that.
   const double per_application = sum.operator_seconds / std::max<int64_t>(sum.operator_applications, 1);
-  const double per_preconditioner =
-      sum.preconditioner_seconds / std::max<int64_t>(sum.preconditioner_applications, 1);
+  const double per_preconditioner = sum.preconditioner_seconds / std::max<int64_t>(sum.preconditioner_applications, 1);
   out["qp_seconds"] = qp_seconds;
   out["seconds_per_operator_application"] = per_application;
   out["seconds_per_preconditioner_application"] = per_preconditioner;
@@ -128,35 +127,30 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
 void register_bench_command(CLI::App& app)
 {
   auto options = std::make_shared<BenchOptions>();
-  CLI::App* cmd = app.add_subcommand("bench", "One benchmark measurement as a JSON line: a FETI contact "
-                                              "solve against the bonded direct solve, or MPRGP alone");
+  CLI::App* cmd = app.add_subcommand("bench",
+                                     "One benchmark measurement as a JSON line: a FETI contact "
+                                     "solve against the bonded direct solve, or MPRGP alone");
   cmd->add_option("problem", options->problem_file, "problem file (YAML); omit for the built-in Hertz problem");
   cmd->add_option("--set,-s", options->overrides, "override a setting, KEY=VALUE (repeatable; see run --help)");
   cmd->add_flag("!--no-direct", options->direct, "skip the bonded direct solve");
-  cmd->add_option("--mprgp-obstacle", options->obstacle_n,
-                  "instead: MPRGP on the 2D obstacle QP with N x N unknowns");
+  cmd->add_option("--mprgp-obstacle", options->obstacle_n, "instead: MPRGP on the 2D obstacle QP with N x N unknowns");
   cmd->add_option("--rtol", options->obstacle_rtol, "MPRGP tolerance of the obstacle QP")->capture_default_str();
   cmd->add_option("--max-iterations", options->obstacle_max_iterations, "MPRGP step limit of the obstacle QP")
       ->capture_default_str();
   cmd->add_option("--expansion", options->obstacle_expansion, "MPRGP expansion step of the obstacle QP: std or projcg")
       ->check(CLI::IsMember({"std", "projcg"}))
       ->capture_default_str();
-  cmd->add_option("--applications", options->applications,
-                  "timed operator applications (median) of the obstacle QP")
+  cmd->add_option("--applications", options->applications, "timed operator applications (median) of the obstacle QP")
       ->capture_default_str();
   cmd->add_flag("--verbose,-v", options->verbose, "progress lines before the JSON");
-  cmd->callback(
-      [options]
-      {
-        if (!options->verbose)
-          log::set_level(log::Level::warning);
-        const nlohmann::ordered_json out =
-            options->obstacle_n > 0
-                ? mprgp_obstacle_benchmark(options->obstacle_n, options->obstacle_rtol,
-                                           options->obstacle_max_iterations, options->applications,
-                                           options->obstacle_expansion)
-                : contact_benchmark(*options);
-        std::cout << out.dump() << '\n';
-      });
+  cmd->callback([options] {
+    if (!options->verbose)
+      log::set_level(log::Level::warning);
+    const nlohmann::ordered_json out = options->obstacle_n > 0
+        ? mprgp_obstacle_benchmark(options->obstacle_n, options->obstacle_rtol, options->obstacle_max_iterations,
+                                   options->applications, options->obstacle_expansion)
+        : contact_benchmark(*options);
+    std::cout << out.dump() << '\n';
+  });
 }
 } // namespace feticon::app

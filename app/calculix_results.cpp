@@ -48,8 +48,8 @@ CalculixResults::CalculixResults(const std::filesystem::path& out_dir, const fem
     : _problem(problem), _deck(deck), _kinematics(kinematics)
 {
   const std::string stem = deck.path.stem().string();
-  _frd = std::make_unique<io::FrdWriter>(out_dir / (stem + ".frd"), problem.mesh, deck.node_labels,
-                                         deck.element_labels);
+  _frd =
+      std::make_unique<io::FrdWriter>(out_dir / (stem + ".frd"), problem.mesh, deck.node_labels, deck.element_labels);
   if (!prints_anything(deck))
     return;
   io::DatModel model;

@@ -24,8 +24,7 @@ std::vector<T> read_block(std::istream& is, const std::filesystem::path& path)
 {
   int64_t count = -1;
   is.read(reinterpret_cast<char*>(&count), sizeof count);
-  FETICON_CHECK(is && count >= 0 && count < (int64_t(1) << 36),
-                path.string() << ": truncated or corrupt checkpoint");
+  FETICON_CHECK(is && count >= 0 && count < (int64_t(1) << 36), path.string() << ": truncated or corrupt checkpoint");
   std::vector<T> values(static_cast<size_t>(count));
   is.read(reinterpret_cast<char*>(values.data()), static_cast<std::streamsize>(count * sizeof(T)));
   FETICON_CHECK(is, path.string() << ": truncated checkpoint");
@@ -36,18 +35,38 @@ nlohmann::json records(const nonlinear::ContactSolution& s)
 {
   nlohmann::json steps = nlohmann::json::array(), history = nlohmann::json::array();
   for (const auto& st : s.steps)
-    steps.push_back({st.load_factor, st.outer_iterations, st.converged, st.displacement_change,
-                     st.residual_norm, st.inner_iterations, st.floor});
+    steps.push_back({st.load_factor, st.outer_iterations, st.converged, st.displacement_change, st.residual_norm,
+                     st.inner_iterations, st.floor});
   for (const auto& it : s.history)
-    history.push_back({it.load_step, it.iteration, it.qp.iterations, it.qp.cg_steps, it.qp.expansion_steps,
-                       it.qp.proportioning_steps, it.qp.hessian_multiplications, it.qp.outer_iterations,
-                       it.residual_norm, it.displacement_change, it.active_contacts,
-                       it.feasibility_error, it.seconds, it.qp.ritz.min, it.qp.ritz.max, it.qp.ritz.cg_steps,
-                       it.qp.rho_updates, it.final_rho, it.qp.expansion_fallbacks, it.qp.operator_applications,
-                       it.qp.operator_seconds, it.qp.preconditioner_applications, it.qp.preconditioner_seconds,
+    history.push_back({it.load_step,
+                       it.iteration,
+                       it.qp.iterations,
+                       it.qp.cg_steps,
+                       it.qp.expansion_steps,
+                       it.qp.proportioning_steps,
+                       it.qp.hessian_multiplications,
+                       it.qp.outer_iterations,
+                       it.residual_norm,
+                       it.displacement_change,
+                       it.active_contacts,
+                       it.feasibility_error,
+                       it.seconds,
+                       it.qp.ritz.min,
+                       it.qp.ritz.max,
+                       it.qp.ritz.cg_steps,
+                       it.qp.rho_updates,
+                       it.final_rho,
+                       it.qp.expansion_fallbacks,
+                       it.qp.operator_applications,
+                       it.qp.operator_seconds,
+                       it.qp.preconditioner_applications,
+                       it.qp.preconditioner_seconds,
                        it.qp.seconds});
-  return {{"completed_steps", s.restart.completed_steps}, {"steps", steps}, {"history", history},
-          {"smalbe_M", s.restart.smalbe_M}, {"smalbe_rho", s.restart.smalbe_rho},
+  return {{"completed_steps", s.restart.completed_steps},
+          {"steps", steps},
+          {"history", history},
+          {"smalbe_M", s.restart.smalbe_M},
+          {"smalbe_rho", s.restart.smalbe_rho},
           {"pfp_norm", s.restart.pfp_norm}};
 }
 } // namespace

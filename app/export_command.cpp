@@ -62,8 +62,8 @@ void export_model(const ExportOptions& options)
   message << "export: " << (dir / "feticon.inp").string() << ": " << s.n_nodes << " nodes, " << s.n_elements
           << " C3D8 elements, " << s.n_contact_pairs << " contact pair(s) (" << s.n_slave_faces << " slave, "
           << s.n_master_faces << " master faces, K = " << s.contact_stiffness << " Pa/m), " << s.n_cloads
-          << " nodal loads, total (" << s.total_load[0] << ", " << s.total_load[1] << ", " << s.total_load[2]
-          << ") N, " << deck.increments << " increment(s)" << (deck.nlgeom ? ", NLGEOM" : "");
+          << " nodal loads, total (" << s.total_load[0] << ", " << s.total_load[1] << ", " << s.total_load[2] << ") N, "
+          << deck.increments << " increment(s)" << (deck.nlgeom ? ", NLGEOM" : "");
   if (s.overclosure > 0)
     message << ", floating slave body shifted " << s.overclosure << " m into its master";
   log::info(message.str());
@@ -73,8 +73,9 @@ void export_model(const ExportOptions& options)
 void register_export_command(CLI::App& app)
 {
   auto options = std::make_shared<ExportOptions>();
-  CLI::App* cmd = app.add_subcommand("export", "Write the model `feticon run` would solve (same file and --set) "
-                                               "as another code's input: --format calculix writes DIR/feticon.inp");
+  CLI::App* cmd = app.add_subcommand("export",
+                                     "Write the model `feticon run` would solve (same file and --set) "
+                                     "as another code's input: --format calculix writes DIR/feticon.inp");
   cmd->add_option("problem", options->problem_file, "problem file (YAML); omit for the built-in Hertz problem");
   cmd->add_option("--set,-s", options->overrides, "override a setting, KEY=VALUE (repeatable)");
   cmd->add_option("--format", options->format, "target format: calculix")->required();

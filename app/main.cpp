@@ -54,8 +54,7 @@ int fail(const char* raw, int code)
   }
   // One write(2): mpirun forwards each rank's stderr in the chunks it reads, and its abort
   // banner would otherwise land in the middle of a line written piece by piece.
-  const std::string line =
-      "feticon: error (rank " + std::to_string(world.rank()) + "): " + what + '\n';
+  const std::string line = "feticon: error (rank " + std::to_string(world.rank()) + "): " + what + '\n';
   [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, line.data(), line.size());
   world.abort(code);
 }

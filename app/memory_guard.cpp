@@ -45,8 +45,8 @@ double bytes_per_dof(double per_subdomain, bool plane_strain, bool interior_fact
 }
 } // namespace
 
-MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdomains, int ranks,
-                                   bool explicit_blocks, bool interior_factors, double process)
+MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdomains, int ranks, bool explicit_blocks,
+                                   bool interior_factors, double process)
 {
   if (process <= 0)
     process = process_bytes;
@@ -64,8 +64,8 @@ MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdoma
     // DOFs: b = 5.2 sqrt(n) in plane strain (Hertz: 4.6-5.3; flat punch 6.5), 6.0 n^(2/3) in
     // 3D (hertz3d 6.3, sphere on block 3.9); the busiest rank holds ceil(subdomains / ranks)
     // of them, and forms them on its threads.
-    const double b = std::min(per_subdomain, plane_strain ? 5.2 * std::sqrt(per_subdomain)
-                                                          : 6.0 * std::pow(per_subdomain, 2.0 / 3.0));
+    const double b = std::min(per_subdomain,
+                              plane_strain ? 5.2 * std::sqrt(per_subdomain) : 6.0 * std::pow(per_subdomain, 2.0 / 3.0));
     const int owned = (out.subdomains + ranks - 1) / ranks;
     const double block = 8.0 * b * b;
     data += out.subdomains * block;
@@ -126,15 +126,16 @@ void check_fits(const MemoryEstimate& estimate, const MemoryBudget& budget, cons
   const bool shared = budget.source != "memory_limit" && par::ranks_on_this_node() > 1;
   const bool cgroup = budget.source.rfind("the cgroup", 0) == 0;
   const std::string size = estimate.nodes > 0 ? " (estimate for " + std::to_string(3 * estimate.nodes) + " DOFs in " +
-                                                     std::to_string(estimate.subdomains) + " subdomains)"
-                                               : std::string();
+          std::to_string(estimate.subdomains) + " subdomains)"
+                                              : std::string();
   const std::string fix = estimate.nodes == 0 ? "a smaller problem, or a machine with more memory"
-                          : cgroup            ? "coarsen the mesh, or raise the cgroup's memory limit"
+      : cgroup                                ? "coarsen the mesh, or raise the cgroup's memory limit"
                                               : "coarsen the mesh, or set memory_limit (bytes) if more is free";
-  FETICON_CHECK(false, what << " needs about " << gib(estimate.per_rank * par::Communicator::world().size()) << size
-                            << ", more than the " << gib(budget.per_rank * par::Communicator::world().size())
-                            << " available (" << budget.source << (cgroup ? " less its usage" : "")
-                            << (shared ? ", shared by the ranks of a node" : "") << "); " << fix);
+  FETICON_CHECK(false,
+                what << " needs about " << gib(estimate.per_rank * par::Communicator::world().size()) << size
+                     << ", more than the " << gib(budget.per_rank * par::Communicator::world().size()) << " available ("
+                     << budget.source << (cgroup ? " less its usage" : "")
+                     << (shared ? ", shared by the ranks of a node" : "") << "); " << fix);
 }
 
 MemoryEstimate guard_memory(const io::Settings& settings, int64_t nodes, bool plane_strain, const std::string& what,

@@ -22,9 +22,9 @@ namespace feticon::app
 /// What the estimate is made of.
 struct MemoryEstimate
 {
-  double bytes = 0;        ///< peak of the whole run, all ranks together
-  double per_rank = 0;     ///< peak of the busiest rank
-  int64_t nodes = 0;       ///< the size it was made for (0 for a QP)
+  double bytes = 0;    ///< peak of the whole run, all ranks together
+  double per_rank = 0; ///< peak of the busiest rank
+  int64_t nodes = 0;   ///< the size it was made for (0 for a QP)
   int subdomains = 0;
   /// dual.operator = auto: the peak of a rank if auto forms the explicit blocks (0: not auto).
   double per_rank_explicit = 0;
@@ -52,8 +52,8 @@ struct MemoryBudget
 /// `interior_factors` the K_ii factors of the implicit Dirichlet preconditioner.
 /// `process`: bytes a rank holds before the solve (0: the model's figure for a process that
 /// has loaded Gmsh, before any mesh).
-MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdomains, int ranks,
-                                   bool explicit_blocks, bool interior_factors, double process = 0);
+MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdomains, int ranks, bool explicit_blocks,
+                                   bool interior_factors, double process = 0);
 
 /// Peak memory of method = primal_penalty on one rank: the whole stiffness matrix, penalized,
 /// in one factorization; `process` as for estimate_run_memory.
@@ -83,6 +83,6 @@ void check_fits(const MemoryEstimate& estimate, const MemoryBudget& budget, cons
 /// the rank holds already, measured once the mesh is built (the libraries, Gmsh among them if
 /// it made or read the mesh, and the mesh; common/available_memory.hpp); 0 before the mesh.
 /// Returns the estimate (with auto's block budget).
-MemoryEstimate guard_memory(const io::Settings& settings, int64_t nodes, bool plane_strain,
-                            const std::string& what, double resident = 0);
+MemoryEstimate guard_memory(const io::Settings& settings, int64_t nodes, bool plane_strain, const std::string& what,
+                            double resident = 0);
 } // namespace feticon::app

@@ -61,8 +61,8 @@ nlohmann::ordered_json mprgp_obstacle_benchmark(int n, double rtol, int max_iter
   la::Vector lower(n * n);
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)
-      lower(i * n + j) = std::sin(3 * std::numbers::pi * (i + 1) * h) *
-                             std::sin(3 * std::numbers::pi * (j + 1) * h) / 2 - 0.6;
+      lower(i * n + j) =
+          std::sin(3 * std::numbers::pi * (i + 1) * h) * std::sin(3 * std::numbers::pi * (j + 1) * h) / 2 - 0.6;
 
   std::vector<double> seconds(applications);
   la::Vector x = la::Vector::Random(n * n), y;

@@ -39,8 +39,8 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Prob
   nonlinear::SolverSettings out(s);
   const int cells = s.integer("subdomain_cells");
   if (cells > 0)
-    out.subdomains = std::max<int>(problem.mesh.n_bodies(),
-                                   static_cast<int>((problem.mesh.n_cells() + cells - 1) / cells));
+    out.subdomains =
+        std::max<int>(problem.mesh.n_bodies(), static_cast<int>((problem.mesh.n_cells() + cells - 1) / cells));
   // A small model (a user's deck of a few elements) gets at most a subdomain per cell rather
   // than an error for the default count; a count the user gives is checked by the partition.
   if (!s.given("subdomains") && out.subdomains > problem.mesh.n_cells())

@@ -47,8 +47,8 @@ struct QpArguments
 /// largest entry): MPRGP minimizes 1/2 x'Ax - b'x, which only sees the symmetric part.
 void check_symmetric(const la::SparseMatrix& A, const std::string& path)
 {
-  FETICON_CHECK(A.rows() == A.cols(), path << ": A is " << A.rows() << " x " << A.cols()
-                                           << "; the QP needs a square matrix");
+  FETICON_CHECK(A.rows() == A.cols(),
+                path << ": A is " << A.rows() << " x " << A.cols() << "; the QP needs a square matrix");
   const la::SparseMatrix asymmetry = A - la::SparseMatrix(A.transpose());
   double largest = 0.0;
   for (la::Index k = 0; k < A.nonZeros(); ++k)
@@ -58,17 +58,16 @@ void check_symmetric(const la::SparseMatrix& A, const std::string& path)
     largest_asymmetry = std::max(largest_asymmetry, std::abs(asymmetry.valuePtr()[k]));
   FETICON_CHECK(std::isfinite(largest), path << ": A has a NaN or infinite entry");
   FETICON_CHECK(largest_asymmetry <= 1e-12 * largest,
-                path << ": A is not symmetric: max |a_ij - a_ji| = " << largest_asymmetry
-                     << " > 1e-12 max |a_ij| = " << 1e-12 * largest
-                     << "; store a symmetric matrix (or one triangle with 'symmetric')");
+                path << ": A is not symmetric: max |a_ij - a_ji| = " << largest_asymmetry << " > 1e-12 max |a_ij| = "
+                     << 1e-12 * largest << "; store a symmetric matrix (or one triangle with 'symmetric')");
 }
 
 void print_iterate(const qp::MprgpIterate& it)
 {
   char line[160];
-  std::snprintf(line, sizeof line, "mprgp %6d %-13s |g_P| %.6e |phi| %.6e |beta| %.6e f %.12e",
-                it.iteration, qp::to_string(it.step), it.projected_gradient_norm,
-                it.free_gradient_norm, it.chopped_gradient_norm, it.cost);
+  std::snprintf(line, sizeof line, "mprgp %6d %-13s |g_P| %.6e |phi| %.6e |beta| %.6e f %.12e", it.iteration,
+                qp::to_string(it.step), it.projected_gradient_norm, it.free_gradient_norm, it.chopped_gradient_norm,
+                it.cost);
   std::cerr << line << '\n';
 }
 
@@ -76,25 +75,26 @@ void run_qp(const QpArguments& arguments)
 {
   // The memory guard, from the size line before the entries are read.
   const la::MatrixMarketSize declared = la::read_matrix_market_size(arguments.matrix_path);
-  check_fits(estimate_qp_memory(std::max(declared.rows, declared.cols), (declared.symmetric ? 2 : 1) * declared.entries),
-             memory_budget(0.0), "qp: " + arguments.matrix_path + " (" + std::to_string(declared.rows) + " x " +
-                                     std::to_string(declared.cols) + ", " + std::to_string(declared.entries) + " entries)");
+  check_fits(
+      estimate_qp_memory(std::max(declared.rows, declared.cols), (declared.symmetric ? 2 : 1) * declared.entries),
+      memory_budget(0.0),
+      "qp: " + arguments.matrix_path + " (" + std::to_string(declared.rows) + " x " + std::to_string(declared.cols) +
+          ", " + std::to_string(declared.entries) + " entries)");
   const la::SparseMatrix A = la::read_matrix_market_sparse(arguments.matrix_path);
   check_symmetric(A, arguments.matrix_path);
   const la::Index n = A.rows();
   const la::Vector b = la::read_matrix_market_dense(arguments.rhs_path);
-  FETICON_CHECK(b.size() == n, arguments.rhs_path << ": b has " << b.size()
-                                                  << " entries but A has " << n << " rows");
+  FETICON_CHECK(b.size() == n, arguments.rhs_path << ": b has " << b.size() << " entries but A has " << n << " rows");
   la::Vector lower = la::Vector::Constant(n, -std::numeric_limits<double>::infinity());
   if (!arguments.lower_path.empty())
   {
     lower = la::read_matrix_market_dense(arguments.lower_path);
-    FETICON_CHECK(lower.size() == n, arguments.lower_path
-                                         << ": l has " << lower.size() << " entries but A has "
-                                         << n << " rows");
+    FETICON_CHECK(lower.size() == n,
+                  arguments.lower_path << ": l has " << lower.size() << " entries but A has " << n << " rows");
   }
 
-  qp::MprgpOptions options{.rtol = arguments.rtol, .max_iterations = arguments.max_iterations,
+  qp::MprgpOptions options{.rtol = arguments.rtol,
+                           .max_iterations = arguments.max_iterations,
                            .expansion = qp::expansion_from_name(arguments.expansion)};
   if (arguments.monitor)
     options.monitor = print_iterate;
@@ -103,8 +103,10 @@ void run_qp(const QpArguments& arguments)
   la::Vector x = la::Vector::Zero(n).cwiseMax(lower); // x0 = P_Omega(0)
   const qp::QpReport report = mprgp.solve(b, lower, x);
   FETICON_CHECK(std::isfinite(report.cost) && std::isfinite(report.projected_gradient_norm) && x.allFinite(),
-                "qp: the solve produced non-finite values (cost " << report.cost << "); are A, b and the bounds of "
-                                                                 "a moderate size (bounds like 1e300 overflow the cost)?");
+                "qp: the solve produced non-finite values (cost "
+                    << report.cost
+                    << "); are A, b and the bounds of "
+                       "a moderate size (bounds like 1e300 overflow the cost)?");
 
   nlohmann::ordered_json json = {{"converged", report.converged}};
   json.update(qp_counters_json(report));
@@ -127,22 +129,22 @@ void run_qp(const QpArguments& arguments)
 void register_qp_command(CLI::App& app)
 {
   auto arguments = std::make_shared<QpArguments>();
-  CLI::App* command = app.add_subcommand(
-      "qp", "Solve min 1/2 x'Ax - b'x subject to x >= l with MPRGP; print a JSON report");
-  command->add_option("--A", arguments->matrix_path, "symmetric positive definite matrix A "
-                                                     "(Matrix Market coordinate)")
+  CLI::App* command =
+      app.add_subcommand("qp", "Solve min 1/2 x'Ax - b'x subject to x >= l with MPRGP; print a JSON report");
+  command
+      ->add_option("--A", arguments->matrix_path,
+                   "symmetric positive definite matrix A "
+                   "(Matrix Market coordinate)")
       ->required();
-  command->add_option("--b", arguments->rhs_path, "right-hand side b (Matrix Market vector)")
-      ->required();
+  command->add_option("--b", arguments->rhs_path, "right-hand side b (Matrix Market vector)")->required();
   command->add_option("--lower", arguments->lower_path,
                       "lower bounds l (Matrix Market vector, -inf allowed); default: none");
-  command->add_option("--rtol", arguments->rtol, "stop when |g_P| <= rtol |b|")
-      ->capture_default_str();
-  command->add_option("--max-iterations", arguments->max_iterations, "MPRGP steps allowed")
-      ->capture_default_str();
+  command->add_option("--rtol", arguments->rtol, "stop when |g_P| <= rtol |b|")->capture_default_str();
+  command->add_option("--max-iterations", arguments->max_iterations, "MPRGP steps allowed")->capture_default_str();
   command->add_option("--out", arguments->output_path, "write the solution x (Matrix Market)");
-  command->add_option("--expansion", arguments->expansion,
-                      "expansion step: std (half step + projected gradient) or projcg (projected CG step)")
+  command
+      ->add_option("--expansion", arguments->expansion,
+                   "expansion step: std (half step + projected gradient) or projcg (projected CG step)")
       ->check(CLI::IsMember({"std", "projcg"}))
       ->capture_default_str();
   command->add_flag("--monitor", arguments->monitor, "one line per MPRGP step on stderr");

@@ -86,7 +86,7 @@ struct RunContext
   std::unique_ptr<problems::BuiltInProblem> built_in; ///< null for a custom problem or a deck
   std::unique_ptr<fem::Problem> problem;
   std::string theory_line; ///< the built-in problem's comparison with theory, for the table
-  io::DeckInfo deck; ///< the model's input deck, if it is one
+  io::DeckInfo deck;       ///< the model's input deck, if it is one
   MemoryEstimate memory_estimate;
   nonlinear::SolverSettings solver;
   std::optional<CalculixResults> calculix; ///< a deck's results also in CalculiX's files
@@ -109,8 +109,8 @@ void set_up(const RunOptions& options, RunContext& run)
     FETICON_CHECK(options.problem_file.empty() && options.overrides.empty(),
                   "--restart continues a run exactly as it was set up: give no problem file or --set");
   const std::filesystem::path restart_dir(options.restart);
-  run.file = load_problem(
-      run.restart ? restart_dir / "problem.yaml" : std::filesystem::path(options.problem_file), options.overrides);
+  run.file = load_problem(run.restart ? restart_dir / "problem.yaml" : std::filesystem::path(options.problem_file),
+                          options.overrides);
   const io::Settings& settings = run.settings();
 
   const std::string what = "problem " + settings.text("problem");
@@ -131,8 +131,8 @@ void set_up(const RunOptions& options, RunContext& run)
 
   {
     ScopedTimer t(run.timers, "mesh");
-    run.problem = std::make_unique<fem::Problem>(run.built_in ? run.built_in->build()
-                                                              : build_problem(run.file, &run.deck));
+    run.problem =
+        std::make_unique<fem::Problem>(run.built_in ? run.built_in->build() : build_problem(run.file, &run.deck));
   }
   const fem::Problem& problem = *run.problem;
   // Again for the mesh as made, from what the ranks hold now (with or without Gmsh loaded).
@@ -189,7 +189,9 @@ void write_step(RunContext& run, int step, const nonlinear::ContactSolution& sol
 nonlinear::ContactSolution solve(RunContext& run)
 {
   const nonlinear::SolverSettings& solver = run.solver;
-  const auto on_step = [&run](int step, const nonlinear::ContactSolution& solution) { write_step(run, step, solution); };
+  const auto on_step = [&run](int step, const nonlinear::ContactSolution& solution) {
+    write_step(run, step, solution);
+  };
   FETICON_CHECK(run.comm.serial() || solver.method != nonlinear::ContactMethod::primal_penalty,
                 "method primal_penalty solves the undecomposed problem on one rank; run it without mpirun");
   FETICON_CHECK(!run.restart || solver.method != nonlinear::ContactMethod::primal_penalty,
@@ -393,16 +395,18 @@ void run(const RunOptions& options)
     log::warning(w.get<std::string>());
   summary["warnings"] = warnings;
   write_results(run, solution, summary);
-  FETICON_CHECK(solution.completed, "the solve did not converge: " << solution.reason << " (converged steps are in "
-                                                                   << run.out_dir.string() << ")");
+  FETICON_CHECK(solution.completed,
+                "the solve did not converge: " << solution.reason << " (converged steps are in " << run.out_dir.string()
+                                               << ")");
 }
 } // namespace
 
 void register_run_command(CLI::App& app)
 {
   auto options = std::make_shared<RunOptions>();
-  CLI::App* cmd = app.add_subcommand("run", "Solve a contact problem (default: Vondrák et al.'s Hertz "
-                                            "benchmark) and write a results folder");
+  CLI::App* cmd = app.add_subcommand("run",
+                                     "Solve a contact problem (default: Vondrák et al.'s Hertz "
+                                     "benchmark) and write a results folder");
   // No CLI11 file check: feticon's own one-line error names a missing file.
   cmd->add_option("problem", options->problem_file,
                   "problem file (YAML) or CalculiX / Abaqus input deck (.inp); omit for the built-in Hertz problem");

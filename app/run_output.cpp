@@ -87,8 +87,7 @@ void write_step_pvtu(const std::filesystem::path& path, const fem::Problem& prob
   io::write_pvtu(path, pieces, problem.mesh, {f.displacement, f.pressure}, {f.cauchy, f.mises});
 }
 
-void write_pressure_csv(const std::filesystem::path& path,
-                        const std::vector<nonlinear::PressureSample>& samples)
+void write_pressure_csv(const std::filesystem::path& path, const std::vector<nonlinear::PressureSample>& samples)
 {
   std::ostringstream os;
   os << "x_m,y_m,z_m,force_N,area_m2,pressure_multipliers_Pa,pressure_stress_Pa,pressure_analytic_Pa,"
@@ -96,24 +95,22 @@ void write_pressure_csv(const std::filesystem::path& path,
   char line[320];
   for (const auto& s : samples)
   {
-    std::snprintf(line, sizeof line, "%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n", s.x, s.y,
-                  s.z, s.force, s.area, s.pressure, s.stress_pressure, s.analytic, s.deformed_x, s.deformed_y);
+    std::snprintf(line, sizeof line, "%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n", s.x, s.y, s.z, s.force,
+                  s.area, s.pressure, s.stress_pressure, s.analytic, s.deformed_x, s.deformed_y);
     os << line;
   }
   feticon::write_file_atomically(path, os.str());
 }
 
-void write_history_csv(const std::filesystem::path& path,
-                       const std::vector<nonlinear::OuterIteration>& history)
+void write_history_csv(const std::filesystem::path& path, const std::vector<nonlinear::OuterIteration>& history)
 {
   std::ostringstream os;
   os << "load_step,outer_iteration,mprgp_iterations,hessian_multiplications,smalbe_outer,"
         "residual_norm,displacement_change,active_contacts,feasibility_error,seconds\n";
   for (const auto& it : history)
-    os << it.load_step << ',' << it.iteration << ',' << it.qp.iterations << ','
-       << it.qp.hessian_multiplications << ',' << it.qp.outer_iterations << ',' << it.residual_norm << ','
-       << it.displacement_change << ',' << it.active_contacts << ',' << it.feasibility_error << ','
-       << it.seconds << '\n';
+    os << it.load_step << ',' << it.iteration << ',' << it.qp.iterations << ',' << it.qp.hessian_multiplications << ','
+       << it.qp.outer_iterations << ',' << it.residual_norm << ',' << it.displacement_change << ','
+       << it.active_contacts << ',' << it.feasibility_error << ',' << it.seconds << '\n';
   feticon::write_file_atomically(path, os.str());
 }
 
@@ -121,8 +118,7 @@ std::string format_summary(const nlohmann::ordered_json& s, const std::string& t
 {
   std::ostringstream os;
   char line[256];
-  auto put = [&](const char* format, auto... values)
-  {
+  auto put = [&](const char* format, auto... values) {
     std::snprintf(line, sizeof line, format, values...);
     os << line << '\n';
   };
@@ -130,9 +126,8 @@ std::string format_summary(const nlohmann::ordered_json& s, const std::string& t
   put("problem %s, method %s, %s displacements, converged: %s", s["problem"].get<std::string>().c_str(),
       s["method"].get<std::string>().c_str(), s["displacements"].get<std::string>().c_str(),
       s["converged"].get<bool>() ? "yes" : "NO");
-  put("DOFs %ld, elements %ld, subdomains %ld, dual size %ld, coarse size %ld",
-      s["degrees_of_freedom"].get<long>(), s["elements"].get<long>(), s["subdomains"].get<long>(),
-      s["dual_size"].get<long>(), s["coarse_size"].get<long>());
+  put("DOFs %ld, elements %ld, subdomains %ld, dual size %ld, coarse size %ld", s["degrees_of_freedom"].get<long>(),
+      s["elements"].get<long>(), s["subdomains"].get<long>(), s["dual_size"].get<long>(), s["coarse_size"].get<long>());
   put("%-6s %-12s %-8s %-12s %-10s", "step", "load factor", "outer", "inner total", "converged");
   int step = 0;
   for (const auto& st : s["steps"])
@@ -140,20 +135,19 @@ std::string format_summary(const nlohmann::ordered_json& s, const std::string& t
     int inner = 0;
     for (int i : st["inner_iterations"])
       inner += i;
-    put("%-6d %-12.4g %-8d %-12d %-10s", ++step, st["load_factor"].get<double>(),
-        st["outer_iterations"].get<int>(), inner, st["converged"].get<bool>() ? "yes" : "no");
+    put("%-6d %-12.4g %-8d %-12d %-10s", ++step, st["load_factor"].get<double>(), st["outer_iterations"].get<int>(),
+        inner, st["converged"].get<bool>() ? "yes" : "no");
   }
-  put("MPRGP steps %d (CG %d, expansion %d, proportioning %d), operator products %d",
-      s["qp"]["iterations"].get<int>(), s["qp"]["cg_steps"].get<int>(),
-      s["qp"]["expansion_steps"].get<int>(), s["qp"]["proportioning_steps"].get<int>(),
+  put("MPRGP steps %d (CG %d, expansion %d, proportioning %d), operator products %d", s["qp"]["iterations"].get<int>(),
+      s["qp"]["cg_steps"].get<int>(), s["qp"]["expansion_steps"].get<int>(), s["qp"]["proportioning_steps"].get<int>(),
       s["qp"]["hessian_multiplications"].get<int>());
   if (s.contains("contact"))
   {
     const auto& c = s["contact"];
     put("contact: force %.6g N, peak pressure %.4g MPa, area %.4g m^2, %ld active rows, "
-        "feasibility %.1e", c["total_normal_force"].get<double>(), c["peak_pressure"].get<double>() / 1e6,
-        c["contact_area"].get<double>(), c["active_constraints"].get<long>(),
-        c["feasibility_error"].get<double>());
+        "feasibility %.1e",
+        c["total_normal_force"].get<double>(), c["peak_pressure"].get<double>() / 1e6, c["contact_area"].get<double>(),
+        c["active_constraints"].get<long>(), c["feasibility_error"].get<double>());
   }
   if (!theory_line.empty())
     os << theory_line << '\n';
@@ -170,8 +164,7 @@ std::string format_summary(const nlohmann::ordered_json& s, const std::string& t
 
 void plot_results(const std::filesystem::path& out_dir)
 {
-  const std::filesystem::path script =
-      std::filesystem::path(FETICON_SOURCE_DIR) / "scripts" / "plot_hertz.py";
+  const std::filesystem::path script = std::filesystem::path(FETICON_SOURCE_DIR) / "scripts" / "plot_hertz.py";
   std::string python = "/usr/bin/python3";
   if (!std::filesystem::exists(python) || !std::filesystem::exists(script))
   {
@@ -207,10 +200,9 @@ bool is_result_file(std::string name)
     if (name == fixed)
       return true;
   // step_NNN.vtu, step_NNN.pvtu, step_NNN_rankNNN.vtu
-  auto digits = [&name](size_t from, size_t to)
-  {
-    return to > from && std::all_of(name.begin() + from, name.begin() + to,
-                                    [](unsigned char c) { return std::isdigit(c) != 0; });
+  auto digits = [&name](size_t from, size_t to) {
+    return to > from &&
+        std::all_of(name.begin() + from, name.begin() + to, [](unsigned char c) { return std::isdigit(c) != 0; });
   };
   const size_t dot = name.rfind('.');
   if (name.rfind("step_", 0) != 0 || dot == std::string::npos)

@@ -26,12 +26,10 @@ void write_step_pvtu(const std::filesystem::path& path, const fem::Problem& prob
 
 /// contact_pressure.csv: position, force, area, pressure from multipliers, from stresses,
 /// McEwen's (Hertz only; 0 otherwise).
-void write_pressure_csv(const std::filesystem::path& path,
-                        const std::vector<nonlinear::PressureSample>& samples);
+void write_pressure_csv(const std::filesystem::path& path, const std::vector<nonlinear::PressureSample>& samples);
 
 /// history.csv: one line per outer iteration.
-void write_history_csv(const std::filesystem::path& path,
-                       const std::vector<nonlinear::OuterIteration>& history);
+void write_history_csv(const std::filesystem::path& path, const std::vector<nonlinear::OuterIteration>& history);
 
 /// The end-of-run table: sizes, load steps, contact figures, timings, memory, all taken from
 /// summary.json so the two always agree, and a built-in problem's `theory_line` (its

@@ -31,14 +31,11 @@ std::filesystem::path temporary_path(const std::filesystem::path& path)
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& content)
 {
-  write_file_atomically(path,
-                        [&content](std::ostream& out) {
-                          out.write(content.data(), static_cast<std::streamsize>(content.size()));
-                        });
+  write_file_atomically(
+      path, [&content](std::ostream& out) { out.write(content.data(), static_cast<std::streamsize>(content.size())); });
 }
 
-void write_file_atomically(const std::filesystem::path& path,
-                           const std::function<void(std::ostream&)>& write)
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write)
 {
   FETICON_CHECK(path.has_filename(), "cannot write '" << path.string() << "': it names no file");
   const std::filesystem::path parent = path.parent_path();
@@ -46,25 +43,26 @@ void write_file_atomically(const std::filesystem::path& path,
   {
     std::error_code error;
     std::filesystem::create_directories(parent, error);
-    FETICON_CHECK(!error, "cannot write '" << path.string() << "': creating directory '"
-                                           << parent.string() << "' failed: " << error.message());
+    FETICON_CHECK(!error,
+                  "cannot write '" << path.string() << "': creating directory '" << parent.string()
+                                   << "' failed: " << error.message());
   }
 
   const std::filesystem::path temporary = temporary_path(path);
   try
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    FETICON_CHECK(out.is_open(), "cannot write '" << path.string() << "': opening '"
-                                                  << temporary.string()
-                                                  << "' failed: " << std::strerror(errno));
+    FETICON_CHECK(out.is_open(),
+                  "cannot write '" << path.string() << "': opening '" << temporary.string()
+                                   << "' failed: " << std::strerror(errno));
     write(out);
     out.close();
-    FETICON_CHECK(!out.fail(),
-                  "cannot write '" << path.string() << "': the output stream failed (disk full?)");
+    FETICON_CHECK(!out.fail(), "cannot write '" << path.string() << "': the output stream failed (disk full?)");
     std::error_code error;
     std::filesystem::rename(temporary, path, error);
-    FETICON_CHECK(!error, "cannot write '" << path.string() << "': renaming '" << temporary.string()
-                                           << "' onto it failed: " << error.message());
+    FETICON_CHECK(!error,
+                  "cannot write '" << path.string() << "': renaming '" << temporary.string()
+                                   << "' onto it failed: " << error.message());
   }
   catch (...)
   {

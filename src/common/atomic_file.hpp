@@ -25,6 +25,5 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 /// propagates.
 /// @throws feticon::Error as the other overload, also if the stream is in a failed state after
 ///         `write`.
-void write_file_atomically(const std::filesystem::path& path,
-                           const std::function<void(std::ostream&)>& write);
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
 } // namespace feticon

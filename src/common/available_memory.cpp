@@ -97,8 +97,8 @@ CgroupRoom cgroup_memory_room(const MemorySources& sources)
     std::string name;
     while (std::getline(names, name, ','))
       if (name == "memory")
-        tightest_room({root / "memory", "memory.limit_in_bytes", "memory.usage_in_bytes", "total_inactive_file"},
-                      path, out);
+        tightest_room({root / "memory", "memory.limit_in_bytes", "memory.usage_in_bytes", "total_inactive_file"}, path,
+                      out);
   }
   return out;
 }

@@ -20,39 +20,36 @@ public:
 
 namespace detail
 {
-[[noreturn]] void throw_error(const std::string& message, const char* file, int line,
-                              bool with_location);
+[[noreturn]] void throw_error(const std::string& message, const char* file, int line, bool with_location);
 } // namespace detail
 } // namespace feticon
 
 /// Always-on check; `message` is a stream expression, e.g. "E = " << E << " must be > 0".
-#define FETICON_CHECK(cond, message)                                                    \
-  do                                                                                    \
-  {                                                                                     \
-    if (!(cond))                                                                        \
-    {                                                                                   \
-      std::ostringstream feticon_check_stream_;                                         \
-      feticon_check_stream_ << message;                                                 \
-      ::feticon::detail::throw_error(feticon_check_stream_.str(), __FILE__, __LINE__,   \
-                                     false);                                            \
-    }                                                                                   \
+#define FETICON_CHECK(cond, message)                                                                                   \
+  do                                                                                                                   \
+  {                                                                                                                    \
+    if (!(cond))                                                                                                       \
+    {                                                                                                                  \
+      std::ostringstream feticon_check_stream_;                                                                        \
+      feticon_check_stream_ << message;                                                                                \
+      ::feticon::detail::throw_error(feticon_check_stream_.str(), __FILE__, __LINE__, false);                          \
+    }                                                                                                                  \
   } while (false)
 
 #ifdef NDEBUG
-#define FETICON_ASSERT(cond, message)                                                   \
-  do                                                                                    \
-  {                                                                                     \
+#define FETICON_ASSERT(cond, message)                                                                                  \
+  do                                                                                                                   \
+  {                                                                                                                    \
   } while (false)
 #else
-#define FETICON_ASSERT(cond, message)                                                   \
-  do                                                                                    \
-  {                                                                                     \
-    if (!(cond))                                                                        \
-    {                                                                                   \
-      std::ostringstream feticon_assert_stream_;                                        \
-      feticon_assert_stream_ << "internal error: " #cond ": " << message;              \
-      ::feticon::detail::throw_error(feticon_assert_stream_.str(), __FILE__, __LINE__,  \
-                                     true);                                             \
-    }                                                                                   \
+#define FETICON_ASSERT(cond, message)                                                                                  \
+  do                                                                                                                   \
+  {                                                                                                                    \
+    if (!(cond))                                                                                                       \
+    {                                                                                                                  \
+      std::ostringstream feticon_assert_stream_;                                                                       \
+      feticon_assert_stream_ << "internal error: " #cond ": " << message;                                              \
+      ::feticon::detail::throw_error(feticon_assert_stream_.str(), __FILE__, __LINE__, true);                          \
+    }                                                                                                                  \
   } while (false)
 #endif

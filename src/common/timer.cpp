@@ -32,8 +32,8 @@ std::string TimerTable::format() const
   std::ostringstream os;
   os << std::left << std::setw(28) << "phase" << std::right << std::setw(12) << "seconds\n";
   for (const auto& [name, seconds] : entries())
-    os << std::left << std::setw(28) << name << std::right << std::setw(11) << std::fixed
-       << std::setprecision(3) << seconds << '\n';
+    os << std::left << std::setw(28) << name << std::right << std::setw(11) << std::fixed << std::setprecision(3)
+       << seconds << '\n';
   return os.str();
 }
 

@@ -68,8 +68,7 @@ QuadProjection project_to_quad(const QuadCoordinates& quad, const Eigen::Vector3
     const Eigen::Vector3d distance = quad_point(quad, xi) - point;
     const Eigen::Vector2d residual(d.d_xi.dot(distance), d.d_eta.dot(distance));
     Eigen::Matrix2d metric;
-    metric << d.d_xi.squaredNorm(), d.d_xi.dot(d.d_eta), d.d_xi.dot(d.d_eta),
-        d.d_eta.squaredNorm();
+    metric << d.d_xi.squaredNorm(), d.d_xi.dot(d.d_eta), d.d_xi.dot(d.d_eta), d.d_eta.squaredNorm();
     if (!(metric(0, 0) > 0 && metric.determinant() > 0))
       break; // degenerate quad: tangents parallel or zero
     Eigen::Matrix2d jacobian = metric;
@@ -98,10 +97,8 @@ QuadProjection project_to_quad(const QuadCoordinates& quad, const Eigen::Vector3
     // that the next one would be: |dxi_k+1| ~ C |dxi_k|^2 with C = |dxi_k| / |dxi_k-1|^2. The
     // estimate is used only for two consecutive full Newton steps already below sqrt(tolerance);
     // it saves the last step, which would only confirm convergence.
-    const bool predicted =
-        full_newton && previous_step > 0 && step_norm < std::sqrt(options.step_tolerance) &&
-        step_norm / (previous_step * previous_step) * step_norm * step_norm <
-            options.step_tolerance;
+    const bool predicted = full_newton && previous_step > 0 && step_norm < std::sqrt(options.step_tolerance) &&
+        step_norm / (previous_step * previous_step) * step_norm * step_norm < options.step_tolerance;
     if (step_norm < options.step_tolerance || predicted)
     {
       result.converged = true;
@@ -115,13 +112,11 @@ QuadProjection project_to_quad(const QuadCoordinates& quad, const Eigen::Vector3
   if (result.normal.squaredNorm() == 0)
     result.converged = false;
   result.gap = result.normal.dot(point - result.point);
-  result.inside = std::abs(xi(0)) <= 1 + options.inside_tolerance &&
-                  std::abs(xi(1)) <= 1 + options.inside_tolerance;
+  result.inside = std::abs(xi(0)) <= 1 + options.inside_tolerance && std::abs(xi(1)) <= 1 + options.inside_tolerance;
   return result;
 }
 
-double closest_on_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                          const Eigen::Vector3d& point)
+double closest_on_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& point)
 {
   const Eigen::Vector3d edge = b - a;
   const double length2 = edge.squaredNorm();

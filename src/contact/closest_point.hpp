@@ -94,6 +94,5 @@ QuadProjection project_to_quad(const QuadCoordinates& quad, const Eigen::Vector3
                                const ProjectionOptions& options = {});
 
 /// Closest point on the straight segment [a, b]: the parameter t in [0, 1] of a + t (b - a).
-double closest_on_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                          const Eigen::Vector3d& point);
+double closest_on_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& point);
 } // namespace feticon::contact

@@ -47,10 +47,7 @@ private:
 /// of the master surface: the same 1e-6 as the acceptance tolerance of a projection.
 constexpr double rim_tolerance = 1e-6;
 
-bool has_corner(const mesh::Face& face, int32_t node)
-{
-  return std::ranges::find(face, node) != face.end();
-}
+bool has_corner(const mesh::Face& face, int32_t node) { return std::ranges::find(face, node) != face.end(); }
 
 /// Accepted face projection with the smallest |g| among the candidates, if any. An accepted
 /// projection is a stationary point, so |g| = |x_s - x(xi_bar)| is at least the distance from x_s
@@ -59,8 +56,8 @@ bool has_corner(const mesh::Face& face, int32_t node)
 std::optional<ClosestPoint> closest_face_projection(const std::vector<QuadCoordinates>& quads,
                                                     const std::vector<BoundingBox>& face_boxes,
                                                     const std::vector<mesh::Face>& faces,
-                                                    const std::vector<int32_t>& candidates,
-                                                    int32_t slave, const Eigen::Vector3d& x_s)
+                                                    const std::vector<int32_t>& candidates, int32_t slave,
+                                                    const Eigen::Vector3d& x_s)
 {
   std::vector<std::pair<double, int32_t>> order;
   order.reserve(candidates.size());
@@ -84,10 +81,9 @@ std::optional<ClosestPoint> closest_face_projection(const std::vector<QuadCoordi
 /// candidate faces' edges, on face f. Beyond a boundary side of f: the projection on f if it lies
 /// within the rim extension, else nothing (overhanging). Otherwise the node-to-edge point x_e.
 std::optional<ClosestPoint> outside_point(const std::vector<QuadCoordinates>& quads,
-                                          const std::vector<mesh::Face>& faces,
-                                          const std::vector<int32_t>& candidates,
-                                          const SurfaceBoundary& boundary, int32_t slave,
-                                          const Eigen::Vector3d& x_s, double rim_extension)
+                                          const std::vector<mesh::Face>& faces, const std::vector<int32_t>& candidates,
+                                          const SurfaceBoundary& boundary, int32_t slave, const Eigen::Vector3d& x_s,
+                                          double rim_extension)
 {
   double best_distance = std::numeric_limits<double>::infinity();
   int32_t best_face = -1;
@@ -117,8 +113,7 @@ std::optional<ClosestPoint> outside_point(const std::vector<QuadCoordinates>& qu
 
   const mesh::Face& face = faces[best_face];
   const QuadCoordinates& quad = quads[best_face];
-  const double face_size = std::max((quad.row(2) - quad.row(0)).norm(),
-                                    (quad.row(3) - quad.row(1)).norm());
+  const double face_size = std::max((quad.row(2) - quad.row(0)).norm(), (quad.row(3) - quad.row(1)).norm());
   // Beyond a boundary side k of the face, i.e. on the outer side of the side's line in the face's
   // tangent plane; the outward in-plane normal of side k is (x_k+1 - x_k) x n_f (counter-clockwise
   // sides seen from outside).
@@ -168,8 +163,7 @@ std::optional<ClosestPoint> outside_point(const std::vector<QuadCoordinates>& qu
 }
 } // namespace
 
-QuadCoordinates current_face_coordinates(const mesh::HexMesh& mesh, const la::Vector& u,
-                                         const mesh::Face& face)
+QuadCoordinates current_face_coordinates(const mesh::HexMesh& mesh, const la::Vector& u, const mesh::Face& face)
 {
   QuadCoordinates quad;
   for (int a = 0; a < 4; ++a)
@@ -186,8 +180,7 @@ double face_diagonal(const QuadCoordinates& quad)
   return std::max((quad.row(2) - quad.row(0)).norm(), (quad.row(3) - quad.row(1)).norm());
 }
 
-double largest_face_diagonal(const mesh::HexMesh& mesh, const la::Vector& u,
-                             const std::vector<mesh::Face>& faces)
+double largest_face_diagonal(const mesh::HexMesh& mesh, const la::Vector& u, const std::vector<mesh::Face>& faces)
 {
   double diagonal = 0;
   for (const mesh::Face& face : faces)
@@ -206,33 +199,29 @@ std::vector<int32_t> slave_nodes(const mesh::HexMesh& mesh, const ContactPair& p
   return out;
 }
 
-ContactConstraints build_contact_constraints(const mesh::HexMesh& mesh, const la::Vector& u,
-                                             const ContactPair& pair, const ContactOptions& options)
+ContactConstraints build_contact_constraints(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair,
+                                             const ContactOptions& options)
 {
   if (options.formulation == ContactFormulation::mortar)
     return build_mortar_constraints(mesh, u, pair, options);
   return build_node_to_segment_constraints(mesh, u, pair, options);
 }
 
-ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh,
-                                                     const la::Vector& u,
-                                                     const ContactPair& pair,
-                                                     const ContactOptions& options)
+ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh, const la::Vector& u,
+                                                     const ContactPair& pair, const ContactOptions& options)
 {
   const la::Index n_dofs = 3 * static_cast<la::Index>(mesh.n_nodes());
   FETICON_CHECK(u.size() == 0 || u.size() == n_dofs,
-                "contact: displacement has " << u.size() << " entries, expected 3 * n_nodes = "
-                                             << n_dofs << " (or 0 for u = 0)");
+                "contact: displacement has " << u.size() << " entries, expected 3 * n_nodes = " << n_dofs
+                                             << " (or 0 for u = 0)");
   FETICON_CHECK(std::isfinite(options.search_distance) && options.search_distance >= 0,
-                "contact: search_distance = " << options.search_distance
-                                              << " m must be >= 0 (0 = automatic)");
+                "contact: search_distance = " << options.search_distance << " m must be >= 0 (0 = automatic)");
   FETICON_CHECK(std::isfinite(options.rim_extension) && options.rim_extension >= 0,
                 "contact: rim_extension = " << options.rim_extension << " must be >= 0");
   FETICON_CHECK(options.near_contact_fraction > 0,
                 "contact: near_contact_fraction = " << options.near_contact_fraction << " must be > 0");
   FETICON_CHECK(options.mortar_min_overlap > 0 && options.mortar_min_overlap <= 1,
-                "contact: mortar_min_overlap = " << options.mortar_min_overlap
-                                                 << " must be in (0, 1]");
+                "contact: mortar_min_overlap = " << options.mortar_min_overlap << " must be in (0, 1]");
   const std::vector<mesh::Face>& faces = mesh.face_set(pair.master);
   FETICON_CHECK(!faces.empty(), "contact: master face set '" << pair.master << "' is empty");
   const std::vector<int32_t> slave_nodes = contact::slave_nodes(mesh, pair);
@@ -244,10 +233,8 @@ ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh,
 
   ContactConstraints out;
   out.n_slave_nodes = static_cast<int32_t>(slave_nodes.size());
-  out.search_distance = options.search_distance > 0 ? options.search_distance
-                                                    : largest_face_diagonal(mesh, u, faces);
-  FETICON_CHECK(out.search_distance > 0,
-                "contact: master face set '" << pair.master << "' has only degenerate faces");
+  out.search_distance = options.search_distance > 0 ? options.search_distance : largest_face_diagonal(mesh, u, faces);
+  FETICON_CHECK(out.search_distance > 0, "contact: master face set '" << pair.master << "' has only degenerate faces");
 
   std::vector<BoundingBox> face_boxes(faces.size());
   for (size_t f = 0; f < faces.size(); ++f)
@@ -283,10 +270,9 @@ ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh,
   // Near contact (options.near_contact_fraction): the bodies touch where the gap is at most
   // the smallest one, or 0 once they touch.
   const double contact_level = std::max(smallest_gap, 0.0);
-  const auto near_contact = [&](const ClosestPoint& c)
-  {
+  const auto near_contact = [&](const ClosestPoint& c) {
     return std::isinf(options.near_contact_fraction) ||
-           c.gap < contact_level + options.near_contact_fraction * face_diagonal(quads[c.face]);
+        c.gap < contact_level + options.near_contact_fraction * face_diagonal(quads[c.face]);
   };
 
   const SlaveNodalAreas areas = slave_nodal_areas(mesh, u, pair.slave);
@@ -307,24 +293,22 @@ ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh,
   return out;
 }
 
-la::Vector contact_forces(const ContactConstraints& constraints, const la::Vector& lambda_hat,
-                          int64_t n_global_dofs)
+la::Vector contact_forces(const ContactConstraints& constraints, const la::Vector& lambda_hat, int64_t n_global_dofs)
 {
   FETICON_CHECK(lambda_hat.size() == constraints.n_rows(),
-                "contact_forces: " << lambda_hat.size() << " multipliers for "
-                                   << constraints.n_rows() << " contact rows");
+                "contact_forces: " << lambda_hat.size() << " multipliers for " << constraints.n_rows()
+                                   << " contact rows");
   FETICON_CHECK(n_global_dofs == constraints.B.cols(),
-                "contact_forces: n_global_dofs = " << n_global_dofs << " but the rows have "
-                                                   << constraints.B.cols() << " columns");
+                "contact_forces: n_global_dofs = " << n_global_dofs << " but the rows have " << constraints.B.cols()
+                                                   << " columns");
   return -(constraints.B.transpose() * lambda_hat);
 }
 
-la::Vector slave_normal_forces(const ContactConstraints& constraints,
-                               const la::Vector& lambda_hat)
+la::Vector slave_normal_forces(const ContactConstraints& constraints, const la::Vector& lambda_hat)
 {
   FETICON_CHECK(lambda_hat.size() == constraints.n_rows(),
-                "slave_normal_forces: " << lambda_hat.size() << " multipliers for "
-                                        << constraints.n_rows() << " contact rows");
+                "slave_normal_forces: " << lambda_hat.size() << " multipliers for " << constraints.n_rows()
+                                        << " contact rows");
   la::Vector forces(lambda_hat.size());
   for (la::Index i = 0; i < lambda_hat.size(); ++i)
     forces(i) = lambda_hat(i) / constraints.row_norm[i];

@@ -171,16 +171,14 @@ struct ContactConstraints
 
 /// @brief Current corner coordinates x = X + u of a face (m).
 /// @param[in] u global displacement (3 per node), or empty for u = 0
-QuadCoordinates current_face_coordinates(const mesh::HexMesh& mesh, const la::Vector& u,
-                                         const mesh::Face& face);
+QuadCoordinates current_face_coordinates(const mesh::HexMesh& mesh, const la::Vector& u, const mesh::Face& face);
 
 /// @brief The longer diagonal of a face (m).
 double face_diagonal(const QuadCoordinates& quad);
 
 /// @brief Largest diagonal of the faces of `faces` in the current configuration (m): the
 /// automatic search distance.
-double largest_face_diagonal(const mesh::HexMesh& mesh, const la::Vector& u,
-                             const std::vector<mesh::Face>& faces);
+double largest_face_diagonal(const mesh::HexMesh& mesh, const la::Vector& u, const std::vector<mesh::Face>& faces);
 
 /// @brief Contact rows of `pair` at the displacement `u`: build_node_to_segment_constraints or
 /// build_mortar_constraints (mortar_constraints.hpp) according to options.formulation.
@@ -191,25 +189,20 @@ double largest_face_diagonal(const mesh::HexMesh& mesh, const la::Vector& u,
 /// @return rows sorted by slave node id
 /// @throws feticon::Error for an unknown face set, an empty master set, a wrong size of u or a
 ///         negative search distance or rim extension, or mortar_min_overlap outside (0, 1].
-ContactConstraints build_contact_constraints(const mesh::HexMesh& mesh, const la::Vector& u,
-                                             const ContactPair& pair,
+ContactConstraints build_contact_constraints(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair,
                                              const ContactOptions& options = {});
 
 /// @brief Node-to-segment rows of `pair` (see file comment); options.formulation is ignored.
 /// Arguments, result and errors as build_contact_constraints.
-ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh,
-                                                     const la::Vector& u,
-                                                     const ContactPair& pair,
-                                                     const ContactOptions& options = {});
+ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh, const la::Vector& u,
+                                                     const ContactPair& pair, const ContactOptions& options = {});
 
 /// @brief Constraint forces -B' lambda_hat on the structure (N, per global DOF), with lambda_hat
 /// the multipliers of the normalized rows.
 /// @param[in] n_global_dofs length of the result, = B.cols() (3 n_nodes)
-la::Vector contact_forces(const ContactConstraints& constraints, const la::Vector& lambda_hat,
-                          int64_t n_global_dofs);
+la::Vector contact_forces(const ContactConstraints& constraints, const la::Vector& lambda_hat, int64_t n_global_dofs);
 
 /// @brief Normal force magnitude on the slave node of each row, lambda_hat_i / |b_i| (N); the
 /// force on slave_node[i] is this times normal[i].
-la::Vector slave_normal_forces(const ContactConstraints& constraints,
-                               const la::Vector& lambda_hat);
+la::Vector slave_normal_forces(const ContactConstraints& constraints, const la::Vector& lambda_hat);
 } // namespace feticon::contact

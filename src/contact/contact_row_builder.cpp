@@ -16,7 +16,8 @@ void ContactRowBuilder::append_fields(const ContactRowFields& fields, double nor
   _out.kind.push_back(fields.kind);
 }
 
-void ContactRowBuilder::add(const ContactRowFields& fields, const std::vector<std::pair<int32_t, double>>& master_weights)
+void ContactRowBuilder::add(const ContactRowFields& fields,
+                            const std::vector<std::pair<int32_t, double>>& master_weights)
 {
   const auto row = static_cast<int>(n_rows());
   double weights_squared = 0;
@@ -41,9 +42,9 @@ void ContactRowBuilder::copy(const ContactConstraints& from, la::Index i, double
   const auto row = static_cast<int>(n_rows());
   for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(from.B, i); it; ++it)
     _triplets.emplace_back(row, static_cast<int>(it.col()), it.value());
-  append_fields({from.slave_node[i], from.normal[i], gap, from.slave_area[i], from.master_face[i], from.xi[i],
-                 from.kind[i]},
-                from.row_norm[i]);
+  append_fields(
+      {from.slave_node[i], from.normal[i], gap, from.slave_area[i], from.master_face[i], from.xi[i], from.kind[i]},
+      from.row_norm[i]);
 }
 
 void ContactRowBuilder::finish(la::Index n_dofs, ContactConstraints& into)

@@ -35,8 +35,7 @@ void add_to_row(CouplingRow& row, int32_t master_node, double value)
 
 bool share_a_node(const mesh::Face& first, const mesh::Face& second)
 {
-  return std::ranges::any_of(first, [&](int32_t node)
-                             { return std::ranges::find(second, node) != second.end(); });
+  return std::ranges::any_of(first, [&](int32_t node) { return std::ranges::find(second, node) != second.end(); });
 }
 
 Eigen::Vector3d current_position(const mesh::HexMesh& mesh, const la::Vector& u, int32_t node)
@@ -51,14 +50,13 @@ void check_displacement(const mesh::HexMesh& mesh, const la::Vector& u)
 {
   const la::Index n_dofs = 3 * static_cast<la::Index>(mesh.n_nodes());
   FETICON_CHECK(u.size() == 0 || u.size() == n_dofs,
-                "mortar: displacement has " << u.size() << " entries, expected 3 * n_nodes = "
-                                            << n_dofs << " (or 0 for u = 0)");
+                "mortar: displacement has " << u.size() << " entries, expected 3 * n_nodes = " << n_dofs
+                                            << " (or 0 for u = 0)");
 }
 
 /// What mortar integration needs of its input: u of the mesh, a positive search distance and
 /// non-empty slave and master face sets (mortar integrates whole faces, not nodes).
-void check_mortar_input(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair,
-                        double search_distance)
+void check_mortar_input(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair, double search_distance)
 {
   check_displacement(mesh, u);
   FETICON_CHECK(std::isfinite(search_distance) && search_distance > 0,
@@ -84,8 +82,7 @@ double SlaveNodalAreas::of(int32_t node) const
   return area(j);
 }
 
-SlaveNodalAreas slave_nodal_areas(const mesh::HexMesh& mesh, const la::Vector& u,
-                                  const std::string& slave)
+SlaveNodalAreas slave_nodal_areas(const mesh::HexMesh& mesh, const la::Vector& u, const std::string& slave)
 {
   check_displacement(mesh, u);
   SlaveNodalAreas areas;
@@ -100,9 +97,8 @@ SlaveNodalAreas slave_nodal_areas(const mesh::HexMesh& mesh, const la::Vector& u
   return areas;
 }
 
-MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vector& u,
-                                       const ContactPair& pair, double search_distance,
-                                       const SegmentOptions& options,
+MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair,
+                                       double search_distance, const SegmentOptions& options,
                                        const std::vector<int32_t>* row_nodes)
 {
   check_mortar_input(mesh, u, pair, search_distance);
@@ -144,12 +140,12 @@ MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vect
     for (const int32_t node : *row_nodes)
       is_row_node[node] = 1;
   }
-  const auto integrated = [&](const mesh::Face& face)
-  { return !row_nodes || std::ranges::any_of(face, [&](int32_t node) { return is_row_node[node] != 0; }); };
+  const auto integrated = [&](const mesh::Face& face) {
+    return !row_nodes || std::ranges::any_of(face, [&](int32_t node) { return is_row_node[node] != 0; });
+  };
   constexpr int32_t faces_per_chunk = 64;
   const auto n_chunks = static_cast<int32_t>((slave_faces.size() + faces_per_chunk - 1) / faces_per_chunk);
-  parallel_for(0, n_chunks, setup_work, [&](int32_t chunk)
-  {
+  parallel_for(0, n_chunks, setup_work, [&](int32_t chunk) {
     std::vector<int32_t> candidates;
     const size_t end = std::min(slave_faces.size(), static_cast<size_t>(chunk + 1) * faces_per_chunk);
     for (size_t i = static_cast<size_t>(chunk) * faces_per_chunk; i < end; ++i)
@@ -199,8 +195,8 @@ MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vect
   return coupling;
 }
 
-ContactConstraints build_mortar_constraints(const mesh::HexMesh& mesh, const la::Vector& u,
-                                            const ContactPair& pair, const ContactOptions& options)
+ContactConstraints build_mortar_constraints(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair,
+                                            const ContactOptions& options)
 {
   // Validates the input and gives, per slave node, whether a row exists and its normal.
   ContactConstraints closest = build_node_to_segment_constraints(mesh, u, pair, options);

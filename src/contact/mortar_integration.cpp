@@ -37,10 +37,7 @@ struct AuxiliaryPlane
   Eigen::Vector3d axis_1;
   Eigen::Vector3d axis_2;
 
-  Eigen::Vector2d project(const Eigen::Vector3d& x) const
-  {
-    return {axis_1.dot(x - origin), axis_2.dot(x - origin)};
-  }
+  Eigen::Vector2d project(const Eigen::Vector3d& x) const { return {axis_1.dot(x - origin), axis_2.dot(x - origin)}; }
   Eigen::Matrix<double, 4, 2> project(const QuadCoordinates& quad) const
   {
     Eigen::Matrix<double, 4, 2> corners;
@@ -56,17 +53,13 @@ AuxiliaryPlane auxiliary_plane(const QuadCoordinates& slave)
   plane.origin = quad_point(slave, Eigen::Vector2d::Zero());
   plane.normal = quad_normal(slave, Eigen::Vector2d::Zero());
   // x_,xi at the centre is orthogonal to n_0 = x_,xi x x_,eta / |.| by construction.
-  const Eigen::Vector3d d_xi =
-      slave.transpose() * shape_derivatives(Eigen::Vector2d::Zero()).col(0);
+  const Eigen::Vector3d d_xi = slave.transpose() * shape_derivatives(Eigen::Vector2d::Zero()).col(0);
   plane.axis_1 = d_xi.normalized();
   plane.axis_2 = plane.normal.cross(plane.axis_1);
   return plane;
 }
 
-double cross_2d(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
-{
-  return a(0) * b(1) - a(1) * b(0);
-}
+double cross_2d(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a(0) * b(1) - a(1) * b(0); }
 
 /// Whether the polygon (corners in order) turns left at every corner by more than round-off.
 bool strictly_convex_ccw(const std::vector<Eigen::Vector2d>& polygon)
@@ -165,8 +158,7 @@ Eigen::Vector4d face_nodal_areas(const QuadCoordinates& face)
   const QuadratureRule2d& rule = face_rule();
   Eigen::Vector4d areas = Eigen::Vector4d::Zero();
   for (size_t q = 0; q < rule.points.size(); ++q)
-    areas += rule.weights[q] * surface_jacobian(face, rule.points[q]) *
-             quad_shape_functions(rule.points[q]);
+    areas += rule.weights[q] * surface_jacobian(face, rule.points[q]) * quad_shape_functions(rule.points[q]);
   return areas;
 }
 
@@ -243,8 +235,7 @@ std::optional<Eigen::Vector2d> inverse_bilinear(const Eigen::Matrix<double, 4, 2
   Eigen::Vector2d xi = Eigen::Vector2d::Zero();
   for (int iteration = 0; iteration < 30; ++iteration)
   {
-    const Eigen::Vector2d residual =
-        point - corners.transpose() * quad_shape_functions(xi);
+    const Eigen::Vector2d residual = point - corners.transpose() * quad_shape_functions(xi);
     const Eigen::Matrix2d jacobian = corners.transpose() * shape_derivatives(xi);
     const double determinant = jacobian.determinant();
     if (!(std::abs(determinant) > 0) || !std::isfinite(determinant))
@@ -260,15 +251,12 @@ std::optional<Eigen::Vector2d> inverse_bilinear(const Eigen::Matrix<double, 4, 2
   return std::nullopt;
 }
 
-std::optional<SegmentCoupling> integrate_segment(const QuadCoordinates& slave,
-                                                 const DualBasis& dual,
-                                                 const QuadCoordinates& master,
-                                                 const SegmentOptions& options)
+std::optional<SegmentCoupling> integrate_segment(const QuadCoordinates& slave, const DualBasis& dual,
+                                                 const QuadCoordinates& master, const SegmentOptions& options)
 {
   static const QuadratureRule2d default_rule = gauss_triangle(SegmentOptions{}.triangle_points);
   const bool default_points = options.triangle_points == SegmentOptions{}.triangle_points;
-  const QuadratureRule2d custom_rule =
-      default_points ? QuadratureRule2d{} : gauss_triangle(options.triangle_points);
+  const QuadratureRule2d custom_rule = default_points ? QuadratureRule2d{} : gauss_triangle(options.triangle_points);
   const QuadratureRule2d& rule = default_points ? default_rule : custom_rule;
   const AuxiliaryPlane plane = auxiliary_plane(slave);
   if (!(-quad_normal(master, Eigen::Vector2d::Zero()).dot(plane.normal) >= options.min_facing))
@@ -286,14 +274,13 @@ std::optional<SegmentCoupling> integrate_segment(const QuadCoordinates& slave,
   }
   FETICON_CHECK(strictly_convex_ccw(slave_polygon),
                 "mortar: a slave face is not convex in its auxiliary plane (corners "
-                    << slave.row(0) << "; " << slave.row(1) << "; " << slave.row(2) << "; "
-                    << slave.row(3) << "); check the mesh");
+                    << slave.row(0) << "; " << slave.row(1) << "; " << slave.row(2) << "; " << slave.row(3)
+                    << "); check the mesh");
   if (!strictly_convex_ccw(master_polygon))
     return std::nullopt;
 
   const std::vector<Eigen::Vector2d> polygon = clip_polygon(master_polygon, slave_polygon);
-  if (polygon.empty() ||
-      !(polygon_area(polygon) > options.min_area_fraction * polygon_area(slave_polygon)))
+  if (polygon.empty() || !(polygon_area(polygon) > options.min_area_fraction * polygon_area(slave_polygon)))
     return std::nullopt;
 
   // Fan about the vertex mean, which lies inside the convex intersection.
@@ -310,19 +297,14 @@ std::optional<SegmentCoupling> integrate_segment(const QuadCoordinates& slave,
     const double triangle_area = 0.5 * cross_2d(edge_1, edge_2);
     for (size_t q = 0; q < rule.points.size(); ++q)
     {
-      const Eigen::Vector2d point =
-          centre + rule.points[q](0) * edge_1 + rule.points[q](1) * edge_2;
+      const Eigen::Vector2d point = centre + rule.points[q](0) * edge_1 + rule.points[q](1) * edge_2;
       const std::optional<Eigen::Vector2d> xi_slave = inverse_bilinear(slave_corners, point);
       const std::optional<Eigen::Vector2d> xi_master = inverse_bilinear(master_corners, point);
       FETICON_CHECK(xi_slave && xi_master,
-                    "mortar: inverse bilinear map failed at plane point " << point.transpose()
-                                                                           << "; check the mesh");
-      const double planar_jacobian =
-          std::abs((slave_corners.transpose() * shape_derivatives(*xi_slave)).determinant());
-      const double area =
-          rule.weights[q] * triangle_area * surface_jacobian(slave, *xi_slave) / planar_jacobian;
-      segment.coupling += area * dual_shape_functions(dual, *xi_slave) *
-                          quad_shape_functions(*xi_master).transpose();
+                    "mortar: inverse bilinear map failed at plane point " << point.transpose() << "; check the mesh");
+      const double planar_jacobian = std::abs((slave_corners.transpose() * shape_derivatives(*xi_slave)).determinant());
+      const double area = rule.weights[q] * triangle_area * surface_jacobian(slave, *xi_slave) / planar_jacobian;
+      segment.coupling += area * dual_shape_functions(dual, *xi_slave) * quad_shape_functions(*xi_master).transpose();
       segment.area += area;
     }
   }

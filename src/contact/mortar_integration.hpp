@@ -117,8 +117,6 @@ struct SegmentOptions
 /// `master` (file comment).
 /// @return nothing if the faces do not overlap in the auxiliary plane, the master face does not
 /// face the slave (SegmentOptions::min_facing), or a projected face is not strictly convex.
-std::optional<SegmentCoupling> integrate_segment(const QuadCoordinates& slave,
-                                                 const DualBasis& dual,
-                                                 const QuadCoordinates& master,
-                                                 const SegmentOptions& options = {});
+std::optional<SegmentCoupling> integrate_segment(const QuadCoordinates& slave, const DualBasis& dual,
+                                                 const QuadCoordinates& master, const SegmentOptions& options = {});
 } // namespace feticon::contact

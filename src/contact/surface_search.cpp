@@ -31,8 +31,7 @@ double cells_overlapped(const BoundingBox& box, const Eigen::Vector3d& origin, d
 {
   double count = 1;
   for (int axis = 0; axis < 3; ++axis)
-    count *= std::floor((box.upper(axis) - origin(axis)) / h) -
-             std::floor((box.lower(axis) - origin(axis)) / h) + 1;
+    count *= std::floor((box.upper(axis) - origin(axis)) / h) - std::floor((box.lower(axis) - origin(axis)) / h) + 1;
   return count;
 }
 } // namespace
@@ -43,11 +42,9 @@ SurfaceSearch::SurfaceSearch(std::vector<BoundingBox> boxes) : _boxes(std::move(
   for (size_t k = 0; k < _boxes.size(); ++k)
   {
     const BoundingBox& box = _boxes[k];
-    FETICON_CHECK(box.lower.allFinite() && box.upper.allFinite() &&
-                      (box.lower.array() <= box.upper.array()).all(),
-                  "surface search: bounding box " << k << " is empty or not finite (lower "
-                                                  << box.lower.transpose() << ", upper "
-                                                  << box.upper.transpose() << ")");
+    FETICON_CHECK(box.lower.allFinite() && box.upper.allFinite() && (box.lower.array() <= box.upper.array()).all(),
+                  "surface search: bounding box " << k << " is empty or not finite (lower " << box.lower.transpose()
+                                                  << ", upper " << box.upper.transpose() << ")");
     _bounds.extend(box.lower);
     _bounds.extend(box.upper);
     extent_sum += (box.upper - box.lower).maxCoeff();
@@ -71,15 +68,13 @@ SurfaceSearch::SurfaceSearch(std::vector<BoundingBox> boxes) : _boxes(std::move(
     _cell_size *= 2;
   }
 
-  const auto n_buckets =
-      static_cast<int64_t>(std::bit_ceil(static_cast<uint64_t>(n_cell_entries)));
+  const auto n_buckets = static_cast<int64_t>(std::bit_ceil(static_cast<uint64_t>(n_cell_entries)));
   // Two passes over the same cells: count, then fill. Boxes are visited in id order, so a box that
   // reaches a bucket twice (two of its cells collide) is the last entry there and is skipped, and
   // every bucket lists its boxes sorted.
   _offsets.assign(n_buckets + 1, 0); // sets n_buckets() for bucket_of()
   std::vector<int32_t> last_box(n_buckets, -1);
-  auto for_each_bucket = [&](int32_t k, auto&& visit)
-  {
+  auto for_each_bucket = [&](int32_t k, auto&& visit) {
     const std::array<int64_t, 3> lo = cell_of(_boxes[k].lower);
     const std::array<int64_t, 3> hi = cell_of(_boxes[k].upper);
     for (int64_t i = lo[0]; i <= hi[0]; ++i)
@@ -109,8 +104,7 @@ std::array<int64_t, 3> SurfaceSearch::cell_of(const Eigen::Vector3d& point) cons
 {
   std::array<int64_t, 3> cell{};
   for (int axis = 0; axis < 3; ++axis)
-    cell[axis] =
-        static_cast<int64_t>(std::floor((point(axis) - _bounds.lower(axis)) / _cell_size));
+    cell[axis] = static_cast<int64_t>(std::floor((point(axis) - _bounds.lower(axis)) / _cell_size));
   return cell;
 }
 

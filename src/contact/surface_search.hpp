@@ -53,8 +53,7 @@ struct BoundingBox
   /// Whether the two closed boxes share at least a point.
   bool intersects(const BoundingBox& other) const
   {
-    return (lower.array() <= other.upper.array()).all() &&
-           (other.lower.array() <= upper.array()).all();
+    return (lower.array() <= other.upper.array()).all() && (other.lower.array() <= upper.array()).all();
   }
   /// Euclidean distance from `point` to the box, 0 inside (m).
   double distance(const Eigen::Vector3d& point) const

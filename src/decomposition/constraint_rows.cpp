@@ -54,8 +54,7 @@ std::vector<std::vector<size_t>> equation_groups(const std::vector<fem::ReducedE
   std::vector<size_t> parent(equations.size());
   for (size_t e = 0; e < parent.size(); ++e)
     parent[e] = e;
-  const auto root = [&](size_t e)
-  {
+  const auto root = [&](size_t e) {
     while (parent[e] != e)
       e = parent[e] = parent[parent[e]];
     return e;
@@ -91,9 +90,8 @@ std::vector<EquationRow> orthonormal_equation_rows(const Decomposition& decompos
                                                    const std::vector<fem::LinearEquation>& equations)
 {
   const mesh::HexMesh& mesh = decomposition.mesh();
-  const std::vector<fem::ReducedEquation> reduced =
-      fem::reduce_equations(equations, 3 * static_cast<int64_t>(mesh.n_nodes()), dirichlet,
-                            decomposition.eliminated(), &mesh);
+  const std::vector<fem::ReducedEquation> reduced = fem::reduce_equations(
+      equations, 3 * static_cast<int64_t>(mesh.n_nodes()), dirichlet, decomposition.eliminated(), &mesh);
   std::vector<EquationRow> out(reduced.size());
   for (const std::vector<size_t>& group : equation_groups(reduced))
   {
@@ -160,14 +158,12 @@ std::vector<EquationRow> orthonormal_equation_rows(const Decomposition& decompos
 }
 } // namespace
 
-EqualityRows build_equality_rows(const Decomposition& decomposition,
-                                 const fem::ConstrainedDofs& dirichlet,
+EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::ConstrainedDofs& dirichlet,
                                  const std::vector<fem::LinearEquation>& equations)
 {
   const mesh::HexMesh& mesh = decomposition.mesh();
   // Prescribed value per global DOF (NaN where free).
-  std::vector<double> prescribed(3 * static_cast<size_t>(mesh.n_nodes()),
-                                 std::numeric_limits<double>::quiet_NaN());
+  std::vector<double> prescribed(3 * static_cast<size_t>(mesh.n_nodes()), std::numeric_limits<double>::quiet_NaN());
   for (size_t k = 0; k < dirichlet.dofs.size(); ++k)
     prescribed[dirichlet.dofs[k]] = dirichlet.values(static_cast<la::Index>(k));
 
@@ -183,12 +179,11 @@ EqualityRows build_equality_rows(const Decomposition& decomposition,
       if (decomposition.eliminated()[i])
       {
         FETICON_CHECK(std::isnan(value) || value == 0.0,
-                      "component " << i << " is eliminated (plane strain) but node " << node
-                                   << " prescribes " << value << " for it");
+                      "component " << i << " is eliminated (plane strain) but node " << node << " prescribes " << value
+                                   << " for it");
         continue;
       }
-      auto dof_of = [&](const NodeCopy& copy)
-      {
+      auto dof_of = [&](const NodeCopy& copy) {
         const Subdomain& sub = decomposition.subdomain(copy.subdomain);
         return sub.active_of_full[3 * copy.local_node + i];
       };
@@ -241,8 +236,7 @@ EqualityRows build_equality_rows(const Decomposition& decomposition,
 }
 
 ConstraintRows rows_from_global(const Decomposition& decomposition,
-                                const Eigen::SparseMatrix<double, Eigen::RowMajor>& B_global,
-                                const la::Vector& c)
+                                const Eigen::SparseMatrix<double, Eigen::RowMajor>& B_global, const la::Vector& c)
 {
   FETICON_CHECK(B_global.cols() == 3 * decomposition.mesh().n_nodes() && B_global.rows() == c.size(),
                 "constraint rows do not match the mesh");

@@ -69,13 +69,12 @@ private:
 struct EqualityRows
 {
   ConstraintRows rows;
-  int64_t n_gluing = 0;    ///< global counts
+  int64_t n_gluing = 0; ///< global counts
   int64_t n_dirichlet = 0;
   int64_t n_equations = 0;
   int64_t n_global() const { return n_gluing + n_dirichlet + n_equations; }
 };
-EqualityRows build_equality_rows(const Decomposition& decomposition,
-                                 const fem::ConstrainedDofs& dirichlet,
+EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::ConstrainedDofs& dirichlet,
                                  const std::vector<fem::LinearEquation>& equations = {});
 
 /// Converts rows over global mesh DOFs (3*node + component; `B_global` row-major, one row
@@ -84,6 +83,5 @@ EqualityRows build_equality_rows(const Decomposition& decomposition,
 /// components are identically zero. Row r gets id r; only rows touching owned subdomains
 /// are kept.
 ConstraintRows rows_from_global(const Decomposition& decomposition,
-                                const Eigen::SparseMatrix<double, Eigen::RowMajor>& B_global,
-                                const la::Vector& c);
+                                const Eigen::SparseMatrix<double, Eigen::RowMajor>& B_global, const la::Vector& c);
 } // namespace feticon::decomposition

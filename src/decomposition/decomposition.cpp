@@ -7,13 +7,12 @@
 
 namespace feticon::decomposition
 {
-Decomposition::Decomposition(const mesh::HexMesh& mesh, const Partition& partition,
-                             std::array<bool, 3> eliminated, par::Communicator comm)
+Decomposition::Decomposition(const mesh::HexMesh& mesh, const Partition& partition, std::array<bool, 3> eliminated,
+                             par::Communicator comm)
     : _mesh(mesh), _partition(partition), _eliminated(eliminated), _comm(comm)
 {
   FETICON_CHECK(static_cast<int32_t>(partition.cell_subdomain.size()) == mesh.n_cells(),
-                "partition has " << partition.cell_subdomain.size() << " cells, the mesh "
-                                 << mesh.n_cells());
+                "partition has " << partition.cell_subdomain.size() << " cells, the mesh " << mesh.n_cells());
   std::vector<std::vector<int32_t>> cells(partition.n_subdomains);
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
     cells[partition.cell_subdomain[c]].push_back(c);
@@ -66,8 +65,7 @@ Decomposition::Decomposition(const mesh::HexMesh& mesh, const Partition& partiti
 
 int Decomposition::owner_rank(int32_t s) const
 {
-  return static_cast<int>(std::upper_bound(_rank_first.begin(), _rank_first.end(), s) -
-                          _rank_first.begin()) - 1;
+  return static_cast<int>(std::upper_bound(_rank_first.begin(), _rank_first.end(), s) - _rank_first.begin()) - 1;
 }
 
 la::Vector Decomposition::gather_stacked(const la::Vector& stacked) const
@@ -84,8 +82,7 @@ Eigen::VectorBlock<la::Vector> Decomposition::segment(la::Vector& stacked, int32
   return stacked.segment(offset(s), _offsets[s + 1] - _offsets[s]);
 }
 
-Eigen::VectorBlock<const la::Vector> Decomposition::segment(const la::Vector& stacked,
-                                                            int32_t s) const
+Eigen::VectorBlock<const la::Vector> Decomposition::segment(const la::Vector& stacked, int32_t s) const
 {
   FETICON_ASSERT(owns(s), "segment of a subdomain owned by another rank");
   return stacked.segment(offset(s), _offsets[s + 1] - _offsets[s]);

@@ -28,9 +28,9 @@ struct Subdomain
 {
   int32_t id = 0;
   int32_t body = 0;
-  fem::AssemblyDomain domain;           ///< cells and local node numbering
-  std::vector<int32_t> active_of_full;  ///< local full DOF 3n+i -> active DOF, -1 if eliminated
-  std::vector<int32_t> full_of_active;  ///< active DOF -> local full DOF 3n+i
+  fem::AssemblyDomain domain;          ///< cells and local node numbering
+  std::vector<int32_t> active_of_full; ///< local full DOF 3n+i -> active DOF, -1 if eliminated
+  std::vector<int32_t> full_of_active; ///< active DOF -> local full DOF 3n+i
   int32_t n_dofs() const { return static_cast<int32_t>(full_of_active.size()); }
 };
 
@@ -98,8 +98,8 @@ private:
   std::array<bool, 3> _eliminated;
   std::vector<Subdomain> _subdomains;
   par::Communicator _comm;
-  std::vector<int32_t> _rank_first;  ///< rank r owns subdomains [_rank_first[r], _rank_first[r+1])
-  std::vector<int64_t> _offsets;     ///< global stacked offsets of all subdomains
+  std::vector<int32_t> _rank_first; ///< rank r owns subdomains [_rank_first[r], _rank_first[r+1])
+  std::vector<int64_t> _offsets;    ///< global stacked offsets of all subdomains
   std::vector<std::vector<NodeCopy>> _copies;
 };
 } // namespace feticon::decomposition

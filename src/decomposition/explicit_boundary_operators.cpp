@@ -21,8 +21,8 @@ la::Matrix eliminate_fixing_dofs(const la::Matrix& S_ext, la::Index nb, const st
   // success is a singular or non-finite subdomain, named here (the implicit path throws too).
   const Eigen::LLT<la::Matrix> S_gg(S_ext.bottomRightCorner(ng, ng));
   FETICON_CHECK(S_gg.info() == Eigen::Success && S_gg.matrixLLT().allFinite(),
-                "the Schur complement S'_gg of the fixing DOFs of " << what
-                    << " is not positive definite (a singular or non-finite subdomain)");
+                "the Schur complement S'_gg of the fixing DOFs of "
+                    << what << " is not positive definite (a singular or non-finite subdomain)");
   S -= S_ext.topRightCorner(nb, ng) * S_gg.solve(S_ext.bottomLeftCorner(ng, nb));
   return S;
 }
@@ -70,7 +70,8 @@ la::Vector form_blocks(const la::SparseMatrix& K, const GeneralizedInverse& K_pl
     const auto& dofs = K_plus.fixing_dofs();
     for (size_t i = 0; i < dofs.size(); ++i)
       for (size_t j = 0; j < dofs.size(); ++j)
-        M(where[dofs[i]], where[dofs[j]]) += K_plus.regularization()(static_cast<la::Index>(i), static_cast<la::Index>(j));
+        M(where[dofs[i]], where[dofs[j]]) +=
+            K_plus.regularization()(static_cast<la::Index>(i), static_cast<la::Index>(j));
     la::invert_spd(M, inverse_of.c_str());
     K_plus_bb = M.topLeftCorner(nb, nb);
   }
@@ -82,8 +83,7 @@ la::Vector form_blocks(const la::SparseMatrix& K, const GeneralizedInverse& K_pl
 }
 } // namespace
 
-ExplicitBoundaryOperators::ExplicitBoundaryOperators(const SubdomainSystem& system,
-                                                     const SchurComplements& schur,
+ExplicitBoundaryOperators::ExplicitBoundaryOperators(const SubdomainSystem& system, const SchurComplements& schur,
                                                      ExplicitBoundaryOperators* reuse)
 {
   const Decomposition& decomp = system.decomposition();
@@ -98,8 +98,7 @@ ExplicitBoundaryOperators::ExplicitBoundaryOperators(const SubdomainSystem& syst
         form[k] = 0;
       }
   _formed = static_cast<int32_t>(std::count(form.begin(), form.end(), 1));
-  parallel_for(decomp.first_owned(), decomp.end_owned(), setup_work, [&](int32_t s)
-  {
+  parallel_for(decomp.first_owned(), decomp.end_owned(), setup_work, [&](int32_t s) {
     if (!form[s - _first])
       return;
     Local& local = _local[s - _first];

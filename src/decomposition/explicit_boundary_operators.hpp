@@ -62,8 +62,8 @@ private:
   struct Local
   {
     std::vector<int32_t> boundary;
-    la::Matrix blocks;               ///< sigma (K_s+)_bb in the lower triangle, S_s / sigma in the upper
-    la::Vector schur_minus_K_plus;   ///< diag(S_s) / sigma - sigma diag((K_s+)_bb)
+    la::Matrix blocks;             ///< sigma (K_s+)_bb in the lower triangle, S_s / sigma in the upper
+    la::Vector schur_minus_K_plus; ///< diag(S_s) / sigma - sigma diag((K_s+)_bb)
     double sigma = 1;
   };
   const Local& local(int32_t s) const { return _local[s - _first]; }

@@ -7,8 +7,7 @@
 
 namespace feticon::decomposition
 {
-std::vector<int32_t> choose_fixing_nodes(
-    const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& coords)
+std::vector<int32_t> choose_fixing_nodes(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& coords)
 {
   const la::Index n = coords.rows();
   FETICON_CHECK(n >= 3, "a subdomain needs at least 3 nodes, it has " << n);
@@ -30,8 +29,8 @@ std::vector<int32_t> choose_fixing_nodes(
 }
 
 void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
-                               const std::vector<int32_t>& fixing_candidates,
-                               GeneralizedInverseMethod method, const std::string& what)
+                               const std::vector<int32_t>& fixing_candidates, GeneralizedInverseMethod method,
+                               const std::string& what)
 {
   _method = method;
   _n = K.rows();
@@ -63,8 +62,9 @@ void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
       }
       Eigen::JacobiSVD<la::Matrix> svd(block);
       const auto& sv = svd.singularValues();
-      FETICON_CHECK(sv(k - 1) > 1e-8 * sv(0), what << ": fixing nodes do not determine the "
-                                                   << "rigid-body modes (degenerate subdomain?)");
+      FETICON_CHECK(sv(k - 1) > 1e-8 * sv(0),
+                    what << ": fixing nodes do not determine the "
+                         << "rigid-body modes (degenerate subdomain?)");
     }
     _kept.clear();
     for (la::Index i = 0; i < _n; ++i)
@@ -73,8 +73,7 @@ void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
         position[i] = static_cast<int32_t>(_kept.size());
         _kept.push_back(static_cast<int32_t>(i));
       }
-    _factor.factorize(la::principal_submatrix(K, position, static_cast<int32_t>(_kept.size())),
-                      what.c_str());
+    _factor.factorize(la::principal_submatrix(K, position, static_cast<int32_t>(_kept.size())), what.c_str());
     return;
   }
 

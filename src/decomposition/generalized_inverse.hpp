@@ -26,8 +26,7 @@ enum class GeneralizedInverseMethod
 
 /// Three far-apart, non-collinear nodes: a farthest from the centroid, b farthest from a,
 /// c maximizing the area of triangle abc.
-std::vector<int32_t> choose_fixing_nodes(
-    const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& coords);
+std::vector<int32_t> choose_fixing_nodes(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& coords);
 
 class GeneralizedInverse
 {
@@ -36,9 +35,8 @@ public:
   /// @param R                 orthonormal kernel basis of K
   /// @param fixing_candidates active DOFs of the fixing nodes
   /// @param what              name used in error messages (e.g. "subdomain 3")
-  void setup(const la::SparseMatrix& K, const la::Matrix& R,
-             const std::vector<int32_t>& fixing_candidates, GeneralizedInverseMethod method,
-             const std::string& what);
+  void setup(const la::SparseMatrix& K, const la::Matrix& R, const std::vector<int32_t>& fixing_candidates,
+             GeneralizedInverseMethod method, const std::string& what);
 
   /// K+ b.
   la::Vector apply(const la::Vector& b) const;

@@ -32,8 +32,7 @@ bool face_graph_connected(const std::vector<idx_t>& xadj, const std::vector<idx_
   return queue.size() == n;
 }
 
-void cell_face_graph(const mesh::HexMesh& mesh, std::vector<idx_t>& xadj,
-                     std::vector<idx_t>& adjncy)
+void cell_face_graph(const mesh::HexMesh& mesh, std::vector<idx_t>& xadj, std::vector<idx_t>& adjncy)
 {
   std::map<std::array<int32_t, 4>, std::vector<int32_t>> face_cells;
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
@@ -65,11 +64,10 @@ void cell_face_graph(const mesh::HexMesh& mesh, std::vector<idx_t>& xadj,
 std::vector<int> parts_per_body(const mesh::HexMesh& mesh, int n_subdomains)
 {
   FETICON_CHECK(n_subdomains >= mesh.n_bodies(),
-                "partition: " << n_subdomains << " subdomains requested but the mesh has "
-                              << mesh.n_bodies() << " bodies (at least one each)");
+                "partition: " << n_subdomains << " subdomains requested but the mesh has " << mesh.n_bodies()
+                              << " bodies (at least one each)");
   FETICON_CHECK(n_subdomains <= mesh.n_cells(),
-                "partition: " << n_subdomains << " subdomains requested for " << mesh.n_cells()
-                              << " cells");
+                "partition: " << n_subdomains << " subdomains requested for " << mesh.n_cells() << " cells");
   std::vector<int32_t> body_cells(mesh.n_bodies(), 0);
   for (int32_t b : mesh.cell_body)
     ++body_cells[b];
@@ -79,8 +77,7 @@ std::vector<int> parts_per_body(const mesh::HexMesh& mesh, int n_subdomains)
   {
     int best = 0;
     for (int b = 1; b < mesh.n_bodies(); ++b)
-      if (static_cast<double>(body_cells[b]) / body_parts[b] >
-          static_cast<double>(body_cells[best]) / body_parts[best])
+      if (static_cast<double>(body_cells[b]) / body_parts[b] > static_cast<double>(body_cells[best]) / body_parts[best])
         best = b;
     ++body_parts[best];
   }
@@ -144,13 +141,11 @@ void bisect(std::vector<int32_t>& cells, size_t first, size_t last, int n, int32
   // Ties along the axis (a column of cells at one abscissa) are broken by the other
   // coordinates, so that a cut through the column leaves both halves connected.
   const int second = (axis + 1) % 3, third = (axis + 2) % 3;
-  std::sort(cells.begin() + first, cells.begin() + last,
-            [&](int32_t a, int32_t b)
-            {
-              const Eigen::Vector3d& x = centroid[a];
-              const Eigen::Vector3d& y = centroid[b];
-              return std::tie(x(axis), x(second), x(third)) < std::tie(y(axis), y(second), y(third));
-            });
+  std::sort(cells.begin() + first, cells.begin() + last, [&](int32_t a, int32_t b) {
+    const Eigen::Vector3d& x = centroid[a];
+    const Eigen::Vector3d& y = centroid[b];
+    return std::tie(x(axis), x(second), x(third)) < std::tie(y(axis), y(second), y(third));
+  });
   // Cut between two layers of cells when one lies within half a part of the balanced cut:
   // on structured meshes the parts are then boxes, not boxes with a step where the cut
   // crossed a column (the weak-scaling punch at 15 cells per subdomain, 63 to 4 032
@@ -158,8 +153,7 @@ void bisect(std::vector<int32_t>& cells, size_t first, size_t last, int n, int32
   // Unstructured meshes have no layers; the balanced cut stays.
   const size_t balanced = first + (last - first) * n_first / n;
   const size_t window = (last - first) / (2 * static_cast<size_t>(n));
-  auto layer_boundary = [&](size_t k)
-  {
+  auto layer_boundary = [&](size_t k) {
     const double gap = centroid[cells[k]](axis) - centroid[cells[k - 1]](axis);
     return gap > 1e-6 * std::min(size[cells[k]](axis), size[cells[k - 1]](axis));
   };
@@ -206,8 +200,7 @@ Partition partition_structured(const mesh::HexMesh& mesh, std::array<int, 3> par
       for (int d = 2; d >= 0; --d)
       {
         const double extent = hi(d) - lo(d);
-        int k = extent > 0 ? static_cast<int>(std::floor((centroid[c](d) - lo(d)) / extent * parts[d]))
-                           : 0;
+        int k = extent > 0 ? static_cast<int>(std::floor((centroid[c](d) - lo(d)) / extent * parts[d])) : 0;
         k = std::clamp(k, 0, parts[d] - 1);
         box = box * parts[d] + k;
       }
@@ -261,13 +254,12 @@ Partition partition_metis(const mesh::HexMesh& mesh, int n_subdomains)
     // face graph, and METIS refuses CONTIG there (printing its own message): split_disconnected
     // below makes such parts connected.
     options[METIS_OPTION_CONTIG] = face_graph_connected(sub_xadj, sub_adjncy) ? 1 : 0;
-    options[METIS_OPTION_SEED] = 1;   // reproducible partitions
-    const int status = METIS_PartGraphKway(&nvtxs, &ncon, sub_xadj.data(), sub_adjncy.data(),
-                                           nullptr, nullptr, nullptr, &nparts, nullptr, nullptr,
-                                           options, &objval, part.data());
-    FETICON_CHECK(status == METIS_OK, "METIS failed to partition body '"
-                                          << mesh.body_names[body] << "' into " << nparts
-                                          << " parts (status " << status << ")");
+    options[METIS_OPTION_SEED] = 1; // reproducible partitions
+    const int status = METIS_PartGraphKway(&nvtxs, &ncon, sub_xadj.data(), sub_adjncy.data(), nullptr, nullptr, nullptr,
+                                           &nparts, nullptr, nullptr, options, &objval, part.data());
+    FETICON_CHECK(status == METIS_OK,
+                  "METIS failed to partition body '" << mesh.body_names[body] << "' into " << nparts
+                                                     << " parts (status " << status << ")");
     for (size_t k = 0; k < cells.size(); ++k)
       ids[cells[k]] = offset + static_cast<int32_t>(part[k]);
     offset += static_cast<int>(nparts);
@@ -324,8 +316,7 @@ Partition split_disconnected(const mesh::HexMesh& mesh, const Partition& partiti
       for (idx_t k = xadj[c]; k < xadj[c + 1]; ++k)
       {
         const int32_t nb = adjncy[k];
-        if (component[nb] < 0 &&
-            partition.cell_subdomain[nb] == partition.cell_subdomain[c])
+        if (component[nb] < 0 && partition.cell_subdomain[nb] == partition.cell_subdomain[c])
         {
           component[nb] = next;
           stack.push_back(nb);

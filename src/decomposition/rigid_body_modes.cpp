@@ -15,7 +15,7 @@ la::Matrix rigid_body_modes(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen
   {
     const Eigen::RowVector3d p = coords.row(n) - centroid;
     full.block<3, 6>(3 * n, 0) << 1, 0, 0, 0, p(2), -p(1), //
-        0, 1, 0, -p(2), 0, p(0),                            //
+        0, 1, 0, -p(2), 0, p(0),                           //
         0, 0, 1, p(1), -p(0), 0;
   }
   // Modes must vanish on eliminated DOFs: restrict to the null space of those rows.

@@ -14,8 +14,7 @@ SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vec
 {
   const Decomposition& decomp = system.decomposition();
   _local.resize(decomp.end_owned() - decomp.first_owned());
-  parallel_for(decomp.first_owned(), decomp.end_owned(), setup_work, [&](int32_t s)
-  {
+  parallel_for(decomp.first_owned(), decomp.end_owned(), setup_work, [&](int32_t s) {
     const Subdomain& sub = decomp.subdomain(s);
     Local& local = _local[s - decomp.first_owned()];
     for (int32_t dof = 0; dof < sub.n_dofs(); ++dof)
@@ -35,8 +34,7 @@ void SchurComplements::factorize_interior()
   if (_factorized)
     return;
   const Decomposition& decomp = _system.decomposition();
-  parallel_for(decomp.first_owned(), decomp.end_owned(), setup_work, [&](int32_t s)
-  {
+  parallel_for(decomp.first_owned(), decomp.end_owned(), setup_work, [&](int32_t s) {
     Local& local = _local[s - decomp.first_owned()];
     const la::SparseMatrix& K = _system.operators(s).K;
     local.K_bb = la::symmetric_block(K, local.boundary, local.boundary);

@@ -8,14 +8,12 @@
 
 namespace feticon::decomposition
 {
-SubdomainSystem::SubdomainSystem(const Decomposition& decomposition,
-                                 std::vector<fem::Material> materials, fem::Kinematics kinematics,
-                                 GeneralizedInverseMethod method)
+SubdomainSystem::SubdomainSystem(const Decomposition& decomposition, std::vector<fem::Material> materials,
+                                 fem::Kinematics kinematics, GeneralizedInverseMethod method)
     : _decomposition(decomposition), _method(method), _assemblers(decomposition.n_subdomains()),
       _operators(decomposition.n_subdomains())
 {
-  parallel_for(decomposition.first_owned(), decomposition.end_owned(), setup_work, [&](int32_t s)
-  {
+  parallel_for(decomposition.first_owned(), decomposition.end_owned(), setup_work, [&](int32_t s) {
     _assemblers[s] = std::make_unique<fem::Assembler>(decomposition.mesh(), decomposition.subdomain(s).domain,
                                                       materials, kinematics);
   });
@@ -37,8 +35,7 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
   const int32_t first = _decomposition.first_owned();
   std::vector<std::vector<int32_t>> fixing_candidates(_decomposition.end_owned() - first);
   auto start = std::chrono::steady_clock::now();
-  parallel_for(first, _decomposition.end_owned(), setup_work, [&](int32_t s)
-  {
+  parallel_for(first, _decomposition.end_owned(), setup_work, [&](int32_t s) {
     const Subdomain& sub = _decomposition.subdomain(s);
     const fem::Assembler& assembler = *_assemblers[sub.id];
     const la::Vector u_full = full_local(sub.id, u_stacked);
@@ -66,8 +63,7 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
 
   start = std::chrono::steady_clock::now();
   std::vector<int64_t> owned_kernel_dims(_decomposition.end_owned() - first);
-  parallel_for(first, _decomposition.end_owned(), setup_work, [&](int32_t s)
-  {
+  parallel_for(first, _decomposition.end_owned(), setup_work, [&](int32_t s) {
     SubdomainOperators& op = _operators[s];
     op.K_plus.setup(op.K, op.R, fixing_candidates[s - first], _method, "subdomain " + std::to_string(s));
     owned_kernel_dims[s - first] = op.R.cols();
@@ -84,8 +80,7 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
 la::Vector SubdomainSystem::internal_force(const la::Vector& u_stacked) const
 {
   la::Vector f(_decomposition.n_primal());
-  parallel_for(_decomposition.first_owned(), _decomposition.end_owned(), setup_work, [&](int32_t s)
-  {
+  parallel_for(_decomposition.first_owned(), _decomposition.end_owned(), setup_work, [&](int32_t s) {
     const Subdomain& sub = _decomposition.subdomain(s);
     const la::Vector f_full = _assemblers[sub.id]->internal_force(full_local(sub.id, u_stacked));
     auto seg = _decomposition.segment(f, sub.id);

@@ -16,7 +16,7 @@ struct SubdomainOperators
   /// Stiffness on active DOFs, lower triangle only: CHOLMOD reads no more, the products
   /// use K.selfadjointView<Eigen::Lower>(), and the upper half would double K's memory.
   la::SparseMatrix K;
-  la::Matrix R;             ///< orthonormal kernel basis (n_dofs x k)
+  la::Matrix R; ///< orthonormal kernel basis (n_dofs x k)
   GeneralizedInverse K_plus;
 };
 
@@ -26,8 +26,8 @@ class SubdomainSystem
 {
 public:
   /// @param kinematics linear: K_0; total_lagrangian: see update()
-  SubdomainSystem(const Decomposition& decomposition, std::vector<fem::Material> materials,
-                  fem::Kinematics kinematics, GeneralizedInverseMethod method);
+  SubdomainSystem(const Decomposition& decomposition, std::vector<fem::Material> materials, fem::Kinematics kinematics,
+                  GeneralizedInverseMethod method);
 
   /// Assembles K_s at the stacked displacement `u` (material part K_M(u) in TL, K_0 when
   /// u = 0 or linear), computes R_s from the coordinates X + u and factorizes; with
@@ -41,10 +41,7 @@ public:
   const SubdomainOperators& operators(int32_t s) const { return _operators[s]; }
   int32_t n_subdomains() const { return static_cast<int32_t>(_operators.size()); }
   /// Kernel dimension of subdomain s and the start of its block in the kernel vector.
-  int32_t kernel_dim(int32_t s) const
-  {
-    return static_cast<int32_t>(_kernel_offsets[s + 1] - _kernel_offsets[s]);
-  }
+  int32_t kernel_dim(int32_t s) const { return static_cast<int32_t>(_kernel_offsets[s + 1] - _kernel_offsets[s]); }
   int64_t kernel_offset(int32_t s) const { return _kernel_offsets[s]; }
   int64_t n_kernel() const { return _kernel_offsets.back(); }
   /// Sum of the nonzeros of the owned Cholesky factors.

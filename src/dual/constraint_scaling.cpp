@@ -8,8 +8,7 @@
 
 namespace feticon::dual
 {
-ConstraintScaling::ConstraintScaling(const FetiOperators& feti, int64_t n_equality)
-    : _feti(feti)
+ConstraintScaling::ConstraintScaling(const FetiOperators& feti, int64_t n_equality) : _feti(feti)
 {
   const auto is_contact = [n_equality](int64_t id) { return id >= n_equality; };
   std::vector<int64_t> local_keys;
@@ -34,8 +33,9 @@ ConstraintScaling::ConstraintScaling(const FetiOperators& feti, int64_t n_equali
   _ids.erase(std::unique(_ids.begin(), _ids.end()), _ids.end());
   if (_ids.empty())
     return;
-  const auto position = [this](int64_t id)
-  { return static_cast<la::Index>(std::ranges::lower_bound(_ids, id) - _ids.begin()); };
+  const auto position = [this](int64_t id) {
+    return static_cast<la::Index>(std::ranges::lower_bound(_ids, id) - _ids.begin());
+  };
 
   std::vector<la::Triplet> triplets;
   triplets.reserve(values.size() + _ids.size());

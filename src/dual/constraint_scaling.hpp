@@ -37,11 +37,11 @@ public:
 
 private:
   const FetiOperators& _feti;
-  std::vector<int64_t> _ids;                      ///< global ids of C, increasing
-  std::vector<la::Index> _owned_rows;             ///< owned dual indices in C
-  std::vector<int64_t> _owned_positions;          ///< and their positions in C
-  std::vector<int64_t> _gathered_positions;       ///< positions in C of every rank's rows
-  Eigen::SimplicialLLT<la::SparseMatrix> _llt;    ///< (B B')_CC = L L'
+  std::vector<int64_t> _ids;                   ///< global ids of C, increasing
+  std::vector<la::Index> _owned_rows;          ///< owned dual indices in C
+  std::vector<int64_t> _owned_positions;       ///< and their positions in C
+  std::vector<int64_t> _gathered_positions;    ///< positions in C of every rank's rows
+  Eigen::SimplicialLLT<la::SparseMatrix> _llt; ///< (B B')_CC = L L'
   bool _factorized = false;
 };
 } // namespace feticon::dual

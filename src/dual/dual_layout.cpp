@@ -242,8 +242,7 @@ la::Vector DualLayout::rows_of(int32_t s, const la::Vector& ext) const
 la::Vector DualLayout::sum_contributions(const std::function<la::Vector(int32_t)>& local, int64_t work) const
 {
   la::Vector contributions(_n_contributions);
-  parallel_for(_decomp.first_owned(), _decomp.end_owned(), work, [&](int32_t s)
-  {
+  parallel_for(_decomp.first_owned(), _decomp.end_owned(), work, [&](int32_t s) {
     const int32_t l = s - _decomp.first_owned();
     if (!_sub_rows[l].empty())
       contributions.segment(_contribution_start[l], static_cast<la::Index>(_sub_rows[l].size())) = local(s);

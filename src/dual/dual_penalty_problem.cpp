@@ -23,10 +23,7 @@ class GTildeOperator : public qp::EqualityOperator
 public:
   explicit GTildeOperator(const CoarseProjector& projector) : _projector(projector) {}
   la::Vector apply(const la::Vector& x) const override { return _projector.apply_G_tilde(x); }
-  la::Vector apply_transpose(const la::Vector& y) const override
-  {
-    return _projector.apply_G_tilde_t(y);
-  }
+  la::Vector apply_transpose(const la::Vector& y) const override { return _projector.apply_G_tilde_t(y); }
 
 private:
   const CoarseProjector& _projector;
@@ -53,8 +50,8 @@ public:
     const la::Vector q = _projector.apply_Q(x);
     const la::Vector p = scale(x - q);
     const la::Vector Xp = _options.preconditioner == DualPreconditioner::dirichlet
-                              ? _feti.apply_dirichlet(p, *_options.schur)
-                              : _feti.apply_lumped(p);
+        ? _feti.apply_dirichlet(p, *_options.schur)
+        : _feti.apply_lumped(p);
     y = _s * _projector.apply_P(scale(Xp));
     if (_rho > 0)
       y += q / _rho;
@@ -74,8 +71,8 @@ private:
 /// from the equality rows alone, when they fix every rigid mode; then the contact bounds
 /// are simply lambda_I >= 0 and mu = 0 is feasible. Otherwise (a body held only by
 /// contact, like the Hertz cylinder) variant A, the minimal-norm G'(GG')^{-1} e.
-la::Vector particular_solution(const FetiOperators& feti, const CoarseProjector& projector,
-                               const la::Vector& e, int64_t n_equality)
+la::Vector particular_solution(const FetiOperators& feti, const CoarseProjector& projector, const la::Vector& e,
+                               int64_t n_equality)
 {
   // Either variant must satisfy G lambda~ = e. The pivot test of G_E G_E' can miss a
   // mode that only contact holds once that matrix is large (a 1 025-subdomain punch: the
@@ -97,9 +94,9 @@ la::Vector particular_solution(const FetiOperators& feti, const CoarseProjector&
   }
   la::Vector lambda_tilde = projector.particular_solution(e);
   const double residual = (feti.apply_G(lambda_tilde) - e).norm();
-  FETICON_CHECK(residual <= tolerance, "coarse problem: ||G lambda~ - e|| = "
-                                           << residual << " exceeds " << tolerance
-                                           << " (G G' too ill-conditioned to balance the loads)");
+  FETICON_CHECK(residual <= tolerance,
+                "coarse problem: ||G lambda~ - e|| = " << residual << " exceeds " << tolerance
+                                                       << " (G G' too ill-conditioned to balance the loads)");
   return lambda_tilde;
 }
 /// D_F x: the components outside the face F set to 0, an orthogonal projector.
@@ -152,8 +149,7 @@ void measure_solution_face(const FetiOperators& feti, const CoarseProjector& pro
   // final face (an active-set method's floor), read off the same run.
   double initial = 0;
   out.solution_face_steps_to_rtol = 0;
-  cg.monitor = [&](int iteration, double residual)
-  {
+  cg.monitor = [&](int iteration, double residual) {
     if (iteration == 0)
       initial = residual;
     else if (out.solution_face_steps_to_rtol == 0 && residual <= options.rtol * initial)
@@ -172,11 +168,9 @@ qp::NormEstimate pfp_norm_estimate(const la::LinearOperator& PFP_raw, const Dual
   // caller passes the last estimate while F is the same, and the power iterations (6-7
   // products per QP on Hertz) are skipped. It only scales F; a too small value makes an
   // expansion step too long, which MPRGP detects and halves.
-  const qp::NormEstimate norm =
-      warm.pfp_norm > 0 ? qp::NormEstimate{warm.pfp_norm, 0}
-                        : qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1);
-  FETICON_CHECK(norm.value > 0 && std::isfinite(norm.value), "||PFP|| estimate " << norm.value
-                                                                                 << " is not positive");
+  const qp::NormEstimate norm = warm.pfp_norm > 0 ? qp::NormEstimate{warm.pfp_norm, 0}
+                                                  : qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1);
+  FETICON_CHECK(norm.value > 0 && std::isfinite(norm.value), "||PFP|| estimate " << norm.value << " is not positive");
   return norm;
 }
 
@@ -220,8 +214,9 @@ qp::SmalbeOptions smalbe_options(const FetiOperators& feti, const CoarseProjecto
   {
     // x = mu (force units: b and H carry the same scale), so G mu = G lambda - e, and the
     // weights turn it into the subdomains' net forces (FetiOperators::net_force_weights).
-    smalbe.equality_error = [&projector, w = feti.net_force_weights()](const la::Vector& Cx)
-    { return projector.from_tilde(Cx).cwiseProduct(w).norm(); };
+    smalbe.equality_error = [&projector, w = feti.net_force_weights()](const la::Vector& Cx) {
+      return projector.from_tilde(Cx).cwiseProduct(w).norm();
+    };
     smalbe.equality_tolerance = options.feasibility_tolerance;
   }
   return smalbe;
@@ -230,15 +225,13 @@ qp::SmalbeOptions smalbe_options(const FetiOperators& feti, const CoarseProjecto
 /// SMALBE-M's start from the warm start's coarse multiplier, M and rho, if it has one for
 /// this coarse space.
 std::optional<qp::SmalbeStart> smalbe_start(const FetiOperators& feti, const CoarseProjector& projector,
-                                            const DualPenaltyOptions& options, const DualWarmStart& warm,
-                                            double scale)
+                                            const DualPenaltyOptions& options, const DualWarmStart& warm, double scale)
 {
   // The multiplier of G~ mu = 0 in the scaled dual is scale times the unscaled one.
   std::optional<qp::SmalbeStart> start;
   if (warm.coarse_multiplier.size() == feti.n_kernel())
     start = qp::SmalbeStart{projector.tilde_multiplier(scale * warm.coarse_multiplier),
-                            warm.M > 0 ? warm.M : options.smalbe_M0,
-                            std::max(warm.rho, options.rho)};
+                            warm.M > 0 ? warm.M : options.smalbe_M0, std::max(warm.rho, options.rho)};
   return start;
 }
 
@@ -271,8 +264,8 @@ std::vector<char> active_rows(const FetiOperators& feti, const la::Vector& lambd
 
 /// Why no contact force holds a body, for recover_primal's message when the active rows
 /// leave one free: empty unless the load is below what the QP resolves.
-std::string unheld_body_message(const FetiOperators& feti, const la::Vector& b, double e_norm,
-                                int64_t active_contacts, double rtol)
+std::string unheld_body_message(const FetiOperators& feti, const la::Vector& b, double e_norm, int64_t active_contacts,
+                                double rtol)
 {
   // If the active rows leave a body free (recover_primal refuses): a load far below the force
   // that would close the initial gaps elastically (b, in force units like lambda) is the likely
@@ -294,9 +287,8 @@ std::string unheld_body_message(const FetiOperators& feti, const la::Vector& b, 
 }
 } // namespace
 
-DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
-                                const la::Vector& f_stacked, int64_t n_equality,
-                                const DualPenaltyOptions& options, const DualWarmStart& warm)
+DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked,
+                                int64_t n_equality, const DualPenaltyOptions& options, const DualWarmStart& warm)
 {
   const int64_t m = feti.n_dual();
   FETICON_CHECK(c.size() == m && n_equality <= feti.n_dual_global(), "dual problem: sizes do not match");
@@ -324,15 +316,15 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   // Warm start projected onto Ker G: when K_M(u) or the contact rows change, G changes and
   // lambda_start - lambda~ is far from Ker G, which SMALBE-M would then repair slowly
   // through its multiplier (the inner stop ||g_P|| <= M ||G~ mu|| passes at once).
-  la::Vector mu = warm.lambda.size() == m ? projector.apply_P(warm.lambda - lambda_tilde)
-                                          : la::Vector(la::Vector::Zero(m));
+  la::Vector mu =
+      warm.lambda.size() == m ? projector.apply_P(warm.lambda - lambda_tilde) : la::Vector(la::Vector::Zero(m));
 
   qp::MprgpOptions mprgp = mprgp_options(options);
   std::optional<DualPreconditionerOperator> preconditioner;
   std::optional<la::TimedOperator> timed_preconditioner;
   if (options.preconditioner != DualPreconditioner::none)
-    timed_preconditioner.emplace(preconditioner.emplace(feti, projector, options, norm.value, n_equality,
-                                                        smalbe_method ? 0.0 : options.rho));
+    timed_preconditioner.emplace(
+        preconditioner.emplace(feti, projector, options, norm.value, n_equality, smalbe_method ? 0.0 : options.rho));
   if (!smalbe_method)
   {
     mprgp.preconditioner = timed_preconditioner ? &*timed_preconditioner : nullptr;
@@ -362,8 +354,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
   }
   out.lambda = lambda_tilde + mu;
   const double e_norm = e.norm();
-  out.feasibility_error =
-      (feti.apply_G(out.lambda) - e).norm() / (e_norm > 0 ? e_norm : 1.0);
+  out.feasibility_error = (feti.apply_G(out.lambda) - e).norm() / (e_norm > 0 ? e_norm : 1.0);
 
   const std::vector<char> active = active_rows(feti, out.lambda, n_equality, out.active_contacts);
   const std::string unheld = unheld_body_message(feti, b, e_norm, out.active_contacts, options.rtol);

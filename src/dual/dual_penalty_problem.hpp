@@ -46,22 +46,22 @@ struct DualPenaltyOptions
   explicit DualPenaltyOptions(const io::Settings& settings);
 
   DualMethod method;
-  double rho;                 ///< dimensionless penalty (after scaling by ||PFP||)
-  double rtol;                ///< QP tolerance on ||g_P|| (and ||G~ mu||) relative to ||b^||
-  int max_iterations;         ///< MPRGP steps in total
+  double rho;         ///< dimensionless penalty (after scaling by ||PFP||)
+  double rtol;        ///< QP tolerance on ||g_P|| (and ||G~ mu||) relative to ||b^||
+  int max_iterations; ///< MPRGP steps in total
   /// If > 0 (SMALBE-M): the solve also needs the subdomains' net forces
   /// ||W (G lambda - e)|| <= feasibility_tolerance (N; W = FetiOperators::net_force_weights),
   /// which the outer loop derives from its residual tolerance (qp::SmalbeOptions::equality_error).
   double feasibility_tolerance = 0;
-  int power_iterations = 30;  ///< for ||PFP||
+  int power_iterations = 30; ///< for ||PFP||
   DualPreconditioner preconditioner;
   /// Schur complements of the Dirichlet preconditioner (not owned; required for it).
   const decomposition::SchurComplements* schur = nullptr;
   /// Y = (B B')^{-1} in the preconditioner; false: Y = I (for comparison).
   bool constraint_scaling;
   qp::MprgpExpansion expansion; ///< MPRGP's expansion step
-  double smalbe_M0;           ///< SMALBE-M initial M (scaled units)
-  double smalbe_beta;         ///< SMALBE-M: M <- M / beta when L increases too little
+  double smalbe_M0;             ///< SMALBE-M initial M (scaled units)
+  double smalbe_beta;           ///< SMALBE-M: M <- M / beta when L increases too little
   /// If > 0: after the solve, this many preconditioned CG steps on the face of the solution
   /// measure the spectrum of M H there (QpCounters::solution_face): a diagnostic of the
   /// preconditioner, longer than the CG runs between MPRGP's restarts.
@@ -72,19 +72,19 @@ struct DualPenaltyOptions
 /// only the contact rows, the gaps and the load have changed). Empty vectors start from 0.
 struct DualWarmStart
 {
-  la::Vector lambda;            ///< multipliers, as DualSolution::lambda
+  la::Vector lambda; ///< multipliers, as DualSolution::lambda
   /// SMALBE-M: the multiplier of G lambda = e as a coarse vector, DualSolution::coarse_multiplier.
   la::Vector coarse_multiplier;
-  double M = 0;                 ///< SMALBE-M's M; 0: smalbe_M0
-  double rho = 0;               ///< SMALBE-M's rho; 0: the options' rho
-  double pfp_norm = 0;          ///< ||PFP|| of a solve with the same F; 0: estimated here
+  double M = 0;        ///< SMALBE-M's M; 0: smalbe_M0
+  double rho = 0;      ///< SMALBE-M's rho; 0: the options' rho
+  double pfp_norm = 0; ///< ||PFP|| of a solve with the same F; 0: estimated here
 };
 
 struct DualSolution
 {
-  la::Vector lambda;             ///< multipliers (equality rows then contact rows)
-  la::Vector u;                  ///< stacked primal displacement
-  la::Vector alpha;              ///< rigid-body amplitudes
+  la::Vector lambda; ///< multipliers (equality rows then contact rows)
+  la::Vector u;      ///< stacked primal displacement
+  la::Vector alpha;  ///< rigid-body amplitudes
   /// The QP's counters (summed over SMALBE-M outer steps; outer_iterations 1 for the dual
   /// penalty) with the applications of P F P (+ rho Q) and of the preconditioner timed here
   /// (the norm estimate's applications are in hessian_multiplications only).
@@ -94,9 +94,9 @@ struct DualSolution
   la::Vector coarse_multiplier;
   double smalbe_M = 0;
   double smalbe_rho = 0;
-  double feasibility_error = 0;  ///< ||G lambda - e|| / ||e||
-  double pfp_norm = 0;           ///< ||PFP|| estimate used for scaling
-  int64_t active_contacts = 0;   ///< contact rows with lambda_i > 0
+  double feasibility_error = 0; ///< ||G lambda - e|| / ||e||
+  double pfp_norm = 0;          ///< ||PFP|| estimate used for scaling
+  int64_t active_contacts = 0;  ///< contact rows with lambda_i > 0
 };
 
 /// Vectors are this rank's parts (FetiOperators): dual ones over its owned rows, primal ones
@@ -105,7 +105,6 @@ struct DualSolution
 /// @param f_stacked     stacked load
 /// @param n_equality    global number of equality rows (ids below it are equalities)
 /// @param warm          where to start (warm start), or empty for mu = 0
-DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c,
-                                const la::Vector& f_stacked, int64_t n_equality,
-                                const DualPenaltyOptions& options, const DualWarmStart& warm = {});
+DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked,
+                                int64_t n_equality, const DualPenaltyOptions& options, const DualWarmStart& warm = {});
 } // namespace feticon::dual

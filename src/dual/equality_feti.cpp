@@ -8,9 +8,8 @@
 
 namespace feticon::dual
 {
-FetiSolution solve_equality_feti(const FetiOperators& feti, const la::Vector& c,
-                                 const la::Vector& f_stacked, const qp::CgOptions& options,
-                                 FetiPreconditioner preconditioner,
+FetiSolution solve_equality_feti(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked,
+                                 const qp::CgOptions& options, FetiPreconditioner preconditioner,
                                  const decomposition::SchurComplements* schur)
 {
   const CoarseProjector projector(feti);

@@ -27,8 +27,8 @@ enum class FetiPreconditioner
 };
 
 /// @param f_stacked stacked load (each global force split among the copies of its node)
-FetiSolution solve_equality_feti(const FetiOperators& feti, const la::Vector& c,
-                                 const la::Vector& f_stacked, const qp::CgOptions& options,
+FetiSolution solve_equality_feti(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked,
+                                 const qp::CgOptions& options,
                                  FetiPreconditioner preconditioner = FetiPreconditioner::lumped,
                                  const decomposition::SchurComplements* schur = nullptr);
 } // namespace feticon::dual

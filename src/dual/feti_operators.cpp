@@ -9,8 +9,7 @@
 
 namespace feticon::dual
 {
-FetiOperators::FetiOperators(const decomposition::SubdomainSystem& system,
-                             const decomposition::ConstraintRows& rows)
+FetiOperators::FetiOperators(const decomposition::SubdomainSystem& system, const decomposition::ConstraintRows& rows)
     : _system(system), _layout(system.decomposition(), rows),
       // A substitution costs its factor's nonzeros: counted in DOFs, the 3D subdomains (about
       // five times the nonzeros per DOF of plane strain) would run serially where threads pay
@@ -44,8 +43,9 @@ FetiOperators::FetiOperators(const decomposition::SubdomainSystem& system,
 
   // G G' shares: every row's B_s R_s rows go to the other ranks touching the row.
   const std::vector<int>& ranks = _layout.neighbour_ranks();
-  auto neighbour = [&](int rank)
-  { return static_cast<size_t>(std::lower_bound(ranks.begin(), ranks.end(), rank) - ranks.begin()); };
+  auto neighbour = [&](int rank) {
+    return static_cast<size_t>(std::lower_bound(ranks.begin(), ranks.end(), rank) - ranks.begin());
+  };
   _share_send.assign(ranks.size(), {});
   _share_recv_size.assign(ranks.size(), 0);
   for (int64_t i = 0; i < _layout.n_kept(); ++i)
@@ -76,10 +76,9 @@ la::Vector FetiOperators::sum_over_subdomains(const std::vector<la::SparseMatrix
   const la::Vector ext = _layout.extended(lambda);
   const int32_t first = _system.decomposition().first_owned();
   return _layout.sum_contributions(
-      [&](int32_t s)
-      {
-        const la::SparseMatrix& B = blocks[s - first];
-        return la::Vector(B * local_op(s, la::Vector(B.transpose() * _layout.rows_of(s, ext))));
+      [&](int32_t s) {
+    const la::SparseMatrix& B = blocks[s - first];
+    return la::Vector(B * local_op(s, la::Vector(B.transpose() * _layout.rows_of(s, ext))));
       },
       work);
 }
@@ -89,8 +88,8 @@ la::Vector FetiOperators::apply_B(const la::Vector& u) const
   const auto& decomp = _system.decomposition();
   FETICON_ASSERT(u.size() == decomp.n_primal(), "stacked vector size");
   // A few entries per row: cheaper than waking the threads.
-  return _layout.sum_contributions([&](int32_t s)
-                                   { return la::Vector(_B[s - decomp.first_owned()] * decomp.segment(u, s)); }, 0);
+  return _layout.sum_contributions(
+      [&](int32_t s) { return la::Vector(_B[s - decomp.first_owned()] * decomp.segment(u, s)); }, 0);
 }
 
 la::Vector FetiOperators::apply_Bt(const la::Vector& lambda) const
@@ -107,8 +106,9 @@ la::Vector FetiOperators::apply_K_plus(const la::Vector& f) const
 {
   const auto& decomp = _system.decomposition();
   la::Vector u(decomp.n_primal());
-  parallel_for(decomp.first_owned(), decomp.end_owned(), _implicit_work, [&](int32_t s)
-               { decomp.segment(u, s) = _system.operators(s).K_plus.apply(la::Vector(decomp.segment(f, s))); });
+  parallel_for(decomp.first_owned(), decomp.end_owned(), _implicit_work, [&](int32_t s) {
+    decomp.segment(u, s) = _system.operators(s).K_plus.apply(la::Vector(decomp.segment(f, s)));
+  });
   return u;
 }
 
@@ -117,8 +117,7 @@ la::Vector FetiOperators::apply_R(const la::Vector& alpha) const
   const auto& decomp = _system.decomposition();
   la::Vector u(decomp.n_primal());
   for (int32_t s = decomp.first_owned(); s < decomp.end_owned(); ++s)
-    decomp.segment(u, s) =
-        _system.operators(s).R * alpha.segment(_system.kernel_offset(s), _system.kernel_dim(s));
+    decomp.segment(u, s) = _system.operators(s).R * alpha.segment(_system.kernel_offset(s), _system.kernel_dim(s));
   return u;
 }
 
@@ -172,9 +171,9 @@ void FetiOperators::use_explicit(const decomposition::ExplicitBoundaryOperators&
     for (int j = 0; j < B.outerSize(); ++j)
       for (la::SparseMatrix::InnerIterator it(B, j); it; ++it)
       {
-        FETICON_CHECK(position[it.col()] >= 0, "explicit dual operators: a constraint row of subdomain "
-                                                   << s << " touches DOF " << it.col()
-                                                   << ", which is not on its boundary");
+        FETICON_CHECK(position[it.col()] >= 0,
+                      "explicit dual operators: a constraint row of subdomain " << s << " touches DOF " << it.col()
+                                                                                << ", which is not on its boundary");
         triplets.emplace_back(it.row(), position[it.col()], it.value());
       }
     la::SparseMatrix Bb(B.rows(), static_cast<la::Index>(boundary.size()));
@@ -196,26 +195,26 @@ void FetiOperators::use_explicit(const decomposition::ExplicitBoundaryOperators&
 la::Vector FetiOperators::apply_F(const la::Vector& lambda) const
 {
   if (_explicit)
-    return sum_over_subdomains(_B_boundary, lambda, _explicit_work, [this](int32_t s, const la::Vector& v)
-                               { return _explicit->apply_K_plus(s, v); });
-  return sum_over_subdomains(_B, lambda, _implicit_work, [this](int32_t s, const la::Vector& v)
-                             { return _system.operators(s).K_plus.apply(v); });
+    return sum_over_subdomains(_B_boundary, lambda, _explicit_work,
+                               [this](int32_t s, const la::Vector& v) { return _explicit->apply_K_plus(s, v); });
+  return sum_over_subdomains(_B, lambda, _implicit_work,
+                             [this](int32_t s, const la::Vector& v) { return _system.operators(s).K_plus.apply(v); });
 }
 
 la::Vector FetiOperators::apply_lumped(const la::Vector& lambda) const
 {
-  return sum_over_subdomains(_B, lambda, n_primal(), [this](int32_t s, const la::Vector& v)
-                             { return la::Vector(_system.operators(s).K.selfadjointView<Eigen::Lower>() * v); });
+  return sum_over_subdomains(_B, lambda, n_primal(), [this](int32_t s, const la::Vector& v) {
+    return la::Vector(_system.operators(s).K.selfadjointView<Eigen::Lower>() * v);
+  });
 }
 
-la::Vector FetiOperators::apply_dirichlet(const la::Vector& lambda,
-                                          const decomposition::SchurComplements& schur) const
+la::Vector FetiOperators::apply_dirichlet(const la::Vector& lambda, const decomposition::SchurComplements& schur) const
 {
   if (_explicit)
-    return sum_over_subdomains(_B_boundary, lambda, _explicit_work, [this](int32_t s, const la::Vector& v)
-                               { return _explicit->apply_schur(s, v); });
-  return sum_over_subdomains(_B, lambda, _implicit_work, [&schur](int32_t s, const la::Vector& v)
-                             { return schur.apply(s, v); });
+    return sum_over_subdomains(_B_boundary, lambda, _explicit_work,
+                               [this](int32_t s, const la::Vector& v) { return _explicit->apply_schur(s, v); });
+  return sum_over_subdomains(_B, lambda, _implicit_work,
+                             [&schur](int32_t s, const la::Vector& v) { return schur.apply(s, v); });
 }
 
 la::Vector FetiOperators::apply_G(const la::Vector& lambda, const std::vector<char>* mask) const
@@ -235,10 +234,8 @@ la::Vector FetiOperators::apply_Gt(const la::Vector& alpha, const std::vector<ch
 {
   const auto& decomp = _system.decomposition();
   la::Vector y = _layout.sum_contributions(
-      [&](int32_t s)
-      {
-        return la::Vector(_BR[s - decomp.first_owned()] *
-                          alpha.segment(_system.kernel_offset(s), _system.kernel_dim(s)));
+      [&](int32_t s) {
+    return la::Vector(_BR[s - decomp.first_owned()] * alpha.segment(_system.kernel_offset(s), _system.kernel_dim(s)));
       },
       0); // a few columns per subdomain: cheaper than waking the threads
   if (mask)
@@ -335,8 +332,7 @@ la::SparseMatrix FetiOperators::coarse_matrix(const std::vector<char>* mask) con
   return GGt;
 }
 
-std::vector<FetiOperators::GramEntry> FetiOperators::gram_entries(
-    const std::function<bool(int64_t)>& selected) const
+std::vector<FetiOperators::GramEntry> FetiOperators::gram_entries(const std::function<bool(int64_t)>& selected) const
 {
   std::vector<GramEntry> out;
   const int32_t first = _system.decomposition().first_owned();

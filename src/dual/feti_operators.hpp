@@ -32,8 +32,7 @@ public:
   /// @param system subdomain K, R, K+ (kept by reference; must outlive this object)
   /// @param rows   the constraint rows touching this rank's subdomains (all rows on one
   ///               rank), with global ids; equality rows first
-  FetiOperators(const decomposition::SubdomainSystem& system,
-                const decomposition::ConstraintRows& rows);
+  FetiOperators(const decomposition::SubdomainSystem& system, const decomposition::ConstraintRows& rows);
 
   /// Where the dual unknowns live; the shortcuts below are its.
   const DualLayout& layout() const { return _layout; }
@@ -103,8 +102,8 @@ private:
   /// sum_s B_s local_op(s, B_s' lambda_s) with B_s = blocks[s - first owned] (_B, or
   /// _B_boundary for the dense boundary operators): the pattern of F and the preconditioners.
   template <class LocalOperator>
-  la::Vector sum_over_subdomains(const std::vector<la::SparseMatrix>& blocks, const la::Vector& lambda,
-                                 int64_t work, LocalOperator&& local_op) const;
+  la::Vector sum_over_subdomains(const std::vector<la::SparseMatrix>& blocks, const la::Vector& lambda, int64_t work,
+                                 LocalOperator&& local_op) const;
 
   const decomposition::SubdomainSystem& _system;
   DualLayout _layout;
@@ -117,8 +116,8 @@ private:
   /// Nonzeros of the subdomain factors per unit of parallel_for's work (its DOFs): the
   /// plane-strain meshes, where min_parallel_work was measured, have about this many per DOF.
   static constexpr int64_t factor_nonzeros_per_work_unit = 50;
-  int64_t _implicit_work = 0;                ///< one substitution with every owned factor, in parallel_for's units
-  int64_t _explicit_work = 0;                ///< one product with the dense blocks, in parallel_for's units
+  int64_t _implicit_work = 0; ///< one substitution with every owned factor, in parallel_for's units
+  int64_t _explicit_work = 0; ///< one product with the dense blocks, in parallel_for's units
   /// For G G': per neighbour rank (the layout's neighbour_ranks), (kept row, owned subdomain)
   /// pairs whose B_s R_s rows are sent, and the number of values received.
   std::vector<std::vector<std::pair<int64_t, int32_t>>> _share_send;

@@ -14,8 +14,9 @@ DualWarmStart MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_
   if (_owned.size() == 0 && _restart_equality.size() == 0)
     return warm; // the first solve of the run starts at 0
   FETICON_CHECK(_restart_equality.size() == 0 || _restart_equality.size() == n_equality,
-                "restart: the checkpoint holds " << _restart_equality.size() << " equality multipliers, this problem has "
-                                                 << n_equality << " equality rows (other supports or linear equations?)");
+                "restart: the checkpoint holds " << _restart_equality.size()
+                                                 << " equality multipliers, this problem has " << n_equality
+                                                 << " equality rows (other supports or linear equations?)");
   const la::Index m = feti.n_dual();
   warm.lambda = la::Vector::Zero(m);
   for (la::Index i = 0; i < m; ++i)

@@ -58,6 +58,5 @@ private:
 
 /// The multipliers `lambda` (owned, of `feti`) of the rows id_begin <= id < id_end, replicated
 /// on every rank (0 for ids that have no row); small: used for contact rows and checkpoints.
-la::Vector multipliers_by_id(const FetiOperators& feti, const la::Vector& lambda, int64_t id_begin,
-                             int64_t id_end);
+la::Vector multipliers_by_id(const FetiOperators& feti, const la::Vector& lambda, int64_t id_begin, int64_t id_end);
 } // namespace feticon::dual

@@ -22,7 +22,7 @@ struct PrimalSolution
 /// @param active  one flag per owned dual row: 1 for rows that hold with equality
 /// @param unheld  the error if the active rows leave a rigid-body motion free, where the caller
 ///                knows the cause (empty: a message listing the usual ones)
-PrimalSolution recover_primal(const FetiOperators& feti, const la::Vector& f_stacked,
-                              const la::Vector& c, const la::Vector& lambda,
-                              const std::vector<char>& active, const std::string& unheld = {});
+PrimalSolution recover_primal(const FetiOperators& feti, const la::Vector& f_stacked, const la::Vector& c,
+                              const la::Vector& lambda, const std::vector<char>& active,
+                              const std::string& unheld = {});
 } // namespace feticon::dual

@@ -30,8 +30,9 @@ CoarseProjector::CoarseProjector(const FetiOperators& feti, std::nothrow_t, std:
 CoarseProjector::CoarseProjector(const FetiOperators& feti, std::vector<char> mask)
     : CoarseProjector(feti, std::nothrow, std::move(mask))
 {
-  FETICON_CHECK(_full_rank, "the constraints do not suppress every rigid-body motion (G G' is "
-                           "singular): a body is free to move; add supports or symmetry conditions");
+  FETICON_CHECK(_full_rank,
+                "the constraints do not suppress every rigid-body motion (G G' is "
+                "singular): a body is free to move; add supports or symmetry conditions");
 }
 
 la::Vector CoarseProjector::apply_G(const la::Vector& lambda) const
@@ -46,10 +47,7 @@ la::Vector CoarseProjector::apply_Gt(const la::Vector& alpha) const
 
 la::Vector CoarseProjector::coarse_solve(const la::Vector& y) const { return _llt.solve(y); }
 
-la::Vector CoarseProjector::apply_Q(const la::Vector& lambda) const
-{
-  return apply_Gt(coarse_solve(apply_G(lambda)));
-}
+la::Vector CoarseProjector::apply_Q(const la::Vector& lambda) const { return apply_Gt(coarse_solve(apply_G(lambda))); }
 
 la::Vector CoarseProjector::apply_G_tilde(const la::Vector& lambda) const
 {
@@ -76,10 +74,7 @@ la::Vector CoarseProjector::tilde_multiplier(const la::Vector& beta) const
   return _llt.matrixU() * la::Vector(_llt.permutationP() * beta);
 }
 
-la::Vector CoarseProjector::particular_solution(const la::Vector& e) const
-{
-  return apply_Gt(coarse_solve(e));
-}
+la::Vector CoarseProjector::particular_solution(const la::Vector& e) const { return apply_Gt(coarse_solve(e)); }
 
 void ProjectedOperator::apply(const la::Vector& x, la::Vector& y) const
 {

@@ -63,8 +63,7 @@ la::SparseMatrix block_pattern(const NodeAdjacency& adjacency)
 }
 
 /// Adds the element matrix into K (whose pattern contains it).
-void scatter(la::SparseMatrix& K, const std::array<int32_t, 8>& local_nodes,
-             const ElementMatrix& Ke)
+void scatter(la::SparseMatrix& K, const std::array<int32_t, 8>& local_nodes, const ElementMatrix& Ke)
 {
   const int* outer = K.outerIndexPtr();
   const int* inner = K.innerIndexPtr();
@@ -111,8 +110,7 @@ AssemblyDomain make_domain(const mesh::HexMesh& mesh, std::vector<int32_t> cells
   for (size_t k = 0; k < domain.cells.size(); ++k)
     for (int a = 0; a < 8; ++a)
       domain.cell_nodes[k][a] = static_cast<int32_t>(
-          std::lower_bound(nodes.begin(), nodes.end(), mesh.cells[domain.cells[k]][a]) -
-          nodes.begin());
+          std::lower_bound(nodes.begin(), nodes.end(), mesh.cells[domain.cells[k]][a]) - nodes.begin());
   return domain;
 }
 
@@ -124,26 +122,22 @@ AssemblyDomain whole_mesh_domain(const mesh::HexMesh& mesh)
   return make_domain(mesh, std::move(cells));
 }
 
-Assembler::Assembler(const mesh::HexMesh& mesh, AssemblyDomain domain,
-                     std::vector<Material> body_materials, Kinematics kinematics)
-    : _mesh(mesh), _domain(std::move(domain)), _materials(std::move(body_materials)),
-      _kinematics(kinematics), _adjacency(node_adjacency(_domain))
+Assembler::Assembler(const mesh::HexMesh& mesh, AssemblyDomain domain, std::vector<Material> body_materials,
+                     Kinematics kinematics)
+    : _mesh(mesh), _domain(std::move(domain)), _materials(std::move(body_materials)), _kinematics(kinematics),
+      _adjacency(node_adjacency(_domain))
 {
   FETICON_CHECK(static_cast<int32_t>(_materials.size()) >= mesh.n_bodies(),
-                "the mesh has " << mesh.n_bodies() << " bodies but " << _materials.size()
-                                << " materials were given");
+                "the mesh has " << mesh.n_bodies() << " bodies but " << _materials.size() << " materials were given");
   for (size_t b = 0; b < _materials.size(); ++b)
-    _materials[b].check("material of body '" +
-                        (b < mesh.body_names.size() ? mesh.body_names[b] : std::to_string(b)) +
+    _materials[b].check("material of body '" + (b < mesh.body_names.size() ? mesh.body_names[b] : std::to_string(b)) +
                         "'");
 }
 
-void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatrix* K,
-                         la::Vector* f_int) const
+void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatrix* K, la::Vector* f_int) const
 {
-  FETICON_CHECK(u.size() == _domain.n_dofs(), "displacement has " << u.size()
-                                                                  << " entries, expected "
-                                                                  << _domain.n_dofs());
+  FETICON_CHECK(u.size() == _domain.n_dofs(),
+                "displacement has " << u.size() << " entries, expected " << _domain.n_dofs());
   if (K)
   {
     la::SparseMatrix pattern = block_pattern(_adjacency);

@@ -58,8 +58,7 @@ public:
   /// Internal force at displacement `u`.
   la::Vector internal_force(const la::Vector& u) const;
   /// Both in one pass over the cells (either output may be null).
-  void assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatrix* K,
-                la::Vector* f_int) const;
+  void assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatrix* K, la::Vector* f_int) const;
 
   /// Reference coordinates of the domain's nodes, one row per local node.
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> local_coordinates() const;

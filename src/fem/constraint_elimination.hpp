@@ -51,9 +51,9 @@ private:
   int64_t _n_dofs;
   DirichletElimination _dirichlet;
   bool _with_equations = false;
-  la::SparseMatrix _T;        ///< n_dofs x n_free
-  la::SparseMatrix _Tt;       ///< T'
-  la::Vector _g;              ///< prescribed values and the equations' constants
+  la::SparseMatrix _T;               ///< n_dofs x n_free
+  la::SparseMatrix _Tt;              ///< T'
+  la::Vector _g;                     ///< prescribed values and the equations' constants
   std::vector<int64_t> _independent; ///< the DOF of every column of T
 };
 } // namespace feticon::fem

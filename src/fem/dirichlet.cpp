@@ -9,15 +9,14 @@
 
 namespace feticon::fem
 {
-ConstrainedDofs collect_dirichlet(const mesh::HexMesh& mesh,
-                                  const std::vector<DirichletCondition>& conditions, double scale)
+ConstrainedDofs collect_dirichlet(const mesh::HexMesh& mesh, const std::vector<DirichletCondition>& conditions,
+                                  double scale)
 {
   std::map<int64_t, double> prescribed;
   for (const DirichletCondition& condition : conditions)
   {
     const auto& nodes = mesh.node_set(condition.set);
-    FETICON_CHECK(!nodes.empty(), "Dirichlet condition on the empty node set '" << condition.set
-                                                                               << "'");
+    FETICON_CHECK(!nodes.empty(), "Dirichlet condition on the empty node set '" << condition.set << "'");
     for (int32_t node : nodes)
       for (int i = 0; i < 3; ++i)
       {

@@ -33,8 +33,7 @@ ShapeGradients hex8_reference_gradients(const Eigen::Vector3d& xi)
 
 const std::array<Eigen::Vector3d, 8>& hex8_gauss_points()
 {
-  static const std::array<Eigen::Vector3d, 8> points = []
-  {
+  static const std::array<Eigen::Vector3d, 8> points = [] {
     const double g = 1.0 / std::sqrt(3.0);
     std::array<Eigen::Vector3d, 8> p;
     for (int a = 0; a < 8; ++a)
@@ -52,8 +51,9 @@ GaussGeometry hex8_gauss_geometry(const NodeCoords& X, const Eigen::Vector3d& xi
   const ShapeGradients dN = hex8_reference_gradients(xi);
   const Eigen::Matrix3d J = X.transpose() * dN; // J_ij = dX_i / dxi_j
   const double det = J.determinant();
-  FETICON_CHECK(det > 0, "element " << cell << " is inverted or degenerate (det J = " << det
-                                    << " at a Gauss point); check its node order and geometry");
+  FETICON_CHECK(det > 0,
+                "element " << cell << " is inverted or degenerate (det J = " << det
+                           << " at a Gauss point); check its node order and geometry");
   GaussGeometry g;
   g.dN_dX = dN * J.inverse();
   g.det_j = det;

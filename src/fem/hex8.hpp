@@ -9,13 +9,19 @@
 
 namespace feticon::fem
 {
-using NodeCoords = Eigen::Matrix<double, 8, 3>;   ///< one row per element node
+using NodeCoords = Eigen::Matrix<double, 8, 3>;     ///< one row per element node
 using ShapeGradients = Eigen::Matrix<double, 8, 3>; ///< row a: gradient of N_a
 
 /// Reference coordinates of the 8 nodes (VTK order).
 inline constexpr std::array<std::array<double, 3>, 8> hex8_reference_nodes = {{
-    {-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-    {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1},
+    {-1, -1, -1},
+    {1, -1, -1},
+    {1, 1, -1},
+    {-1, 1, -1},
+    {-1, -1, 1},
+    {1, -1, 1},
+    {1, 1, 1},
+    {-1, 1, 1},
 }};
 
 /// Shape function values at reference point `xi`.

@@ -55,9 +55,8 @@ struct PointState
   Voigt strain; ///< small strain or Green-Lagrange E, engineering shears
 };
 
-PointState point_state(const ShapeGradients& dN, const NodeCoords& u,
-                       const Eigen::Matrix<double, 6, 6>& D, const Material& material,
-                       Kinematics kinematics, int64_t cell)
+PointState point_state(const ShapeGradients& dN, const NodeCoords& u, const Eigen::Matrix<double, 6, 6>& D,
+                       const Material& material, Kinematics kinematics, int64_t cell)
 {
   const Eigen::Matrix3d grad_u = u.transpose() * dN; // du_i/dX_j
   PointState state;
@@ -65,8 +64,8 @@ PointState point_state(const ShapeGradients& dN, const NodeCoords& u,
   {
     state.Fd.setIdentity();
     Voigt eps;
-    eps << grad_u(0, 0), grad_u(1, 1), grad_u(2, 2), grad_u(0, 1) + grad_u(1, 0),
-        grad_u(1, 2) + grad_u(2, 1), grad_u(2, 0) + grad_u(0, 2);
+    eps << grad_u(0, 0), grad_u(1, 1), grad_u(2, 2), grad_u(0, 1) + grad_u(1, 0), grad_u(1, 2) + grad_u(2, 1),
+        grad_u(2, 0) + grad_u(0, 2);
     state.S = D * eps;
     state.strain = eps;
     return state;
@@ -75,8 +74,9 @@ PointState point_state(const ShapeGradients& dN, const NodeCoords& u,
   // A non-positive det F means the element turned inside out: no physical state to continue
   // from (the load step is too large or the problem diverges).
   const double J = state.Fd.determinant();
-  FETICON_CHECK(J > 0, "element " << cell << " is inverted in the deformed configuration (det F = "
-                                  << J << "); use more load steps or check the loads");
+  FETICON_CHECK(J > 0,
+                "element " << cell << " is inverted in the deformed configuration (det F = " << J
+                           << "); use more load steps or check the loads");
   const Eigen::Matrix3d E = 0.5 * (state.Fd.transpose() * state.Fd - Eigen::Matrix3d::Identity());
   const Eigen::Matrix3d S =
       material.lame_lambda() * E.trace() * Eigen::Matrix3d::Identity() + 2 * material.lame_mu() * E;
@@ -86,9 +86,8 @@ PointState point_state(const ShapeGradients& dN, const NodeCoords& u,
 }
 } // namespace
 
-void hex8_element(const NodeCoords& X, const NodeCoords& u, const Material& material,
-                  Kinematics kinematics, StiffnessKind kind, ElementVector& f, ElementMatrix* K,
-                  int64_t cell)
+void hex8_element(const NodeCoords& X, const NodeCoords& u, const Material& material, Kinematics kinematics,
+                  StiffnessKind kind, ElementVector& f, ElementMatrix* K, int64_t cell)
 {
   const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
   f.setZero();
@@ -137,9 +136,8 @@ Hex8PointResults hex8_point_results(const NodeCoords& X, const NodeCoords& u, co
   return out;
 }
 
-Eigen::Matrix<double, 6, 1> hex8_cauchy_stress(const NodeCoords& X, const NodeCoords& u,
-                                               const Material& material, Kinematics kinematics,
-                                               int64_t cell)
+Eigen::Matrix<double, 6, 1> hex8_cauchy_stress(const NodeCoords& X, const NodeCoords& u, const Material& material,
+                                               Kinematics kinematics, int64_t cell)
 {
   const Hex8PointResults points = hex8_point_results(X, u, material, kinematics, cell);
   Voigt sum = Voigt::Zero();
@@ -155,7 +153,6 @@ Eigen::Matrix<double, 6, 1> hex8_cauchy_stress(const NodeCoords& X, const NodeCo
 double von_mises(const Eigen::Matrix<double, 6, 1>& s)
 {
   const double d01 = s(0) - s(1), d12 = s(1) - s(2), d20 = s(2) - s(0);
-  return std::sqrt(0.5 * (d01 * d01 + d12 * d12 + d20 * d20) +
-                   3 * (s(3) * s(3) + s(4) * s(4) + s(5) * s(5)));
+  return std::sqrt(0.5 * (d01 * d01 + d12 * d12 + d20 * d20) + 3 * (s(3) * s(3) + s(4) * s(4) + s(5) * s(5)));
 }
 } // namespace feticon::fem

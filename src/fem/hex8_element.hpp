@@ -33,9 +33,8 @@ enum class StiffnessKind
 /// @param[out] f    internal force (N)
 /// @param[out] K    stiffness (N/m); untouched when kind == none
 /// @param[in] cell  cell id, for error messages
-void hex8_element(const NodeCoords& X, const NodeCoords& u, const Material& material,
-                  Kinematics kinematics, StiffnessKind kind, ElementVector& f, ElementMatrix* K,
-                  int64_t cell);
+void hex8_element(const NodeCoords& X, const NodeCoords& u, const Material& material, Kinematics kinematics,
+                  StiffnessKind kind, ElementVector& f, ElementMatrix* K, int64_t cell);
 
 /// Cauchy stress (Pa) and strain (small strain, or Green-Lagrange E with large displacements;
 /// engineering shears) at the Gauss points of hex8_gauss_points(), Voigt [11,22,33,12,23,31],
@@ -50,9 +49,8 @@ Hex8PointResults hex8_point_results(const NodeCoords& X, const NodeCoords& u, co
 
 /// Volume-averaged Cauchy stress of one cell (Pa), Voigt [11,22,33,12,23,31].
 /// Linear: sigma = D eps. TL: sigma = Fdef S Fdef' / det Fdef.
-Eigen::Matrix<double, 6, 1> hex8_cauchy_stress(const NodeCoords& X, const NodeCoords& u,
-                                               const Material& material, Kinematics kinematics,
-                                               int64_t cell);
+Eigen::Matrix<double, 6, 1> hex8_cauchy_stress(const NodeCoords& X, const NodeCoords& u, const Material& material,
+                                               Kinematics kinematics, int64_t cell);
 
 /// von Mises equivalent stress of a Voigt stress vector (Pa).
 double von_mises(const Eigen::Matrix<double, 6, 1>& sigma);

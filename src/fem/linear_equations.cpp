@@ -24,8 +24,8 @@ std::vector<ReducedEquation> reduce_equations(const std::vector<LinearEquation>&
     {
       FETICON_CHECK(term.node >= 0 && 3 * static_cast<int64_t>(term.node) < n_dofs && term.component >= 0 &&
                         term.component < 3,
-                    describe_equation(equations, e, mesh) << " names node " << term.node << ", component "
-                                                          << term.component << ", outside the mesh");
+                    describe_equation(equations, e, mesh)
+                        << " names node " << term.node << ", component " << term.component << ", outside the mesh");
       const int64_t dof = 3 * static_cast<int64_t>(term.node) + term.component;
       if (eliminated[term.component])
         continue; // identically zero
@@ -71,7 +71,8 @@ std::string describe_equation(const std::vector<LinearEquation>& equations, size
       os << (t.coefficient < 0 ? " - " : " + ");
     else if (t.coefficient < 0)
       os << "-";
-    os << std::abs(t.coefficient) << " " << (known_component ? component_name[t.component] : "u_?") << " at node " << t.node;
+    os << std::abs(t.coefficient) << " " << (known_component ? component_name[t.component] : "u_?") << " at node "
+       << t.node;
     if (known_node)
       os << " (" << mesh->nodes(t.node, 0) << ", " << mesh->nodes(t.node, 1) << ", " << mesh->nodes(t.node, 2) << ")";
   }
@@ -85,7 +86,7 @@ std::string dependent_equation_message(const std::vector<LinearEquation>& equati
                                        const mesh::HexMesh* mesh)
 {
   return describe_equation(equations, index, mesh) +
-         " is linearly dependent on the supports and the equations before it (a repeated or redundant "
-         "constraint): remove it";
+      " is linearly dependent on the supports and the equations before it (a repeated or redundant "
+      "constraint): remove it";
 }
 } // namespace feticon::fem

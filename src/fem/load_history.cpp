@@ -31,8 +31,7 @@ la::Vector stage_force(const Problem& problem, const LoadStage& stage, int numbe
 {
   const mesh::HexMesh& mesh = problem.mesh;
   la::Vector f = la::Vector::Zero(3 * static_cast<la::Index>(mesh.n_nodes()));
-  in_stage(number, [&]
-  {
+  in_stage(number, [&] {
     for (const FaceTraction& t : stage.tractions)
     {
       FETICON_CHECK(!mesh.face_set(t.set).empty() && t.traction.allFinite(),
@@ -47,10 +46,9 @@ la::Vector stage_force(const Problem& problem, const LoadStage& stage, int numbe
     }
     for (const NodalForce& n : stage.nodal_forces)
     {
-      FETICON_CHECK(n.node >= 0 && n.node < mesh.n_nodes() && n.component >= 0 && n.component < 3 &&
-                        std::isfinite(n.value),
-                    "the nodal force on node " << n.node << ", component " << n.component
-                                               << " is out of range or not finite");
+      FETICON_CHECK(
+          n.node >= 0 && n.node < mesh.n_nodes() && n.component >= 0 && n.component < 3 && std::isfinite(n.value),
+          "the nodal force on node " << n.node << ", component " << n.component << " is out of range or not finite");
       f(3 * static_cast<la::Index>(n.node) + n.component) += n.value;
     }
   });
@@ -65,8 +63,7 @@ la::Vector stage_force(const Problem& problem, const LoadStage& stage, int numbe
 /// Problem::all_constrained_dofs() makes stage 1's.
 ConstrainedDofs stage_dirichlet(const Problem& problem, const LoadStage& stage, int number)
 {
-  return in_stage(number, [&]
-  {
+  return in_stage(number, [&] {
     for (const DirichletCondition& d : stage.dirichlet)
       for (const std::optional<double>& v : d.value)
         FETICON_CHECK(!v || std::isfinite(*v), "a prescribed value on '" << d.set << "' is not finite");
@@ -79,8 +76,9 @@ ConstrainedDofs stage_dirichlet(const Problem& problem, const LoadStage& stage, 
         for (int32_t n = 0; n < problem.mesh.n_nodes(); ++n)
         {
           auto [it, inserted] = merged.emplace(3 * static_cast<int64_t>(n) + i, 0.0);
-          FETICON_CHECK(it->second == 0.0, "node " << n << " prescribes " << it->second << " for component "
-                                                   << i << ", which plane strain fixes to zero");
+          FETICON_CHECK(it->second == 0.0,
+                        "node " << n << " prescribes " << it->second << " for component " << i
+                                << ", which plane strain fixes to zero");
         }
     return to_constrained_dofs(merged);
   });
@@ -113,14 +111,14 @@ void check_same_dofs(const Problem& problem, const ConstrainedDofs& first, const
                       std::back_inserter(added));
   std::set_difference(first.dofs.begin(), first.dofs.end(), later.dofs.begin(), later.dofs.end(),
                       std::back_inserter(omitted));
-  FETICON_CHECK(added.empty(), "load stage " << number << " prescribes "
-                                             << describe(problem.mesh, stage.dirichlet, added.front())
-                                             << ", which stage 1 leaves free: a later stage may change the "
-                                                "values of stage 1's prescribed components only");
-  FETICON_CHECK(omitted.empty(), "load stage " << number << " leaves "
-                                               << describe(problem.mesh, problem.dirichlet, omitted.front())
-                                               << " free, which stage 1 prescribes: a later stage may change "
-                                                  "the values of stage 1's prescribed components only");
+  FETICON_CHECK(added.empty(),
+                "load stage " << number << " prescribes " << describe(problem.mesh, stage.dirichlet, added.front())
+                              << ", which stage 1 leaves free: a later stage may change the "
+                                 "values of stage 1's prescribed components only");
+  FETICON_CHECK(omitted.empty(),
+                "load stage " << number << " leaves " << describe(problem.mesh, problem.dirichlet, omitted.front())
+                              << " free, which stage 1 prescribes: a later stage may change "
+                                 "the values of stage 1's prescribed components only");
 }
 
 /// The rule of the file comment at `p`: start null in stage 1 (the unloaded start).
@@ -160,11 +158,10 @@ LoadHistory::LoadHistory(std::vector<int64_t> dofs, std::vector<StageEnd> stages
   {
     const StageEnd& end = _stages[s];
     FETICON_CHECK(end.steps >= 1, "load stage " << s + 1 << " has " << end.steps << " load steps, must be >= 1");
-    FETICON_CHECK(end.force.size() == _stages[0].force.size() &&
-                      end.values.size() == static_cast<la::Index>(_dofs.size()),
-                  "load stage " << s + 1 << ": " << end.force.size() << " forces and " << end.values.size()
-                                << " prescribed values, expected " << _stages[0].force.size() << " and "
-                                << _dofs.size());
+    FETICON_CHECK(
+        end.force.size() == _stages[0].force.size() && end.values.size() == static_cast<la::Index>(_dofs.size()),
+        "load stage " << s + 1 << ": " << end.force.size() << " forces and " << end.values.size()
+                      << " prescribed values, expected " << _stages[0].force.size() << " and " << _dofs.size());
     _last_step.push_back((s == 0 ? 0 : _last_step.back()) + end.steps);
     _force_norm.push_back(end.force.norm());
   }
@@ -179,7 +176,8 @@ int LoadHistory::last_step(int stage) const
 LoadPoint LoadHistory::point(int step) const
 {
   FETICON_CHECK(step >= 1 && step <= n_steps(), "load step " << step << " of " << n_steps());
-  const auto stage = static_cast<int>(std::lower_bound(_last_step.begin(), _last_step.end(), step) - _last_step.begin());
+  const auto stage =
+      static_cast<int>(std::lower_bound(_last_step.begin(), _last_step.end(), step) - _last_step.begin());
   const int j = step - (stage == 0 ? 0 : _last_step[stage - 1]);
   // As a one-stage run's t = n / N, so that stage 1 reproduces its numbers exactly.
   const double fraction = static_cast<double>(j) / _stages[stage].steps;
@@ -220,8 +218,5 @@ la::Vector LoadHistory::prescribed_values(int step) const
   return blend(p, p.stage == 1 ? nullptr : &_stages[p.stage - 2].values, _stages[p.stage - 1].values);
 }
 
-ConstrainedDofs LoadHistory::prescribed(int step) const
-{
-  return {_dofs, prescribed_values(step)};
-}
+ConstrainedDofs LoadHistory::prescribed(int step) const { return {_dofs, prescribed_values(step)}; }
 } // namespace feticon::fem

@@ -31,9 +31,9 @@ namespace feticon::fem
 /// Where a load step stands in the history.
 struct LoadPoint
 {
-  int stage = 1;           ///< 1-based; 1 is the problem's own loads
-  double fraction = 0;     ///< j / N_s in (0, 1]: how far into its stage
-  double load_factor = 0;  ///< t_n = (stage - 1) + fraction
+  int stage = 1;          ///< 1-based; 1 is the problem's own loads
+  double fraction = 0;    ///< j / N_s in (0, 1]: how far into its stage
+  double load_factor = 0; ///< t_n = (stage - 1) + fraction
 };
 
 /// What a stage reaches at its end, and in how many load steps.

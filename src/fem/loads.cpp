@@ -29,42 +29,36 @@ void integrate_face(const mesh::HexMesh& mesh, const mesh::Face& face, Visit&& v
       // Face nodes run counter-clockwise seen from outside, so dxi x deta points outward.
       const Eigen::Vector3d normal = dxi.cross(deta);
       const double dA = normal.norm();
-      FETICON_CHECK(dA > 0, "degenerate boundary face with nodes " << face[0] << ", " << face[1]
-                                                                   << ", " << face[2] << ", "
-                                                                   << face[3]);
+      FETICON_CHECK(dA > 0,
+                    "degenerate boundary face with nodes " << face[0] << ", " << face[1] << ", " << face[2] << ", "
+                                                           << face[3]);
       visit(N, dA, normal / dA);
     }
 }
 } // namespace
 
-void add_face_traction(const mesh::HexMesh& mesh, const std::vector<mesh::Face>& faces,
-                       const Eigen::Vector3d& traction, la::Vector& f)
+void add_face_traction(const mesh::HexMesh& mesh, const std::vector<mesh::Face>& faces, const Eigen::Vector3d& traction,
+                       la::Vector& f)
 {
   FETICON_ASSERT(f.size() == 3 * mesh.n_nodes(), "force vector size");
   for (const mesh::Face& face : faces)
-    integrate_face(mesh, face,
-                   [&](const Eigen::Vector4d& N, double dA, const Eigen::Vector3d&)
-                   {
-                     for (int a = 0; a < 4; ++a)
-                       f.segment<3>(3 * face[a]) += N(a) * dA * traction;
-                   });
+    integrate_face(mesh, face, [&](const Eigen::Vector4d& N, double dA, const Eigen::Vector3d&) {
+      for (int a = 0; a < 4; ++a)
+        f.segment<3>(3 * face[a]) += N(a) * dA * traction;
+    });
 }
 
-void add_face_pressure(const mesh::HexMesh& mesh, const std::vector<mesh::Face>& faces,
-                       double pressure, la::Vector& f)
+void add_face_pressure(const mesh::HexMesh& mesh, const std::vector<mesh::Face>& faces, double pressure, la::Vector& f)
 {
   FETICON_ASSERT(f.size() == 3 * mesh.n_nodes(), "force vector size");
   for (const mesh::Face& face : faces)
-    integrate_face(mesh, face,
-                   [&](const Eigen::Vector4d& N, double dA, const Eigen::Vector3d& normal)
-                   {
-                     for (int a = 0; a < 4; ++a)
-                       f.segment<3>(3 * face[a]) -= N(a) * dA * pressure * normal;
-                   });
+    integrate_face(mesh, face, [&](const Eigen::Vector4d& N, double dA, const Eigen::Vector3d& normal) {
+      for (int a = 0; a < 4; ++a)
+        f.segment<3>(3 * face[a]) -= N(a) * dA * pressure * normal;
+    });
 }
 
-void add_nodal_force(const std::vector<int32_t>& nodes, const Eigen::Vector3d& total_force,
-                     la::Vector& f)
+void add_nodal_force(const std::vector<int32_t>& nodes, const Eigen::Vector3d& total_force, la::Vector& f)
 {
   FETICON_CHECK(!nodes.empty(), "a nodal force was applied to an empty node set");
   for (int32_t n : nodes)
@@ -75,8 +69,7 @@ double face_set_area(const mesh::HexMesh& mesh, const std::vector<mesh::Face>& f
 {
   double area = 0;
   for (const mesh::Face& face : faces)
-    integrate_face(mesh, face,
-                   [&](const Eigen::Vector4d&, double dA, const Eigen::Vector3d&) { area += dA; });
+    integrate_face(mesh, face, [&](const Eigen::Vector4d&, double dA, const Eigen::Vector3d&) { area += dA; });
   return area;
 }
 } // namespace feticon::fem

@@ -18,8 +18,7 @@ Eigen::Matrix<double, 6, 6> Material::elasticity_matrix() const
 
 void Material::check(const std::string& where) const
 {
-  FETICON_CHECK(std::isfinite(young) && young > 0,
-                where << ": Young's modulus E = " << young << " must be positive");
+  FETICON_CHECK(std::isfinite(young) && young > 0, where << ": Young's modulus E = " << young << " must be positive");
   FETICON_CHECK(std::isfinite(poisson) && poisson > -1 && poisson < 0.5,
                 where << ": Poisson's ratio nu = " << poisson << " must lie in (-1, 0.5)");
 }

@@ -25,8 +25,7 @@ struct Material
 /// 1/E* = (1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2 (Johnson 1985, Contact Mechanics, eq. 4.22).
 inline double contact_modulus(const Material& first, const Material& second)
 {
-  return 1 / ((1 - first.poisson * first.poisson) / first.young +
-              (1 - second.poisson * second.poisson) / second.young);
+  return 1 / ((1 - first.poisson * first.poisson) / first.young + (1 - second.poisson * second.poisson) / second.young);
 }
 
 /// Small strain (linear) or total Lagrangian (Green–Lagrange strain, finite rotations).

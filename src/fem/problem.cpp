@@ -35,9 +35,9 @@ ConstrainedDofs Problem::all_constrained_dofs() const
       for (int32_t n = 0; n < mesh.n_nodes(); ++n)
       {
         auto [it, inserted] = merged.emplace(3 * static_cast<int64_t>(n) + i, 0.0);
-        FETICON_CHECK(it->second == 0.0, "node " << n << " prescribes " << it->second
-                                                 << " for component " << i
-                                                 << ", which plane strain fixes to zero");
+        FETICON_CHECK(it->second == 0.0,
+                      "node " << n << " prescribes " << it->second << " for component " << i
+                              << ", which plane strain fixes to zero");
       }
   return to_constrained_dofs(merged);
 }
@@ -46,8 +46,7 @@ void Problem::validate() const
 {
   FETICON_CHECK(mesh.n_cells() > 0, "problem '" << name << "': the mesh has no cells");
   FETICON_CHECK(static_cast<int32_t>(materials.size()) == mesh.n_bodies(),
-                "problem '" << name << "': " << mesh.n_bodies() << " bodies but " << materials.size()
-                            << " materials");
+                "problem '" << name << "': " << mesh.n_bodies() << " bodies but " << materials.size() << " materials");
   for (size_t b = 0; b < materials.size(); ++b)
     materials[b].check("body '" + mesh.body_names[b] + "'");
   for (const auto& d : dirichlet)
@@ -63,9 +62,9 @@ void Problem::validate() const
     FETICON_CHECK(std::isfinite(p.pressure), "pressure on '" << p.set << "' is not finite");
   }
   for (const auto& n : nodal_forces)
-    FETICON_CHECK(n.node >= 0 && n.node < mesh.n_nodes() && n.component >= 0 && n.component < 3 &&
-                      std::isfinite(n.value),
-                  "nodal force on node " << n.node << ", component " << n.component << " is out of range or not finite");
+    FETICON_CHECK(
+        n.node >= 0 && n.node < mesh.n_nodes() && n.component >= 0 && n.component < 3 && std::isfinite(n.value),
+        "nodal force on node " << n.node << ", component " << n.component << " is out of range or not finite");
   for (const auto& e : equations)
   {
     FETICON_CHECK(!e.terms.empty(), "a linear equation has no terms");
@@ -79,10 +78,8 @@ void Problem::validate() const
   {
     if (!c.slave_nodes.empty())
       FETICON_CHECK(!mesh.node_set(c.slave_nodes).empty(), "contact slave node set '" << c.slave_nodes << "' is empty");
-    FETICON_CHECK(!mesh.face_set(c.slave).empty(), "contact slave surface '" << c.slave
-                                                                             << "' is empty");
-    FETICON_CHECK(!mesh.face_set(c.master).empty(), "contact master surface '" << c.master
-                                                                               << "' is empty");
+    FETICON_CHECK(!mesh.face_set(c.slave).empty(), "contact slave surface '" << c.slave << "' is empty");
+    FETICON_CHECK(!mesh.face_set(c.master).empty(), "contact master surface '" << c.master << "' is empty");
   }
 }
 } // namespace feticon::fem

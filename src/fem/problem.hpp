@@ -77,7 +77,7 @@ struct Problem
 {
   std::string name;
   mesh::HexMesh mesh;
-  bool mesh_from_cache = false; ///< the mesh came from the mesh cache (mesh/mesh_cache.hpp)
+  bool mesh_from_cache = false;    ///< the mesh came from the mesh cache (mesh/mesh_cache.hpp)
   std::vector<Material> materials; ///< one per body
   std::vector<DirichletCondition> dirichlet;
   std::vector<FaceTraction> tractions;

@@ -4,9 +4,9 @@
 
 namespace feticon::fem
 {
-std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(
-    const mesh::HexMesh& mesh, const la::Vector& u, const std::vector<Material>& body_materials,
-    Kinematics kinematics)
+std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::HexMesh& mesh, const la::Vector& u,
+                                                              const std::vector<Material>& body_materials,
+                                                              Kinematics kinematics)
 {
   std::vector<Eigen::Matrix<double, 6, 1>> stresses(mesh.n_cells());
   NodeCoords X, ue;
@@ -22,11 +22,10 @@ std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(
   return stresses;
 }
 
-std::vector<Eigen::Matrix<double, 6, 1>> nodal_average(
-    const mesh::HexMesh& mesh, const std::vector<Eigen::Matrix<double, 6, 1>>& cell_values)
+std::vector<Eigen::Matrix<double, 6, 1>> nodal_average(const mesh::HexMesh& mesh,
+                                                       const std::vector<Eigen::Matrix<double, 6, 1>>& cell_values)
 {
-  std::vector<Eigen::Matrix<double, 6, 1>> sum(mesh.n_nodes(),
-                                               Eigen::Matrix<double, 6, 1>::Zero());
+  std::vector<Eigen::Matrix<double, 6, 1>> sum(mesh.n_nodes(), Eigen::Matrix<double, 6, 1>::Zero());
   std::vector<int> count(mesh.n_nodes(), 0);
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
     for (int32_t node : mesh.cells[c])

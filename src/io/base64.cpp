@@ -13,7 +13,7 @@ constexpr std::size_t buffer_capacity = 1 << 16;
 void encode_group(const unsigned char* bytes, int n_bytes, std::string& out)
 {
   const unsigned value = (unsigned{bytes[0]} << 16) | (n_bytes > 1 ? unsigned{bytes[1]} << 8 : 0u) |
-                         (n_bytes > 2 ? unsigned{bytes[2]} : 0u);
+      (n_bytes > 2 ? unsigned{bytes[2]} : 0u);
   out += alphabet[(value >> 18) & 63];
   out += alphabet[(value >> 12) & 63];
   out += n_bytes > 1 ? alphabet[(value >> 6) & 63] : '=';

@@ -63,9 +63,9 @@ std::vector<std::pair<int32_t, int>> element_faces(const mesh::HexMesh& mesh, co
         if (nodes == key)
           found = {c, f + 1};
       }
-    FETICON_CHECK(found.first >= 0, "calculix export: a face of set '" << set << "' (nodes " << face[0] << ", "
-                                                                       << face[1] << ", " << face[2] << ", " << face[3]
-                                                                       << ") is no face of a hex8 cell");
+    FETICON_CHECK(found.first >= 0,
+                  "calculix export: a face of set '" << set << "' (nodes " << face[0] << ", " << face[1] << ", "
+                                                     << face[2] << ", " << face[3] << ") is no face of a hex8 cell");
     out.push_back(found);
   }
   return out;
@@ -78,8 +78,9 @@ int32_t body_of_faces(const mesh::HexMesh& mesh, const std::string& set,
   std::set<int32_t> bodies;
   for (const auto& [cell, f] : faces)
     bodies.insert(mesh.cell_body[cell]);
-  FETICON_CHECK(bodies.size() == 1, "calculix export: contact surface '" << set << "' spans " << bodies.size()
-                                                                        << " bodies; it must lie on one");
+  FETICON_CHECK(bodies.size() == 1,
+                "calculix export: contact surface '" << set << "' spans " << bodies.size()
+                                                     << " bodies; it must lie on one");
   return *bodies.begin();
 }
 
@@ -132,8 +133,8 @@ struct ContactPairFaces
 
 /// Element faces and stiffness of every contact pair; a slave body that floats along the
 /// master normal is shifted into its master in `x` (the overclosure recorded in `summary`).
-std::vector<ContactPairFaces> contact_pairs(const fem::Problem& problem, const CalculixOptions& options,
-                                            Coordinates& x, CalculixDeckSummary& summary)
+std::vector<ContactPairFaces> contact_pairs(const fem::Problem& problem, const CalculixOptions& options, Coordinates& x,
+                                            CalculixDeckSummary& summary)
 {
   const mesh::HexMesh& mesh = problem.mesh;
   std::vector<std::vector<int32_t>> cells_of_node(mesh.n_nodes());
@@ -150,8 +151,8 @@ std::vector<ContactPairFaces> contact_pairs(const fem::Problem& problem, const C
     pair.master = element_faces(mesh, names.master, cells_of_node);
     const int32_t slave_body = body_of_faces(mesh, names.slave, pair.slave);
     const int32_t master_body = body_of_faces(mesh, names.master, pair.master);
-    FETICON_CHECK(slave_body != master_body, "calculix export: contact pair " << names.slave << " / " << names.master
-                                                                              << " lies on one body");
+    FETICON_CHECK(slave_body != master_body,
+                  "calculix export: contact pair " << names.slave << " / " << names.master << " lies on one body");
     const double slave_size = mean_normal_and_size(mesh, names.slave).second;
     const Eigen::Vector3d master_normal = mean_normal_and_size(mesh, names.master).first;
     const double young = std::max(problem.materials[slave_body].young, problem.materials[master_body].young);
@@ -237,7 +238,8 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const std::ve
   for (size_t p = 0; p < pairs.size(); ++p)
   {
     const fem::ContactPairNames& names = problem.contacts[p];
-    for (const auto& [set, faces] : {std::pair{names.slave, &pairs[p].slave}, std::pair{names.master, &pairs[p].master}})
+    for (const auto& [set, faces] :
+         {std::pair{names.slave, &pairs[p].slave}, std::pair{names.master, &pairs[p].master}})
     {
       out << "*SURFACE, NAME=" << deck_name("S_", set) << ", TYPE=ELEMENT\n";
       for (const auto& [cell, f] : *faces)
@@ -284,12 +286,12 @@ void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOp
 }
 } // namespace
 
-CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const CalculixOptions& options,
-                                        std::ostream& out)
+CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const CalculixOptions& options, std::ostream& out)
 {
   FETICON_CHECK(options.increments >= 1, "calculix export: increments = " << options.increments << " must be >= 1");
   FETICON_CHECK(std::isfinite(options.contact_stiffness_factor) && options.contact_stiffness_factor > 0,
-                "calculix export: contact stiffness factor " << options.contact_stiffness_factor << " must be positive");
+                "calculix export: contact stiffness factor " << options.contact_stiffness_factor
+                                                             << " must be positive");
   const mesh::HexMesh& mesh = problem.mesh;
   CalculixDeckSummary summary;
   summary.n_nodes = mesh.n_nodes();

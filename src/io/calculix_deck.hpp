@@ -38,8 +38,8 @@ namespace feticon::io
 {
 struct CalculixOptions
 {
-  bool nlgeom = true;  ///< large displacements (total Lagrangian)
-  int increments = 1;  ///< load increments of the step (feticon's load_steps)
+  bool nlgeom = true; ///< large displacements (total Lagrangian)
+  int increments = 1; ///< load increments of the step (feticon's load_steps)
   /// Penalty slope K = factor * E / h of the linear pressure-overclosure law.
   double contact_stiffness_factor = 5.0;
   /// Shift (m) of a floating slave body into its master; < 0: 2 % of the shortest slave face edge.
@@ -59,6 +59,5 @@ struct CalculixDeckSummary
 /// @brief Writes the deck of `problem` to `out`.
 /// @throws feticon::Error naming what cannot be translated (a face of a set that is no cell
 ///   face, a contact pair whose slave body is not one body).
-CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const CalculixOptions& options,
-                                        std::ostream& out);
+CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const CalculixOptions& options, std::ostream& out);
 } // namespace feticon::io

@@ -28,16 +28,16 @@ void check_members(const std::vector<int32_t>& ids, int32_t n, const std::string
                    const std::filesystem::path& path)
 {
   for (const int32_t id : ids)
-    FETICON_CHECK(id >= 0 && id < n, "dat '" << path.string() << "': " << what << " holds index "
-                                             << id << " outside [0, " << n << ")");
+    FETICON_CHECK(id >= 0 && id < n,
+                  "dat '" << path.string() << "': " << what << " holds index " << id << " outside [0, " << n << ")");
 }
 
 void check_size(std::span<const double> values, std::size_t expected, const char* name,
                 const std::filesystem::path& path)
 {
   FETICON_CHECK(values.empty() || values.size() == expected,
-                "dat '" << path.string() << "': " << name << " has " << values.size()
-                        << " values, expected " << expected);
+                "dat '" << path.string() << "': " << name << " has " << values.size() << " values, expected "
+                        << expected);
 }
 
 /// Blank line, " <what> for set <set> and time <E14.7>", blank line (printout.f formats 100-107).
@@ -77,12 +77,11 @@ const char* keyword_of(Kind kind)
 }
 } // namespace
 
-DatWriter::DatWriter(const std::filesystem::path& path, DatModel model)
-    : _path(path), _model(std::move(model))
+DatWriter::DatWriter(const std::filesystem::path& path, DatModel model) : _path(path), _model(std::move(model))
 {
   FETICON_CHECK(_model.n_nodes >= 0 && _model.n_cells >= 0,
-                "dat '" << path.string() << "': negative mesh size " << _model.n_nodes << " nodes, "
-                        << _model.n_cells << " cells");
+                "dat '" << path.string() << "': negative mesh size " << _model.n_nodes << " nodes, " << _model.n_cells
+                        << " cells");
   check_labels(_model.node_labels, _model.n_nodes, "node", "dat", path);
   check_labels(_model.element_labels, _model.n_cells, "element", "dat", path);
   for (const auto& [name, ids] : _model.node_sets)
@@ -92,8 +91,8 @@ DatWriter::DatWriter(const std::filesystem::path& path, DatModel model)
   check_members(_model.contact_slave_nodes, _model.n_nodes, "contact_slave_nodes", path);
 
   _sorted_slaves = _model.contact_slave_nodes;
-  std::sort(_sorted_slaves.begin(), _sorted_slaves.end(), [&](int32_t a, int32_t b)
-            { return label_of(_model.node_labels, a) < label_of(_model.node_labels, b); });
+  std::sort(_sorted_slaves.begin(), _sorted_slaves.end(),
+            [&](int32_t a, int32_t b) { return label_of(_model.node_labels, a) < label_of(_model.node_labels, b); });
   _sorted_slaves.erase(std::unique(_sorted_slaves.begin(), _sorted_slaves.end()), _sorted_slaves.end());
 
   _file = create_file(path);
@@ -101,8 +100,7 @@ DatWriter::DatWriter(const std::filesystem::path& path, DatModel model)
 
 void DatWriter::close() { close_file(_file, _path); }
 
-const std::vector<int32_t>& DatWriter::sorted_set(bool nodes, const std::string& name,
-                                                  const std::string& where)
+const std::vector<int32_t>& DatWriter::sorted_set(bool nodes, const std::string& name, const std::string& where)
 {
   const auto key = std::make_pair(nodes, name);
   if (const auto found = _sorted_sets.find(key); found != _sorted_sets.end())
@@ -122,9 +120,9 @@ const std::vector<int32_t>& DatWriter::sorted_set(bool nodes, const std::string&
       std::string known;
       for (const auto& entry : sets)
         add_to_list(known, entry.first);
-      FETICON_CHECK(false, where << ": " << (nodes ? "node" : "element") << " set " << name
-                                 << " is not defined (defined: " << (known.empty() ? "none" : known)
-                                 << ")");
+      FETICON_CHECK(false,
+                    where << ": " << (nodes ? "node" : "element") << " set " << name
+                          << " is not defined (defined: " << (known.empty() ? "none" : known) << ")");
     }
     members = found->second;
   }
@@ -185,8 +183,8 @@ void DatWriter::print_nodal(TextFileBuffer& file, const DatStep& step, const Dec
   }
 }
 
-void DatWriter::print_integration_points(TextFileBuffer& file, const DatStep& step,
-                                         const DeckOutputRequest& request, std::string& unavailable)
+void DatWriter::print_integration_points(TextFileBuffer& file, const DatStep& step, const DeckOutputRequest& request,
+                                         std::string& unavailable)
 {
   std::string& out = file.buffer;
   const std::vector<int32_t>& cells = sorted_set(false, request.set, request.where);
@@ -276,8 +274,7 @@ void DatWriter::print_contact(TextFileBuffer& file, const DatStep& step, const D
   }
 }
 
-std::vector<std::string> DatWriter::add_step(const DatStep& step,
-                                             const std::vector<DeckOutputRequest>& requests)
+std::vector<std::string> DatWriter::add_step(const DatStep& step, const std::vector<DeckOutputRequest>& requests)
 {
   FETICON_CHECK(_file != nullptr, "dat '" << _path.string() << "': add_step after close");
   const std::size_t n_nodes = static_cast<std::size_t>(_model.n_nodes);
@@ -290,8 +287,7 @@ std::vector<std::string> DatWriter::add_step(const DatStep& step,
   check_size(step.contact_gap, n_nodes, "contact_gap", _path);
 
   std::vector<std::string> warnings;
-  auto warn = [&](const std::string& line)
-  {
+  auto warn = [&](const std::string& line) {
     if (_warned.insert(line).second)
       warnings.push_back(line);
   };

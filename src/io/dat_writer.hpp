@@ -67,8 +67,8 @@ struct DatModel
 /// available": a request for it prints nothing and add_step() returns a warning.
 struct DatStep
 {
-  double time = 0.0; ///< total time of the deck (start time of the step + step time)
-  std::span<const double> displacement;   ///< n_nodes x 3 (m), node-major: U
+  double time = 0.0;                    ///< total time of the deck (start time of the step + step time)
+  std::span<const double> displacement; ///< n_nodes x 3 (m), node-major: U
   /// n_nodes x 3 (N): RF as CalculiX defines it, f_int(u) - f_contact (internal nodal force
   /// minus the contact force on the body; ccx counts its contact springs as elements), i.e. the
   /// support reactions plus the nodal loads: ~0 at free nodes, contact nodes included.
@@ -109,8 +109,8 @@ public:
 private:
   void print_nodal(TextFileBuffer& file, const DatStep& step, const DeckOutputRequest& request,
                    std::string& unavailable);
-  void print_integration_points(TextFileBuffer& file, const DatStep& step,
-                                const DeckOutputRequest& request, std::string& unavailable);
+  void print_integration_points(TextFileBuffer& file, const DatStep& step, const DeckOutputRequest& request,
+                                std::string& unavailable);
   void print_contact(TextFileBuffer& file, const DatStep& step, const DeckOutputRequest& request,
                      std::string& unavailable);
   /// Members of a node or element set in increasing label order (cached).

@@ -35,7 +35,7 @@ private:
   /// Labels 1.._identity are indices 0.._identity-1 (no table), until the first label that
   /// breaks the rule; -1 after that.
   int64_t _identity = 0;
-  int64_t _reserve = 0; ///< the outline's count, for the dense table once it is needed
+  int64_t _reserve = 0;        ///< the outline's count, for the dense table once it is needed
   std::vector<int32_t> _dense; ///< index + 1 by label, 0 if absent
   int64_t _count = 0;
   std::unordered_map<int64_t, int32_t> _sparse;
@@ -61,7 +61,8 @@ public:
       push_back(i);
   }
   int64_t size() const { return _size; }
-  template <class F> void for_each(F&& f) const
+  template <class F>
+  void for_each(F&& f) const
   {
     for (const Run& run : _runs)
       for (int32_t i = run.first;; ++i)
@@ -111,8 +112,8 @@ struct DeckFace
 struct DeckSurface
 {
   bool node_based = false;
-  std::vector<DeckFace> faces;  ///< TYPE=ELEMENT
-  std::vector<int32_t> nodes;   ///< TYPE=NODE
+  std::vector<DeckFace> faces; ///< TYPE=ELEMENT
+  std::vector<int32_t> nodes;  ///< TYPE=NODE
   DeckPosition where;
 };
 
@@ -165,7 +166,7 @@ struct DeckData
   std::vector<DeckLoadState> step_states; ///< at the end of every step
 
   std::vector<std::string> warnings;
-  std::set<std::string> warned; ///< each warning once
+  std::set<std::string> warned;       ///< each warning once
   std::deque<std::string> file_names; ///< what the positions above point to
 
   void warn(const std::string& line)

@@ -207,8 +207,9 @@ private:
     const int64_t label = integer(line, i, is_node ? "node number" : "element number");
     const int32_t index = (is_node ? _data.node_index : _data.element_index).find(label);
     if (index < 0)
-      fail_at(line.at(i), (is_node ? "node " : "element ") + std::to_string(label) + " is not defined (by " +
-                              (is_node ? "a *NODE" : "an *ELEMENT") + " before this line)");
+      fail_at(line.at(i),
+              (is_node ? "node " : "element ") + std::to_string(label) + " is not defined (by " +
+                  (is_node ? "a *NODE" : "an *ELEMENT") + " before this line)");
     return index;
   }
   int32_t node(const DeckDataLine& line, size_t i) const { return entity(line, i, true); }
@@ -221,8 +222,8 @@ private:
       const auto& sets = is_node ? _data.node_sets : _data.element_sets;
       const auto it = sets.find(name_of(line.fields[i]));
       if (it == sets.end())
-        fail_at(line.at(i), std::string(is_node ? "no node set '" : "no element set '") + name_of(line.fields[i]) +
-                                "' is defined");
+        fail_at(line.at(i),
+                std::string(is_node ? "no node set '" : "no element set '") + name_of(line.fields[i]) + "' is defined");
       return it->second.expand();
     }
     return {entity(line, i, is_node)};
@@ -321,9 +322,8 @@ private:
       if (index >= _data.coordinates.rows()) // more nodes than the outline counted
         _data.coordinates.conservativeResize(2 * static_cast<Eigen::Index>(index) + 1024, 3);
       for (int k = 1; k <= 3; ++k)
-        _data.coordinates(index, k - 1) = static_cast<size_t>(k) < line.fields.size() && !line.fields[k].empty()
-                                              ? real(line, k, "coordinate")
-                                              : 0.0;
+        _data.coordinates(index, k - 1) =
+            static_cast<size_t>(k) < line.fields.size() && !line.fields[k].empty() ? real(line, k, "coordinate") : 0.0;
       if (set)
         set->push_back(index);
     }
@@ -334,9 +334,11 @@ private:
     known_parameters({"TYPE", "ELSET"});
     const std::string& type = required("TYPE");
     if (type == "C3D8R" || type == "C3D8I")
-      _data.warn("element type " + type + " (" + _keyword.where.str() + ") is solved as C3D8 (full 2x2x2 "
-                 "integration" + (type == "C3D8R" ? std::string(", not reduced with hourglass control)")
-                                                  : std::string(", without incompatible modes: stiffer in bending)")));
+      _data.warn("element type " + type + " (" + _keyword.where.str() +
+                 ") is solved as C3D8 (full 2x2x2 "
+                 "integration" +
+                 (type == "C3D8R" ? std::string(", not reduced with hourglass control)")
+                                  : std::string(", without incompatible modes: stiffer in bending)")));
     else if (type != "C3D8")
       throw Error(where() + ": element type " + type + " is not implemented by feticon (C3D8, C3D8R, C3D8I)");
     IndexRuns* set = _keyword.has("ELSET") ? &_data.element_sets[required("ELSET")] : nullptr;
@@ -351,8 +353,8 @@ private:
       {
         label = integer(line, 0, "element number");
         if (label <= 0 || label > largest_label)
-          fail_at(line.at(0), "element number " + std::to_string(label) + " is outside 1.." +
-                                  std::to_string(largest_label));
+          fail_at(line.at(0),
+                  "element number " + std::to_string(label) + " is outside 1.." + std::to_string(largest_label));
         start = line.where;
         first = 1;
       }
@@ -366,8 +368,9 @@ private:
       {
         if (line.continues)
           continue;
-        fail_at(line.where, "element " + std::to_string(label) + " of type " + type + " has " +
-                                std::to_string(nodes_of_element.size()) + " nodes, not 8");
+        fail_at(line.where,
+                "element " + std::to_string(label) + " of type " + type + " has " +
+                    std::to_string(nodes_of_element.size()) + " nodes, not 8");
       }
       const int32_t index = static_cast<int32_t>(_data.cells.size());
       if (!_data.element_index.insert(label, index))
@@ -408,8 +411,9 @@ private:
         {
           const int32_t i = nodes_kind ? _data.node_index.find(label) : _data.element_index.find(label);
           if (i < 0)
-            fail_at(line.where, std::string(nodes_kind ? "node " : "element ") + std::to_string(label) +
-                                    " of the generated range is not defined");
+            fail_at(line.where,
+                    std::string(nodes_kind ? "node " : "element ") + std::to_string(label) +
+                        " of the generated range is not defined");
           listed.push_back(i);
           if (last - label < step) // the next label would pass `last` (or overflow int64)
             break;
@@ -559,11 +563,13 @@ private:
         value = line.fields.size() > 3 && !line.fields[3].empty() ? real(line, 3, "prescribed value") : 0.0;
       }
       if (first < 1 || last < first || last > 6)
-        fail_at(line.where, "degrees of freedom " + std::to_string(first) + " to " + std::to_string(last) +
-                                " are not within 1 to 6");
+        fail_at(line.where,
+                "degrees of freedom " + std::to_string(first) + " to " + std::to_string(last) +
+                    " are not within 1 to 6");
       if (last > 3)
-        _data.warn(line.where.str() + ": *BOUNDARY on degrees of freedom 4 to 6 (rotations): solid elements "
-                                      "have none, so they are not used");
+        _data.warn(line.where.str() +
+                   ": *BOUNDARY on degrees of freedom 4 to 6 (rotations): solid elements "
+                   "have none, so they are not used");
       for (int64_t dof = first; dof <= std::min<int64_t>(last, 3); ++dof)
         for (int32_t n : targets)
           target[3 * int64_t{n} + dof - 1] = value;
@@ -589,7 +595,8 @@ private:
       const std::vector<int32_t> targets = nodes(line, 0);
       const int64_t dof = integer(line, 1, "degree of freedom");
       if (dof < 1 || dof > 3)
-        fail_at(line.at(1), "degree of freedom " + std::to_string(dof) + ": forces act on 1 to 3 (solid nodes have no moments)");
+        fail_at(line.at(1),
+                "degree of freedom " + std::to_string(dof) + ": forces act on 1 to 3 (solid nodes have no moments)");
       const double value = real(line, 2, "force");
       for (int32_t n : targets)
         _data.state.cload[3 * int64_t{n} + dof - 1] = value;
@@ -601,8 +608,8 @@ private:
   {
     const std::string kind = name_of(line.fields[face_field]);
     if (kind.size() != 2 || kind[0] != 'P' || kind[1] < '1' || kind[1] > '6')
-      fail_at(line.at(face_field), "load type '" + text(line.fields[face_field]) +
-                                        "' is not implemented by feticon (pressure P1 to P6)");
+      fail_at(line.at(face_field),
+              "load type '" + text(line.fields[face_field]) + "' is not implemented by feticon (pressure P1 to P6)");
     for (int32_t c : cells)
       _data.state.dload[{c, kind[1] - '0'}] = value;
   }
@@ -701,7 +708,8 @@ private:
     if (law != "LINEAR" && law != "EXPONENTIAL" && law != "TABULAR")
       throw Error(where() + ": PRESSURE-OVERCLOSURE=" + law + " is not a law feticon knows");
     _data.warn("interaction " + _interaction + ": PRESSURE-OVERCLOSURE=" + law + " (" + parameters + ", " +
-               _keyword.where.str() + ") is a penalty law; feticon enforces non-penetration exactly, so its "
+               _keyword.where.str() +
+               ") is a penalty law; feticon enforces non-penetration exactly, so its "
                "answer differs from CalculiX's by the penetration the law allows (pressure / slope)");
   }
 
@@ -714,7 +722,8 @@ private:
     if (const std::string* type = _keyword.value("TYPE"))
     {
       if (*type != "SURFACE TO SURFACE" && *type != "NODE TO SURFACE")
-        throw Error(where() + ": TYPE=" + *type + " is not implemented by feticon (SURFACE TO SURFACE, NODE TO SURFACE)");
+        throw Error(where() + ": TYPE=" + *type +
+                    " is not implemented by feticon (SURFACE TO SURFACE, NODE TO SURFACE)");
       pair.node_to_surface = *type == "NODE TO SURFACE";
     }
     if (_keyword.has("ADJUST"))
@@ -751,7 +760,8 @@ private:
     _step.where = _keyword.where.str();
     const std::string* nlgeom = _keyword.value("NLGEOM");
     // NLGEOM stays on once a step has set it (CalculiX: "it remains active in all steps").
-    _step.nlgeom = (!_data.steps.empty() && _data.steps.back().nlgeom) || (nlgeom && (nlgeom->empty() || *nlgeom == "YES"));
+    _step.nlgeom =
+        (!_data.steps.empty() && _data.steps.back().nlgeom) || (nlgeom && (nlgeom->empty() || *nlgeom == "YES"));
     _have_procedure = false;
     no_data();
   }
@@ -773,8 +783,9 @@ private:
       fail_at(line.where, "the initial increment and the step time must be positive");
     const double increments = std::ceil(total / initial - 1e-9);
     if (increments > 1000)
-      fail_at(line.where, "the step asks for " + std::to_string(static_cast<int64_t>(increments)) +
-                              " increments; feticon takes at most 1000 load steps per step");
+      fail_at(line.where,
+              "the step asks for " + std::to_string(static_cast<int64_t>(increments)) +
+                  " increments; feticon takes at most 1000 load steps per step");
     _step.increments = std::max(1, static_cast<int>(increments));
     _step.time = total;
     if (!_keyword.has("DIRECT"))
@@ -801,9 +812,9 @@ private:
 
   void output_request()
   {
-    known_parameters({"NSET", "ELSET", "TOTALS", "FREQUENCY", "FREQUENCYF", "GLOBAL", "OUTPUT", "SLAVE",
-                      "MASTER", "TIME POINTS", "LAST ITERATIONS", "CONTACT ELEMENTS", "SECTION FORCES",
-                      "OUTPUT ALL", "NSETF", "POSITION"});
+    known_parameters({"NSET", "ELSET", "TOTALS", "FREQUENCY", "FREQUENCYF", "GLOBAL", "OUTPUT", "SLAVE", "MASTER",
+                      "TIME POINTS", "LAST ITERATIONS", "CONTACT ELEMENTS", "SECTION FORCES", "OUTPUT ALL", "NSETF",
+                      "POSITION"});
     if (!_in_step)
       throw Error(where() + " belongs inside a *STEP");
     using Kind = DeckOutputRequest::Kind;
@@ -829,8 +840,8 @@ private:
       if (*t != "YES" && *t != "ONLY" && *t != "NO")
         throw Error(where() + ": TOTALS=" + *t + " must be YES, ONLY or NO");
       request.totals = *t == "YES" ? DeckOutputRequest::Totals::yes
-                       : *t == "ONLY" ? DeckOutputRequest::Totals::only
-                                      : DeckOutputRequest::Totals::no;
+          : *t == "ONLY"           ? DeckOutputRequest::Totals::only
+                                   : DeckOutputRequest::Totals::no;
     }
     for (const char* p : {"FREQUENCY", "FREQUENCYF", "TIME POINTS", "LAST ITERATIONS", "CONTACT ELEMENTS"})
       if (_keyword.has(p))
@@ -842,10 +853,9 @@ private:
           request.variables.push_back(name_of(v));
     if (request.variables.empty())
       request.variables = request.kind == Kind::node_print || request.kind == Kind::node_file
-                              ? std::vector<std::string>{"U"}
-                              : request.kind == Kind::el_print || request.kind == Kind::el_file
-                                    ? std::vector<std::string>{"S"}
-                                    : std::vector<std::string>{"CSTR"};
+          ? std::vector<std::string>{"U"}
+          : request.kind == Kind::el_print || request.kind == Kind::el_file ? std::vector<std::string>{"S"}
+                                                                            : std::vector<std::string>{"CSTR"};
     _step.outputs.push_back(std::move(request));
   }
 
@@ -898,10 +908,7 @@ bool LabelIndex::insert(int64_t label, int32_t index)
   return true;
 }
 
-void LabelIndex::reserve(int64_t labels)
-{
-  _reserve = labels;
-}
+void LabelIndex::reserve(int64_t labels) { _reserve = labels; }
 
 int32_t LabelIndex::find(int64_t label) const
 {

@@ -99,7 +99,8 @@ private:
       if (m == 0)
         m = count++;
     if (count < n_read)
-      _d.warn(std::to_string(n_read - count) + " nodes of the deck belong to no element; supports on them are "
+      _d.warn(std::to_string(n_read - count) +
+              " nodes of the deck belong to no element; supports on them are "
               "not used");
     mesh::HexMesh& mesh = _p.mesh;
     // The label tables are done with: free them before the mesh arrays are formed.
@@ -127,16 +128,19 @@ private:
       for (int32_t& n : mesh.cells[c])
         n = _mesh_node[n];
       const double det = mesh::centre_jacobian_determinant(mesh, mesh.cells[c]);
-      FETICON_CHECK(det > 0, "element " << _d.element_labels[c] << " is inverted or degenerate (Jacobian "
-                                        << det << " at its centre): its nodes are not in C3D8 order");
+      FETICON_CHECK(det > 0,
+                    "element " << _d.element_labels[c] << " is inverted or degenerate (Jacobian " << det
+                               << " at its centre): its nodes are not in C3D8 order");
       const int corner = first_degenerate_corner(mesh, mesh.cells[c], det);
-      FETICON_CHECK(corner < 0, "element " << _d.element_labels[c] << " is degenerate at its node "
-                                           << _deck.node_labels[mesh.cells[c][corner]] << " (a repeated node, "
-                                           << "or edges there that span no volume): a collapsed C3D8 is not implemented");
+      FETICON_CHECK(corner < 0,
+                    "element " << _d.element_labels[c] << " is degenerate at its node "
+                               << _deck.node_labels[mesh.cells[c][corner]] << " (a repeated node, "
+                               << "or edges there that span no volume): a collapsed C3D8 is not implemented");
     }
     _deck.element_labels = std::move(_d.element_labels);
     if (count == n_read)
-      _mesh_node = std::vector<int32_t>(); // the identity: mesh_of() needs no table (and "= {}" would keep the capacity)
+      _mesh_node =
+          std::vector<int32_t>(); // the identity: mesh_of() needs no table (and "= {}" would keep the capacity)
   }
 
   /// The deck label of a node in reading order.
@@ -171,18 +175,18 @@ private:
     {
       const DeckSection& section = _d.sections[s];
       const auto set = _d.element_sets.find(section.elset);
-      FETICON_CHECK(set != _d.element_sets.end(), section.where.str() << ": *SOLID SECTION: no element set '"
-                                                                      << section.elset << "' is defined");
+      FETICON_CHECK(set != _d.element_sets.end(),
+                    section.where.str() << ": *SOLID SECTION: no element set '" << section.elset << "' is defined");
       const auto material = _d.materials.find(section.material);
-      FETICON_CHECK(material != _d.materials.end(), section.where.str() << ": *SOLID SECTION: no material '"
-                                                                        << section.material << "' is defined");
-      FETICON_CHECK(material->second.young > 0, section.where.str() << ": *SOLID SECTION: material '"
-                                                                    << section.material << "' has no *ELASTIC");
-      set->second.for_each([&](int32_t c)
-      {
+      FETICON_CHECK(material != _d.materials.end(),
+                    section.where.str() << ": *SOLID SECTION: no material '" << section.material << "' is defined");
+      FETICON_CHECK(material->second.young > 0,
+                    section.where.str() << ": *SOLID SECTION: material '" << section.material << "' has no *ELASTIC");
+      set->second.for_each([&](int32_t c) {
         FETICON_CHECK(section_of_cell[c] < 0 || section_of_cell[c] == static_cast<int32_t>(s),
-                      section.where.str() << ": *SOLID SECTION: element " << _deck.element_labels[c]
-                                          << " has a section already (" << _d.sections[section_of_cell[c]].where.str() << ")");
+                      section.where.str()
+                          << ": *SOLID SECTION: element " << _deck.element_labels[c] << " has a section already ("
+                          << _d.sections[section_of_cell[c]].where.str() << ")");
         section_of_cell[c] = static_cast<int32_t>(s);
       });
     }
@@ -193,7 +197,8 @@ private:
     {
       const int32_t section = section_of_cell[c];
       FETICON_CHECK(section >= 0, "element " << _deck.element_labels[c] << " has no *SOLID SECTION (no material)");
-      const auto [it, added] = body_of_root.emplace(components.find(mesh.cells[c][0]), static_cast<int32_t>(body_section.size()));
+      const auto [it, added] =
+          body_of_root.emplace(components.find(mesh.cells[c][0]), static_cast<int32_t>(body_section.size()));
       if (added)
         body_section.push_back(section);
       const int32_t body = it->second;
@@ -228,8 +233,7 @@ private:
     {
       std::vector<int32_t> nodes;
       nodes.reserve(static_cast<size_t>(members.size()));
-      members.for_each([&](int32_t n)
-      {
+      members.for_each([&](int32_t n) {
         if (mesh_of(n) >= 0)
           nodes.push_back(mesh_of(n));
       });
@@ -326,8 +330,8 @@ private:
     for (const DeckContactPair& pair : _d.pairs)
     {
       const std::string at = pair.where.str() + ": *CONTACT PAIR";
-      FETICON_CHECK(_d.interactions.count(pair.interaction), at << ": no *SURFACE INTERACTION '" << pair.interaction
-                                                                << "' is defined");
+      FETICON_CHECK(_d.interactions.count(pair.interaction),
+                    at << ": no *SURFACE INTERACTION '" << pair.interaction << "' is defined");
       for (const std::string& s : {pair.slave, pair.master})
         FETICON_CHECK(_d.surfaces.count(s), at << ": no *SURFACE '" << s << "' is defined");
       FETICON_CHECK(pair.slave != pair.master, at << ": slave and master are the same surface '" << pair.slave << "'");
@@ -376,7 +380,8 @@ private:
   }
 
   /// Pressures as face sets grouped by value.
-  std::vector<fem::FacePressure> pressures(const std::map<std::pair<int32_t, int>, double>& dload, const std::string& prefix)
+  std::vector<fem::FacePressure> pressures(const std::map<std::pair<int32_t, int>, double>& dload,
+                                           const std::string& prefix)
   {
     std::map<double, std::vector<mesh::Face>> groups;
     for (const auto& [face, value] : dload)
@@ -431,10 +436,12 @@ private:
         std::vector<int64_t> differ;
         std::set_symmetric_difference(dofs.begin(), dofs.end(), first_dofs.begin(), first_dofs.end(),
                                       std::back_inserter(differ));
-        FETICON_CHECK(false, name << " prescribes other degrees of freedom than step 1 (node "
-                                  << read_label(static_cast<int32_t>(differ[0] / 3)) << ", degree of freedom " << differ[0] % 3 + 1
-                                  << "); feticon keeps the supports of the first step and lets later steps change "
-                                  << "their values only");
+        FETICON_CHECK(false,
+                      name << " prescribes other degrees of freedom than step 1 (node "
+                           << read_label(static_cast<int32_t>(differ[0] / 3)) << ", degree of freedom "
+                           << differ[0] % 3 + 1
+                           << "); feticon keeps the supports of the first step and lets later steps change "
+                           << "their values only");
       }
       const std::string prefix = "step" + std::to_string(k + 1) + "_";
       if (k == 0)

@@ -215,8 +215,9 @@ bool DeckTokenizer::next_keyword(DeckKeyword& out)
         continue;
       const size_t eq = part.find('=');
       std::string key = normalized(part.substr(0, eq));
-      FETICON_CHECK(!key.empty(), out.where.str() << ": *" << out.name << ": a parameter with no name ('"
-                                                  << std::string(part) << "')");
+      FETICON_CHECK(!key.empty(),
+                    out.where.str() << ": *" << out.name << ": a parameter with no name ('" << std::string(part)
+                                    << "')");
       std::string value;
       if (eq != std::string_view::npos)
       {

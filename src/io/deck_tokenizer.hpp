@@ -32,7 +32,7 @@ struct DeckPosition
 /// except the value of INPUT= (a file name).
 struct DeckKeyword
 {
-  std::string name; ///< "CONTACT PAIR": upper case, inner blanks kept single
+  std::string name;                                            ///< "CONTACT PAIR": upper case, inner blanks kept single
   std::vector<std::pair<std::string, std::string>> parameters; ///< KEY, VALUE ("" for a flag)
   DeckPosition where;
 

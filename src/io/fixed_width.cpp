@@ -22,8 +22,7 @@ void append_right_justified(std::string& out, const char* text, std::size_t n, i
 /// %e: at least two exponent digits). Returns the length; `text` holds at least 64 chars.
 std::size_t scientific(char* text, double value, int precision)
 {
-  const std::to_chars_result result =
-      std::to_chars(text, text + 64, value, std::chars_format::scientific, precision);
+  const std::to_chars_result result = std::to_chars(text, text + 64, value, std::chars_format::scientific, precision);
   FETICON_ASSERT(result.ec == std::errc(), "to_chars failed for precision " << precision);
   return static_cast<std::size_t>(result.ptr - text);
 }
@@ -144,9 +143,9 @@ void TextFileBuffer::write()
   if (buffer.empty())
     return;
   const std::size_t written = std::fwrite(buffer.data(), 1, buffer.size(), _file);
-  FETICON_CHECK(written == buffer.size(), "cannot write '" << _path << "' (" << written << " of "
-                                                           << buffer.size()
-                                                           << " bytes written): is the disk full?");
+  FETICON_CHECK(written == buffer.size(),
+                "cannot write '" << _path << "' (" << written << " of " << buffer.size()
+                                 << " bytes written): is the disk full?");
   buffer.clear();
 }
 
@@ -156,12 +155,10 @@ CFile create_file(const std::filesystem::path& path)
   {
     std::error_code error;
     std::filesystem::create_directories(path.parent_path(), error);
-    FETICON_CHECK(!error, "cannot create the folder '" << path.parent_path().string()
-                                                       << "': " << error.message());
+    FETICON_CHECK(!error, "cannot create the folder '" << path.parent_path().string() << "': " << error.message());
   }
   CFile file(std::fopen(path.c_str(), "wb"));
-  FETICON_CHECK(file != nullptr,
-                "cannot create '" << path.string() << "': check that its folder is writable");
+  FETICON_CHECK(file != nullptr, "cannot create '" << path.string() << "': check that its folder is writable");
   return file;
 }
 

@@ -30,15 +30,14 @@ void append_user_record(std::string& out, const std::string& keyword, const std:
 /// Date and time as ccx writes them: "25.november.2026", "21:40:18".
 std::pair<std::string, std::string> date_and_clock()
 {
-  static const std::array<const char*, 12> months = {"january", "february", "march",     "april",
-                                                     "may",     "june",     "july",      "august",
-                                                     "september", "october", "november", "december"};
+  static const std::array<const char*, 12> months = {"january",   "february", "march",    "april",
+                                                     "may",       "june",     "july",     "august",
+                                                     "september", "october",  "november", "december"};
   const std::time_t now = std::time(nullptr);
   std::tm local{};
   localtime_r(&now, &local);
   char date[40];
-  std::snprintf(date, sizeof date, "%02d.%s.%04d", local.tm_mday, months[local.tm_mon],
-                local.tm_year + 1900);
+  std::snprintf(date, sizeof date, "%02d.%s.%04d", local.tm_mday, months[local.tm_mon], local.tm_year + 1900);
   char clock[16];
   std::snprintf(clock, sizeof clock, "%02d:%02d:%02d", local.tm_hour, local.tm_min, local.tm_sec);
   return {date, clock};
@@ -65,10 +64,9 @@ void check_field(std::span<const double> values, int32_t n_nodes, int components
   if (values.empty())
     return;
   const std::size_t expected = static_cast<std::size_t>(n_nodes) * components;
-  FETICON_CHECK(values.size() == expected, "frd '" << path.string() << "': " << name << " has "
-                                                   << values.size() << " values, expected "
-                                                   << n_nodes << " nodes x " << components
-                                                   << " = " << expected);
+  FETICON_CHECK(values.size() == expected,
+                "frd '" << path.string() << "': " << name << " has " << values.size() << " values, expected " << n_nodes
+                        << " nodes x " << components << " = " << expected);
 }
 
 /// value(i, k) of a field stored node after node, `components` values each.
@@ -93,11 +91,10 @@ FrdFields frd_fields(const std::vector<DeckOutputRequest>& outputs, std::vector<
   FrdFields fields;
   for (const DeckOutputRequest& request : outputs)
   {
-    if (request.kind != Kind::node_file && request.kind != Kind::el_file &&
-        request.kind != Kind::contact_file)
+    if (request.kind != Kind::node_file && request.kind != Kind::el_file && request.kind != Kind::contact_file)
       continue;
     const char* keyword = request.kind == Kind::node_file ? "*NODE FILE"
-                          : request.kind == Kind::el_file ? "*EL FILE"
+        : request.kind == Kind::el_file                   ? "*EL FILE"
                                                           : "*CONTACT FILE";
     std::string unsupported;
     for (const std::string& variable : request.variables)
@@ -126,8 +123,8 @@ FrdFields frd_fields(const std::vector<DeckOutputRequest>& outputs, std::vector<
   return fields;
 }
 
-FrdWriter::FrdWriter(const std::filesystem::path& path, const mesh::HexMesh& mesh,
-                     const Labels& node_labels, const Labels& element_labels)
+FrdWriter::FrdWriter(const std::filesystem::path& path, const mesh::HexMesh& mesh, const Labels& node_labels,
+                     const Labels& element_labels)
     : _path(path), _node_labels(node_labels), _n_nodes(mesh.n_nodes())
 {
   check_labels(node_labels, mesh.n_nodes(), "node", "frd", path);
@@ -137,9 +134,8 @@ FrdWriter::FrdWriter(const std::filesystem::path& path, const mesh::HexMesh& mes
                         << mesh.cell_body.size() << " body indices");
   for (const mesh::Cell& cell : mesh.cells)
     for (const int32_t id : cell)
-      FETICON_CHECK(id >= 0 && id < mesh.n_nodes(), "frd '" << path.string() << "': cell node id "
-                                                            << id << " outside [0, "
-                                                            << mesh.n_nodes() << ")");
+      FETICON_CHECK(id >= 0 && id < mesh.n_nodes(),
+                    "frd '" << path.string() << "': cell node id " << id << " outside [0, " << mesh.n_nodes() << ")");
   _file = create_file(path);
 
   TextFileBuffer out(_file.get(), path.string());
@@ -205,8 +201,7 @@ void FrdWriter::write_block_header(std::string& out, const FrdStep& step, int32_
   ++_n_blocks;
   char line[160];
   // frdheader.c: 1PSTEP with block counter, increment and step in I12 fields from column 24.
-  std::snprintf(line, sizeof line, "    1PSTEP              %12d%12d%12d          \n", _n_blocks,
-                increment, step.step);
+  std::snprintf(line, sizeof line, "    1PSTEP              %12d%12d%12d          \n", _n_blocks, increment, step.step);
   out += line;
   // 100CL: output number + 100 (I5 at column 7), time (12 characters at 12), nodes (I12 at 24),
   // analysis type 0 = static (column 57), output number (I5 at 58), 1 = ASCII (column 74).
@@ -238,8 +233,7 @@ void FrdWriter::add_step(const FrdStep& step)
   const int32_t increment = step.increment > 0 ? step.increment : _increment;
   ++_n_steps;
 
-  FETICON_CHECK(std::fseek(_file.get(), _end_of_results, SEEK_SET) == 0,
-                "cannot seek in '" << _path.string() << "'");
+  FETICON_CHECK(std::fseek(_file.get(), _end_of_results, SEEK_SET) == 0, "cannot seek in '" << _path.string() << "'");
   TextFileBuffer out(_file.get(), _path.string());
   std::string& text = out.buffer;
   write_fields(out, step, increment);
@@ -285,8 +279,9 @@ void FrdWriter::write_block(TextFileBuffer& out, const FrdStep& step, int32_t in
 
 void FrdWriter::write_fields(TextFileBuffer& out, const FrdStep& step, int32_t increment)
 {
-  auto block = [&](const char* records, int components, auto value)
-  { write_block(out, step, increment, records, components, value); };
+  auto block = [&](const char* records, int components, auto value) {
+    write_block(out, step, increment, records, components, value);
+  };
   if (!step.displacement.empty())
     block(" -4  DISP        4    1\n"
           " -5  D1          1    2    1    0\n"
@@ -331,9 +326,7 @@ void FrdWriter::write_fields(TextFileBuffer& out, const FrdStep& step, int32_t i
           " -5  CPRESS      1    4    1    2\n"
           " -5  CSHEAR1     1    4    2    3\n"
           " -5  CSHEAR2     1    4    3    1\n",
-          6,
-          [&](int32_t i, int k)
-          {
+          6, [&](int32_t i, int k) {
             if (k == 0)
               return gap.empty() ? 0.0 : gap[i];
             return k == 3 ? pressure[i] : 0.0;

@@ -49,9 +49,9 @@ namespace feticon::io
 /// at [i * components, (i + 1) * components)). An empty span leaves its field out.
 struct FrdStep
 {
-  double time = 0.0;     ///< total time of the deck (start time of the step + step time)
-  int32_t step = 1;      ///< the deck's *STEP, 1-based
-  int32_t increment = 0; ///< increment within the step, 1-based; 0: count the add_step() calls
+  double time = 0.0;                        ///< total time of the deck (start time of the step + step time)
+  int32_t step = 1;                         ///< the deck's *STEP, 1-based
+  int32_t increment = 0;                    ///< increment within the step, 1-based; 0: count the add_step() calls
   std::span<const double> displacement;     ///< n_nodes x 3 (m): DISP
   std::span<const double> stress;           ///< n_nodes x 6 Cauchy (Pa), xx yy zz xy yz zx: STRESS
   std::span<const double> strain;           ///< n_nodes x 6, tensor components (xy = gamma/2),
@@ -90,8 +90,8 @@ public:
   /// @param[in] element_labels deck number of every mesh cell; empty: 1..n_cells
   /// @throws feticon::Error if a label vector has the wrong size, a label is outside
   ///   [1, 9999999999] (the I10 field), or the file cannot be written.
-  FrdWriter(const std::filesystem::path& path, const mesh::HexMesh& mesh,
-            const Labels& node_labels = {}, const Labels& element_labels = {});
+  FrdWriter(const std::filesystem::path& path, const mesh::HexMesh& mesh, const Labels& node_labels = {},
+            const Labels& element_labels = {});
   FrdWriter(const FrdWriter&) = delete;
   FrdWriter& operator=(const FrdWriter&) = delete;
 
@@ -118,17 +118,17 @@ private:
   /// One block: header, name and component records, then per node `components` values
   /// value(i, k) (k < components).
   template <class Value>
-  void write_block(TextFileBuffer& out, const FrdStep& step, int32_t increment, const char* records,
-                   int components, Value value);
+  void write_block(TextFileBuffer& out, const FrdStep& step, int32_t increment, const char* records, int components,
+                   Value value);
 
   std::filesystem::path _path;
   CFile _file;
   Labels _node_labels; ///< empty: 1..n
   int32_t _n_nodes = 0;
   int32_t _n_steps = 0;
-  int32_t _n_blocks = 0;      ///< ccx's "icounter" in 1PSTEP
-  int32_t _last_step = 0;     ///< deck step of the previous add_step
-  int32_t _increment = 0;     ///< add_step calls within _last_step
-  long _end_of_results = 0;   ///< file offset of the closing " 9999"
+  int32_t _n_blocks = 0;    ///< ccx's "icounter" in 1PSTEP
+  int32_t _last_step = 0;   ///< deck step of the previous add_step
+  int32_t _increment = 0;   ///< add_step calls within _last_step
+  long _end_of_results = 0; ///< file offset of the closing " 9999"
 };
 } // namespace feticon::io

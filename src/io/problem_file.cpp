@@ -17,8 +17,7 @@ namespace feticon::io
 {
 namespace
 {
-const std::set<std::string> structured_keys = {"mesh", "bodies", "plane_strain", "supports",
-                                               "loads", "contact"};
+const std::set<std::string> structured_keys = {"mesh", "bodies", "plane_strain", "supports", "loads", "contact"};
 
 std::vector<std::string> split_path(const std::string& path)
 {
@@ -39,30 +38,25 @@ std::string names_of(const Map& map)
   return list;
 }
 
-bool is_index(const std::string& s)
-{
-  return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
-}
+bool is_index(const std::string& s) { return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos; }
 
 /// Sets the node at `path` (creating maps on the way) to `value`.
-void set_path(YAML::Node node, const std::vector<std::string>& path, size_t i,
-              const YAML::Node& value, const std::string& full)
+void set_path(YAML::Node node, const std::vector<std::string>& path, size_t i, const YAML::Node& value,
+              const std::string& full)
 {
   const std::string& key = path[i];
   const bool last = i + 1 == path.size();
   if (node.IsSequence())
   {
     FETICON_CHECK(is_index(key) && std::stoul(key) < node.size(),
-                  "--set " << full << ": '" << key << "' is not an index of a list of "
-                           << node.size() << " entries");
+                  "--set " << full << ": '" << key << "' is not an index of a list of " << node.size() << " entries");
     if (last)
       node[std::stoul(key)] = value;
     else
       set_path(node[std::stoul(key)], path, i + 1, value, full);
     return;
   }
-  FETICON_CHECK(node.IsMap() || node.IsNull(), "--set " << full << ": '" << key
-                                                        << "' is below a single value");
+  FETICON_CHECK(node.IsMap() || node.IsNull(), "--set " << full << ": '" << key << "' is below a single value");
   if (last)
   {
     node[key] = value;
@@ -81,9 +75,9 @@ void set_path(YAML::Node node, const std::vector<std::string>& path, size_t i,
 void reject_duplicate_keys(const YAML::Node& node, const std::string& path, const std::string& source, int depth = 0)
 {
   constexpr int max_depth = 32; // a problem file nests a few levels (sections, lists of maps)
-  FETICON_CHECK(depth <= max_depth, source << ": '" << path.substr(0, 80) << (path.size() > 80 ? "..." : "")
-                                           << "' nests deeper than " << max_depth
-                                           << " levels (a YAML alias that contains itself?)");
+  FETICON_CHECK(depth <= max_depth,
+                source << ": '" << path.substr(0, 80) << (path.size() > 80 ? "..." : "") << "' nests deeper than "
+                       << max_depth << " levels (a YAML alias that contains itself?)");
   if (node.IsMap())
   {
     std::set<std::string> seen;
@@ -91,8 +85,8 @@ void reject_duplicate_keys(const YAML::Node& node, const std::string& path, cons
     {
       const std::string key = kv.first.Scalar();
       const std::string full = path.empty() ? key : path + "." + key;
-      FETICON_CHECK(seen.insert(key).second, source << ": key '" << full << "' is given twice (line "
-                                                    << kv.first.Mark().line + 1 << ")");
+      FETICON_CHECK(seen.insert(key).second,
+                    source << ": key '" << full << "' is given twice (line " << kv.first.Mark().line + 1 << ")");
       reject_duplicate_keys(kv.second, full, source, depth + 1);
     }
   }
@@ -111,8 +105,7 @@ void flatten(const YAML::Node& node, const std::string& prefix, const Settings& 
     FETICON_CHECK(!settings.knows(prefix), source << ": '" << prefix << "' must be a single value, not a map");
     FETICON_CHECK(prefix.empty() || node.size() > 0, source << ": section '" << prefix << "' is empty");
     for (const auto& kv : node)
-      flatten(kv.second, prefix.empty() ? kv.first.as<std::string>()
-                                        : prefix + "." + kv.first.as<std::string>(),
+      flatten(kv.second, prefix.empty() ? kv.first.as<std::string>() : prefix + "." + kv.first.as<std::string>(),
               settings, out, source);
     return;
   }
@@ -150,8 +143,7 @@ struct Reader
     FETICON_CHECK(node && node.IsScalar(), source << ": " << key << " must be a name");
     return node.as<std::string>();
   }
-  void only_keys(const YAML::Node& node, const std::string& where,
-                 const std::set<std::string>& allowed) const
+  void only_keys(const YAML::Node& node, const std::string& where, const std::set<std::string>& allowed) const
   {
     FETICON_CHECK(node.IsMap(), source << ": " << where << " must be a map of keys");
     for (const auto& kv : node)
@@ -179,8 +171,7 @@ std::array<int, 3> box_cells(const YAML::Node& box, const std::string& key, cons
 
 mesh::HexMesh boxes_mesh(const YAML::Node& boxes, const Reader& r)
 {
-  FETICON_CHECK(boxes.IsSequence() && boxes.size() > 0,
-                r.source << ": mesh.boxes must be a non-empty list of boxes");
+  FETICON_CHECK(boxes.IsSequence() && boxes.size() > 0, r.source << ": mesh.boxes must be a non-empty list of boxes");
   mesh::HexMesh out;
   for (size_t i = 0; i < boxes.size(); ++i)
   {
@@ -256,24 +247,29 @@ void read_problem_tree(ProblemFile& file, const std::filesystem::path& path)
                 "problem file " << path.string() << " is not a regular file (a folder or a device?)");
   const auto bytes = std::filesystem::file_size(path, ec);
   FETICON_CHECK(!ec && bytes <= max_problem_file_bytes,
-                "problem file " << path.string() << " has " << bytes << " bytes; a problem file holds settings "
-                                "(at most " << max_problem_file_bytes << " bytes), a mesh goes in mesh.file");
+                "problem file " << path.string() << " has " << bytes
+                                << " bytes; a problem file holds settings "
+                                   "(at most "
+                                << max_problem_file_bytes << " bytes), a mesh goes in mesh.file");
   try
   {
     file.root = YAML::LoadFile(path.string());
   }
   catch (const YAML::DeepRecursion& e)
   {
-    FETICON_CHECK(false, path.string() << ": YAML nested deeper than the reader's limit at line " << e.mark.line + 1
-                                       << "; a problem file nests a few levels (sections, lists of maps)");
+    FETICON_CHECK(false,
+                  path.string() << ": YAML nested deeper than the reader's limit at line " << e.mark.line + 1
+                                << "; a problem file nests a few levels (sections, lists of maps)");
   }
   catch (const YAML::Exception& e)
   {
-    FETICON_CHECK(false, path.string() << ": invalid YAML at line " << e.mark.line + 1
-                                       << ", column " << e.mark.column + 1 << ": " << e.msg);
+    FETICON_CHECK(false,
+                  path.string() << ": invalid YAML at line " << e.mark.line + 1 << ", column " << e.mark.column + 1
+                                << ": " << e.msg);
   }
-  FETICON_CHECK(!file.root.IsNull(), path.string() << ": the file holds no settings (empty or comments "
-                                                   "only); write at least 'problem: hertz'");
+  FETICON_CHECK(!file.root.IsNull(),
+                path.string() << ": the file holds no settings (empty or comments "
+                                 "only); write at least 'problem: hertz'");
   FETICON_CHECK(file.root.IsMap(), path.string() << ": the top level must be a map of keys");
   reject_duplicate_keys(file.root, "", path.string());
 }
@@ -349,17 +345,19 @@ ProblemFile load_problem_file(const std::filesystem::path& path, const std::vect
     file.deck = std::filesystem::absolute(file.folder / file.root["mesh"]["file"].Scalar());
     file.deck_outline = deck_outline(file.deck);
     for (const char* section : {"bodies", "plane_strain", "supports", "loads", "contact"})
-      FETICON_CHECK(!file.root[section], file.source << ": section '" << section << "' is not read when mesh.file is "
-                                                     << "an input deck: the deck gives the whole model");
+      FETICON_CHECK(!file.root[section],
+                    file.source << ": section '" << section << "' is not read when mesh.file is "
+                                << "an input deck: the deck gives the whole model");
   }
   // The structured sections describe a custom problem; a built-in one would ignore them.
   if (file.settings.text("problem") != "custom")
     for (const auto& kv : file.root)
     {
       const std::string key = kv.first.as<std::string>();
-      FETICON_CHECK(!is_structured_key(key), file.source << ": section '" << key << "' is read only by custom problems, "
-                                                         << "but problem is " << file.settings.text("problem")
-                                                         << "; add 'problem: custom' or remove it");
+      FETICON_CHECK(!is_structured_key(key),
+                    file.source << ": section '" << key << "' is read only by custom problems, "
+                                << "but problem is " << file.settings.text("problem")
+                                << "; add 'problem: custom' or remove it");
     }
   return file;
 }
@@ -371,8 +369,8 @@ CustomMeshSize custom_mesh_size(const ProblemFile& file)
   FETICON_CHECK(root["mesh"], file.source << ": problem: custom needs a 'mesh' section (file: or boxes:)");
   r.only_keys(root["mesh"], "mesh", {"file", "boxes"});
   CustomMeshSize size;
-  size.plane_strain = root["plane_strain"] && root["plane_strain"].IsScalar() &&
-                      root["plane_strain"].Scalar() == "true";
+  size.plane_strain =
+      root["plane_strain"] && root["plane_strain"].IsScalar() && root["plane_strain"].Scalar() == "true";
   if (root["mesh"]["file"])
   {
     const std::filesystem::path path = file.folder / r.text(root["mesh"]["file"], "mesh.file");
@@ -460,10 +458,11 @@ fem::Problem build_custom_problem(const ProblemFile& file)
       for (int d = 0; d < 3; ++d)
         if (s[names[d]])
           c.value[d] = r.number(s[names[d]], key + "." + names[d]);
-      FETICON_CHECK(c.value[0] || c.value[1] || c.value[2], file.source << ": " << key << " prescribes no component (x, y or z)");
-      FETICON_CHECK(p.mesh.node_sets.count(c.set), file.source << ": " << key << ".set: no node set '"
-                                                                << c.set << "' in the mesh; it has: "
-                                                                << names_of(p.mesh.node_sets));
+      FETICON_CHECK(c.value[0] || c.value[1] || c.value[2],
+                    file.source << ": " << key << " prescribes no component (x, y or z)");
+      FETICON_CHECK(p.mesh.node_sets.count(c.set),
+                    file.source << ": " << key << ".set: no node set '" << c.set
+                                << "' in the mesh; it has: " << names_of(p.mesh.node_sets));
       p.dirichlet.push_back(c);
     }
   }
@@ -476,8 +475,9 @@ fem::Problem build_custom_problem(const ProblemFile& file)
       const std::string key = "loads." + std::to_string(i);
       r.only_keys(l, key, {"set", "traction"});
       const std::string set = r.text(l["set"], key + ".set");
-      FETICON_CHECK(p.mesh.face_sets.count(set), file.source << ": " << key << ".set: no face set '" << set
-                                                            << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
+      FETICON_CHECK(p.mesh.face_sets.count(set),
+                    file.source << ": " << key << ".set: no face set '" << set
+                                << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
       p.tractions.push_back({set, r.vector3(l["traction"], key + ".traction")});
     }
   }
@@ -491,10 +491,12 @@ fem::Problem build_custom_problem(const ProblemFile& file)
       r.only_keys(c, key, {"slave", "master"});
       fem::ContactPairNames pair{r.text(c["slave"], key + ".slave"), r.text(c["master"], key + ".master")};
       for (const std::string& s : {pair.slave, pair.master})
-        FETICON_CHECK(p.mesh.face_sets.count(s), file.source << ": " << key << ": no face set '" << s
-                                                              << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
-      FETICON_CHECK(pair.slave != pair.master, file.source << ": " << key << ": slave and master are the same face set '"
-                                                            << pair.slave << "'; a contact pair needs two surfaces");
+        FETICON_CHECK(p.mesh.face_sets.count(s),
+                      file.source << ": " << key << ": no face set '" << s
+                                  << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
+      FETICON_CHECK(pair.slave != pair.master,
+                    file.source << ": " << key << ": slave and master are the same face set '" << pair.slave
+                                << "'; a contact pair needs two surfaces");
       p.contacts.push_back(pair);
     }
   }

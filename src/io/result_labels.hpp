@@ -22,11 +22,11 @@ inline void check_labels(const Labels& labels, int64_t n, const char* what, cons
   if (labels.empty())
     return;
   FETICON_CHECK(static_cast<int64_t>(labels.size()) == n,
-                file << " '" << path.string() << "': " << labels.size() << " " << what << " labels for " << n
-                     << " " << what << "s; pass one per " << what << " or none (1..n)");
+                file << " '" << path.string() << "': " << labels.size() << " " << what << " labels for " << n << " "
+                     << what << "s; pass one per " << what << " or none (1..n)");
   for (const int32_t label : labels)
-    FETICON_CHECK(label >= 1, file << " '" << path.string() << "': " << what << " label " << label
-                                   << " is not positive");
+    FETICON_CHECK(label >= 1,
+                  file << " '" << path.string() << "': " << what << " label " << label << " is not positive");
 }
 
 /// The label of item `index` (0-based): labels[index], or index + 1 without labels.

@@ -114,8 +114,8 @@ std::string Settings::help() const
 {
   std::ostringstream os;
   for (const auto& s : specs())
-    os << "  " << s.key << (s.default_value.empty() ? " (optional)" : " (default " + s.default_value + ")")
-       << ": " << s.help << '\n';
+    os << "  " << s.key << (s.default_value.empty() ? " (optional)" : " (default " + s.default_value + ")") << ": "
+       << s.help << '\n';
   return os.str();
 }
 
@@ -126,8 +126,10 @@ const SettingSpec& Settings::spec(const std::string& key, const std::string& sou
   for (const auto& s : specs())
     if (s.key == key)
       return s;
-  FETICON_CHECK(false, source << ": unknown key '" << key << "'; run 'feticon run --help' for "
-                                                            "the list of keys");
+  FETICON_CHECK(false,
+                source << ": unknown key '" << key
+                       << "'; run 'feticon run --help' for "
+                          "the list of keys");
   throw; // unreachable: FETICON_CHECK(false, ...) throws
 }
 
@@ -147,16 +149,15 @@ void Settings::set(const std::string& key, const std::string& raw, const std::st
                   source << ": " << key << " = '" << value << "' is not a finite number");
     // Underflow (1e-320, subnormal) as well: no setting means anything there, and number()
     // would not read it back.
-    FETICON_CHECK(errno != ERANGE, source << ": " << key << " = " << value
-                                          << " is out of the range of normal double-precision numbers");
+    FETICON_CHECK(errno != ERANGE,
+                  source << ": " << key << " = " << value << " is out of the range of normal double-precision numbers");
     if (s.type == Type::integer)
-      FETICON_CHECK(v == std::floor(v), source << ": " << key << " = " << value
-                                               << " must be an integer");
+      FETICON_CHECK(v == std::floor(v), source << ": " << key << " = " << value << " must be an integer");
     const bool below = s.min_exclusive ? v <= s.min : v < s.min;
     const bool above = s.max_exclusive ? v >= s.max : v > s.max;
-    FETICON_CHECK(!below && !above, source << ": " << key << " = " << value << " is out of range "
-                                           << (s.min_exclusive ? "(" : "[") << s.min << ", " << s.max
-                                           << (s.max_exclusive ? ")" : "]") << ": " << s.help);
+    FETICON_CHECK(!below && !above,
+                  source << ": " << key << " = " << value << " is out of range " << (s.min_exclusive ? "(" : "[")
+                         << s.min << ", " << s.max << (s.max_exclusive ? ")" : "]") << ": " << s.help);
     break;
   }
   case Type::text:

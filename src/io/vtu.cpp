@@ -19,10 +19,7 @@ namespace
 /// VTK cell type id of the linear hexahedron.
 constexpr uint8_t vtk_hexahedron = 12;
 
-const char* byte_order()
-{
-  return std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
-}
+const char* byte_order() { return std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian"; }
 
 std::string xml_escape(const std::string& text)
 {
@@ -47,8 +44,8 @@ std::string xml_escape(const std::string& text)
 template <class T>
 constexpr const char* vtk_type_name()
 {
-  static_assert(std::is_same_v<T, double> || std::is_same_v<T, int64_t> ||
-                std::is_same_v<T, int32_t> || std::is_same_v<T, uint8_t>);
+  static_assert(std::is_same_v<T, double> || std::is_same_v<T, int64_t> || std::is_same_v<T, int32_t> ||
+                std::is_same_v<T, uint8_t>);
   if constexpr (std::is_same_v<T, double>)
     return "Float64";
   else if constexpr (std::is_same_v<T, int64_t>)
@@ -61,8 +58,8 @@ constexpr const char* vtk_type_name()
 
 /// Writes one binary DataArray; `write_values` feeds n_values values of type T to the encoder.
 template <class T, class WriteValues>
-void write_data_array(std::ostream& out, const std::string& name, int components,
-                      std::size_t n_values, WriteValues&& write_values)
+void write_data_array(std::ostream& out, const std::string& name, int components, std::size_t n_values,
+                      WriteValues&& write_values)
 {
   out << "        <DataArray type=\"" << vtk_type_name<T>() << "\" Name=\"" << xml_escape(name)
       << "\" NumberOfComponents=\"" << components << "\" format=\"binary\">\n          ";
@@ -75,12 +72,10 @@ void write_data_array(std::ostream& out, const std::string& name, int components
 }
 
 template <class T>
-void write_vector(std::ostream& out, const std::string& name, int components,
-                  const std::vector<T>& values)
+void write_vector(std::ostream& out, const std::string& name, int components, const std::vector<T>& values)
 {
   write_data_array<T>(out, name, components, values.size(),
-                      [&](Base64Writer& encoder)
-                      { encoder.write(values.data(), values.size() * sizeof(T)); });
+                      [&](Base64Writer& encoder) { encoder.write(values.data(), values.size() * sizeof(T)); });
 }
 
 void check_fields(const std::vector<VtuField>& fields, int64_t n_entities, const char* kind,
@@ -92,43 +87,38 @@ void check_fields(const std::vector<VtuField>& fields, int64_t n_entities, const
     FETICON_CHECK(names.insert(field.name).second,
                   "VTU " << kind << " field '" << field.name
                          << "' is given twice or clashes with a generated field (body, set_*)");
-    FETICON_CHECK(field.components >= 1, "VTU " << kind << " field '" << field.name << "' has "
-                                                << field.components << " components; need >= 1");
+    FETICON_CHECK(field.components >= 1,
+                  "VTU " << kind << " field '" << field.name << "' has " << field.components
+                         << " components; need >= 1");
     const int64_t expected = n_entities * field.components;
     FETICON_CHECK(static_cast<int64_t>(field.values.size()) == expected,
-                  "VTU " << kind << " field '" << field.name << "' has " << field.values.size()
-                         << " values, expected " << n_entities << " " << kind << "s x "
-                         << field.components << " components = " << expected);
+                  "VTU " << kind << " field '" << field.name << "' has " << field.values.size() << " values, expected "
+                         << n_entities << " " << kind << "s x " << field.components << " components = " << expected);
   }
 }
 
 void check_mesh(const mesh::HexMesh& mesh)
 {
   FETICON_CHECK(mesh.cell_body.size() == mesh.cells.size(),
-                "VTU: mesh has " << mesh.cells.size() << " cells but " << mesh.cell_body.size()
-                                 << " body indices");
+                "VTU: mesh has " << mesh.cells.size() << " cells but " << mesh.cell_body.size() << " body indices");
   for (const mesh::Cell& cell : mesh.cells)
     for (const int32_t id : cell)
       FETICON_CHECK(id >= 0 && id < mesh.n_nodes(),
                     "VTU: cell node id " << id << " outside [0, " << mesh.n_nodes() << ")");
   for (const auto& [name, ids] : mesh.node_sets)
     for (const int32_t id : ids)
-      FETICON_CHECK(id >= 0 && id < mesh.n_nodes(), "VTU: node set '" << name << "' has node id "
-                                                                      << id << " outside [0, "
-                                                                      << mesh.n_nodes() << ")");
+      FETICON_CHECK(id >= 0 && id < mesh.n_nodes(),
+                    "VTU: node set '" << name << "' has node id " << id << " outside [0, " << mesh.n_nodes() << ")");
 }
 
-void write_piece(std::ostream& out, const mesh::HexMesh& mesh,
-                 const Eigen::Ref<const PointMatrix>& points,
-                 const std::vector<VtuField>& point_fields,
-                 const std::vector<VtuField>& cell_fields)
+void write_piece(std::ostream& out, const mesh::HexMesh& mesh, const Eigen::Ref<const PointMatrix>& points,
+                 const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields)
 {
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"" << byte_order()
       << "\" header_type=\"UInt64\">\n"
       << "  <UnstructuredGrid>\n"
-      << "    <Piece NumberOfPoints=\"" << mesh.n_nodes() << "\" NumberOfCells=\"" << mesh.n_cells()
-      << "\">\n";
+      << "    <Piece NumberOfPoints=\"" << mesh.n_nodes() << "\" NumberOfCells=\"" << mesh.n_cells() << "\">\n";
 
   out << "      <PointData>\n";
   for (const VtuField& field : point_fields)
@@ -146,12 +136,10 @@ void write_piece(std::ostream& out, const mesh::HexMesh& mesh,
   write_vector(out, "body", 1, mesh.cell_body);
   out << "      </CellData>\n      <Points>\n";
   // Row by row, because a Ref may have an outer stride larger than 3.
-  write_data_array<double>(out, "Points", 3, std::size_t{3} * mesh.n_nodes(),
-                           [&](Base64Writer& encoder)
-                           {
-                             for (Eigen::Index i = 0; i < points.rows(); ++i)
-                               encoder.write(points.row(i).data(), 3 * sizeof(double));
-                           });
+  write_data_array<double>(out, "Points", 3, std::size_t{3} * mesh.n_nodes(), [&](Base64Writer& encoder) {
+    for (Eigen::Index i = 0; i < points.rows(); ++i)
+      encoder.write(points.row(i).data(), 3 * sizeof(double));
+  });
   out << "      </Points>\n      <Cells>\n";
   std::vector<int64_t> connectivity;
   connectivity.reserve(std::size_t{8} * mesh.n_cells());
@@ -168,8 +156,8 @@ void write_piece(std::ostream& out, const mesh::HexMesh& mesh,
 } // namespace
 
 void write_vtu(const std::filesystem::path& path, const mesh::HexMesh& mesh,
-               const Eigen::Ref<const PointMatrix>* deformed_points,
-               const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields)
+               const Eigen::Ref<const PointMatrix>* deformed_points, const std::vector<VtuField>& point_fields,
+               const std::vector<VtuField>& cell_fields)
 {
   check_mesh(mesh);
   if (deformed_points)
@@ -185,19 +173,16 @@ void write_vtu(const std::filesystem::path& path, const mesh::HexMesh& mesh,
 
   const Eigen::Ref<const PointMatrix> points =
       deformed_points ? *deformed_points : Eigen::Ref<const PointMatrix>(mesh.nodes);
-  write_file_atomically(path, [&](std::ostream& out)
-                        { write_piece(out, mesh, points, point_fields, cell_fields); });
+  write_file_atomically(path, [&](std::ostream& out) { write_piece(out, mesh, points, point_fields, cell_fields); });
 }
 
-void write_pvtu(const std::filesystem::path& path, const std::vector<std::string>& pieces,
-                const mesh::HexMesh& mesh, const std::vector<VtuField>& point_fields,
-                const std::vector<VtuField>& cell_fields)
+void write_pvtu(const std::filesystem::path& path, const std::vector<std::string>& pieces, const mesh::HexMesh& mesh,
+                const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields)
 {
   std::ostringstream out;
-  auto array = [&](const char* type, const std::string& name, int components)
-  {
-    out << "      <PDataArray type=\"" << type << "\" Name=\"" << xml_escape(name)
-        << "\" NumberOfComponents=\"" << components << "\"/>\n";
+  auto array = [&](const char* type, const std::string& name, int components) {
+    out << "      <PDataArray type=\"" << type << "\" Name=\"" << xml_escape(name) << "\" NumberOfComponents=\""
+        << components << "\"/>\n";
   };
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"" << byte_order()
@@ -224,8 +209,8 @@ PvdWriter::PvdWriter(std::filesystem::path pvd_path) : _path(std::move(pvd_path)
 
 void PvdWriter::add(double time, const std::string& vtu_relative_path)
 {
-  FETICON_CHECK(std::isfinite(time), "PVD '" << _path.string() << "': time " << time << " of '"
-                                             << vtu_relative_path << "' must be finite");
+  FETICON_CHECK(std::isfinite(time),
+                "PVD '" << _path.string() << "': time " << time << " of '" << vtu_relative_path << "' must be finite");
   FETICON_CHECK(!vtu_relative_path.empty(), "PVD '" << _path.string() << "': empty VTU path");
   _steps.emplace_back(time, vtu_relative_path);
   write();
@@ -239,8 +224,7 @@ void PvdWriter::write() const
       << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"" << byte_order() << "\">\n"
       << "  <Collection>\n";
   for (const auto& [time, file] : _steps)
-    out << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"0\" file=\""
-        << xml_escape(file) << "\"/>\n";
+    out << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"0\" file=\"" << xml_escape(file) << "\"/>\n";
   out << "  </Collection>\n</VTKFile>\n";
   write_file_atomically(_path, out.str());
 }

@@ -54,17 +54,15 @@ struct VtuField
 /// @throws feticon::Error naming the field if a size does not match the mesh, a name is empty or
 ///         repeated, or the file cannot be written.
 void write_vtu(const std::filesystem::path& path, const mesh::HexMesh& mesh,
-               const Eigen::Ref<const PointMatrix>* deformed_points,
-               const std::vector<VtuField>& point_fields = {},
+               const Eigen::Ref<const PointMatrix>* deformed_points, const std::vector<VtuField>& point_fields = {},
                const std::vector<VtuField>& cell_fields = {});
 
 /// @brief The .pvtu file that joins per-rank pieces written by write_vtu (same fields, each
 /// piece a submesh) into one dataset for ParaView.
 /// @param pieces  the piece files, relative to the directory of `path`
 /// @param mesh    any of the pieces' meshes (for the names of the generated set_* fields)
-void write_pvtu(const std::filesystem::path& path, const std::vector<std::string>& pieces,
-                const mesh::HexMesh& mesh, const std::vector<VtuField>& point_fields,
-                const std::vector<VtuField>& cell_fields);
+void write_pvtu(const std::filesystem::path& path, const std::vector<std::string>& pieces, const mesh::HexMesh& mesh,
+                const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields);
 
 /// @brief A ParaView .pvd collection of time steps, rewritten atomically after every add(), so
 /// the file on disk always lists exactly the steps written so far.

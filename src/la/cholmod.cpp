@@ -21,8 +21,7 @@ CholmodFactor& CholmodFactor::operator=(CholmodFactor&&) noexcept = default;
 
 void CholmodFactor::factorize(const SparseMatrix& A, const char* what)
 {
-  FETICON_CHECK(A.rows() == A.cols(), what << " is not square (" << A.rows() << " x "
-                                          << A.cols() << ")");
+  FETICON_CHECK(A.rows() == A.cols(), what << " is not square (" << A.rows() << " x " << A.cols() << ")");
   _impl = std::make_unique<Impl>();
   // CHOLMOD picks simplicial (small subdomains: no BLAS call overhead) or supernodal.
   _impl->solver.setMode(Eigen::CholmodAuto);
@@ -41,10 +40,11 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what)
   if (_impl->solver.info() != Eigen::Success)
   {
     _impl.reset();
-    FETICON_CHECK(false, "Cholesky factorization of " << what
-                                                      << " failed: the matrix is not positive "
-                                                         "definite (a body or subdomain may be "
-                                                         "unsupported)");
+    FETICON_CHECK(false,
+                  "Cholesky factorization of " << what
+                                               << " failed: the matrix is not positive "
+                                                  "definite (a body or subdomain may be "
+                                                  "unsupported)");
   }
 }
 
@@ -71,8 +71,7 @@ long CholmodFactor::factor_nonzeros() const
   if (!_impl)
     return 0;
   // Eigen exposes the cholmod_factor; for a supernodal factor xsize counts the entries.
-  auto& factor = const_cast<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>&>(
-      _impl->solver);
+  auto& factor = const_cast<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>&>(_impl->solver);
   cholmod_common& common = factor.cholmod();
   return static_cast<long>(common.lnz);
 }

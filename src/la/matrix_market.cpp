@@ -26,8 +26,9 @@ public:
   {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
-      throw Error(path + (std::filesystem::exists(path, ec) ? ": is not a regular file (a folder or a device?)"
-                                                             : ": no such Matrix Market file"));
+      throw Error(path +
+                  (std::filesystem::exists(path, ec) ? ": is not a regular file (a folder or a device?)"
+                                                     : ": no such Matrix Market file"));
     if (!_in)
       throw Error(path + ": cannot open the Matrix Market file for reading");
     _bytes = static_cast<long double>(std::filesystem::file_size(path, ec));
@@ -38,9 +39,8 @@ public:
   void check_plausible(long double lines, int min_bytes, const char* what) const
   {
     if (lines * min_bytes > _bytes)
-      fail("the size line declares " + std::to_string(static_cast<long long>(std::min(lines, 1e18L))) + " " +
-           what + ", more than the " + std::to_string(static_cast<long long>(_bytes)) +
-           " bytes of the file could hold");
+      fail("the size line declares " + std::to_string(static_cast<long long>(std::min(lines, 1e18L))) + " " + what +
+           ", more than the " + std::to_string(static_cast<long long>(_bytes)) + " bytes of the file could hold");
   }
 
   /// Next line, without a trailing '\r'; false at the end of the file.
@@ -88,10 +88,7 @@ private:
 class Tokens
 {
 public:
-  Tokens(const std::string& line, const LineReader& reader) : _cursor(line.c_str()),
-                                                              _reader(reader)
-  {
-  }
+  Tokens(const std::string& line, const LineReader& reader) : _cursor(line.c_str()), _reader(reader) {}
 
   long long integer(const char* what)
   {
@@ -129,10 +126,7 @@ public:
   }
 
 private:
-  static bool ends_token(const char* end)
-  {
-    return *end == '\0' || std::isspace(static_cast<unsigned char>(*end));
-  }
+  static bool ends_token(const char* end) { return *end == '\0' || std::isspace(static_cast<unsigned char>(*end)); }
 
   /// The next token, for messages ("<end of line>" if none).
   std::string token() const
@@ -173,7 +167,8 @@ Header read_header(LineReader& reader)
   words >> banner >> object >> format >> field >> symmetry;
   if (lower_case(banner) != "%%matrixmarket")
     reader.fail("expected the header '%%MatrixMarket matrix coordinate|array real general|"
-                "symmetric', found '" + line + "'");
+                "symmetric', found '" +
+                line + "'");
   if (lower_case(object) != "matrix")
     reader.fail("unsupported object '" + object + "'; expected 'matrix'");
   Header header;
@@ -198,14 +193,13 @@ int read_dimension(Tokens& tokens, const LineReader& reader, const char* what)
 {
   const long long value = tokens.integer(what);
   if (value < 0 || value > INT_MAX)
-    reader.fail(std::string(what) + " = " + std::to_string(value) + " must be in 0.." +
-                std::to_string(INT_MAX));
+    reader.fail(std::string(what) + " = " + std::to_string(value) + " must be in 0.." + std::to_string(INT_MAX));
   return static_cast<int>(value);
 }
 
 /// Reads "i j value" of a coordinate file into 0-based indices.
-void read_entry(const std::string& line, const LineReader& reader, int rows, int cols,
-                int& row, int& col, double& value)
+void read_entry(const std::string& line, const LineReader& reader, int rows, int cols, int& row, int& col,
+                double& value)
 {
   Tokens tokens(line, reader);
   const long long i = tokens.integer("row index");
@@ -215,16 +209,14 @@ void read_entry(const std::string& line, const LineReader& reader, int rows, int
   if (i < 1 || i > rows)
     reader.fail("row index " + std::to_string(i) + " out of range 1.." + std::to_string(rows));
   if (j < 1 || j > cols)
-    reader.fail("column index " + std::to_string(j) + " out of range 1.." +
-                std::to_string(cols));
+    reader.fail("column index " + std::to_string(j) + " out of range 1.." + std::to_string(cols));
   row = static_cast<int>(i - 1);
   col = static_cast<int>(j - 1);
 }
 
 /// Reads the size line and the entries of a coordinate file as 0-based triplets;
 /// `column_vector` requires exactly one column.
-std::vector<Triplet> read_coordinate(LineReader& reader, bool symmetric, bool column_vector,
-                                     int& rows, int& cols)
+std::vector<Triplet> read_coordinate(LineReader& reader, bool symmetric, bool column_vector, int& rows, int& cols)
 {
   std::string line;
   if (!reader.next_data(line))
@@ -235,25 +227,21 @@ std::vector<Triplet> read_coordinate(LineReader& reader, bool symmetric, bool co
   const long long entries = size.integer("entry count");
   size.finish("the size line 'rows columns entries'");
   if (column_vector && cols != 1)
-    reader.fail("expected a column vector (1 column), found " + std::to_string(cols) +
-                " columns");
+    reader.fail("expected a column vector (1 column), found " + std::to_string(cols) + " columns");
   const long double capacity = static_cast<long double>(rows) * cols;
   if (entries < 0 || static_cast<long double>(entries) > capacity)
     reader.fail("entry count " + std::to_string(entries) + " must be in 0..rows*columns");
   if (symmetric && rows != cols)
-    reader.fail("a symmetric matrix must be square, found " + std::to_string(rows) + " x " +
-                std::to_string(cols));
+    reader.fail("a symmetric matrix must be square, found " + std::to_string(rows) + " x " + std::to_string(cols));
   reader.check_plausible(entries, 6, "entries"); // "i j v\n"
 
   std::vector<Triplet> triplets;
-  triplets.reserve(static_cast<std::size_t>(std::min(entries, 1LL << 24)) *
-                   (symmetric ? 2 : 1));
+  triplets.reserve(static_cast<std::size_t>(std::min(entries, 1LL << 24)) * (symmetric ? 2 : 1));
   int triangle = 0; // symmetric files: +1 lower, -1 upper, 0 none seen yet
   for (long long k = 0; k < entries; ++k)
   {
     if (!reader.next_data(line))
-      reader.fail_at_end("file ends after " + std::to_string(k) + " of " +
-                         std::to_string(entries) + " entries");
+      reader.fail_at_end("file ends after " + std::to_string(k) + " of " + std::to_string(entries) + " entries");
     int row = 0, col = 0;
     double value = 0.0;
     read_entry(line, reader, rows, cols, row, col, value);
@@ -285,8 +273,8 @@ MatrixMarketSize read_matrix_market_size(const std::string& path)
   out.rows = read_dimension(size, reader, "row count");
   out.cols = read_dimension(size, reader, "column count");
   out.entries = header.coordinate ? size.integer("entry count") : static_cast<long long>(out.rows) * out.cols;
-  if (header.coordinate && (out.entries < 0 || static_cast<long double>(out.entries) >
-                                                   static_cast<long double>(out.rows) * out.cols))
+  if (header.coordinate &&
+      (out.entries < 0 || static_cast<long double>(out.entries) > static_cast<long double>(out.rows) * out.cols))
     reader.fail("entry count " + std::to_string(out.entries) + " must be in 0..rows*columns");
   reader.check_plausible(out.entries, header.coordinate ? 6 : 2, header.coordinate ? "entries" : "values");
   out.symmetric = header.symmetric;
@@ -300,8 +288,7 @@ SparseMatrix read_matrix_market_sparse(const std::string& path)
   if (!header.coordinate)
     reader.fail("a sparse matrix needs the 'coordinate' format, found 'array'");
   int rows = 0, cols = 0;
-  const std::vector<Triplet> triplets =
-      read_coordinate(reader, header.symmetric, false, rows, cols);
+  const std::vector<Triplet> triplets = read_coordinate(reader, header.symmetric, false, rows, cols);
   SparseMatrix matrix(rows, cols);
   matrix.setFromTriplets(triplets.begin(), triplets.end());
   return matrix;
@@ -331,15 +318,13 @@ Vector read_matrix_market_dense(const std::string& path)
   const int cols = read_dimension(size, reader, "column count");
   size.finish("the size line 'rows columns'");
   if (cols != 1)
-    reader.fail("expected a column vector (1 column), found " + std::to_string(cols) +
-                " columns");
+    reader.fail("expected a column vector (1 column), found " + std::to_string(cols) + " columns");
   reader.check_plausible(rows, 2, "values"); // "v\n"
   Vector vector(rows);
   for (int i = 0; i < rows; ++i)
   {
     if (!reader.next_data(line))
-      reader.fail_at_end("file ends after " + std::to_string(i) + " of " +
-                         std::to_string(rows) + " values");
+      reader.fail_at_end("file ends after " + std::to_string(i) + " of " + std::to_string(rows) + " values");
     Tokens tokens(line, reader);
     vector[i] = tokens.real("value");
     tokens.finish("the value");
@@ -353,8 +338,7 @@ void write_matrix_market_dense(const std::string& path, const Vector& vector)
 {
   std::FILE* file = std::fopen(path.c_str(), "w");
   FETICON_CHECK(file != nullptr, path << ": cannot open the file for writing");
-  std::fprintf(file, "%%%%MatrixMarket matrix array real general\n%ld 1\n",
-               static_cast<long>(vector.size()));
+  std::fprintf(file, "%%%%MatrixMarket matrix array real general\n%ld 1\n", static_cast<long>(vector.size()));
   for (Index i = 0; i < vector.size(); ++i)
     std::fprintf(file, "%.17g\n", vector[i]);
   const bool failed = std::ferror(file) != 0;

@@ -9,10 +9,10 @@
 
 extern "C"
 {
-// LAPACK (Debian's liblapack.so.3, served by OpenBLAS like the BLAS).
-void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
-void dpotri_(const char* uplo, const int* n, double* a, const int* lda, int* info);
-void dlauum_(const char* uplo, const int* n, double* a, const int* lda, int* info);
+  // LAPACK (Debian's liblapack.so.3, served by OpenBLAS like the BLAS).
+  void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
+  void dpotri_(const char* uplo, const int* n, double* a, const int* lda, int* info);
+  void dlauum_(const char* uplo, const int* n, double* a, const int* lda, int* info);
 }
 
 namespace feticon::la

@@ -4,8 +4,8 @@
 
 namespace feticon::la
 {
-SparseMatrix principal_submatrix(const SparseMatrix& A, const std::vector<int32_t>& position,
-                                 int32_t n_kept, Entries keep)
+SparseMatrix principal_submatrix(const SparseMatrix& A, const std::vector<int32_t>& position, int32_t n_kept,
+                                 Entries keep)
 {
   FETICON_ASSERT(static_cast<Index>(position.size()) == A.rows() && A.rows() == A.cols(),
                  "position map does not match the matrix");

@@ -19,8 +19,8 @@ enum class Entries
 /// below the result's diagonal. Used to drop eliminated, constrained or fixing DOFs before a
 /// factorization. If A holds the lower triangle of a symmetric matrix and position increases
 /// with i, so does the result.
-SparseMatrix principal_submatrix(const SparseMatrix& A, const std::vector<int32_t>& position,
-                                 int32_t n_kept, Entries keep = Entries::all);
+SparseMatrix principal_submatrix(const SparseMatrix& A, const std::vector<int32_t>& position, int32_t n_kept,
+                                 Entries keep = Entries::all);
 
 /// Rows `rows` and columns `cols` (increasing index lists) of the symmetric matrix whose
 /// lower triangle `lower` holds.

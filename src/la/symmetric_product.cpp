@@ -15,7 +15,7 @@ void symmetric_product(const Matrix& A, Triangle triangle, const Vector& x, Vect
   y.resize(n);
   if (n == 0)
     return;
-  cblas_dsymv(CblasColMajor, triangle == Triangle::lower ? CblasLower : CblasUpper, n, 1.0, A.data(), n,
-              x.data(), 1, 0.0, y.data(), 1);
+  cblas_dsymv(CblasColMajor, triangle == Triangle::lower ? CblasLower : CblasUpper, n, 1.0, A.data(), n, x.data(), 1,
+              0.0, y.data(), 1);
 }
 } // namespace feticon::la

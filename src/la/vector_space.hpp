@@ -52,10 +52,7 @@ public:
   const std::vector<std::vector<Index>>& blocks() const override { return _blocks; }
   int64_t global_index(Index i) const override { return i; }
   void combine(std::span<const double> partials, int k, double* totals) const override;
-  std::pair<double, Index> min_location(double value, Index local_index) const override
-  {
-    return {value, local_index};
-  }
+  std::pair<double, Index> min_location(double value, Index local_index) const override { return {value, local_index}; }
   double max(double value) const override { return value; }
 
 private:
@@ -82,8 +79,5 @@ inline double dot(const VectorSpace& space, const Vector& a, const Vector& b)
   return reduce_sum<1>(space, [&](Index i, double* s) { s[0] += a[i] * b[i]; })[0];
 }
 
-inline double norm(const VectorSpace& space, const Vector& a)
-{
-  return std::sqrt(dot(space, a, a));
-}
+inline double norm(const VectorSpace& space, const Vector& a) { return std::sqrt(dot(space, a, a)); }
 } // namespace feticon::la

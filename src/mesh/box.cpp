@@ -34,13 +34,12 @@ double geometric_sum(double spacing, double r, int m)
 }
 } // namespace
 
-HexMesh generate_mapped_block(const std::array<int32_t, 3>& n_cells, const GridMap& point,
-                              const std::string& body_name)
+HexMesh generate_mapped_block(const std::array<int32_t, 3>& n_cells, const GridMap& point, const std::string& body_name)
 {
   const auto [nx, ny, nz] = n_cells;
   FETICON_CHECK(nx >= 1 && ny >= 1 && nz >= 1,
-                "structured block '" << body_name << "' needs at least one cell per direction, got "
-                                     << nx << " x " << ny << " x " << nz);
+                "structured block '" << body_name << "' needs at least one cell per direction, got " << nx << " x "
+                                     << ny << " x " << nz);
   const int64_t n_nodes = int64_t{nx + 1} * (ny + 1) * (nz + 1);
   FETICON_CHECK(n_nodes <= std::numeric_limits<int32_t>::max(),
                 "structured block '" << body_name << "' would have " << n_nodes
@@ -60,21 +59,15 @@ HexMesh generate_mapped_block(const std::array<int32_t, 3>& n_cells, const GridM
     for (int32_t j = 0; j < ny; ++j)
       for (int32_t i = 0; i < nx; ++i)
       {
-        const Cell cell = {node_id(i, j, k),
-                           node_id(i + 1, j, k),
-                           node_id(i + 1, j + 1, k),
-                           node_id(i, j + 1, k),
-                           node_id(i, j, k + 1),
-                           node_id(i + 1, j, k + 1),
-                           node_id(i + 1, j + 1, k + 1),
-                           node_id(i, j + 1, k + 1)};
+        const Cell cell = {
+            node_id(i, j, k),     node_id(i + 1, j, k),     node_id(i + 1, j + 1, k),     node_id(i, j + 1, k),
+            node_id(i, j, k + 1), node_id(i + 1, j, k + 1), node_id(i + 1, j + 1, k + 1), node_id(i, j + 1, k + 1)};
         const double det = centre_jacobian_determinant(mesh, cell);
-        FETICON_CHECK(det > 0, "cell ("
-                                   << i << ", " << j << ", " << k << ") of block '" << body_name
-                                   << "' is inverted or flat (Jacobian determinant " << det
-                                   << " at its centre); the node map must preserve orientation");
-        auto add_face = [&](const char* name, int local_face)
-        {
+        FETICON_CHECK(det > 0,
+                      "cell (" << i << ", " << j << ", " << k << ") of block '" << body_name
+                               << "' is inverted or flat (Jacobian determinant " << det
+                               << " at its centre); the node map must preserve orientation");
+        auto add_face = [&](const char* name, int local_face) {
           const auto& local = hex_faces[local_face];
           sets[name].push_back({cell[local[0]], cell[local[1]], cell[local[2]], cell[local[3]]});
         };
@@ -103,18 +96,18 @@ HexMesh generate_box(const BoxParameters& parameters)
 {
   const BoxParameters& p = parameters;
   FETICON_CHECK(p.nx >= 1 && p.ny >= 1 && p.nz >= 1,
-                "box '" << p.body_name << "': cell counts nx, ny, nz must be >= 1, got " << p.nx
-                        << ", " << p.ny << ", " << p.nz);
+                "box '" << p.body_name << "': cell counts nx, ny, nz must be >= 1, got " << p.nx << ", " << p.ny << ", "
+                        << p.nz);
   FETICON_CHECK(p.lengths.minCoeff() > 0 && p.lengths.allFinite(),
-                "box '" << p.body_name << "': lengths must be finite and > 0 m, got "
-                        << p.lengths.transpose());
+                "box '" << p.body_name << "': lengths must be finite and > 0 m, got " << p.lengths.transpose());
   FETICON_CHECK(p.origin.allFinite(),
                 "box '" << p.body_name << "': origin must be finite, got " << p.origin.transpose());
   const Eigen::Vector3d step = p.lengths.cwiseQuotient(Eigen::Vector3d(p.nx, p.ny, p.nz));
   return generate_mapped_block(
       {p.nx, p.ny, p.nz},
-      [&](int32_t i, int32_t j, int32_t k)
-      { return Eigen::Vector3d(p.origin + step.cwiseProduct(Eigen::Vector3d(i, j, k))); },
+      [&](int32_t i, int32_t j, int32_t k) {
+    return Eigen::Vector3d(p.origin + step.cwiseProduct(Eigen::Vector3d(i, j, k)));
+      },
       p.body_name);
 }
 
@@ -122,23 +115,19 @@ void append_mesh(HexMesh& target, const HexMesh& other, const std::string& prefi
 {
   // Check everything before changing target, so a failed append leaves it untouched.
   for (const std::string& name : other.body_names)
-    FETICON_CHECK(std::find(target.body_names.begin(), target.body_names.end(), name) ==
-                      target.body_names.end(),
-                  "append_mesh: body '" << name
-                                        << "' already exists; give the bodies distinct names");
+    FETICON_CHECK(std::find(target.body_names.begin(), target.body_names.end(), name) == target.body_names.end(),
+                  "append_mesh: body '" << name << "' already exists; give the bodies distinct names");
   for (const auto& [name, ids] : other.node_sets)
     FETICON_CHECK(!target.node_sets.contains(prefix + name),
-                  "append_mesh: node set '"
-                      << prefix + name << "' already exists; use another prefix than '" << prefix
-                      << "'");
+                  "append_mesh: node set '" << prefix + name << "' already exists; use another prefix than '" << prefix
+                                            << "'");
   for (const auto& [name, faces] : other.face_sets)
     FETICON_CHECK(!target.face_sets.contains(prefix + name),
-                  "append_mesh: face set '"
-                      << prefix + name << "' already exists; use another prefix than '" << prefix
-                      << "'");
+                  "append_mesh: face set '" << prefix + name << "' already exists; use another prefix than '" << prefix
+                                            << "'");
   FETICON_CHECK(other.cell_body.size() == other.cells.size(),
-                "append_mesh: the appended mesh has " << other.cells.size() << " cells but "
-                                                      << other.cell_body.size() << " body indices");
+                "append_mesh: the appended mesh has " << other.cells.size() << " cells but " << other.cell_body.size()
+                                                      << " body indices");
   FETICON_CHECK(int64_t{target.n_nodes()} + other.n_nodes() <= std::numeric_limits<int32_t>::max(),
                 "append_mesh: the result would exceed int32 local node ids");
 
@@ -154,8 +143,7 @@ void append_mesh(HexMesh& target, const HexMesh& other, const std::string& prefi
   }
   for (const int32_t body : other.cell_body)
     target.cell_body.push_back(body + body_offset);
-  target.body_names.insert(target.body_names.end(), other.body_names.begin(),
-                           other.body_names.end());
+  target.body_names.insert(target.body_names.end(), other.body_names.begin(), other.body_names.end());
   for (const auto& [name, ids] : other.node_sets)
   {
     std::vector<int32_t>& shifted = target.node_sets[prefix + name];
@@ -174,17 +162,13 @@ void append_mesh(HexMesh& target, const HexMesh& other, const std::string& prefi
   }
 }
 
-std::vector<double> graded_positions(double length, double spacing, double fine_length,
-                                     double ratio)
+std::vector<double> graded_positions(double length, double spacing, double fine_length, double ratio)
 {
-  FETICON_CHECK(std::isfinite(length) && length > 0,
-                "graded spacing: length " << length << " m must be > 0");
-  FETICON_CHECK(std::isfinite(spacing) && spacing > 0,
-                "graded spacing: cell size " << spacing << " m must be > 0");
+  FETICON_CHECK(std::isfinite(length) && length > 0, "graded spacing: length " << length << " m must be > 0");
+  FETICON_CHECK(std::isfinite(spacing) && spacing > 0, "graded spacing: cell size " << spacing << " m must be > 0");
   FETICON_CHECK(std::isfinite(fine_length) && fine_length >= 0,
                 "graded spacing: fine-region length " << fine_length << " m must be >= 0");
-  FETICON_CHECK(std::isfinite(ratio) && ratio >= 1,
-                "graded spacing: growth ratio " << ratio << " must be >= 1");
+  FETICON_CHECK(std::isfinite(ratio) && ratio >= 1, "graded spacing: growth ratio " << ratio << " must be >= 1");
 
   // The fine region is whole cells of exactly `spacing`, so its cell size is what was asked.
   const int n_fine = static_cast<int>(std::ceil(fine_length / spacing * (1 - 1e-12)));
@@ -193,9 +177,8 @@ std::vector<double> graded_positions(double length, double spacing, double fine_
     return uniform_positions(length, spacing);
 
   // Number of cells spacing*ratio^k, k = 1..m, that best fills `rest`.
-  const double m_real = ratio == 1
-                            ? rest / spacing
-                            : std::log1p(rest * (ratio - 1) / (spacing * ratio)) / std::log(ratio);
+  const double m_real =
+      ratio == 1 ? rest / spacing : std::log1p(rest * (ratio - 1) / (spacing * ratio)) / std::log(ratio);
   const int m = static_cast<int>(std::lround(m_real));
   if (m < 1)
     return uniform_positions(length, spacing);

@@ -69,6 +69,5 @@ void append_mesh(HexMesh& target, const HexMesh& other, const std::string& prefi
 /// @param[in] spacing     fine cell size (m), > 0
 /// @param[in] fine_length length of the uniform region (m), >= 0
 /// @param[in] ratio       growth ratio of consecutive cells beyond the fine region, >= 1
-std::vector<double> graded_positions(double length, double spacing, double fine_length,
-                                     double ratio);
+std::vector<double> graded_positions(double length, double spacing, double fine_length, double ratio);
 } // namespace feticon::mesh

@@ -51,8 +51,7 @@ void straighten_corners(std::vector<Eigen::Vector2d>& points, const std::vector<
       neighbours[quads[c][k]].push_back(quads[c][(k + 1) % 4]);
       neighbours[quads[c][k]].push_back(quads[c][(k + 3) % 4]);
     }
-  auto local_worst = [&](int32_t node)
-  {
+  auto local_worst = [&](int32_t node) {
     double worst = 0;
     for (int32_t c : cells_of[node])
       worst = std::max(worst, shape_cost(points, quads[c]));
@@ -76,8 +75,7 @@ void straighten_corners(std::vector<Eigen::Vector2d>& points, const std::vector<
       const Eigen::Vector2d start = points[node];
       Eigen::Vector2d best = start;
       double best_worst = before;
-      auto try_at = [&](const Eigen::Vector2d& candidate)
-      {
+      auto try_at = [&](const Eigen::Vector2d& candidate) {
         points[node] = candidate;
         const double worst = local_worst(node);
         if (worst < best_worst - 1e-9)
@@ -149,8 +147,9 @@ HexMesh extrude_cross_section(const CrossSection& section, const SizeField& size
     {
       if (!directed.count({a, b}))
         std::swap(a, b);
-      FETICON_CHECK(directed.count({a, b}), "cross section of " << section.body << ": a boundary edge of '"
-                                                                << section.curves[c].set << "' is no cell edge");
+      FETICON_CHECK(directed.count({a, b}),
+                    "cross section of " << section.body << ": a boundary edge of '" << section.curves[c].set
+                                        << "' is no cell edge");
       // (x_b - x_a) x e_z points to the right of a -> b: out of the body.
       faces.push_back({a, b, b + n, a + n});
     }

@@ -40,12 +40,14 @@ const GmshModule* load_gmsh_module()
     const GmshModule* module = entry ? entry() : nullptr;
     if (module && module->abi_version == gmsh_module_abi)
       return module; // kept loaded until the process ends
-    tried += " " + path.string() + (module ? " (built from other sources: rebuild feticon);" : " (not feticon's Gmsh module);");
+    tried += " " + path.string() +
+        (module ? " (built from other sources: rebuild feticon);" : " (not feticon's Gmsh module);");
     dlclose(handle);
   }
-  FETICON_CHECK(false, "cannot load feticon's Gmsh module, needed to mesh with Gmsh or read a "
-                       ".msh file; tried"
-                           << tried);
+  FETICON_CHECK(false,
+                "cannot load feticon's Gmsh module, needed to mesh with Gmsh or read a "
+                ".msh file; tried"
+                    << tried);
   return nullptr;
 }
 } // namespace

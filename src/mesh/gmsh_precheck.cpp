@@ -134,14 +134,13 @@ std::vector<int64_t> ascii_node_tags(LineReader& in, const std::vector<int64_t>&
   std::string line;
   std::vector<int64_t> tags;
   const int64_t declared = header[msh4 ? 1 : 0];
-  auto read_tag = [&](int64_t low, int64_t high)
-  {
-    FETICON_CHECK(in.next(line) && line != "$EndNodes", where << ": line " << in.number() << ": $Nodes declares "
-                                                               << declared << " nodes but lists fewer");
+  auto read_tag = [&](int64_t low, int64_t high) {
+    FETICON_CHECK(in.next(line) && line != "$EndNodes",
+                  where << ": line " << in.number() << ": $Nodes declares " << declared << " nodes but lists fewer");
     const std::string first = tokens(line).empty() ? std::string() : tokens(line)[0];
     const int64_t tag = parse_count(first, where, in.number(), "the node tag");
-    FETICON_CHECK(tag >= low && tag <= high, where << ": line " << in.number() << ": node tag " << tag
-                                                   << " is outside " << low << ".." << high);
+    FETICON_CHECK(tag >= low && tag <= high,
+                  where << ": line " << in.number() << ": node tag " << tag << " is outside " << low << ".." << high);
     tags.push_back(tag);
   };
   if (!msh4)
@@ -167,8 +166,7 @@ std::vector<int64_t> ascii_node_tags(LineReader& in, const std::vector<int64_t>&
                 where << ": line " << in.number() << ": $Nodes declares " << declared
                       << " nodes but lists more (expected $EndNodes)");
   std::sort(tags.begin(), tags.end());
-  FETICON_CHECK(std::adjacent_find(tags.begin(), tags.end()) == tags.end(),
-                where << ": $Nodes lists a node tag twice");
+  FETICON_CHECK(std::adjacent_find(tags.begin(), tags.end()) == tags.end(), where << ": $Nodes lists a node tag twice");
   return tags;
 }
 
@@ -181,8 +179,7 @@ void check_ascii_elements(LineReader& in, const std::vector<int64_t>& header, bo
 {
   std::string line;
   const int64_t declared = header[msh4 ? 1 : 0];
-  auto check_nodes = [&](const std::vector<std::string>& t, size_t first)
-  {
+  auto check_nodes = [&](const std::vector<std::string>& t, size_t first) {
     FETICON_CHECK(t.size() > first, where << ": line " << in.number() << ": element '" << line << "' has no nodes");
     for (size_t k = first; k < t.size(); ++k)
     {
@@ -192,11 +189,10 @@ void check_ascii_elements(LineReader& in, const std::vector<int64_t>& header, bo
                           << ", which $Nodes does not list");
     }
   };
-  auto next_element = [&]()
-  {
-    FETICON_CHECK(in.next(line) && line != "$EndElements", where << ": line " << in.number()
-                                                                 << ": $Elements declares " << declared
-                                                                 << " elements but lists fewer");
+  auto next_element = [&]() {
+    FETICON_CHECK(in.next(line) && line != "$EndElements",
+                  where << ": line " << in.number() << ": $Elements declares " << declared
+                        << " elements but lists fewer");
     return tokens(line);
   };
   int64_t listed = 0;
@@ -236,8 +232,8 @@ GmshDeclaredSizes precheck_gmsh_file(const std::filesystem::path& path, const st
   while (in.next(line) && line.find_first_not_of(" \t") == std::string::npos)
   {
   }
-  FETICON_CHECK(line == "$MeshFormat", where << ": line " << in.number()
-                                             << ": expected $MeshFormat (is this a Gmsh MSH file?)");
+  FETICON_CHECK(line == "$MeshFormat",
+                where << ": line " << in.number() << ": expected $MeshFormat (is this a Gmsh MSH file?)");
   FETICON_CHECK(in.next(line), where << ": ends inside $MeshFormat");
   const std::vector<std::string> format = tokens(line);
   FETICON_CHECK(format.size() >= 3 && (format[0].rfind("2.", 0) == 0 || format[0].rfind("4.", 0) == 0) &&
@@ -252,19 +248,17 @@ GmshDeclaredSizes precheck_gmsh_file(const std::filesystem::path& path, const st
   // beyond the file's size is a corrupt header, refused before libgmsh allocates for it.
   std::error_code ec;
   const auto file_bytes = static_cast<int64_t>(std::filesystem::file_size(path, ec));
-  auto plausible = [&](int64_t count, const char* section)
-  {
-    FETICON_CHECK(ec || count <= file_bytes, where << ": line " << in.number() << ": the " << section
-                                                   << " header declares " << count << " entries, more than the "
-                                                   << file_bytes << " bytes of the file could hold");
+  auto plausible = [&](int64_t count, const char* section) {
+    FETICON_CHECK(ec || count <= file_bytes,
+                  where << ": line " << in.number() << ": the " << section << " header declares " << count
+                        << " entries, more than the " << file_bytes << " bytes of the file could hold");
     return count;
   };
 
   GmshDeclaredSizes sizes;
   // The header of $Nodes / $Elements: MSH 2 `N`; MSH 4 `blocks N min max` (binary: size_t
   // values). Its count (N) is checked against the file's size.
-  auto section_header = [&](const char* section) -> std::vector<int64_t>
-  {
+  auto section_header = [&](const char* section) -> std::vector<int64_t> {
     std::vector<int64_t> header;
     if (msh4 && binary)
     {
@@ -281,9 +275,9 @@ GmshDeclaredSizes precheck_gmsh_file(const std::filesystem::path& path, const st
     {
       FETICON_CHECK(in.next(line), where << ": ends after " << section);
       header = integers(line, where, in.number(), section);
-      FETICON_CHECK(header.size() == (msh4 ? 4u : 1u), where << ": line " << in.number() << ": the " << section
-                                                            << " header '" << line << "' must have "
-                                                            << (msh4 ? "4 numbers" : "1 number"));
+      FETICON_CHECK(header.size() == (msh4 ? 4u : 1u),
+                    where << ": line " << in.number() << ": the " << section << " header '" << line << "' must have "
+                          << (msh4 ? "4 numbers" : "1 number"));
     }
     plausible(header[msh4 ? 1 : 0], section);
     return header;
@@ -300,13 +294,15 @@ GmshDeclaredSizes precheck_gmsh_file(const std::filesystem::path& path, const st
       while (in.next(line) && line != "$EndPhysicalNames")
       {
         ++read;
-        FETICON_CHECK(read <= count, where << ": line " << in.number() << ": more $PhysicalNames entries than the "
-                                           << count << " declared");
+        FETICON_CHECK(read <= count,
+                      where << ": line " << in.number() << ": more $PhysicalNames entries than the " << count
+                            << " declared");
         check_physical_name(line, where, in.number());
       }
       FETICON_CHECK(line == "$EndPhysicalNames", where << ": $PhysicalNames has no $EndPhysicalNames");
-      FETICON_CHECK(read == count, where << ": line " << in.number() << ": $PhysicalNames declares " << count
-                                         << " entries but lists " << read);
+      FETICON_CHECK(read == count,
+                    where << ": line " << in.number() << ": $PhysicalNames declares " << count << " entries but lists "
+                          << read);
     }
     else if (line == "$Nodes")
     {

@@ -19,10 +19,9 @@ HexMesh read_gmsh(const std::filesystem::path& path, bool* from_cache)
   std::error_code error;
   FETICON_CHECK(std::filesystem::exists(path, error),
                 where << ": no such file"
-                      << (path.is_relative()
-                              ? " (relative to the working directory " +
-                                    std::filesystem::current_path(error).string() + ")"
-                              : std::string()));
+                      << (path.is_relative() ? " (relative to the working directory " +
+                                  std::filesystem::current_path(error).string() + ")"
+                                             : std::string()));
   FETICON_CHECK(std::filesystem::is_regular_file(path, error),
                 where << ": is " << (std::filesystem::is_directory(path, error) ? "a folder" : "not a regular file")
                       << "; mesh.file names a .msh file");
@@ -30,20 +29,20 @@ HexMesh read_gmsh(const std::filesystem::path& path, bool* from_cache)
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  FETICON_CHECK(extension == ".msh", where << ": expected a mesh file ending in .msh; mesh a "
-                                              "geometry first, e.g. gmsh -3 -format msh41 x.geo");
+  FETICON_CHECK(extension == ".msh",
+                where << ": expected a mesh file ending in .msh; mesh a "
+                         "geometry first, e.g. gmsh -3 -format msh41 x.geo");
 
   // The same bytes give the same mesh: the file's digest is the key.
   return cached_mesh(
       "gmsh file " + file_digest(path),
-      [&]
-      {
-        // What would crash libgmsh's reader is an input error here.
-        precheck_gmsh_file(path, where);
-        HexMesh mesh;
-        const std::string failure = gmsh_module().read_model(path, where, mesh);
-        FETICON_CHECK(failure.empty(), failure);
-        return mesh;
+      [&] {
+    // What would crash libgmsh's reader is an input error here.
+    precheck_gmsh_file(path, where);
+    HexMesh mesh;
+    const std::string failure = gmsh_module().read_model(path, where, mesh);
+    FETICON_CHECK(failure.empty(), failure);
+    return mesh;
       },
       from_cache);
 }

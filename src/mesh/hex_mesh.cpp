@@ -60,8 +60,7 @@ void HexMesh::add_node_set_from_faces(const std::string& name, const std::string
 {
   node_sets[name] = face_set_nodes(faces_name);
 }
-HexMesh submesh(const HexMesh& mesh, const std::vector<int32_t>& cells,
-                std::vector<int32_t>& node_of_local)
+HexMesh submesh(const HexMesh& mesh, const std::vector<int32_t>& cells, std::vector<int32_t>& node_of_local)
 {
   std::vector<int32_t> local_of_node(mesh.n_nodes(), -1);
   for (const int32_t c : cells)

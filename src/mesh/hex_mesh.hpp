@@ -65,8 +65,7 @@ struct HexMesh
 /// The cells `cells` of `mesh` as a mesh of their own (a rank's piece of the output), nodes
 /// renumbered in increasing mesh order; node sets are restricted to it, face sets dropped.
 /// @param[out] node_of_local mesh node of every node of the piece
-HexMesh submesh(const HexMesh& mesh, const std::vector<int32_t>& cells,
-                std::vector<int32_t>& node_of_local);
+HexMesh submesh(const HexMesh& mesh, const std::vector<int32_t>& cells, std::vector<int32_t>& node_of_local);
 
 double centre_jacobian_determinant(const HexMesh& mesh, const Cell& cell);
 } // namespace feticon::mesh

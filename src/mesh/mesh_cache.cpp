@@ -48,8 +48,7 @@ std::string executable_build_id()
 {
   std::string id;
   dl_iterate_phdr(
-      [](dl_phdr_info* info, size_t, void* data) -> int
-      {
+      [](dl_phdr_info* info, size_t, void* data) -> int {
         // The first object is the executable; its notes hold NT_GNU_BUILD_ID.
         auto& out = *static_cast<std::string*>(data);
         for (int h = 0; h < info->dlpi_phnum; ++h)
@@ -226,7 +225,7 @@ bool deserialize(const std::string& data, HexMesh& mesh)
         return false;
   const auto bodies = static_cast<int32_t>(mesh.body_names.size());
   return in.at_end() && mesh.cell_body.size() == mesh.cells.size() &&
-         std::ranges::all_of(mesh.cell_body, [bodies](int32_t b) { return b >= 0 && b < bodies; });
+      std::ranges::all_of(mesh.cell_body, [bodies](int32_t b) { return b >= 0 && b < bodies; });
 }
 
 /// File content: magic, key, payload, checksum of key and payload.
@@ -322,8 +321,8 @@ MeshCacheLocation mesh_cache_location()
   return location;
 }
 
-HexMesh cached_mesh(const MeshCacheLocation& location, const std::string& key,
-                    const std::function<HexMesh()>& build, bool* hit)
+HexMesh cached_mesh(const MeshCacheLocation& location, const std::string& key, const std::function<HexMesh()>& build,
+                    bool* hit)
 {
   if (hit)
     *hit = false;

@@ -30,7 +30,7 @@ struct MeshCacheLocation
 {
   bool enabled = false;
   std::filesystem::path folder;
-  std::string build_id; ///< of the running executable, part of every key
+  std::string build_id;                                   ///< of the running executable, part of every key
   std::uintmax_t limit_bytes = std::uintmax_t{256} << 20; ///< entries beyond it are pruned
 };
 MeshCacheLocation mesh_cache_location();
@@ -39,8 +39,8 @@ MeshCacheLocation mesh_cache_location();
 /// Errors of build() propagate and store nothing; a cache that cannot be read or written
 /// only costs the rebuild (a failed write is one warning).
 /// @param[out] hit whether the mesh came from the cache (may be null)
-HexMesh cached_mesh(const MeshCacheLocation& location, const std::string& key,
-                    const std::function<HexMesh()>& build, bool* hit = nullptr);
+HexMesh cached_mesh(const MeshCacheLocation& location, const std::string& key, const std::function<HexMesh()>& build,
+                    bool* hit = nullptr);
 
 /// The same with mesh_cache_location().
 HexMesh cached_mesh(const std::string& key, const std::function<HexMesh()>& build, bool* hit = nullptr);

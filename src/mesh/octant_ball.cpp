@@ -70,8 +70,9 @@ std::vector<uint8_t> place_nodes(const OctantBallParameters& parameters, const O
   const int64_t n_nodes = numbering.n_core + static_cast<int64_t>(layers) * numbering.n_surface;
   out.nodes.resize(n_nodes, 3);
   std::vector<uint8_t> flags(n_nodes, 0);
-  auto flags_of = [](int i, int j, int k)
-  { return static_cast<uint8_t>((i == 0 ? on_x0 : 0) | (j == 0 ? on_y0 : 0) | (k == 0 ? on_d0 : 0)); };
+  auto flags_of = [](int i, int j, int k) {
+    return static_cast<uint8_t>((i == 0 ? on_x0 : 0) | (j == 0 ? on_y0 : 0) | (k == 0 ? on_d0 : 0));
+  };
   for (int k = 0; k <= n; ++k)
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i <= n; ++i)
@@ -108,9 +109,9 @@ void add_cells(int n, int layers, const OctantNumbering& numbering, OctantBall& 
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
-        out.cells.push_back({core_id(i, j, k), core_id(i + 1, j, k), core_id(i + 1, j + 1, k),
-                             core_id(i, j + 1, k), core_id(i, j, k + 1), core_id(i + 1, j, k + 1),
-                             core_id(i + 1, j + 1, k + 1), core_id(i, j + 1, k + 1)});
+        out.cells.push_back({core_id(i, j, k), core_id(i + 1, j, k), core_id(i + 1, j + 1, k), core_id(i, j + 1, k),
+                             core_id(i, j, k + 1), core_id(i + 1, j, k + 1), core_id(i + 1, j + 1, k + 1),
+                             core_id(i, j + 1, k + 1)});
   std::vector<std::array<int32_t, 4>> quads;
   auto sid = [&](int i, int j, int k) { return numbering.surface_of[core_id(i, j, k)]; };
   for (int a = 0; a < n; ++a)
@@ -175,8 +176,7 @@ OctantBallSize octant_ball_size(const OctantBallParameters& parameters)
   const int blend = std::max(1, static_cast<int>(std::ceil((std::sqrt(3.0) - s) / (0.5 * g0 * s))));
   OctantBallSize size;
   size.blend_layers = blend;
-  size.layers =
-      std::max(blend + 1, static_cast<int>(std::ceil(std::log(R / (c * s)) / std::log1p(g0))));
+  size.layers = std::max(blend + 1, static_cast<int>(std::ceil(std::log(R / (c * s)) / std::log1p(g0))));
   const int64_t m = n + 1, surface = m * m * m - int64_t(n) * n * n;
   size.nodes = m * m * m + size.layers * surface;
   size.cells = int64_t(n) * n * n + size.layers * 3 * int64_t(n) * n;

@@ -42,7 +42,8 @@ BondedSolve bonded_direct_solve(const fem::Problem& problem, const SolverSetting
   options.search_distance = settings.search_distance;
   options.formulation = settings.formulation;
   out.constraints = contact::build_contact_constraints(
-      problem.mesh, zero, {problem.contacts[0].slave, problem.contacts[0].master, problem.contacts[0].slave_nodes}, options);
+      problem.mesh, zero, {problem.contacts[0].slave, problem.contacts[0].master, problem.contacts[0].slave_nodes},
+      options);
   const auto& rows = out.constraints;
   // Rows are sorted by slave node, one row per node.
   std::vector<char> bonded(rows.c.size(), 0);

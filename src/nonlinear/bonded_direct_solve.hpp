@@ -36,11 +36,11 @@ struct BondedSolve
   /// Spring multipliers eps_i (B u - c)_i of the bonded rows, 0 on the others (normalized
   /// rows: the slave force is lambda_i / |b_i|; negative where a bond pulls).
   la::Vector contact_lambda;
-  int64_t n_bonded = 0;              ///< rows in B_A
-  double penalty = 0;                ///< eps_n (N/m)
-  double assembly_seconds = 0;       ///< K, contact rows, springs, Dirichlet elimination
-  double factorization_seconds = 0;  ///< CHOLMOD analysis and numeric factorization
-  double solve_seconds = 0;          ///< triangular solves and expansion to all DOFs
+  int64_t n_bonded = 0;             ///< rows in B_A
+  double penalty = 0;               ///< eps_n (N/m)
+  double assembly_seconds = 0;      ///< K, contact rows, springs, Dirichlet elimination
+  double factorization_seconds = 0; ///< CHOLMOD analysis and numeric factorization
+  double solve_seconds = 0;         ///< triangular solves and expansion to all DOFs
   long factor_nonzeros = 0;
 };
 

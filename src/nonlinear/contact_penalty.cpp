@@ -4,14 +4,14 @@ namespace feticon::nonlinear
 {
 la::Vector row_penalties(const contact::ContactConstraints& rows, double eps_n)
 {
-  const la::Vector area = Eigen::Map<const la::Vector>(rows.slave_area.data(),
-                                                       static_cast<la::Index>(rows.slave_area.size()));
+  const la::Vector area =
+      Eigen::Map<const la::Vector>(rows.slave_area.data(), static_cast<la::Index>(rows.slave_area.size()));
   const double mean = area.size() > 0 ? area.mean() : 1.0;
   return area * (eps_n / mean);
 }
 
-void penalty_terms(const contact::ContactConstraints& rows, const std::vector<char>& active,
-                   const la::Vector& eps, la::SparseMatrix& K_pen, la::Vector& f_pen)
+void penalty_terms(const contact::ContactConstraints& rows, const std::vector<char>& active, const la::Vector& eps,
+                   la::SparseMatrix& K_pen, la::Vector& f_pen)
 {
   using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
   std::vector<la::Triplet> triplets;

@@ -20,6 +20,6 @@ la::Vector row_penalties(const contact::ContactConstraints& rows, double eps_n);
 
 /// @brief B_A' E B_A and B_A' E c_A (E = diag of row penalties `eps`) for the rows flagged
 /// in `active` (one flag per row).
-void penalty_terms(const contact::ContactConstraints& rows, const std::vector<char>& active,
-                   const la::Vector& eps, la::SparseMatrix& K_pen, la::Vector& f_pen);
+void penalty_terms(const contact::ContactConstraints& rows, const std::vector<char>& active, const la::Vector& eps,
+                   la::SparseMatrix& K_pen, la::Vector& f_pen);
 } // namespace feticon::nonlinear

@@ -37,8 +37,7 @@ la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& 
   return areas;
 }
 
-std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
-                                                const ContactSolution& solution,
+std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, const ContactSolution& solution,
                                                 fem::Kinematics kinematics)
 {
   const auto& rows = solution.constraints;
@@ -53,12 +52,10 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
   // sample; in 3D every node is its own sample.
   const bool plane_strain = problem.eliminated[2];
   const double key_scale = 1e9; // nm resolution groups nodes through the thickness
-  auto key_of = [&](int32_t node)
-  {
+  auto key_of = [&](int32_t node) {
     const auto& X = problem.mesh.nodes;
     return plane_strain ? std::make_tuple(std::lround(X(node, 0) * key_scale), 0L, 0L, 0)
-                        : std::make_tuple(std::lround(X(node, 0) * key_scale),
-                                          std::lround(X(node, 1) * key_scale),
+                        : std::make_tuple(std::lround(X(node, 0) * key_scale), std::lround(X(node, 1) * key_scale),
                                           std::lround(X(node, 2) * key_scale), node);
   };
   std::map<std::tuple<long, long, long, int32_t>, PressureSample> by_x;

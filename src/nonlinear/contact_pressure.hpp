@@ -17,23 +17,22 @@ namespace feticon::nonlinear
 {
 struct PressureSample
 {
-  double x = 0;              ///< reference coordinates of the node (of the node line in
-  double y = 0;              ///< plane strain, where y and z are those of its first node) (m)
+  double x = 0; ///< reference coordinates of the node (of the node line in
+  double y = 0; ///< plane strain, where y and z are those of its first node) (m)
   double z = 0;
-  double deformed_x = 0;     ///< x + u_x, averaged over the node line in plane strain (m)
-  double deformed_y = 0;     ///< y + u_y, likewise (m)
-  double force = 0;          ///< normal contact force of the node(s) (N)
-  double area = 0;           ///< their tributary area (m^2)
-  double pressure = 0;       ///< force / area (Pa)
+  double deformed_x = 0;      ///< x + u_x, averaged over the node line in plane strain (m)
+  double deformed_y = 0;      ///< y + u_y, likewise (m)
+  double force = 0;           ///< normal contact force of the node(s) (N)
+  double area = 0;            ///< their tributary area (m^2)
+  double pressure = 0;        ///< force / area (Pa)
   double stress_pressure = 0; ///< -n' sigma n from the averaged stress (Pa)
-  double analytic = 0;       ///< McEwen's p(x) or Hertz's p(r) (Pa), when compared
+  double analytic = 0;        ///< McEwen's p(x) or Hertz's p(r) (Pa), when compared
 };
 
 /// Pressure on the slave surface of pair 0. Plane strain (u_z eliminated): one sample per
 /// node line through the thickness (same reference x), sorted by x. Otherwise one sample
 /// per slave node, sorted by x, then y, then z.
-std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem,
-                                                const ContactSolution& solution,
+std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, const ContactSolution& solution,
                                                 fem::Kinematics kinematics);
 
 /// Tributary area integral(N_a dA) of every mesh node on the slave surface of pair 0 (m^2;

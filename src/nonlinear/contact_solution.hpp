@@ -18,7 +18,7 @@ struct OuterIteration
   /// The QP's counters: MPRGP steps (penalty: active-set solves), SMALBE-M updates,
   /// operator and preconditioner applications, the spectrum estimate of its longest CG run.
   qp::QpCounters qp;
-  double final_rho = 0;  ///< SMALBE-M's rho at the end of the QP (0 for the other methods)
+  double final_rho = 0; ///< SMALBE-M's rho at the end of the QP (0 for the other methods)
   /// ||t f_ext - f_int - B' lambda|| / max(||t f_ext||, ||f_int||) after the update
   double residual_norm = 0;
   double displacement_change = 0; ///< ||du|| / ||u||
@@ -50,10 +50,10 @@ inline std::string floor_warning(int number, const LoadStep& step)
 struct RestartState
 {
   int completed_steps = 0;
-  la::Vector u_stacked;                   ///< global stacked displacement (all subdomains)
-  la::Vector lambda;                      ///< equality multipliers of the last solve, by row id
-  std::vector<int32_t> contact_slave;     ///< slave node of each contact multiplier
-  std::vector<double> contact_lambda;     ///< contact multiplier by slave node
+  la::Vector u_stacked;               ///< global stacked displacement (all subdomains)
+  la::Vector lambda;                  ///< equality multipliers of the last solve, by row id
+  std::vector<int32_t> contact_slave; ///< slave node of each contact multiplier
+  std::vector<double> contact_lambda; ///< contact multiplier by slave node
   /// SMALBE-M's state after the last solve (dual::DualWarmStart); empty/0 for other methods.
   la::Vector smalbe_coarse_multiplier;
   double smalbe_M = 0, smalbe_rho = 0;
@@ -66,16 +66,16 @@ struct RestartState
 
 struct ContactSolution
 {
-  la::Vector u;                              ///< global displacement, 3 per mesh node
-  contact::ContactConstraints constraints;   ///< contact rows of the last solve
-  la::Vector contact_lambda;                 ///< their (row-normalized) multipliers
+  la::Vector u;                            ///< global displacement, 3 per mesh node
+  contact::ContactConstraints constraints; ///< contact rows of the last solve
+  la::Vector contact_lambda;               ///< their (row-normalized) multipliers
   std::vector<OuterIteration> history;
   std::vector<LoadStep> steps;
   /// Every load step ran: u and the multipliers are the run's answer.
   bool completed = false;
   /// Completed, and every load step met the outer loop's stopping test.
   bool converged = false;
-  std::string reason; ///< why the run is not converged
+  std::string reason;                ///< why the run is not converged
   std::vector<std::string> warnings; ///< steps that ended at a floor, one line each
   // Figures of the last solve:
   int64_t n_dual = 0;
@@ -90,8 +90,8 @@ struct ContactSolution
   /// subdomains whose boundary changed were formed again (feti_contact_solver.cpp).
   bool schur_boundary_widened = false;
   int schur_boundary_growths = 0; ///< how often it grew in this run (not counting a restart's restore)
-  double penalty = 0; ///< eps_n (N/m) for the primal penalty
-  RestartState restart; ///< state after the last converged load step (FETI solver)
+  double penalty = 0;             ///< eps_n (N/m) for the primal penalty
+  RestartState restart;           ///< state after the last converged load step (FETI solver)
   /// Under MPI with more than one rank: the cells of this rank's subdomains (its piece of
   /// the output); empty otherwise.
   std::vector<int32_t> owned_cells;

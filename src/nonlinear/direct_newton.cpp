@@ -9,18 +9,16 @@
 
 namespace feticon::nonlinear
 {
-DirectNewtonReport solve_direct_newton(const fem::Assembler& assembler,
-                                       const fem::ConstrainedDofs& constrained,
-                                       const la::Vector& f_ext, la::Vector& u,
-                                       const DirectNewtonOptions& options)
+DirectNewtonReport solve_direct_newton(const fem::Assembler& assembler, const fem::ConstrainedDofs& constrained,
+                                       const la::Vector& f_ext, la::Vector& u, const DirectNewtonOptions& options)
 {
   FETICON_CHECK(options.load_steps >= 1, "load_steps must be >= 1");
   const fem::LoadHistory history(constrained.dofs, {{f_ext, constrained.values, options.load_steps}});
   return solve_direct_newton(assembler, history, u, options);
 }
 
-DirectNewtonReport solve_direct_newton(const fem::Assembler& assembler, const fem::LoadHistory& history,
-                                       la::Vector& u, const DirectNewtonOptions& options)
+DirectNewtonReport solve_direct_newton(const fem::Assembler& assembler, const fem::LoadHistory& history, la::Vector& u,
+                                       const DirectNewtonOptions& options)
 {
   // One undecomposed factorization: BLAS is the parallelism (common/parallel.hpp).
   const ScopedBlasThreads blas(threads());
@@ -59,8 +57,8 @@ DirectNewtonReport solve_direct_newton(const fem::Assembler& assembler, const fe
       ++iteration;
       const double du_rel = du.norm() / std::max(u.norm(), 1e-300);
       std::ostringstream line;
-      line << "  direct Newton step " << step << " iteration " << iteration << ": residual "
-           << r_norm << ", |du|/|u| " << du_rel;
+      line << "  direct Newton step " << step << " iteration " << iteration << ": residual " << r_norm << ", |du|/|u| "
+           << du_rel;
       log::iteration(line.str());
       report.residual_norm = r_norm;
       converged = linear || du_rel <= options.rtol;

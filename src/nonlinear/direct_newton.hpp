@@ -17,9 +17,9 @@ namespace feticon::nonlinear
 {
 struct DirectNewtonOptions
 {
-  int load_steps = 1;       ///< equal increments of load and prescribed displacement (one stage)
-  int max_iterations = 30;  ///< Newton iterations per load step
-  double rtol = 1e-10;      ///< converged when ||du|| <= rtol ||u||
+  int load_steps = 1;      ///< equal increments of load and prescribed displacement (one stage)
+  int max_iterations = 30; ///< Newton iterations per load step
+  double rtol = 1e-10;     ///< converged when ||du|| <= rtol ||u||
   /// Linear equations (*EQUATION, mesh node numbering: a whole-mesh assembler), eliminated
   /// exactly with the supports (fem/constraint_elimination.hpp).
   std::vector<fem::LinearEquation> equations;
@@ -35,14 +35,12 @@ struct DirectNewtonReport
 /// Solves f_int(u) = f_ext with u = prescribed values on `constrained` DOFs.
 /// @param[in]  f_ext       full external load (N), global DOFs
 /// @param[in,out] u        initial guess on input (usually zero), solution on output
-DirectNewtonReport solve_direct_newton(const fem::Assembler& assembler,
-                                       const fem::ConstrainedDofs& constrained,
-                                       const la::Vector& f_ext, la::Vector& u,
-                                       const DirectNewtonOptions& options = {});
+DirectNewtonReport solve_direct_newton(const fem::Assembler& assembler, const fem::ConstrainedDofs& constrained,
+                                       const la::Vector& f_ext, la::Vector& u, const DirectNewtonOptions& options = {});
 
 /// Solves f_int(u) = f(t_n) with u = u_D(t_n) on history.dofs() at every load step n of
 /// `history` (options.load_steps unused: the history has its steps).
 /// @param[in,out] u  initial guess on input (usually zero), solution at the last step on output
-DirectNewtonReport solve_direct_newton(const fem::Assembler& assembler, const fem::LoadHistory& history,
-                                       la::Vector& u, const DirectNewtonOptions& options = {});
+DirectNewtonReport solve_direct_newton(const fem::Assembler& assembler, const fem::LoadHistory& history, la::Vector& u,
+                                       const DirectNewtonOptions& options = {});
 } // namespace feticon::nonlinear

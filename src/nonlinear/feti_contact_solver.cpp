@@ -36,8 +36,7 @@ decomposition::Partition make_partition(const fem::Problem& problem, const Solve
   if (s.partitioner == Partitioner::rcb)
     return decomposition::partition_rcb(problem.mesh, n);
   // Structured: split each body along x only (enough for studies; boxes via the API).
-  return decomposition::partition_structured(problem.mesh,
-                                             {std::max(1, s.subdomains / problem.mesh.n_bodies()), 1, 1});
+  return decomposition::partition_structured(problem.mesh, {std::max(1, s.subdomains / problem.mesh.n_bodies()), 1, 1});
 }
 
 /// Reductions over owned stacked vectors: one block per owned subdomain.
@@ -90,8 +89,7 @@ std::vector<char> schur_boundary_dofs(const fem::Problem& problem, const fem::Co
     for (const auto& term : equation.terms)
       if (!problem.eliminated[term.component])
         boundary[3 * static_cast<size_t>(term.node) + term.component] = 1;
-  const auto flag_node = [&](int64_t node)
-  {
+  const auto flag_node = [&](int64_t node) {
     for (int c = 0; c < 3; ++c)
       if (!problem.eliminated[c])
         boundary[3 * node + c] = 1;
@@ -104,8 +102,7 @@ std::vector<char> schur_boundary_dofs(const fem::Problem& problem, const fem::Co
           flag_node(node);
     return boundary;
   }
-  for_each_touched_dof(problem, *contact_rows, [&](int64_t dof)
-  {
+  for_each_touched_dof(problem, *contact_rows, [&](int64_t dof) {
     if (all_components)
       flag_node(dof / 3);
     else
@@ -144,7 +141,8 @@ double explicit_block_budget(const SolverSettings& settings)
 /// dense LAPACK, about 1.7 |b_s|^3 flops at 4 times that rate) 0.42 |b_s|^3. Expected steps:
 /// 150 per load step, with small or large displacements. The rates and the step count are
 /// fitted to measured runs (docs/measurements.md, "dual.operator = auto").
-std::pair<bool, std::string> choose_explicit(const SolverSettings& settings, const decomposition::SubdomainSystem& system,
+std::pair<bool, std::string> choose_explicit(const SolverSettings& settings,
+                                             const decomposition::SubdomainSystem& system,
                                              const decomposition::SchurComplements* schur, int n_load_steps,
                                              int64_t held, const par::Communicator& comm)
 {
@@ -201,9 +199,9 @@ std::string format_iteration(const OuterIteration& it)
 {
   char line[256];
   std::snprintf(line, sizeof line,
-                "step %2d  outer %2d  inner %5d  residual %9.2e  |du|/|u| %9.2e  active %5ld  %7.2f s",
-                it.load_step, it.iteration, it.qp.iterations, it.residual_norm,
-                it.displacement_change, static_cast<long>(it.active_contacts), it.seconds);
+                "step %2d  outer %2d  inner %5d  residual %9.2e  |du|/|u| %9.2e  active %5ld  %7.2f s", it.load_step,
+                it.iteration, it.qp.iterations, it.residual_norm, it.displacement_change,
+                static_cast<long>(it.active_contacts), it.seconds);
   return line;
 }
 
@@ -272,8 +270,7 @@ private:
   dual::DualPenaltyOptions qp_options(int k);
   /// The QP's counters, the relative correction and the force residual at the new u in `it`
   /// (f_int updated on the way); returns the norms the convergence test needs.
-  Correction measure_iteration(const dual::FetiOperators& feti, const dual::DualSolution& solution,
-                               OuterIteration& it);
+  Correction measure_iteration(const dual::FetiOperators& feti, const dual::DualSolution& solution, OuterIteration& it);
   /// The contact rows and multipliers into the solution; true if a linear run must add
   /// penetrated rows left out of this QP and solve again.
   bool store_contact_result(const dual::DualSolution& solution, contact::ContactConstraints contact_rows,
@@ -306,8 +303,8 @@ private:
   /// also for the Schur boundary) and the subset near contact that its QPs get.
   std::optional<LinearContactRows> _linear_rows;
 
-  la::Vector _u;     ///< stacked displacement of the owned subdomains
-  la::Vector _f_int; ///< internal force at _u, kept up to date after every update
+  la::Vector _u;          ///< stacked displacement of the owned subdomains
+  la::Vector _f_int;      ///< internal force at _u, kept up to date after every update
   double _f_int_norm = 0; ///< ||f_int|| assembled over the subdomains, with _f_int
   /// Warm start of the next QP. Without SMALBE-M's equality multiplier the next QP starts
   /// with the full gradient of the bound multipliers' coarse part and rebuilds it over ~10
@@ -317,8 +314,8 @@ private:
 
   // The current load step.
   int _step = 0;
-  la::Vector _f_step;        ///< f(t_n), stacked
-  double _f_step_norm = 0;   ///< ||f(t_n)|| (fem::LoadHistory::external_force_norm)
+  la::Vector _f_step;      ///< f(t_n), stacked
+  double _f_step_norm = 0; ///< ||f(t_n)|| (fem::LoadHistory::external_force_norm)
   std::unique_ptr<decomposition::EqualityRows> _equality;
   int64_t _n_equality = 0;
   bool _forcing = false;
@@ -326,16 +323,14 @@ private:
   la::Vector _equality_by_id; ///< for the checkpoint of a converged step
 };
 
-FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSettings& settings,
-                                   TimerTable& timers, par::Communicator comm, ContactSolution& out)
+FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSettings& settings, TimerTable& timers,
+                                   par::Communicator comm, ContactSolution& out)
     : _problem(problem), _settings(settings), _timers(timers), _out(out),
-      _linear(settings.kinematics == fem::Kinematics::linear), _history(settings.load_history(problem)),
-      _decomp([&]
-              {
-                ScopedTimer t(timers, "decomposition");
-                return std::make_unique<decomposition::Decomposition>(
-                    problem.mesh, make_partition(problem, settings), problem.eliminated, comm);
-              }()),
+      _linear(settings.kinematics == fem::Kinematics::linear), _history(settings.load_history(problem)), _decomp([&] {
+        ScopedTimer t(timers, "decomposition");
+        return std::make_unique<decomposition::Decomposition>(problem.mesh, make_partition(problem, settings),
+                                                              problem.eliminated, comm);
+      }()),
       _primal_space(owned_subdomain_space(*_decomp)),
       _system(std::make_unique<decomposition::SubdomainSystem>(*_decomp, problem.materials, settings.kinematics,
                                                                settings.generalized_inverse)),
@@ -457,8 +452,8 @@ int FetiContactSolve::restore(const ContactSolution& previous)
   // The step numbers name points of the load history: a checkpoint of other load_steps or
   // stages would continue at the wrong load.
   const double saved_t = static_cast<int>(previous.steps.size()) >= r.completed_steps
-                             ? previous.steps[r.completed_steps - 1].load_factor
-                             : std::nan("");
+      ? previous.steps[r.completed_steps - 1].load_factor
+      : std::nan("");
   FETICON_CHECK(std::abs(saved_t - _history.load_factor(r.completed_steps)) <= 1e-12 * r.completed_steps,
                 "restart: the checkpoint's load step " << r.completed_steps << " is at load factor " << saved_t
                                                        << ", this run's at " << _history.load_factor(r.completed_steps)
@@ -516,17 +511,18 @@ double FetiContactSolve::qp_rtol(int k)
     _forcing = false;
   if (!_forcing)
     return _settings.dual.rtol;
-  const double forced = k == 1 ? _settings.max_forcing_rtol
-                               : std::min(_settings.max_forcing_rtol,
-                                          _settings.forcing * history.back().displacement_change);
+  const double forced = k == 1
+      ? _settings.max_forcing_rtol
+      : std::min(_settings.max_forcing_rtol, _settings.forcing * history.back().displacement_change);
   return std::max(_settings.dual.rtol, forced);
 }
 
 IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
 {
   const std::string where = "load step " + std::to_string(_step) + ", outer iteration " + std::to_string(k) + ": ";
-  const bool refresh = !_linear && ((_settings.stiffness == StiffnessUpdate::load_step && k == 1 && _step > 1) ||
-                                    (_settings.stiffness == StiffnessUpdate::iteration && (_step > 1 || k > 1)));
+  const bool refresh = !_linear &&
+      ((_settings.stiffness == StiffnessUpdate::load_step && k == 1 && _step > 1) ||
+       (_settings.stiffness == StiffnessUpdate::iteration && (_step > 1 || k > 1)));
   if (refresh)
   {
     update_stiffness(); // K_M(u) and R(X + u)
@@ -559,8 +555,9 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   if (!std::isfinite(it.residual_norm) || !std::isfinite(it.displacement_change))
   {
     _diverged = true;
-    return IterationOutcome::stop(where + "the outer loop diverged (non-finite residual): use more "
-                                          "load_steps or newton.stiffness=iteration",
+    return IterationOutcome::stop(where +
+                                      "the outer loop diverged (non-finite residual): use more "
+                                      "load_steps or newton.stiffness=iteration",
                                   false);
   }
   const bool more_rows = store_contact_result(solution, std::move(contact_rows), contact_lambda, where);
@@ -575,10 +572,9 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   // peak pressure 14 % high). So a step ends only after a QP solved to qp.rtol; if the
   // test passes after a forced one, the next QP, warm-started at the answer, is exact.
   const bool exact_qp = dual_options.rtol <= _settings.dual.rtol;
-  const OuterVerdict verdict =
-      _linear ? (more_rows ? OuterVerdict::iterate : OuterVerdict::converged)
-              : _convergence.verdict(correction.du_norm, correction.u_norm, correction.du_max, it.residual_norm,
-                                     active, _previous_active);
+  const OuterVerdict verdict = _linear ? (more_rows ? OuterVerdict::iterate : OuterVerdict::converged)
+                                       : _convergence.verdict(correction.du_norm, correction.u_norm, correction.du_max,
+                                                              it.residual_norm, active, _previous_active);
   _previous_active = std::move(active);
   if (verdict == OuterVerdict::iterate)
     return IterationOutcome::next();
@@ -656,8 +652,7 @@ dual::DualPenaltyOptions FetiContactSolve::qp_options(int k)
 }
 
 FetiContactSolve::Correction FetiContactSolve::measure_iteration(const dual::FetiOperators& feti,
-                                                                 const dual::DualSolution& solution,
-                                                                 OuterIteration& it)
+                                                                 const dual::DualSolution& solution, OuterIteration& it)
 {
   it.qp = solution.report;
   it.final_rho = solution.smalbe_rho;
@@ -676,8 +671,8 @@ FetiContactSolve::Correction FetiContactSolve::measure_iteration(const dual::Fet
 }
 
 bool FetiContactSolve::store_contact_result(const dual::DualSolution& solution,
-                                            contact::ContactConstraints contact_rows,
-                                            const la::Vector& contact_lambda, const std::string& where)
+                                            contact::ContactConstraints contact_rows, const la::Vector& contact_lambda,
+                                            const std::string& where)
 {
   // A linear run's QP had the rows near contact only; if a left-out candidate is penetrated
   // at its answer, another QP follows with the rows near contact at u (LinearContactRows).
@@ -759,13 +754,14 @@ double explicit_forming_bytes(std::vector<double> boundary_sizes, int threads)
   return bytes;
 }
 
-ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings,
-                                   TimerTable& timers, const StepCallback& on_step,
-                                   const ContactSolution* previous, par::Communicator comm)
+ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings, TimerTable& timers,
+                                   const StepCallback& on_step, const ContactSolution* previous, par::Communicator comm)
 {
   problem.validate();
-  FETICON_CHECK(problem.contacts.size() == 1, "the FETI contact solver handles exactly one contact "
-                                              "pair; the problem has " << problem.contacts.size());
+  FETICON_CHECK(problem.contacts.size() == 1,
+                "the FETI contact solver handles exactly one contact "
+                "pair; the problem has "
+                    << problem.contacts.size());
   const auto run_start = std::chrono::steady_clock::now();
   ContactSolution out;
   FetiContactSolve solve(problem, settings, timers, comm, out);

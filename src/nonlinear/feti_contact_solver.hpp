@@ -40,8 +40,7 @@ double explicit_forming_bytes(std::vector<double> boundary_sizes, int threads);
 /// @param previous if given, continue after its completed load steps (its history and steps
 ///                 are taken from `previous`, the solution of the interrupted run; its step
 ///                 count names a point of the same load history, which is checked)
-ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings,
-                                   TimerTable& timers, const StepCallback& on_step = {},
-                                   const ContactSolution* previous = nullptr,
+ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSettings& settings, TimerTable& timers,
+                                   const StepCallback& on_step = {}, const ContactSolution* previous = nullptr,
                                    par::Communicator comm = par::Communicator::world());
 } // namespace feticon::nonlinear

@@ -41,10 +41,7 @@ LinearContactRows::LinearContactRows(const mesh::HexMesh& mesh, const std::strin
     _selected[i] = _candidates.gap[i] < contact_level + _band_gap[i];
 }
 
-contact::ContactConstraints LinearContactRows::selected_rows(const la::Vector& u) const
-{
-  return subset(_selected, u);
-}
+contact::ContactConstraints LinearContactRows::selected_rows(const la::Vector& u) const { return subset(_selected, u); }
 
 bool LinearContactRows::expand(const la::Vector& u)
 {
@@ -60,7 +57,7 @@ bool LinearContactRows::expand(const la::Vector& u)
 }
 
 la::Vector LinearContactRows::all_multipliers(const contact::ContactConstraints& selected,
-                                               const la::Vector& lambda) const
+                                              const la::Vector& lambda) const
 {
   la::Vector all = la::Vector::Zero(_candidates.n_rows());
   la::Index k = 0;
@@ -70,10 +67,7 @@ la::Vector LinearContactRows::all_multipliers(const contact::ContactConstraints&
   return all;
 }
 
-int64_t LinearContactRows::n_selected() const
-{
-  return std::count(_selected.begin(), _selected.end(), 1);
-}
+int64_t LinearContactRows::n_selected() const { return std::count(_selected.begin(), _selected.end(), 1); }
 
 contact::ContactConstraints LinearContactRows::subset(const std::vector<char>& keep, const la::Vector& u) const
 {

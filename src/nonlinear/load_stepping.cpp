@@ -9,8 +9,8 @@
 
 namespace feticon::nonlinear
 {
-void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int first_step,
-                    int max_outer_iterations, ContactSolution& out, const StepCallback& on_step)
+void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int first_step, int max_outer_iterations,
+                    ContactSolution& out, const StepCallback& on_step)
 {
   for (int step = first_step; step <= history.n_steps(); ++step)
   {
@@ -56,8 +56,8 @@ void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int
     else if (!record.converged)
     {
       char reason[160];
-      std::snprintf(reason, sizeof reason, "load step %d did not converge in %d outer iterations (|du|/|u| = %g)",
-                    step, max_outer_iterations, record.displacement_change);
+      std::snprintf(reason, sizeof reason, "load step %d did not converge in %d outer iterations (|du|/|u| = %g)", step,
+                    max_outer_iterations, record.displacement_change);
       out.reason = reason;
       return;
     }

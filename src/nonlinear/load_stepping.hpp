@@ -61,6 +61,6 @@ public:
 /// appending to out.history and out.steps; `on_step` after every converged step (or one ended
 /// at a floor, which goes into out.warnings). Ends with out.completed (and out.converged if
 /// every step met the stopping test), or out.reason saying where and why it stopped.
-void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int first_step,
-                    int max_outer_iterations, ContactSolution& out, const StepCallback& on_step = {});
+void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int first_step, int max_outer_iterations,
+                    ContactSolution& out, const StepCallback& on_step = {});
 } // namespace feticon::nonlinear

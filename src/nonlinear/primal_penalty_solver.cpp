@@ -58,13 +58,14 @@ private:
   std::vector<char> _active;    ///< penalized rows
 };
 
-PrimalPenaltySolve::PrimalPenaltySolve(const fem::Problem& problem, const SolverSettings& settings,
-                                       TimerTable& timers, ContactSolution& out)
+PrimalPenaltySolve::PrimalPenaltySolve(const fem::Problem& problem, const SolverSettings& settings, TimerTable& timers,
+                                       ContactSolution& out)
     : _problem(problem), _settings(settings), _timers(timers), _out(out),
       _linear(settings.kinematics == fem::Kinematics::linear), _n(3 * static_cast<int64_t>(problem.mesh.n_nodes())),
       _assembler(problem.mesh, fem::whole_mesh_domain(problem.mesh), problem.materials, settings.kinematics),
-      _history(settings.load_history(problem)),
-      _pair{problem.contacts[0].slave, problem.contacts[0].master, problem.contacts[0].slave_nodes}, _u(la::Vector::Zero(_n))
+      _history(settings.load_history(problem)), _pair{problem.contacts[0].slave, problem.contacts[0].master,
+                                                      problem.contacts[0].slave_nodes},
+      _u(la::Vector::Zero(_n))
 {
   _contact_options.search_distance = settings.search_distance;
   _contact_options.formulation = settings.formulation;
@@ -80,9 +81,8 @@ PrimalPenaltySolve::PrimalPenaltySolve(const fem::Problem& problem, const Solver
 std::string PrimalPenaltySolve::format(const OuterIteration& it) const
 {
   char line[200];
-  std::snprintf(line, sizeof line,
-                "step %2d  penalty iteration %2d  active %5ld  |du|/|u| %9.2e  %7.2f s", it.load_step,
-                it.iteration, static_cast<long>(it.active_contacts), it.displacement_change, it.seconds);
+  std::snprintf(line, sizeof line, "step %2d  penalty iteration %2d  active %5ld  |du|/|u| %9.2e  %7.2f s",
+                it.load_step, it.iteration, static_cast<long>(it.active_contacts), it.displacement_change, it.seconds);
   return line;
 }
 
@@ -101,8 +101,8 @@ IterationOutcome PrimalPenaltySolve::outer_iteration(int k, OuterIteration& it)
     ScopedTimer t(_timers, "contact search");
     // Small displacements: contact in the reference configuration, total u unknown.
     // Large: rows in the current configuration, c = current gap, du unknown.
-    rows = contact::build_contact_constraints(_problem.mesh, _linear ? la::Vector::Zero(_n) : _u, _pair,
-                                              _contact_options);
+    rows =
+        contact::build_contact_constraints(_problem.mesh, _linear ? la::Vector::Zero(_n) : _u, _pair, _contact_options);
   }
   // Active set: violated rows (linear: v = B u - c at the current u; TL: current gap < 0).
   // The very first solve also takes touching rows (g = 0), or a body held only by
@@ -189,8 +189,8 @@ void PrimalPenaltySolve::solve_increment(const contact::ContactConstraints& rows
 }
 } // namespace
 
-ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSettings& settings,
-                                     TimerTable& timers, const StepCallback& on_step)
+ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSettings& settings, TimerTable& timers,
+                                     const StepCallback& on_step)
 {
   // One undecomposed factorization: BLAS is the parallelism (common/parallel.hpp).
   const ScopedBlasThreads blas(threads());

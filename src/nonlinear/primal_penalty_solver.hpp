@@ -23,6 +23,6 @@ namespace feticon::nonlinear
 {
 /// Runs the problem's load history (SolverSettings::load_history: one load step per stage with
 /// small displacements); `on_step` after every converged load step, with the solution so far.
-ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSettings& settings,
-                                     TimerTable& timers, const StepCallback& on_step = {});
+ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSettings& settings, TimerTable& timers,
+                                     const StepCallback& on_step = {});
 } // namespace feticon::nonlinear

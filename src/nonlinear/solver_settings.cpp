@@ -7,9 +7,9 @@ SolverSettings::SolverSettings() : SolverSettings(io::Settings{}) {}
 SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
 {
   const std::string& method_name = s.text("method");
-  method = method_name == "smalbe"         ? ContactMethod::smalbe
-           : method_name == "dual_penalty" ? ContactMethod::dual_penalty
-                                           : ContactMethod::primal_penalty;
+  method = method_name == "smalbe"    ? ContactMethod::smalbe
+      : method_name == "dual_penalty" ? ContactMethod::dual_penalty
+                                      : ContactMethod::primal_penalty;
   kinematics = s.text("displacements") == "large" ? fem::Kinematics::total_lagrangian : fem::Kinematics::linear;
   load_steps = s.integer("load_steps");
   max_outer_iterations = s.integer("newton.max_iterations");
@@ -18,17 +18,17 @@ SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
   forcing = s.number("newton.forcing");
   const std::string& stiffness_name = s.text("newton.stiffness");
   stiffness = stiffness_name == "initial" ? StiffnessUpdate::initial
-              : stiffness_name == "step"  ? StiffnessUpdate::load_step
+      : stiffness_name == "step"          ? StiffnessUpdate::load_step
                                           : StiffnessUpdate::iteration;
   subdomains = s.integer("subdomains");
   const std::string& partitioner_name = s.text("partitioner");
   partitioner = partitioner_name == "metis" ? Partitioner::metis
-                : partitioner_name == "rcb" ? Partitioner::rcb
+      : partitioner_name == "rcb"           ? Partitioner::rcb
                                             : Partitioner::structured;
   const std::string& operator_name = s.text("dual.operator");
-  dual_operator = operator_name == "implicit"   ? DualOperatorMode::implicit
-                  : operator_name == "explicit" ? DualOperatorMode::explicit_
-                                                : DualOperatorMode::automatic;
+  dual_operator = operator_name == "implicit" ? DualOperatorMode::implicit
+      : operator_name == "explicit"           ? DualOperatorMode::explicit_
+                                              : DualOperatorMode::automatic;
   formulation = s.text("contact.formulation") == "mortar" ? contact::ContactFormulation::mortar
                                                           : contact::ContactFormulation::node_to_segment;
   eps_n_factor = s.number("eps_n");

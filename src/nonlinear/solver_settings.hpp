@@ -31,9 +31,9 @@ enum class StiffnessUpdate
 /// How the cells are split into subdomains (decomposition/partition.hpp).
 enum class Partitioner
 {
-  metis,      ///< METIS k-way on the cell face graph
-  rcb,        ///< recursive coordinate bisection: box-like subdomains
-  structured  ///< equal slabs along x per body (studies)
+  metis,     ///< METIS k-way on the cell face graph
+  rcb,       ///< recursive coordinate bisection: box-like subdomains
+  structured ///< equal slabs along x per body (studies)
 };
 
 /// How F and the Dirichlet preconditioner are applied (decomposition/explicit_boundary_operators.hpp).
@@ -72,8 +72,8 @@ struct SolverSettings
 
   ContactMethod method;
   fem::Kinematics kinematics;
-  int load_steps;                      ///< equal load increments (large displacements)
-  int max_outer_iterations;            ///< outer (Newton) iterations per load step
+  int load_steps;           ///< equal load increments (large displacements)
+  int max_outer_iterations; ///< outer (Newton) iterations per load step
   /// eps_u and eps_r of OuterConvergence (eps_r: FETI solver). 1e-4 saved 3-21 % of the
   /// MPRGP steps but left the multiplier of the Hertz axis node 1.6 % off with rho = 10 (the
   /// peak pressure +0.64 % instead of -0.73 %; docs/contact.md): 1e-6 keeps it to 1e-7.
@@ -102,12 +102,11 @@ struct SolverSettings
   /// app/memory_guard.hpp); negative: a quarter of the rank's share of the node's available
   /// memory. At most 4 GiB either way.
   double explicit_block_budget = -1;
-  decomposition::GeneralizedInverseMethod generalized_inverse =
-      decomposition::GeneralizedInverseMethod::fixing_dofs;
+  decomposition::GeneralizedInverseMethod generalized_inverse = decomposition::GeneralizedInverseMethod::fixing_dofs;
   dual::DualPenaltyOptions dual;
-  double search_distance = 0;          ///< 0: automatic (about one master element)
-  double linear_contact_band = 0.25;   ///< LinearContactRows' band (master face diagonals)
+  double search_distance = 0;        ///< 0: automatic (about one master element)
+  double linear_contact_band = 0.25; ///< LinearContactRows' band (master face diagonals)
   contact::ContactFormulation formulation;
-  double eps_n_factor;                 ///< primal penalty eps_n = factor * max diag K
+  double eps_n_factor; ///< primal penalty eps_n = factor * max diag K
 };
 } // namespace feticon::nonlinear

@@ -4,8 +4,7 @@
 
 namespace feticon::par
 {
-BlockSpace::BlockSpace(Communicator comm, std::vector<std::vector<la::Index>> blocks,
-                       std::vector<int64_t> global_index)
+BlockSpace::BlockSpace(Communicator comm, std::vector<std::vector<la::Index>> blocks, std::vector<int64_t> global_index)
     : _comm(comm), _blocks(std::move(blocks)), _global_index(std::move(global_index))
 {
 }
@@ -13,8 +12,7 @@ BlockSpace::BlockSpace(Communicator comm, std::vector<std::vector<la::Index>> bl
 void BlockSpace::combine(std::span<const double> partials, int k, double* totals) const
 {
   // Gathered in rank order, which is global block order; added from 0 in that order.
-  const std::vector<double> all =
-      _comm.all_gather(std::vector<double>(partials.begin(), partials.end()));
+  const std::vector<double> all = _comm.all_gather(std::vector<double>(partials.begin(), partials.end()));
   for (int j = 0; j < k; ++j)
     totals[j] = 0.0;
   for (size_t b = 0; b * k < all.size(); ++b)

@@ -12,8 +12,7 @@ class BlockSpace : public la::VectorSpace
 public:
   /// @param blocks       local indices of each local block, in increasing global block order
   /// @param global_index global index of every local entry, increasing with the local index
-  BlockSpace(Communicator comm, std::vector<std::vector<la::Index>> blocks,
-             std::vector<int64_t> global_index);
+  BlockSpace(Communicator comm, std::vector<std::vector<la::Index>> blocks, std::vector<int64_t> global_index);
 
   la::Index size() const override { return static_cast<la::Index>(_global_index.size()); }
   const std::vector<std::vector<la::Index>>& blocks() const override { return _blocks; }

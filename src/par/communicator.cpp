@@ -21,8 +21,7 @@ std::vector<T> gather_impl(MPI_Comm comm, int size, const std::vector<T>& local,
   for (int r = 1; r < size; ++r)
     displacements[r] = displacements[r - 1] + counts[r - 1];
   std::vector<T> out(static_cast<size_t>(displacements.back() + counts.back()));
-  MPI_Allgatherv(local.data(), count, type, out.data(), counts.data(), displacements.data(), type,
-                 comm);
+  MPI_Allgatherv(local.data(), count, type, out.data(), counts.data(), displacements.data(), type, comm);
   return out;
 }
 /// Ranks of MPI_COMM_WORLD sharing this rank's node (1 without MPI), set by Environment.
@@ -110,8 +109,7 @@ std::vector<std::vector<double>> Communicator::exchange(const std::vector<int>& 
                                                         const std::vector<std::vector<double>>& send,
                                                         const std::vector<size_t>& recv_sizes) const
 {
-  FETICON_ASSERT(send.size() == ranks.size() && recv_sizes.size() == ranks.size(),
-                 "exchange pattern sizes");
+  FETICON_ASSERT(send.size() == ranks.size() && recv_sizes.size() == ranks.size(), "exchange pattern sizes");
   std::vector<std::vector<double>> recv(ranks.size());
   if (ranks.empty())
     return recv;
@@ -122,14 +120,12 @@ std::vector<std::vector<double>> Communicator::exchange(const std::vector<int>& 
   {
     recv[k].resize(recv_sizes[k]);
     requests.emplace_back();
-    MPI_Irecv(recv[k].data(), static_cast<int>(recv_sizes[k]), MPI_DOUBLE, ranks[k], tag, _comm,
-              &requests.back());
+    MPI_Irecv(recv[k].data(), static_cast<int>(recv_sizes[k]), MPI_DOUBLE, ranks[k], tag, _comm, &requests.back());
   }
   for (size_t k = 0; k < ranks.size(); ++k)
   {
     requests.emplace_back();
-    MPI_Isend(send[k].data(), static_cast<int>(send[k].size()), MPI_DOUBLE, ranks[k], tag, _comm,
-              &requests.back());
+    MPI_Isend(send[k].data(), static_cast<int>(send[k].size()), MPI_DOUBLE, ranks[k], tag, _comm, &requests.back());
   }
   MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
   return recv;

@@ -61,8 +61,7 @@ public:
   /// Point-to-point exchange with the given ranks: sends send[k] to ranks[k] and returns
   /// what ranks[k] sent here (its size must be recv_sizes[k]). Ranks must agree on the
   /// pattern (both sides derive it from the same replicated data).
-  std::vector<std::vector<double>> exchange(const std::vector<int>& ranks,
-                                            const std::vector<std::vector<double>>& send,
+  std::vector<std::vector<double>> exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>& send,
                                             const std::vector<size_t>& recv_sizes) const;
 
   /// Waits until every rank has arrived.

@@ -43,11 +43,11 @@ struct SurfaceSample
 /// A completed run's figures against theory.
 struct TheoryComparison
 {
-  std::string name;                ///< of summary.json's block ("hertz")
-  nlohmann::ordered_json figures;  ///< that block
-  double applied_load = 0;         ///< the load the contact must carry (N): summary.json contact.applied_load
-  std::vector<double> analytic;    ///< the theory's pressure at each sample, in the frame of the figures (Pa)
-  std::string summary_line;        ///< for the end-of-run table
+  std::string name;               ///< of summary.json's block ("hertz")
+  nlohmann::ordered_json figures; ///< that block
+  double applied_load = 0;        ///< the load the contact must carry (N): summary.json contact.applied_load
+  std::vector<double> analytic;   ///< the theory's pressure at each sample, in the frame of the figures (Pa)
+  std::string summary_line;       ///< for the end-of-run table
 };
 
 class BuiltInProblem

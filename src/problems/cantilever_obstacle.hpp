@@ -15,13 +15,13 @@ namespace feticon::problems
 {
 struct CantileverObstacleParameters
 {
-  double length = 1.0;       ///< L (m)
-  double depth = 0.05;       ///< h (m), also the thickness in z
-  double gap = 0.25;         ///< distance from the beam's bottom to the obstacle top (m)
+  double length = 1.0;         ///< L (m)
+  double depth = 0.05;         ///< h (m), also the thickness in z
+  double gap = 0.25;           ///< distance from the beam's bottom to the obstacle top (m)
   double obstacle_start = 0.4; ///< x of the obstacle's left face (m)
   /// Tip load as the linear-theory tip deflection P L^3 / (3 E' I) it would cause, over L.
   double linear_deflection_ratio = 0.8;
-  int cells_along = 40;      ///< beam cells along x (cells through the depth: cells_along / 10)
+  int cells_along = 40; ///< beam cells along x (cells through the depth: cells_along / 10)
   fem::Material material{2.0e11, 0.3};
 };
 

@@ -69,8 +69,7 @@ HertzComparison compare_with_hertz(const HertzParameters& parameters, std::vecto
     if (samples[i].r <= h.a_computed && h.a_computed <= samples[i + 1].r)
       h.element_size = samples[i + 1].r - samples[i].r;
 
-  auto interpolate = [&](double x)
-  {
+  auto interpolate = [&](double x) {
     if (x <= samples.front().r)
       return samples.front().pressure;
     for (size_t i = 0; i + 1 < samples.size(); ++i)

@@ -22,9 +22,9 @@ namespace feticon::problems
 struct HertzParameters
 {
   HertzMeshParameters mesh;
-  double line_load = 4.0e8; ///< Q (N/m) on the whole cylinder; the half model carries Q/2
-  fem::Material material{2.0e11, 0.3};           ///< the cylinder's, and the block's if not given
-  std::optional<fem::Material> block_material;   ///< the block's if it differs
+  double line_load = 4.0e8;                    ///< Q (N/m) on the whole cylinder; the half model carries Q/2
+  fem::Material material{2.0e11, 0.3};         ///< the cylinder's, and the block's if not given
+  std::optional<fem::Material> block_material; ///< the block's if it differs
   fem::Material block() const { return block_material.value_or(material); }
 };
 
@@ -54,13 +54,13 @@ double hertz_axis_approach(const fem::Problem& problem, const la::Vector& u);
 struct HertzComparison
 {
   double a_analytic = 0, p0_analytic = 0;
-  double a_computed = 0;        ///< from the fit of p^2 (fitted_half_width)
-  double p_peak_computed = 0;   ///< largest nodal pressure from the multipliers
+  double a_computed = 0;      ///< from the fit of p^2 (fitted_half_width)
+  double p_peak_computed = 0; ///< largest nodal pressure from the multipliers
   /// RMS of p - p_McEwen over 400 equidistant points of [0, a_analytic], p interpolated
   /// linearly between samples, over p0 (bench/calculix_compare.py computes the same).
   double rms_error_over_p0 = 0;
-  double element_size = 0;      ///< sample spacing at x = a_computed (m)
-  double applied_load = 0;      ///< Q/2 * thickness (N) carried by the half model
+  double element_size = 0; ///< sample spacing at x = a_computed (m)
+  double applied_load = 0; ///< Q/2 * thickness (N) carried by the half model
 };
 
 /// The figures; `samples` are the slave node lines at their distance r = x from the

@@ -15,8 +15,8 @@ namespace
 /// `reflect` when `place` reverses the orientation (then cells and faces are reordered so
 /// that they stay positive and outward).
 template <class Place>
-void append_body(mesh::HexMesh& mesh, const mesh::OctantBall& ball, const std::string& name, bool reflect,
-                 Place place, const std::string& flat_set, const std::string& outer_set)
+void append_body(mesh::HexMesh& mesh, const mesh::OctantBall& ball, const std::string& name, bool reflect, Place place,
+                 const std::string& flat_set, const std::string& outer_set)
 {
   const int32_t offset = mesh.n_nodes();
   const int32_t body = mesh.n_bodies();
@@ -32,8 +32,7 @@ void append_body(mesh::HexMesh& mesh, const mesh::OctantBall& ball, const std::s
     mesh.cells.push_back(cell);
     mesh.cell_body.push_back(body);
   }
-  auto add_faces = [&](const std::vector<mesh::Face>& faces, const std::string& set)
-  {
+  auto add_faces = [&](const std::vector<mesh::Face>& faces, const std::string& set) {
     auto& out = mesh.face_sets[set];
     for (const mesh::Face& f : faces)
       out.push_back(reflect ? mesh::Face{offset + f[0], offset + f[3], offset + f[2], offset + f[1]}
@@ -91,17 +90,17 @@ std::pair<mesh::OctantBallParameters, mesh::OctantBallParameters> octant_balls(c
   // Beyond R / 2 the lift onto the sphere shears the rim's cells past aspect ratio 3 (5.6 at
   // 0.8 R), and the Hertz figures do not need it (0.25 R and 0.5 R agree to 0.1 % of p0).
   FETICON_CHECK(parameters.cap_radius > 0 && parameters.cap_radius <= 0.5 * R,
-                "hertz3d: cap_radius = " << parameters.cap_radius << " m must be in (0, radius / 2 = "
-                                         << 0.5 * R << " m]");
+                "hertz3d: cap_radius = " << parameters.cap_radius << " m must be in (0, radius / 2 = " << 0.5 * R
+                                         << " m]");
   const Hertz3dAnalytic analytic = hertz3d_analytic(parameters);
   const double h = parameters.element_size / parameters.refinement;
   // The uniform core covers the contact zone with a margin: 1.25 a, in whole cells.
   const int slave_cells = static_cast<int>(std::ceil(1.25 * analytic.contact_radius / h - 1e-9));
   const double h_master = parameters.master_ratio * h;
   const int master_cells = static_cast<int>(std::ceil(slave_cells * h / h_master - 1e-9));
-  FETICON_CHECK(slave_cells <= 400, "hertz3d: " << slave_cells << " core cells per edge (contact radius "
-                                                 << analytic.contact_radius << " m over element size " << h
-                                                 << " m) is more than 400; lower hertz3d.refinement");
+  FETICON_CHECK(slave_cells <= 400,
+                "hertz3d: " << slave_cells << " core cells per edge (contact radius " << analytic.contact_radius
+                            << " m over element size " << h << " m) is more than 400; lower hertz3d.refinement");
   const double core = std::max(slave_cells * h, master_cells * h_master);
   FETICON_CHECK(parameters.cap_radius >= 2.5 * core && parameters.block_radius >= 2.5 * core,
                 "hertz3d: cap_radius and block_radius must be at least 2.5 times the contact core width "
@@ -132,16 +131,16 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
   // shear of the map (slope s' up to 0.58 at the rim) does not stretch the interior cells;
   // dz/dd = 1 - s / cap_radius > 0 since s(rho) < rho <= cap_radius.
   const double Rc = parameters.cap_radius;
-  append_body(p.mesh, sphere, "sphere", false,
-              [R, Rc](const Eigen::Vector3d& q)
-              {
-                const double lift = R - std::sqrt(R * R - q(0) * q(0) - q(1) * q(1));
-                return Eigen::Vector3d(q(0), q(1), q(2) + lift * (1 - q(2) / Rc));
-              },
-              "sphere_contact", "sphere_load");
-  append_body(p.mesh, block, "block", true,
-              [](const Eigen::Vector3d& q) { return Eigen::Vector3d(q(0), q(1), -q(2)); }, "block_contact",
-              "block_support");
+  append_body(
+      p.mesh, sphere, "sphere", false,
+      [R, Rc](const Eigen::Vector3d& q) {
+    const double lift = R - std::sqrt(R * R - q(0) * q(0) - q(1) * q(1));
+    return Eigen::Vector3d(q(0), q(1), q(2) + lift * (1 - q(2) / Rc));
+      },
+      "sphere_contact", "sphere_load");
+  append_body(
+      p.mesh, block, "block", true, [](const Eigen::Vector3d& q) { return Eigen::Vector3d(q(0), q(1), -q(2)); },
+      "block_contact", "block_support");
   for (const auto& [name, faces] : p.mesh.face_sets)
     p.mesh.add_node_set_from_faces(name, name);
 
@@ -163,8 +162,7 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
   return p;
 }
 
-Hertz3dComparison compare_with_hertz3d(const Hertz3dParameters& parameters,
-                                       const std::vector<ProfilePoint>& samples)
+Hertz3dComparison compare_with_hertz3d(const Hertz3dParameters& parameters, const std::vector<ProfilePoint>& samples)
 {
   const Hertz3dAnalytic analytic = hertz3d_analytic(parameters);
   Hertz3dComparison c;

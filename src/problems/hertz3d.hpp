@@ -35,16 +35,16 @@ namespace feticon::problems
 {
 struct Hertz3dParameters
 {
-  double radius = 0.05;        ///< R, sphere radius (m)
-  double load = 2.0e4;         ///< F on the whole sphere (N); the quarter model carries F / 4
+  double radius = 0.05;                        ///< R, sphere radius (m)
+  double load = 2.0e4;                         ///< F on the whole sphere (N); the quarter model carries F / 4
   fem::Material material{2.0e11, 0.3};         ///< the sphere's, and the block's if not given
   std::optional<fem::Material> block_material; ///< the block's if it differs
-  double element_size = 2.5e-4; ///< slave cell size in the contact core at refinement 1 (m)
-  double refinement = 1;        ///< divides element_size
-  double master_ratio = 1.3;    ///< block / sphere cell size in the contact core
-  double block_radius = 0.04;   ///< radius of the modelled half-space (m)
-  double cap_radius = 0.025;    ///< radius of the modelled part of the sphere (m), <= R / 2
-  double radial_aspect = 1.5;   ///< radial / tangential cell size away from the core
+  double element_size = 2.5e-4;                ///< slave cell size in the contact core at refinement 1 (m)
+  double refinement = 1;                       ///< divides element_size
+  double master_ratio = 1.3;                   ///< block / sphere cell size in the contact core
+  double block_radius = 0.04;                  ///< radius of the modelled half-space (m)
+  double cap_radius = 0.025;                   ///< radius of the modelled part of the sphere (m), <= R / 2
+  double radial_aspect = 1.5;                  ///< radial / tangential cell size away from the core
   fem::Material block() const { return block_material.value_or(material); }
 };
 
@@ -75,14 +75,13 @@ struct Hertz3dComparison
   double a_analytic = 0, p0_analytic = 0, approach_analytic = 0;
   /// Contact radius from the fit of p^2 (fitted_half_width).
   double a_computed = 0;
-  double p_peak_computed = 0;   ///< largest nodal pressure
+  double p_peak_computed = 0; ///< largest nodal pressure
   /// RMS over the slave nodes with r <= a_analytic of p - p_Hertz(r), over p0.
   double rms_error_over_p0 = 0;
   int nodes_in_rms = 0;
 };
 /// The figures against Hertz's p(r), the samples at their distance r from the axis.
-Hertz3dComparison compare_with_hertz3d(const Hertz3dParameters& parameters,
-                                       const std::vector<ProfilePoint>& samples);
+Hertz3dComparison compare_with_hertz3d(const Hertz3dParameters& parameters, const std::vector<ProfilePoint>& samples);
 
 /// The `hertz3d.*` keys (problems/built_in_problem.hpp).
 std::vector<io::SettingSpec> hertz3d_setting_specs();

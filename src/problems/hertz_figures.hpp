@@ -14,8 +14,7 @@ namespace feticon::problems
 {
 /// The samples at their distance r from the symmetry plane x = 0 (`radial` false) or from the
 /// axis x = y = 0, in the deformed or the reference frame.
-inline std::vector<ProfilePoint> pressure_profile(const std::vector<SurfaceSample>& samples, bool radial,
-                                                  bool deformed)
+inline std::vector<ProfilePoint> pressure_profile(const std::vector<SurfaceSample>& samples, bool radial, bool deformed)
 {
   std::vector<ProfilePoint> out;
   out.reserve(samples.size());

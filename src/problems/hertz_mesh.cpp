@@ -25,10 +25,8 @@ namespace
 {
 void check_parameters(const HertzMeshParameters& p)
 {
-  auto check_positive = [](double value, const char* name)
-  {
-    FETICON_CHECK(std::isfinite(value) && value > 0,
-                  "Hertz mesh: " << name << " = " << value << " must be > 0");
+  auto check_positive = [](double value, const char* name) {
+    FETICON_CHECK(std::isfinite(value) && value > 0, "Hertz mesh: " << name << " = " << value << " must be > 0");
   };
   check_positive(p.cylinder_radius, "cylinder_radius");
   check_positive(p.cylinder_width, "cylinder_width");
@@ -43,20 +41,17 @@ void check_parameters(const HertzMeshParameters& p)
   FETICON_CHECK(std::isfinite(p.growth_ratio) && p.growth_ratio >= 1,
                 "Hertz mesh: growth_ratio = " << p.growth_ratio << " must be >= 1");
   FETICON_CHECK(p.cylinder_width < p.cylinder_radius,
-                "Hertz mesh: cylinder_width = "
-                    << p.cylinder_width << " m must be < cylinder_radius = " << p.cylinder_radius
-                    << " m");
+                "Hertz mesh: cylinder_width = " << p.cylinder_width
+                                                << " m must be < cylinder_radius = " << p.cylinder_radius << " m");
   FETICON_CHECK(p.fine_width < std::min(p.cylinder_width, p.block_width),
-                "Hertz mesh: fine_width = " << p.fine_width
-                                            << " m must be < cylinder_width and block_width");
+                "Hertz mesh: fine_width = " << p.fine_width << " m must be < cylinder_width and block_width");
   FETICON_CHECK(p.fine_depth < std::min(p.cylinder_radius, p.block_depth),
-                "Hertz mesh: fine_depth = " << p.fine_depth
-                                            << " m must be < cylinder_radius and block_depth");
+                "Hertz mesh: fine_depth = " << p.fine_depth << " m must be < cylinder_radius and block_depth");
   const double h_max = std::max(1.0, p.master_ratio) * p.element_size / p.refinement;
   FETICON_CHECK(std::min(p.fine_width, p.fine_depth) >= h_max,
                 "Hertz mesh: the fine region (fine_width, fine_depth >= "
-                    << std::min(p.fine_width, p.fine_depth) << " m) must hold at least one cell of "
-                    << h_max << " m; decrease element_size or master_ratio");
+                    << std::min(p.fine_width, p.fine_depth) << " m) must hold at least one cell of " << h_max
+                    << " m; decrease element_size or master_ratio");
 }
 
 /// Replaces the face sets `sources` by their union `target` (with its node set).
@@ -84,49 +79,43 @@ HexMesh tensor_bodies(const HertzMeshParameters& p)
   const double ratio = std::pow(p.growth_ratio, 1 / p.refinement);
   const double thickness = p.thickness;
 
-  const std::vector<double> cylinder_x =
-      mesh::graded_positions(p.cylinder_width, h_slave, p.fine_width, ratio);
+  const std::vector<double> cylinder_x = mesh::graded_positions(p.cylinder_width, h_slave, p.fine_width, ratio);
   const std::vector<double> cylinder_t = mesh::graded_positions(radius, h_slave, p.fine_depth, ratio);
-  const std::vector<double> block_x =
-      mesh::graded_positions(p.block_width, h_master, p.fine_width, ratio);
-  const std::vector<double> block_d =
-      mesh::graded_positions(p.block_depth, h_master, p.fine_depth, ratio);
-  auto n_cells = [](const std::vector<double>& positions)
-  { return static_cast<int32_t>(positions.size()) - 1; };
+  const std::vector<double> block_x = mesh::graded_positions(p.block_width, h_master, p.fine_width, ratio);
+  const std::vector<double> block_d = mesh::graded_positions(p.block_depth, h_master, p.fine_depth, ratio);
+  auto n_cells = [](const std::vector<double>& positions) { return static_cast<int32_t>(positions.size()) - 1; };
 
   // Column at abscissa x spans from the arc to the axis plane, height sqrt(R1^2 - x^2).
   const HexMesh cylinder = mesh::generate_mapped_block(
       {n_cells(cylinder_x), n_cells(cylinder_t), 1},
-      [&](int32_t i, int32_t j, int32_t k)
-      {
-        const double x = cylinder_x[i];
-        const double height = std::sqrt(radius * radius - x * x);
-        const double y = (radius - height) + cylinder_t[j] / radius * height;
-        return Eigen::Vector3d(x, y, k * thickness);
+      [&](int32_t i, int32_t j, int32_t k) {
+    const double x = cylinder_x[i];
+    const double height = std::sqrt(radius * radius - x * x);
+    const double y = (radius - height) + cylinder_t[j] / radius * height;
+    return Eigen::Vector3d(x, y, k * thickness);
       },
       "cylinder");
   // j counts upward, while the graded depths start at the contact surface y = 0.
   const int32_t block_ny = n_cells(block_d);
   const HexMesh block = mesh::generate_mapped_block(
       {n_cells(block_x), block_ny, 1},
-      [&](int32_t i, int32_t j, int32_t k)
-      { return Eigen::Vector3d(block_x[i], -block_d[block_ny - j], k * thickness); },
+      [&](int32_t i, int32_t j, int32_t k) {
+    return Eigen::Vector3d(block_x[i], -block_d[block_ny - j], k * thickness);
+      },
       "block");
 
   HexMesh mesh;
   mesh::append_mesh(mesh, cylinder, "cylinder_");
   mesh::append_mesh(mesh, block, "block_");
   const std::vector<std::pair<std::string, std::string>> renames = {
-      {"cylinder_ymin", "cylinder_contact"},  {"cylinder_ymax", "load"},
-      {"cylinder_xmin", "cylinder_symmetry"}, {"cylinder_xmax", "cylinder_side"},
-      {"block_ymax", "block_contact"},        {"block_ymin", "support"},
-      {"block_xmin", "block_symmetry"},       {"block_xmax", "block_side"},
+      {"cylinder_ymin", "cylinder_contact"}, {"cylinder_ymax", "load"},       {"cylinder_xmin", "cylinder_symmetry"},
+      {"cylinder_xmax", "cylinder_side"},    {"block_ymax", "block_contact"}, {"block_ymin", "support"},
+      {"block_xmin", "block_symmetry"},      {"block_xmax", "block_side"},
   };
   for (const auto& [from, to] : renames)
     merge_sets(mesh, {from}, to);
   return mesh;
 }
-
 
 /// Cell size of the graded mesh with size h at the contact band [0, fine_width] x {0}:
 /// h + (q - 1) d at the distance d from the band, i.e. cells growing by about q from one to
@@ -134,8 +123,9 @@ HexMesh tensor_bodies(const HertzMeshParameters& p)
 auto graded_size(const HertzMeshParameters& p, double h)
 {
   const double largest = 0.1 * std::max({p.block_width, p.block_depth, p.cylinder_radius});
-  return [&p, h, largest](double x, double y)
-  { return std::min(largest, h + (p.growth_ratio - 1) * std::hypot(std::max(x - p.fine_width, 0.0), y)); };
+  return [&p, h, largest](double x, double y) {
+    return std::min(largest, h + (p.growth_ratio - 1) * std::hypot(std::max(x - p.fine_width, 0.0), y));
+  };
 }
 
 /// The two bodies of the graded mesh (see hertz_mesh.hpp): each body's cross-section meshed by Gmsh with
@@ -160,7 +150,8 @@ HexMesh graded_bodies(const HertzMeshParameters& p)
                   {{0, -p.block_depth}, "symmetry"}};
   HexMesh mesh;
   mesh::append_mesh(mesh, mesh::extrude_cross_section(cylinder, graded_size(p, h_slave), p.thickness), "cylinder_");
-  mesh::append_mesh(mesh, mesh::extrude_cross_section(block, graded_size(p, p.master_ratio * h_slave), p.thickness), "block_");
+  mesh::append_mesh(mesh, mesh::extrude_cross_section(block, graded_size(p, p.master_ratio * h_slave), p.thickness),
+                    "block_");
   merge_sets(mesh, {"cylinder_load"}, "load");
   merge_sets(mesh, {"block_support"}, "support");
   return mesh;
@@ -169,11 +160,10 @@ HexMesh graded_bodies(const HertzMeshParameters& p)
 std::string graded_cache_key(const HertzMeshParameters& p)
 {
   std::ostringstream key;
-  key << std::setprecision(17) << "hertz graded: radius " << p.cylinder_radius << " cylinder_width "
-      << p.cylinder_width << " block_width " << p.block_width << " block_depth " << p.block_depth
-      << " thickness " << p.thickness << " element_size " << p.element_size << " master_ratio "
-      << p.master_ratio << " fine_width " << p.fine_width << " fine_depth " << p.fine_depth
-      << " growth_ratio " << p.growth_ratio << " refinement " << p.refinement;
+  key << std::setprecision(17) << "hertz graded: radius " << p.cylinder_radius << " cylinder_width " << p.cylinder_width
+      << " block_width " << p.block_width << " block_depth " << p.block_depth << " thickness " << p.thickness
+      << " element_size " << p.element_size << " master_ratio " << p.master_ratio << " fine_width " << p.fine_width
+      << " fine_depth " << p.fine_depth << " growth_ratio " << p.growth_ratio << " refinement " << p.refinement;
   return key.str();
 }
 
@@ -192,8 +182,7 @@ double graded_cell_count(double length, double spacing, double fine_length, doub
 template <class Size, class Inside>
 double cells_by_size(double width, double height, double finest, Size size, Inside inside)
 {
-  auto grid = [finest](double length)
-  {
+  auto grid = [finest](double length) {
     std::vector<double> edges{0.0};
     for (double step = 0.25 * finest; edges.back() < length; step *= 1.05)
       edges.push_back(std::min(length, edges.back() + step));
@@ -221,18 +210,18 @@ int64_t hertz_node_estimate(const HertzMeshParameters& p)
   if (p.kind == HertzMeshKind::tensor)
   {
     const double q = std::pow(p.growth_ratio, 1 / p.refinement);
-    cells = graded_cell_count(p.cylinder_width, h_slave, p.fine_width, q) *
-                graded_cell_count(R, h_slave, p.fine_depth, q) +
-            graded_cell_count(p.block_width, h_master, p.fine_width, q) *
-                graded_cell_count(p.block_depth, h_master, p.fine_depth, q);
+    cells =
+        graded_cell_count(p.cylinder_width, h_slave, p.fine_width, q) * graded_cell_count(R, h_slave, p.fine_depth, q) +
+        graded_cell_count(p.block_width, h_master, p.fine_width, q) *
+            graded_cell_count(p.block_depth, h_master, p.fine_depth, q);
   }
   else
   {
     // The size field of graded_bodies, integrated over each body's cross-section.
     cells = cells_by_size(p.cylinder_width, R, h_slave, graded_size(p, h_slave),
                           [R](double x, double y) { return y >= R - std::sqrt(R * R - x * x); }) +
-            cells_by_size(p.block_width, p.block_depth, h_master, graded_size(p, h_master),
-                          [](double, double) { return true; });
+        cells_by_size(p.block_width, p.block_depth, h_master, graded_size(p, h_master),
+                      [](double, double) { return true; });
   }
   // Quadrilaterals have about as many nodes as cells; the extruded layer doubles them. Gmsh's
   // recombined quadrilaterals come out smaller than the size field asks, by a steady factor
@@ -247,8 +236,9 @@ HexMesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache)
   if (from_cache)
     *from_cache = false;
   HexMesh mesh = parameters.kind == HertzMeshKind::graded
-                     ? mesh::cached_mesh(graded_cache_key(parameters), [&] { return graded_bodies(parameters); }, from_cache)
-                     : tensor_bodies(parameters);
+      ? mesh::cached_mesh(
+            graded_cache_key(parameters), [&] { return graded_bodies(parameters); }, from_cache)
+      : tensor_bodies(parameters);
   merge_sets(mesh, {"cylinder_zmin", "block_zmin"}, "zmin");
   merge_sets(mesh, {"cylinder_zmax", "block_zmax"}, "zmax");
   std::vector<int32_t> symmetry;
@@ -258,8 +248,7 @@ HexMesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache)
   return mesh;
 }
 
-ContactZoneSummary summarize_contact_zone(const HexMesh& mesh, const std::string& face_set,
-                                          double half_width)
+ContactZoneSummary summarize_contact_zone(const HexMesh& mesh, const std::string& face_set, double half_width)
 {
   ContactZoneSummary summary;
   summary.min_size = std::numeric_limits<double>::infinity();
@@ -271,8 +260,7 @@ ContactZoneSummary summarize_contact_zone(const HexMesh& mesh, const std::string
     {
       min_x = std::min(min_x, mesh.nodes(face[a], 0));
       for (int b = 0; b < a; ++b)
-        size = std::max(
-            size, (mesh.nodes.row(face[a]).head<2>() - mesh.nodes.row(face[b]).head<2>()).norm());
+        size = std::max(size, (mesh.nodes.row(face[a]).head<2>() - mesh.nodes.row(face[b]).head<2>()).norm());
     }
     if (min_x >= half_width)
       continue;
@@ -280,8 +268,7 @@ ContactZoneSummary summarize_contact_zone(const HexMesh& mesh, const std::string
     summary.min_size = std::min(summary.min_size, size);
     summary.max_size = std::max(summary.max_size, size);
   }
-  FETICON_CHECK(summary.n_faces > 0,
-                "face set '" << face_set << "' has no face with x < " << half_width << " m");
+  FETICON_CHECK(summary.n_faces > 0, "face set '" << face_set << "' has no face with x < " << half_width << " m");
   return summary;
 }
 } // namespace feticon::problems

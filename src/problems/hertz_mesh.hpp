@@ -112,6 +112,5 @@ struct ContactZoneSummary
 /// The in-plane size of a face is the largest x-y distance between two of its nodes, i.e. the
 /// chord length for faces extruded along z.
 /// @throws feticon::Error if no face of the set reaches into x < half_width.
-ContactZoneSummary summarize_contact_zone(const mesh::HexMesh& mesh, const std::string& face_set,
-                                          double half_width);
+ContactZoneSummary summarize_contact_zone(const mesh::HexMesh& mesh, const std::string& face_set, double half_width);
 } // namespace feticon::problems

@@ -19,24 +19,23 @@ namespace
 {
 using la::Vector;
 
-void check_input(const la::LinearOperator& A, const Vector& b, const Vector& x,
-                 const CgOptions& options, const la::LinearOperator* projector)
+void check_input(const la::LinearOperator& A, const Vector& b, const Vector& x, const CgOptions& options,
+                 const la::LinearOperator* projector)
 {
   const la::Index n = A.size();
-  FETICON_CHECK(options.rtol >= 0.0,
-                "conjugate_gradient: rtol = " << options.rtol << " must be >= 0");
-  FETICON_CHECK(options.max_iterations >= 0, "conjugate_gradient: max_iterations = "
-                                                 << options.max_iterations << " must be >= 0");
-  FETICON_CHECK(b.size() == n, "conjugate_gradient: b has size "
-                                   << b.size() << " but the operator has size " << n);
-  FETICON_CHECK(x.size() == n, "conjugate_gradient: the initial guess has size "
-                                   << x.size() << " but the operator has size " << n);
+  FETICON_CHECK(options.rtol >= 0.0, "conjugate_gradient: rtol = " << options.rtol << " must be >= 0");
+  FETICON_CHECK(options.max_iterations >= 0,
+                "conjugate_gradient: max_iterations = " << options.max_iterations << " must be >= 0");
+  FETICON_CHECK(b.size() == n, "conjugate_gradient: b has size " << b.size() << " but the operator has size " << n);
+  FETICON_CHECK(x.size() == n,
+                "conjugate_gradient: the initial guess has size " << x.size() << " but the operator has size " << n);
   FETICON_CHECK(projector == nullptr || projector->size() == n,
-                "conjugate_gradient: the projector has size "
-                    << projector->size() << " but the operator has size " << n);
+                "conjugate_gradient: the projector has size " << projector->size() << " but the operator has size "
+                                                              << n);
   FETICON_CHECK(b.allFinite(), "conjugate_gradient: b has a NaN or infinite entry");
-  FETICON_CHECK(x.allFinite(), "conjugate_gradient: the initial guess has a NaN or infinite "
-                               "entry");
+  FETICON_CHECK(x.allFinite(),
+                "conjugate_gradient: the initial guess has a NaN or infinite "
+                "entry");
 }
 
 std::string format_number(double value)
@@ -47,8 +46,8 @@ std::string format_number(double value)
 }
 } // namespace
 
-QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector& x,
-                            const CgOptions& options, const la::LinearOperator* projector)
+QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector& x, const CgOptions& options,
+                            const la::LinearOperator* projector)
 {
   const auto start_time = std::chrono::steady_clock::now();
   check_input(A, b, x, options, projector);
@@ -60,8 +59,7 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
   };
 
   std::unique_ptr<la::SerialSpace> serial;
-  const la::VectorSpace& space =
-      A.space() ? *A.space() : *(serial = std::make_unique<la::SerialSpace>(A.size()));
+  const la::VectorSpace& space = A.space() ? *A.space() : *(serial = std::make_unique<la::SerialSpace>(A.size()));
   QpReport report;
   RitzEstimate ritz; // the run is Lanczos on P M P A: its extreme eigenvalues for free
   // s = b - Ax is kept unprojected so that the cost is exact even for x outside Im P.
@@ -100,8 +98,7 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
     report.cg_steps = report.iterations;
     report.ritz = ritz.longest_run();
     report.projected_gradient_norm = std::sqrt(rr);
-    report.cost = -0.5 * la::reduce_sum<1>(space, [&](la::Index i, double* sum)
-                                           { sum[0] += x[i] * (s[i] + b[i]); })[0];
+    report.cost = -0.5 * la::reduce_sum<1>(space, [&](la::Index i, double* sum) { sum[0] += x[i] * (s[i] + b[i]); })[0];
     report.seconds = seconds_since(start_time);
     return report;
   };
@@ -114,29 +111,30 @@ QpReport conjugate_gradient(const la::LinearOperator& A, const Vector& b, Vector
     if (log::enabled(log::Level::iterations))
     {
       char line[96];
-      std::snprintf(line, sizeof line, "cg %6d |P r| %.3e tol %.3e", report.iterations,
-                    r_norm, tolerance);
+      std::snprintf(line, sizeof line, "cg %6d |P r| %.3e tol %.3e", report.iterations, r_norm, tolerance);
       log::iteration(line);
     }
     if (!std::isfinite(r_norm))
-      return finish(false, "residual norm is not finite (" + format_number(r_norm) +
-                               ") at iteration " + std::to_string(report.iterations));
+      return finish(false,
+                    "residual norm is not finite (" + format_number(r_norm) + ") at iteration " +
+                        std::to_string(report.iterations));
     if (r_norm <= tolerance)
-      return finish(true, "|P r| = " + format_number(r_norm) + " <= " +
-                              (pb_norm > 0.0 ? "rtol |P b| = " : "rtol (P b = 0) = ") +
-                              format_number(tolerance));
+      return finish(true,
+                    "|P r| = " + format_number(r_norm) +
+                        " <= " + (pb_norm > 0.0 ? "rtol |P b| = " : "rtol (P b = 0) = ") + format_number(tolerance));
     if (report.iterations >= options.max_iterations)
-      return finish(false, "maximum number of iterations (" +
-                               std::to_string(options.max_iterations) + ") reached, |P r| = " +
-                               format_number(r_norm));
+      return finish(false,
+                    "maximum number of iterations (" + std::to_string(options.max_iterations) +
+                        ") reached, |P r| = " + format_number(r_norm));
 
     A.apply(p, q);
     ++report.hessian_multiplications;
     const double pq = la::dot(space, p, q);
     if (!(pq > 0.0))
-      return finish(false, "operator is not positive definite on the search direction: "
-                           "p'Ap = " + format_number(pq) + " <= 0 at iteration " +
-                               std::to_string(report.iterations));
+      return finish(false,
+                    "operator is not positive definite on the search direction: "
+                    "p'Ap = " +
+                        format_number(pq) + " <= 0 at iteration " + std::to_string(report.iterations));
     const double alpha = rz / pq;
     x += alpha * p;
     s -= alpha * q;

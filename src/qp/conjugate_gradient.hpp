@@ -52,7 +52,6 @@ struct CgOptions
 ///         extreme eigenvalues of P M P A on Im P estimated from the run; converged =
 ///         false with a reason on max_iterations, a non-finite residual norm or p'Ap <= 0.
 /// Throws feticon::Error on size mismatch or non-finite b or x.
-QpReport conjugate_gradient(const la::LinearOperator& A, const la::Vector& b, la::Vector& x,
-                            const CgOptions& options,
+QpReport conjugate_gradient(const la::LinearOperator& A, const la::Vector& b, la::Vector& x, const CgOptions& options,
                             const la::LinearOperator* projector = nullptr);
 } // namespace feticon::qp

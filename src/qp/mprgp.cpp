@@ -35,11 +35,10 @@ struct GradientSplit
   double cost = 0.0; ///< 1/2 x'(g - b)
 };
 
-GradientSplit split_gradient(const la::VectorSpace& space, const Vector& x, const Vector& g,
-                             const Vector& b, const Vector& lower, double alpha_bar)
+GradientSplit split_gradient(const la::VectorSpace& space, const Vector& x, const Vector& g, const Vector& b,
+                             const Vector& lower, double alpha_bar)
 {
-  const auto s = la::reduce_sum<4>(space, [&](Index i, double* sum)
-  {
+  const auto s = la::reduce_sum<4>(space, [&](Index i, double* sum) {
     if (x[i] > lower[i])
     {
       sum[0] += g[i] * g[i];
@@ -71,8 +70,8 @@ void chopped_gradient(const Vector& x, const Vector& g, const Vector& lower, Vec
 
 /// Largest step along -p that keeps x >= lower, and the component that blocks it (-1 if
 /// none does, or if it is on another rank).
-double feasible_step(const la::VectorSpace& space, const Vector& x, const Vector& p,
-                     const Vector& lower, Index& blocking)
+double feasible_step(const la::VectorSpace& space, const Vector& x, const Vector& p, const Vector& lower,
+                     Index& blocking)
 {
   double alpha = infinity;
   blocking = -1;
@@ -93,25 +92,21 @@ double feasible_step(const la::VectorSpace& space, const Vector& x, const Vector
   return global_alpha;
 }
 
-void check_input(const la::LinearOperator& A, const Vector& b, const Vector& lower,
-                 const Vector& x)
+void check_input(const la::LinearOperator& A, const Vector& b, const Vector& lower, const Vector& x)
 {
   const Index n = A.size();
-  FETICON_CHECK(b.size() == n, "Mprgp::solve: b has size " << b.size()
-                                   << " but the operator has size " << n);
-  FETICON_CHECK(lower.size() == n, "Mprgp::solve: the lower bound has size "
-                                       << lower.size() << " but the operator has size " << n);
-  FETICON_CHECK(x.size() == n, "Mprgp::solve: the initial guess has size "
-                                   << x.size() << " but the operator has size " << n);
+  FETICON_CHECK(b.size() == n, "Mprgp::solve: b has size " << b.size() << " but the operator has size " << n);
+  FETICON_CHECK(lower.size() == n,
+                "Mprgp::solve: the lower bound has size " << lower.size() << " but the operator has size " << n);
+  FETICON_CHECK(x.size() == n,
+                "Mprgp::solve: the initial guess has size " << x.size() << " but the operator has size " << n);
   for (Index i = 0; i < n; ++i)
   {
-    FETICON_CHECK(std::isfinite(b[i]), "Mprgp::solve: b[" << i << "] = " << b[i]
-                                           << " is not finite; check the right-hand side");
+    FETICON_CHECK(std::isfinite(b[i]),
+                  "Mprgp::solve: b[" << i << "] = " << b[i] << " is not finite; check the right-hand side");
     FETICON_CHECK(!std::isnan(lower[i]) && lower[i] != infinity,
-                  "Mprgp::solve: lower bound l[" << i << "] = " << lower[i]
-                                                 << "; bounds must be finite or -inf");
-    FETICON_CHECK(std::isfinite(x[i]), "Mprgp::solve: initial guess x[" << i << "] = "
-                                           << x[i] << " is not finite");
+                  "Mprgp::solve: lower bound l[" << i << "] = " << lower[i] << "; bounds must be finite or -inf");
+    FETICON_CHECK(std::isfinite(x[i]), "Mprgp::solve: initial guess x[" << i << "] = " << x[i] << " is not finite");
   }
 }
 
@@ -119,15 +114,13 @@ void log_iterate(const MprgpIterate& it, double tolerance, bool custom_stop)
 {
   char line[160];
   if (custom_stop)
-    std::snprintf(line, sizeof line,
-                  "mprgp %6d %-13s |g_P| %.3e |phi| %.3e |beta| %.3e tol caller  f %.9e",
-                  it.iteration, to_string(it.step), it.projected_gradient_norm,
-                  it.free_gradient_norm, it.chopped_gradient_norm, it.cost);
+    std::snprintf(line, sizeof line, "mprgp %6d %-13s |g_P| %.3e |phi| %.3e |beta| %.3e tol caller  f %.9e",
+                  it.iteration, to_string(it.step), it.projected_gradient_norm, it.free_gradient_norm,
+                  it.chopped_gradient_norm, it.cost);
   else
-    std::snprintf(line, sizeof line,
-                  "mprgp %6d %-13s |g_P| %.3e |phi| %.3e |beta| %.3e tol %.3e f %.9e",
-                  it.iteration, to_string(it.step), it.projected_gradient_norm,
-                  it.free_gradient_norm, it.chopped_gradient_norm, tolerance, it.cost);
+    std::snprintf(line, sizeof line, "mprgp %6d %-13s |g_P| %.3e |phi| %.3e |beta| %.3e tol %.3e f %.9e", it.iteration,
+                  to_string(it.step), it.projected_gradient_norm, it.free_gradient_norm, it.chopped_gradient_norm,
+                  tolerance, it.cost);
   log::iteration(line);
 }
 
@@ -160,11 +153,9 @@ Mprgp::Mprgp(const la::LinearOperator& A, MprgpOptions options)
 {
   FETICON_CHECK(_options.rtol >= 0.0, "Mprgp: rtol = " << _options.rtol << " must be >= 0");
   FETICON_CHECK(_options.gamma > 0.0, "Mprgp: gamma = " << _options.gamma << " must be > 0");
-  FETICON_CHECK(_options.max_iterations >= 0,
-                "Mprgp: max_iterations = " << _options.max_iterations << " must be >= 0");
+  FETICON_CHECK(_options.max_iterations >= 0, "Mprgp: max_iterations = " << _options.max_iterations << " must be >= 0");
   FETICON_CHECK(_options.alpha_bar >= 0.0 && std::isfinite(_options.alpha_bar),
-                "Mprgp: alpha_bar = " << _options.alpha_bar
-                                      << " must be > 0 (or 0 to estimate 1.8/||A||)");
+                "Mprgp: alpha_bar = " << _options.alpha_bar << " must be > 0 (or 0 to estimate 1.8/||A||)");
   FETICON_CHECK(_options.power_iterations >= 1,
                 "Mprgp: power_iterations = " << _options.power_iterations << " must be >= 1");
   FETICON_CHECK(_options.gradient_refresh >= 1,
@@ -173,8 +164,7 @@ Mprgp::Mprgp(const la::LinearOperator& A, MprgpOptions options)
 
 MprgpExpansion expansion_from_name(const std::string& name)
 {
-  FETICON_CHECK(name == "std" || name == "projcg",
-                "MPRGP expansion '" << name << "' is unknown: use std or projcg");
+  FETICON_CHECK(name == "std" || name == "projcg", "MPRGP expansion '" << name << "' is unknown: use std or projcg");
   return name == "std" ? MprgpExpansion::standard : MprgpExpansion::projected_cg;
 }
 
@@ -213,19 +203,21 @@ std::optional<MprgpStop> stopping_test(const MprgpOptions& options, const QpRepo
   const bool custom_stop = static_cast<bool>(options.stop);
   // Stopping tests, in this order: a NaN must not pass as converged.
   if (!std::isfinite(gp_norm))
-    return MprgpStop{false, "projected gradient norm is not finite (" + format_number(gp_norm) +
-                                ") at iteration " + std::to_string(report.iterations)};
+    return MprgpStop{false,
+                     "projected gradient norm is not finite (" + format_number(gp_norm) + ") at iteration " +
+                         std::to_string(report.iterations)};
   if (custom_stop && options.stop(x, g, gp_norm))
     return MprgpStop{true, "caller's stopping test met, |g_P| = " + format_number(gp_norm)};
   if (!custom_stop && gp_norm <= tolerance)
-    return MprgpStop{true, "|g_P| = " + format_number(gp_norm) + " <= " +
-                               (b_norm > 0.0 ? "rtol |b| = " : "rtol (b = 0) = ") +
-                               format_number(tolerance)};
+    return MprgpStop{true,
+                     "|g_P| = " + format_number(gp_norm) + " <= " + (b_norm > 0.0 ? "rtol |b| = " : "rtol (b = 0) = ") +
+                         format_number(tolerance)};
   if (gp_norm == 0.0)
     return MprgpStop{true, "projected gradient is exactly zero (KKT conditions hold)"};
   if (report.iterations >= options.max_iterations)
-    return MprgpStop{false, "maximum number of iterations (" + std::to_string(options.max_iterations) +
-                                ") reached, |g_P| = " + format_number(gp_norm)};
+    return MprgpStop{false,
+                     "maximum number of iterations (" + std::to_string(options.max_iterations) +
+                         ") reached, |g_P| = " + format_number(gp_norm)};
   return std::nullopt;
 }
 } // namespace
@@ -235,8 +227,7 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
   const auto start_time = std::chrono::steady_clock::now();
   check_input(_A, b, lower, x);
   std::unique_ptr<la::SerialSpace> serial;
-  const la::VectorSpace& space =
-      _A.space() ? *_A.space() : *(serial = std::make_unique<la::SerialSpace>(_A.size()));
+  const la::VectorSpace& space = _A.space() ? *_A.space() : *(serial = std::make_unique<la::SerialSpace>(_A.size()));
   SolveState s(space, b, lower, x);
   auto finish = [&](bool converged, std::string reason) {
     s.report.ritz = s.ritz.longest_run();
@@ -266,8 +257,8 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
     const double gp_norm = std::sqrt(split.free_norm2 + split.chopped_norm2);
     s.report.projected_gradient_norm = gp_norm;
     s.report.cost = cost;
-    const MprgpIterate iterate{s.report.iterations, s.step, gp_norm, std::sqrt(split.free_norm2),
-                               std::sqrt(split.chopped_norm2), cost};
+    const MprgpIterate iterate{
+        s.report.iterations, s.step, gp_norm, std::sqrt(split.free_norm2), std::sqrt(split.chopped_norm2), cost};
     if (_options.monitor)
       _options.monitor(iterate);
     if (log::enabled(log::Level::iterations))
@@ -278,8 +269,8 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x)
 
     const double gamma2 = _options.gamma * _options.gamma;
     const std::optional<std::string> failure = split.chopped_norm2 <= gamma2 * split.reduced_free_dot_free
-                                                   ? cg_or_expansion_step(s, cost)
-                                                   : proportioning_step(s);
+        ? cg_or_expansion_step(s, cost)
+        : proportioning_step(s);
     if (failure)
       return finish(false, *failure);
     ++s.report.iterations;
@@ -295,10 +286,12 @@ std::optional<std::string> Mprgp::estimate_alpha_bar(QpReport& report)
   report.hessian_multiplications += norm.applications;
   if (!std::isfinite(norm.value))
     return "power iteration for ||A|| gave a non-finite Rayleigh quotient "
-           "v'Av = " + format_number(norm.value);
+           "v'Av = " +
+        format_number(norm.value);
   if (!(norm.value > 0.0))
     return "operator is not positive definite: power iteration Rayleigh "
-           "quotient v'Av = " + format_number(norm.value) + " <= 0";
+           "quotient v'Av = " +
+        format_number(norm.value) + " <= 0";
   _alpha_bar = 1.8 / norm.value;
   return std::nullopt;
 }
@@ -331,12 +324,14 @@ std::optional<std::string> Mprgp::cg_or_expansion_step(SolveState& s, double cos
   const Vector& p = s.p;
   const Vector& q = s.q;
   const Vector& g = s.g;
-  const auto [pq, gp] = la::reduce_sum<2>(s.space, [&](Index i, double* sum)
-                                          { sum[0] += p[i] * q[i]; sum[1] += g[i] * p[i]; });
+  const auto [pq, gp] = la::reduce_sum<2>(s.space, [&](Index i, double* sum) {
+    sum[0] += p[i] * q[i];
+    sum[1] += g[i] * p[i];
+  });
   if (!(pq > 0.0))
     return "operator is not positive definite on the search direction: "
-           "p'Ap = " + format_number(pq) + " <= 0 at iteration " +
-           std::to_string(s.report.iterations);
+           "p'Ap = " +
+        format_number(pq) + " <= 0 at iteration " + std::to_string(s.report.iterations);
   const double alpha_cg = gp / pq;
   Index blocking = -1;
   const double alpha_f = feasible_step(s.space, s.x, s.p, s.lower, blocking);
@@ -437,12 +432,14 @@ std::optional<std::string> Mprgp::proportioning_step(SolveState& s) const
   const Vector& beta = s.beta;
   const Vector& q = s.q;
   const Vector& g = s.g;
-  const auto [beta_q, g_beta] = la::reduce_sum<2>(
-      s.space, [&](Index i, double* sum) { sum[0] += beta[i] * q[i]; sum[1] += g[i] * beta[i]; });
+  const auto [beta_q, g_beta] = la::reduce_sum<2>(s.space, [&](Index i, double* sum) {
+    sum[0] += beta[i] * q[i];
+    sum[1] += g[i] * beta[i];
+  });
   if (!(beta_q > 0.0))
     return "operator is not positive definite on the search direction: "
-           "beta'A beta = " + format_number(beta_q) + " <= 0 at iteration " +
-           std::to_string(s.report.iterations);
+           "beta'A beta = " +
+        format_number(beta_q) + " <= 0 at iteration " + std::to_string(s.report.iterations);
   const double alpha = g_beta / beta_q;
   s.x -= alpha * s.beta;
   s.g -= alpha * s.q;

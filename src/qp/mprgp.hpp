@@ -107,8 +107,7 @@ struct MprgpOptions
   /// If set, replaces the default stopping test: the solve stops (converged) as soon as it
   /// returns true for the current x, recursive gradient g and ||g_P||. SMALBE-M uses it for
   /// its inner rule ||g_P|| <= min(M ||G mu||, eta).
-  std::function<bool(const la::Vector& x, const la::Vector& g, double projected_gradient_norm)>
-      stop{};
+  std::function<bool(const la::Vector& x, const la::Vector& g, double projected_gradient_norm)> stop{};
   /// If set, called for the start point and after every step.
   std::function<void(const MprgpIterate&)> monitor{};
   /// Optional preconditioner M ~ A^{-1} (symmetric positive definite), applied in the face:

@@ -10,8 +10,7 @@ namespace feticon::qp
 NormEstimate estimate_norm(const la::LinearOperator& A, int max_iterations, double rtol, unsigned seed)
 {
   const la::VectorSpace* space = A.space();
-  FETICON_CHECK(max_iterations >= 1,
-                "estimate_norm: max_iterations = " << max_iterations << " must be >= 1");
+  FETICON_CHECK(max_iterations >= 1, "estimate_norm: max_iterations = " << max_iterations << " must be >= 1");
   FETICON_CHECK(rtol >= 0.0, "estimate_norm: rtol = " << rtol << " must be >= 0");
   NormEstimate estimate;
   const la::Index n = A.size();
@@ -26,8 +25,8 @@ NormEstimate estimate_norm(const la::LinearOperator& A, int max_iterations, doub
   la::Vector v(n);
   for (la::Index i = 0; i < n; ++i)
   {
-    uint64_t z = (static_cast<uint64_t>(seed) << 40) + static_cast<uint64_t>(space->global_index(i)) +
-                 0x9e3779b97f4a7c15ULL;
+    uint64_t z =
+        (static_cast<uint64_t>(seed) << 40) + static_cast<uint64_t>(space->global_index(i)) + 0x9e3779b97f4a7c15ULL;
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
     z ^= z >> 31;
@@ -41,8 +40,10 @@ NormEstimate estimate_norm(const la::LinearOperator& A, int max_iterations, doub
   {
     A.apply(v, w);
     ++estimate.applications;
-    const auto [vw, ww] = la::reduce_sum<2>(*space, [&](la::Index i, double* s)
-                                            { s[0] += v[i] * w[i]; s[1] += w[i] * w[i]; });
+    const auto [vw, ww] = la::reduce_sum<2>(*space, [&](la::Index i, double* s) {
+      s[0] += v[i] * w[i];
+      s[1] += w[i] * w[i];
+    });
     estimate.value = vw;
     const double w_norm = std::sqrt(ww);
     if (w_norm == 0.0 || !std::isfinite(w_norm))

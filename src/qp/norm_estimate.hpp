@@ -36,6 +36,5 @@ struct NormEstimate
 ///
 /// The start vector is a function of the global index in A's space(), so the result does not
 /// depend on how the entries are distributed over ranks.
-NormEstimate estimate_norm(const la::LinearOperator& A, int max_iterations = 30,
-                           double rtol = 1e-3, unsigned seed = 1);
+NormEstimate estimate_norm(const la::LinearOperator& A, int max_iterations = 30, double rtol = 1e-3, unsigned seed = 1);
 } // namespace feticon::qp

@@ -24,8 +24,7 @@ namespace
 class PlusCoarseTerm : public la::LinearOperator
 {
 public:
-  PlusCoarseTerm(const la::LinearOperator& B, const EqualityOperator& C, double factor)
-      : factor(factor), _B(B), _C(C)
+  PlusCoarseTerm(const la::LinearOperator& B, const EqualityOperator& C, double factor) : factor(factor), _B(B), _C(C)
   {
   }
   la::Index size() const override { return _B.size(); }
@@ -54,9 +53,8 @@ Smalbe::Smalbe(const la::LinearOperator& A, const EqualityOperator& C, SmalbeOpt
 {
   FETICON_CHECK(_options.rho > 0 && _options.M0 > 0 && _options.beta > 1 && _options.rtol > 0,
                 "SMALBE-M: need rho > 0, M0 > 0, beta > 1, rtol > 0");
-  FETICON_CHECK(_options.rho_growth >= 1 && _options.rho_limit >= 1 &&
-                    _options.feasibility_reduction > 0 && _options.feasibility_reduction < 1 &&
-                    _options.feasibility_window >= 1,
+  FETICON_CHECK(_options.rho_growth >= 1 && _options.rho_limit >= 1 && _options.feasibility_reduction > 0 &&
+                    _options.feasibility_reduction < 1 && _options.feasibility_window >= 1,
                 "SMALBE-M: need rho_growth >= 1, rho_limit >= 1, feasibility_reduction in (0, 1), "
                 "feasibility_window >= 1");
 }
@@ -87,8 +85,7 @@ struct Smalbe::SolveState
   std::chrono::steady_clock::time_point last_progress;
 };
 
-SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vector& x,
-                           const SmalbeStart* start)
+SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vector& x, const SmalbeStart* start)
 {
   const auto solve_start = std::chrono::steady_clock::now();
   std::unique_ptr<la::SerialSpace> serial;
@@ -143,8 +140,7 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
   report.final_M = s.M;
   report.final_rho = s.rho;
   report.omega = s.omega;
-  report.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();
   return report;
 }
 
@@ -175,14 +171,13 @@ void Smalbe::set_initial_state(SolveState& s, const la::VectorSpace& space, cons
 bool Smalbe::feasible(const SolveState& s, const la::Vector& Cx) const
 {
   return Cx.norm() <= s.tolerance &&
-         (!_options.equality_error || _options.equality_error(Cx) <= _options.equality_tolerance);
+      (!_options.equality_error || _options.equality_error(Cx) <= _options.equality_tolerance);
 }
 
 void Smalbe::make_inner_solver(SolveState& s) const
 {
   s.inner = _options.mprgp;
-  s.inner.stop = [this, &s](const la::Vector& xk, const la::Vector&, double gp)
-  {
+  s.inner.stop = [this, &s](const la::Vector& xk, const la::Vector&, double gp) {
     const la::Vector Cx = _C.apply(xk);
     const double cx = Cx.norm();
     s.final_test = gp <= s.tolerance && feasible(s, Cx);
@@ -208,8 +203,8 @@ void Smalbe::log_outer_iteration(SolveState& s, int k, const QpReport& r) const
 {
   std::ostringstream line;
   line << "    SMALBE-M outer " << k + 1 << ": MPRGP steps " << r.iterations << ", ||g_P||/||b|| "
-       << r.projected_gradient_norm / s.b_norm << ", ||Cx||/||b|| " << s.report.equality_residual
-       << ", M " << s.M << ", rho " << s.rho;
+       << r.projected_gradient_norm / s.b_norm << ", ||Cx||/||b|| " << s.report.equality_residual << ", M " << s.M
+       << ", rho " << s.rho;
   // Long solves (a minute per QP at 1M DOFs) also report at the summary level, at most
   // every 10 s, so that a user sees progress between the outer-iteration lines.
   if (log::enabled(log::Level::iterations))
@@ -230,25 +225,21 @@ void Smalbe::raise_rho_if_stalled(SolveState& s, int k, double feasibility) cons
     s.reference_feasibility = feasibility;
     s.reference_iteration = k;
   }
-  else if (k - s.reference_iteration >= _options.feasibility_window && s.rho < s.rho_max &&
-           _options.rho_growth > 1)
+  else if (k - s.reference_iteration >= _options.feasibility_window && s.rho < s.rho_max && _options.rho_growth > 1)
   {
     // Observed contraction per outer iteration q ~ 1 - rho s/(h + rho s) (see smalbe.hpp);
     // rho q/(1 - q) would make it 1/2. Grow by at least rho_growth, at most rho_growth^3.
-    const double q = std::pow(feasibility / s.reference_feasibility,
-                              1.0 / (k - s.reference_iteration));
+    const double q = std::pow(feasibility / s.reference_feasibility, 1.0 / (k - s.reference_iteration));
     const double wanted = q < 1 ? q / (1 - q) : std::numeric_limits<double>::infinity();
-    const double growth = std::clamp(wanted, _options.rho_growth,
-                                     std::pow(_options.rho_growth, 3));
+    const double growth = std::clamp(wanted, _options.rho_growth, std::pow(_options.rho_growth, 3));
     const double new_rho = std::min(s.rho * growth, s.rho_max);
     // From the alpha_bar in use (smaller if MPRGP has halved it); MPRGP still halves
     // alpha_bar whenever an expansion step increases the cost.
     MprgpOptions raised = s.inner;
     raised.alpha_bar = raised_alpha_bar(s.mprgp->alpha_bar(), new_rho - s.rho);
-    log::iteration("    SMALBE-M: ||Cx|| stalled at " + std::to_string(feasibility / s.b_norm) +
-                   " ||b|| for " + std::to_string(k - s.reference_iteration) +
-                   " outer iterations: rho " + std::to_string(s.rho) + " -> " +
-                   std::to_string(new_rho));
+    log::iteration("    SMALBE-M: ||Cx|| stalled at " + std::to_string(feasibility / s.b_norm) + " ||b|| for " +
+                   std::to_string(k - s.reference_iteration) + " outer iterations: rho " + std::to_string(s.rho) +
+                   " -> " + std::to_string(new_rho));
     s.rho = new_rho;
     s.H.factor = s.rho;
     s.mprgp = std::make_unique<Mprgp>(s.H, raised);
@@ -265,8 +256,10 @@ double Smalbe::cost_at_initial_rho(SolveState& s, const la::VectorSpace& space, 
   s.H.factor = _options.rho; // the cost is reported for the initial augmentation, as before a raise
   s.H.apply(x, Hx);
   s.report.hessian_multiplications += 1;
-  const auto [xHx, bx] = la::reduce_sum<2>(space, [&](la::Index i, double* sum)
-                                          { sum[0] += x[i] * Hx[i]; sum[1] += b[i] * x[i]; });
+  const auto [xHx, bx] = la::reduce_sum<2>(space, [&](la::Index i, double* sum) {
+    sum[0] += x[i] * Hx[i];
+    sum[1] += b[i] * x[i];
+  });
   return 0.5 * xHx - bx;
 }
 } // namespace feticon::qp

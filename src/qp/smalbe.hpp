@@ -47,21 +47,21 @@ public:
 /// The state after one outer iteration's inner solve, before the updates of omega and M.
 struct SmalbeIterate
 {
-  int outer_iteration = 0;       ///< k, from 0
-  const la::Vector* x = nullptr; ///< the inner solve's result
+  int outer_iteration = 0;           ///< k, from 0
+  const la::Vector* x = nullptr;     ///< the inner solve's result
   const la::Vector* omega = nullptr; ///< the multiplier it used
-  double M = 0;                  ///< the M it used
-  double rho = 0;                ///< the rho it used
-  double lagrangian = 0;         ///< L(x, omega) with the penalty rho
+  double M = 0;                      ///< the M it used
+  double rho = 0;                    ///< the rho it used
+  double lagrangian = 0;             ///< L(x, omega) with the penalty rho
 };
 
 struct SmalbeOptions
 {
-  double rtol = 1e-6;        ///< final test on ||g_P|| and ||Cx||, relative to ||b||
-  double rho = 1.0;          ///< the augmentation in H (multiplier update step)
-  double M0 = 1.0;           ///< initial M (in units where ||H|| ~ max(1, rho))
-  double beta = 2.0;         ///< M <- M / beta when L does not increase enough
-  double eta_factor = 0.1;   ///< eta = eta_factor ||b||
+  double rtol = 1e-6;      ///< final test on ||g_P|| and ||Cx||, relative to ||b||
+  double rho = 1.0;        ///< the augmentation in H (multiplier update step)
+  double M0 = 1.0;         ///< initial M (in units where ||H|| ~ max(1, rho))
+  double beta = 2.0;       ///< M <- M / beta when L does not increase enough
+  double eta_factor = 0.1; ///< eta = eta_factor ||b||
   int max_outer_iterations = 200;
   int max_inner_iterations = 100000; ///< total MPRGP steps over all outer iterations
   /// Smallest factor by which rho grows when the feasibility stalls (at most its cube); 1
@@ -103,8 +103,8 @@ struct SmalbeReport : QpReport
 {
   double equality_residual = 0; ///< ||Cx|| / ||b|| at the end
   double final_M = 0;
-  double final_rho = 0;         ///< rho at the end (the initial rho unless it was raised)
-  la::Vector omega;             ///< multiplier of Cx = 0
+  double final_rho = 0; ///< rho at the end (the initial rho unless it was raised)
+  la::Vector omega;     ///< multiplier of Cx = 0
 };
 
 class Smalbe
@@ -117,8 +117,7 @@ public:
          const la::LinearOperator* preconditioner = nullptr);
   /// @param[in,out] x initial guess on input (projected onto x >= l), solution on output
   /// @param start    omega, M and rho to start from; null: omega = 0, M0 and rho of the options
-  SmalbeReport solve(const la::Vector& b, const la::Vector& lower, la::Vector& x,
-                     const SmalbeStart* start = nullptr);
+  SmalbeReport solve(const la::Vector& b, const la::Vector& lower, la::Vector& x, const SmalbeStart* start = nullptr);
 
 private:
   /// omega, M, rho, H and the inner MPRGP of one solve (smalbe.cpp).

@@ -65,8 +65,7 @@ struct Cantilever
   la::Vector tip_load(double load) const
   {
     la::Vector f = la::Vector::Zero(3 * static_cast<la::Index>(mesh.n_nodes()));
-    fem::add_face_traction(mesh, mesh.face_set("xmax"),
-                           Eigen::Vector3d(0, 0, load / (width * depth)), f);
+    fem::add_face_traction(mesh, mesh.face_set("xmax"), Eigen::Vector3d(0, 0, load / (width * depth)), f);
     return f;
   }
 
@@ -86,8 +85,7 @@ struct Cantilever
     Eigen::Vector3d chord = Eigen::Vector3d::Zero();
     for (const int32_t node : mesh.node_set("xmax"))
     {
-      const Eigen::Vector3d x = mesh.nodes.row(node).transpose() +
-                                u.segment<3>(3 * static_cast<la::Index>(node));
+      const Eigen::Vector3d x = mesh.nodes.row(node).transpose() + u.segment<3>(3 * static_cast<la::Index>(node));
       if (mesh.nodes(node, 2) > (1 - 1e-12) * depth)
         chord += x;
       else if (mesh.nodes(node, 2) < 1e-12 * depth)
@@ -97,8 +95,7 @@ struct Cantilever
   }
 
   /// Solves for the tip load P with the given kinematics; returns the displacement.
-  la::Vector solve(double load, fem::Kinematics kinematics, int load_steps,
-                   nonlinear::DirectNewtonReport& report) const
+  la::Vector solve(double load, fem::Kinematics kinematics, int load_steps, nonlinear::DirectNewtonReport& report) const
   {
     const fem::Assembler assembler(mesh, fem::whole_mesh_domain(mesh), {material}, kinematics);
     la::Vector u = la::Vector::Zero(3 * static_cast<la::Index>(mesh.n_nodes()));
@@ -130,8 +127,8 @@ TEST(Cantilever, SmallDeflectionMatchesBeamTheory)
 {
   const double length_to_depth = 10;
   const double load = 1.0e4; // N; linear kinematics, so the size only scales the answer
-  std::printf("\n%6s %10s %8s %14s %14s %10s %9s\n", "n_h", "cells", "DOFs", "w_tip (m)",
-              "w_Timoshenko", "rel. err.", "time (s)");
+  std::printf("\n%6s %10s %8s %14s %14s %10s %9s\n", "n_h", "cells", "DOFs", "w_tip (m)", "w_Timoshenko", "rel. err.",
+              "time (s)");
   std::vector<double> errors;
   for (const int n_depth : {2, 4, 8})
   {
@@ -144,8 +141,7 @@ TEST(Cantilever, SmallDeflectionMatchesBeamTheory)
     const double G = E / (2 * (1 + beam.material.poisson));
     const double area = beam.width * beam.depth;
     const double L = beam.length;
-    const double reference = load * L * L * L / (3 * beam.bending_stiffness()) +
-                             load * L / (5.0 / 6.0 * G * area);
+    const double reference = load * L * L * L / (3 * beam.bending_stiffness()) + load * L / (5.0 / 6.0 * G * area);
     const double w_tip = beam.tip_displacement(u).z();
     const double error = (w_tip - reference) / reference;
     errors.push_back(std::abs(error));
@@ -177,10 +173,9 @@ TEST(Cantilever, LargeDeflectionMatchesMattiasson)
   const double load_parameter = 2.0; // P L^2 / (E I)
   const double w_reference = 0.49346, u_reference = 0.16064, rotation_reference = 0.78175;
   const int load_steps = 10;
-  std::printf("\nP L^2/(E I) = %.1f, L/h = %.0f, nu = 0, %d load steps\n", load_parameter,
-              length_to_depth, load_steps);
-  std::printf("%6s %8s %8s %9s %9s %9s %9s %9s %9s %6s %9s\n", "n_h", "cells", "DOFs", "w/L",
-              "err w", "u/L", "err u", "rot", "err rot", "iter", "time (s)");
+  std::printf("\nP L^2/(E I) = %.1f, L/h = %.0f, nu = 0, %d load steps\n", load_parameter, length_to_depth, load_steps);
+  std::printf("%6s %8s %8s %9s %9s %9s %9s %9s %9s %6s %9s\n", "n_h", "cells", "DOFs", "w/L", "err w", "u/L", "err u",
+              "rot", "err rot", "iter", "time (s)");
   double w_error = 0, u_error = 0;
   for (const int n_depth : {4, 8})
   {
@@ -204,9 +199,9 @@ TEST(Cantilever, LargeDeflectionMatchesMattiasson)
     w_error = (w - w_reference) / w_reference;
     u_error = (shortening - u_reference) / u_reference;
     const double rotation_error = (rotation - rotation_reference) / rotation_reference;
-    std::printf("%6d %8d %8ld %9.5f %+9.4f %9.5f %+9.4f %9.5f %+9.4f %6d %9.3f\n", n_depth,
-                beam.mesh.n_cells(), static_cast<long>(u.size()), w, w_error, shortening,
-                u_error, rotation, rotation_error, iterations, seconds_since(start));
+    std::printf("%6d %8d %8ld %9.5f %+9.4f %9.5f %+9.4f %9.5f %+9.4f %6d %9.3f\n", n_depth, beam.mesh.n_cells(),
+                static_cast<long>(u.size()), w, w_error, shortening, u_error, rotation, rotation_error, iterations,
+                seconds_since(start));
   }
   EXPECT_LT(std::abs(w_error), 0.02);
   EXPECT_LT(std::abs(u_error), 0.02);
@@ -218,7 +213,7 @@ TEST(Cantilever, LargeDeflectionMatchesMattiasson)
   const la::Vector u_linear = beam.solve(load, fem::Kinematics::linear, 1, report);
   const Eigen::Vector3d tip_linear = beam.tip_displacement(u_linear);
   const double w_linear_error = (tip_linear.z() / beam.length - w_reference) / w_reference;
-  std::printf("linear kinematics, n_h = 8: w/L = %.5f (err %+.4f), u_x/L = %.1e\n",
-              tip_linear.z() / beam.length, w_linear_error, tip_linear.x() / beam.length);
+  std::printf("linear kinematics, n_h = 8: w/L = %.5f (err %+.4f), u_x/L = %.1e\n", tip_linear.z() / beam.length,
+              w_linear_error, tip_linear.x() / beam.length);
   EXPECT_GT(std::abs(w_linear_error), 0.2);
 }

@@ -40,8 +40,8 @@ TEST(ConstraintScaling, SameContactSolutionInFewerStepsOnNonMatchingMeshes)
   const nonlinear::ContactSolution plain = solve_blocks(false, plain_steps);
   const nonlinear::ContactSolution scaled = solve_blocks(true, scaled_steps);
   const double difference = (scaled.u - plain.u).norm() / plain.u.norm();
-  std::printf("MPRGP steps: B S B' %d, (BB')^-1 B S B' (BB')^-1 %d; |u_Y - u|/|u| = %.1e\n",
-              plain_steps, scaled_steps, difference);
+  std::printf("MPRGP steps: B S B' %d, (BB')^-1 B S B' (BB')^-1 %d; |u_Y - u|/|u| = %.1e\n", plain_steps, scaled_steps,
+              difference);
   EXPECT_LT(difference, 1e-6);
   EXPECT_LT(scaled_steps, plain_steps);
 }

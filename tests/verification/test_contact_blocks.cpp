@@ -23,8 +23,8 @@ nonlinear::SolverSettings settings(dual::DualMethod method, int subdomains)
   nonlinear::SolverSettings s;
   s.kinematics = fem::Kinematics::linear;
   s.dual.preconditioner = dual::DualPreconditioner::none;
-  s.method = method == dual::DualMethod::smalbe ? nonlinear::ContactMethod::smalbe
-                                                : nonlinear::ContactMethod::dual_penalty;
+  s.method =
+      method == dual::DualMethod::smalbe ? nonlinear::ContactMethod::smalbe : nonlinear::ContactMethod::dual_penalty;
   s.dual.method = method;
   s.dual.rtol = 1e-10;
   s.subdomains = subdomains;
@@ -106,8 +106,8 @@ TEST(ContactBlocks, DualSolutionSatisfiesKktConditions)
                                         decomposition::GeneralizedInverseMethod::fixing_dofs);
   system.update(la::Vector::Zero(decomp.n_primal()));
   const auto equality = decomposition::build_equality_rows(decomp, problem.all_constrained_dofs());
-  const auto contact = contact::build_contact_constraints(
-      problem.mesh, {}, {problem.contacts[0].slave, problem.contacts[0].master});
+  const auto contact =
+      contact::build_contact_constraints(problem.mesh, {}, {problem.contacts[0].slave, problem.contacts[0].master});
   decomposition::ConstraintRows rows = equality.rows;
   rows.append(decomposition::rows_from_global(decomp, contact.B, contact.c), equality.n_global());
   const dual::FetiOperators feti(system, rows);
@@ -138,15 +138,17 @@ TEST(ContactBlocks, DualSolutionSatisfiesKktConditions)
   const la::Vector rhs = f - feti.apply_Bt(solution.lambda);
   double residual = 0;
   for (int32_t s = 0; s < decomp.n_subdomains(); ++s)
-    residual += (system.operators(s).K.selfadjointView<Eigen::Lower>() * decomp.segment(solution.u, s) - decomp.segment(rhs, s)).squaredNorm();
+    residual +=
+        (system.operators(s).K.selfadjointView<Eigen::Lower>() * decomp.segment(solution.u, s) - decomp.segment(rhs, s))
+            .squaredNorm();
   EXPECT_LT(std::sqrt(residual), 1e-7 * f.norm());
   EXPECT_LT(solution.feasibility_error, 1e-8);
   EXPECT_GT(solution.active_contacts, 0);
   std::printf("KKT: min lambda %.1e, min gap %.1e, complementarity %.1e, equilibrium %.1e, "
               "MPRGP %d steps, %d products, %d SMALBE-M outer\n",
               min_lambda / lambda_scale, min_gap / u_scale, complementarity / (lambda_scale * u_scale),
-              std::sqrt(residual) / f.norm(), solution.report.iterations,
-              solution.report.hessian_multiplications, solution.report.outer_iterations);
+              std::sqrt(residual) / f.norm(), solution.report.iterations, solution.report.hessian_multiplications,
+              solution.report.outer_iterations);
 }
 
 // Reference: an independent direct CHOLMOD solve of each block without contact. The upper
@@ -166,8 +168,8 @@ TEST(ContactBlocks, SeparatedBodiesCarryNoContactForce)
 
   fem::Assembler assembler(problem.mesh, fem::whole_mesh_domain(problem.mesh), problem.materials,
                            fem::Kinematics::linear);
-  const la::SparseMatrix K = assembler.stiffness(la::Vector::Zero(3 * problem.mesh.n_nodes()),
-                                                 fem::StiffnessKind::tangent);
+  const la::SparseMatrix K =
+      assembler.stiffness(la::Vector::Zero(3 * problem.mesh.n_nodes()), fem::StiffnessKind::tangent);
   const fem::DirichletElimination elim(K.rows(), problem.all_constrained_dofs());
   la::CholmodFactor factor;
   factor.factorize(elim.reduce_matrix(K));

@@ -62,8 +62,8 @@ TEST(ExplicitDualOperators, SameSolutionAsImplicit)
     EXPECT_EQ(explicit_.solution.dual_operator, "explicit");
     const double du = (explicit_.solution.u - implicit.solution.u).norm() / implicit.solution.u.norm();
     std::printf("%s: MPRGP %d implicit, %d explicit; |du|/|u| = %.1e, peak %.10g / %.10g\n",
-                kinematics == fem::Kinematics::linear ? "small" : "large", implicit.mprgp, explicit_.mprgp,
-                du, implicit.peak, explicit_.peak);
+                kinematics == fem::Kinematics::linear ? "small" : "large", implicit.mprgp, explicit_.mprgp, du,
+                implicit.peak, explicit_.peak);
     EXPECT_LE(std::abs(explicit_.mprgp - implicit.mprgp), 0.01 * implicit.mprgp);
     EXPECT_LT(du, 1e-8);
     EXPECT_NEAR(explicit_.peak, implicit.peak, 1e-8 * implicit.peak);
@@ -130,8 +130,8 @@ TEST(ExplicitDualOperators, RestartKeepsTheGrownBoundary)
   s.dual.preconditioner = dual::DualPreconditioner::dirichlet;
   nonlinear::ContactSolution after_step_1;
   TimerTable timers;
-  const nonlinear::ContactSolution full = nonlinear::solve_feti_contact(
-      problem, s, timers, [&](int step, const nonlinear::ContactSolution& so_far) {
+  const nonlinear::ContactSolution full =
+      nonlinear::solve_feti_contact(problem, s, timers, [&](int step, const nonlinear::ContactSolution& so_far) {
         if (step == 1)
           after_step_1 = so_far;
       });

@@ -51,10 +51,8 @@ BeamProblem beam(int nx, int ny, int nz, Eigen::Vector3d lengths)
 /// Reference: direct solve of the undecomposed problem with Dirichlet elimination.
 la::Vector direct_solution(const BeamProblem& p)
 {
-  fem::Assembler assembler(p.mesh, fem::whole_mesh_domain(p.mesh), {p.material},
-                           fem::Kinematics::linear);
-  const la::SparseMatrix K = assembler.stiffness(la::Vector::Zero(p.f.size()),
-                                                 fem::StiffnessKind::tangent);
+  fem::Assembler assembler(p.mesh, fem::whole_mesh_domain(p.mesh), {p.material}, fem::Kinematics::linear);
+  const la::SparseMatrix K = assembler.stiffness(la::Vector::Zero(p.f.size()), fem::StiffnessKind::tangent);
   const fem::DirichletElimination elim(p.f.size(), p.dirichlet);
   la::CholmodFactor factor;
   factor.factorize(elim.reduce_matrix(K));
@@ -68,9 +66,9 @@ struct FetiRun
   qp::QpReport report;
 };
 
-FetiRun feti_solution(const BeamProblem& p, const decomposition::Partition& partition,
-                      double rtol, decomposition::GeneralizedInverseMethod method =
-                                       decomposition::GeneralizedInverseMethod::fixing_dofs)
+FetiRun feti_solution(
+    const BeamProblem& p, const decomposition::Partition& partition, double rtol,
+    decomposition::GeneralizedInverseMethod method = decomposition::GeneralizedInverseMethod::fixing_dofs)
 {
   const decomposition::Decomposition decomp(p.mesh, partition);
   decomposition::SubdomainSystem system(decomp, {p.material}, fem::Kinematics::linear, method);
@@ -79,8 +77,7 @@ FetiRun feti_solution(const BeamProblem& p, const decomposition::Partition& part
   const dual::FetiOperators feti(system, rows.rows);
   qp::CgOptions options;
   options.rtol = rtol;
-  const auto solution = dual::solve_equality_feti(feti, rows.rows.c_vector(),
-                                                  decomp.scatter_split(p.f), options);
+  const auto solution = dual::solve_equality_feti(feti, rows.rows.c_vector(), decomp.scatter_split(p.f), options);
   EXPECT_TRUE(solution.report.converged) << solution.report.reason;
   const la::Vector Bu = feti.apply_B(solution.u) - rows.rows.c_vector();
   return {decomp.gather_mean(solution.u), Bu.norm() / solution.u.norm(), solution.report};
@@ -131,14 +128,14 @@ TEST(FetiLinear, MatchesDirectSolveStructuredAndMetis)
 TEST(FetiLinear, NumericalScalabilityWithFixedHOverSmallH)
 {
   std::vector<int> plain_iterations, lumped_iterations;
-  std::printf("\n%6s %11s %10s %9s %14s %11s %14s\n", "1/h", "subdomains", "dual size",
-              "CG iter", "CG s/iter", "PCG iter", "PCG s/iter");
+  std::printf("\n%6s %11s %10s %9s %14s %11s %14s\n", "1/h", "subdomains", "dual size", "CG iter", "CG s/iter",
+              "PCG iter", "PCG s/iter");
   for (int n : {8, 16, 32})
   {
     const BeamProblem p = beam(n, n, n, Eigen::Vector3d(1, 1, 1));
     const int parts = n / 4;
-    const decomposition::Decomposition decomp(
-        p.mesh, decomposition::partition_structured(p.mesh, {parts, parts, parts}));
+    const decomposition::Decomposition decomp(p.mesh,
+                                              decomposition::partition_structured(p.mesh, {parts, parts, parts}));
     decomposition::SubdomainSystem system(decomp, {p.material}, fem::Kinematics::linear,
                                           decomposition::GeneralizedInverseMethod::fixing_dofs);
     system.update(la::Vector::Zero(decomp.n_primal()));
@@ -151,18 +148,16 @@ TEST(FetiLinear, NumericalScalabilityWithFixedHOverSmallH)
     for (int k = 0; k < 2; ++k)
     {
       const auto start = std::chrono::steady_clock::now();
-      reports[k] = dual::solve_equality_feti(
-                       feti, rows.rows.c_vector(), decomp.scatter_split(p.f), options,
-                       k == 0 ? dual::FetiPreconditioner::none : dual::FetiPreconditioner::lumped)
+      reports[k] = dual::solve_equality_feti(feti, rows.rows.c_vector(), decomp.scatter_split(p.f), options,
+                                             k == 0 ? dual::FetiPreconditioner::none : dual::FetiPreconditioner::lumped)
                        .report;
       seconds[k] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       ASSERT_TRUE(reports[k].converged) << reports[k].reason;
     }
     plain_iterations.push_back(reports[0].iterations);
     lumped_iterations.push_back(reports[1].iterations);
-    std::printf("%6d %11d %10ld %9d %14.2e %11d %14.2e\n", n, decomp.n_subdomains(),
-                static_cast<long>(feti.n_dual()), reports[0].iterations,
-                seconds[0] / reports[0].iterations, reports[1].iterations,
+    std::printf("%6d %11d %10ld %9d %14.2e %11d %14.2e\n", n, decomp.n_subdomains(), static_cast<long>(feti.n_dual()),
+                reports[0].iterations, seconds[0] / reports[0].iterations, reports[1].iterations,
                 seconds[1] / reports[1].iterations);
   }
   EXPECT_LT(lumped_iterations.back(), 1.2 * lumped_iterations.front());
@@ -183,16 +178,15 @@ TEST(FetiLinear, DirichletPreconditionerGrowsLogarithmicallyInHOverSmallH)
   std::vector<char> supported(3 * static_cast<size_t>(p.mesh.n_nodes()), 0);
   for (int64_t dof : p.dirichlet.dofs)
     supported[dof] = 1;
-  const dual::FetiPreconditioner kinds[] = {dual::FetiPreconditioner::none,
-                                            dual::FetiPreconditioner::lumped,
+  const dual::FetiPreconditioner kinds[] = {dual::FetiPreconditioner::none, dual::FetiPreconditioner::lumped,
                                             dual::FetiPreconditioner::dirichlet};
   std::map<dual::FetiPreconditioner, std::vector<int>> iterations;
-  std::printf("\n%6s %11s %9s %11s %14s %14s\n", "H/h", "subdomains", "CG iter", "lumped iter",
-              "Dirichlet iter", "|u-u_direct|");
+  std::printf("\n%6s %11s %9s %11s %14s %14s\n", "H/h", "subdomains", "CG iter", "lumped iter", "Dirichlet iter",
+              "|u-u_direct|");
   for (int parts : {8, 4, 2})
   {
-    const decomposition::Decomposition decomp(
-        p.mesh, decomposition::partition_structured(p.mesh, {parts, parts, parts}));
+    const decomposition::Decomposition decomp(p.mesh,
+                                              decomposition::partition_structured(p.mesh, {parts, parts, parts}));
     decomposition::SubdomainSystem system(decomp, {p.material}, fem::Kinematics::linear,
                                           decomposition::GeneralizedInverseMethod::fixing_dofs);
     system.update(la::Vector::Zero(decomp.n_primal()));
@@ -204,16 +198,15 @@ TEST(FetiLinear, DirichletPreconditionerGrowsLogarithmicallyInHOverSmallH)
     double error = 0.0;
     for (dual::FetiPreconditioner kind : kinds)
     {
-      const auto solution = dual::solve_equality_feti(feti, rows.rows.c_vector(),
-                                                      decomp.scatter_split(p.f), options, kind, &schur);
+      const auto solution =
+          dual::solve_equality_feti(feti, rows.rows.c_vector(), decomp.scatter_split(p.f), options, kind, &schur);
       ASSERT_TRUE(solution.report.converged) << solution.report.reason;
       iterations[kind].push_back(solution.report.iterations);
       if (kind == dual::FetiPreconditioner::dirichlet)
         error = (decomp.gather_mean(solution.u) - u_ref).norm() / u_ref.norm();
     }
-    std::printf("%6d %11d %9d %11d %14d %14.2e\n", n / parts, decomp.n_subdomains(),
-                iterations[kinds[0]].back(), iterations[kinds[1]].back(),
-                iterations[kinds[2]].back(), error);
+    std::printf("%6d %11d %9d %11d %14d %14.2e\n", n / parts, decomp.n_subdomains(), iterations[kinds[0]].back(),
+                iterations[kinds[1]].back(), iterations[kinds[2]].back(), error);
     EXPECT_LT(error, 1e-8);
   }
   const auto& plain = iterations[dual::FetiPreconditioner::none];

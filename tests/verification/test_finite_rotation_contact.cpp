@@ -77,8 +77,7 @@ TEST(FiniteRotationContact, FetiMatchesUndecomposedPenaltyAndLinearKinematicsFai
       problem, settings(fem::Kinematics::total_lagrangian, nonlinear::ContactMethod::smalbe), timers);
   ASSERT_TRUE(feti.converged) << feti.reason;
   const auto penalty = nonlinear::solve_primal_penalty(
-      problem, settings(fem::Kinematics::total_lagrangian, nonlinear::ContactMethod::primal_penalty),
-      timers);
+      problem, settings(fem::Kinematics::total_lagrangian, nonlinear::ContactMethod::primal_penalty), timers);
   ASSERT_TRUE(penalty.converged) << penalty.reason;
   const auto linear = nonlinear::solve_feti_contact(
       problem, settings(fem::Kinematics::linear, nonlinear::ContactMethod::smalbe), timers);

@@ -40,8 +40,8 @@ HertzRun run_hertz(double refinement, dual::DualMethod method, double rho,
   parameters.mesh.refinement = refinement;
   nonlinear::SolverSettings s;
   s.kinematics = fem::Kinematics::linear;
-  s.method = method == dual::DualMethod::smalbe ? nonlinear::ContactMethod::smalbe
-                                                : nonlinear::ContactMethod::dual_penalty;
+  s.method =
+      method == dual::DualMethod::smalbe ? nonlinear::ContactMethod::smalbe : nonlinear::ContactMethod::dual_penalty;
   s.dual.method = method;
   s.dual.rho = rho;
   s.subdomains = static_cast<int>(8 * refinement);
@@ -81,9 +81,9 @@ TEST(HertzBenchmark, SmallDisplacementsAgainstMcEwenAtTwoRefinements)
     const double peak_error = h.p_peak_computed / h.p0_analytic - 1;
     std::printf("refinement %.0f: p_peak %.1f MPa (p0 %.1f, %+.2f%%), a %.2f mm (analytic %.2f, "
                 "element %.2f mm), RMS %.2f%% of p0, force/load - 1 = %.1e, MPRGP %d\n",
-                refinement, h.p_peak_computed / 1e6, h.p0_analytic / 1e6, 100 * peak_error,
-                1e3 * h.a_computed, 1e3 * h.a_analytic, 1e3 * h.element_size,
-                100 * h.rms_error_over_p0, r.force / h.applied_load - 1, r.mprgp);
+                refinement, h.p_peak_computed / 1e6, h.p0_analytic / 1e6, 100 * peak_error, 1e3 * h.a_computed,
+                1e3 * h.a_analytic, 1e3 * h.element_size, 100 * h.rms_error_over_p0, r.force / h.applied_load - 1,
+                r.mprgp);
     EXPECT_LT(std::abs(peak_error), 0.03);
     EXPECT_LE(std::abs(h.a_computed - h.a_analytic), h.element_size);
     EXPECT_LT(h.rms_error_over_p0, 0.03);
@@ -97,18 +97,17 @@ TEST(HertzBenchmark, DissimilarBlockAgainstMcEwenWithTheContactModulusOfBoth)
   // solution holds with 1/E* = (1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2 (Johnson 1985, eq. 4.22).
   // Bounds as for one material at refinement 2; steel-on-steel E* puts p0 38 % higher and a
   // 27 % lower, which they reject.
-  const HertzRun r = run_hertz(2.0, dual::DualMethod::smalbe, 1.0,
-                               [](problems::HertzParameters& p, nonlinear::SolverSettings& s)
-                               {
-                                 p.block_material = fem::Material{7.0e10, 0.33};
-                                 s.dual.preconditioner = dual::DualPreconditioner::dirichlet;
-                               });
+  const HertzRun r =
+      run_hertz(2.0, dual::DualMethod::smalbe, 1.0, [](problems::HertzParameters& p, nonlinear::SolverSettings& s) {
+        p.block_material = fem::Material{7.0e10, 0.33};
+        s.dual.preconditioner = dual::DualPreconditioner::dirichlet;
+      });
   const auto& h = r.hertz;
   const problems::HertzAnalytic steel = problems::hertz_analytic({});
   std::printf("aluminium block: p0 %.1f MPa (steel on steel %.1f), p_peak %+.2f%%, a %.2f mm (analytic %.2f), "
-              "RMS %.2f%% of p0\n", h.p0_analytic / 1e6, steel.peak_pressure / 1e6,
-              100 * (h.p_peak_computed / h.p0_analytic - 1), 1e3 * h.a_computed, 1e3 * h.a_analytic,
-              100 * h.rms_error_over_p0);
+              "RMS %.2f%% of p0\n",
+              h.p0_analytic / 1e6, steel.peak_pressure / 1e6, 100 * (h.p_peak_computed / h.p0_analytic - 1),
+              1e3 * h.a_computed, 1e3 * h.a_analytic, 100 * h.rms_error_over_p0);
   EXPECT_GT(steel.peak_pressure / h.p0_analytic, 1.2);
   EXPECT_LT(std::abs(h.p_peak_computed / h.p0_analytic - 1), 0.03);
   EXPECT_LE(std::abs(h.a_computed - h.a_analytic), h.element_size);
@@ -126,8 +125,7 @@ TEST(HertzBenchmark, DirichletPreconditionerGivesTheSameSolutionInFewerSteps)
   const HertzRun plain = run_hertz(1.0, dual::DualMethod::smalbe, 1.0);
   const HertzRun dirichlet = run_hertz(1.0, dual::DualMethod::smalbe, 1.0, with_dirichlet);
   const double difference = (dirichlet.u - plain.u).norm() / plain.u.norm();
-  std::printf("MPRGP steps: none %d, Dirichlet %d; |u_D - u|/|u| = %.1e\n", plain.mprgp,
-              dirichlet.mprgp, difference);
+  std::printf("MPRGP steps: none %d, Dirichlet %d; |u_D - u|/|u| = %.1e\n", plain.mprgp, dirichlet.mprgp, difference);
   EXPECT_LT(difference, 1e-6);
   EXPECT_LT(dirichlet.mprgp, plain.mprgp);
   EXPECT_NEAR(dirichlet.force, dirichlet.hertz.applied_load, 1e-6 * dirichlet.hertz.applied_load);
@@ -145,12 +143,11 @@ TEST(HertzBenchmark, DirichletPreconditionerGivesTheSameSolutionInFewerSteps)
 TEST(HertzBenchmark, DirichletSpectrumOnTheSolutionFace)
 {
   const HertzRun plain = run_hertz(1.0, dual::DualMethod::smalbe, 1.0, with_dirichlet);
-  const HertzRun measured = run_hertz(1.0, dual::DualMethod::smalbe, 1.0,
-                                      [](problems::HertzParameters& p, nonlinear::SolverSettings& s)
-                                      {
-                                        with_dirichlet(p, s);
-                                        s.dual.spectrum_steps = 300;
-                                      });
+  const HertzRun measured =
+      run_hertz(1.0, dual::DualMethod::smalbe, 1.0, [](problems::HertzParameters& p, nonlinear::SolverSettings& s) {
+        with_dirichlet(p, s);
+        s.dual.spectrum_steps = 300;
+      });
   const qp::RitzValues& face = measured.qp.solution_face;
   std::printf("solution face: Ritz values [%.4f, %.2f] after %d CG steps (qp.rtol met at %d); MPRGP's longest run "
               "[%.4f, %.2f] (%d steps)\n",
@@ -173,9 +170,8 @@ TEST(HertzBenchmark, DualPenaltyFeasibilityFallsLikeOneOverRho)
   for (double rho : rhos)
   {
     runs.push_back(run_hertz(1.0, dual::DualMethod::dual_penalty, rho));
-    std::printf("rho %6g: ||G lambda - e||/||e|| %.2e, p_peak/p0 %.4f, MPRGP %d\n", rho,
-                runs.back().feasibility, runs.back().hertz.p_peak_computed / runs.back().hertz.p0_analytic,
-                runs.back().mprgp);
+    std::printf("rho %6g: ||G lambda - e||/||e|| %.2e, p_peak/p0 %.4f, MPRGP %d\n", rho, runs.back().feasibility,
+                runs.back().hertz.p_peak_computed / runs.back().hertz.p0_analytic, runs.back().mprgp);
   }
   // The bound C/rho describes the regime of small feasibility errors: from rho = 1, where the
   // error is 5.4 times ||e|| on the graded mesh (ratio 7.7 to rho = 10), the first decade is
@@ -210,8 +206,7 @@ TEST(HertzBenchmark, PrimalPenaltyApproachesTheExactSolutionLikeOneOverEps)
   problems::HertzParameters parameters;
   parameters.mesh.refinement = 0.5;
   const fem::Problem problem = problems::hertz_problem(parameters);
-  auto pressures = [&](nonlinear::ContactMethod method, double eps)
-  {
+  auto pressures = [&](nonlinear::ContactMethod method, double eps) {
     nonlinear::SolverSettings s;
     s.kinematics = fem::Kinematics::linear;
     s.dual.preconditioner = dual::DualPreconditioner::none;
@@ -220,8 +215,8 @@ TEST(HertzBenchmark, PrimalPenaltyApproachesTheExactSolutionLikeOneOverEps)
     s.subdomains = 4;
     TimerTable timers;
     const auto solution = method == nonlinear::ContactMethod::primal_penalty
-                              ? nonlinear::solve_primal_penalty(problem, s, timers)
-                              : nonlinear::solve_feti_contact(problem, s, timers);
+        ? nonlinear::solve_primal_penalty(problem, s, timers)
+        : nonlinear::solve_feti_contact(problem, s, timers);
     EXPECT_TRUE(solution.converged) << solution.reason;
     std::vector<double> p;
     for (const auto& sample : nonlinear::slave_pressure_by_x(problem, solution, fem::Kinematics::linear))

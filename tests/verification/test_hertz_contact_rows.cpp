@@ -64,8 +64,7 @@ la::Index row_of(const ContactConstraints& rows, int32_t s)
 /// minimum taken in the same order). A node without any accepted projection may only have a rim
 /// row: its projection on the row's face lies just outside, within the rim extension.
 /// Returns the number of rim rows.
-int expect_same_as_brute_force(const mesh::HexMesh& mesh, const la::Vector& u,
-                               const ContactConstraints& rows)
+int expect_same_as_brute_force(const mesh::HexMesh& mesh, const la::Vector& u, const ContactConstraints& rows)
 {
   int n_rim = 0;
   const std::vector<mesh::Face>& faces = mesh.face_set(hertz_pair.master);
@@ -82,8 +81,7 @@ int expect_same_as_brute_force(const mesh::HexMesh& mesh, const la::Vector& u,
       Eigen::Vector3d x_s = mesh.nodes.row(s).transpose();
       if (u.size() > 0)
         x_s += u.segment<3>(3 * s);
-      const QuadProjection p =
-          project_to_quad(current_face_coordinates(mesh, u, faces[rows.master_face[row]]), x_s);
+      const QuadProjection p = project_to_quad(current_face_coordinates(mesh, u, faces[rows.master_face[row]]), x_s);
       EXPECT_FALSE(p.inside) << "node " << s;
       EXPECT_LE(p.xi.lpNorm<Eigen::Infinity>(), 1 + ContactOptions{}.rim_extension);
       EXPECT_EQ(rows.xi[row], p.xi) << "node " << s;
@@ -111,8 +109,8 @@ TEST(HertzContact, GapsEqualAnalyticArcAndBruteForce)
   ASSERT_EQ(rows.n_slave_nodes, static_cast<int32_t>(slave_nodes.size()));
   EXPECT_EQ(rows.n_overhanging, 0);
   std::cout << "Hertz (refinement 1): " << slave_nodes.size() << " slave nodes, "
-            << mesh.face_set(hertz_pair.master).size() << " master faces, d_s = "
-            << rows.search_distance << " m, " << rows.n_rows() << " rows\n";
+            << mesh.face_set(hertz_pair.master).size() << " master faces, d_s = " << rows.search_distance << " m, "
+            << rows.n_rows() << " rows\n";
 
   EXPECT_EQ(expect_same_as_brute_force(mesh, la::Vector(), rows), 0);
   int n_near = 0;
@@ -143,20 +141,18 @@ TEST(HertzContact, SearchTimeAtRefinement4)
   const mesh::HexMesh mesh = problems::generate_hertz(parameters);
   const auto start = std::chrono::steady_clock::now();
   const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), hertz_pair);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   // Brute force on the same mesh: the reference for the rows, and timed for comparison.
   const auto brute_start = std::chrono::steady_clock::now();
   EXPECT_EQ(expect_same_as_brute_force(mesh, la::Vector(), rows), 0);
-  const double brute_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - brute_start).count();
+  const double brute_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - brute_start).count();
   EXPECT_EQ(rows.n_overhanging, 0);
 
   std::cout << "Hertz (refinement 4): " << rows.n_slave_nodes << " slave nodes, "
-            << mesh.face_set(hertz_pair.master).size() << " master faces, d_s = "
-            << rows.search_distance << " m, " << rows.n_rows() << " rows; build " << seconds * 1e3
-            << " ms, brute-force check " << brute_seconds * 1e3 << " ms\n";
+            << mesh.face_set(hertz_pair.master).size() << " master faces, d_s = " << rows.search_distance << " m, "
+            << rows.n_rows() << " rows; build " << seconds * 1e3 << " ms, brute-force check " << brute_seconds * 1e3
+            << " ms\n";
 }
 
 TEST(HertzContact, DeformedConfigurationMatchesBruteForce)
@@ -209,16 +205,13 @@ TEST(HertzContact, MortarRowsAndTiming)
     problems::HertzMeshParameters parameters;
     parameters.refinement = refinement;
     const mesh::HexMesh mesh = problems::generate_hertz(parameters);
-    auto time = [&](const ContactOptions& options, ContactConstraints& rows)
-    {
+    auto time = [&](const ContactOptions& options, ContactConstraints& rows) {
       double best = 1e300;
       for (int repeat = 0; repeat < 3; ++repeat)
       {
         const auto start = std::chrono::steady_clock::now();
         rows = build_contact_constraints(mesh, la::Vector(), hertz_pair, options);
-        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                                            start)
-                                  .count());
+        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       }
       return best;
     };
@@ -228,8 +221,7 @@ TEST(HertzContact, MortarRowsAndTiming)
     ContactConstraints mortar;
     const double nts_seconds = time({}, nts);
     const double mortar_seconds = time(mortar_options, mortar);
-    const MortarCoupling coupling =
-        compute_mortar_coupling(mesh, la::Vector(), hertz_pair, mortar.search_distance);
+    const MortarCoupling coupling = compute_mortar_coupling(mesh, la::Vector(), hertz_pair, mortar.search_distance);
 
     ASSERT_EQ(mortar.slave_node, nts.slave_node);
     EXPECT_EQ(mortar.n_overhanging, 0);
@@ -245,12 +237,10 @@ TEST(HertzContact, MortarRowsAndTiming)
       EXPECT_NEAR(coupling.M.row(j).sum() / coupling.slave.area(j), 1.0, 1e-12);
     }
     expect_rows_annihilate_translations(mortar, mesh.n_nodes());
-    std::cout << "Hertz (refinement " << refinement << "): "
-              << mesh.face_set(hertz_pair.slave).size() << " slave faces, "
-              << mesh.face_set(hertz_pair.master).size() << " master faces, "
-              << coupling.n_segments << " segments, " << mortar.n_rows() << " rows, "
-              << mortar.B.nonZeros() << " nonzeros (node-to-segment " << nts.B.nonZeros()
-              << "); build: mortar " << mortar_seconds * 1e3 << " ms, node-to-segment "
+    std::cout << "Hertz (refinement " << refinement << "): " << mesh.face_set(hertz_pair.slave).size()
+              << " slave faces, " << mesh.face_set(hertz_pair.master).size() << " master faces, " << coupling.n_segments
+              << " segments, " << mortar.n_rows() << " rows, " << mortar.B.nonZeros() << " nonzeros (node-to-segment "
+              << nts.B.nonZeros() << "); build: mortar " << mortar_seconds * 1e3 << " ms, node-to-segment "
               << nts_seconds * 1e3 << " ms\n";
   }
 }

@@ -36,8 +36,8 @@ TEST(InexactOuterIterations, ReachTheExactQpAnswerInFewerMprgpSteps)
   const fem::Problem problem = problems::hertz_problem(parameters);
   const test::FetiContactRun exact = run(problem, 0.0);
   const test::FetiContactRun forced = run(problem, 0.001);
-  std::printf("MPRGP steps: exact QPs %d, forcing 0.001 %d; p_peak %.6e / %.6e Pa\n", exact.mprgp,
-              forced.mprgp, exact.peak, forced.peak);
+  std::printf("MPRGP steps: exact QPs %d, forcing 0.001 %d; p_peak %.6e / %.6e Pa\n", exact.mprgp, forced.mprgp,
+              exact.peak, forced.peak);
   EXPECT_LE((forced.solution.u - exact.solution.u).norm(), 1e-5 * exact.solution.u.norm());
   EXPECT_NEAR(forced.peak, exact.peak, 1e-5 * exact.peak);
   EXPECT_LT(forced.mprgp, exact.mprgp);

@@ -35,12 +35,12 @@ TEST(LinearContactRows, RowsNearContactGiveTheAnswerOfEveryRow)
   parameters.mesh.refinement = 1;
   const fem::Problem problem = problems::hertz_problem(parameters);
   const test::FetiContactRun every = run(problem, 1e300);
-  const test::FetiContactRun near = run(problem, 0.25);  // the default
+  const test::FetiContactRun near = run(problem, 0.25);   // the default
   const test::FetiContactRun narrow = run(problem, 0.02); // too few rows at first: more QPs
   const test::FetiContactRun lumped = run(problem, 0.25, dual::DualPreconditioner::lumped); // no Schur boundary
-  std::printf("MPRGP steps: every row %d, band 0.25 %d, band 0.02 %d in %zu QPs; dual sizes %lld / %lld\n",
-              every.mprgp, near.mprgp, narrow.mprgp, narrow.solution.history.size(),
-              static_cast<long long>(every.solution.n_dual), static_cast<long long>(near.solution.n_dual));
+  std::printf("MPRGP steps: every row %d, band 0.25 %d, band 0.02 %d in %zu QPs; dual sizes %lld / %lld\n", every.mprgp,
+              near.mprgp, narrow.mprgp, narrow.solution.history.size(), static_cast<long long>(every.solution.n_dual),
+              static_cast<long long>(near.solution.n_dual));
   EXPECT_EQ(every.solution.history.size(), 1u);
   EXPECT_GE(narrow.solution.history.size(), 2u);
   EXPECT_LT(near.solution.n_dual, every.solution.n_dual);

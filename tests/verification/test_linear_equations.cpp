@@ -72,9 +72,9 @@ fem::Problem one_tie()
 fem::Problem three_terms()
 {
   fem::Problem p = tied_blocks(1e6);
-  p.equations = {{{{upper_node(p, 0.5, 0.5), 0, 2.0}, {lower_node(p, 0.5, 0.5), 0, -3.0},
-                   {lower_node(p, 0.75, 0.5), 1, 0.5}}},
-                 {{{upper_node(p, 0.25, 0.75), 0, 1.0}, {lower_node(p, 0.5, 0.5), 0, -1.0}}}};
+  p.equations = {
+      {{{upper_node(p, 0.5, 0.5), 0, 2.0}, {lower_node(p, 0.5, 0.5), 0, -3.0}, {lower_node(p, 0.75, 0.5), 1, 0.5}}},
+      {{{upper_node(p, 0.25, 0.75), 0, 1.0}, {lower_node(p, 0.5, 0.5), 0, -1.0}}}};
   return p;
 }
 
@@ -184,8 +184,8 @@ void check_solvers(const fem::Problem& problem, const la::Vector& reference)
     int mprgp = 0;
     for (const auto& it : solution.history)
       mprgp += it.qp.iterations;
-    std::printf("%-30s |u - u_ref|/|u_ref| = %.1e  max |sum a u|/sum |a u| = %.1e  MPRGP steps %d, dual %ld\n",
-                c.name, error, violation, mprgp, static_cast<long>(solution.n_dual));
+    std::printf("%-30s |u - u_ref|/|u_ref| = %.1e  max |sum a u|/sum |a u| = %.1e  MPRGP steps %d, dual %ld\n", c.name,
+                error, violation, mprgp, static_cast<long>(solution.n_dual));
     // QP rtol 1e-10 (SMALBE-M: also ||G~ mu||): the dual error and with it the displacement
     // error and the equality rows' residual are a few orders above it at most.
     EXPECT_LT(error, 1e-8) << c.name;
@@ -236,7 +236,8 @@ TEST(LinearEquations, TieBetweenBodiesMatchesMergedNodes)
   const fem::Problem problem = one_tie();
   const int32_t a = problem.equations[0].terms[0].node, b = problem.equations[0].terms[1].node;
   // Both tied nodes lie on an interface of the structured split: their rows go on every copy.
-  const decomposition::Decomposition structured(problem.mesh, decomposition::partition_structured(problem.mesh, {2, 1, 1}));
+  const decomposition::Decomposition structured(problem.mesh,
+                                                decomposition::partition_structured(problem.mesh, {2, 1, 1}));
   EXPECT_EQ(structured.copies(a).size(), 2u);
   EXPECT_EQ(structured.copies(b).size(), 2u);
   const la::Vector reference = substitution_solve(problem, {{3 * b, {{3 * a, 1.0}}}});
@@ -275,9 +276,11 @@ TEST(LinearEquations, LargeDisplacementsAndRestartKeepTheRows)
   s.stiffness = nonlinear::StiffnessUpdate::iteration;
   TimerTable timers;
   nonlinear::ContactSolution after_step_1;
-  const nonlinear::ContactSolution full = nonlinear::solve_feti_contact(
-      problem, s, timers, [&](int step, const nonlinear::ContactSolution& so_far)
-      { if (step == 1) after_step_1 = so_far; });
+  const nonlinear::ContactSolution full =
+      nonlinear::solve_feti_contact(problem, s, timers, [&](int step, const nonlinear::ContactSolution& so_far) {
+        if (step == 1)
+          after_step_1 = so_far;
+      });
   ASSERT_TRUE(full.converged) << full.reason;
 
   const fem::Assembler assembler(problem.mesh, fem::whole_mesh_domain(problem.mesh), problem.materials,
@@ -311,11 +314,10 @@ TEST(LinearEquations, LargeDisplacementsAndRestartKeepTheRows)
 
   fem::Problem more = problem;
   more.equations.push_back({{{upper_node(problem, 0.75, 0.25), 1, 1.0}, {lower_node(problem, 0.75, 0.25), 1, -1.0}}});
-  const std::string message = error_of([&]
-                                       {
-                                         TimerTable t;
-                                         nonlinear::solve_feti_contact(more, s, t, {}, &after_step_1);
-                                       });
+  const std::string message = error_of([&] {
+    TimerTable t;
+    nonlinear::solve_feti_contact(more, s, t, {}, &after_step_1);
+  });
   EXPECT_NE(message.find("restart: the checkpoint holds"), std::string::npos) << message;
 }
 
@@ -334,17 +336,15 @@ TEST(LinearEquations, DegenerateEquationsStopTheSolvers)
   penalty.method = nonlinear::ContactMethod::primal_penalty;
   for (const fem::Problem* p : {&repeated, &supported})
   {
-    const std::string feti = error_of([&]
-                                      {
-                                        TimerTable t;
-                                        const auto s = feti_settings(4, nonlinear::Partitioner::metis);
-                                        nonlinear::solve_feti_contact(*p, s, t);
-                                      });
-    const std::string primal = error_of([&]
-                                        {
-                                          TimerTable t;
-                                          nonlinear::solve_primal_penalty(*p, penalty, t);
-                                        });
+    const std::string feti = error_of([&] {
+      TimerTable t;
+      const auto s = feti_settings(4, nonlinear::Partitioner::metis);
+      nonlinear::solve_feti_contact(*p, s, t);
+    });
+    const std::string primal = error_of([&] {
+      TimerTable t;
+      nonlinear::solve_primal_penalty(*p, penalty, t);
+    });
     std::printf("%s\n", feti.c_str());
     for (const std::string& message : {feti, primal})
       EXPECT_NE(message.find("linear equation 2 of 2"), std::string::npos) << message;
@@ -369,8 +369,8 @@ TEST(LinearEquationsMpi, TwoRanksMatchOneRank)
   const fem::Problem problem = three_terms();
   const nonlinear::SolverSettings s = feti_settings(4, nonlinear::Partitioner::structured);
   TimerTable timers;
-  const nonlinear::ContactSolution one = nonlinear::solve_feti_contact(problem, s, timers, {}, nullptr,
-                                                                       par::Communicator::self());
+  const nonlinear::ContactSolution one =
+      nonlinear::solve_feti_contact(problem, s, timers, {}, nullptr, par::Communicator::self());
   const nonlinear::ContactSolution two = nonlinear::solve_feti_contact(problem, s, timers, {}, nullptr, world);
   ASSERT_TRUE(one.converged && two.converged) << one.reason << two.reason;
   ASSERT_EQ(one.history.size(), two.history.size());
@@ -381,8 +381,8 @@ TEST(LinearEquationsMpi, TwoRanksMatchOneRank)
   const int64_t c_y = 3 * problem.equations[0].terms[2].node + 1, a2 = 3 * problem.equations[1].terms[0].node;
   const la::Vector reference = substitution_solve(problem, {{a, {{b, 1.5}, {c_y, -0.25}}}, {a2, {{b, 1.0}}}});
   const double error = (two.u - reference).norm() / reference.norm();
-  std::printf("rank %d of 2: |u_2 - u_1|/|u_1| = %.1e, |u_2 - u_ref|/|u_ref| = %.1e, MPRGP steps %d\n",
-              world.rank(), difference, error, two.history.back().qp.iterations);
+  std::printf("rank %d of 2: |u_2 - u_1|/|u_1| = %.1e, |u_2 - u_ref|/|u_ref| = %.1e, MPRGP steps %d\n", world.rank(),
+              difference, error, two.history.back().qp.iterations);
   EXPECT_LT(difference, 1e-12);
   EXPECT_LT(error, 1e-8);
 }

@@ -37,7 +37,9 @@ struct StageAnswer
 
 StageAnswer answer(const fem::Problem& problem, const nonlinear::ContactSolution& solution, fem::Kinematics kinematics)
 {
-  StageAnswer out{solution.u, {}, nonlinear::total_normal_force(solution),
+  StageAnswer out{solution.u,
+                  {},
+                  nonlinear::total_normal_force(solution),
                   solution.steps.empty() ? 0.0 : solution.steps.back().load_factor};
   for (const auto& sample : nonlinear::slave_pressure_by_x(problem, solution, kinematics))
     out.pressure.push_back(sample.pressure);
@@ -54,8 +56,7 @@ struct Recorder
   bool keep_solutions = false;
   nonlinear::StepCallback callback()
   {
-    return [this](int step, const nonlinear::ContactSolution& s)
-    {
+    return [this](int step, const nonlinear::ContactSolution& s) {
       steps[step] = answer(problem, s, kinematics);
       if (keep_solutions)
         solutions[step] = s;
@@ -129,12 +130,11 @@ HertzStages hertz_stages(nonlinear::ContactMethod method)
   problem.later_stages = {scaled_stage(problem, 2.0, 3)}; // 3 increments: one load step regardless
   const nonlinear::SolverSettings s = small_displacements(method);
   EXPECT_EQ(s.steps(problem), 2);
-  auto solve = [&](const fem::Problem& p, const nonlinear::StepCallback& on_step)
-  {
+  auto solve = [&](const fem::Problem& p, const nonlinear::StepCallback& on_step) {
     TimerTable timers;
     nonlinear::ContactSolution solution = method == nonlinear::ContactMethod::primal_penalty
-                                              ? nonlinear::solve_primal_penalty(p, s, timers, on_step)
-                                              : nonlinear::solve_feti_contact(p, s, timers, on_step);
+        ? nonlinear::solve_primal_penalty(p, s, timers, on_step)
+        : nonlinear::solve_feti_contact(p, s, timers, on_step);
     EXPECT_TRUE(solution.converged) << solution.reason;
     return solution;
   };
@@ -157,8 +157,7 @@ void print(const char* what, const HertzStages& r)
               what, relative_difference(r.stage1.u, r.reference1.u),
               pressure_difference(r.stage1.pressure, r.reference1.pressure, r.p0),
               relative_difference(r.stage2.u, r.reference2.u),
-              pressure_difference(r.stage2.pressure, r.reference2.pressure, r.p0), r.stage2.force,
-              r.reference2.force);
+              pressure_difference(r.stage2.pressure, r.reference2.pressure, r.p0), r.stage2.force, r.reference2.force);
 }
 } // namespace
 
@@ -209,8 +208,7 @@ fem::Problem pushed_blocks(const std::vector<double>& d)
 {
   fem::Problem problem = test::pressed_blocks(3, 3, 0.0, 0.0);
   problem.tractions.clear();
-  auto supports = [&](double top)
-  {
+  auto supports = [&](double top) {
     std::vector<fem::DirichletCondition> conditions = problem.dirichlet;
     conditions.push_back({"upper_zmax", {std::nullopt, std::nullopt, top}});
     return conditions;
@@ -420,8 +418,7 @@ TEST(LoadStages, DirectNewtonFollowsTheHistory)
                   .converged);
   EXPECT_TRUE((u_plain.array() == u_one.array()).all());
   const double du = relative_difference(u_two, u_one);
-  std::printf("direct Newton, two stages against one: |du|/|u| %.2e, tip deflection %.6f m\n", du,
-              -u_one.minCoeff());
+  std::printf("direct Newton, two stages against one: |du|/|u| %.2e, tip deflection %.6f m\n", du, -u_one.minCoeff());
   EXPECT_GT(-u_one.minCoeff(), 0.5); // large deflection: path independence is not trivial
   EXPECT_LT(du, 1e-9);
 }

@@ -75,8 +75,7 @@ TEST(OuterConvergence, StopsOnlyWhenTheResidualIsSmall)
 TEST(OuterConvergence, LooseQpToleranceStillMeetsTheResidualTest)
 {
   const fem::Problem problem = problems::hertz_problem(problems::HertzParameters{});
-  auto solve = [&](double qp_rtol)
-  {
+  auto solve = [&](double qp_rtol) {
     nonlinear::SolverSettings s;
     s.kinematics = fem::Kinematics::total_lagrangian;
     s.load_steps = 2;

@@ -100,9 +100,9 @@ QuadSection mesh_cross_section_with_gmsh(const CrossSection& section, const Size
   std::vector<std::array<int32_t, 4>>& quads = out.quads;
   for (size_t t = 0; t < types.size(); ++t)
   {
-    FETICON_CHECK(types[t] == gmsh_quadrangle, "cross section of " << section.body << ": Gmsh left "
-                                                                   << element_tags[t].size()
-                                                                   << " cells that are no quadrilaterals");
+    FETICON_CHECK(types[t] == gmsh_quadrangle,
+                  "cross section of " << section.body << ": Gmsh left " << element_tags[t].size()
+                                      << " cells that are no quadrilaterals");
     for (size_t e = 0; e < element_tags[t].size(); ++e)
     {
       std::array<int32_t, 4> q;

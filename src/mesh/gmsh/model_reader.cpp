@@ -60,8 +60,7 @@ std::string element_type_name(int type)
   std::string name;
   int dim = 0, order = 0, n_nodes = 0, n_primary = 0;
   std::vector<double> local_coordinates;
-  gmsh::model::mesh::getElementProperties(type, name, dim, order, n_nodes, local_coordinates,
-                                          n_primary);
+  gmsh::model::mesh::getElementProperties(type, name, dim, order, n_nodes, local_coordinates, n_primary);
   return name + " (Gmsh type " + std::to_string(type) + ")";
 }
 
@@ -87,17 +86,16 @@ std::vector<PhysicalGroup> read_groups(const std::string& where)
                         << " has no name; feticon refers to groups by name, e.g. Physical "
                            "Surface(\"load\") = {...}");
     const auto [it, inserted] = seen.emplace(group.name, std::pair{dim, tag});
-    FETICON_CHECK(inserted, where << ": physical name '" << group.name << "' is used twice ("
-                                  << group_kind(it->second.first) << " " << it->second.second
-                                  << " and " << group_kind(dim) << " " << tag
-                                  << "); give every physical group its own name");
+    FETICON_CHECK(inserted,
+                  where << ": physical name '" << group.name << "' is used twice (" << group_kind(it->second.first)
+                        << " " << it->second.second << " and " << group_kind(dim) << " " << tag
+                        << "); give every physical group its own name");
     gmsh::model::getEntitiesForPhysicalGroup(dim, tag, group.entities);
     groups.push_back(std::move(group));
   }
-  FETICON_CHECK(
-      std::any_of(groups.begin(), groups.end(), [](const PhysicalGroup& g) { return g.dim == 3; }),
-      where << ": no 3D physical group; every body must be a Physical Volume(\"name\") "
-               "meshed with hexahedra");
+  FETICON_CHECK(std::any_of(groups.begin(), groups.end(), [](const PhysicalGroup& g) { return g.dim == 3; }),
+                where << ": no 3D physical group; every body must be a Physical Volume(\"name\") "
+                         "meshed with hexahedra");
   return groups;
 }
 
@@ -110,9 +108,9 @@ void check_volume_entities(const std::vector<PhysicalGroup>& groups, const std::
       for (const int entity : group.entities)
       {
         const auto [it, inserted] = body_of_entity.emplace(entity, &group);
-        FETICON_CHECK(inserted, where << ": volume " << entity << " is in two physical volumes, '"
-                                      << it->second->name << "' and '" << group.name
-                                      << "'; a volume belongs to one body");
+        FETICON_CHECK(inserted,
+                      where << ": volume " << entity << " is in two physical volumes, '" << it->second->name
+                            << "' and '" << group.name << "'; a volume belongs to one body");
       }
   gmsh::vectorpair volumes;
   gmsh::model::getEntities(volumes, 3);
@@ -130,8 +128,8 @@ void check_volume_entities(const std::vector<PhysicalGroup>& groups, const std::
 }
 
 /// Hexahedra of the 3D group `group` as Gmsh node tags, with their Gmsh element tags.
-void read_body_cells(const PhysicalGroup& group, const std::string& where,
-                     std::vector<GmshCell>& cells, std::vector<std::size_t>& element_tags)
+void read_body_cells(const PhysicalGroup& group, const std::string& where, std::vector<GmshCell>& cells,
+                     std::vector<std::size_t>& element_tags)
 {
   const std::size_t n_before = cells.size();
   for (const int entity : group.entities)
@@ -142,8 +140,8 @@ void read_body_cells(const PhysicalGroup& group, const std::string& where,
     for (std::size_t t = 0; t < types.size(); ++t)
     {
       FETICON_CHECK(types[t] == gmsh_hexahedron,
-                    where << ": physical volume '" << group.name << "' holds " << tags[t].size()
-                          << " elements of type " << element_type_name(types[t])
+                    where << ": physical volume '" << group.name << "' holds " << tags[t].size() << " elements of type "
+                          << element_type_name(types[t])
                           << "; only 8-node hexahedra are supported; remesh with "
                              "Mesh.RecombineAll = 1 and transfinite volumes (or recombined "
                              "extrusions), first order");
@@ -156,14 +154,13 @@ void read_body_cells(const PhysicalGroup& group, const std::string& where,
       }
     }
   }
-  FETICON_CHECK(cells.size() > n_before,
-                where << ": physical volume '" << group.name << "' has no elements");
+  FETICON_CHECK(cells.size() > n_before, where << ": physical volume '" << group.name << "' has no elements");
 }
 
 /// Bodies, nodes and cells from the 3D groups.
 /// @return the local node id of every Gmsh node tag used by a hexahedron
-std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGroup>& groups,
-                                                    const std::string& where, HexMesh& mesh)
+std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGroup>& groups, const std::string& where,
+                                                    HexMesh& mesh)
 {
   std::vector<GmshCell> gmsh_cells;
   std::vector<std::size_t> element_tags;
@@ -184,8 +181,8 @@ std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGr
       const int32_t body = mesh.cell_body[c];
       const auto [it, inserted] = body_of_node.emplace(tag, body);
       FETICON_CHECK(it->second == body,
-                    where << ": bodies '" << mesh.body_names[it->second] << "' and '"
-                          << mesh.body_names[body] << "' share Gmsh node " << tag
+                    where << ": bodies '" << mesh.body_names[it->second] << "' and '" << mesh.body_names[body]
+                          << "' share Gmsh node " << tag
                           << "; bodies must be separate meshes (do not fragment or Coherence "
                              "volumes of different bodies)");
       if (inserted)
@@ -194,8 +191,7 @@ std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGr
   const std::size_t n_nodes = body_of_node.size();
   constexpr auto max_local_id = static_cast<std::size_t>(std::numeric_limits<int32_t>::max());
   FETICON_CHECK(n_nodes <= max_local_id && gmsh_cells.size() <= max_local_id,
-                where << ": " << n_nodes << " nodes and " << gmsh_cells.size()
-                      << " cells exceed int32 local ids");
+                where << ": " << n_nodes << " nodes and " << gmsh_cells.size() << " cells exceed int32 local ids");
   std::unordered_map<std::size_t, int32_t> local_id;
   local_id.reserve(n_nodes);
   for (std::vector<std::size_t>& tags : body_nodes)
@@ -243,15 +239,15 @@ std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGr
       shortest = std::min(shortest, length);
       longest = std::max(longest, length);
     }
-    FETICON_CHECK(shortest > 1e-9 * longest, where << ": hexahedron (Gmsh element " << element_tags[c] << ") of body '"
-                                                   << mesh.body_names[mesh.cell_body[c]]
-                                                   << "' has an edge of length " << shortest
-                                                   << " (coincident nodes; degenerate)");
+    FETICON_CHECK(shortest > 1e-9 * longest,
+                  where << ": hexahedron (Gmsh element " << element_tags[c] << ") of body '"
+                        << mesh.body_names[mesh.cell_body[c]] << "' has an edge of length " << shortest
+                        << " (coincident nodes; degenerate)");
     const double det = centre_jacobian_determinant(mesh, cell);
-    FETICON_CHECK(det > 0, where << ": hexahedron (Gmsh element " << element_tags[c]
-                                 << ") of body '" << mesh.body_names[mesh.cell_body[c]]
-                                 << "' is inverted or flat (Jacobian determinant " << det
-                                 << " at its centre); check the volume's orientation");
+    FETICON_CHECK(det > 0,
+                  where << ": hexahedron (Gmsh element " << element_tags[c] << ") of body '"
+                        << mesh.body_names[mesh.cell_body[c]] << "' is inverted or flat (Jacobian determinant " << det
+                        << " at its centre); check the volume's orientation");
   }
   return local_id;
 }
@@ -289,10 +285,9 @@ void read_face_sets(const std::vector<PhysicalGroup>& groups, const std::string&
         FETICON_CHECK(types[t] == gmsh_quadrangle,
                       where << ": physical surface '" << group.name << "' holds " << tags[t].size()
                             << " elements of type " << element_type_name(types[t])
-                            << (types[t] == gmsh_triangle
-                                    ? "; its volumes must be hexahedra, so recombine the surface "
-                                      "(Mesh.RecombineAll = 1)"
-                                    : "; only 4-node quadrangles (faces of hex8) are supported"));
+                            << (types[t] == gmsh_triangle ? "; its volumes must be hexahedra, so recombine the surface "
+                                                            "(Mesh.RecombineAll = 1)"
+                                                          : "; only 4-node quadrangles (faces of hex8) are supported"));
         for (std::size_t e = 0; e < tags[t].size(); ++e)
         {
           SortedFace key;
@@ -306,13 +301,11 @@ void read_face_sets(const std::vector<PhysicalGroup>& groups, const std::string&
           std::sort(key.begin(), key.end());
           const auto owner = on_cells ? owners.find(key) : owners.end();
           FETICON_CHECK(owner != owners.end(),
-                        where << ": quadrangle (Gmsh element " << tags[t][e]
-                              << ") of physical surface '" << group.name
+                        where << ": quadrangle (Gmsh element " << tags[t][e] << ") of physical surface '" << group.name
                               << "' is not a face of any hexahedron of a body; the surface must "
                                  "bound a physical volume and share its mesh");
           FETICON_CHECK(owner->second.count == 1,
-                        where << ": quadrangle (Gmsh element " << tags[t][e]
-                              << ") of physical surface '" << group.name
+                        where << ": quadrangle (Gmsh element " << tags[t][e] << ") of physical surface '" << group.name
                               << "' lies between two hexahedra; face sets must be on "
                               << "the boundary of a body");
           const Cell& cell = mesh.cells[owner->second.cell];
@@ -321,8 +314,7 @@ void read_face_sets(const std::vector<PhysicalGroup>& groups, const std::string&
         }
       }
     }
-    FETICON_CHECK(!faces.empty(),
-                  where << ": physical surface '" << group.name << "' has no elements");
+    FETICON_CHECK(!faces.empty(), where << ": physical surface '" << group.name << "' has no elements");
     mesh.add_node_set_from_faces(group.name, group.name);
   }
 }
@@ -338,15 +330,14 @@ void read_node_sets(const std::vector<PhysicalGroup>& groups, const std::string&
     std::vector<std::size_t> tags;
     std::vector<double> coordinates;
     gmsh::model::mesh::getNodesForPhysicalGroup(group.dim, group.tag, tags, coordinates);
-    FETICON_CHECK(!tags.empty(),
-                  where << ": " << group_kind(group.dim) << " '" << group.name << "' has no nodes");
+    FETICON_CHECK(!tags.empty(), where << ": " << group_kind(group.dim) << " '" << group.name << "' has no nodes");
     std::vector<int32_t>& ids = mesh.node_sets[group.name];
     for (const std::size_t tag : tags)
     {
       const auto it = local_id.find(tag);
-      FETICON_CHECK(it != local_id.end(), where << ": Gmsh node " << tag << " of "
-                                                << group_kind(group.dim) << " '" << group.name
-                                                << "' is not a node of any hexahedron of a body");
+      FETICON_CHECK(it != local_id.end(),
+                    where << ": Gmsh node " << tag << " of " << group_kind(group.dim) << " '" << group.name
+                          << "' is not a node of any hexahedron of a body");
       ids.push_back(it->second);
     }
     std::sort(ids.begin(), ids.end());
@@ -390,8 +381,7 @@ HexMesh read_model_with_gmsh(const std::filesystem::path& path, const std::strin
   catch (const std::string& message)
   {
     // Gmsh 4.8 throws its error message as a std::string (General.AbortOnError = 2).
-    throw Error(where + ": Gmsh failed " + stage +
-                " it (truncated or corrupt file?): " + one_line(message));
+    throw Error(where + ": Gmsh failed " + stage + " it (truncated or corrupt file?): " + one_line(message));
   }
   catch (const std::exception& exception)
   {

@@ -36,12 +36,11 @@ TEST(ParallelFor, VisitsEveryIndexOnceOnSeveralThreads)
   std::set<std::thread::id> ids;
   std::mutex mutex;
   for (int repeat = 0; repeat < 50; ++repeat) // the pool is reused loop after loop
-    parallel_for(0, 1000, min_parallel_work, [&](int32_t i)
-                 {
-                   ++visits[i];
-                   std::lock_guard lock(mutex);
-                   ids.insert(std::this_thread::get_id());
-                 });
+    parallel_for(0, 1000, min_parallel_work, [&](int32_t i) {
+      ++visits[i];
+      std::lock_guard lock(mutex);
+      ids.insert(std::this_thread::get_id());
+    });
   for (const auto& v : visits)
     EXPECT_EQ(v.load(), 50);
   EXPECT_GE(ids.size(), 2u); // work did leave the calling thread
@@ -52,13 +51,13 @@ TEST(ParallelFor, RethrowsTheErrorOfAnIterationAfterTheLoop)
 {
   const Threads threads(2);
   std::atomic<int> done = 0;
-  EXPECT_THROW(parallel_for(0, 100, min_parallel_work,
-                            [&](int32_t i)
-                            {
-                              if (i == 37)
-                                FETICON_CHECK(false, "subdomain 37 is not positive definite");
-                              ++done;
-                            }),
+  EXPECT_THROW(parallel_for(
+                   0, 100, min_parallel_work,
+                   [&](int32_t i) {
+    if (i == 37)
+      FETICON_CHECK(false, "subdomain 37 is not positive definite");
+    ++done;
+                   }),
                Error);
   EXPECT_EQ(done.load(), 99); // the other iterations still ran
   // and the pool still works afterwards
@@ -71,15 +70,13 @@ TEST(ParallelFor, NestedLoopsRunSeriallyInTheirIteration)
 {
   const Threads threads(2);
   std::vector<int> sums(8, 0);
-  parallel_for(0, 8, min_parallel_work, [&](int32_t i)
-               {
-                 const std::thread::id outer = std::this_thread::get_id();
-                 parallel_for(0, 10, min_parallel_work, [&](int32_t j)
-                              {
-                                EXPECT_EQ(std::this_thread::get_id(), outer);
-                                sums[i] += j;
-                              });
-               });
+  parallel_for(0, 8, min_parallel_work, [&](int32_t i) {
+    const std::thread::id outer = std::this_thread::get_id();
+    parallel_for(0, 10, min_parallel_work, [&](int32_t j) {
+      EXPECT_EQ(std::this_thread::get_id(), outer);
+      sums[i] += j;
+    });
+  });
   for (int s : sums)
     EXPECT_EQ(s, 45);
 }

@@ -31,8 +31,7 @@ inline void expect_rows_annihilate_translations(const ContactConstraints& rows, 
     for (int32_t node = 0; node < n_nodes; ++node)
       translation(3 * node + component) = 1.0;
     // Entries are O(1) after normalization: round-off of a sum of about 20 terms.
-    EXPECT_LT((rows.B * translation).lpNorm<Eigen::Infinity>(), 1e-14)
-        << "component " << component;
+    EXPECT_LT((rows.B * translation).lpNorm<Eigen::Infinity>(), 1e-14) << "component " << component;
   }
 }
 } // namespace feticon::contact::row_checks

@@ -16,15 +16,15 @@ namespace feticon::contact::test
 inline mesh::HexMesh stacked_boxes(double gap, double shift_x = 0, double shift_y = 0)
 {
   mesh::HexMesh mesh;
-  mesh::append_mesh(mesh, mesh::generate_box({.lengths = {1, 1, 1}, .nx = 4, .ny = 4, .nz = 2,
-                                              .body_name = "lower"}),
+  mesh::append_mesh(mesh, mesh::generate_box({.lengths = {1, 1, 1}, .nx = 4, .ny = 4, .nz = 2, .body_name = "lower"}),
                     "lower_");
-  mesh::append_mesh(mesh, mesh::generate_box({.origin = {shift_x, shift_y, 1 + gap},
-                                              .lengths = {1, 1, 0.5},
-                                              .nx = 3,
-                                              .ny = 3,
-                                              .nz = 1,
-                                              .body_name = "upper"}),
+  mesh::append_mesh(mesh,
+                    mesh::generate_box({.origin = {shift_x, shift_y, 1 + gap},
+                                        .lengths = {1, 1, 0.5},
+                                        .nx = 3,
+                                        .ny = 3,
+                                        .nz = 1,
+                                        .body_name = "upper"}),
                     "upper_");
   return mesh;
 }
@@ -37,31 +37,27 @@ inline mesh::HexMesh wavy_blocks()
   using std::numbers::pi;
   mesh::HexMesh mesh;
   const int nx = 5, ny = 4, nz = 2;
-  mesh::append_mesh(
-      mesh,
-      mesh::generate_mapped_block(
-          {nx, ny, nz},
-          [&](int32_t i, int32_t j, int32_t k)
-          {
-            const double x = double(i) / nx, y = double(j) / ny;
-            const double top = 1 + 0.06 * std::sin(2 * pi * x) * std::cos(pi * y);
-            return Eigen::Vector3d(x, y, top * k / nz);
-          },
-          "lower"),
-      "lower_");
+  mesh::append_mesh(mesh,
+                    mesh::generate_mapped_block(
+                        {nx, ny, nz},
+                        [&](int32_t i, int32_t j, int32_t k) {
+    const double x = double(i) / nx, y = double(j) / ny;
+    const double top = 1 + 0.06 * std::sin(2 * pi * x) * std::cos(pi * y);
+    return Eigen::Vector3d(x, y, top * k / nz);
+                        },
+                        "lower"),
+                    "lower_");
   const int mx = 4, my = 3;
-  mesh::append_mesh(
-      mesh,
-      mesh::generate_mapped_block(
-          {mx, my, 1},
-          [&](int32_t i, int32_t j, int32_t k)
-          {
-            const double x = 0.05 + 0.9 * i / mx, y = 0.05 + 0.9 * j / my;
-            const double bottom = 1.02 + 0.04 * std::cos(2 * pi * y) * std::sin(pi * x);
-            return Eigen::Vector3d(x, y, k == 0 ? bottom : 1.4);
-          },
-          "upper"),
-      "upper_");
+  mesh::append_mesh(mesh,
+                    mesh::generate_mapped_block(
+                        {mx, my, 1},
+                        [&](int32_t i, int32_t j, int32_t k) {
+    const double x = 0.05 + 0.9 * i / mx, y = 0.05 + 0.9 * j / my;
+    const double bottom = 1.02 + 0.04 * std::cos(2 * pi * y) * std::sin(pi * x);
+    return Eigen::Vector3d(x, y, k == 0 ? bottom : 1.4);
+                        },
+                        "upper"),
+                    "upper_");
   return mesh;
 }
 
@@ -85,21 +81,17 @@ inline mesh::HexMesh roof_and_block()
   mesh::append_mesh(mesh,
                     mesh::generate_mapped_block(
                         {2, 1, 1},
-                        [](int32_t i, int32_t j, int32_t k)
-                        {
-                          const double top = i == 1 ? 1.0 : 0.8;
-                          return Eigen::Vector3d(0.5 * i, j, k * top);
+                        [](int32_t i, int32_t j, int32_t k) {
+    const double top = i == 1 ? 1.0 : 0.8;
+    return Eigen::Vector3d(0.5 * i, j, k * top);
                         },
                         "lower"),
                     "lower_");
-  mesh::append_mesh(mesh,
-                    mesh::generate_box({.origin = {0.25, 0, 1.1},
-                                        .lengths = {0.5, 1, 0.2},
-                                        .nx = 2,
-                                        .ny = 1,
-                                        .nz = 1,
-                                        .body_name = "upper"}),
-                    "upper_");
+  mesh::append_mesh(
+      mesh,
+      mesh::generate_box(
+          {.origin = {0.25, 0, 1.1}, .lengths = {0.5, 1, 0.2}, .nx = 2, .ny = 1, .nz = 1, .body_name = "upper"}),
+      "upper_");
   return mesh;
 }
 } // namespace feticon::contact::test

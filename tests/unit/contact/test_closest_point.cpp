@@ -42,17 +42,14 @@ QuadCoordinates saddle_quad(double w)
 /// grids shrinking by 10 around the best sample until the spacing is 1e-13.
 Eigen::Vector2d brute_force_closest(const QuadCoordinates& quad, const Eigen::Vector3d& point)
 {
-  auto distance2 = [&](const Eigen::Vector2d& xi)
-  { return (quad_point(quad, xi) - point).squaredNorm(); };
+  auto distance2 = [&](const Eigen::Vector2d& xi) { return (quad_point(quad, xi) - point).squaredNorm(); };
   Eigen::Vector2d best(0, 0);
   double best_d2 = distance2(best);
-  auto scan = [&](const Eigen::Vector2d& centre, double half_width, int n)
-  {
+  auto scan = [&](const Eigen::Vector2d& centre, double half_width, int n) {
     for (int i = 0; i <= n; ++i)
       for (int j = 0; j <= n; ++j)
       {
-        Eigen::Vector2d xi =
-            centre + half_width * Eigen::Vector2d(2.0 * i / n - 1, 2.0 * j / n - 1);
+        Eigen::Vector2d xi = centre + half_width * Eigen::Vector2d(2.0 * i / n - 1, 2.0 * j / n - 1);
         xi = xi.cwiseMax(-1.0).cwiseMin(1.0);
         const double d2 = distance2(xi);
         if (d2 < best_d2)
@@ -137,8 +134,7 @@ TEST(ProjectToQuad, WarpedQuadMatchesBruteForceSampling)
   int n_checked = 0;
   for (int trial = 0; trial < 40; ++trial)
   {
-    const Eigen::Vector3d point(-0.1 + 1.2 * unit(rng), -0.1 + 1.2 * unit(rng),
-                                -0.4 + 0.8 * unit(rng));
+    const Eigen::Vector3d point(-0.1 + 1.2 * unit(rng), -0.1 + 1.2 * unit(rng), -0.4 + 0.8 * unit(rng));
     const Eigen::Vector2d reference = brute_force_closest(quad, point);
     const QuadProjection p = project_to_quad(quad, point);
     if (reference.cwiseAbs().maxCoeff() > 0.999)

@@ -90,12 +90,8 @@ TEST(ContactConstraints, RowsOnlyBelowSearchDistance)
 {
   // Gap 0.1 against an explicit d_s = 0.05: no row; d_s = 0.2: all rows.
   const mesh::HexMesh mesh = test::stacked_boxes(0.1);
-  EXPECT_EQ(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.search_distance = 0.05})
-                .n_rows(),
-            0);
-  EXPECT_EQ(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.search_distance = 0.2})
-                .n_rows(),
-            16);
+  EXPECT_EQ(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.search_distance = 0.05}).n_rows(), 0);
+  EXPECT_EQ(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.search_distance = 0.2}).n_rows(), 16);
 }
 
 TEST(ContactConstraints, NearContactRowsOnlyWhereTheBodiesTouchOrNearlyTouch)
@@ -105,8 +101,7 @@ TEST(ContactConstraints, NearContactRowsOnlyWhereTheBodiesTouchOrNearlyTouch)
   // diagonal sqrt(2) / 4, so f = 0.05 allows 0.0177 above the contact level max(g_min, 0).
   const mesh::HexMesh mesh = test::stacked_boxes(0);
   const double allowance = 0.05 * std::sqrt(2.0) / 4;
-  const auto rows_at = [&](double offset, double slope, double fraction)
-  {
+  const auto rows_at = [&](double offset, double slope, double fraction) {
     la::Vector u = la::Vector::Zero(3 * mesh.n_nodes());
     for (const int32_t node : mesh.node_set("upper_zmin"))
       u(3 * node + 2) = offset + slope * mesh.nodes(node, 0);
@@ -116,8 +111,7 @@ TEST(ContactConstraints, NearContactRowsOnlyWhereTheBodiesTouchOrNearlyTouch)
       EXPECT_NEAR(rows.gap[i], offset + slope * mesh.nodes(rows.slave_node[i], 0), 1e-14);
     return rows;
   };
-  const auto expect_columns = [&](const ContactConstraints& rows, double offset, double slope)
-  {
+  const auto expect_columns = [&](const ContactConstraints& rows, double offset, double slope) {
     const double level = std::max(offset, 0.0); // the smallest gap is at x = 0
     int expected = 0;
     for (const int32_t node : mesh.node_set("upper_zmin"))
@@ -192,8 +186,8 @@ TEST(ContactConstraints, RimExtensionKeepsNodesJustBeyondTheMasterBoundary)
     EXPECT_EQ(rows.n_rows(), within ? 16 : 12) << "dx = " << dx;
   }
   // Without the extension the rim nodes are skipped.
-  const ContactConstraints strict = build_contact_constraints(
-      test::stacked_boxes(1e-3, 0.002), la::Vector(), upper_on_lower, {.rim_extension = 0});
+  const ContactConstraints strict =
+      build_contact_constraints(test::stacked_boxes(1e-3, 0.002), la::Vector(), upper_on_lower, {.rim_extension = 0});
   EXPECT_EQ(strict.n_rows(), 12);
   EXPECT_EQ(strict.n_overhanging, 4);
 }
@@ -247,8 +241,8 @@ TEST(ContactConstraints, ForcesOfEveryRowSumToZero)
   {
     const la::Vector unit = la::Vector::Unit(rows.n_rows(), i);
     const la::Vector forces = contact_forces(rows, unit, n_dofs);
-    const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> nodal(
-        forces.data(), mesh.n_nodes(), 3);
+    const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> nodal(forces.data(),
+                                                                                            mesh.n_nodes(), 3);
     EXPECT_LT(nodal.colwise().sum().norm(), 1e-15) << "row " << i;
     // The slave force is (lambda_hat / |b|) n, pointing from the master towards the slave.
     const Eigen::Vector3d slave_force = nodal.row(rows.slave_node[i]).transpose();
@@ -273,8 +267,7 @@ TEST(ContactConstraints, MovingSlaveAlongNormalChangesGapByDelta)
       const la::Index j = row_of(after, rows.slave_node[i]);
       ASSERT_GE(j, 0);
       EXPECT_EQ(after.master_face[j], rows.master_face[i]);
-      EXPECT_NEAR(after.c(j) * after.row_norm[j], rows.gap[i] + delta, 1e-13)
-          << "row " << i << " delta " << delta;
+      EXPECT_NEAR(after.c(j) * after.row_norm[j], rows.gap[i] + delta, 1e-13) << "row " << i << " delta " << delta;
     }
 }
 
@@ -338,8 +331,7 @@ TEST(ContactConstraints, ConvexRidgeBlindSpotUsesNodeToEdgeRow)
 
   // Edge rows are -grad_u g too: move a ridge slave node sideways within the blind spot, where
   // g = sqrt(dx^2 + 0.1^2) (distance to the ridge line), and compare with b du.
-  const la::Index i = [&]
-  {
+  const la::Index i = [&] {
     for (la::Index k = 0; k < rows.n_rows(); ++k)
       if (rows.kind[k] == ProjectionKind::edge)
         return k;
@@ -357,28 +349,19 @@ TEST(ContactConstraints, ConvexRidgeBlindSpotUsesNodeToEdgeRow)
   const Eigen::Vector3d expected_normal = Eigen::Vector3d(dx, 0, 0.1).normalized();
   EXPECT_NEAR((moved.normal[j] - expected_normal).norm(), 0, 1e-14);
   // Lateral sensitivity dg/dx_s = dx / g equals -b_x (unnormalized) of the moved row.
-  EXPECT_NEAR(-moved.B.coeff(j, 3 * rows.slave_node[i]) * moved.row_norm[j],
-              dx / std::hypot(dx, 0.1), 1e-14);
+  EXPECT_NEAR(-moved.B.coeff(j, 3 * rows.slave_node[i]) * moved.row_norm[j], dx / std::hypot(dx, 0.1), 1e-14);
 }
 
 TEST(ContactConstraints, InvalidInputThrows)
 {
   const mesh::HexMesh mesh = test::stacked_boxes(1e-3);
   EXPECT_THROW(build_contact_constraints(mesh, la::Vector::Zero(5), upper_on_lower), Error);
-  EXPECT_THROW(
-      build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.search_distance = -1}),
-      Error);
-  EXPECT_THROW(
-      build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.rim_extension = -0.1}),
-      Error);
-  EXPECT_THROW(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.near_contact_fraction = 0}),
-               Error);
-  EXPECT_THROW(
-      build_contact_constraints(mesh, la::Vector(), {.slave = "upper_zmin", .master = "nope"}),
-      Error);
+  EXPECT_THROW(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.search_distance = -1}), Error);
+  EXPECT_THROW(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.rim_extension = -0.1}), Error);
+  EXPECT_THROW(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.near_contact_fraction = 0}), Error);
+  EXPECT_THROW(build_contact_constraints(mesh, la::Vector(), {.slave = "upper_zmin", .master = "nope"}), Error);
   const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), upper_on_lower);
-  EXPECT_THROW(contact_forces(rows, la::Vector::Zero(rows.n_rows() + 1), 3 * mesh.n_nodes()),
-               Error);
+  EXPECT_THROW(contact_forces(rows, la::Vector::Zero(rows.n_rows() + 1), 3 * mesh.n_nodes()), Error);
   EXPECT_THROW(contact_forces(rows, la::Vector::Zero(rows.n_rows()), 7), Error);
 }
 } // namespace feticon::contact

@@ -35,8 +35,7 @@ TEST(MortarIntegration, QuadratureRulesAreExact)
     {
       double sum = 0;
       for (size_t q = 0; q < triangle.points.size(); ++q)
-        sum += 0.5 * triangle.weights[q] * std::pow(triangle.points[q](0), a) *
-               std::pow(triangle.points[q](1), b);
+        sum += 0.5 * triangle.weights[q] * std::pow(triangle.points[q](0), a) * std::pow(triangle.points[q](1), b);
       const double exact = std::tgamma(a + 1) * std::tgamma(b + 1) / std::tgamma(a + b + 3);
       EXPECT_NEAR(sum / exact, 1.0, 1e-13) << "x^" << a << " y^" << b;
     }
@@ -56,8 +55,7 @@ TEST(MortarIntegration, ClippingAndDualBasis)
   // Biorthogonality int Phi_j N_k dA = delta_jk D_j on a flat trapezoid in a tilted plane,
   // checked with a finer 8 x 8 Gauss rule (exact: the integrand has degree 3 per direction), and
   // sum_j Phi_j = 1. D_j sums to the trapezoid area (1 + 2) / 2 * 1 = 1.5.
-  const Eigen::Matrix3d rotation =
-      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, -1, 2).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, -1, 2).normalized()).toRotationMatrix();
   QuadCoordinates quad;
   quad << 0, 0, 0, 2, 0, 0, 1.5, 1, 0, 0.5, 1, 0;
   quad = (quad * rotation.transpose()).eval();
@@ -72,16 +70,13 @@ TEST(MortarIntegration, ClippingAndDualBasis)
     Eigen::Vector3d d_xi = Eigen::Vector3d::Zero(), d_eta = Eigen::Vector3d::Zero();
     for (int a = 0; a < 4; ++a)
     {
-      d_xi += 0.25 * quad_corners[a][0] * (1 + quad_corners[a][1] * xi(1)) *
-              quad.row(a).transpose();
-      d_eta += 0.25 * quad_corners[a][1] * (1 + quad_corners[a][0] * xi(0)) *
-               quad.row(a).transpose();
+      d_xi += 0.25 * quad_corners[a][0] * (1 + quad_corners[a][1] * xi(1)) * quad.row(a).transpose();
+      d_eta += 0.25 * quad_corners[a][1] * (1 + quad_corners[a][0] * xi(0)) * quad.row(a).transpose();
     }
     const double area = fine.weights[q] * d_xi.cross(d_eta).norm();
     product += area * dual_shape_functions(dual, xi) * quad_shape_functions(xi).transpose();
     EXPECT_NEAR(dual_shape_functions(dual, xi).sum(), 1.0, 1e-14);
   }
-  EXPECT_LT((product - Eigen::Matrix4d(dual.nodal_area.asDiagonal())).cwiseAbs().maxCoeff(),
-            1e-14);
+  EXPECT_LT((product - Eigen::Matrix4d(dual.nodal_area.asDiagonal())).cwiseAbs().maxCoeff(), 1e-14);
 }
 } // namespace feticon::contact

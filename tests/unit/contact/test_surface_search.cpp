@@ -39,8 +39,7 @@ TEST(SurfaceSearch, RandomBoxesMatchBruteForce)
   for (int k = 0; k < 500; ++k)
   {
     const Eigen::Vector3d lower(unit(rng), unit(rng), unit(rng));
-    Eigen::Vector3d size = Eigen::Vector3d(unit(rng), unit(rng), unit(rng)) *
-                           (k % 10 == 0 ? 0.3 : 0.03);
+    Eigen::Vector3d size = Eigen::Vector3d(unit(rng), unit(rng), unit(rng)) * (k % 10 == 0 ? 0.3 : 0.03);
     if (k % 7 == 0)
       size(2) = 0; // flat box
     boxes.push_back(box(lower, lower + size));
@@ -72,8 +71,7 @@ TEST(SurfaceSearch, OneHugeBoxAmongSmallOnesStaysBounded)
 {
   std::vector<BoundingBox> boxes;
   for (int k = 0; k < 100; ++k)
-    boxes.push_back(
-        box(Eigen::Vector3d(0.01 * k, 0, 0), Eigen::Vector3d(0.01 * k + 1e-3, 1e-3, 1e-3)));
+    boxes.push_back(box(Eigen::Vector3d(0.01 * k, 0, 0), Eigen::Vector3d(0.01 * k + 1e-3, 1e-3, 1e-3)));
   boxes.push_back(box(Eigen::Vector3d(-100, -100, -100), Eigen::Vector3d(100, 100, 100)));
   const SurfaceSearch search(boxes);
   EXPECT_LE(search.n_entries(), 64 * search.n_boxes());

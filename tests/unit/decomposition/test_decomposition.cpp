@@ -30,8 +30,8 @@ mesh::HexMesh distorted_box(int n)
   for (int32_t i = 0; i < m.n_nodes(); ++i)
   {
     Eigen::Vector3d x = m.nodes.row(i).transpose();
-    const bool interior = x(0) > 1e-12 && x(0) < 2 - 1e-12 && x(1) > 1e-12 && x(1) < 1 - 1e-12 &&
-                          x(2) > 1e-12 && x(2) < 1 - 1e-12;
+    const bool interior =
+        x(0) > 1e-12 && x(0) < 2 - 1e-12 && x(1) > 1e-12 && x(1) < 1 - 1e-12 && x(2) > 1e-12 && x(2) < 1 - 1e-12;
     if (interior)
       x += 0.25 / n * Eigen::Vector3d(std::sin(3.1 * i), std::cos(1.7 * i), std::sin(0.7 * i + 1));
     m.nodes.row(i) = x.transpose();
@@ -56,8 +56,7 @@ TEST(GeneralizedInverse, KernelAndDefiningIdentityOnDistortedSubdomains)
   const decomposition::Decomposition decomp(m, partition);
   for (auto method : {GeneralizedInverseMethod::fixing_dofs, GeneralizedInverseMethod::regularization})
   {
-    decomposition::SubdomainSystem system(decomp, {fem::Material{2e11, 0.3}}, fem::Kinematics::linear,
-                                          method);
+    decomposition::SubdomainSystem system(decomp, {fem::Material{2e11, 0.3}}, fem::Kinematics::linear, method);
     system.update(la::Vector::Zero(decomp.n_primal()));
     for (int32_t s = 0; s < decomp.n_subdomains(); ++s)
     {
@@ -86,8 +85,7 @@ TEST(GeneralizedInverse, PlaneStrainKernelIsThreeDimensional)
   p.ny = 2;
   p.nz = 1;
   const auto m = mesh::generate_box(p);
-  const decomposition::Decomposition decomp(m, decomposition::partition_structured(m, {2, 1, 1}),
-                                            {false, false, true});
+  const decomposition::Decomposition decomp(m, decomposition::partition_structured(m, {2, 1, 1}), {false, false, true});
   decomposition::SubdomainSystem system(decomp, {fem::Material{}}, fem::Kinematics::linear,
                                         GeneralizedInverseMethod::fixing_dofs);
   system.update(la::Vector::Zero(decomp.n_primal()));
@@ -175,8 +173,7 @@ namespace
 {
 /// Per subdomain: cell count and whether its cells fill the box spanned by their centroids
 /// (cell units of a uniform box mesh with cell size h).
-std::vector<std::pair<int, bool>> part_shapes(const mesh::HexMesh& m,
-                                              const decomposition::Partition& partition,
+std::vector<std::pair<int, bool>> part_shapes(const mesh::HexMesh& m, const decomposition::Partition& partition,
                                               const Eigen::Vector3d& h)
 {
   std::vector<Eigen::Vector3d> lo(partition.n_subdomains, Eigen::Vector3d::Constant(1e300));
@@ -298,12 +295,10 @@ TEST(GeneralizedInverse, FixingDofsVersusRegularizationMeasurement)
 {
   const auto m = distorted_box(6);
   const decomposition::Decomposition decomp(m, decomposition::partition_structured(m, {2, 1, 1}));
-  std::printf("\n%-16s %14s %14s %12s %12s\n", "method", "|KK+K-K|/|K|", "factor nnz", "setup (s)",
-              "apply (s)");
+  std::printf("\n%-16s %14s %14s %12s %12s\n", "method", "|KK+K-K|/|K|", "factor nnz", "setup (s)", "apply (s)");
   for (auto method : {GeneralizedInverseMethod::fixing_dofs, GeneralizedInverseMethod::regularization})
   {
-    decomposition::SubdomainSystem system(decomp, {fem::Material{2e11, 0.3}}, fem::Kinematics::linear,
-                                          method);
+    decomposition::SubdomainSystem system(decomp, {fem::Material{2e11, 0.3}}, fem::Kinematics::linear, method);
     auto start = std::chrono::steady_clock::now();
     system.update(la::Vector::Zero(decomp.n_primal()));
     const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -133,8 +133,9 @@ TEST(EquationRows, DegenerateEquationsAreNamed)
   const fem::ConstrainedDofs clamp = fem::collect_dirichlet(m, {{"xmin", {0.0, 0.0, 0.0}}});
   const int32_t a = node_at(m, 1, 0.5, 0.5), b = node_at(m, 2, 1, 1), c = node_at(m, 1.5, 0, 0);
   const int32_t s = node_at(m, 0, 0.5, 0.5), t = node_at(m, 0, 0, 0);
-  const auto build = [&](const decomposition::Decomposition& d, const std::vector<fem::LinearEquation>& equations)
-  { return [&d, &clamp, equations] { decomposition::build_equality_rows(d, clamp, equations); }; };
+  const auto build = [&](const decomposition::Decomposition& d, const std::vector<fem::LinearEquation>& equations) {
+    return [&d, &clamp, equations] { decomposition::build_equality_rows(d, clamp, equations); };
+  };
 
   // Every term on a support: repeats the clamp.
   std::string message = error_of(build(decomp, {{{{s, 0, 1.0}, {t, 1, -2.0}}}}));
@@ -170,10 +171,13 @@ TEST(EquationRows, DegenerateEquationsAreNamed)
   EXPECT_EQ(rows.n_equations, 1);
   // The elimination of the undecomposed solves refuses the same equations.
   const int64_t n = 3 * m.n_nodes();
-  message = error_of(
-      [&] { fem::ConstraintElimination(n, clamp, {{{{a, 0, 1.0}, {b, 0, -1.0}}}, {{{a, 0, -2.5}, {b, 0, 2.5}}}}, &m); });
+  message = error_of([&] {
+    fem::ConstraintElimination(n, clamp, {{{{a, 0, 1.0}, {b, 0, -1.0}}}, {{{a, 0, -2.5}, {b, 0, 2.5}}}}, &m);
+  });
   EXPECT_NE(message.find("linear equation 2 of 2"), std::string::npos) << message;
-  message = error_of([&] { fem::ConstraintElimination(n, clamp, {{{{a, 0, 1.0}, {s, 0, -1.0}}}, {{{a, 0, 3.0}}}}, &m); });
+  message = error_of([&] {
+    fem::ConstraintElimination(n, clamp, {{{{a, 0, 1.0}, {s, 0, -1.0}}}, {{{a, 0, 3.0}}}}, &m);
+  });
   EXPECT_NE(message.find("linear equation 2 of 2"), std::string::npos) << message;
   message = error_of([&] { fem::ConstraintElimination(n, clamp, {{{{s, 0, 1.0}}}}, &m); });
   EXPECT_NE(message.find("no term on a free degree of freedom"), std::string::npos) << message;

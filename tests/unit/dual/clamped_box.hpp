@@ -27,14 +27,14 @@ inline std::unique_ptr<ClampedBox> make_clamped_box()
   p.ny = 2;
   p.nz = 2;
   s->mesh = mesh::generate_box(p);
-  s->decomp = std::make_unique<decomposition::Decomposition>(
-      s->mesh, decomposition::partition_structured(s->mesh, {3, 1, 1}));
-  s->system = std::make_unique<decomposition::SubdomainSystem>(
-      *s->decomp, std::vector<fem::Material>{fem::Material{}}, fem::Kinematics::linear,
-      decomposition::GeneralizedInverseMethod::fixing_dofs);
+  s->decomp =
+      std::make_unique<decomposition::Decomposition>(s->mesh, decomposition::partition_structured(s->mesh, {3, 1, 1}));
+  s->system = std::make_unique<decomposition::SubdomainSystem>(*s->decomp, std::vector<fem::Material>{fem::Material{}},
+                                                               fem::Kinematics::linear,
+                                                               decomposition::GeneralizedInverseMethod::fixing_dofs);
   s->system->update(la::Vector::Zero(s->decomp->n_primal()));
-  s->equality = decomposition::build_equality_rows(
-      *s->decomp, fem::collect_dirichlet(s->mesh, {{"xmin", {0.0, 0.0, 0.0}}}));
+  s->equality =
+      decomposition::build_equality_rows(*s->decomp, fem::collect_dirichlet(s->mesh, {{"xmin", {0.0, 0.0, 0.0}}}));
   return s;
 }
 } // namespace feticon::test

@@ -50,8 +50,7 @@ std::unique_ptr<Setup> make_setup(int extra)
     }
     Eigen::SparseMatrix<double, Eigen::RowMajor> B(extra, 3 * mesh.n_nodes());
     B.setFromTriplets(triplets.begin(), triplets.end());
-    s->rows.append(decomposition::rows_from_global(*s->box->decomp, B, la::Vector::Zero(extra)),
-                   s->n_equality);
+    s->rows.append(decomposition::rows_from_global(*s->box->decomp, B, la::Vector::Zero(extra)), s->n_equality);
   }
   s->feti = std::make_unique<dual::FetiOperators>(*s->box->system, s->rows);
   return s;

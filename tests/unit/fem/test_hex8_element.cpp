@@ -36,8 +36,7 @@ NodeCoords apply_map(const NodeCoords& X, const Eigen::Matrix3d& grad, const Eig
 ElementVector internal_force(const NodeCoords& X, const NodeCoords& u, const fem::Material& mat)
 {
   ElementVector f;
-  fem::hex8_element(X, u, mat, fem::Kinematics::total_lagrangian, fem::StiffnessKind::none, f,
-                    nullptr, 0);
+  fem::hex8_element(X, u, mat, fem::Kinematics::total_lagrangian, fem::StiffnessKind::none, f, nullptr, 0);
   return f;
 }
 
@@ -114,17 +113,16 @@ TEST(Hex8, ConsistentTangentMatchesFiniteDifference)
   for (int c : {0, 5})
   {
     const NodeCoords X = cell_coords(m, c);
-    const Eigen::Matrix3d grad = rotation(40 * M_PI / 180, Eigen::Vector3d(0.2, 1, 0.5)) *
-                                     Eigen::Vector3d(1.2, 0.9, 1.05).asDiagonal() -
-                                 Eigen::Matrix3d::Identity();
+    const Eigen::Matrix3d grad =
+        rotation(40 * M_PI / 180, Eigen::Vector3d(0.2, 1, 0.5)) * Eigen::Vector3d(1.2, 0.9, 1.05).asDiagonal() -
+        Eigen::Matrix3d::Identity();
     NodeCoords u = apply_map(X, grad, Eigen::Vector3d::Zero());
     for (int a = 0; a < 8; ++a)
       for (int i = 0; i < 3; ++i)
         u(a, i) += 0.02 * dist(gen);
     ElementVector f;
     ElementMatrix K;
-    fem::hex8_element(X, u, mat, fem::Kinematics::total_lagrangian, fem::StiffnessKind::tangent, f,
-                      &K, c);
+    fem::hex8_element(X, u, mat, fem::Kinematics::total_lagrangian, fem::StiffnessKind::tangent, f, &K, c);
     ElementMatrix K_fd;
     const double h = 1e-6 * u.norm();
     for (int j = 0; j < 24; ++j)
@@ -146,16 +144,13 @@ TEST(Hex8, MaterialStiffnessKernelIsRigidModesOfCurrentConfiguration)
   const auto m = test::distorted_patch();
   const fem::Material mat{2e11, 0.3};
   const NodeCoords X = cell_coords(m, 3);
-  const Eigen::Matrix3d grad = rotation(0.7, Eigen::Vector3d(1, 1, 0)) *
-                                   Eigen::Vector3d(1.1, 0.95, 1.0).asDiagonal() -
-                               Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d grad = rotation(0.7, Eigen::Vector3d(1, 1, 0)) * Eigen::Vector3d(1.1, 0.95, 1.0).asDiagonal() -
+      Eigen::Matrix3d::Identity();
   const NodeCoords u = apply_map(X, grad, Eigen::Vector3d::Zero());
   ElementVector f;
   ElementMatrix K_M, K_T;
-  fem::hex8_element(X, u, mat, fem::Kinematics::total_lagrangian, fem::StiffnessKind::material, f,
-                    &K_M, 3);
-  fem::hex8_element(X, u, mat, fem::Kinematics::total_lagrangian, fem::StiffnessKind::tangent, f,
-                    &K_T, 3);
+  fem::hex8_element(X, u, mat, fem::Kinematics::total_lagrangian, fem::StiffnessKind::material, f, &K_M, 3);
+  fem::hex8_element(X, u, mat, fem::Kinematics::total_lagrangian, fem::StiffnessKind::tangent, f, &K_T, 3);
   Eigen::Matrix<double, 24, 6> R = Eigen::Matrix<double, 24, 6>::Zero();
   for (int a = 0; a < 8; ++a)
   {
@@ -177,10 +172,8 @@ TEST(Hex8, LinearElementIsTotalLagrangianAtZero)
   ElementVector f;
   ElementMatrix K_lin, K_tl;
   const NodeCoords zero = NodeCoords::Zero();
-  fem::hex8_element(X, zero, mat, fem::Kinematics::linear, fem::StiffnessKind::tangent, f, &K_lin,
-                    6);
-  fem::hex8_element(X, zero, mat, fem::Kinematics::total_lagrangian, fem::StiffnessKind::tangent, f,
-                    &K_tl, 6);
+  fem::hex8_element(X, zero, mat, fem::Kinematics::linear, fem::StiffnessKind::tangent, f, &K_lin, 6);
+  fem::hex8_element(X, zero, mat, fem::Kinematics::total_lagrangian, fem::StiffnessKind::tangent, f, &K_tl, 6);
   EXPECT_LT((K_lin - K_tl).norm() / K_lin.norm(), 1e-14);
   NodeCoords u = NodeCoords::Random() * 1e-3;
   fem::hex8_element(X, u, mat, fem::Kinematics::linear, fem::StiffnessKind::none, f, nullptr, 6);

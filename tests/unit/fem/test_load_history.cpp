@@ -42,10 +42,7 @@ fem::LoadStage box_stage(double p, double d, int increments)
   return stage;
 }
 
-double total_x(const la::Vector& f)
-{
-  return f(Eigen::seq(0, Eigen::last, 3)).sum();
-}
+double total_x(const la::Vector& f) { return f(Eigen::seq(0, Eigen::last, 3)).sum(); }
 
 bool identical(const la::Vector& a, const la::Vector& b)
 {

@@ -39,9 +39,8 @@ fem::ConstrainedDofs boundary_values(const mesh::HexMesh& m, const la::Vector& e
   return dofs;
 }
 
-const Eigen::Matrix3d gradient = (Eigen::Matrix3d() << 0.1, -0.05, 0.08, 0.03, -0.12, 0.02,
-                                  0.07, 0.04, 0.15)
-                                     .finished();
+const Eigen::Matrix3d gradient =
+    (Eigen::Matrix3d() << 0.1, -0.05, 0.08, 0.03, -0.12, 0.02, 0.07, 0.04, 0.15).finished();
 } // namespace
 
 // Reference: a linear displacement field is in the hex8 space, so the FE solution with its
@@ -52,8 +51,7 @@ TEST(Patch, LinearElementReproducesLinearField)
   const fem::Material mat{2e11, 0.3};
   const la::Vector exact = linear_field(m, gradient, Eigen::Vector3d(0.01, -0.02, 0.03));
   fem::Assembler assembler(m, fem::whole_mesh_domain(m), {mat}, fem::Kinematics::linear);
-  const la::SparseMatrix K = assembler.stiffness(la::Vector::Zero(exact.size()),
-                                                 fem::StiffnessKind::tangent);
+  const la::SparseMatrix K = assembler.stiffness(la::Vector::Zero(exact.size()), fem::StiffnessKind::tangent);
   const fem::DirichletElimination elim(exact.size(), boundary_values(m, exact));
   la::CholmodFactor factor;
   factor.factorize(elim.reduce_matrix(K));

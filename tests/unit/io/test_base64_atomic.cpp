@@ -91,12 +91,12 @@ TEST(AtomicFile, FailingCallbackKeepsTheOldFile)
   const fs::path directory = fresh_directory("atomic_callback_throws");
   const fs::path path = directory / "out.txt";
   write_file_atomically(path, "complete");
-  EXPECT_THROW(write_file_atomically(path,
-                                     [](std::ostream& out)
-                                     {
-                                       out << "half";
-                                       throw std::runtime_error("writer failed");
-                                     }),
+  EXPECT_THROW(write_file_atomically(
+                   path,
+                   [](std::ostream& out) {
+    out << "half";
+    throw std::runtime_error("writer failed");
+                   }),
                std::runtime_error);
   EXPECT_EQ(read(path), "complete");
   EXPECT_EQ(listing(directory), (std::vector<std::string>{"out.txt"}));
@@ -120,7 +120,6 @@ TEST(AtomicFile, UnwritablePathThrowsNamingIt)
   // A directory in place of the file: the rename fails.
   fs::create_directories(directory / "is_a_directory" / "child");
   EXPECT_THROW(write_file_atomically(directory / "is_a_directory", "content"), Error);
-  EXPECT_EQ(listing(directory),
-            (std::vector<std::string>{"is_a_directory", "is_a_directory/child", "plain_file"}));
+  EXPECT_EQ(listing(directory), (std::vector<std::string>{"is_a_directory", "is_a_directory/child", "plain_file"}));
 }
 } // namespace feticon::io

@@ -116,7 +116,8 @@ TEST(CalculixDeck, HoldsTheModel)
     }
     else if (keyword.rfind("*SURFACE,", 0) == 0)
     {
-      const std::string name = keyword.substr(keyword.find("NAME=") + 5, keyword.find(", TYPE") - keyword.find("NAME=") - 5);
+      const std::string name =
+          keyword.substr(keyword.find("NAME=") + 5, keyword.find(", TYPE") - keyword.find("NAME=") - 5);
       for (const auto& f : lines)
       {
         const auto& cell = elements.at(std::stoi(f[0]));

@@ -104,14 +104,8 @@ std::vector<DeckOutputRequest> two_blocks_requests(int line)
 }
 
 /// CalculiX's gauss3d2 (ccx_2.20/src/gauss.f): the C3D8 integration points, xi fastest.
-const std::array<std::array<double, 3>, 8> calculix_gauss3d2 = {{{-1, -1, -1},
-                                                                 {+1, -1, -1},
-                                                                 {-1, +1, -1},
-                                                                 {+1, +1, -1},
-                                                                 {-1, -1, +1},
-                                                                 {+1, -1, +1},
-                                                                 {-1, +1, +1},
-                                                                 {+1, +1, +1}}};
+const std::array<std::array<double, 3>, 8> calculix_gauss3d2 = {
+    {{-1, -1, -1}, {+1, -1, -1}, {-1, +1, -1}, {+1, +1, -1}, {-1, -1, +1}, {+1, -1, +1}, {-1, +1, +1}, {+1, +1, +1}}};
 
 /// feticon's Gauss point with the coordinates of CalculiX's point j (signs of +-1/sqrt(3)).
 int feticon_point(int j)
@@ -193,9 +187,10 @@ TEST(DatWriter, ReproducesWhatCcxWrites)
     ASSERT_EQ(warnings.size(), s == 1 ? 0u : 1u);
     if (s != 1)
     {
-      EXPECT_EQ(warnings[0], "two_blocks_dat.inp:" + std::to_string(line + 2) +
-                                 ": *CONTACT PRINT: CDIS: tang1, tang2 (tangential relative "
-                                 "displacements) are not computed by feticon, printed as 0");
+      EXPECT_EQ(warnings[0],
+                "two_blocks_dat.inp:" + std::to_string(line + 2) +
+                    ": *CONTACT PRINT: CDIS: tang1, tang2 (tangential relative "
+                    "displacements) are not computed by feticon, printed as 0");
     }
   }
   writer.close();
@@ -243,8 +238,9 @@ TEST(DatWriter, IntegrationPointsInCalculixOrder)
   writer.close();
   const std::vector<DatBlock> blocks = parse_dat(read_text(path));
   ASSERT_EQ(blocks.size(), 1u);
-  EXPECT_EQ(blocks[0].header, " stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz) for set EALL "
-                              "and time  0.1000000E+01");
+  EXPECT_EQ(blocks[0].header,
+            " stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz) for set EALL "
+            "and time  0.1000000E+01");
   ASSERT_EQ(blocks[0].rows.size(), 8u);
   for (int j = 0; j < 8; ++j)
   {
@@ -277,8 +273,9 @@ TEST(DatWriter, TotalsLineIsTheSum)
   DatStep step;
   step.time = 0.25;
   step.reaction_force = rf;
-  writer.add_step(step, {{Kind::node_print, "FIX", {"RF"}, Totals::yes, "m.inp:5"},
-                         {Kind::node_print, "", {"RF"}, Totals::only, "m.inp:7"}});
+  writer.add_step(step,
+                  {{Kind::node_print, "FIX", {"RF"}, Totals::yes, "m.inp:5"},
+                   {Kind::node_print, "", {"RF"}, Totals::only, "m.inp:7"}});
   writer.close();
   const std::vector<DatBlock> blocks = parse_dat(read_text(path));
   ASSERT_EQ(blocks.size(), 3u);
@@ -293,8 +290,8 @@ TEST(DatWriter, TotalsLineIsTheSum)
     for (int k = 0; k < 3; ++k)
       EXPECT_NEAR(blocks[0].rows[r][1 + k], rf[3 * fix[r] + k], 5e-7 * std::abs(rf[3 * fix[r] + k]));
   }
-  for (const auto& [block, members] : {std::pair{&blocks[1], fix},
-                                       std::pair{&blocks[2], std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}}})
+  for (const auto& [block, members] :
+       {std::pair{&blocks[1], fix}, std::pair{&blocks[2], std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}}})
   {
     ASSERT_EQ(block->rows.size(), 1u);
     ASSERT_EQ(block->rows[0].size(), 3u); // no label column
@@ -346,8 +343,9 @@ TEST(DatWriter, WarnsOnceAboutWhatIsNotAvailable)
   ASSERT_EQ(blocks.size(), 4u); // U and CSTR at two times
   EXPECT_EQ(blocks[0].header, " displacements (vx,vy,vz) for set NALL and time  0.1000000E+01");
   EXPECT_EQ(blocks[0].rows.size(), 8u);
-  EXPECT_EQ(blocks[1].header, " contact stress (slave node,press,tang1,tang2) for all contact "
-                              "elements and time 0.1000000E+01");
+  EXPECT_EQ(blocks[1].header,
+            " contact stress (slave node,press,tang1,tang2) for all contact "
+            "elements and time 0.1000000E+01");
   ASSERT_EQ(blocks[1].rows.size(), 2u);
   EXPECT_EQ(blocks[1].rows[0], (std::vector<double>{2, 2.0, 0.0, 0.0})); // node label 2 = index 1
   EXPECT_EQ(blocks[1].rows[1], (std::vector<double>{3, 2.0, 0.0, 0.0}));

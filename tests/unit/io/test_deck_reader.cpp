@@ -34,12 +34,19 @@ fem::Problem punch_problem()
 {
   fem::Problem p;
   p.name = "punch";
-  mesh::append_mesh(p.mesh, mesh::generate_box({.origin = {0, -0.5, 0}, .lengths = {1, 0.5, 0.4}, .nx = 4, .ny = 2, .nz = 2,
-                                                .body_name = "base"}), "base_");
-  mesh::append_mesh(p.mesh, mesh::generate_box({.origin = {0, 0, 0}, .lengths = {0.5, 0.5, 0.4}, .nx = 3, .ny = 3, .nz = 2,
-                                                .body_name = "punch"}), "punch_");
+  mesh::append_mesh(
+      p.mesh,
+      mesh::generate_box(
+          {.origin = {0, -0.5, 0}, .lengths = {1, 0.5, 0.4}, .nx = 4, .ny = 2, .nz = 2, .body_name = "base"}),
+      "base_");
+  mesh::append_mesh(
+      p.mesh,
+      mesh::generate_box(
+          {.origin = {0, 0, 0}, .lengths = {0.5, 0.5, 0.4}, .nx = 3, .ny = 3, .nz = 2, .body_name = "punch"}),
+      "punch_");
   p.materials = {{2e11, 0.3}, {1e11, 0.25}};
-  p.dirichlet = {{"base_ymin", {0.0, 0.0, 0.0}}, {"punch_xmin", {0.0, std::nullopt, std::nullopt}},
+  p.dirichlet = {{"base_ymin", {0.0, 0.0, 0.0}},
+                 {"punch_xmin", {0.0, std::nullopt, std::nullopt}},
                  {"punch_ymax", {std::nullopt, -1e-4, std::nullopt}}};
   p.tractions = {{"punch_ymax", {0.0, -1e7, 0.0}}};
   p.contacts = {{"punch_ymin", "base_ymax"}};
@@ -173,7 +180,8 @@ TEST(DeckReader, ExportedDeckReadsBackAsTheProblem)
   EXPECT_EQ(q.materials[1].young, 1e11);
   EXPECT_EQ(q.materials[1].poisson, 0.25);
   // Loads: the writer's *CLOAD are the consistent forces of the traction.
-  EXPECT_LE((q.external_force() - p.external_force()).cwiseAbs().maxCoeff(), 1e-12 * p.external_force().cwiseAbs().maxCoeff());
+  EXPECT_LE((q.external_force() - p.external_force()).cwiseAbs().maxCoeff(),
+            1e-12 * p.external_force().cwiseAbs().maxCoeff());
   const fem::ConstrainedDofs cp = p.all_constrained_dofs(), cq = q.all_constrained_dofs();
   EXPECT_EQ(cp.dofs, cq.dofs);
   EXPECT_LE((cp.values - cq.values).cwiseAbs().maxCoeff(), 1e-16);
@@ -184,8 +192,9 @@ TEST(DeckReader, ExportedDeckReadsBackAsTheProblem)
   EXPECT_TRUE(q.contacts[0].slave_nodes.empty());
   // The writer's penalty interaction is reported, not dropped.
   ASSERT_FALSE(deck.info.warnings.empty());
-  EXPECT_TRUE(std::any_of(deck.info.warnings.begin(), deck.info.warnings.end(),
-                          [](const std::string& w) { return w.find("PRESSURE-OVERCLOSURE=LINEAR") != std::string::npos; }));
+  EXPECT_TRUE(std::any_of(deck.info.warnings.begin(), deck.info.warnings.end(), [](const std::string& w) {
+    return w.find("PRESSURE-OVERCLOSURE=LINEAR") != std::string::npos;
+  }));
   EXPECT_EQ(deck.info.node_labels.front(), 1);
   EXPECT_EQ(deck.info.node_labels.back(), p.mesh.n_nodes());
 }
@@ -219,8 +228,7 @@ TEST(DeckReader, KeywordsSetsSurfacesAndSteps)
   EXPECT_EQ(p.mesh.node_set("BOTH"), (std::vector<int32_t>{0, 1, 2, 3, 12, 13, 14, 15}));
   EXPECT_EQ(deck.info.element_sets.at("EALL"), (std::vector<int32_t>{0, 1}));
   // S1 of the upper cube is its bottom (z = 1), S2 of the lower its top: outward normals.
-  const auto normal = [&](const mesh::Face& f)
-  {
+  const auto normal = [&](const mesh::Face& f) {
     const Eigen::Vector3d x0 = p.mesh.nodes.row(f[0]), x1 = p.mesh.nodes.row(f[1]), x3 = p.mesh.nodes.row(f[3]);
     return Eigen::Vector3d((x1 - x0).cross(x3 - x0).normalized());
   };
@@ -296,7 +304,8 @@ TEST(DeckReader, MalformedDecksEndInOneLineNamingFileAndLine)
       {"2, 11, 12, 13, 14, 15, 16, 17, 18", "2, 11, 12, 13, 14, 15, 16, 17", "has 7 nodes, not 8"},
       {"2, 11, 12, 13, 14, 15, 16, 17, 18", "2, 11, 12, 13, 14, 15, 16, 17, 17",
        "element 2 is degenerate at its node 17"},
-      {"TYPE=C3D8, ELSET=lower", "TYPE=C3D10, ELSET=lower", "two_cubes.inp:21: *ELEMENT: element type C3D10 is not implemented"},
+      {"TYPE=C3D8, ELSET=lower", "TYPE=C3D10, ELSET=lower",
+       "two_cubes.inp:21: *ELEMENT: element type C3D10 is not implemented"},
       {"upper_bottom, lower_top", "lower_top, lower_top", "slave and master are the same surface 'LOWER_TOP'"},
       {"lower, s2", "nothere, s2", "two_cubes.inp:42:1: *SURFACE: no element set 'NOTHERE'"},
       {"15, 0, 0, 2", "15, 0, zero, 2", "two_cubes.inp:17:8: *NODE: 'zero' is not a finite number"},
@@ -314,13 +323,15 @@ TEST(DeckReader, MalformedDecksEndInOneLineNamingFileAndLine)
     ASSERT_NE(at, std::string::npos) << c.from;
     text.replace(at, c.from.size(), c.to);
     const std::string message = error_of(write(dir, "two_cubes.inp", text));
-    EXPECT_NE(message.find(c.expected), std::string::npos) << "expected '" << c.expected << "', got '" << message << "'";
+    EXPECT_NE(message.find(c.expected), std::string::npos)
+        << "expected '" << c.expected << "', got '" << message << "'";
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }
   // Circular includes and an empty file.
   write(dir, "a.inp", "*INCLUDE, INPUT=b.inp\n");
   write(dir, "b.inp", "*INCLUDE, INPUT=a.inp\n");
-  EXPECT_NE(error_of(dir / "a.inp").find("b.inp:1: *INCLUDE: circular *INCLUDE"), std::string::npos) << error_of(dir / "a.inp");
+  EXPECT_NE(error_of(dir / "a.inp").find("b.inp:1: *INCLUDE: circular *INCLUDE"), std::string::npos)
+      << error_of(dir / "a.inp");
   EXPECT_NE(error_of(write(dir, "empty.inp", "** nothing\n")).find("has no keyword line"), std::string::npos);
   EXPECT_NE(error_of(dir / "absent.inp").find("does not exist"), std::string::npos);
 }

@@ -241,8 +241,7 @@ TEST(FrdWriter, ReproducesWhatCcxWrites)
   writer.close();
 
   // Compare record by record.
-  auto comparable = [](const std::vector<std::string>& lines)
-  {
+  auto comparable = [](const std::vector<std::string>& lines) {
     std::vector<std::string> out;
     for (std::size_t i = 0; i < lines.size(); ++i)
     {
@@ -364,8 +363,7 @@ TEST(FrdWriter, WritesKnownValuesStepByStep)
       for (int k = 0; k < 3; ++k)
         EXPECT_NEAR(frd.blocks[3 * s].values[i][k], u[3 * i + k], tolerance * std::abs(u[3 * i + k]));
       for (int k = 0; k < 6; ++k)
-        EXPECT_NEAR(frd.blocks[3 * s + 1].values[i][k], stress[6 * i + k],
-                    tolerance * std::abs(stress[6 * i + k]));
+        EXPECT_NEAR(frd.blocks[3 * s + 1].values[i][k], stress[6 * i + k], tolerance * std::abs(stress[6 * i + k]));
       const std::vector<double>& contact = frd.blocks[3 * s + 2].values[i];
       ASSERT_EQ(contact.size(), 6u);
       EXPECT_EQ(contact[3], pressure[i]); // 3.5e7, 7e7, 1.05e8: exact in 6 digits
@@ -396,8 +394,7 @@ TEST(FrdWriter, RejectsWrongSizesAndLabels)
   }
   catch (const Error& error)
   {
-    EXPECT_NE(std::string(error.what()).find("displacement has 35 values, expected 12 nodes x 3"),
-              std::string::npos)
+    EXPECT_NE(std::string(error.what()).find("displacement has 35 values, expected 12 nodes x 3"), std::string::npos)
         << error.what();
   }
 }
@@ -454,8 +451,8 @@ TEST(FrdWriter, CgxReadsTheFile)
     writer.add_step(step);
   }
   std::ofstream(directory / "read.fbd") << "read known.frd\nds 1 e 3\nds 2 e 1\nquit\n";
-  const std::string command = "cd '" + directory.string() +
-                              "' && timeout 60 cgx -bg read.fbd > cgx.log 2>&1 < /dev/null";
+  const std::string command =
+      "cd '" + directory.string() + "' && timeout 60 cgx -bg read.fbd > cgx.log 2>&1 < /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << "see " << (directory / "cgx.log").string();
   std::ifstream log(directory / "cgx.log");
   const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());

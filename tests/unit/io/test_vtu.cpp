@@ -31,8 +31,8 @@ using test::fresh_directory;
 /// Runs tests/tools/read_vtu.py on `path` and parses its JSON output.
 nlohmann::json read_back(const fs::path& path)
 {
-  const std::string command = "/usr/bin/python3 '" + std::string(FETICON_SOURCE_DIR) +
-                              "/tests/tools/read_vtu.py' '" + path.string() + "'";
+  const std::string command =
+      "/usr/bin/python3 '" + std::string(FETICON_SOURCE_DIR) + "/tests/tools/read_vtu.py' '" + path.string() + "'";
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe)
     throw std::runtime_error("cannot run " + command);
@@ -46,17 +46,11 @@ nlohmann::json read_back(const fs::path& path)
   return nlohmann::json::parse(output);
 }
 
-double sum(const std::vector<double>& values)
-{
-  return std::accumulate(values.begin(), values.end(), 0.0);
-}
+double sum(const std::vector<double>& values) { return std::accumulate(values.begin(), values.end(), 0.0); }
 
 /// Relative difference; all sums below are of positive values, so there is no cancellation and
 /// the summation orders of C++ and numpy differ by a few ulps only.
-double relative_difference(double a, double b)
-{
-  return std::abs(a - b) / std::max(std::abs(b), 1e-300);
-}
+double relative_difference(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
 
 mesh::HexMesh small_box()
 {
@@ -79,8 +73,7 @@ std::vector<double> positive_values(std::size_t n, double scale)
 int count(const std::string& text, const std::string& pattern)
 {
   int n = 0;
-  for (std::size_t at = text.find(pattern); at != std::string::npos;
-       at = text.find(pattern, at + 1))
+  for (std::size_t at = text.find(pattern); at != std::string::npos; at = text.find(pattern, at + 1))
     ++n;
   return n;
 }
@@ -115,8 +108,7 @@ TEST(Vtu, RoundTripThroughAnIndependentReader)
 
   EXPECT_EQ(file["NumberOfPoints"], n_points);
   EXPECT_EQ(file["NumberOfCells"], n_cells);
-  const double points_sum =
-      std::accumulate(deformed.data(), deformed.data() + deformed.size(), 0.0);
+  const double points_sum = std::accumulate(deformed.data(), deformed.data() + deformed.size(), 0.0);
   EXPECT_EQ(file["points"]["Points"]["components"], 3);
   EXPECT_LT(relative_difference(file["points"]["Points"]["sum"], points_sum), 1e-12);
 
@@ -164,8 +156,7 @@ TEST(Vtu, RoundTripThroughAnIndependentReader)
   // Reference coordinates when no deformed points are given.
   write_vtu(path, mesh, nullptr, {}, {});
   const nlohmann::json reference = read_back(path);
-  const double reference_sum =
-      std::accumulate(mesh.nodes.data(), mesh.nodes.data() + mesh.nodes.size(), 0.0);
+  const double reference_sum = std::accumulate(mesh.nodes.data(), mesh.nodes.data() + mesh.nodes.size(), 0.0);
   EXPECT_LT(relative_difference(reference["points"]["Points"]["sum"], reference_sum), 1e-12);
 }
 
@@ -194,8 +185,7 @@ TEST(Vtu, UnwritablePathThrows)
 {
   const fs::path directory = fresh_directory("vtu_unwritable");
   std::ofstream(directory / "plain_file") << "x";
-  EXPECT_THROW(write_vtu(directory / "plain_file" / "out.vtu", small_box(), nullptr, {}, {}),
-               Error);
+  EXPECT_THROW(write_vtu(directory / "plain_file" / "out.vtu", small_box(), nullptr, {}, {}), Error);
 }
 
 TEST(Pvd, ListsExactlyTheStepsAddedAndLeavesNoTemporary)
@@ -216,15 +206,13 @@ TEST(Pvd, ListsExactlyTheStepsAddedAndLeavesNoTemporary)
   }
   EXPECT_EQ(series.n_steps(), 3);
   // 17 significant digits: the times read back exactly.
-  EXPECT_NE(read(directory / "series.pvd").find("timestep=\"0.10000000000000001\""),
-            std::string::npos);
+  EXPECT_NE(read(directory / "series.pvd").find("timestep=\"0.10000000000000001\""), std::string::npos);
 
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(directory))
     names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
-  EXPECT_EQ(names,
-            (std::vector<std::string>{"series.pvd", "step_0.vtu", "step_1.vtu", "step_2.vtu"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"series.pvd", "step_0.vtu", "step_1.vtu", "step_2.vtu"}));
   EXPECT_THROW(series.add(std::nan(""), "step_3.vtu"), Error);
   EXPECT_EQ(series.n_steps(), 3);
 }

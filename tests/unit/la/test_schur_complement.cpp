@@ -22,8 +22,7 @@ la::SparseMatrix grid_laplacian(int n, double contrast, double mass)
   std::vector<la::Triplet> t;
   auto node = [n](int i, int j) { return i * n + j; };
   auto weight = [&](int i, int j) { return std::pow(contrast, (i + 0.5 * j) / (1.5 * n)); };
-  auto edge = [&](int a, int b, double w)
-  {
+  auto edge = [&](int a, int b, double w) {
     t.emplace_back(a, a, w);
     t.emplace_back(b, b, w);
     t.emplace_back(a, b, -w);

@@ -42,8 +42,8 @@ TEST(Submatrix, SymmetricBlockReadsTheMirroredEntries)
     (i % 2 ? odd : even).push_back(i);
   for (int32_t i = 3; i < n; i += 5)
     some.push_back(i);
-  for (const auto& [rows, cols] : {std::pair{odd, even}, std::pair{even, odd}, std::pair{some, some},
-                                   std::pair{even, some}})
+  for (const auto& [rows, cols] :
+       {std::pair{odd, even}, std::pair{even, odd}, std::pair{some, some}, std::pair{even, some}})
   {
     const Matrix block(symmetric_block(lower, rows, cols));
     ASSERT_EQ(block.rows(), static_cast<Index>(rows.size()));

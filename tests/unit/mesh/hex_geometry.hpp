@@ -63,10 +63,7 @@ inline double cell_volume(const HexMesh& mesh, const Cell& cell)
   return volume;
 }
 
-inline Eigen::Vector3d point(const HexMesh& mesh, int32_t id)
-{
-  return mesh.nodes.row(id).transpose();
-}
+inline Eigen::Vector3d point(const HexMesh& mesh, int32_t id) { return mesh.nodes.row(id).transpose(); }
 
 /// Unit normal (x1 - x0) x (x3 - x0) of a face (the orientation convention of HexMesh).
 inline Eigen::Vector3d face_normal(const HexMesh& mesh, const Face& face)

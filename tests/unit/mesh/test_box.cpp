@@ -73,8 +73,7 @@ TEST(Box, SidesOnTheirPlanesWithOutwardNormals)
     outward[side.axis] = side.at_max ? 1 : -1;
     const auto& faces = mesh.face_set(side.name);
     const int n_cells[3] = {p.nx, p.ny, p.nz};
-    EXPECT_EQ(static_cast<int>(faces.size()),
-              n_cells[(side.axis + 1) % 3] * n_cells[(side.axis + 2) % 3]);
+    EXPECT_EQ(static_cast<int>(faces.size()), n_cells[(side.axis + 1) % 3] * n_cells[(side.axis + 2) % 3]);
     for (const Face& face : faces)
     {
       for (const int32_t id : face)
@@ -122,8 +121,7 @@ TEST(Box, RejectsBadParameters)
 TEST(MappedBlock, RejectsAnInvertedMap)
 {
   // x decreasing with i turns every cell inside out.
-  const GridMap mirrored = [](int32_t i, int32_t j, int32_t k)
-  { return Eigen::Vector3d(-i, j, k); };
+  const GridMap mirrored = [](int32_t i, int32_t j, int32_t k) { return Eigen::Vector3d(-i, j, k); };
   EXPECT_THROW(generate_mapped_block({2, 2, 2}, mirrored, "mirrored"), Error);
 }
 

@@ -24,18 +24,16 @@ namespace
 CrossSection notched_square()
 {
   CrossSection s{"plate", {0, 0}, {}};
-  s.curves = {{{1, 0}, "bottom"},
-              {{1, 0.5}, "right"},
-              {{0.5, 1}, "arc", true, {1, 1}},
-              {{0, 1}, "top"},
-              {{0, 0}, "left"}};
+  s.curves = {
+      {{1, 0}, "bottom"}, {{1, 0.5}, "right"}, {{0.5, 1}, "arc", true, {1, 1}}, {{0, 1}, "top"}, {{0, 0}, "left"}};
   return s;
 }
 
 TEST(CrossSection, AreaSetsAndOrientation)
 {
   const double thickness = 0.1;
-  const HexMesh mesh = extrude_cross_section(notched_square(), [](double, double) { return 0.05; }, thickness);
+  const HexMesh mesh = extrude_cross_section(
+      notched_square(), [](double, double) { return 0.05; }, thickness);
   ASSERT_GT(mesh.n_cells(), 100);
   EXPECT_EQ(mesh.n_bodies(), 1);
   // Every node belongs to a cell (Gmsh's node at the arc's centre does not).
@@ -59,8 +57,9 @@ TEST(CrossSection, AreaSetsAndOrientation)
     EXPECT_NEAR(std::hypot(mesh.nodes(n, 0) - 1, mesh.nodes(n, 1) - 1), 0.5, 1e-12);
 
   // Each side's faces point out of the plate; together they cover the side's length.
-  const std::map<std::string, Eigen::Vector3d> normals = {
-      {"bottom", {0, -1, 0}}, {"right", {1, 0, 0}}, {"top", {0, 1, 0}}, {"left", {-1, 0, 0}}, {"zmin", {0, 0, -1}}, {"zmax", {0, 0, 1}}};
+  const std::map<std::string, Eigen::Vector3d> normals = {{"bottom", {0, -1, 0}}, {"right", {1, 0, 0}},
+                                                          {"top", {0, 1, 0}},     {"left", {-1, 0, 0}},
+                                                          {"zmin", {0, 0, -1}},   {"zmax", {0, 0, 1}}};
   for (const auto& [set, normal] : normals)
   {
     double area = 0;
@@ -80,8 +79,10 @@ TEST(CrossSection, AreaSetsAndOrientation)
   }
   for (const Face& f : mesh.face_set("arc"))
   {
-    const Eigen::Vector3d centre = 0.25 * (mesh.nodes.row(f[0]) + mesh.nodes.row(f[1]) + mesh.nodes.row(f[2]) + mesh.nodes.row(f[3]));
-    const Eigen::Vector3d n = (mesh.nodes.row(f[1]) - mesh.nodes.row(f[0])).cross(mesh.nodes.row(f[3]) - mesh.nodes.row(f[0]));
+    const Eigen::Vector3d centre =
+        0.25 * (mesh.nodes.row(f[0]) + mesh.nodes.row(f[1]) + mesh.nodes.row(f[2]) + mesh.nodes.row(f[3]));
+    const Eigen::Vector3d n =
+        (mesh.nodes.row(f[1]) - mesh.nodes.row(f[0])).cross(mesh.nodes.row(f[3]) - mesh.nodes.row(f[0]));
     EXPECT_LT(n.dot(centre - Eigen::Vector3d(1, 1, centre.z())), 0); // out of the plate: towards the centre
   }
 }
@@ -89,7 +90,8 @@ TEST(CrossSection, AreaSetsAndOrientation)
 TEST(CrossSection, SizeFieldGradesTheCells)
 {
   // Size 0.02 at the left side growing to 0.2 at the right: far more cells near x = 0.
-  const HexMesh mesh = extrude_cross_section(notched_square(), [](double x, double) { return 0.02 + 0.18 * x; }, 0.1);
+  const HexMesh mesh = extrude_cross_section(
+      notched_square(), [](double x, double) { return 0.02 + 0.18 * x; }, 0.1);
   int left = 0, right = 0;
   for (const Cell& cell : mesh.cells)
     (mesh.nodes(cell[0], 0) < 0.5 ? left : right) += 1;
@@ -102,7 +104,8 @@ TEST(CrossSection, SameMeshEveryTime)
   // before in the process (its random perturbations of the Delaunay points).
   auto size = [](double x, double) { return 0.02 + 0.1 * x; };
   const HexMesh first = extrude_cross_section(notched_square(), size, 0.1);
-  extrude_cross_section(notched_square(), [](double, double) { return 0.07; }, 0.1);
+  extrude_cross_section(
+      notched_square(), [](double, double) { return 0.07; }, 0.1);
   const HexMesh again = extrude_cross_section(notched_square(), size, 0.1);
   ASSERT_EQ(first.n_nodes(), again.n_nodes());
   EXPECT_EQ(first.nodes, again.nodes);
@@ -113,7 +116,9 @@ TEST(CrossSection, RefusesAnOpenLoop)
 {
   CrossSection s = notched_square();
   s.curves.back().end = {0, 0.1};
-  EXPECT_THROW(extrude_cross_section(s, [](double, double) { return 0.1; }, 0.1), Error);
+  EXPECT_THROW(extrude_cross_section(
+                   s, [](double, double) { return 0.1; }, 0.1),
+               Error);
 }
 
 TEST(MeshQuality, BoxCells)

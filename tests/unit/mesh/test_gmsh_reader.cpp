@@ -35,8 +35,8 @@ public:
   TempFolder()
   {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    _path = fs::temp_directory_path() /
-            ("feticon_gmsh_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    _path =
+        fs::temp_directory_path() / ("feticon_gmsh_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
     fs::remove_all(_path);
     fs::create_directories(_path);
   }
@@ -96,8 +96,8 @@ std::vector<int> boundary_tags(const gmsh::vectorpair& dim_tags)
 /// OCC box with transfinite curves (box.cells along each axis); hexahedra if `hexahedra`.
 int add_box(const BoxSpec& box, bool hexahedra = true)
 {
-  const int volume = gmsh::model::occ::addBox(box.origin.x(), box.origin.y(), box.origin.z(),
-                                              box.lengths.x(), box.lengths.y(), box.lengths.z());
+  const int volume = gmsh::model::occ::addBox(box.origin.x(), box.origin.y(), box.origin.z(), box.lengths.x(),
+                                              box.lengths.y(), box.lengths.z());
   gmsh::model::occ::synchronize();
   if (!hexahedra)
     return volume;
@@ -223,13 +223,13 @@ std::string read_error(const fs::path& path)
   return {};
 }
 
-#define EXPECT_MESSAGE(message, path, text)                                                        \
-  do                                                                                               \
-  {                                                                                                \
-    const std::string feticon_message_ = (message);                                                \
-    EXPECT_NE(feticon_message_.find((path).string()), std::string::npos) << feticon_message_;      \
-    EXPECT_NE(feticon_message_.find(text), std::string::npos) << feticon_message_;                 \
-    EXPECT_EQ(feticon_message_.find('\n'), std::string::npos) << feticon_message_;                 \
+#define EXPECT_MESSAGE(message, path, text)                                                                            \
+  do                                                                                                                   \
+  {                                                                                                                    \
+    const std::string feticon_message_ = (message);                                                                    \
+    EXPECT_NE(feticon_message_.find((path).string()), std::string::npos) << feticon_message_;                          \
+    EXPECT_NE(feticon_message_.find(text), std::string::npos) << feticon_message_;                                     \
+    EXPECT_EQ(feticon_message_.find('\n'), std::string::npos) << feticon_message_;                                     \
   } while (false)
 
 struct FaceSetCase

@@ -69,7 +69,13 @@ protected:
 
   HexMesh get(const std::string& key, bool& hit)
   {
-    return cached_mesh(location, key, [this] { ++builds; return test_mesh(); }, &hit);
+    return cached_mesh(
+        location, key,
+        [this] {
+      ++builds;
+      return test_mesh();
+        },
+        &hit);
   }
 
   fs::path folder;
@@ -122,7 +128,9 @@ TEST_F(MeshCache, DamagedEntriesAreRebuiltAndReplaced)
 TEST_F(MeshCache, FailedBuildStoresNothing)
 {
   bool hit = true;
-  EXPECT_THROW(cached_mesh(location, "bad", [] () -> HexMesh { throw Error("no mesh"); }, &hit), Error);
+  EXPECT_THROW(cached_mesh(
+                   location, "bad", []() -> HexMesh { throw Error("no mesh"); }, &hit),
+               Error);
   EXPECT_FALSE(fs::exists(folder) && !fs::is_empty(folder));
 }
 

@@ -69,8 +69,8 @@ TEST(OctantBall, BoundaryFacesLieOnTheirSurfacesAndPointOutward)
     const std::vector<Face>* faces;
     int axis; // 0, 1, 2: the plane x, y or d = 0; -1: the sphere
   };
-  for (const Surface& s : {Surface{&ball.symmetry_x, 0}, Surface{&ball.symmetry_y, 1}, Surface{&ball.flat, 2},
-                           Surface{&ball.outer, -1}})
+  for (const Surface& s :
+       {Surface{&ball.symmetry_x, 0}, Surface{&ball.symmetry_y, 1}, Surface{&ball.flat, 2}, Surface{&ball.outer, -1}})
   {
     ASSERT_FALSE(s.faces->empty());
     for (const Face& f : *s.faces)

@@ -41,19 +41,17 @@ private:
 };
 
 /// A one-stage history of n equal load steps (no loads: the scripts need none).
-fem::LoadHistory equal_steps(int n)
-{
-  return fem::LoadHistory({}, {{la::Vector(), la::Vector(), n}});
-}
+fem::LoadHistory equal_steps(int n) { return fem::LoadHistory({}, {{la::Vector(), la::Vector(), n}}); }
 } // namespace
 
 TEST(LoadStepping, RecordsEveryIterationAndCallsBackAfterConvergedSteps)
 {
-  ScriptedPhases phases([](int step, int k)
-                        { return k == step + 1 ? IterationOutcome::step_converged() : IterationOutcome::next(); });
+  ScriptedPhases phases(
+      [](int step, int k) { return k == step + 1 ? IterationOutcome::step_converged() : IterationOutcome::next(); });
   ContactSolution out;
   std::vector<int> called_back;
-  run_load_steps(phases, equal_steps(2), 1, 10, out, [&](int step, const ContactSolution&) { called_back.push_back(step); });
+  run_load_steps(phases, equal_steps(2), 1, 10, out,
+                 [&](int step, const ContactSolution&) { called_back.push_back(step); });
   EXPECT_TRUE(out.converged);
   EXPECT_TRUE(out.reason.empty());
   ASSERT_EQ(out.steps.size(), 2u);
@@ -66,15 +64,16 @@ TEST(LoadStepping, RecordsEveryIterationAndCallsBackAfterConvergedSteps)
   EXPECT_EQ(out.history[4].load_step, 2);
   EXPECT_EQ(out.history[4].iteration, 3);
   EXPECT_EQ(called_back, (std::vector<int>{1, 2}));
-  EXPECT_EQ(phases.calls, (std::vector<std::string>{"begin 1 0.50", "end 1 converged", "begin 2 1.00", "end 2 converged"}));
+  EXPECT_EQ(phases.calls,
+            (std::vector<std::string>{"begin 1 0.50", "end 1 converged", "begin 2 1.00", "end 2 converged"}));
 }
 
 TEST(LoadStepping, UnrecordedConvergenceKeepsTheLastRecordedIteration)
 {
   // The primal penalty's small-displacement loop: iteration 3 finds the active set of
   // iteration 2 consistent without solving.
-  ScriptedPhases phases([](int, int k)
-                        { return k == 3 ? IterationOutcome::step_converged(false) : IterationOutcome::next(); });
+  ScriptedPhases phases(
+      [](int, int k) { return k == 3 ? IterationOutcome::step_converged(false) : IterationOutcome::next(); });
   ContactSolution out;
   run_load_steps(phases, equal_steps(1), 1, 10, out);
   EXPECT_TRUE(out.converged);
@@ -84,8 +83,9 @@ TEST(LoadStepping, UnrecordedConvergenceKeepsTheLastRecordedIteration)
 
 TEST(LoadStepping, StopsWithTheReasonOfAFailedIteration)
 {
-  ScriptedPhases phases([](int step, int k)
-                        { return step == 2 && k == 2 ? IterationOutcome::stop("QP failed", false) : IterationOutcome::next(); });
+  ScriptedPhases phases([](int step, int k) {
+    return step == 2 && k == 2 ? IterationOutcome::stop("QP failed", false) : IterationOutcome::next();
+  });
   ContactSolution out;
   int called_back = 0;
   run_load_steps(phases, equal_steps(3), 2, 10, out, [&](int, const ContactSolution&) { ++called_back; });

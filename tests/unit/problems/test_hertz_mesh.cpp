@@ -22,8 +22,8 @@ namespace
 using mesh::Cell;
 using mesh::Face;
 using mesh::HexMesh;
-using mesh::MeshQuality;
 using mesh::mesh_quality;
+using mesh::MeshQuality;
 namespace test = mesh::test;
 
 /// Hertz contact half-width of the steel cylinder of section 9 (m).
@@ -67,8 +67,7 @@ double chord_segments_area(const HexMesh& mesh, double radius)
     double chord = 0;
     for (int a = 0; a < 4; ++a)
       for (int b = 0; b < a; ++b)
-        chord = std::max(
-            chord, (mesh.nodes.row(face[a]).head<2>() - mesh.nodes.row(face[b]).head<2>()).norm());
+        chord = std::max(chord, (mesh.nodes.row(face[a]).head<2>() - mesh.nodes.row(face[b]).head<2>()).norm());
     const double theta = 2 * std::asin(chord / (2 * radius));
     area += radius * radius / 2 * (theta - std::sin(theta));
   }
@@ -110,8 +109,7 @@ TEST_P(HertzMesh, SetsLieOnTheirBoundaries)
     std::function<double(const Eigen::Vector3d&)> distance;
   };
   const std::vector<Expected> expected = {
-      {"cylinder_contact", 0,
-       [&](const Eigen::Vector3d& x) { return std::hypot(x[0], x[1] - R) - R; }},
+      {"cylinder_contact", 0, [&](const Eigen::Vector3d& x) { return std::hypot(x[0], x[1] - R) - R; }},
       {"block_contact", 1, [](const Eigen::Vector3d& x) { return x[1]; }},
       {"load", 0, [&](const Eigen::Vector3d& x) { return x[1] - R; }},
       {"support", 1, [&](const Eigen::Vector3d& x) { return x[1] + p.block_depth; }},
@@ -210,8 +208,8 @@ TEST_P(HertzMesh, ContactMeshesDoNotMatch)
       continue;
     ++n_slave;
     const auto above = master_x.lower_bound(x);
-    const bool coincident = (above != master_x.end() && *above - x < 1e-9) ||
-                            (above != master_x.begin() && x - *std::prev(above) < 1e-9);
+    const bool coincident =
+        (above != master_x.end() && *above - x < 1e-9) || (above != master_x.begin() && x - *std::prev(above) < 1e-9);
     n_coincident += coincident;
   }
   // master_ratio = 1.3 = 13/10: in the uniform zone one slave node in 13 meets a master node, so
@@ -268,12 +266,9 @@ TEST_P(HertzMeshRefinement, AreaErrorIsSmallAndSecondOrder)
 TEST_P(HertzMeshRefinement, ContactZoneResolution)
 {
   const HertzMeshKind kind = GetParam();
-  const ContactZoneSummary slave1 =
-      summarize_contact_zone(hertz(1, kind), "cylinder_contact", half_width);
-  const ContactZoneSummary slave2 =
-      summarize_contact_zone(hertz(2, kind), "cylinder_contact", half_width);
-  const ContactZoneSummary slave4 =
-      summarize_contact_zone(hertz(4, kind), "cylinder_contact", half_width);
+  const ContactZoneSummary slave1 = summarize_contact_zone(hertz(1, kind), "cylinder_contact", half_width);
+  const ContactZoneSummary slave2 = summarize_contact_zone(hertz(2, kind), "cylinder_contact", half_width);
+  const ContactZoneSummary slave4 = summarize_contact_zone(hertz(4, kind), "cylinder_contact", half_width);
   const ContactZoneSummary master1 = summarize_contact_zone(hertz(1, kind), "block_contact", half_width);
   // ALGORITHMS.md section 9: cells of at most a/10 in the contact zone, i.e. >= 20 across 2a
   // (>= 10 across the modelled half); twice as many per refinement.
@@ -290,8 +285,7 @@ TEST_P(HertzMeshRefinement, ContactZoneResolution)
   EXPECT_LT(slave1.max_size / slave1.min_size, kind == HertzMeshKind::tensor ? 1.01 : 1.05);
 }
 
-INSTANTIATE_TEST_SUITE_P(Kind, HertzMeshRefinement,
-                         ::testing::Values(HertzMeshKind::graded, HertzMeshKind::tensor));
+INSTANTIATE_TEST_SUITE_P(Kind, HertzMeshRefinement, ::testing::Values(HertzMeshKind::graded, HertzMeshKind::tensor));
 
 TEST(HertzMeshQuality, GradedHasNoNeedleCells)
 {
@@ -333,8 +327,7 @@ TEST(HertzMeshSize, EstimateBeforeBuildingIsNearTheBuiltMesh)
 
 TEST(HertzMeshParametersCheck, RejectsBadValues)
 {
-  auto with = [](auto change)
-  {
+  auto with = [](auto change) {
     HertzMeshParameters p;
     change(p);
     return p;

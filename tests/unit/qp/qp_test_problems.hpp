@@ -50,8 +50,7 @@ inline la::Matrix random_orthogonal(int n, std::mt19937& generator)
 /// Random SPD A = V diag(lambda) V' with eigenvalues log-spaced in [1, condition]; random b;
 /// about `unbounded_fraction` of the bounds are -inf, the others scattered around the
 /// unconstrained minimizer A^{-1} b so that a good fraction becomes active.
-inline BoundQp random_bound_qp(int n, unsigned seed, double condition = 100.0,
-                               double unbounded_fraction = 0.2)
+inline BoundQp random_bound_qp(int n, unsigned seed, double condition = 100.0, double unbounded_fraction = 0.2)
 {
   std::mt19937 generator(seed);
   std::normal_distribution<double> normal;
@@ -70,9 +69,8 @@ inline BoundQp random_bound_qp(int n, unsigned seed, double condition = 100.0,
   const double spread = std::sqrt(unconstrained.squaredNorm() / n);
   qp.lower.resize(n);
   for (int i = 0; i < n; ++i)
-    qp.lower[i] = uniform(generator) < unbounded_fraction
-                      ? -std::numeric_limits<double>::infinity()
-                      : unconstrained[i] + 0.5 * spread * normal(generator);
+    qp.lower[i] = uniform(generator) < unbounded_fraction ? -std::numeric_limits<double>::infinity()
+                                                          : unconstrained[i] + 0.5 * spread * normal(generator);
   return qp;
 }
 
@@ -97,8 +95,7 @@ inline BoundQp obstacle_problem(int n)
 }
 
 /// sqrt(sum of squares) of the projected gradient g_P of x (x >= lower assumed).
-inline double projected_gradient_norm(const la::Vector& x, const la::Vector& g,
-                                      const la::Vector& lower)
+inline double projected_gradient_norm(const la::Vector& x, const la::Vector& g, const la::Vector& lower)
 {
   double sum = 0.0;
   for (la::Index i = 0; i < x.size(); ++i)

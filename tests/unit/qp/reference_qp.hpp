@@ -16,8 +16,7 @@
 
 namespace feticon::test
 {
-inline la::Vector reference_bound_qp(const la::Matrix& A, const la::Vector& b,
-                                     const la::Vector& lower)
+inline la::Vector reference_bound_qp(const la::Matrix& A, const la::Vector& b, const la::Vector& lower)
 {
   const la::Index n = b.size();
   la::Vector x = la::Vector::Zero(n).cwiseMax(lower);
@@ -25,8 +24,7 @@ inline la::Vector reference_bound_qp(const la::Matrix& A, const la::Vector& b,
   for (la::Index i = 0; i < n; ++i)
     working[i] = x[i] == lower[i];
   // Multipliers within round-off of zero are not released, to avoid cycling on them.
-  const double scale = A.cwiseAbs().maxCoeff() * (1.0 + x.cwiseAbs().maxCoeff()) +
-                       b.cwiseAbs().maxCoeff();
+  const double scale = A.cwiseAbs().maxCoeff() * (1.0 + x.cwiseAbs().maxCoeff()) + b.cwiseAbs().maxCoeff();
 
   for (int iteration = 0; iteration < 100 * (n + 10); ++iteration)
   {

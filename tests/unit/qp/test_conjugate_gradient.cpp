@@ -112,8 +112,7 @@ TEST(ConjugateGradient, IterationLimitAndInvalidInput)
   test::CountingOperator A(matrix);
   const la::Vector b = random_vector(50, 9);
   la::Vector x = la::Vector::Zero(50);
-  const qp::QpReport report =
-      qp::conjugate_gradient(A, b, x, {.rtol = 1e-10, .max_iterations = 2});
+  const qp::QpReport report = qp::conjugate_gradient(A, b, x, {.rtol = 1e-10, .max_iterations = 2});
   EXPECT_FALSE(report.converged);
   EXPECT_EQ(report.iterations, 2);
   EXPECT_NE(report.reason.find("maximum number of iterations"), std::string::npos);

@@ -24,8 +24,7 @@ class MatrixMarket : public testing::Test
 protected:
   void SetUp() override
   {
-    std::string pattern =
-        (std::filesystem::temp_directory_path() / "feticon_mm_XXXXXX").string();
+    std::string pattern = (std::filesystem::temp_directory_path() / "feticon_mm_XXXXXX").string();
     ASSERT_NE(mkdtemp(pattern.data()), nullptr);
     _directory = pattern;
   }
@@ -76,8 +75,9 @@ TEST_F(MatrixMarket, DenseRoundTripIsExact)
   ASSERT_EQ(back.size(), v.size());
   for (la::Index i = 0; i < v.size(); ++i)
     EXPECT_EQ(back[i], v[i]) << i;
-  EXPECT_EQ(la::read_matrix_market_dense(write("empty.mtx", "%%MatrixMarket matrix array "
-                                                            "real general\n0 1\n"))
+  EXPECT_EQ(la::read_matrix_market_dense(write("empty.mtx",
+                                               "%%MatrixMarket matrix array "
+                                               "real general\n0 1\n"))
                 .size(),
             0);
 }
@@ -86,22 +86,25 @@ TEST_F(MatrixMarket, DenseRoundTripIsExact)
 // duplicates of a coordinate file are summed (as Eigen's setFromTriplets does).
 TEST_F(MatrixMarket, SparseGeneralAndSymmetric)
 {
-  const la::SparseMatrix general = la::read_matrix_market_sparse(
-      write("g.mtx", "%%MatrixMarket matrix coordinate real general\n% comment\n\n2 3 4\n"
-                     "1 1 1.5\n2 3 -2\n1 3 4e1\n1 1 0.5\n"));
+  const la::SparseMatrix general =
+      la::read_matrix_market_sparse(write("g.mtx",
+                                          "%%MatrixMarket matrix coordinate real general\n% comment\n\n2 3 4\n"
+                                          "1 1 1.5\n2 3 -2\n1 3 4e1\n1 1 0.5\n"));
   la::Matrix expected(2, 3);
   expected << 2.0, 0.0, 40.0, 0.0, 0.0, -2.0;
   EXPECT_EQ(la::Matrix(general), expected);
 
-  const la::SparseMatrix lower = la::read_matrix_market_sparse(
-      write("s.mtx", "%%MatrixMarket matrix coordinate integer symmetric\r\n3 3 4\r\n"
-                     "1 1 4\r\n2 1 -1\r\n3 2 -1\r\n3 3 4\r\n"));
+  const la::SparseMatrix lower =
+      la::read_matrix_market_sparse(write("s.mtx",
+                                          "%%MatrixMarket matrix coordinate integer symmetric\r\n3 3 4\r\n"
+                                          "1 1 4\r\n2 1 -1\r\n3 2 -1\r\n3 3 4\r\n"));
   la::Matrix symmetric(3, 3);
   symmetric << 4, -1, 0, -1, 0, -1, 0, -1, 4;
   EXPECT_EQ(la::Matrix(lower), symmetric);
-  const la::SparseMatrix upper = la::read_matrix_market_sparse(
-      write("u.mtx", "%%MATRIXMARKET Matrix Coordinate Real Symmetric\n3 3 3\n1 1 4\n1 2 -1\n"
-                     "2 3 -1\n"));
+  const la::SparseMatrix upper =
+      la::read_matrix_market_sparse(write("u.mtx",
+                                          "%%MATRIXMARKET Matrix Coordinate Real Symmetric\n3 3 3\n1 1 4\n1 2 -1\n"
+                                          "2 3 -1\n"));
   symmetric(2, 2) = 0.0;
   EXPECT_EQ(la::Matrix(upper), symmetric);
 }
@@ -110,9 +113,10 @@ TEST_F(MatrixMarket, SparseGeneralAndSymmetric)
 // for unbounded components.
 TEST_F(MatrixMarket, InfinitiesAndCoordinateVectors)
 {
-  const la::Vector v = la::read_matrix_market_dense(
-      write("l.mtx", "%%MatrixMarket matrix array real general\n5 1\ninf\n-inf\nInf\n"
-                     "-Infinity\n  -1.25  \n"));
+  const la::Vector v =
+      la::read_matrix_market_dense(write("l.mtx",
+                                         "%%MatrixMarket matrix array real general\n5 1\ninf\n-inf\nInf\n"
+                                         "-Infinity\n  -1.25  \n"));
   ASSERT_EQ(v.size(), 5);
   EXPECT_EQ(v[0], infinity);
   EXPECT_EQ(v[1], -infinity);
@@ -120,9 +124,10 @@ TEST_F(MatrixMarket, InfinitiesAndCoordinateVectors)
   EXPECT_EQ(v[3], -infinity);
   EXPECT_EQ(v[4], -1.25);
 
-  const la::Vector c = la::read_matrix_market_dense(
-      write("c.mtx", "%%MatrixMarket matrix coordinate real general\n4 1 2\n2 1 -inf\n"
-                     "4 1 3\n"));
+  const la::Vector c =
+      la::read_matrix_market_dense(write("c.mtx",
+                                         "%%MatrixMarket matrix coordinate real general\n4 1 2\n2 1 -inf\n"
+                                         "4 1 3\n"));
   la::Vector expected(4);
   expected << 0.0, -infinity, 0.0, 3.0;
   EXPECT_EQ(c, expected);
@@ -173,14 +178,11 @@ TEST_F(MatrixMarket, MalformedFilesAreRejectedNamingTheLine)
   for (const Case& c : cases)
   {
     const std::string message = error_of(c.text, c.sparse);
-    EXPECT_NE(message.find(c.expected), std::string::npos)
-        << "expected '" << c.expected << "' in: " << message;
+    EXPECT_NE(message.find(c.expected), std::string::npos) << "expected '" << c.expected << "' in: " << message;
   }
 
   const std::string missing = (_directory / "missing.mtx").string();
   EXPECT_THROW(la::read_matrix_market_sparse(missing), Error);
   EXPECT_THROW(la::read_matrix_market_dense(missing), Error);
-  EXPECT_THROW(la::write_matrix_market_dense((_directory / "no/such/dir.mtx").string(),
-                                             la::Vector::Zero(1)),
-               Error);
+  EXPECT_THROW(la::write_matrix_market_dense((_directory / "no/such/dir.mtx").string(), la::Vector::Zero(1)), Error);
 }

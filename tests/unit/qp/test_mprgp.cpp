@@ -19,7 +19,7 @@ namespace
 int predicted_products(const qp::QpReport& report, int power_iterations, int refresh = 50)
 {
   return power_iterations + 1 + report.cg_steps + 2 * report.expansion_steps + report.expansion_fallbacks +
-         report.proportioning_steps + report.iterations / refresh;
+      report.proportioning_steps + report.iterations / refresh;
 }
 
 double largest_eigenvalue(const la::Matrix& A)
@@ -57,25 +57,24 @@ TEST(Mprgp, RandomProblemsSatisfyKktAtRequestedTolerance)
 {
   int active = 0, total = 0;
   for (const qp::MprgpExpansion expansion : expansions)
-  for (const int n : sizes)
-    for (const unsigned seed : seeds)
-    {
-      SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
-      const test::BoundQp qp = test::random_bound_qp(n, seed);
-      test::CountingOperator A(qp.A);
-      const double rtol = 1e-5;
-      qp::Mprgp mprgp(A, {.rtol = rtol, .expansion = expansion});
-      la::Vector x = la::Vector::Zero(n);
-      const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
-      ASSERT_TRUE(report.converged) << report.reason;
-      const double tol = rtol * qp.b.norm() + 1e-12 * qp.A.norm() * x.norm();
-      expect_kkt(qp, x, tol);
-      EXPECT_EQ(report.hessian_multiplications, A.applications);
-      EXPECT_NEAR(report.cost, 0.5 * x.dot(qp.A * x) - qp.b.dot(x),
-                  1e-10 * (1.0 + std::abs(report.cost)));
-      active += static_cast<int>((x.array() == qp.lower.array()).count());
-      total += n;
-    }
+    for (const int n : sizes)
+      for (const unsigned seed : seeds)
+      {
+        SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
+        const test::BoundQp qp = test::random_bound_qp(n, seed);
+        test::CountingOperator A(qp.A);
+        const double rtol = 1e-5;
+        qp::Mprgp mprgp(A, {.rtol = rtol, .expansion = expansion});
+        la::Vector x = la::Vector::Zero(n);
+        const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
+        ASSERT_TRUE(report.converged) << report.reason;
+        const double tol = rtol * qp.b.norm() + 1e-12 * qp.A.norm() * x.norm();
+        expect_kkt(qp, x, tol);
+        EXPECT_EQ(report.hessian_multiplications, A.applications);
+        EXPECT_NEAR(report.cost, 0.5 * x.dot(qp.A * x) - qp.b.dot(x), 1e-10 * (1.0 + std::abs(report.cost)));
+        active += static_cast<int>((x.array() == qp.lower.array()).count());
+        total += n;
+      }
   // The problems must exercise the bounds, or this test would be plain CG.
   EXPECT_GT(active, total / 5);
 }
@@ -87,21 +86,20 @@ TEST(Mprgp, RandomProblemsSatisfyKktAtRequestedTolerance)
 TEST(Mprgp, RandomProblemsMatchActiveSetReference)
 {
   for (const qp::MprgpExpansion expansion : expansions)
-  for (const int n : sizes)
-    for (const unsigned seed : seeds)
-    {
-      SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
-      const test::BoundQp qp = test::random_bound_qp(n, seed + 100);
-      const la::Vector reference = test::reference_bound_qp(qp.A, qp.b, qp.lower);
-      ASSERT_LE(test::projected_gradient_norm(reference, qp.A * reference - qp.b, qp.lower),
-                1e-12 * qp.b.norm());
-      test::CountingOperator A(qp.A);
-      qp::Mprgp mprgp(A, {.rtol = 1e-12, .expansion = expansion});
-      la::Vector x = la::Vector::Zero(n);
-      const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
-      ASSERT_TRUE(report.converged) << report.reason;
-      EXPECT_LE((x - reference).norm(), 1e-8 * reference.norm());
-    }
+    for (const int n : sizes)
+      for (const unsigned seed : seeds)
+      {
+        SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
+        const test::BoundQp qp = test::random_bound_qp(n, seed + 100);
+        const la::Vector reference = test::reference_bound_qp(qp.A, qp.b, qp.lower);
+        ASSERT_LE(test::projected_gradient_norm(reference, qp.A * reference - qp.b, qp.lower), 1e-12 * qp.b.norm());
+        test::CountingOperator A(qp.A);
+        qp::Mprgp mprgp(A, {.rtol = 1e-12, .expansion = expansion});
+        la::Vector x = la::Vector::Zero(n);
+        const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
+        ASSERT_TRUE(report.converged) << report.reason;
+        EXPECT_LE((x - reference).norm(), 1e-8 * reference.norm());
+      }
 }
 
 // Reference: Dostal & Schoberl (2005): with alpha_bar in (0, 2/||A||] every MPRGP step
@@ -113,31 +111,31 @@ TEST(Mprgp, CostDecreasesMonotonically)
   std::set<qp::MprgpStep> kinds;
   int fallbacks = 0;
   for (const qp::MprgpExpansion expansion : expansions)
-  for (const double condition : {1e2, 1e4}) // 1e4: projected CG steps that raise f
-  for (const int n : sizes)
-    for (const unsigned seed : seeds)
-    {
-      SCOPED_TRACE(name(expansion) + ", condition " + std::to_string(condition) + ", n = " + std::to_string(n) +
-                   ", seed = " + std::to_string(seed));
-      const test::BoundQp qp = test::random_bound_qp(n, seed + 200, condition);
-      test::CountingOperator A(qp.A);
-      std::vector<double> costs;
-      qp::MprgpOptions options{.rtol = 1e-10, .expansion = expansion, .alpha_bar = 1.8 / largest_eigenvalue(qp.A)};
-      options.monitor = [&](const qp::MprgpIterate& it) {
-        EXPECT_EQ(it.iteration, static_cast<int>(costs.size()));
-        costs.push_back(it.cost);
-        kinds.insert(it.step);
-      };
-      qp::Mprgp mprgp(A, options);
-      la::Vector x = la::Vector::Zero(n);
-      const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
-      ASSERT_TRUE(report.converged) << report.reason;
-      ASSERT_EQ(static_cast<int>(costs.size()), report.iterations + 1);
-      for (std::size_t k = 1; k < costs.size(); ++k)
-        EXPECT_LE(costs[k], costs[k - 1] + 1e-12 * std::abs(costs[k - 1])) << "step " << k;
-      EXPECT_EQ(mprgp.alpha_bar(), options.alpha_bar) << "no expansion may increase f";
-      fallbacks += report.expansion_fallbacks;
-    }
+    for (const double condition : {1e2, 1e4}) // 1e4: projected CG steps that raise f
+      for (const int n : sizes)
+        for (const unsigned seed : seeds)
+        {
+          SCOPED_TRACE(name(expansion) + ", condition " + std::to_string(condition) + ", n = " + std::to_string(n) +
+                       ", seed = " + std::to_string(seed));
+          const test::BoundQp qp = test::random_bound_qp(n, seed + 200, condition);
+          test::CountingOperator A(qp.A);
+          std::vector<double> costs;
+          qp::MprgpOptions options{.rtol = 1e-10, .expansion = expansion, .alpha_bar = 1.8 / largest_eigenvalue(qp.A)};
+          options.monitor = [&](const qp::MprgpIterate& it) {
+            EXPECT_EQ(it.iteration, static_cast<int>(costs.size()));
+            costs.push_back(it.cost);
+            kinds.insert(it.step);
+          };
+          qp::Mprgp mprgp(A, options);
+          la::Vector x = la::Vector::Zero(n);
+          const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
+          ASSERT_TRUE(report.converged) << report.reason;
+          ASSERT_EQ(static_cast<int>(costs.size()), report.iterations + 1);
+          for (std::size_t k = 1; k < costs.size(); ++k)
+            EXPECT_LE(costs[k], costs[k - 1] + 1e-12 * std::abs(costs[k - 1])) << "step " << k;
+          EXPECT_EQ(mprgp.alpha_bar(), options.alpha_bar) << "no expansion may increase f";
+          fallbacks += report.expansion_fallbacks;
+        }
   // The projected CG step does raise f on some of these problems: the fallback is exercised.
   EXPECT_GT(fallbacks, 0);
   EXPECT_EQ(kinds.count(qp::MprgpStep::cg), 1u);
@@ -157,8 +155,7 @@ TEST(Mprgp, ProductCountersFollowTheDocumentedFormula)
   ASSERT_TRUE(first.converged) << first.reason;
   ASSERT_GT(first.iterations, 50) << "the problem must be long enough to refresh g";
   const int power = qp::estimate_norm(A, 30).applications;
-  EXPECT_EQ(first.iterations,
-            first.cg_steps + first.expansion_steps + first.proportioning_steps);
+  EXPECT_EQ(first.iterations, first.cg_steps + first.expansion_steps + first.proportioning_steps);
   EXPECT_EQ(first.hessian_multiplications, predicted_products(first, power));
   EXPECT_EQ(first.hessian_multiplications + power, A.applications);
 
@@ -173,8 +170,7 @@ TEST(Mprgp, ProductCountersFollowTheDocumentedFormula)
   // Another refresh interval changes only the refresh term.
   const test::BoundQp small = test::random_bound_qp(30, 7);
   test::CountingOperator B(small.A);
-  qp::Mprgp refreshed(B, {.rtol = 1e-10, .alpha_bar = 1.0 / largest_eigenvalue(small.A),
-                          .gradient_refresh = 7});
+  qp::Mprgp refreshed(B, {.rtol = 1e-10, .alpha_bar = 1.0 / largest_eigenvalue(small.A), .gradient_refresh = 7});
   la::Vector z = la::Vector::Zero(30);
   const qp::QpReport third = refreshed.solve(small.b, small.lower, z);
   ASSERT_TRUE(third.converged) << third.reason;

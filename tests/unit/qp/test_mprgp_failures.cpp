@@ -42,8 +42,7 @@ TEST(MprgpFailure, IndefiniteOperatorInCgStepIsReported)
   test::CountingOperator A(matrix);
   qp::Mprgp mprgp(A, {});
   la::Vector x = la::Vector::Zero(2);
-  const qp::QpReport report = mprgp.solve(pair(0.0, 1.0),
-                                          la::Vector::Constant(2, -infinity), x);
+  const qp::QpReport report = mprgp.solve(pair(0.0, 1.0), la::Vector::Constant(2, -infinity), x);
   EXPECT_FALSE(report.converged);
   EXPECT_NE(report.reason.find("not positive definite"), std::string::npos) << report.reason;
   EXPECT_NE(report.reason.find("p'Ap"), std::string::npos) << report.reason;
@@ -58,8 +57,7 @@ TEST(MprgpFailure, IndefiniteOperatorInProportioningStepIsReported)
   test::CountingOperator A(matrix);
   qp::Mprgp mprgp(A, {.alpha_bar = 1.0});
   la::Vector x = la::Vector::Zero(2);
-  const qp::QpReport report =
-      mprgp.solve(pair(0.0, 1.0), la::Vector::Zero(2), x);
+  const qp::QpReport report = mprgp.solve(pair(0.0, 1.0), la::Vector::Zero(2), x);
   EXPECT_FALSE(report.converged);
   EXPECT_NE(report.reason.find("not positive definite"), std::string::npos) << report.reason;
   EXPECT_NE(report.reason.find("beta'A beta"), std::string::npos) << report.reason;
@@ -89,8 +87,7 @@ TEST(MprgpFailure, IterationLimitIsReported)
   const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
   EXPECT_FALSE(report.converged);
   EXPECT_EQ(report.iterations, 3);
-  EXPECT_NE(report.reason.find("maximum number of iterations (3)"), std::string::npos)
-      << report.reason;
+  EXPECT_NE(report.reason.find("maximum number of iterations (3)"), std::string::npos) << report.reason;
   EXPECT_GT(report.projected_gradient_norm, 1e-8 * qp.b.norm());
   EXPECT_TRUE((x.array() >= qp.lower.array()).all()) << "the last iterate stays feasible";
 }

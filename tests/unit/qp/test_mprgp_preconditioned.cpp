@@ -47,9 +47,9 @@ TEST(MprgpPreconditioned, SameMinimizerAndFewerStepsOnABadlyScaledProblem)
     const DenseOperator exact(problem.A.inverse());
     int steps[3];
     int k = 0;
-    for (const la::LinearOperator* M : {static_cast<const la::LinearOperator*>(nullptr),
-                                        static_cast<const la::LinearOperator*>(&jacobi),
-                                        static_cast<const la::LinearOperator*>(&exact)})
+    for (const la::LinearOperator* M :
+         {static_cast<const la::LinearOperator*>(nullptr), static_cast<const la::LinearOperator*>(&jacobi),
+          static_cast<const la::LinearOperator*>(&exact)})
     {
       qp::MprgpOptions options;
       options.rtol = 1e-12;
@@ -63,8 +63,7 @@ TEST(MprgpPreconditioned, SameMinimizerAndFewerStepsOnABadlyScaledProblem)
       EXPECT_TRUE((x.array() >= problem.lower.array()).all());
       steps[k++] = report.iterations;
     }
-    std::printf("seed %u: MPRGP steps none %d, Jacobi %d, exact inverse %d\n", seed, steps[0],
-                steps[1], steps[2]);
+    std::printf("seed %u: MPRGP steps none %d, Jacobi %d, exact inverse %d\n", seed, steps[0], steps[1], steps[2]);
     EXPECT_LT(steps[1], steps[0]);
   }
 }

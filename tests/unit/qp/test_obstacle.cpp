@@ -23,8 +23,7 @@ TEST(MprgpObstacle, ConvergesToActiveSetReference)
   const double lambda_min = 4.0 / (h * h) * std::pow(std::sin(std::numbers::pi * h / 2), 2);
 
   const la::Vector reference = test::reference_bound_qp(qp.A, qp.b, qp.lower);
-  const double reference_gp =
-      test::projected_gradient_norm(reference, qp.A * reference - qp.b, qp.lower);
+  const double reference_gp = test::projected_gradient_norm(reference, qp.A * reference - qp.b, qp.lower);
   ASSERT_LE(reference_gp, 1e-12 * qp.b.norm());
 
   test::CountingOperator A(qp.A);
@@ -32,15 +31,13 @@ TEST(MprgpObstacle, ConvergesToActiveSetReference)
   qp::Mprgp mprgp(A, {.rtol = rtol});
   la::Vector x = la::Vector::Zero(n);
   const qp::QpReport report = mprgp.solve(qp.b, qp.lower, x);
-  std::cout << "obstacle n = " << n << ", rtol = " << rtol << ": iterations "
-            << report.iterations << ", cg " << report.cg_steps << ", expansion "
-            << report.expansion_steps << ", proportioning " << report.proportioning_steps
-            << ", multiplications " << report.hessian_multiplications << " (of which "
-            << "power iterations " << report.hessian_multiplications -
-                   (1 + report.cg_steps + 2 * report.expansion_steps +
-                    report.proportioning_steps + report.iterations / 50)
-            << "), |g_P| " << report.projected_gradient_norm << ", cost " << report.cost
-            << '\n';
+  std::cout << "obstacle n = " << n << ", rtol = " << rtol << ": iterations " << report.iterations << ", cg "
+            << report.cg_steps << ", expansion " << report.expansion_steps << ", proportioning "
+            << report.proportioning_steps << ", multiplications " << report.hessian_multiplications << " (of which "
+            << "power iterations "
+            << report.hessian_multiplications -
+          (1 + report.cg_steps + 2 * report.expansion_steps + report.proportioning_steps + report.iterations / 50)
+            << "), |g_P| " << report.projected_gradient_norm << ", cost " << report.cost << '\n';
   ASSERT_TRUE(report.converged) << report.reason;
   EXPECT_EQ(report.hessian_multiplications, A.applications);
 

@@ -15,8 +15,7 @@ namespace
 {
 const double minus_infinity = -std::numeric_limits<double>::infinity();
 
-qp::QpReport solve_unbounded(const la::LinearOperator& A, const la::LinearOperator* M,
-                             const la::Vector& b)
+qp::QpReport solve_unbounded(const la::LinearOperator& A, const la::LinearOperator* M, const la::Vector& b)
 {
   qp::MprgpOptions options;
   options.rtol = 1e-12;

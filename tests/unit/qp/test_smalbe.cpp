@@ -65,8 +65,7 @@ Reference reference_solve(const EqualityQp& qp)
 {
   const la::Index n = qp.b.size(), m = qp.C.rows();
   const double K = 1e6 * qp.A.norm();
-  const la::Vector penalized =
-      test::reference_bound_qp(qp.A + K * qp.C.transpose() * qp.C, qp.b, qp.lower);
+  const la::Vector penalized = test::reference_bound_qp(qp.A + K * qp.C.transpose() * qp.C, qp.b, qp.lower);
   std::vector<la::Index> active;
   for (la::Index i = 0; i < n; ++i)
     if (penalized[i] <= qp.lower[i] + 1e-9 * (1 + std::abs(qp.lower[i])))
@@ -181,8 +180,7 @@ TEST(Smalbe, UpdatesOmegaAndMAsInAlgorithmsSection1)
   std::vector<Record> records;
   SmalbeOptions o = options(rho);
   o.M0 = 1e3; // loose first inner solves (M ~ 10 ||H||): M has to come down
-  o.monitor = [&](const SmalbeIterate& it)
-  { records.push_back({*it.x, *it.omega, it.M, it.lagrangian}); };
+  o.monitor = [&](const SmalbeIterate& it) { records.push_back({*it.x, *it.omega, it.M, it.lagrangian}); };
   Smalbe smalbe(p.Aop, p.C, o);
   la::Vector x = la::Vector::Zero(24);
   const SmalbeReport r = smalbe.solve(qp.b, qp.lower, x);
