@@ -130,6 +130,11 @@ expect "deck element type" "C3D10" -- "$(deck_variant 's/TYPE=C3D8/TYPE=C3D10/I'
 expect "deck face S7" "S7" -- "$(deck_variant '0,/, *S[1-6]/s//, S7/' s7)"
 expect "deck absent node" "not defined" -- "$(deck_variant 's/^ *1, *1, *2,/1, 1, 999,/' absent_node)"
 expect "deck without step" "STEP" -- "$(deck_variant '/^\*STEP/,$d' nostep)"
+# Labels beyond CalculiX's 32-bit range (io/result_labels.hpp): the line and the range, not a wrap.
+expect "deck node label beyond 32 bits" "outside 1..2147483647" -- \
+  "$(deck_variant 's/^       1,  1.00000e+00,  1.00000e+00/3000000000,  1.00000e+00,  1.00000e+00/' node_label)"
+expect "deck element label beyond 32 bits" "outside 1..2147483647" -- \
+  "$(deck_variant 's/^ *1, *1, *2,/2147483648, 1, 2,/' element_label)"
 printf '*INCLUDE, INPUT=loop.inp\n' > "$work/loop.inp"
 expect "deck circular include" "circular" -- "$work/loop.inp"
 
