@@ -1,0 +1,116 @@
+#include "fem/cell_element.hpp"
+
+#include "common/error.hpp"
+
+namespace feticon::fem
+{
+namespace
+{
+using Voigt = Eigen::Matrix<double, 6, 1>;
+
+/// Gradients with respect to X and w det J at one quadrature point; an inverted or flat cell
+/// is an error naming it.
+struct PointGeometry
+{
+  Eigen::MatrixX3d dN_dX;
+  double weight_det_j = 0;
+};
+
+PointGeometry point_geometry(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::Vector3d& xi, double weight,
+                             int64_t cell)
+{
+  const Eigen::MatrixX3d dN = shape_gradients(type, xi);
+  const Eigen::Matrix3d J = X.transpose() * dN; // dX_i / dxi_j
+  const double det = J.determinant();
+  FETICON_CHECK(det > 0,
+                "cell " << cell << " (" << mesh::cell_type(type).name << ") is inverted or flat: det(dX/dxi) = " << det
+                        << " at a quadrature point");
+  return {dN * J.inverse(), weight * det};
+}
+
+/// B_NL for the deformation gradient Fd (Fd = I: the linear B).
+Eigen::Matrix<double, 6, Eigen::Dynamic> strain_displacement(const Eigen::MatrixX3d& dN, const Eigen::Matrix3d& Fd)
+{
+  Eigen::Matrix<double, 6, Eigen::Dynamic> B(6, 3 * dN.rows());
+  for (Eigen::Index a = 0; a < dN.rows(); ++a)
+    for (int i = 0; i < 3; ++i)
+    {
+      const Eigen::Index col = 3 * a + i;
+      B(0, col) = Fd(i, 0) * dN(a, 0);
+      B(1, col) = Fd(i, 1) * dN(a, 1);
+      B(2, col) = Fd(i, 2) * dN(a, 2);
+      B(3, col) = Fd(i, 0) * dN(a, 1) + Fd(i, 1) * dN(a, 0);
+      B(4, col) = Fd(i, 1) * dN(a, 2) + Fd(i, 2) * dN(a, 1);
+      B(5, col) = Fd(i, 2) * dN(a, 0) + Fd(i, 0) * dN(a, 2);
+    }
+  return B;
+}
+
+/// The deformation gradient used in B (I for linear kinematics) and the strain, Voigt with
+/// engineering shears.
+std::pair<Eigen::Matrix3d, Voigt> deformation(const Eigen::MatrixX3d& dN, const Eigen::MatrixX3d& u,
+                                              Kinematics kinematics, int64_t cell)
+{
+  const Eigen::Matrix3d grad_u = u.transpose() * dN; // du_i / dX_j
+  Voigt strain;
+  if (kinematics == Kinematics::linear)
+  {
+    strain << grad_u(0, 0), grad_u(1, 1), grad_u(2, 2), grad_u(0, 1) + grad_u(1, 0), grad_u(1, 2) + grad_u(2, 1),
+        grad_u(2, 0) + grad_u(0, 2);
+    return {Eigen::Matrix3d::Identity(), strain};
+  }
+  const Eigen::Matrix3d Fd = Eigen::Matrix3d::Identity() + grad_u;
+  FETICON_CHECK(Fd.determinant() > 0,
+                "element " << cell << " is inverted in the deformed configuration (det F = " << Fd.determinant()
+                           << "); use more load steps or check the loads");
+  const Eigen::Matrix3d E = 0.5 * (Fd.transpose() * Fd - Eigen::Matrix3d::Identity());
+  strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(1, 2), 2 * E(2, 0);
+  return {Fd, strain};
+}
+} // namespace
+
+void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, const Material& material,
+                  Kinematics kinematics, StiffnessKind kind, Integration integration, Eigen::VectorXd& f,
+                  Eigen::MatrixXd* K, int64_t cell)
+{
+  const Eigen::Index n = 3 * X.rows();
+  const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
+  f.setZero(n);
+  if (kind != StiffnessKind::none)
+    K->setZero(n, n);
+  const QuadratureRule& rule = quadrature(type, integration);
+  for (size_t q = 0; q < rule.points.size(); ++q)
+  {
+    const PointGeometry geo = point_geometry(type, X, rule.points[q], rule.weights[q], cell);
+    const auto [Fd, strain] = deformation(geo.dN_dX, u, kinematics, cell);
+    // S = D E is St Venant-Kirchhoff's S = lambda tr(E) I + 2 mu E in Voigt form (engineering shears).
+    const Voigt S = D * strain;
+    const auto B = strain_displacement(geo.dN_dX, Fd);
+    f.noalias() += B.transpose() * S * geo.weight_det_j;
+    if (kind == StiffnessKind::none)
+      continue;
+    K->noalias() += B.transpose() * D * B * geo.weight_det_j;
+    if (kind == StiffnessKind::tangent && kinematics == Kinematics::total_lagrangian)
+    {
+      Eigen::Matrix3d St;
+      St << S(0), S(3), S(5), S(3), S(1), S(4), S(5), S(4), S(2);
+      const Eigen::MatrixXd G = geo.dN_dX * St * geo.dN_dX.transpose() * geo.weight_det_j;
+      for (Eigen::Index a = 0; a < X.rows(); ++a)
+        for (Eigen::Index b = 0; b < X.rows(); ++b)
+          for (int i = 0; i < 3; ++i)
+            (*K)(3 * a + i, 3 * b + i) += G(a, b);
+    }
+  }
+}
+
+std::vector<Voigt> cell_point_strains(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
+                                      Kinematics kinematics, Integration integration, int64_t cell)
+{
+  std::vector<Voigt> out;
+  const QuadratureRule& rule = quadrature(type, integration);
+  for (size_t q = 0; q < rule.points.size(); ++q)
+    out.push_back(
+        deformation(point_geometry(type, X, rule.points[q], rule.weights[q], cell).dN_dX, u, kinematics, cell).second);
+  return out;
+}
+} // namespace feticon::fem

@@ -1,0 +1,34 @@
+#pragma once
+/// @file The element of any cell type (mesh/cell_type.hpp): internal force and stiffness,
+/// linear and total Lagrangian, written once over the shape functions and quadrature of
+/// fem/reference_element.hpp. The formulation is hex8_element.hpp's (ALGORITHMS.md section 7):
+///   Fdef = I + sum_a u_a (x) grad_X N_a,  E = 1/2 (Fdef' Fdef - I),  S = lambda tr(E) I + 2 mu E,
+///   f_int = sum_gp B_NL' S_v w detJ,  K_M = sum_gp B_NL' D B_NL w detJ,
+///   K_G(a,b) = (grad N_a' S grad N_b) I_3 w detJ;
+/// the linear element is the same with Fdef = I in B and S = D eps(u). Element DOFs are
+/// node-major: dof 3a + i is component i of node a.
+
+#include "fem/hex8_element.hpp"
+#include "fem/material.hpp"
+#include "fem/reference_element.hpp"
+
+#include <Eigen/Dense>
+
+#include <cstdint>
+
+namespace feticon::fem
+{
+/// Internal force (N) and, unless kind == none, stiffness (N/m) of one cell.
+/// @param[in] X  reference node coordinates, one row per local node (m)
+/// @param[in] u  node displacements, likewise (m)
+/// @param[in] cell  cell id for error messages (an inverted cell names it)
+void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, const Material& material,
+                  Kinematics kinematics, StiffnessKind kind, Integration integration, Eigen::VectorXd& f,
+                  Eigen::MatrixXd* K, int64_t cell);
+
+/// Small strain (linear) or Green-Lagrange strain (total Lagrangian), Voigt
+/// [11,22,33,12,23,31] with engineering shears, at each quadrature point of the cell.
+std::vector<Eigen::Matrix<double, 6, 1>> cell_point_strains(mesh::CellKind type, const Eigen::MatrixX3d& X,
+                                                            const Eigen::MatrixX3d& u, Kinematics kinematics,
+                                                            Integration integration, int64_t cell);
+} // namespace feticon::fem
