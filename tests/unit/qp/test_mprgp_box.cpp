@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <stdexcept>
 #include <vector>
 
 using namespace feticon;
@@ -123,6 +124,63 @@ void expect_identical(const Trace& first, const Trace& second)
   EXPECT_EQ(first.report.hessian_multiplications, second.report.hessian_multiplications);
   EXPECT_EQ(first.report.projected_gradient_norm, second.report.projected_gradient_norm);
   EXPECT_EQ(first.report.cost, second.report.cost);
+}
+/// The minimizer of a box QP by enumeration (n <= 8): every assignment of each component to
+/// free, its lower or its upper bound (finite ones only), the free part solved by LDLT; the
+/// assignment whose point is feasible and meets the KKT sign conditions to `tol` is the
+/// minimizer (unique, A SPD). Independent of Mprgp and of reference_box_qp.
+la::Vector enumerated_box_qp(const test::BoxQp& qp, double tol)
+{
+  const la::Index n = qp.b.size();
+  std::vector<int> state(static_cast<std::size_t>(n), 0); // 0 free, 1 lower, 2 upper
+  for (;;)
+  {
+    bool valid = true;
+    la::Vector x = la::Vector::Zero(n);
+    std::vector<la::Index> free;
+    for (la::Index i = 0; i < n; ++i)
+    {
+      if (state[i] == 0)
+        free.push_back(i);
+      else
+        x[i] = state[i] == 1 ? qp.lower[i] : qp.upper[i];
+      valid = valid && std::isfinite(x[i]);
+    }
+    if (valid)
+    {
+      const auto m = static_cast<la::Index>(free.size());
+      la::Matrix A_ff(m, m);
+      la::Vector rhs(m);
+      const la::Vector fixed_part = qp.A * x;
+      for (la::Index r = 0; r < m; ++r)
+      {
+        rhs[r] = qp.b[free[r]] - fixed_part[free[r]];
+        for (la::Index c = 0; c < m; ++c)
+          A_ff(r, c) = qp.A(free[r], free[c]);
+      }
+      const la::Vector z = A_ff.ldlt().solve(rhs);
+      for (la::Index r = 0; r < m; ++r)
+        x[free[r]] = z[r];
+      const la::Vector g = qp.A * x - qp.b;
+      bool kkt = true;
+      for (la::Index i = 0; i < n; ++i)
+      {
+        kkt = kkt && x[i] >= qp.lower[i] - tol && x[i] <= qp.upper[i] + tol;
+        if (state[i] == 1 && qp.lower[i] < qp.upper[i])
+          kkt = kkt && g[i] >= -tol;
+        if (state[i] == 2 && qp.lower[i] < qp.upper[i])
+          kkt = kkt && g[i] <= tol;
+      }
+      if (kkt)
+        return x;
+    }
+    la::Index i = 0; // the next assignment, in base 3
+    while (i < n && state[i] == 2)
+      state[i++] = 0;
+    if (i == n)
+      throw std::runtime_error("enumerated_box_qp: no KKT point");
+    ++state[i];
+  }
 }
 } // namespace
 
@@ -303,4 +361,47 @@ TEST(MprgpBox, InvalidUpperBoundsAreRejectedNamingTheComponent)
   upper[2] = lower[2];
   ASSERT_TRUE(mprgp.solve(qp.b, lower, upper, x).converged);
   EXPECT_EQ(x[2], 0.0);
+}
+
+// Reference: enumeration of all 3^n assignments to free / lower / upper (enumerated_box_qp
+// above, exact up to the LDLT solve), independent of both Mprgp and reference_box_qp; the
+// KKT tolerance 1e-9 ||b|| only admits round-off of the n <= 7 dense solves. MPRGP at
+// rtol 1e-12 and the active-set reference must both agree with it to 1e-8 relative (the
+// error bound of RandomBoxProblemsMatchActiveSetReference).
+TEST(MprgpBox, SmallProblemsMatchEnumeratedActiveSets)
+{
+  for (const int n : {2, 3, 5, 7})
+    for (const unsigned seed : seeds)
+    {
+      SCOPED_TRACE("n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
+      const test::BoxQp qp = test::random_box_qp(n, seed + 500);
+      const la::Vector enumerated = enumerated_box_qp(qp, 1e-9 * qp.b.norm());
+      const la::Vector reference = test::reference_box_qp(qp.A, qp.b, qp.lower, qp.upper);
+      test::CountingOperator A(qp.A);
+      qp::Mprgp mprgp(A, {.rtol = 1e-12});
+      la::Vector x = la::Vector::Zero(n);
+      ASSERT_TRUE(mprgp.solve(qp.b, qp.lower, qp.upper, x).converged);
+      const double scale = 1e-8 * std::max(enumerated.norm(), 1.0);
+      EXPECT_LE((x - enumerated).norm(), scale);
+      EXPECT_LE((reference - enumerated).norm(), scale);
+    }
+}
+
+// Reference: hand computation. min 1/2 x^2 - 5x on 0 <= x <= 1 from x0 = 0: no free
+// component, beta = g = -5, so a proportioning step; its length g'beta / beta'A beta = 1 would
+// reach x = 5 > u, so it is cut at alpha_f = (0 - 1)/(-5) = 0.2: x = 1 exactly, where g = -4
+// is a multiplier of the upper bound (chopped gradient max(g, 0) = 0): converged after one
+// step, f = 1/2 - 5 = -4.5.
+TEST(MprgpBox, ProportioningStepStopsAtTheOppositeBound)
+{
+  const la::Matrix one = la::Matrix::Identity(1, 1);
+  test::CountingOperator A(one);
+  qp::Mprgp mprgp(A, {.rtol = 1e-12, .alpha_bar = 1.0});
+  la::Vector x = la::Vector::Zero(1);
+  const qp::QpReport report = mprgp.solve(la::Vector::Constant(1, 5.0), la::Vector::Zero(1), la::Vector::Ones(1), x);
+  ASSERT_TRUE(report.converged) << report.reason;
+  EXPECT_EQ(report.iterations, 1);
+  EXPECT_EQ(report.proportioning_steps, 1);
+  EXPECT_EQ(x[0], 1.0);
+  EXPECT_EQ(report.cost, -4.5);
 }
