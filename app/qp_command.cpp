@@ -1,10 +1,11 @@
-/// `feticon qp`: one bound-constrained QP from Matrix Market files, solved by MPRGP.
+/// `feticon qp`: one box-constrained QP from Matrix Market files, solved by MPRGP.
 ///
-///     min 1/2 x'Ax - b'x   subject to   x >= l        (A symmetric positive definite)
+///     min 1/2 x'Ax - b'x   subject to   l <= x <= u   (A symmetric positive definite)
 ///
 /// Sample runs:
 ///   feticon qp --A A.mtx --b b.mtx                       # unconstrained: MPRGP = CG
 ///   feticon qp --A A.mtx --b b.mtx --lower l.mtx --rtol 1e-8 --out x.mtx --monitor
+///   feticon qp --A A.mtx --b b.mtx --lower l.mtx --upper u.mtx   # box l <= x <= u
 ///
 /// stdout gets exactly one JSON line with the report; --monitor writes one line per MPRGP
 /// step to stderr. Exit status: 0 converged, 3 not converged (the JSON and x are still
@@ -25,6 +26,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace feticon::app
@@ -36,6 +38,7 @@ struct QpArguments
   std::string matrix_path;
   std::string rhs_path;
   std::string lower_path;
+  std::string upper_path;
   std::string output_path;
   double rtol = 1e-5;
   int max_iterations = 10000;
@@ -71,6 +74,18 @@ void print_iterate(const qp::MprgpIterate& it)
   std::cerr << line << '\n';
 }
 
+/// The bound vector in `path` (symbol l or u), checked to have n entries; `absent` everywhere
+/// if no path is given.
+la::Vector read_bound(const std::string& path, const char* symbol, la::Index n, double absent)
+{
+  if (path.empty())
+    return la::Vector::Constant(n, absent);
+  la::Vector bound = la::read_matrix_market_dense(path);
+  FETICON_CHECK(bound.size() == n,
+                path << ": " << symbol << " has " << bound.size() << " entries but A has " << n << " rows");
+  return bound;
+}
+
 void run_qp(const QpArguments& arguments)
 {
   // The memory guard, from the size line before the entries are read.
@@ -85,13 +100,12 @@ void run_qp(const QpArguments& arguments)
   const la::Index n = A.rows();
   const la::Vector b = la::read_matrix_market_dense(arguments.rhs_path);
   FETICON_CHECK(b.size() == n, arguments.rhs_path << ": b has " << b.size() << " entries but A has " << n << " rows");
-  la::Vector lower = la::Vector::Constant(n, -std::numeric_limits<double>::infinity());
-  if (!arguments.lower_path.empty())
-  {
-    lower = la::read_matrix_market_dense(arguments.lower_path);
-    FETICON_CHECK(lower.size() == n,
-                  arguments.lower_path << ": l has " << lower.size() << " entries but A has " << n << " rows");
-  }
+  const la::Vector lower = read_bound(arguments.lower_path, "l", n, -std::numeric_limits<double>::infinity());
+  // Without --upper the lower-bound solve, whose arithmetic the box solve reproduces for
+  // u = +inf (qp/mprgp.hpp).
+  const std::optional<la::Vector> upper = arguments.upper_path.empty()
+      ? std::nullopt
+      : std::optional<la::Vector>(read_bound(arguments.upper_path, "u", n, 0.0));
 
   qp::MprgpOptions options{.rtol = arguments.rtol,
                            .max_iterations = arguments.max_iterations,
@@ -101,7 +115,9 @@ void run_qp(const QpArguments& arguments)
   const la::SparseOperator op(A);
   qp::Mprgp mprgp(op, options);
   la::Vector x = la::Vector::Zero(n).cwiseMax(lower); // x0 = P_Omega(0)
-  const qp::QpReport report = mprgp.solve(b, lower, x);
+  if (upper)
+    x = x.cwiseMin(*upper);
+  const qp::QpReport report = upper ? mprgp.solve(b, lower, *upper, x) : mprgp.solve(b, lower, x);
   FETICON_CHECK(std::isfinite(report.cost) && std::isfinite(report.projected_gradient_norm) && x.allFinite(),
                 "qp: the solve produced non-finite values (cost "
                     << report.cost
@@ -130,7 +146,7 @@ void register_qp_command(CLI::App& app)
 {
   auto arguments = std::make_shared<QpArguments>();
   CLI::App* command =
-      app.add_subcommand("qp", "Solve min 1/2 x'Ax - b'x subject to x >= l with MPRGP; print a JSON report");
+      app.add_subcommand("qp", "Solve min 1/2 x'Ax - b'x subject to l <= x <= u with MPRGP; print a JSON report");
   command
       ->add_option("--A", arguments->matrix_path,
                    "symmetric positive definite matrix A "
@@ -139,6 +155,8 @@ void register_qp_command(CLI::App& app)
   command->add_option("--b", arguments->rhs_path, "right-hand side b (Matrix Market vector)")->required();
   command->add_option("--lower", arguments->lower_path,
                       "lower bounds l (Matrix Market vector, -inf allowed); default: none");
+  command->add_option("--upper", arguments->upper_path,
+                      "upper bounds u (Matrix Market vector, inf allowed, l <= u); default: none");
   command->add_option("--rtol", arguments->rtol, "stop when |g_P| <= rtol |b|")->capture_default_str();
   command->add_option("--max-iterations", arguments->max_iterations, "MPRGP steps allowed")->capture_default_str();
   command->add_option("--out", arguments->output_path, "write the solution x (Matrix Market)");

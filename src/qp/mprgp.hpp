@@ -1,22 +1,32 @@
 #pragma once
 /// @file MPRGP: modified proportioning with reduced gradient projections.
 ///
-/// Solves the bound-constrained quadratic program
+/// Solves the box-constrained quadratic program
 ///
-///     min f(x) = 1/2 x'Ax - b'x   subject to   x >= l,
+///     min f(x) = 1/2 x'Ax - b'x   subject to   l <= x <= u,
 ///
-/// with A symmetric positive definite (on the iterates' span) and l_i possibly -infinity,
-/// by the algorithm of Dostal & Schoberl (2005), "Minimizing quadratic functions subject to
-/// bound constraints with the rate of convergence and finite termination", Comput. Optim.
-/// Appl. 30, exactly as written in ALGORITHMS.md section 5. At a feasible x with gradient
-/// g = Ax - b, free set F = {i : x_i > l_i} and active set the rest:
+/// with A symmetric positive definite (on the iterates' span), l_i possibly -infinity and
+/// u_i possibly +infinity, by the algorithm of Dostal & Schoberl (2005), "Minimizing
+/// quadratic functions subject to bound constraints with the rate of convergence and finite
+/// termination", Comput. Optim. Appl. 30, as written in ALGORITHMS.md section 5 for x >= l,
+/// with both bounds as in Dostal (2009), Optimal Quadratic Programming Algorithms, ch. 8.
+/// At a feasible x with gradient g = Ax - b, free set F = {i : l_i < x_i < u_i} and active
+/// set the rest:
 ///   phi   free gradient,        phi_i = g_i on F, 0 elsewhere;
-///   beta  chopped gradient,     beta_i = min(g_i, 0) on the active set, 0 elsewhere;
+///   beta  chopped gradient,     beta_i = min(g_i, 0) where x_i = l_i < u_i,
+///                               beta_i = max(g_i, 0) where x_i = u_i > l_i, 0 elsewhere
+///                               (a component with l_i = u_i is fixed);
 ///   g_P   projected gradient,   g_P = phi + beta;
-///   phi~  reduced free gradient, phi~_i = min((x_i - l_i)/alpha_bar, phi_i) on F.
+///   phi~  reduced free gradient, phi~_i = min((x_i - l_i)/alpha_bar, max((x_i - u_i)/alpha_bar, phi_i))
+///                               on F, so that x - alpha_bar phi~ = P(x - alpha_bar phi).
 /// x is proportional when ||beta||^2 <= gamma^2 phi~'phi; then MPRGP takes a CG step, or, if
 /// that leaves the feasible set, an expansion step (feasible half step + projected gradient
-/// step of length alpha_bar); otherwise a proportioning step along beta.
+/// step of length alpha_bar); otherwise a proportioning step along beta, cut at the first
+/// bound it reaches (only an upper bound of a component leaving its lower one, or the
+/// reverse, can stop it; without upper bounds it is never cut).
+///
+/// Without upper bounds (the solve overload without `upper`) the arithmetic is that of the
+/// lower-bound algorithm; with u = +infinity everywhere the iterates are the same bitwise.
 ///
 /// Operator products (QpReport::hessian_multiplications) are counted exactly:
 ///
@@ -27,8 +37,9 @@
 ///
 /// Usage:
 ///   qp::Mprgp mprgp(A, {.rtol = 1e-6});
-///   la::Vector x = la::Vector::Zero(n);          // projected onto x >= l by solve()
-///   const qp::QpReport report = mprgp.solve(b, lower, x);
+///   la::Vector x = la::Vector::Zero(n);          // projected onto the box by solve()
+///   const qp::QpReport report = mprgp.solve(b, lower, x);          // x >= l
+///   const qp::QpReport box = mprgp.solve(b, lower, upper, y);      // l <= y <= u
 ///   if (!report.converged) log::warning(report.reason);
 
 #include "la/operator.hpp"
@@ -117,7 +128,7 @@ struct MprgpOptions
   const la::LinearOperator* preconditioner = nullptr;
 };
 
-/// Bound-constrained QP solver; see the file comment for the problem and the algorithm.
+/// Box-constrained QP solver; see the file comment for the problem and the algorithm.
 ///
 /// The object keeps alpha_bar between solves, so that repeated solves with the same A (the
 /// inner solves of SMALBE-M) pay for the norm estimate once; the power iterations are
@@ -142,12 +153,29 @@ public:
   /// Throws feticon::Error for sizes or values that violate the above.
   QpReport solve(const la::Vector& b, const la::Vector& lower, la::Vector& x);
 
+  /// @brief Minimizes 1/2 x'Ax - b'x subject to lower <= x <= upper.
+  /// @param[in]     b      right-hand side, finite, size A.size().
+  /// @param[in]     lower  bounds l, size A.size(); -infinity allowed, never NaN or +infinity.
+  /// @param[in]     upper  bounds u, size A.size(); +infinity allowed, never NaN or
+  ///                       -infinity; l_i <= u_i (l_i = u_i fixes x_i).
+  /// @param[in,out] x      on input the initial guess (finite, size A.size()), projected
+  ///                       onto the box; on output the last iterate, always feasible.
+  /// @return as the lower-bound solve; with upper = +infinity everywhere the same report and
+  ///         iterates, bitwise.
+  /// Throws feticon::Error for sizes or values that violate the above, naming the component
+  /// of an empty box (l_i > u_i).
+  QpReport solve(const la::Vector& b, const la::Vector& lower, const la::Vector& upper, la::Vector& x);
+
   /// The current expansion step length (0 before the first solve when it is estimated).
   double alpha_bar() const { return _alpha_bar; }
 
 private:
   /// x, g = Ax - b, the direction p and the work vectors of one solve (mprgp.cpp).
   struct SolveState;
+
+  /// Both solve overloads: `upper` null means no upper bound (u = +infinity, the arithmetic
+  /// of the lower-bound algorithm).
+  QpReport solve_box(const la::Vector& b, const la::Vector& lower, const la::Vector* upper, la::Vector& x);
 
   /// alpha_bar = 1.8/||A|| from power iterations (counted in `report`); a reason if the
   /// estimate is not finite or not positive.
@@ -169,8 +197,8 @@ private:
   /// MprgpExpansion::standard: the feasible half step, then the projected gradient step of
   /// length alpha_bar, which is halved if f grew.
   void standard_expansion(SolveState& s, double alpha_f, la::Index blocking, double cost);
-  /// At a non-proportional x: the step along the chopped gradient beta; a reason if
-  /// beta'A beta <= 0.
+  /// At a non-proportional x: the step along the chopped gradient beta, cut at the first
+  /// bound it reaches; a reason if beta'A beta <= 0.
   std::optional<std::string> proportioning_step(SolveState& s) const;
 
   const la::LinearOperator& _A;

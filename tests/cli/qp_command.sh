@@ -7,7 +7,8 @@
 # (stored as a symmetric lower triangle), b = -15. Checks: exit status 0, one JSON line with
 # the nine report keys and converged = true, x written and x >= l exactly; an unconstrained
 # run (l = -inf) converges; an iteration limit gives exit status 3 with the JSON still
-# printed; malformed input gives a non-zero status and exactly one line on stderr.
+# printed; malformed input gives a non-zero status and exactly one line on stderr; with
+# --upper the box l <= x <= u is solved and an empty box is one line.
 set -euo pipefail
 
 feticon=$1
@@ -154,5 +155,42 @@ one_line_error() { # NAME PATTERN ARGS...
 one_line_error "2e9 x 2e9 matrix" "needs about .* GiB, more than the" --A giant.mtx --b b2.mtx
 one_line_error "2e9 values declared" "giant_b.mtx:2: the size line declares 2000000000 values" --A spd.mtx --b giant_b.mtx
 one_line_error "a device as matrix" "/dev/zero: is not a regular file" --A /dev/zero --b b2.mtx
+
+# 9. Box constraints (--upper): u = l + 0.3 leaves the ends of the string, far above the
+# obstacle, on the upper bound; x is inside the box with both bounds active somewhere. With
+# u = +inf the report equals the run without --upper (same steps, cost and norm: the box
+# solve reproduces the lower-bound one bitwise, qp/mprgp.hpp), and an empty box (l_i > u_i)
+# is one line naming the component.
+awk 'NR <= 2 { print; next } { printf "%.17g\n", $1 + 0.3 }' l.mtx >u.mtx
+status=0
+"$feticon" qp --A A.mtx --b b.mtx --lower l.mtx --upper u.mtx --rtol 1e-8 --out xb.mtx >box.json 2>err.txt ||
+  status=$?
+[ "$status" -eq 0 ] || fail "box run: exit status $status: $(cat err.txt)"
+check_json box.json true || fail "box run: bad JSON: $(cat box.json)"
+"$python" - <<'PY' || fail "x violates l <= x <= u, or a bound is never active"
+def read(path):
+    lines = [s for s in open(path).read().splitlines() if s.strip() and not s.startswith("%")]
+    return [float(s) for s in lines[1:]]
+x, lower, upper = read("xb.mtx"), read("l.mtx"), read("u.mtx")
+assert all(l <= xi <= u for xi, l, u in zip(x, lower, upper)), "x outside the box"
+assert any(xi == l for xi, l in zip(x, lower)), "no component at its lower bound"
+assert any(xi == u for xi, u in zip(x, upper)), "no component at its upper bound"
+PY
+sed 's/^-*[0-9].*$/inf/' l.mtx | awk 'NR == 2 { print "20 1"; next } { print }' >inf.mtx
+"$feticon" qp --A A.mtx --b b.mtx --lower l.mtx --upper inf.mtx --rtol 1e-8 >inf.json 2>err.txt ||
+  fail "u = +inf run failed: $(cat err.txt)"
+"$python" - <<'PY' || fail "u = +inf differs from the run without --upper"
+import json
+a, b = json.load(open("out.json")), json.load(open("inf.json"))
+for key in ["iterations", "cg_steps", "expansion_steps", "proportioning_steps",
+            "hessian_multiplications", "projected_gradient_norm", "cost"]:
+    assert a[key] == b[key], f"{key}: {a[key]} != {b[key]}"
+PY
+awk 'NR <= 2 { print; next } { printf "%.17g\n", $1 - (NR == 5 ? 1 : -1) }' l.mtx >empty.mtx
+status=0
+"$feticon" qp --A A.mtx --b b.mtx --lower l.mtx --upper empty.mtx >empty.out 2>empty.err || status=$?
+[ "$status" -eq 1 ] || fail "empty box: expected exit status 1, got $status"
+[ "$(wc -l <empty.err)" -eq 1 ] || fail "expected one line on stderr, got: $(cat empty.err)"
+grep -q 'component 2' empty.err || fail "stderr does not name component 2: $(cat empty.err)"
 
 echo "qp_command: all checks passed"

@@ -74,6 +74,47 @@ inline BoundQp random_bound_qp(int n, unsigned seed, double condition = 100.0, d
   return qp;
 }
 
+/// min 1/2 x'Ax - b'x subject to lower <= x <= upper.
+struct BoxQp
+{
+  la::Matrix A;
+  la::Vector b;
+  la::Vector lower;
+  la::Vector upper;
+};
+
+/// The random SPD A and b of random_bound_qp with each component, at random, bounded on both
+/// sides (an interval around a point scattered about the unconstrained minimizer, of width
+/// 0 for about one in ten of them: a fixed component), only below, only above, or not at all,
+/// so that components become active at either bound.
+inline BoxQp random_box_qp(int n, unsigned seed, double condition = 100.0)
+{
+  const BoundQp base = random_bound_qp(n, seed, condition, 0.0);
+  std::mt19937 generator(seed + 7919);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const la::Vector unconstrained = base.A.ldlt().solve(base.b);
+  const double spread = std::sqrt(unconstrained.squaredNorm() / n);
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  BoxQp qp{base.A, base.b, la::Vector::Constant(n, -infinity), la::Vector::Constant(n, infinity)};
+  for (int i = 0; i < n; ++i)
+  {
+    const double centre = unconstrained[i] + 0.5 * spread * normal(generator);
+    const double kind = uniform(generator);
+    if (kind < 0.35) // both bounds
+    {
+      const double half_width = uniform(generator) < 0.1 ? 0.0 : 0.3 * spread * std::abs(normal(generator));
+      qp.lower[i] = centre - half_width;
+      qp.upper[i] = centre + half_width;
+    }
+    else if (kind < 0.6)
+      qp.lower[i] = centre;
+    else if (kind < 0.85)
+      qp.upper[i] = centre;
+  }
+  return qp;
+}
+
 /// The 1D obstacle problem -u'' = -15 on (0,1), u(0) = u(1) = 0, u >= sin(4 pi x - pi/6)/2 - 2
 /// at n interior points x_i = i h, h = 1/(n+1): A = tridiag(-1, 2, -1)/h^2, b = -15.
 inline BoundQp obstacle_problem(int n)
@@ -101,6 +142,26 @@ inline double projected_gradient_norm(const la::Vector& x, const la::Vector& g, 
   for (la::Index i = 0; i < x.size(); ++i)
   {
     const double gp = x[i] > lower[i] ? g[i] : std::min(g[i], 0.0);
+    sum += gp * gp;
+  }
+  return std::sqrt(sum);
+}
+
+/// sqrt(sum of squares) of the projected gradient g_P of x in the box (l <= x <= u assumed):
+/// g_i where l_i < x_i < u_i, min(g_i, 0) at x_i = l_i < u_i, max(g_i, 0) at x_i = u_i > l_i.
+inline double projected_gradient_norm(const la::Vector& x, const la::Vector& g, const la::Vector& lower,
+                                      const la::Vector& upper)
+{
+  double sum = 0.0;
+  for (la::Index i = 0; i < x.size(); ++i)
+  {
+    double gp = g[i];
+    if (lower[i] == upper[i])
+      gp = 0.0;
+    else if (x[i] == lower[i])
+      gp = std::min(g[i], 0.0);
+    else if (x[i] == upper[i])
+      gp = std::max(g[i], 0.0);
     sum += gp * gp;
   }
   return std::sqrt(sum);
