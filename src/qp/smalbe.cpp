@@ -87,6 +87,18 @@ struct Smalbe::SolveState
 
 SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vector& x, const SmalbeStart* start)
 {
+  return solve_bounded(b, lower, nullptr, x, start);
+}
+
+SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, const la::Vector& upper, la::Vector& x,
+                           const SmalbeStart* start)
+{
+  return solve_bounded(b, lower, &upper, x, start);
+}
+
+SmalbeReport Smalbe::solve_bounded(const la::Vector& b, const la::Vector& lower, const la::Vector* upper, la::Vector& x,
+                                   const SmalbeStart* start)
+{
   const auto solve_start = std::chrono::steady_clock::now();
   std::unique_ptr<la::SerialSpace> serial;
   const la::VectorSpace& space = _A.space() ? *_A.space() : *(serial = std::make_unique<la::SerialSpace>(b.size()));
@@ -103,7 +115,8 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vec
       break;
     }
     s.final_test = false;
-    const QpReport r = s.mprgp->solve(b - _C.apply_transpose(s.omega), lower, x);
+    const la::Vector rhs = b - _C.apply_transpose(s.omega);
+    const QpReport r = upper ? s.mprgp->solve(rhs, lower, *upper, x) : s.mprgp->solve(rhs, lower, x);
     report += r; // counters; the seconds are the whole solve's, set at the end
     report.projected_gradient_norm = r.projected_gradient_norm;
     report.outer_iterations = k + 1;

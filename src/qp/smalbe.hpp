@@ -2,7 +2,7 @@
 /// @file SMALBE-M: semimonotonic augmented Lagrangian for bound and equality constraints
 /// with adaptive M (Dostál 2006, 2009; ALGORITHMS.md section 1).
 ///
-/// Solves   min 1/2 x'Ax - b'x   subject to   x >= l,  C x = 0,
+/// Solves   min 1/2 x'Ax - b'x   subject to   x >= l (or l <= x <= u),  C x = 0,
 /// where C has orthonormal rows (C C' = I), through the augmented Hessian H = A + rho C'C,
 /// which SMALBE-M owns (for FETI: A = P F P, C = G~, so C'C = Q and H = PFP + rho Q), with its
 /// preconditioner M_A + C'C / rho_0 when the caller gives M_A ~ A^{-1} on Ker C (rho_0 the
@@ -118,10 +118,18 @@ public:
   /// @param[in,out] x initial guess on input (projected onto x >= l), solution on output
   /// @param start    omega, M and rho to start from; null: omega = 0, M0 and rho of the options
   SmalbeReport solve(const la::Vector& b, const la::Vector& lower, la::Vector& x, const SmalbeStart* start = nullptr);
+  /// The same with the box lower <= x <= upper (upper_i = +infinity allowed; the inner MPRGP's
+  /// box solve): Tresca friction's tangential multipliers |lambda_T| <= g in 2D.
+  SmalbeReport solve(const la::Vector& b, const la::Vector& lower, const la::Vector& upper, la::Vector& x,
+                     const SmalbeStart* start = nullptr);
 
 private:
   /// omega, M, rho, H and the inner MPRGP of one solve (smalbe.cpp).
   struct SolveState;
+
+  /// Both solves: `upper` null for x >= lower only (the inner MPRGP's lower-bound arithmetic).
+  SmalbeReport solve_bounded(const la::Vector& b, const la::Vector& lower, const la::Vector* upper, la::Vector& x,
+                             const SmalbeStart* start);
 
   /// ||b||, the tolerances, and omega, M and rho from `start` or the options.
   void set_initial_state(SolveState& s, const la::VectorSpace& space, const la::Vector& b,

@@ -1,5 +1,5 @@
 /// SMALBE-M on hand-built QPs with bound and equality constraints:
-///   min 1/2 x'Ax - b'x  s.t.  x >= l,  C x = 0   (C with orthonormal rows),
+///   min 1/2 x'Ax - b'x  s.t.  x >= l (or l <= x <= u),  C x = 0   (C with orthonormal rows),
 /// SMALBE-M augments A to H = A + rho C'C itself. The reference is an independent solve: the penalized
 /// bound QP (A + K C'C, K = 1e6 ||A||) by the dense active-set method of reference_qp.hpp
 /// finds the active bounds, then the KKT system of that face (bounds as equalities) is solved
@@ -61,18 +61,56 @@ struct Reference
   int active_bounds = 0;
 };
 
-Reference reference_solve(const EqualityQp& qp)
+/// A box QP (random_box_qp) with m orthonormal equality rows, its box widened to hold a point
+/// of Ker C, and its solution by the same independent route as reference_solve: the penalized
+/// box QP (reference_box_qp) finds the components at either bound, the KKT system of that face
+/// gives x and omega, certified by feasibility and the signs of the bound multipliers.
+struct BoxEqualityQp
+{
+  la::Matrix A, C;
+  la::Vector b, lower, upper;
+};
+
+BoxEqualityQp make_box_qp(int n, int m, unsigned seed)
+{
+  const test::BoxQp box = test::random_box_qp(n, seed);
+  std::mt19937 generator(seed + 3);
+  std::normal_distribution<double> normal;
+  BoxEqualityQp qp{box.A, test::random_orthogonal(n, generator).topRows(m), box.b, box.lower, box.upper};
+  la::Vector feasible(n);
+  for (int i = 0; i < n; ++i)
+    feasible[i] = normal(generator);
+  feasible -= qp.C.transpose() * (qp.C * feasible);
+  qp.lower = qp.lower.cwiseMin(feasible);
+  qp.upper = qp.upper.cwiseMax(feasible);
+  return qp;
+}
+
+struct BoxReference
+{
+  la::Vector x, omega;
+  int at_lower = 0, at_upper = 0;
+};
+
+BoxReference reference_box_solve(const BoxEqualityQp& qp)
 {
   const la::Index n = qp.b.size(), m = qp.C.rows();
   const double K = 1e6 * qp.A.norm();
-  const la::Vector penalized = test::reference_bound_qp(qp.A + K * qp.C.transpose() * qp.C, qp.b, qp.lower);
-  std::vector<la::Index> active;
+  const la::Vector penalized = test::reference_box_qp(qp.A + K * qp.C.transpose() * qp.C, qp.b, qp.lower, qp.upper);
+  std::vector<std::pair<la::Index, double>> active; // component and its bound
+  BoxReference out;
   for (la::Index i = 0; i < n; ++i)
     if (penalized[i] <= qp.lower[i] + 1e-9 * (1 + std::abs(qp.lower[i])))
-      active.push_back(i);
+    {
+      active.emplace_back(i, qp.lower[i]);
+      ++out.at_lower;
+    }
+    else if (penalized[i] >= qp.upper[i] - 1e-9 * (1 + std::abs(qp.upper[i])))
+    {
+      active.emplace_back(i, qp.upper[i]);
+      ++out.at_upper;
+    }
   const auto a = static_cast<la::Index>(active.size());
-  // [A C' E'; C 0 0; E 0 0] [x; omega; -nu] = [b; 0; l_E]: A x - b + C' omega = nu, nu the
-  // multipliers of the active bounds (E selects them).
   la::Matrix kkt = la::Matrix::Zero(n + m + a, n + m + a);
   la::Vector rhs = la::Vector::Zero(n + m + a);
   kkt.topLeftCorner(n, n) = qp.A;
@@ -81,18 +119,39 @@ Reference reference_solve(const EqualityQp& qp)
   rhs.head(n) = qp.b;
   for (la::Index r = 0; r < a; ++r)
   {
-    kkt(active[r], n + m + r) = kkt(n + m + r, active[r]) = 1.0;
-    rhs[n + m + r] = qp.lower[active[r]];
+    kkt(active[r].first, n + m + r) = kkt(n + m + r, active[r].first) = 1.0;
+    rhs[n + m + r] = active[r].second;
   }
   const la::Vector solution = kkt.partialPivLu().solve(rhs);
-  Reference out{solution.head(n), solution.segment(n, m), static_cast<int>(a)};
-  // Certificate of optimality: feasible, and every active bound pushes (nu >= 0).
+  out.x = solution.head(n);
+  out.omega = solution.segment(n, m);
   EXPECT_LT((qp.C * out.x).norm(), 1e-10 * (1 + out.x.norm()));
   for (la::Index i = 0; i < n; ++i)
+  {
     EXPECT_GE(out.x[i], qp.lower[i] - 1e-10);
+    EXPECT_LE(out.x[i], qp.upper[i] + 1e-10);
+  }
+  // A x - b + C' omega = nu: nu >= 0 at a lower bound, <= 0 at an upper one (a fixed
+  // component, l = u, may have either sign).
   for (la::Index r = 0; r < a; ++r)
-    EXPECT_GE(-solution[n + m + r], -1e-10) << "bound " << active[r] << " pulls the wrong way";
+  {
+    const la::Index i = active[r].first;
+    if (qp.lower[i] == qp.upper[i])
+      continue;
+    const double nu = -solution[n + m + r];
+    if (active[r].second == qp.lower[i])
+      EXPECT_GE(nu, -1e-10) << "lower bound " << i << " pulls the wrong way";
+    else
+      EXPECT_LE(nu, 1e-10) << "upper bound " << i << " pulls the wrong way";
+  }
   return out;
+}
+
+Reference reference_solve(const EqualityQp& qp)
+{
+  const la::Vector no_upper = la::Vector::Constant(qp.b.size(), std::numeric_limits<double>::infinity());
+  const BoxReference box = reference_box_solve({qp.A, qp.C, qp.b, qp.lower, no_upper});
+  return {box.x, box.omega, box.at_lower};
 }
 
 /// The QP and its operators; rho = ||A|| (eigenvalues 1..100), as rho ~ ||PFP|| in FETI, and
@@ -132,6 +191,27 @@ TEST(Smalbe, MatchesAnIndependentSolveOfBoundAndEqualityConstraints)
     la::Vector x = la::Vector::Zero(24);
     const SmalbeReport r = smalbe.solve(qp.b, qp.lower, x);
     ASSERT_TRUE(r.converged) << r.reason;
+    EXPECT_LT((x - reference.x).norm(), 1e-7 * reference.x.norm()) << "seed " << seed;
+    EXPECT_LT((r.omega - reference.omega).norm(), 1e-6 * reference.omega.norm()) << "seed " << seed;
+  }
+}
+
+TEST(Smalbe, MatchesAnIndependentSolveOfBoxAndEqualityConstraints)
+{
+  for (const unsigned seed : {1u, 2u, 3u})
+  {
+    const BoxEqualityQp qp = make_box_qp(24, 4, seed);
+    const BoxReference reference = reference_box_solve(qp);
+    ASSERT_GT(reference.at_lower, 0) << "the test QP should have components at lower bounds";
+    ASSERT_GT(reference.at_upper, 0) << "and at upper bounds";
+    const double rho = 100.0;
+    test::CountingOperator A(qp.A);
+    DenseEquality C(qp.C);
+    Smalbe smalbe(A, C, options(rho));
+    la::Vector x = la::Vector::Zero(24);
+    const SmalbeReport r = smalbe.solve(qp.b, qp.lower, qp.upper, x);
+    ASSERT_TRUE(r.converged) << r.reason;
+    EXPECT_TRUE((x.array() >= qp.lower.array()).all() && (x.array() <= qp.upper.array()).all());
     EXPECT_LT((x - reference.x).norm(), 1e-7 * reference.x.norm()) << "seed " << seed;
     EXPECT_LT((r.omega - reference.omega).norm(), 1e-6 * reference.omega.norm()) << "seed " << seed;
   }
