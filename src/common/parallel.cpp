@@ -104,9 +104,14 @@ private:
       }
       catch (...)
       {
+        // The error of the smallest index, whichever thread met it first: the same message
+        // run after run (an inverted element names the same element).
         std::lock_guard lock(_mutex);
-        if (!_error)
+        if (!_error || i < _error_index)
+        {
           _error = std::current_exception();
+          _error_index = i;
+        }
       }
     }
     t_inside_loop = false;
@@ -144,6 +149,7 @@ private:
   uint64_t _generation = 0;
   bool _stop = false;
   std::exception_ptr _error;
+  int32_t _error_index = 0; ///< the iteration that threw _error
 };
 
 int g_threads = 0; // 0: not set, all cores

@@ -52,8 +52,9 @@ constexpr int64_t setup_work = std::numeric_limits<int64_t>::max();
 
 /// body(i) for i in [first, end), spread over threads() threads (the caller is one of
 /// them) when `work` >= min_parallel_work; indices are handed out one at a time, since
-/// subdomains differ in cost. Iterations must write disjoint data. The first exception
-/// thrown is rethrown in the caller after all iterations ended. A parallel_for inside a
+/// subdomains differ in cost. Iterations must write disjoint data. The exception of the
+/// smallest index that threw is rethrown in the caller after all iterations ended (the same
+/// one whatever the threads' timing). A parallel_for inside a
 /// body runs serially.
 void parallel_for(int32_t first, int32_t end, int64_t work, const std::function<void(int32_t)>& body);
 } // namespace feticon
