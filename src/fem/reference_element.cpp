@@ -1,5 +1,7 @@
 #include "fem/reference_element.hpp"
 
+#include "fem/hex8.hpp"
+
 #include <array>
 #include <cmath>
 
@@ -12,16 +14,12 @@ using mesh::CellKind;
 /// Values (column 0) and reference gradients (columns 1-3) of each node's shape function.
 using ShapeTable = Eigen::Matrix<double, Eigen::Dynamic, 4>;
 
+/// hex8's shape functions are fem/hex8.hpp's, which the hex8 element uses.
 ShapeTable hex8(const Eigen::Vector3d& xi)
 {
   ShapeTable t(8, 4);
-  const auto& nodes = mesh::cell_type(CellKind::hex8).reference_nodes;
-  for (int a = 0; a < 8; ++a)
-  {
-    const double s = nodes[a][0], e = nodes[a][1], z = nodes[a][2];
-    const double fs = 1 + s * xi.x(), fe = 1 + e * xi.y(), fz = 1 + z * xi.z();
-    t.row(a) << fs * fe * fz / 8, s * fe * fz / 8, e * fs * fz / 8, z * fs * fe / 8;
-  }
+  t.col(0) = hex8_shape(xi);
+  t.rightCols<3>() = hex8_reference_gradients(xi);
   return t;
 }
 
