@@ -65,9 +65,9 @@ nlohmann::json records(const nonlinear::ContactSolution& s)
   return {{"completed_steps", s.restart.completed_steps},
           {"steps", steps},
           {"history", history},
-          {"smalbe_M", s.restart.smalbe_M},
-          {"smalbe_rho", s.restart.smalbe_rho},
-          {"pfp_norm", s.restart.pfp_norm}};
+          {"smalbe_M", s.restart.dual.M},
+          {"smalbe_rho", s.restart.dual.rho},
+          {"pfp_norm", s.restart.dual.operator_norm}};
 }
 } // namespace
 
@@ -78,13 +78,13 @@ void write_checkpoint(const std::filesystem::path& path, const nonlinear::Contac
   feticon::write_file_atomically(path, [&](std::ostream& os) {
     os.write(magic, 8);
     write_block(os, r.u_stacked.data(), r.u_stacked.size());
-    write_block(os, r.lambda.data(), r.lambda.size());
+    write_block(os, r.dual.x.data(), r.dual.x.size());
     write_block(os, r.contact_slave.data(), static_cast<int64_t>(r.contact_slave.size()));
     write_block(os, r.contact_lambda.data(), static_cast<int64_t>(r.contact_lambda.size()));
     write_block(os, json.data(), static_cast<int64_t>(json.size()));
     // Last, so that checkpoints written before it existed still read (their runs continue
     // with a cold SMALBE-M start).
-    write_block(os, r.smalbe_coarse_multiplier.data(), r.smalbe_coarse_multiplier.size());
+    write_block(os, r.dual.omega.data(), r.dual.omega.size());
     write_block(os, r.schur_boundary.data(), static_cast<int64_t>(r.schur_boundary.size())); // likewise
   });
 }
@@ -104,7 +104,7 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
   const auto u = read_block<double>(is, path);
   const auto lambda = read_block<double>(is, path);
   r.u_stacked = Eigen::Map<const la::Vector>(u.data(), static_cast<la::Index>(u.size()));
-  r.lambda = Eigen::Map<const la::Vector>(lambda.data(), static_cast<la::Index>(lambda.size()));
+  r.dual.x = Eigen::Map<const la::Vector>(lambda.data(), static_cast<la::Index>(lambda.size()));
   r.contact_slave = read_block<int32_t>(is, path);
   r.contact_lambda = read_block<double>(is, path);
   const auto text = read_block<char>(is, path);
@@ -113,9 +113,9 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
   {
     json = nlohmann::json::parse(std::string(text.begin(), text.end()));
     r.completed_steps = json.at("completed_steps").get<int>();
-    r.smalbe_M = json.value("smalbe_M", 0.0);
-    r.smalbe_rho = json.value("smalbe_rho", 0.0);
-    r.pfp_norm = json.value("pfp_norm", 0.0);
+    r.dual.M = json.value("smalbe_M", 0.0);
+    r.dual.rho = json.value("smalbe_rho", 0.0);
+    r.dual.operator_norm = json.value("pfp_norm", 0.0);
     solution.steps.clear();
     for (const auto& st : json.at("steps"))
     {
@@ -178,7 +178,7 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
   if (is.peek() != std::char_traits<char>::eof())
   {
     const auto beta = read_block<double>(is, path);
-    r.smalbe_coarse_multiplier = Eigen::Map<const la::Vector>(beta.data(), static_cast<la::Index>(beta.size()));
+    r.dual.omega = Eigen::Map<const la::Vector>(beta.data(), static_cast<la::Index>(beta.size()));
   }
   if (is.peek() != std::char_traits<char>::eof())
     r.schur_boundary = read_block<int32_t>(is, path);

@@ -1,18 +1,13 @@
 #pragma once
-/// @file The contact dual of Vondrák et al. (DD XVI, 2007): their problem (9) solved by
-/// MPRGP (dual penalty), or the same problem with G lambda = e enforced exactly by SMALBE-M (ALGORITHMS.md section 1).
-///
-///   lambda = lambda~ + mu,  lambda~ = [G_E'(G_E G_E')^{-1} e; 0] when the equality rows fix
-///   every rigid mode, else G'(GG')^{-1} e (minimal norm: the Hertz cylinder is held only by
-///   contact),
-///   min 1/2 mu' H mu - mu' b^   s.t.  mu_I >= -lambda~_I   [and G~ mu = 0 for SMALBE-M],
-///   H = P F^ P + rho Q,  b^ = P (d^ - F^ lambda~),  F^ = F / ||PFP||,  d^ = d / ||PFP||.
-/// Scaling by ||PFP|| (power iterations) leaves the minimizer unchanged and makes rho and the
-/// tolerances dimensionless. Rows 0..n_equality-1 are equalities (mu free), the rest contact
-/// rows. The primal solution follows from the active rows (primal_recovery.hpp).
+/// @file The solve of the contact dual of Vondrák et al. (DD XVI, 2007), their problem (9)
+/// (dual::ContactQp: lambda = lambda~ + mu, min 1/2 mu' H mu - mu' b^ s.t. mu_I >= -lambda~_I):
+/// by MPRGP with H = P F^ P + rho Q (dual penalty), or with G lambda = e enforced exactly by
+/// SMALBE-M (ALGORITHMS.md section 1); the options of both. The primal solution follows
+/// from the active rows (primal_recovery.hpp).
 
 #include "dual/feti_operators.hpp"
 #include "io/settings.hpp"
+#include "qp/qp_state.hpp"
 #include "qp/smalbe.hpp"
 
 #include <string>
@@ -68,43 +63,32 @@ struct DualPenaltyOptions
   int spectrum_steps;
 };
 
-/// Where a solve starts, from the solution of a nearby problem (the previous outer iteration:
-/// only the contact rows, the gaps and the load have changed). Empty vectors start from 0.
-struct DualWarmStart
-{
-  la::Vector lambda; ///< multipliers, as DualSolution::lambda
-  /// SMALBE-M: the multiplier of G lambda = e as a coarse vector, DualSolution::coarse_multiplier.
-  la::Vector coarse_multiplier;
-  double M = 0;        ///< SMALBE-M's M; 0: smalbe_M0
-  double rho = 0;      ///< SMALBE-M's rho; 0: the options' rho
-  double pfp_norm = 0; ///< ||PFP|| of a solve with the same F; 0: estimated here
-};
-
 struct DualSolution
 {
-  la::Vector lambda; ///< multipliers (equality rows then contact rows)
-  la::Vector u;      ///< stacked primal displacement
-  la::Vector alpha;  ///< rigid-body amplitudes
+  /// lambda (state.x: equality rows then contact rows, owned), and for SMALBE-M the
+  /// multiplier of G lambda = e as a coarse vector beta (G' beta is the multiplier in the
+  /// unscaled dual; indexed by rigid modes, it carries over to the next outer iteration's G)
+  /// with the final M and rho; the ||PFP|| estimate used for scaling (operator_norm).
+  qp::QpState state;
+  la::Vector u;     ///< stacked primal displacement
+  la::Vector alpha; ///< rigid-body amplitudes
   /// The QP's counters (summed over SMALBE-M outer steps; outer_iterations 1 for the dual
   /// penalty) with the applications of P F P (+ rho Q) and of the preconditioner timed here
   /// (the norm estimate's applications are in hessian_multiplications only).
   qp::QpReport report;
-  /// SMALBE-M: beta with G' beta the multiplier of G lambda = e in the unscaled dual (indexed
-  /// by rigid modes, it carries over to the next outer iteration's G), and the final M and rho.
-  la::Vector coarse_multiplier;
-  double smalbe_M = 0;
-  double smalbe_rho = 0;
   double feasibility_error = 0; ///< ||G lambda - e|| / ||e||
-  double pfp_norm = 0;          ///< ||PFP|| estimate used for scaling
   int64_t active_contacts = 0;  ///< contact rows with lambda_i > 0
 };
 
-/// Vectors are this rank's parts (FetiOperators): dual ones over its owned rows, primal ones
-/// over its owned subdomains.
+/// The contact dual (dual::ContactQp) solved by MPRGP (dual penalty) or SMALBE-M, and u from
+/// its solution. Vectors are this rank's parts (FetiOperators): dual ones over its owned rows,
+/// primal ones over its owned subdomains.
 /// @param c             right-hand sides of the owned rows (B u = c_E, B u <= c_I)
 /// @param f_stacked     stacked load
 /// @param n_equality    global number of equality rows (ids below it are equalities)
-/// @param warm          where to start (warm start), or empty for mu = 0
+/// @param warm          where to start: the state of the solve of a nearby problem (the
+///                      previous outer iteration: only the contact rows, the gaps and the
+///                      load have changed; its x has this solve's rows), or empty for mu = 0
 DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked,
-                                int64_t n_equality, const DualPenaltyOptions& options, const DualWarmStart& warm = {});
+                                int64_t n_equality, const DualPenaltyOptions& options, const qp::QpState& warm = {});
 } // namespace feticon::dual

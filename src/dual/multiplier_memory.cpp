@@ -7,10 +7,10 @@
 
 namespace feticon::dual
 {
-DualWarmStart MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_equality,
-                                           const std::vector<int32_t>& contact_slave) const
+qp::QpState MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_equality,
+                                         const std::vector<int32_t>& contact_slave) const
 {
-  DualWarmStart warm = _smalbe;
+  qp::QpState warm = _state;
   if (_owned.size() == 0 && _restart_equality.size() == 0)
     return warm; // the first solve of the run starts at 0
   FETICON_CHECK(_restart_equality.size() == 0 || _restart_equality.size() == n_equality,
@@ -18,14 +18,14 @@ DualWarmStart MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_
                                                  << " equality multipliers, this problem has " << n_equality
                                                  << " equality rows (other supports or linear equations?)");
   const la::Index m = feti.n_dual();
-  warm.lambda = la::Vector::Zero(m);
+  warm.x = la::Vector::Zero(m);
   for (la::Index i = 0; i < m; ++i)
   {
     const int64_t id = feti.row_id(i);
     if (id < n_equality)
-      warm.lambda(i) = _restart_equality.size() > 0 ? _restart_equality(id) : _owned(i);
+      warm.x(i) = _restart_equality.size() > 0 ? _restart_equality(id) : _owned(i);
     else if (const auto it = _contact.find(contact_slave[id - n_equality]); it != _contact.end())
-      warm.lambda(i) = it->second;
+      warm.x(i) = it->second;
   }
   return warm;
 }
@@ -33,27 +33,28 @@ DualWarmStart MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_
 la::Vector MultiplierMemory::remember(const FetiOperators& feti, const DualSolution& solution, int64_t n_equality,
                                       const std::vector<int32_t>& contact_slave)
 {
-  _owned = solution.lambda;
+  _owned = solution.state.x;
   _restart_equality.resize(0);
-  _smalbe = {{}, solution.coarse_multiplier, solution.smalbe_M, solution.smalbe_rho, solution.pfp_norm};
+  _state = solution.state;
+  _state.x.resize(0);
   const int64_t n_contact = static_cast<int64_t>(contact_slave.size());
-  la::Vector contact_lambda = multipliers_by_id(feti, solution.lambda, n_equality, n_equality + n_contact);
+  la::Vector contact_lambda = multipliers_by_id(feti, solution.state.x, n_equality, n_equality + n_contact);
   _contact.clear();
   for (int64_t j = 0; j < n_contact; ++j)
     _contact[contact_slave[j]] = contact_lambda(j);
   return contact_lambda;
 }
 
-void MultiplierMemory::restore(la::Vector equality_by_id, const std::vector<int32_t>& contact_slave,
-                               const std::vector<double>& contact_lambda, DualWarmStart smalbe)
+void MultiplierMemory::restore(qp::QpState state, const std::vector<int32_t>& contact_slave,
+                               const std::vector<double>& contact_lambda)
 {
   _owned.resize(0);
-  _restart_equality = std::move(equality_by_id);
+  _restart_equality = std::move(state.x);
   _contact.clear();
   for (size_t j = 0; j < contact_slave.size(); ++j)
     _contact[contact_slave[j]] = contact_lambda[j];
-  _smalbe = std::move(smalbe);
-  _smalbe.lambda.resize(0);
+  _state = std::move(state);
+  _state.x.resize(0);
 }
 
 std::set<int32_t> MultiplierMemory::active_slave_nodes(double floor) const

@@ -6,8 +6,9 @@
 ///    first, in the same order;
 ///  - contact rows by their slave node: the rows are rebuilt at every outer iteration, and a
 ///    node without a row last time starts at 0;
-///  - SMALBE-M's state (dual::DualWarmStart): its multiplier of G lambda = e is a coarse vector
-///    indexed by the subdomains' rigid modes, whose numbering does not change.
+///  - SMALBE-M's state and the ||PFP|| estimate (qp::QpState, as DualSolution::state): its
+///    multiplier of G lambda = e is a coarse vector indexed by the subdomains' rigid modes,
+///    whose numbering does not change.
 
 #include "dual/dual_penalty_problem.hpp"
 #include "dual/feti_operators.hpp"
@@ -24,8 +25,8 @@ class MultiplierMemory
 public:
   /// The start of the solve with the operators `feti`, whose rows with ids [0, n_equality) are
   /// the equality rows and id n_equality + j the contact row of slave node contact_slave[j].
-  DualWarmStart warm_start(const FetiOperators& feti, int64_t n_equality,
-                           const std::vector<int32_t>& contact_slave) const;
+  qp::QpState warm_start(const FetiOperators& feti, int64_t n_equality,
+                         const std::vector<int32_t>& contact_slave) const;
 
   /// Keeps the multipliers of `solution` (of the solve warm_start was asked for) and returns
   /// its contact multipliers by row, replicated on every rank.
@@ -33,17 +34,16 @@ public:
                       const std::vector<int32_t>& contact_slave);
 
   /// F changed (a refreshed stiffness): ||PFP|| must be estimated again.
-  void forget_operator_norm() { _smalbe.pfp_norm = 0; }
+  void forget_operator_norm() { _state.operator_norm = 0; }
 
-  /// The state of a checkpoint: equality multipliers by row id (used by the next solve only),
-  /// contact multipliers by slave node, SMALBE-M's state (its `lambda` is ignored).
-  void restore(la::Vector equality_by_id, const std::vector<int32_t>& contact_slave,
-               const std::vector<double>& contact_lambda, DualWarmStart smalbe);
+  /// The state of a checkpoint: `state` with x the equality multipliers by row id (used by the
+  /// next solve only), and the contact multipliers by slave node.
+  void restore(qp::QpState state, const std::vector<int32_t>& contact_slave, const std::vector<double>& contact_lambda);
 
   /// Contact multiplier by slave node, of the last solve.
   const std::map<int32_t, double>& contact() const { return _contact; }
-  /// SMALBE-M's state after the last solve.
-  const DualWarmStart& smalbe() const { return _smalbe; }
+  /// The state of the last solve, without its multipliers (SMALBE-M's omega, M, rho; ||PFP||).
+  const qp::QpState& state() const { return _state; }
   /// Slave nodes whose contact multiplier is positive, with the dual solver's threshold
   /// against round-off (1e-12 of the largest) and above `floor` (a force at round-off: when
   /// nothing is loaded, the largest multiplier is itself noise).
@@ -53,7 +53,7 @@ private:
   la::Vector _owned;            ///< owned multipliers of the last solve (equality rows first)
   la::Vector _restart_equality; ///< equality multipliers by row id from a checkpoint; used once
   std::map<int32_t, double> _contact;
-  DualWarmStart _smalbe;
+  qp::QpState _state; ///< its x is always empty: the multipliers are kept above by row identity
 };
 
 /// The multipliers `lambda` (owned, of `feti`) of the rows id_begin <= id < id_end, replicated

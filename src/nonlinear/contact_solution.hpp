@@ -4,6 +4,7 @@
 #include "contact/contact_constraints.hpp"
 #include "la/types.hpp"
 #include "qp/qp_report.hpp"
+#include "qp/qp_state.hpp"
 
 #include <string>
 #include <vector>
@@ -50,14 +51,12 @@ inline std::string floor_warning(int number, const LoadStep& step)
 struct RestartState
 {
   int completed_steps = 0;
-  la::Vector u_stacked;               ///< global stacked displacement (all subdomains)
-  la::Vector lambda;                  ///< equality multipliers of the last solve, by row id
+  la::Vector u_stacked; ///< global stacked displacement (all subdomains)
+  /// The last dual solve's state (dual::DualSolution::state): x the equality multipliers by
+  /// row id; SMALBE-M's coarse multiplier, M and rho (empty/0 for other methods); ||PFP||.
+  qp::QpState dual;
   std::vector<int32_t> contact_slave; ///< slave node of each contact multiplier
   std::vector<double> contact_lambda; ///< contact multiplier by slave node
-  /// SMALBE-M's state after the last solve (dual::DualWarmStart); empty/0 for other methods.
-  la::Vector smalbe_coarse_multiplier;
-  double smalbe_M = 0, smalbe_rho = 0;
-  double pfp_norm = 0; ///< the last ||PFP|| estimate (dual::DualWarmStart)
   /// The Dirichlet preconditioner's boundary DOFs (3 node + component) once contact rows made
   /// it grow (ContactSolution::schur_boundary_widened); empty while it has its initial extent.
   /// A restart forms its operators on it, as the uninterrupted run has them.

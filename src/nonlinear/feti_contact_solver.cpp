@@ -459,8 +459,7 @@ int FetiContactSolve::restore(const ContactSolution& previous)
                                                        << ", this run's at " << _history.load_factor(r.completed_steps)
                                                        << " (different load_steps or load stages?)");
   _u = _decomp->owned_slice(r.u_stacked);
-  _multipliers.restore(r.lambda, r.contact_slave, r.contact_lambda,
-                       {{}, r.smalbe_coarse_multiplier, r.smalbe_M, r.smalbe_rho, r.pfp_norm});
+  _multipliers.restore(r.dual, r.contact_slave, r.contact_lambda);
   _previous_active = _multipliers.active_slave_nodes(_force_floor);
   if (!r.schur_boundary.empty() && _schur) // the boundary had grown: its operators as they were
   {
@@ -538,7 +537,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
 
   const std::unique_ptr<dual::FetiOperators> feti = coarse_problem(rows);
   const la::Vector c = constraint_values(*feti, rows);
-  const dual::DualWarmStart warm = _multipliers.warm_start(*feti, _n_equality, contact_rows.slave_node);
+  const qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, contact_rows.slave_node);
   const dual::DualPenaltyOptions dual_options = qp_options(k);
   dual::DualSolution solution;
   {
@@ -583,7 +582,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
     _forcing = false;
     return IterationOutcome::next();
   }
-  _equality_by_id = dual::multipliers_by_id(*feti, solution.lambda, 0, _n_equality);
+  _equality_by_id = dual::multipliers_by_id(*feti, solution.state.x, 0, _n_equality);
   if (verdict == OuterVerdict::converged)
     return IterationOutcome::step_converged();
   return IterationOutcome::step_at_floor(floor_message(it, correction.du_max, solution.feasibility_error));
@@ -655,7 +654,7 @@ FetiContactSolve::Correction FetiContactSolve::measure_iteration(const dual::Fet
                                                                  const dual::DualSolution& solution, OuterIteration& it)
 {
   it.qp = solution.report;
-  it.final_rho = solution.smalbe_rho;
+  it.final_rho = solution.state.rho;
   it.active_contacts = solution.active_contacts;
   it.feasibility_error = solution.feasibility_error;
   const double du_norm = la::norm(_primal_space, solution.u), u_norm = la::norm(_primal_space, _u);
@@ -664,7 +663,7 @@ FetiContactSolve::Correction FetiContactSolve::measure_iteration(const dual::Fet
   {
     ScopedTimer t(_timers, "internal forces");
     update_internal_force(); // also the next iteration's, at the same u
-    const la::Vector r_new = _f_step - _f_int - feti.apply_Bt(solution.lambda);
+    const la::Vector r_new = _f_step - _f_int - feti.apply_Bt(solution.state.x);
     it.residual_norm = _decomp->gather_sum(_decomp->gather_stacked(r_new)).norm() / std::max(force_scale(), 1e-300);
   }
   return {du_norm, u_norm, du_max};
@@ -724,12 +723,8 @@ void FetiContactSolve::end_load_step(const LoadStep& record)
       if (_schur_boundary[i])
         r.schur_boundary.push_back(static_cast<int32_t>(i));
   r.u_stacked = u_stacked_global;
-  r.lambda = _equality_by_id;
-  const dual::DualWarmStart& smalbe = _multipliers.smalbe();
-  r.smalbe_coarse_multiplier = smalbe.coarse_multiplier;
-  r.smalbe_M = smalbe.M;
-  r.smalbe_rho = smalbe.rho;
-  r.pfp_norm = smalbe.pfp_norm;
+  r.dual = _multipliers.state();
+  r.dual.x = _equality_by_id;
   r.contact_slave.clear();
   r.contact_lambda.clear();
   for (const auto& [node, value] : _multipliers.contact())

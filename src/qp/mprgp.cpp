@@ -295,6 +295,14 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, const Vector& upper,
   return solve_box(b, lower, &upper, x);
 }
 
+QpReport Mprgp::solve(const Vector& b, const SeparableConstraints& set, Vector& x)
+{
+  FETICON_CHECK(set.discs.empty(),
+                "Mprgp::solve: MPRGP takes bounds only, not the " << set.discs.size()
+                                                                  << " discs of this QP (use MPGP)");
+  return solve_box(b, set.lower, set.upper.size() > 0 ? &set.upper : nullptr, x);
+}
+
 QpReport Mprgp::solve_box(const Vector& b, const Vector& lower, const Vector* upper, Vector& x)
 {
   const auto start_time = std::chrono::steady_clock::now();

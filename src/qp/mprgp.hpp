@@ -45,6 +45,7 @@
 #include "la/operator.hpp"
 #include "la/vector_space.hpp"
 #include "qp/qp_report.hpp"
+#include "qp/qp_solver.hpp"
 
 #include <functional>
 #include <optional>
@@ -134,7 +135,7 @@ struct MprgpOptions
 /// inner solves of SMALBE-M) pay for the norm estimate once; the power iterations are
 /// counted in the report of the solve that ran them. With log level `iterations` every step
 /// is logged: iteration, step kind, ||g_P||, ||phi||, ||beta||, tolerance, cost.
-class Mprgp
+class Mprgp : public QpSolver
 {
 public:
   /// @param[in] A        symmetric operator, positive definite on the iterates' span; it
@@ -166,8 +167,12 @@ public:
   /// of an empty box (l_i > u_i).
   QpReport solve(const la::Vector& b, const la::Vector& lower, const la::Vector& upper, la::Vector& x);
 
+  /// The QpSolver interface: the lower-bound solve when `set.upper` is empty, else the box
+  /// solve; MPRGP takes no discs (throws feticon::Error if `set` has any).
+  QpReport solve(const la::Vector& b, const SeparableConstraints& set, la::Vector& x) override;
+
   /// The current expansion step length (0 before the first solve when it is estimated).
-  double alpha_bar() const { return _alpha_bar; }
+  double alpha_bar() const override { return _alpha_bar; }
 
 private:
   /// x, g = Ax - b, the direction p and the work vectors of one solve (mprgp.cpp).

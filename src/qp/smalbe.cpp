@@ -60,7 +60,7 @@ Smalbe::Smalbe(const la::LinearOperator& A, const EqualityOperator& C, SmalbeOpt
 }
 
 /// The outer loop's state (ALGORITHMS.md section 1): the multiplier omega, M and rho with the
-/// augmented Hessian H and the inner MPRGP for it, and the reference of the stall test.
+/// augmented Hessian H and the inner solver for it, and the reference of the stall test.
 struct Smalbe::SolveState
 {
   SolveState(const la::LinearOperator& A, const EqualityOperator& C) : H(A, C, 0.0) {} // H.factor: make_inner_solver
@@ -81,23 +81,11 @@ struct Smalbe::SolveState
   MprgpOptions inner;
   PlusCoarseTerm H;
   std::optional<PlusCoarseTerm> preconditioner;
-  std::unique_ptr<Mprgp> mprgp;
+  std::unique_ptr<QpSolver> inner_solver;
   std::chrono::steady_clock::time_point last_progress;
 };
 
-SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, la::Vector& x, const SmalbeStart* start)
-{
-  return solve_bounded(b, lower, nullptr, x, start);
-}
-
-SmalbeReport Smalbe::solve(const la::Vector& b, const la::Vector& lower, const la::Vector& upper, la::Vector& x,
-                           const SmalbeStart* start)
-{
-  return solve_bounded(b, lower, &upper, x, start);
-}
-
-SmalbeReport Smalbe::solve_bounded(const la::Vector& b, const la::Vector& lower, const la::Vector* upper, la::Vector& x,
-                                   const SmalbeStart* start)
+SmalbeReport Smalbe::solve(const la::Vector& b, const SeparableConstraints& set, la::Vector& x, const QpState* start)
 {
   const auto solve_start = std::chrono::steady_clock::now();
   std::unique_ptr<la::SerialSpace> serial;
@@ -116,7 +104,7 @@ SmalbeReport Smalbe::solve_bounded(const la::Vector& b, const la::Vector& lower,
     }
     s.final_test = false;
     const la::Vector rhs = b - _C.apply_transpose(s.omega);
-    const QpReport r = upper ? s.mprgp->solve(rhs, lower, *upper, x) : s.mprgp->solve(rhs, lower, x);
+    const QpReport r = s.inner_solver->solve(rhs, set, x);
     report += r; // counters; the seconds are the whole solve's, set at the end
     report.projected_gradient_norm = r.projected_gradient_norm;
     report.outer_iterations = k + 1;
@@ -125,7 +113,7 @@ SmalbeReport Smalbe::solve_bounded(const la::Vector& b, const la::Vector& lower,
     report.equality_residual = feasibility / s.b_norm;
     if (!r.converged)
     {
-      report.reason = "SMALBE-M inner MPRGP: " + r.reason;
+      report.reason = "SMALBE-M inner solve: " + r.reason;
       break;
     }
     log_outer_iteration(s, k, r);
@@ -158,7 +146,7 @@ SmalbeReport Smalbe::solve_bounded(const la::Vector& b, const la::Vector& lower,
 }
 
 void Smalbe::set_initial_state(SolveState& s, const la::VectorSpace& space, const la::Vector& b,
-                               const SmalbeStart* start) const
+                               const QpState* start) const
 {
   // ||C x|| is a norm of a replicated coarse vector (no reduction); ||b|| and x'Hx are
   // reduced over the space.
@@ -173,12 +161,21 @@ void Smalbe::set_initial_state(SolveState& s, const la::VectorSpace& space, cons
   s.rho_max = _options.rho * _options.rho_limit;
   if (start)
   {
-    FETICON_CHECK(start->omega.size() == s.omega.size() && start->M > 0 && start->rho >= _options.rho,
-                  "SMALBE-M start: need omega of the size of Cx, M > 0, rho >= the initial rho");
-    s.omega = start->omega;
-    s.M = start->M;
-    s.rho = std::min(start->rho, s.rho_max);
+    FETICON_CHECK((start->omega.size() == 0 || start->omega.size() == s.omega.size()) && start->M >= 0,
+                  "SMALBE-M start: need omega of the size of Cx (or none) and M >= 0");
+    if (start->omega.size() > 0)
+      s.omega = start->omega;
+    if (start->M > 0)
+      s.M = start->M;
+    s.rho = std::min(std::max(start->rho, _options.rho), s.rho_max);
   }
+}
+
+std::unique_ptr<QpSolver> Smalbe::new_inner_solver(const la::LinearOperator& H, const MprgpOptions& options) const
+{
+  if (_options.inner_solver)
+    return _options.inner_solver(H, options);
+  return std::make_unique<Mprgp>(H, options);
 }
 
 bool Smalbe::feasible(const SolveState& s, const la::Vector& Cx) const
@@ -209,7 +206,7 @@ void Smalbe::make_inner_solver(SolveState& s) const
   s.last_progress = std::chrono::steady_clock::now();
   if (s.rho > _options.rho && s.inner.alpha_bar > 0)
     s.inner.alpha_bar = raised_alpha_bar(s.inner.alpha_bar, s.rho - _options.rho);
-  s.mprgp = std::make_unique<Mprgp>(s.H, s.inner);
+  s.inner_solver = new_inner_solver(s.H, s.inner);
 }
 
 void Smalbe::log_outer_iteration(SolveState& s, int k, const QpReport& r) const
@@ -249,13 +246,13 @@ void Smalbe::raise_rho_if_stalled(SolveState& s, int k, double feasibility) cons
     // From the alpha_bar in use (smaller if MPRGP has halved it); MPRGP still halves
     // alpha_bar whenever an expansion step increases the cost.
     MprgpOptions raised = s.inner;
-    raised.alpha_bar = raised_alpha_bar(s.mprgp->alpha_bar(), new_rho - s.rho);
+    raised.alpha_bar = raised_alpha_bar(s.inner_solver->alpha_bar(), new_rho - s.rho);
     log::iteration("    SMALBE-M: ||Cx|| stalled at " + std::to_string(feasibility / s.b_norm) + " ||b|| for " +
                    std::to_string(k - s.reference_iteration) + " outer iterations: rho " + std::to_string(s.rho) +
                    " -> " + std::to_string(new_rho));
     s.rho = new_rho;
     s.H.factor = s.rho;
-    s.mprgp = std::make_unique<Mprgp>(s.H, raised);
+    s.inner_solver = new_inner_solver(s.H, raised);
     ++s.report.rho_updates;
     s.reference_feasibility = feasibility;
     s.reference_iteration = k;

@@ -2,13 +2,13 @@
 /// @file SMALBE-M: semimonotonic augmented Lagrangian for bound and equality constraints
 /// with adaptive M (Dostál 2006, 2009; ALGORITHMS.md section 1).
 ///
-/// Solves   min 1/2 x'Ax - b'x   subject to   x >= l (or l <= x <= u),  C x = 0,
+/// Solves   min 1/2 x'Ax - b'x   subject to   x in Omega,  C x = 0,
 /// where C has orthonormal rows (C C' = I), through the augmented Hessian H = A + rho C'C,
 /// which SMALBE-M owns (for FETI: A = P F P, C = G~, so C'C = Q and H = PFP + rho Q), with its
 /// preconditioner M_A + C'C / rho_0 when the caller gives M_A ~ A^{-1} on Ker C (rho_0 the
 /// initial rho: on Im C' the exact inverse of H until rho is raised, and kept after that,
 /// which measured fewer steps than following rho; smalbe.cpp). Outer loop:
-///   x <- MPRGP on (H, b - C'omega, l), warm-started, stopped when
+///   x <- inner solver (MPRGP for bounds) on (H, b - C'omega, Omega), warm-started, stopped when
 ///        ||g_P|| <= min(M ||Cx||, eta)   or the final test holds;
 ///   final test: ||g_P|| <= rtol ||b|| and ||Cx|| <= rtol ||b|| (and, if the caller asks,
 ///        its own measure of Cx below its own tolerance: SmalbeOptions::equality_error);
@@ -29,9 +29,12 @@
 /// SMALBE (rho_k nondecreasing and bounded), restores the rate.
 /// Usage:
 ///   qp::Smalbe smalbe(A, C, {.rho = 1}, &preconditioner_of_A);
-///   const qp::SmalbeReport r = smalbe.solve(b, lower, x);
+///   const qp::SmalbeReport r = smalbe.solve(b, {lower, {}, {}}, x);
 
 #include "qp/mprgp.hpp"
+#include "qp/qp_state.hpp"
+
+#include <memory>
 
 namespace feticon::qp
 {
@@ -55,6 +58,10 @@ struct SmalbeIterate
   double lagrangian = 0;             ///< L(x, omega) with the penalty rho
 };
 
+/// Builds the inner solver for the augmented Hessian H (referenced; it outlives the solver)
+/// with MprgpOptions's step length, stopping test and preconditioner set by SMALBE-M.
+using InnerSolverFactory = std::function<std::unique_ptr<QpSolver>(const la::LinearOperator& H, const MprgpOptions&)>;
+
 struct SmalbeOptions
 {
   double rtol = 1e-6;      ///< final test on ||g_P|| and ||Cx||, relative to ||b||
@@ -76,6 +83,8 @@ struct SmalbeOptions
   /// gamma, alpha_bar (for H at the initial rho; 0: estimated), monitor; its rtol, stop and
   /// preconditioner are set here.
   MprgpOptions mprgp{};
+  /// The inner solver; unset: MPRGP (bounds only).
+  InnerSolverFactory inner_solver;
   /// Optional second feasibility test of the final stop, in the caller's units: converged
   /// only when also equality_error(Cx) <= equality_tolerance. For FETI, ||G lambda - e|| in
   /// force units: the rtol ||b|| test alone lets it grow with the gaps of inactive contact
@@ -85,16 +94,6 @@ struct SmalbeOptions
   double equality_tolerance = 0;
   /// Called after every outer iteration's inner solve (tests check the updates with it).
   std::function<void(const SmalbeIterate&)> monitor;
-};
-
-/// Where SMALBE-M starts (beyond x): the multiplier of Cx = 0, M and rho of an earlier solve
-/// of a nearby problem. rho >= SmalbeOptions::rho (H holds the initial rho; the difference is
-/// added as in a rho update); M > 0.
-struct SmalbeStart
-{
-  la::Vector omega;
-  double M = 1.0;
-  double rho = 1.0;
 };
 
 /// QpReport with the counters summed over the inner solves (outer_iterations and
@@ -115,28 +114,25 @@ public:
   /// @param preconditioner M_A ~ A^{-1} on Ker C, or null for none (referenced)
   Smalbe(const la::LinearOperator& A, const EqualityOperator& C, SmalbeOptions options,
          const la::LinearOperator* preconditioner = nullptr);
-  /// @param[in,out] x initial guess on input (projected onto x >= l), solution on output
-  /// @param start    omega, M and rho to start from; null: omega = 0, M0 and rho of the options
-  SmalbeReport solve(const la::Vector& b, const la::Vector& lower, la::Vector& x, const SmalbeStart* start = nullptr);
-  /// The same with the box lower <= x <= upper (upper_i = +infinity allowed; the inner MPRGP's
-  /// box solve): Tresca friction's tangential multipliers |lambda_T| <= g in 2D.
-  SmalbeReport solve(const la::Vector& b, const la::Vector& lower, const la::Vector& upper, la::Vector& x,
-                     const SmalbeStart* start = nullptr);
+  /// @param[in,out] x initial guess on input (projected onto Omega), solution on output
+  /// @param start    omega, M and rho of an earlier solve of a nearby problem (its x is not
+  ///                 read): omega of the size of Cx, or empty for 0; M = 0 for M0; rho raised
+  ///                 to at least the options' rho (H holds the initial rho; the difference is
+  ///                 added as in a rho update); null: omega = 0, M0 and rho of the options
+  SmalbeReport solve(const la::Vector& b, const SeparableConstraints& set, la::Vector& x,
+                     const QpState* start = nullptr);
 
 private:
-  /// omega, M, rho, H and the inner MPRGP of one solve (smalbe.cpp).
+  /// omega, M, rho, H and the inner solver of one solve (smalbe.cpp).
   struct SolveState;
 
-  /// Both solves: `upper` null for x >= lower only (the inner MPRGP's lower-bound arithmetic).
-  SmalbeReport solve_bounded(const la::Vector& b, const la::Vector& lower, const la::Vector* upper, la::Vector& x,
-                             const SmalbeStart* start);
-
   /// ||b||, the tolerances, and omega, M and rho from `start` or the options.
-  void set_initial_state(SolveState& s, const la::VectorSpace& space, const la::Vector& b,
-                         const SmalbeStart* start) const;
-  /// The inner MPRGP on H = A + rho C'C with the inner stop ||g_P|| <= min(M ||Cx||, eta) or
+  void set_initial_state(SolveState& s, const la::VectorSpace& space, const la::Vector& b, const QpState* start) const;
+  /// The inner solver on H = A + rho C'C with the inner stop ||g_P|| <= min(M ||Cx||, eta) or
   /// the final test, and the preconditioner for the initial rho.
   void make_inner_solver(SolveState& s) const;
+  /// The inner solver for H: SmalbeOptions::inner_solver's, or MPRGP.
+  std::unique_ptr<QpSolver> new_inner_solver(const la::LinearOperator& H, const MprgpOptions& options) const;
   /// The feasibility half of the final test: ||Cx|| <= rtol ||b|| and the caller's equality error.
   bool feasible(const SolveState& s, const la::Vector& Cx) const;
   /// One line per outer iteration (at the summary level every 10 s when iterations are not logged).

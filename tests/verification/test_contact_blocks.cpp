@@ -121,21 +121,21 @@ TEST(ContactBlocks, DualSolutionSatisfiesKktConditions)
 
   const int64_t m_E = equality.rows.n_rows();
   const la::Vector Bu = feti.apply_B(solution.u);
-  const double lambda_scale = solution.lambda.tail(rows.n_rows() - m_E).cwiseAbs().maxCoeff();
+  const double lambda_scale = solution.state.x.tail(rows.n_rows() - m_E).cwiseAbs().maxCoeff();
   const double u_scale = solution.u.cwiseAbs().maxCoeff();
   double min_lambda = 0, min_gap = 0, complementarity = 0;
   for (int64_t i = m_E; i < rows.n_rows(); ++i)
   {
     const double gap = c(i) - Bu(i);
-    min_lambda = std::min(min_lambda, solution.lambda(i));
+    min_lambda = std::min(min_lambda, solution.state.x(i));
     min_gap = std::min(min_gap, gap);
-    complementarity = std::max(complementarity, std::abs(solution.lambda(i) * gap));
+    complementarity = std::max(complementarity, std::abs(solution.state.x(i) * gap));
   }
   EXPECT_GE(min_lambda, -1e-12 * lambda_scale);
   EXPECT_GE(min_gap, -1e-8 * u_scale);
   EXPECT_LT(complementarity, 1e-8 * lambda_scale * u_scale);
   EXPECT_LT((Bu - c).head(m_E).norm(), 1e-8 * u_scale);
-  const la::Vector rhs = f - feti.apply_Bt(solution.lambda);
+  const la::Vector rhs = f - feti.apply_Bt(solution.state.x);
   double residual = 0;
   for (int32_t s = 0; s < decomp.n_subdomains(); ++s)
     residual +=

@@ -189,7 +189,7 @@ TEST(Smalbe, MatchesAnIndependentSolveOfBoundAndEqualityConstraints)
     ASSERT_GT(reference.omega.norm(), 0.1) << "and a multiplier of C x = 0";
     Smalbe smalbe(p.Aop, p.C, options(p.rho));
     la::Vector x = la::Vector::Zero(24);
-    const SmalbeReport r = smalbe.solve(qp.b, qp.lower, x);
+    const SmalbeReport r = smalbe.solve(qp.b, {qp.lower, {}, {}}, x);
     ASSERT_TRUE(r.converged) << r.reason;
     EXPECT_LT((x - reference.x).norm(), 1e-7 * reference.x.norm()) << "seed " << seed;
     EXPECT_LT((r.omega - reference.omega).norm(), 1e-6 * reference.omega.norm()) << "seed " << seed;
@@ -209,12 +209,55 @@ TEST(Smalbe, MatchesAnIndependentSolveOfBoxAndEqualityConstraints)
     DenseEquality C(qp.C);
     Smalbe smalbe(A, C, options(rho));
     la::Vector x = la::Vector::Zero(24);
-    const SmalbeReport r = smalbe.solve(qp.b, qp.lower, qp.upper, x);
+    const SmalbeReport r = smalbe.solve(qp.b, {qp.lower, qp.upper, {}}, x);
     ASSERT_TRUE(r.converged) << r.reason;
     EXPECT_TRUE((x.array() >= qp.lower.array()).all() && (x.array() <= qp.upper.array()).all());
     EXPECT_LT((x - reference.x).norm(), 1e-7 * reference.x.norm()) << "seed " << seed;
     EXPECT_LT((r.omega - reference.omega).norm(), 1e-6 * reference.omega.norm()) << "seed " << seed;
   }
+}
+
+// SmalbeOptions::inner_solver: SMALBE-M solves its inner QPs with the solver the caller
+// builds, one for each augmented Hessian (at the start and after every rho update). The
+// reference is the default inner MPRGP: wrapping it must change nothing, bitwise.
+TEST(Smalbe, TakesTheCallersInnerSolver)
+{
+  class CountedMprgp : public Mprgp
+  {
+  public:
+    CountedMprgp(const la::LinearOperator& H, const MprgpOptions& options, int& solves)
+        : Mprgp(H, options), _solves(solves)
+    {
+    }
+    QpReport solve(const la::Vector& b, const SeparableConstraints& set, la::Vector& x) override
+    {
+      ++_solves;
+      return Mprgp::solve(b, set, x);
+    }
+
+  private:
+    int& _solves;
+  };
+  const Augmented p(make_qp(24, 4, 3));
+  SmalbeOptions o = options(p.rho);
+  o.rho = 1; // small enough that the stall test raises rho
+  o.rho_growth = 10;
+  la::Vector x_default = la::Vector::Zero(24);
+  const SmalbeReport r_default = Smalbe(p.Aop, p.C, o).solve(p.qp.b, {p.qp.lower, {}, {}}, x_default);
+  int built = 0, solves = 0;
+  o.inner_solver = [&](const la::LinearOperator& H, const MprgpOptions& inner) {
+    ++built;
+    return std::make_unique<CountedMprgp>(H, inner, solves);
+  };
+  la::Vector x = la::Vector::Zero(24);
+  const SmalbeReport r = Smalbe(p.Aop, p.C, o).solve(p.qp.b, {p.qp.lower, {}, {}}, x);
+  ASSERT_TRUE(r.converged) << r.reason;
+  ASSERT_GT(r.rho_updates, 0) << "the run should raise rho, so that more than one inner solver is built";
+  EXPECT_EQ(built, 1 + r.rho_updates);
+  EXPECT_EQ(solves, r.outer_iterations);
+  EXPECT_EQ(x, x_default);
+  EXPECT_EQ(r.iterations, r_default.iterations);
+  EXPECT_EQ(r.rho_updates, r_default.rho_updates);
 }
 
 // The caller's own feasibility measure (SmalbeOptions::equality_error): with a loose rtol the
@@ -231,7 +274,7 @@ TEST(Smalbe, MeetsTheCallersEqualityToleranceBeyondRtol)
   SmalbeOptions loose = options(p.rho);
   loose.rtol = 1e-3;
   la::Vector x_loose = la::Vector::Zero(24);
-  const SmalbeReport r_loose = Smalbe(p.Aop, p.C, loose).solve(p.qp.b, p.qp.lower, x_loose);
+  const SmalbeReport r_loose = Smalbe(p.Aop, p.C, loose).solve(p.qp.b, {p.qp.lower, {}, {}}, x_loose);
   ASSERT_TRUE(r_loose.converged) << r_loose.reason;
   const double tolerance = 1e-3 * weighted(p.qp.C * x_loose);
   ASSERT_GT(tolerance, 0) << "the loose solve should leave Cx != 0, or the test shows nothing";
@@ -240,7 +283,7 @@ TEST(Smalbe, MeetsTheCallersEqualityToleranceBeyondRtol)
   strict.equality_error = weighted;
   strict.equality_tolerance = tolerance;
   la::Vector x = la::Vector::Zero(24);
-  const SmalbeReport r = Smalbe(p.Aop, p.C, strict).solve(p.qp.b, p.qp.lower, x);
+  const SmalbeReport r = Smalbe(p.Aop, p.C, strict).solve(p.qp.b, {p.qp.lower, {}, {}}, x);
   ASSERT_TRUE(r.converged) << r.reason;
   EXPECT_LE(weighted(p.qp.C * x), tolerance);
   EXPECT_GT(r.outer_iterations, r_loose.outer_iterations);
@@ -263,7 +306,7 @@ TEST(Smalbe, UpdatesOmegaAndMAsInAlgorithmsSection1)
   o.monitor = [&](const SmalbeIterate& it) { records.push_back({*it.x, *it.omega, it.M, it.lagrangian}); };
   Smalbe smalbe(p.Aop, p.C, o);
   la::Vector x = la::Vector::Zero(24);
-  const SmalbeReport r = smalbe.solve(qp.b, qp.lower, x);
+  const SmalbeReport r = smalbe.solve(qp.b, {qp.lower, {}, {}}, x);
   ASSERT_TRUE(r.converged) << r.reason;
   ASSERT_GE(records.size(), 4u);
   int decreases = 0;
@@ -299,14 +342,14 @@ TEST(Smalbe, StartsFromTheMultiplierMAndRhoOfAnEarlierSolve)
   const double rho = p.rho;
   Smalbe smalbe(p.Aop, p.C, options(rho));
   la::Vector x = la::Vector::Zero(24);
-  const SmalbeReport first = smalbe.solve(qp.b, qp.lower, x);
+  const SmalbeReport first = smalbe.solve(qp.b, {qp.lower, {}, {}}, x);
   ASSERT_TRUE(first.converged) << first.reason;
   ASSERT_GT(first.outer_iterations, 3);
 
   // Restarted at its own solution, the solve stops at once.
-  const SmalbeStart same{first.omega, first.final_M, first.final_rho};
+  const QpState same{{}, first.omega, first.final_M, first.final_rho};
   la::Vector again = x;
-  const SmalbeReport restarted = smalbe.solve(qp.b, qp.lower, again, &same);
+  const SmalbeReport restarted = smalbe.solve(qp.b, {qp.lower, {}, {}}, again, &same);
   EXPECT_TRUE(restarted.converged);
   EXPECT_EQ(restarted.outer_iterations, 1);
   EXPECT_LE(restarted.iterations, 1);
@@ -320,17 +363,17 @@ TEST(Smalbe, StartsFromTheMultiplierMAndRhoOfAnEarlierSolve)
   for (la::Index i = 0; i < b.size(); ++i)
     b[i] += 0.01 * qp.b.norm() / std::sqrt(24.0) * normal(generator);
   la::Vector warm_x = x, cold_x = x;
-  const SmalbeReport warm = smalbe.solve(b, qp.lower, warm_x, &same);
-  const SmalbeReport cold = smalbe.solve(b, qp.lower, cold_x);
+  const SmalbeReport warm = smalbe.solve(b, {qp.lower, {}, {}}, warm_x, &same);
+  const SmalbeReport cold = smalbe.solve(b, {qp.lower, {}, {}}, cold_x);
   ASSERT_TRUE(warm.converged && cold.converged);
   EXPECT_LT(warm.outer_iterations, cold.outer_iterations);
   EXPECT_LT(warm.iterations, cold.iterations);
   EXPECT_LT((warm_x - cold_x).norm(), 1e-7 * cold_x.norm());
 
   // A raised rho is taken over: H is augmented by the difference.
-  const SmalbeStart raised{first.omega, first.final_M, 10 * rho};
+  const QpState raised{{}, first.omega, first.final_M, 10 * rho};
   la::Vector raised_x = x;
-  const SmalbeReport with_raised = smalbe.solve(b, qp.lower, raised_x, &raised);
+  const SmalbeReport with_raised = smalbe.solve(b, {qp.lower, {}, {}}, raised_x, &raised);
   ASSERT_TRUE(with_raised.converged) << with_raised.reason;
   EXPECT_DOUBLE_EQ(with_raised.final_rho, 10 * rho);
   EXPECT_LT((raised_x - cold_x).norm(), 1e-7 * cold_x.norm());

@@ -1,0 +1,138 @@
+#include "dual/contact_qp.hpp"
+
+#include "common/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace feticon::dual
+{
+namespace
+{
+/// Particular solution of G lambda = e (ALGORITHMS.md 1): variant B, lambda~ = [lambda~_E; 0]
+/// from the equality rows alone, when they fix every rigid mode; then the contact bounds
+/// are simply lambda_I >= 0 and mu = 0 is feasible. Otherwise (a body held only by
+/// contact, like the Hertz cylinder) variant A, the minimal-norm G'(GG')^{-1} e.
+la::Vector particular_solution(const FetiOperators& feti, const CoarseProjector& projector, const la::Vector& e,
+                               const std::vector<RowKind>& kinds)
+{
+  // Either variant must satisfy G lambda~ = e. The pivot test of G_E G_E' can miss a
+  // mode that only contact holds once that matrix is large (a 1 025-subdomain punch: the
+  // round-off pivot passed, lambda~ missed the punch's load and SMALBE-M "converged" to a
+  // zero contact force), so the equation itself decides.
+  const double tolerance = 1e-6 * std::max(e.norm(), 1e-300);
+  const int64_t local_contact_rows =
+      std::count_if(kinds.begin(), kinds.end(), [](RowKind k) { return k != RowKind::equality; });
+  if (feti.comm().sum(local_contact_rows) > 0)
+  {
+    std::vector<char> equality_mask(kinds.size(), 0);
+    for (size_t i = 0; i < kinds.size(); ++i)
+      equality_mask[i] = kinds[i] == RowKind::equality;
+    const CoarseProjector equality_projector(feti, std::nothrow, std::move(equality_mask));
+    if (equality_projector.full_rank())
+    {
+      la::Vector lambda_tilde = equality_projector.particular_solution(e);
+      if ((feti.apply_G(lambda_tilde) - e).norm() <= tolerance)
+        return lambda_tilde;
+    }
+  }
+  la::Vector lambda_tilde = projector.particular_solution(e);
+  const double residual = (feti.apply_G(lambda_tilde) - e).norm();
+  FETICON_CHECK(residual <= tolerance,
+                "coarse problem: ||G lambda~ - e|| = " << residual << " exceeds " << tolerance
+                                                       << " (G G' too ill-conditioned to balance the loads)");
+  return lambda_tilde;
+}
+
+/// ||PFP||, the scale of the dual: the caller's last estimate, or power iterations.
+qp::NormEstimate pfp_norm_estimate(const FetiOperators& feti, const CoarseProjector& projector,
+                                   const DualPenaltyOptions& options, double known)
+{
+  // ||PFP|| changes little when only the contact rows change (ALGORITHMS.md section 8): the
+  // caller passes the last estimate while F is the same, and the power iterations (6-7
+  // products per QP on Hertz) are skipped. It only scales F; a too small value makes an
+  // expansion step too long, which MPRGP detects and halves.
+  if (known > 0)
+    return {known, 0};
+  const FOperator F_raw(feti);
+  const ProjectedOperator PFP_raw(F_raw, projector, 0.0);
+  const qp::NormEstimate norm = qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1);
+  FETICON_CHECK(norm.value > 0 && std::isfinite(norm.value), "||PFP|| estimate " << norm.value << " is not positive");
+  return norm;
+}
+
+/// Omega of the homogenized unknown mu = lambda - lambda~: mu_i >= -lambda~_i on the normal
+/// contact rows, free on the equality rows; no upper bounds.
+qp::SeparableConstraints constraint_set(const std::vector<RowKind>& kinds, const la::Vector& lambda_tilde)
+{
+  qp::SeparableConstraints set;
+  set.lower = la::Vector::Constant(lambda_tilde.size(), -std::numeric_limits<double>::infinity());
+  for (size_t i = 0; i < kinds.size(); ++i)
+    if (kinds[i] == RowKind::normal)
+      set.lower(i) = -lambda_tilde(i);
+  return set;
+}
+} // namespace
+
+std::vector<RowKind> row_kinds(const FetiOperators& feti, int64_t n_equality)
+{
+  std::vector<RowKind> kinds(feti.n_dual());
+  for (la::Index i = 0; i < feti.n_dual(); ++i)
+    kinds[i] = feti.row_id(i) < n_equality ? RowKind::equality : RowKind::normal;
+  return kinds;
+}
+
+ContactQp::ContactQp(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked, int64_t n_equality,
+                     const DualPenaltyOptions& options, double pfp_norm)
+    : _feti(feti), _c(c), _f_stacked(f_stacked), _kinds(row_kinds(feti, n_equality)), _projector(feti),
+      _e(feti.apply_Rt(f_stacked)), _lambda_tilde(particular_solution(feti, _projector, _e, _kinds)),
+      _norm(pfp_norm_estimate(feti, _projector, options, pfp_norm)), _scale(1.0 / _norm.value), _F(feti, _scale),
+      // The dual penalty's A holds rho Q; SMALBE-M adds rho Q = rho G~'G~ itself (for the rho
+      // it has at the time).
+      _A_untimed(_F, _projector, options.method == DualMethod::smalbe ? 0.0 : options.rho), _A(_A_untimed),
+      _set(constraint_set(_kinds, _lambda_tilde)), _C(_projector)
+{
+  FETICON_CHECK(c.size() == feti.n_dual() && n_equality <= feti.n_dual_global(), "dual problem: sizes do not match");
+  const la::Vector d = feti.apply_B(feti.apply_K_plus(f_stacked)) - c;
+  _b = _projector.apply_P(_scale * (d - feti.apply_F(_lambda_tilde)));
+  if (options.preconditioner != DualPreconditioner::none)
+    _timed_preconditioner.emplace(_preconditioner.emplace(feti, _projector, options, _norm.value, n_equality,
+                                                          options.method == DualMethod::smalbe ? 0.0 : options.rho));
+}
+
+la::Vector ContactQp::mu(const la::Vector& lambda) const
+{
+  // Projected onto Ker G: when K_M(u) or the contact rows change, G changes and
+  // lambda_start - lambda~ is far from Ker G, which SMALBE-M would then repair slowly
+  // through its multiplier (the inner stop ||g_P|| <= M ||G~ mu|| passes at once).
+  if (lambda.size() != _feti.n_dual())
+    return la::Vector::Zero(_feti.n_dual());
+  return _projector.apply_P(lambda - _lambda_tilde);
+}
+
+std::optional<qp::QpState> ContactQp::inner_start(const qp::QpState& state) const
+{
+  // The multiplier of G~ mu = 0 in the scaled dual is 1/||PFP|| times the unscaled one.
+  if (state.omega.size() != _feti.n_kernel())
+    return std::nullopt;
+  return qp::QpState{{}, _projector.tilde_multiplier(_scale * state.omega), state.M, state.rho, 0};
+}
+
+qp::QpState ContactQp::outer_state(const la::Vector& lambda, const qp::SmalbeReport& report) const
+{
+  return {lambda, _projector.coarse_multiplier(report.omega) / _scale, report.final_M, report.final_rho, _norm.value};
+}
+
+double ContactQp::feasibility_error(const la::Vector& lambda) const
+{
+  const double e_norm = _e.norm();
+  return (_feti.apply_G(lambda) - _e).norm() / (e_norm > 0 ? e_norm : 1.0);
+}
+
+PrimalSolution ContactQp::recover(const la::Vector& lambda, const std::vector<char>& active,
+                                  const std::string& unheld) const
+{
+  return recover_primal(_feti, _f_stacked, _c, lambda, active, unheld);
+}
+} // namespace feticon::dual

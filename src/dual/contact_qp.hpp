@@ -1,0 +1,118 @@
+#pragma once
+/// @file The contact dual as a QP object (PERMON's QP with its transforms): the FETI dual
+/// of Vondrák et al. (DD XVI, 2007), problem (9), homogenized and scaled, with its
+/// constraints by row kind and the maps back to lambda and u (ALGORITHMS.md section 1).
+///
+///   lambda = lambda~ + mu,  G lambda~ = e (particular_solution in contact_qp.cpp),
+///   min 1/2 mu' A mu - mu' b   s.t.  mu in Omega,  G~ mu = 0 (SMALBE-M; the dual penalty
+///   adds rho Q to A instead),
+///   A = P F^ P,  b = P (d^ - F^ lambda~),  F^ = F / ||PFP||,  d^ = d / ||PFP||,
+///   Omega: mu_i free on equality rows, mu_i >= -lambda~_i on normal contact rows.
+/// Scaling by ||PFP|| (power iterations) leaves the minimizer unchanged and makes rho and the
+/// tolerances dimensionless. Coordinates of SMALBE-M's multiplier omega of G~ mu = 0: inside
+/// the QP it is scaled and in G~'s rows; outside (qp::QpState of a dual solve) it is the
+/// coarse vector beta by rigid modes, unscaled, which carries over to the next outer
+/// iteration's G (CoarseProjector::coarse_multiplier).
+
+#include "dual/dual_penalty_problem.hpp"
+#include "dual/dual_preconditioner.hpp"
+#include "dual/primal_recovery.hpp"
+#include "dual/projector.hpp"
+#include "qp/norm_estimate.hpp"
+#include "qp/qp_state.hpp"
+#include "qp/separable_constraints.hpp"
+#include "qp/smalbe.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace feticon::dual
+{
+/// What a dual row constrains.
+enum class RowKind : uint8_t
+{
+  equality, ///< gluing, supports, linear equations: B_E u = c_E, multiplier free
+  normal    ///< contact: B_I u <= c_I, multiplier >= 0
+};
+
+/// The kinds of `feti`'s owned rows: ids below n_equality are equalities, the rest normal
+/// contact rows.
+std::vector<RowKind> row_kinds(const FetiOperators& feti, int64_t n_equality);
+
+class ContactQp
+{
+public:
+  /// @param c         right-hand sides of the owned rows (B u = c_E, B u <= c_I)
+  /// @param f_stacked stacked load
+  /// @param n_equality global number of equality rows (ids below it; the rest are contact
+  ///                  rows, row_kinds)
+  /// @param options   rho (dual penalty: in A), preconditioner, power iterations (referenced)
+  /// @param pfp_norm  ||PFP|| of a solve with the same F, or 0 to estimate it here
+  /// Vectors are this rank's parts (FetiOperators); feti, c and f_stacked are referenced.
+  ContactQp(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked, int64_t n_equality,
+            const DualPenaltyOptions& options, double pfp_norm);
+
+  /// A = P F^ P, + rho Q for the dual penalty; timed.
+  const la::TimedOperator& hessian() const { return _A; }
+  const la::Vector& rhs() const { return _b; }
+  const qp::SeparableConstraints& constraints() const { return _set; }
+  /// G~, orthonormal rows.
+  const qp::EqualityOperator& equality() const { return _C; }
+  /// The preconditioner of A (none: null); timed.
+  const la::TimedOperator* preconditioner() const { return _timed_preconditioner ? &*_timed_preconditioner : nullptr; }
+  const CoarseProjector& projector() const { return _projector; }
+  /// The scaled F^.
+  const FOperator& scaled_F() const { return _F; }
+  double pfp_norm() const { return _norm.value; }
+  /// Products with PFP spent on the norm estimate (0 when it was given).
+  int norm_applications() const { return _norm.applications; }
+  const std::vector<RowKind>& kinds() const { return _kinds; }
+
+  /// mu of lambda, projected onto Ker G (a warm start of a changed G); 0 if lambda is empty.
+  la::Vector mu(const la::Vector& lambda) const;
+  la::Vector lambda(const la::Vector& mu) const { return _lambda_tilde + mu; }
+  /// SMALBE-M's start from a dual solve's state (omega as a coarse vector), or none when the
+  /// state has no multiplier for this coarse space.
+  std::optional<qp::QpState> inner_start(const qp::QpState& state) const;
+  /// The dual solve's state of SMALBE-M's result (omega back to a coarse vector).
+  qp::QpState outer_state(const la::Vector& lambda, const qp::SmalbeReport& report) const;
+  /// ||G lambda - e|| / ||e||.
+  double feasibility_error(const la::Vector& lambda) const;
+  /// ||e||, the net load on the subdomains' rigid modes.
+  double load_norm() const { return _e.norm(); }
+  /// u from lambda and its active rows (primal_recovery.hpp); `unheld` explains a body the
+  /// active rows leave free.
+  PrimalSolution recover(const la::Vector& lambda, const std::vector<char>& active, const std::string& unheld) const;
+
+private:
+  const FetiOperators& _feti;
+  const la::Vector& _c;
+  const la::Vector& _f_stacked;
+  std::vector<RowKind> _kinds;
+  CoarseProjector _projector;
+  la::Vector _e;
+  la::Vector _lambda_tilde;
+  qp::NormEstimate _norm;
+  double _scale; ///< 1 / ||PFP||
+  FOperator _F;
+  ProjectedOperator _A_untimed;
+  la::TimedOperator _A;
+  la::Vector _b;
+  qp::SeparableConstraints _set;
+  /// G~ as SMALBE-M's equality operator.
+  class GTildeOperator : public qp::EqualityOperator
+  {
+  public:
+    explicit GTildeOperator(const CoarseProjector& projector) : _projector(projector) {}
+    la::Vector apply(const la::Vector& x) const override { return _projector.apply_G_tilde(x); }
+    la::Vector apply_transpose(const la::Vector& y) const override { return _projector.apply_G_tilde_t(y); }
+
+  private:
+    const CoarseProjector& _projector;
+  } _C;
+  std::optional<DualPreconditionerOperator> _preconditioner;
+  std::optional<la::TimedOperator> _timed_preconditioner;
+};
+} // namespace feticon::dual
