@@ -63,37 +63,56 @@ qp::NormEstimate pfp_norm_estimate(const FetiOperators& feti, const CoarseProjec
 }
 
 /// Omega of the homogenized unknown mu = lambda - lambda~: mu_i >= -lambda~_i on the normal
-/// contact rows, free on the equality rows; no upper bounds.
-qp::SeparableConstraints constraint_set(const std::vector<RowKind>& kinds, const la::Vector& lambda_tilde)
+/// contact rows, free on the equality rows, |lambda~_i + mu_i| <= g_i on tangential rows. No
+/// upper bounds without friction (MPRGP's lower-bound arithmetic, as before friction existed).
+qp::SeparableConstraints constraint_set(const std::vector<RowKind>& kinds, const la::Vector& lambda_tilde,
+                                        const FrictionRows* friction)
 {
+  constexpr double inf = std::numeric_limits<double>::infinity();
   qp::SeparableConstraints set;
-  set.lower = la::Vector::Constant(lambda_tilde.size(), -std::numeric_limits<double>::infinity());
+  set.lower = la::Vector::Constant(lambda_tilde.size(), -inf);
+  if (friction)
+    set.upper = la::Vector::Constant(lambda_tilde.size(), inf);
   for (size_t i = 0; i < kinds.size(); ++i)
     if (kinds[i] == RowKind::normal)
       set.lower(i) = -lambda_tilde(i);
+    else if (kinds[i] == RowKind::tangential)
+    {
+      const double g = friction->slip_bound(i);
+      FETICON_CHECK(g >= 0, "friction: slip bound " << g << " of dual row " << i); // +infinity: sticks
+      set.lower(i) = -g - lambda_tilde(i);
+      set.upper(i) = g - lambda_tilde(i);
+    }
   return set;
 }
 } // namespace
 
-std::vector<RowKind> row_kinds(const FetiOperators& feti, int64_t n_equality)
+std::vector<RowKind> row_kinds(const FetiOperators& feti, int64_t n_equality, const FrictionRows* friction)
 {
   std::vector<RowKind> kinds(feti.n_dual());
   for (la::Index i = 0; i < feti.n_dual(); ++i)
-    kinds[i] = feti.row_id(i) < n_equality ? RowKind::equality : RowKind::normal;
+  {
+    const int64_t id = feti.row_id(i);
+    kinds[i] = id < n_equality                              ? RowKind::equality
+        : !friction || id < n_equality + friction->n_normal ? RowKind::normal
+                                                            : RowKind::tangential;
+  }
   return kinds;
 }
 
 ContactQp::ContactQp(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked, int64_t n_equality,
-                     const DualPenaltyOptions& options, double pfp_norm)
-    : _feti(feti), _c(c), _f_stacked(f_stacked), _kinds(row_kinds(feti, n_equality)), _projector(feti),
-      _e(feti.apply_Rt(f_stacked)), _lambda_tilde(particular_solution(feti, _projector, _e, _kinds)),
+                     const DualPenaltyOptions& options, double pfp_norm, const FrictionRows* friction)
+    : _feti(feti), _c(c), _f_stacked(f_stacked), _friction(friction), _kinds(row_kinds(feti, n_equality, friction)),
+      _projector(feti), _e(feti.apply_Rt(f_stacked)), _lambda_tilde(particular_solution(feti, _projector, _e, _kinds)),
       _norm(pfp_norm_estimate(feti, _projector, options, pfp_norm)), _scale(1.0 / _norm.value), _F(feti, _scale),
       // The dual penalty's A holds rho Q; SMALBE-M adds rho Q = rho G~'G~ itself (for the rho
       // it has at the time).
       _A_untimed(_F, _projector, options.method == DualMethod::smalbe ? 0.0 : options.rho), _A(_A_untimed),
-      _set(constraint_set(_kinds, _lambda_tilde)), _C(_projector)
+      _set(constraint_set(_kinds, _lambda_tilde, friction)), _C(_projector)
 {
-  FETICON_CHECK(c.size() == feti.n_dual() && n_equality <= feti.n_dual_global(), "dual problem: sizes do not match");
+  FETICON_CHECK(c.size() == feti.n_dual() && n_equality <= feti.n_dual_global() &&
+                    (!friction || friction->slip_bound.size() == feti.n_dual()),
+                "dual problem: sizes do not match");
   const la::Vector d = feti.apply_B(feti.apply_K_plus(f_stacked)) - c;
   _b = _projector.apply_P(_scale * (d - feti.apply_F(_lambda_tilde)));
   if (options.preconditioner != DualPreconditioner::none)

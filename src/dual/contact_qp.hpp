@@ -7,7 +7,8 @@
 ///   min 1/2 mu' A mu - mu' b   s.t.  mu in Omega,  G~ mu = 0 (SMALBE-M; the dual penalty
 ///   adds rho Q to A instead),
 ///   A = P F^ P,  b = P (d^ - F^ lambda~),  F^ = F / ||PFP||,  d^ = d / ||PFP||,
-///   Omega: mu_i free on equality rows, mu_i >= -lambda~_i on normal contact rows.
+///   Omega: mu_i free on equality rows, mu_i >= -lambda~_i on normal contact rows,
+///          -g_i - lambda~_i <= mu_i <= g_i - lambda~_i on tangential rows (Tresca's box, 2D).
 /// Scaling by ||PFP|| (power iterations) leaves the minimizer unchanged and makes rho and the
 /// tolerances dimensionless. Coordinates of SMALBE-M's multiplier omega of G~ mu = 0: inside
 /// the QP it is scaled and in G~'s rows; outside (qp::QpState of a dual solve) it is the
@@ -33,13 +34,22 @@ namespace feticon::dual
 /// What a dual row constrains.
 enum class RowKind : uint8_t
 {
-  equality, ///< gluing, supports, linear equations: B_E u = c_E, multiplier free
-  normal    ///< contact: B_I u <= c_I, multiplier >= 0
+  equality,  ///< gluing, supports, linear equations: B_E u = c_E, multiplier free
+  normal,    ///< contact: B_I u <= c_I, multiplier >= 0
+  tangential ///< friction: |multiplier| <= g (Tresca's slip bound, or mu times the normal force)
 };
 
-/// The kinds of `feti`'s owned rows: ids below n_equality are equalities, the rest normal
-/// contact rows.
-std::vector<RowKind> row_kinds(const FetiOperators& feti, int64_t n_equality);
+/// The tangential rows of a problem with friction and their slip bounds.
+struct FrictionRows
+{
+  int64_t n_normal = 0;  ///< the normal rows are ids [n_equality, n_equality + n_normal), the
+                         ///< tangential ones follow
+  la::Vector slip_bound; ///< g_i >= 0 of each owned row (row-normalized force; others ignored)
+};
+
+/// The kinds of `feti`'s owned rows: ids below n_equality are equalities; without friction the
+/// rest are normal contact rows, with it the next friction->n_normal, then tangential ones.
+std::vector<RowKind> row_kinds(const FetiOperators& feti, int64_t n_equality, const FrictionRows* friction = nullptr);
 
 class ContactQp
 {
@@ -50,9 +60,10 @@ public:
   ///                  rows, row_kinds)
   /// @param options   rho (dual penalty: in A), preconditioner, power iterations (referenced)
   /// @param pfp_norm  ||PFP|| of a solve with the same F, or 0 to estimate it here
+  /// @param friction  the tangential rows and their slip bounds, or null without friction
   /// Vectors are this rank's parts (FetiOperators); feti, c and f_stacked are referenced.
   ContactQp(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked, int64_t n_equality,
-            const DualPenaltyOptions& options, double pfp_norm);
+            const DualPenaltyOptions& options, double pfp_norm, const FrictionRows* friction = nullptr);
 
   /// A = P F^ P, + rho Q for the dual penalty; timed.
   const la::TimedOperator& hessian() const { return _A; }
@@ -69,6 +80,8 @@ public:
   /// Products with PFP spent on the norm estimate (0 when it was given).
   int norm_applications() const { return _norm.applications; }
   const std::vector<RowKind>& kinds() const { return _kinds; }
+  /// g_i of owned tangential row i (0 without friction).
+  double slip_bound(la::Index i) const { return _friction ? _friction->slip_bound(i) : 0.0; }
 
   /// mu of lambda, projected onto Ker G (a warm start of a changed G); 0 if lambda is empty.
   la::Vector mu(const la::Vector& lambda) const;
@@ -90,6 +103,7 @@ private:
   const FetiOperators& _feti;
   const la::Vector& _c;
   const la::Vector& _f_stacked;
+  const FrictionRows* _friction;
   std::vector<RowKind> _kinds;
   CoarseProjector _projector;
   la::Vector _e;

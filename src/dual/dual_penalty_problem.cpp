@@ -113,29 +113,32 @@ qp::SmalbeOptions smalbe_options(const FetiOperators& feti, const CoarseProjecto
   return smalbe;
 }
 
-/// The rows of primal recovery (ALGORITHMS.md section 1): the equalities and the contact rows
-/// with a positive multiplier; `active_contacts` counts the latter over all ranks.
-std::vector<char> active_rows(const FetiOperators& feti, const la::Vector& lambda, int64_t n_equality,
+/// The rows of primal recovery (ALGORITHMS.md section 1): the equalities, the normal contact
+/// rows with a positive multiplier and the tangential rows that stick (|lambda_i| < g_i: the
+/// slip there is zero; a sliding row's force is known, its slip not); `active_contacts` counts
+/// the normal ones over all ranks.
+std::vector<char> active_rows(const FetiOperators& feti, const ContactQp& qp, const la::Vector& lambda,
                               int64_t& active_contacts)
 {
-  // Active rows: equalities and contact rows with a positive multiplier. MPRGP keeps
-  // bound components exactly at the bound, so lambda_i = 0 there up to round-off; the
-  // threshold only guards against round-off-sized values.
+  // MPRGP keeps bound components exactly at the bound, so lambda_i = 0 (or |lambda_i| = g_i)
+  // there up to round-off; the threshold only guards against round-off-sized values.
   const int64_t m = feti.n_dual();
-  auto is_contact = [&](int64_t i) { return feti.row_id(i) >= n_equality; };
+  const std::vector<RowKind>& kinds = qp.kinds();
   double lambda_max = 0;
   for (int64_t i = 0; i < m; ++i)
-    if (is_contact(i))
-      lambda_max = std::max(lambda_max, lambda(i));
+    if (kinds[i] != RowKind::equality)
+      lambda_max = std::max(lambda_max, std::abs(lambda(i)));
   lambda_max = feti.space().max(lambda_max);
   std::vector<char> active(m, 1);
   int64_t local_active = 0;
   for (int64_t i = 0; i < m; ++i)
-    if (is_contact(i))
+    if (kinds[i] == RowKind::normal)
     {
       active[i] = lambda(i) > 1e-12 * lambda_max;
       local_active += active[i];
     }
+    else if (kinds[i] == RowKind::tangential)
+      active[i] = std::abs(lambda(i)) < qp.slip_bound(i) - 1e-12 * lambda_max;
   active_contacts = feti.comm().sum(local_active);
   return active;
 }
@@ -166,10 +169,11 @@ std::string unheld_body_message(const FetiOperators& feti, const la::Vector& b, 
 } // namespace
 
 DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked,
-                                int64_t n_equality, const DualPenaltyOptions& options, const qp::QpState& warm)
+                                int64_t n_equality, const DualPenaltyOptions& options, const qp::QpState& warm,
+                                const FrictionRows* friction)
 {
   FETICON_CHECK(options.rho > 0, "rho = " << options.rho << " must be positive");
-  const ContactQp qp(feti, c, f_stacked, n_equality, options, warm.operator_norm);
+  const ContactQp qp(feti, c, f_stacked, n_equality, options, warm.operator_norm, friction);
   la::Vector mu = qp.mu(warm.x);
   DualSolution out;
   qp::MprgpOptions mprgp = mprgp_options(options);
@@ -200,7 +204,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, 
   }
   la::Vector lambda = qp.lambda(mu);
   out.feasibility_error = qp.feasibility_error(lambda);
-  const std::vector<char> active = active_rows(feti, lambda, n_equality, out.active_contacts);
+  const std::vector<char> active = active_rows(feti, qp, lambda, out.active_contacts);
   const std::string unheld = unheld_body_message(feti, qp.rhs(), qp.load_norm(), out.active_contacts, options.rtol);
   if (options.spectrum_steps > 0)
     measure_solution_face(feti, qp.projector(), qp.scaled_F(), options, qp.pfp_norm(), n_equality,

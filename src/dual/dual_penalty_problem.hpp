@@ -14,6 +14,8 @@
 
 namespace feticon::dual
 {
+struct FrictionRows; // contact_qp.hpp
+
 enum class DualMethod
 {
   dual_penalty, ///< MPRGP on problem (9): G lambda = e holds up to O(1/rho)
@@ -89,6 +91,8 @@ struct DualSolution
 /// @param warm          where to start: the state of the solve of a nearby problem (the
 ///                      previous outer iteration: only the contact rows, the gaps and the
 ///                      load have changed; its x has this solve's rows), or empty for mu = 0
+/// @param friction      tangential rows and slip bounds (contact_qp.hpp), or null
 DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked,
-                                int64_t n_equality, const DualPenaltyOptions& options, const qp::QpState& warm = {});
+                                int64_t n_equality, const DualPenaltyOptions& options, const qp::QpState& warm = {},
+                                const FrictionRows* friction = nullptr);
 } // namespace feticon::dual

@@ -8,7 +8,7 @@
 namespace feticon::dual
 {
 qp::QpState MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_equality,
-                                         const std::vector<int32_t>& contact_slave) const
+                                         const std::vector<int32_t>& contact_slave, int n_tangents) const
 {
   qp::QpState warm = _state;
   if (_owned.size() == 0 && _restart_equality.size() == 0)
@@ -18,20 +18,30 @@ qp::QpState MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_eq
                                                  << " equality multipliers, this problem has " << n_equality
                                                  << " equality rows (other supports or linear equations?)");
   const la::Index m = feti.n_dual();
+  const int64_t n_contact = static_cast<int64_t>(contact_slave.size());
   warm.x = la::Vector::Zero(m);
   for (la::Index i = 0; i < m; ++i)
   {
     const int64_t id = feti.row_id(i);
     if (id < n_equality)
       warm.x(i) = _restart_equality.size() > 0 ? _restart_equality(id) : _owned(i);
-    else if (const auto it = _contact.find(contact_slave[id - n_equality]); it != _contact.end())
-      warm.x(i) = it->second;
+    else if (id < n_equality + n_contact)
+    {
+      if (const auto it = _contact.find(contact_slave[id - n_equality]); it != _contact.end())
+        warm.x(i) = it->second;
+    }
+    else if (n_tangents > 0)
+    {
+      const int64_t j = id - n_equality - n_contact;
+      if (const auto it = _tangential.find(contact_slave[j / n_tangents]); it != _tangential.end())
+        warm.x(i) = it->second[j % n_tangents];
+    }
   }
   return warm;
 }
 
 la::Vector MultiplierMemory::remember(const FetiOperators& feti, const DualSolution& solution, int64_t n_equality,
-                                      const std::vector<int32_t>& contact_slave)
+                                      const std::vector<int32_t>& contact_slave, int n_tangents, la::Vector* tangential)
 {
   _owned = solution.state.x;
   _restart_equality.resize(0);
@@ -42,6 +52,19 @@ la::Vector MultiplierMemory::remember(const FetiOperators& feti, const DualSolut
   _contact.clear();
   for (int64_t j = 0; j < n_contact; ++j)
     _contact[contact_slave[j]] = contact_lambda(j);
+  _tangential.clear();
+  if (tangential)
+    tangential->resize(0);
+  if (n_tangents > 0)
+  {
+    const int64_t begin = n_equality + n_contact;
+    la::Vector t = multipliers_by_id(feti, solution.state.x, begin, begin + n_tangents * n_contact);
+    for (int64_t j = 0; j < n_contact; ++j)
+      for (int k = 0; k < n_tangents; ++k)
+        _tangential[contact_slave[j]][k] = t(n_tangents * j + k);
+    if (tangential)
+      *tangential = std::move(t);
+  }
   return contact_lambda;
 }
 
@@ -51,6 +74,7 @@ void MultiplierMemory::restore(qp::QpState state, const std::vector<int32_t>& co
   _owned.resize(0);
   _restart_equality = std::move(state.x);
   _contact.clear();
+  _tangential.clear(); // a checkpoint keeps no tangential multipliers: they restart from 0
   for (size_t j = 0; j < contact_slave.size(); ++j)
     _contact[contact_slave[j]] = contact_lambda[j];
   _state = std::move(state);

@@ -13,6 +13,7 @@
 #include "dual/dual_penalty_problem.hpp"
 #include "dual/feti_operators.hpp"
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -24,14 +25,16 @@ class MultiplierMemory
 {
 public:
   /// The start of the solve with the operators `feti`, whose rows with ids [0, n_equality) are
-  /// the equality rows and id n_equality + j the contact row of slave node contact_slave[j].
-  qp::QpState warm_start(const FetiOperators& feti, int64_t n_equality,
-                         const std::vector<int32_t>& contact_slave) const;
+  /// the equality rows, id n_equality + j the contact row of slave node contact_slave[j], and,
+  /// with friction (n_tangents > 0), id n_equality + n_contact + n_tangents j + k its tangent k.
+  qp::QpState warm_start(const FetiOperators& feti, int64_t n_equality, const std::vector<int32_t>& contact_slave,
+                         int n_tangents = 0) const;
 
   /// Keeps the multipliers of `solution` (of the solve warm_start was asked for) and returns
-  /// its contact multipliers by row, replicated on every rank.
+  /// its normal contact multipliers by row, replicated on every rank; with friction also the
+  /// tangential ones in `tangential` (n_tangents per contact row).
   la::Vector remember(const FetiOperators& feti, const DualSolution& solution, int64_t n_equality,
-                      const std::vector<int32_t>& contact_slave);
+                      const std::vector<int32_t>& contact_slave, int n_tangents = 0, la::Vector* tangential = nullptr);
 
   /// F changed (a refreshed stiffness): ||PFP|| must be estimated again.
   void forget_operator_norm() { _state.operator_norm = 0; }
@@ -53,6 +56,7 @@ private:
   la::Vector _owned;            ///< owned multipliers of the last solve (equality rows first)
   la::Vector _restart_equality; ///< equality multipliers by row id from a checkpoint; used once
   std::map<int32_t, double> _contact;
+  std::map<int32_t, std::array<double, 2>> _tangential; ///< by slave node, up to two tangents
   qp::QpState _state; ///< its x is always empty: the multipliers are kept above by row identity
 };
 

@@ -30,6 +30,12 @@ std::vector<SettingSpec> make_specs()
       {"contact.formulation", "mortar", "contact rows: node_to_segment (slave node on master "
                                                  "face) or mortar (dual mortar, segment-to-segment)",
        Type::text, {"node_to_segment", "mortar"}, 0, 0, false},
+      {"contact.friction.model", "none", "friction on the contact pair (FETI solver): none, tresca (the "
+       "tangential traction bounded by contact.friction.slip_bound) or coulomb (bounded by "
+       "contact.friction.coefficient times the contact pressure)", Type::text, {"none", "tresca", "coulomb"}, 0, 0, false},
+      {"contact.friction.coefficient", "0", "Coulomb's friction coefficient mu", Type::number, {}, 0, 100, false},
+      {"contact.friction.slip_bound", "0", "Tresca's slip bound g, the largest tangential traction (Pa)",
+       Type::number, {}, 0, inf, false},
       {"contact.linear_band", "0.25", "small displacements: the QP gets the contact rows whose gap is "
        "below the smallest plus this many master face diagonals, and another QP follows with the "
        "rows near contact if the answer penetrates a row left out (a large value: every row within "

@@ -2,6 +2,7 @@
 /// @file What a contact solve returns: displacement, contact multipliers and history.
 
 #include "contact/contact_constraints.hpp"
+#include "contact/tangential_rows.hpp"
 #include "la/types.hpp"
 #include "qp/qp_report.hpp"
 #include "qp/qp_state.hpp"
@@ -68,6 +69,10 @@ struct ContactSolution
   la::Vector u;                            ///< global displacement, 3 per mesh node
   contact::ContactConstraints constraints; ///< contact rows of the last solve
   la::Vector contact_lambda;               ///< their (row-normalized) multipliers
+  /// With friction: the tangential rows of the last solve (of its contact rows) and their
+  /// row-normalized multipliers; empty without.
+  contact::TangentialRows tangential;
+  la::Vector tangential_lambda;
   std::vector<OuterIteration> history;
   std::vector<LoadStep> steps;
   /// Every load step ran: u and the multipliers are the run's answer.

@@ -8,6 +8,8 @@
 #include "decomposition/constraint_rows.hpp"
 #include "decomposition/explicit_boundary_operators.hpp"
 #include "decomposition/subdomain_operators.hpp"
+#include "contact/tangential_rows.hpp"
+#include "dual/contact_qp.hpp"
 #include "dual/dual_penalty_problem.hpp"
 #include "dual/multiplier_memory.hpp"
 #include "nonlinear/load_stepping.hpp"
@@ -18,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <functional>
@@ -275,6 +278,19 @@ private:
   /// penetrated rows left out of this QP and solve again.
   bool store_contact_result(const dual::DualSolution& solution, contact::ContactConstraints contact_rows,
                             const la::Vector& contact_lambda, const std::string& where);
+  /// With friction: the tangential rows of `contact_rows` appended to `rows` with c_T = the
+  /// negative slip since the load step began (none without friction, and for Coulomb's first
+  /// QP of a run, which has no normal force yet).
+  contact::TangentialRows friction_rows(const contact::ContactConstraints& contact_rows, const la::Vector& u_global,
+                                        decomposition::ConstraintRows& rows) const;
+  /// The slip bound of each owned tangential row: Tresca's g D_j, or mu times the last normal force.
+  std::optional<dual::FrictionRows> slip_bounds(const dual::FetiOperators& feti,
+                                                const contact::ContactConstraints& contact_rows,
+                                                const contact::TangentialRows& tangential) const;
+  /// Coulomb: whether the normal forces, and so the slip bounds, changed by at most the
+  /// displacement tolerance in the last QP (always true otherwise).
+  bool friction_settled(const std::map<int32_t, double>& normal_before,
+                        const contact::TangentialRows& tangential) const;
   /// The warning of a step that ends at the floor of the QP's equilibrium error.
   std::string floor_message(const OuterIteration& it, double du_max, double feasibility_error) const;
 
@@ -321,6 +337,7 @@ private:
   bool _forcing = false;
   bool _diverged = false;
   la::Vector _equality_by_id; ///< for the checkpoint of a converged step
+  la::Vector _u_step_start;   ///< global u at the start of the load step (the slip's origin)
 };
 
 FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSettings& settings, TimerTable& timers,
@@ -362,7 +379,8 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
     contact::ContactConstraints reach =
         _linear ? contact::build_contact_constraints(problem.mesh, zero, _pair, _contact_options) : reach_rows(zero);
     if (dirichlet)
-      _schur_boundary = schur_boundary_dofs(problem, _dirichlet, &reach, !_linear);
+      _schur_boundary =
+          schur_boundary_dofs(problem, _dirichlet, &reach, !_linear || settings.friction.model != FrictionModel::none);
     if (_linear)
       _linear_rows.emplace(problem.mesh, _pair.master, std::move(reach), settings.linear_contact_band);
   }
@@ -493,6 +511,7 @@ void FetiContactSolve::begin_load_step(int step, double)
   _n_equality = _equality->n_global();
   _forcing = !_linear && _settings.forcing > 0;
   _equality_by_id.resize(0);
+  _u_step_start = _decomp->gather_mean(_decomp->gather_stacked(_u));
 }
 
 void FetiContactSolve::update_internal_force()
@@ -534,18 +553,25 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   const la::Vector residual = _f_step - _f_int;
   decomposition::ConstraintRows rows = _equality->rows;
   rows.append(decomposition::rows_from_global(*_decomp, contact_rows.B, contact_rows.c), _n_equality);
+  contact::TangentialRows tangential = friction_rows(contact_rows, u_global, rows);
 
   const std::unique_ptr<dual::FetiOperators> feti = coarse_problem(rows);
   const la::Vector c = constraint_values(*feti, rows);
-  const qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, contact_rows.slave_node);
+  const std::optional<dual::FrictionRows> friction = slip_bounds(*feti, contact_rows, tangential);
+  const qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, contact_rows.slave_node, tangential.n_tangents);
   const dual::DualPenaltyOptions dual_options = qp_options(k);
+  const std::map<int32_t, double> normal_before = _multipliers.contact();
   dual::DualSolution solution;
   {
     ScopedTimer t(_timers, "dual solve (MPRGP)");
-    solution = dual::solve_contact_dual(*feti, c, residual, _n_equality, dual_options, warm);
+    solution =
+        dual::solve_contact_dual(*feti, c, residual, _n_equality, dual_options, warm, friction ? &*friction : nullptr);
   }
   _u += solution.u;
-  const la::Vector contact_lambda = _multipliers.remember(*feti, solution, _n_equality, contact_rows.slave_node);
+  const la::Vector contact_lambda = _multipliers.remember(*feti, solution, _n_equality, contact_rows.slave_node,
+                                                          tangential.n_tangents, &_out.tangential_lambda);
+  const bool slip_bound_settled = friction_settled(normal_before, tangential);
+  _out.tangential = std::move(tangential);
   std::set<int32_t> active = _multipliers.active_slave_nodes(_force_floor);
 
   const Correction correction = measure_iteration(*feti, solution, it);
@@ -575,7 +601,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
                                        : _convergence.verdict(correction.du_norm, correction.u_norm, correction.du_max,
                                                               it.residual_norm, active, _previous_active);
   _previous_active = std::move(active);
-  if (verdict == OuterVerdict::iterate)
+  if (verdict == OuterVerdict::iterate || !slip_bound_settled)
     return IterationOutcome::next();
   if (!exact_qp) // the step ends only after a QP solved to qp.rtol
   {
@@ -586,6 +612,71 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   if (verdict == OuterVerdict::converged)
     return IterationOutcome::step_converged();
   return IterationOutcome::step_at_floor(floor_message(it, correction.du_max, solution.feasibility_error));
+}
+
+contact::TangentialRows FetiContactSolve::friction_rows(const contact::ContactConstraints& contact_rows,
+                                                        const la::Vector& u_global,
+                                                        decomposition::ConstraintRows& rows) const
+{
+  if (_settings.friction.model == FrictionModel::none)
+    return {};
+  contact::TangentialRows tangential = contact::build_tangential_rows(contact_rows, _problem.eliminated);
+  // c_T = -B_T (u - u_0): B_T du - c_T is then the slip since the last converged load step.
+  const la::Vector c_T = -(tangential.B * (u_global - _u_step_start));
+  rows.append(decomposition::rows_from_global(*_decomp, tangential.B, c_T), _n_equality + contact_rows.n_rows());
+  return tangential;
+}
+
+std::optional<dual::FrictionRows> FetiContactSolve::slip_bounds(const dual::FetiOperators& feti,
+                                                                const contact::ContactConstraints& contact_rows,
+                                                                const contact::TangentialRows& tangential) const
+{
+  if (tangential.n_tangents == 0)
+    return std::nullopt;
+  // Row-normalized bounds: a tangential row has the norm |b| of its normal row, so the force
+  // bound g (N) is g |b| in the multiplier's units; Coulomb's mu lambda_N is mu lambda_hat_N.
+  // Coulomb's bound is mu times the normal force of the last QP; the first QP of a run has
+  // none and sticks everywhere (infinite bound): without friction, or with bound 0, a body
+  // that only friction holds along the interface would be free.
+  const Friction& friction = _settings.friction;
+  const bool first_qp = _multipliers.contact().empty();
+  const int64_t n_contact = contact_rows.n_rows();
+  dual::FrictionRows out{n_contact, la::Vector::Zero(feti.n_dual())};
+  for (la::Index i = 0; i < feti.n_dual(); ++i)
+  {
+    const int64_t j = feti.row_id(i) - _n_equality - n_contact;
+    if (j < 0)
+      continue;
+    const int64_t row = j / tangential.n_tangents;
+    if (friction.model == FrictionModel::tresca)
+      out.slip_bound(i) = friction.slip_bound * contact_rows.slave_area[row] * contact_rows.row_norm[row];
+    else if (first_qp)
+      out.slip_bound(i) = std::numeric_limits<double>::infinity();
+    else if (const auto it = _multipliers.contact().find(contact_rows.slave_node[row]);
+             it != _multipliers.contact().end())
+      out.slip_bound(i) = friction.coefficient * std::max(it->second, 0.0);
+  }
+  return out;
+}
+
+bool FetiContactSolve::friction_settled(const std::map<int32_t, double>& normal_before,
+                                        const contact::TangentialRows& tangential) const
+{
+  // Coulomb's fixed point: the bounds mu lambda_N of this QP against those of the next, to the
+  // displacement tolerance (relative).
+  if (_settings.friction.model != FrictionModel::coulomb || tangential.n_tangents == 0)
+    return true;
+  if (normal_before.empty())
+    return false; // the QP that sticks everywhere and starts a run
+  double change = 0, size = 0;
+  for (const auto& [node, value] : _multipliers.contact())
+  {
+    const auto before = normal_before.find(node);
+    const double old_value = before == normal_before.end() ? 0.0 : std::max(before->second, 0.0);
+    change += std::pow(std::max(value, 0.0) - old_value, 2);
+    size += std::pow(std::max(value, 0.0), 2);
+  }
+  return std::sqrt(change) <= _convergence.displacement_tolerance * std::sqrt(size);
 }
 
 contact::ContactConstraints FetiContactSolve::search_contact(const la::Vector& u_global) const

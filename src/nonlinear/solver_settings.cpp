@@ -32,6 +32,12 @@ SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
   formulation = s.text("contact.formulation") == "mortar" ? contact::ContactFormulation::mortar
                                                           : contact::ContactFormulation::node_to_segment;
   eps_n_factor = s.number("eps_n");
+  const std::string& friction_model = s.text("contact.friction.model");
+  friction.model = friction_model == "tresca" ? FrictionModel::tresca
+      : friction_model == "coulomb"           ? FrictionModel::coulomb
+                                              : FrictionModel::none;
+  friction.coefficient = s.number("contact.friction.coefficient");
+  friction.slip_bound = s.number("contact.friction.slip_bound");
   linear_contact_band = s.number("contact.linear_band");
 }
 } // namespace feticon::nonlinear

@@ -47,6 +47,21 @@ enum class DualOperatorMode
 /// The settings of a contact solve. The values a user sets come from the settings table
 /// (io/settings.cpp), where each default is declared once: a default-built SolverSettings
 /// holds those defaults; the fields without a setting have theirs here.
+/// Friction on the contact pair (FETI solver; tangential rows, contact/tangential_rows.hpp).
+enum class FrictionModel : uint8_t
+{
+  none,
+  tresca, ///< |t_T| <= slip_bound (a traction, Pa), independent of the pressure
+  coulomb ///< |t_T| <= coefficient p, by the fixed point on the slip bound in the outer loop
+};
+
+struct Friction
+{
+  FrictionModel model = FrictionModel::none;
+  double coefficient = 0; ///< Coulomb's mu
+  double slip_bound = 0;  ///< Tresca's g (Pa)
+};
+
 struct SolverSettings
 {
   SolverSettings();
@@ -108,5 +123,6 @@ struct SolverSettings
   double linear_contact_band = 0.25; ///< LinearContactRows' band (master face diagonals)
   contact::ContactFormulation formulation;
   double eps_n_factor; ///< primal penalty eps_n = factor * max diag K
+  Friction friction;   ///< contact.friction.*
 };
 } // namespace feticon::nonlinear

@@ -1,0 +1,48 @@
+#pragma once
+/// @file Tangential contact rows for friction (issue 39; Dostál et al., J. Comput. Appl. Math.
+/// 235 (2010) for 2D, Scalable Algorithms for Contact Problems (2016) for 3D), made from the
+/// normal rows of contact_constraints.hpp / mortar_constraints.hpp. A normal row
+///   b_i = (-n at slave s, w_a n at master node a) / |b|
+/// gives, for each unit tangent t_k of n, the tangential row
+///   b_ik = (-t_k at s, w_a t_k at a) / |b|,
+/// with the same weights (node-to-segment or dual mortar) and norm, so that B_T B_T' has a unit
+/// diagonal like B_I B_I'. Its multiplier lambda_hat_ik is the scaled tangential force: the
+/// slave node gets +(lambda_hat_ik / |b|) t_k, the master nodes -(lambda_hat_ik / |b|) w_a t_k.
+/// Tangents: in plane strain (one displacement component eliminated, e_k) one, t = e_k x n /
+/// |e_k x n|, in the model's plane; in 3D two, t_1 = e x n / |e x n| with e the coordinate axis
+/// least aligned with n, and t_2 = n x t_1 (an orthonormal basis of the tangent plane).
+///
+/// The rows' right-hand sides are the caller's: for friction, c_T = -B_T (u - u_0), the slip
+/// of the current outer iteration's start since the last converged load step (u_0), so that
+/// B_T du - c_T is the slip increment of the step.
+
+#include "contact/contact_constraints.hpp"
+
+#include <array>
+#include <vector>
+
+namespace feticon::contact
+{
+struct TangentialRows
+{
+  /// n_tangents rows per normal row: row n_tangents i + k is tangent k of normal row i, over
+  /// the global DOFs 3 * node + component.
+  Eigen::SparseMatrix<double, Eigen::RowMajor> B;
+  std::vector<Eigen::Vector3d> tangent; ///< unit tangent of each row
+  std::vector<int32_t> slave_node;      ///< slave node of each row
+  int n_tangents = 0;                   ///< 1 in plane strain, 2 in 3D
+
+  int64_t n_rows() const { return static_cast<int64_t>(tangent.size()); }
+};
+
+/// The unit tangents of the unit normal n: one in the plane normal to the eliminated axis
+/// (eliminated[k] for exactly one k), else two (see file comment). Throws feticon::Error if
+/// more than one component is eliminated.
+std::vector<Eigen::Vector3d> unit_tangents(const Eigen::Vector3d& n, const std::array<bool, 3>& eliminated);
+
+/// The tangential rows of `normal` (see file comment) over the same DOFs.
+TangentialRows build_tangential_rows(const ContactConstraints& normal, const std::array<bool, 3>& eliminated);
+
+/// Tangential forces on the structure (N, per global DOF): -B_T' lambda_hat_T.
+la::Vector tangential_forces(const TangentialRows& rows, const la::Vector& lambda_hat, la::Index n_dofs);
+} // namespace feticon::contact

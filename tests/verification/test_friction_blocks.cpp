@@ -1,0 +1,169 @@
+/// Tresca and Coulomb friction on two blocks in plane strain (issue 39): an upper block pressed
+/// onto a clamped lower one by a pressure p and pulled along the interface by a shear traction
+/// q on its top face, or dragged by a prescribed displacement of its top face.
+/// References: equilibrium (the upper block is held along x by friction alone, so the friction
+/// forces sum to the applied shear force q A), the slip bound (|t_T| <= g at every node, Tresca;
+/// <= mu t_N, Coulomb), and a block dragged far enough slides at every node, so the friction
+/// force is the bound integrated over the interface: g A (Tresca), mu p A (Coulomb).
+
+#include "contact/tangential_rows.hpp"
+#include "mesh/box.hpp"
+#include "nonlinear/contact_pressure.hpp"
+#include "nonlinear/feti_contact_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <set>
+
+using namespace feticon;
+
+namespace
+{
+constexpr double pressure = 1e8; // Pa; the interface is 1 x 1 (plane strain: 1 m thick)
+
+/// Lower block [0,1] x [0,1] x [0,1] clamped at z = 0, upper block [0,1] x [0,1] x [1,1.25] on
+/// top of it (non-matching: 4 against 5 cells along x), one cell thick in y with u_y eliminated. Top face: traction
+/// (q, 0, -p), or, with `drag` > 0, the pressure and u_x = drag prescribed.
+fem::Problem sheared_blocks(double q, double drag)
+{
+  mesh::BoxParameters lower;
+  lower.nx = lower.nz = 4;
+  lower.ny = 1;
+  lower.body_name = "lower";
+  mesh::BoxParameters upper = lower;
+  upper.nx = 5;
+  upper.nz = 2;
+  upper.lengths = Eigen::Vector3d(1, 1, 0.25); // flat: the friction's moment tilts it little
+  upper.origin = Eigen::Vector3d(0, 0, 1);
+  upper.body_name = "upper";
+  fem::Problem p;
+  p.name = "sheared blocks";
+  p.mesh = mesh::generate_box(lower);
+  mesh::append_mesh(p.mesh, mesh::generate_box(upper), "upper_");
+  p.materials.assign(2, fem::Material{2e11, 0.3});
+  p.eliminated = {false, true, false};
+  p.dirichlet = {{"zmin", {0.0, std::nullopt, 0.0}}};
+  if (drag > 0)
+    p.dirichlet.push_back({"upper_zmax", {drag, std::nullopt, std::nullopt}});
+  p.tractions = {{"upper_zmax", Eigen::Vector3d(drag > 0 ? 0.0 : q, 0, -pressure)}};
+  p.contacts = {{"upper_zmin", "zmax"}};
+  p.validate();
+  return p;
+}
+
+nonlinear::SolverSettings settings(nonlinear::FrictionModel model, double bound)
+{
+  nonlinear::SolverSettings s;
+  s.kinematics = fem::Kinematics::linear;
+  s.dual.rtol = 1e-10;
+  s.subdomains = 4;
+  s.formulation = contact::ContactFormulation::mortar;
+  s.friction.model = model;
+  if (model == nonlinear::FrictionModel::tresca)
+    s.friction.slip_bound = bound;
+  else
+    s.friction.coefficient = bound;
+  return s;
+}
+
+struct FrictionFigures
+{
+  double force_x = 0;     ///< friction force on the upper block along x (N)
+  double worst_ratio = 0; ///< max over slave nodes of |t_T| / bound
+  int sliding = 0, nodes = 0;
+};
+
+/// Friction forces on the slave (upper) block and their ratio to the bound, per slave node:
+/// g D_j (Tresca) or mu times the node's normal force (Coulomb).
+FrictionFigures friction_figures(const fem::Problem& p, const nonlinear::ContactSolution& s,
+                                 const nonlinear::Friction& friction)
+{
+  const la::Vector f = contact::tangential_forces(s.tangential, s.tangential_lambda, 3 * p.mesh.n_nodes());
+  std::map<int32_t, double> normal_force, area;
+  for (size_t i = 0; i < s.constraints.slave_node.size(); ++i)
+  {
+    normal_force[s.constraints.slave_node[i]] = s.contact_lambda(i) / s.constraints.row_norm[i];
+    area[s.constraints.slave_node[i]] = s.constraints.slave_area[i];
+  }
+  FrictionFigures out;
+  for (const int32_t node : std::set<int32_t>(s.tangential.slave_node.begin(), s.tangential.slave_node.end()))
+  {
+    const double t = std::abs(f(3 * node));
+    const double bound = friction.model == nonlinear::FrictionModel::tresca ? friction.slip_bound * area[node]
+                                                                            : friction.coefficient * normal_force[node];
+    out.force_x += f(3 * node);
+    ++out.nodes;
+    if (bound > 0)
+    {
+      out.worst_ratio = std::max(out.worst_ratio, t / bound);
+      out.sliding += t >= (1 - 1e-5) * bound; // Coulomb's bound settles to the tolerance 1e-6
+    }
+  }
+  return out;
+}
+} // namespace
+
+// Tresca, g = 0.4 p: a shear q = 0.3 p is held (friction force -q A, the bound kept), a block
+// dragged 10 mm slides at every node and the friction force is -g A.
+TEST(FrictionBlocks, TrescaHoldsTheShearBelowTheBoundAndSlidesAtIt)
+{
+  const double g = 0.4 * pressure;
+  const auto s = settings(nonlinear::FrictionModel::tresca, g);
+  {
+    const fem::Problem problem = sheared_blocks(0.3 * pressure, 0);
+    TimerTable timers;
+    const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
+    ASSERT_TRUE(solution.converged) << solution.reason;
+    const FrictionFigures r = friction_figures(problem, solution, s.friction);
+    std::printf("Tresca stick: friction force %.9e (applied %.9e), max |t|/g %.6f, %d of %d nodes at g\n", r.force_x,
+                -0.3 * pressure, r.worst_ratio, r.sliding, r.nodes);
+    EXPECT_NEAR(r.force_x, -0.3 * pressure, 1e-6 * 0.3 * pressure);
+    EXPECT_LE(r.worst_ratio, 1 + 1e-8);
+    EXPECT_LT(r.sliding, r.nodes) << "a shear below the bound should leave nodes sticking";
+    EXPECT_NEAR(nonlinear::total_normal_force(solution), pressure, 1e-6 * pressure);
+  }
+  {
+    const fem::Problem problem = sheared_blocks(0, 1e-2);
+    TimerTable timers;
+    const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
+    ASSERT_TRUE(solution.converged) << solution.reason;
+    const FrictionFigures r = friction_figures(problem, solution, s.friction);
+    std::printf("Tresca slide: friction force %.9e (g A %.9e), %d of %d nodes at g\n", r.force_x, -g, r.sliding,
+                r.nodes);
+    EXPECT_EQ(r.sliding, r.nodes);
+    EXPECT_NEAR(r.force_x, -g, 1e-6 * g);
+  }
+}
+
+// Coulomb, mu = 0.3: a shear 0.2 p is held; dragged, the block slides everywhere with the
+// friction force mu times the normal force p A (the fixed point on the bound settled).
+TEST(FrictionBlocks, CoulombHoldsTheShearBelowMuPAndSlidesAtIt)
+{
+  const double mu = 0.3;
+  const auto s = settings(nonlinear::FrictionModel::coulomb, mu);
+  {
+    const fem::Problem problem = sheared_blocks(0.2 * pressure, 0);
+    TimerTable timers;
+    const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
+    ASSERT_TRUE(solution.converged) << solution.reason;
+    const FrictionFigures r = friction_figures(problem, solution, s.friction);
+    std::printf("Coulomb stick: friction force %.9e (applied %.9e), max |t|/(mu t_N) %.6f, %d of %d nodes at the "
+                "bound, %zu QPs\n",
+                r.force_x, -0.2 * pressure, r.worst_ratio, r.sliding, r.nodes, solution.history.size());
+    EXPECT_NEAR(r.force_x, -0.2 * pressure, 1e-6 * 0.2 * pressure);
+    EXPECT_LE(r.worst_ratio, 1 + 1e-5);
+  }
+  {
+    const fem::Problem problem = sheared_blocks(0, 1e-2);
+    TimerTable timers;
+    const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
+    ASSERT_TRUE(solution.converged) << solution.reason;
+    const FrictionFigures r = friction_figures(problem, solution, s.friction);
+    const double normal = nonlinear::total_normal_force(solution);
+    std::printf("Coulomb slide: friction force %.9e (mu N %.9e), %d of %d nodes at the bound, %zu QPs\n", r.force_x,
+                -mu * normal, r.sliding, r.nodes, solution.history.size());
+    EXPECT_EQ(r.sliding, r.nodes);
+    EXPECT_NEAR(r.force_x, -mu * normal, 1e-6 * mu * normal);
+  }
+}
