@@ -198,18 +198,6 @@ test::Trace traced_mpgp(const la::Matrix& matrix, const la::Vector& b, const qp:
   return trace;
 }
 
-/// Jacobi preconditioner diag(A)^{-1}.
-class JacobiOperator : public la::LinearOperator
-{
-public:
-  explicit JacobiOperator(const la::Matrix& A) : _inverse_diagonal(A.diagonal().cwiseInverse()) {}
-  la::Index size() const override { return _inverse_diagonal.size(); }
-  void apply(const la::Vector& x, la::Vector& y) const override { y = _inverse_diagonal.cwiseProduct(x); }
-
-private:
-  la::Vector _inverse_diagonal;
-};
-
 const int sizes[] = {20, 60, 200};
 const unsigned seeds[] = {1, 2, 3, 4, 5, 6};
 } // namespace
@@ -295,7 +283,7 @@ TEST(Mpgp, RandomDiscProblemsMatchAcceleratedProjectedGradient)
         int reference_iterations = 0;
         const la::Vector reference = accelerated_projected_gradient(qp, 1e-13 * qp.b.norm(), reference_iterations);
         expect_kkt(qp, reference, 1e-10 * qp.b.norm());
-        const JacobiOperator jacobi(qp.A);
+        const test::JacobiOperator jacobi(qp.A);
         const test::Trace trace =
             traced_mpgp(qp.A, qp.b, qp.set, {.rtol = 1e-12, .preconditioner = preconditioned ? &jacobi : nullptr});
         ASSERT_TRUE(trace.report.converged) << trace.report.reason;
@@ -432,7 +420,7 @@ TEST(Mpgp, WithoutDiscsIteratesEqualMprgpBitwise)
         SCOPED_TRACE(std::string(preconditioned ? "jacobi, " : "") + "n = " + std::to_string(n) +
                      ", seed = " + std::to_string(seed));
         const test::BoxQp qp = test::random_box_qp(n, seed + 300, 1e3);
-        const JacobiOperator jacobi(qp.A);
+        const test::JacobiOperator jacobi(qp.A);
         const la::LinearOperator* M = preconditioned ? &jacobi : nullptr;
         test::Trace mprgp;
         test::CountingOperator A(qp.A);

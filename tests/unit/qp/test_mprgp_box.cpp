@@ -26,18 +26,6 @@ double largest_eigenvalue(const la::Matrix& A)
   return Eigen::SelfAdjointEigenSolver<la::Matrix>(A).eigenvalues().maxCoeff();
 }
 
-/// Jacobi preconditioner diag(A)^{-1}.
-class JacobiOperator : public la::LinearOperator
-{
-public:
-  explicit JacobiOperator(const la::Matrix& A) : _inverse_diagonal(A.diagonal().cwiseInverse()) {}
-  la::Index size() const override { return _inverse_diagonal.size(); }
-  void apply(const la::Vector& x, la::Vector& y) const override { y = _inverse_diagonal.cwiseProduct(x); }
-
-private:
-  la::Vector _inverse_diagonal;
-};
-
 /// Components of x at their lower (l_i < u_i) and at their upper bound (l_i < u_i).
 struct ActiveCounts
 {
@@ -201,7 +189,7 @@ TEST(MprgpBox, RandomBoxProblemsMatchActiveSetReference)
           ASSERT_LE(test::projected_gradient_norm(reference, qp.A * reference - qp.b, qp.lower, qp.upper),
                     1e-12 * qp.b.norm());
           test::CountingOperator A(qp.A);
-          const JacobiOperator jacobi(qp.A);
+          const test::JacobiOperator jacobi(qp.A);
           qp::Mprgp mprgp(
               A, {.rtol = 1e-12, .expansion = expansion, .preconditioner = preconditioned ? &jacobi : nullptr});
           la::Vector x = la::Vector::Zero(n);
@@ -257,7 +245,7 @@ TEST(MprgpBox, InfiniteUpperBoundReproducesTheLowerBoundSolveBitwise)
                        ", seed = " + std::to_string(seed));
           const test::BoundQp qp = test::random_bound_qp(n, seed + 300, 1e3);
           const la::Vector upper = la::Vector::Constant(n, infinity);
-          const JacobiOperator jacobi(qp.A);
+          const test::JacobiOperator jacobi(qp.A);
           const qp::MprgpOptions options{
               .rtol = 1e-10, .expansion = expansion, .preconditioner = preconditioned ? &jacobi : nullptr};
           const test::Trace lower_only = traced_solve(qp.A, qp.b, qp.lower, nullptr, options);
