@@ -7,10 +7,8 @@
 #include "qp/ritz_estimate.hpp"
 #include "qp/solve_stop.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <utility>
 
@@ -20,8 +18,6 @@ namespace
 {
 using la::Index;
 using la::Vector;
-
-constexpr double infinity = std::numeric_limits<double>::infinity();
 
 /// The bound a step along -p reaches at component i (l_i if p_i > 0, u_i if p_i < 0); infinite
 /// for a disc component.
