@@ -1,22 +1,27 @@
-/// `feticon qp`: one box-constrained QP from Matrix Market files, solved by MPRGP.
+/// `feticon qp`: one QP from Matrix Market files, solved by MPRGP, or by MPGP with discs.
 ///
 ///     min 1/2 x'Ax - b'x   subject to   l <= x <= u   (A symmetric positive definite)
+///                          and ||(x_i, x_j)|| <= r_k for the discs of --discs (app/disc_file.hpp)
 ///
 /// Sample runs:
 ///   feticon qp --A A.mtx --b b.mtx                       # unconstrained: MPRGP = CG
 ///   feticon qp --A A.mtx --b b.mtx --lower l.mtx --rtol 1e-8 --out x.mtx --monitor
 ///   feticon qp --A A.mtx --b b.mtx --lower l.mtx --upper u.mtx   # box l <= x <= u
+///   feticon qp --A A.mtx --b b.mtx --lower l.mtx --discs discs.txt  # l on the others: MPGP
 ///
-/// stdout gets exactly one JSON line with the report; --monitor writes one line per MPRGP
-/// step to stderr. Exit status: 0 converged, 3 not converged (the JSON and x are still
+/// stdout gets exactly one JSON line with the report; --monitor writes one line per step to
+/// stderr. With --discs, MPGP (qp/mpgp.hpp) solves the QP with the standard expansion step
+/// (--expansion is MPRGP's only); l and u default to -inf and +inf, as disc components need. Exit status: 0 converged, 3 not converged (the JSON and x are still
 /// written), 1 invalid input (one line on stderr, from app/main.cpp).
 
 #include "app/commands.hpp"
+#include "app/disc_file.hpp"
 #include "app/memory_guard.hpp"
 #include "app/qp_counters_json.hpp"
 #include "common/error.hpp"
 #include "la/matrix_market.hpp"
 #include "la/operator.hpp"
+#include "qp/mpgp.hpp"
 #include "qp/mprgp.hpp"
 
 #include <nlohmann/json.hpp>
@@ -39,6 +44,7 @@ struct QpArguments
   std::string rhs_path;
   std::string lower_path;
   std::string upper_path;
+  std::string discs_path;
   std::string output_path;
   double rtol = 1e-5;
   int max_iterations = 10000;
@@ -65,10 +71,10 @@ void check_symmetric(const la::SparseMatrix& A, const std::string& path)
                      << 1e-12 * largest << "; store a symmetric matrix (or one triangle with 'symmetric')");
 }
 
-void print_iterate(const qp::MprgpIterate& it)
+void print_iterate(const char* solver, const qp::MprgpIterate& it)
 {
   char line[160];
-  std::snprintf(line, sizeof line, "mprgp %6d %-13s |g_P| %.6e |phi| %.6e |beta| %.6e f %.12e", it.iteration,
+  std::snprintf(line, sizeof line, "%s %6d %-13s |g_P| %.6e |phi| %.6e |beta| %.6e f %.12e", solver, it.iteration,
                 qp::to_string(it.step), it.projected_gradient_norm, it.free_gradient_norm, it.chopped_gradient_norm,
                 it.cost);
   std::cerr << line << '\n';
@@ -86,6 +92,35 @@ la::Vector read_bound(const std::string& path, const char* symbol, la::Index n, 
   return bound;
 }
 
+/// MPRGP on l <= x <= u; without --upper its lower-bound solve, whose arithmetic the box
+/// solve reproduces for u = +inf (qp/mprgp.hpp).
+qp::QpReport solve_box(const QpArguments& arguments, const la::LinearOperator& op, const la::Vector& b,
+                       const la::Vector& lower, const std::optional<la::Vector>& upper, la::Vector& x)
+{
+  qp::MprgpOptions options{.rtol = arguments.rtol,
+                           .max_iterations = arguments.max_iterations,
+                           .expansion = qp::expansion_from_name(arguments.expansion)};
+  if (arguments.monitor)
+    options.monitor = [](const qp::MprgpIterate& it) { print_iterate("mprgp", it); };
+  qp::Mprgp mprgp(op, options);
+  return upper ? mprgp.solve(b, lower, *upper, x) : mprgp.solve(b, lower, x);
+}
+
+/// MPGP on l <= x <= u and the discs of --discs.
+qp::QpReport solve_discs(const QpArguments& arguments, const la::LinearOperator& op, const la::Vector& b,
+                         const la::Vector& lower, const std::optional<la::Vector>& upper, la::Vector& x)
+{
+  const la::Index n = b.size();
+  qp::SeparableConstraints set{
+      lower, upper ? *upper : la::Vector::Constant(n, std::numeric_limits<double>::infinity()), {}};
+  set.discs = read_disc_file(arguments.discs_path, n, set.lower, set.upper);
+  qp::MpgpOptions options{.rtol = arguments.rtol, .max_iterations = arguments.max_iterations};
+  if (arguments.monitor)
+    options.monitor = [](const qp::MprgpIterate& it) { print_iterate("mpgp", it); };
+  qp::Mpgp mpgp(op, options);
+  return mpgp.solve(b, set, x);
+}
+
 void run_qp(const QpArguments& arguments)
 {
   // The memory guard, from the size line before the entries are read.
@@ -101,23 +136,14 @@ void run_qp(const QpArguments& arguments)
   const la::Vector b = la::read_matrix_market_dense(arguments.rhs_path);
   FETICON_CHECK(b.size() == n, arguments.rhs_path << ": b has " << b.size() << " entries but A has " << n << " rows");
   const la::Vector lower = read_bound(arguments.lower_path, "l", n, -std::numeric_limits<double>::infinity());
-  // Without --upper the lower-bound solve, whose arithmetic the box solve reproduces for
-  // u = +inf (qp/mprgp.hpp).
   const std::optional<la::Vector> upper = arguments.upper_path.empty()
       ? std::nullopt
       : std::optional<la::Vector>(read_bound(arguments.upper_path, "u", n, 0.0));
 
-  qp::MprgpOptions options{.rtol = arguments.rtol,
-                           .max_iterations = arguments.max_iterations,
-                           .expansion = qp::expansion_from_name(arguments.expansion)};
-  if (arguments.monitor)
-    options.monitor = print_iterate;
+  la::Vector x = la::Vector::Zero(n); // projected onto Omega by the solvers
   const la::SparseOperator op(A);
-  qp::Mprgp mprgp(op, options);
-  la::Vector x = la::Vector::Zero(n).cwiseMax(lower); // x0 = P_Omega(0)
-  if (upper)
-    x = x.cwiseMin(*upper);
-  const qp::QpReport report = upper ? mprgp.solve(b, lower, *upper, x) : mprgp.solve(b, lower, x);
+  const qp::QpReport report = arguments.discs_path.empty() ? solve_box(arguments, op, b, lower, upper, x)
+                                                           : solve_discs(arguments, op, b, lower, upper, x);
   FETICON_CHECK(std::isfinite(report.cost) && std::isfinite(report.projected_gradient_norm) && x.allFinite(),
                 "qp: the solve produced non-finite values (cost "
                     << report.cost
@@ -145,8 +171,8 @@ void run_qp(const QpArguments& arguments)
 void register_qp_command(CLI::App& app)
 {
   auto arguments = std::make_shared<QpArguments>();
-  CLI::App* command =
-      app.add_subcommand("qp", "Solve min 1/2 x'Ax - b'x subject to l <= x <= u with MPRGP; print a JSON report");
+  CLI::App* command = app.add_subcommand(
+      "qp", "Solve min 1/2 x'Ax - b'x subject to l <= x <= u (and discs) with MPRGP (MPGP); print a JSON report");
   command
       ->add_option("--A", arguments->matrix_path,
                    "symmetric positive definite matrix A "
@@ -157,6 +183,9 @@ void register_qp_command(CLI::App& app)
                       "lower bounds l (Matrix Market vector, -inf allowed); default: none");
   command->add_option("--upper", arguments->upper_path,
                       "upper bounds u (Matrix Market vector, inf allowed, l <= u); default: none");
+  command->add_option("--discs", arguments->discs_path,
+                      "discs ||(x_i, x_j)|| <= r: a text file of lines 'i j r', 1-based indices, no bounds "
+                      "on disc components; solved by MPGP (standard expansion); default: none");
   command->add_option("--rtol", arguments->rtol, "stop when |g_P| <= rtol |b|")->capture_default_str();
   command->add_option("--max-iterations", arguments->max_iterations, "MPRGP steps allowed")->capture_default_str();
   command->add_option("--out", arguments->output_path, "write the solution x (Matrix Market)");

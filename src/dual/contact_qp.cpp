@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace feticon::dual
 {
@@ -63,9 +64,11 @@ qp::NormEstimate pfp_norm_estimate(const FetiOperators& feti, const CoarseProjec
 }
 
 /// Omega of the homogenized unknown mu = lambda - lambda~: mu_i >= -lambda~_i on the normal
-/// contact rows, free on the equality rows, |lambda~_i + mu_i| <= g_i on tangential rows. No
-/// upper bounds without friction (MPRGP's lower-bound arithmetic, as before friction existed).
-qp::SeparableConstraints constraint_set(const std::vector<RowKind>& kinds, const la::Vector& lambda_tilde,
+/// contact rows, free on the equality rows, |lambda~_i + mu_i| <= g_i on tangential rows of
+/// plane strain, ||lambda~_d + mu_d|| <= g_d on the pairs of 3D. No upper bounds without
+/// friction (MPRGP's lower-bound arithmetic, as before friction existed).
+qp::SeparableConstraints constraint_set(const FetiOperators& feti, const std::vector<RowKind>& kinds,
+                                        const la::Vector& lambda_tilde, int64_t n_equality,
                                         const FrictionRows* friction)
 {
   constexpr double inf = std::numeric_limits<double>::infinity();
@@ -73,6 +76,7 @@ qp::SeparableConstraints constraint_set(const std::vector<RowKind>& kinds, const
   set.lower = la::Vector::Constant(lambda_tilde.size(), -inf);
   if (friction)
     set.upper = la::Vector::Constant(lambda_tilde.size(), inf);
+  std::map<int64_t, la::Index> second_tangent; // id -> owned index, of the 3D pairs' second rows
   for (size_t i = 0; i < kinds.size(); ++i)
     if (kinds[i] == RowKind::normal)
       set.lower(i) = -lambda_tilde(i);
@@ -80,9 +84,24 @@ qp::SeparableConstraints constraint_set(const std::vector<RowKind>& kinds, const
     {
       const double g = friction->slip_bound(i);
       FETICON_CHECK(g >= 0, "friction: slip bound " << g << " of dual row " << i); // +infinity: sticks
-      set.lower(i) = -g - lambda_tilde(i);
-      set.upper(i) = g - lambda_tilde(i);
+      if (friction->n_tangents == 1)
+      {
+        set.lower(i) = -g - lambda_tilde(i);
+        set.upper(i) = g - lambda_tilde(i);
+      }
+      else
+        second_tangent[feti.row_id(i)] = static_cast<la::Index>(i);
     }
+  for (const auto& [id, i] : second_tangent)
+  {
+    if ((id - n_equality - friction->n_normal) % 2 != 0)
+      continue; // a pair's second row
+    const auto j = second_tangent.find(id + 1);
+    FETICON_CHECK(j != second_tangent.end(),
+                  "friction: the tangential rows " << id << " and " << id + 1 << " of one node are on different ranks");
+    if (std::isfinite(friction->slip_bound(i))) // +infinity: the pair sticks, free components
+      set.discs.push_back({i, j->second, friction->slip_bound(i), -lambda_tilde(i), -lambda_tilde(j->second)});
+  }
   return set;
 }
 } // namespace
@@ -108,7 +127,7 @@ ContactQp::ContactQp(const FetiOperators& feti, const la::Vector& c, const la::V
       // The dual penalty's A holds rho Q; SMALBE-M adds rho Q = rho G~'G~ itself (for the rho
       // it has at the time).
       _A_untimed(_F, _projector, options.method == DualMethod::smalbe ? 0.0 : options.rho), _A(_A_untimed),
-      _set(constraint_set(_kinds, _lambda_tilde, friction)), _C(_projector)
+      _set(constraint_set(feti, _kinds, _lambda_tilde, n_equality, friction)), _C(_projector)
 {
   FETICON_CHECK(c.size() == feti.n_dual() && n_equality <= feti.n_dual_global() &&
                     (!friction || friction->slip_bound.size() == feti.n_dual()),

@@ -8,7 +8,8 @@
 ///   adds rho Q to A instead),
 ///   A = P F^ P,  b = P (d^ - F^ lambda~),  F^ = F / ||PFP||,  d^ = d / ||PFP||,
 ///   Omega: mu_i free on equality rows, mu_i >= -lambda~_i on normal contact rows,
-///          -g_i - lambda~_i <= mu_i <= g_i - lambda~_i on tangential rows (Tresca's box, 2D).
+///          -g_i - lambda~_i <= mu_i <= g_i - lambda~_i on tangential rows (Tresca's box, 2D),
+///          ||mu_d + lambda~_d|| <= g_d on the pair d of a node's tangential rows (disc, 3D).
 /// Scaling by ||PFP|| (power iterations) leaves the minimizer unchanged and makes rho and the
 /// tolerances dimensionless. Coordinates of SMALBE-M's multiplier omega of G~ mu = 0: inside
 /// the QP it is scaled and in G~'s rows; outside (qp::QpState of a dual solve) it is the
@@ -45,6 +46,10 @@ struct FrictionRows
   int64_t n_normal = 0;  ///< the normal rows are ids [n_equality, n_equality + n_normal), the
                          ///< tangential ones follow
   la::Vector slip_bound; ///< g_i >= 0 of each owned row (row-normalized force; others ignored)
+  /// Tangential rows per normal row: 1 (plane strain: the box |lambda_i| <= g_i), or 2 (3D:
+  /// the rows n_equality + n_normal + 2j and + 2j + 1 of node j, on one rank, in the disc
+  /// ||(lambda_i, lambda_i+1)|| <= g_i).
+  int n_tangents = 1;
 };
 
 /// The kinds of `feti`'s owned rows: ids below n_equality are equalities; without friction the

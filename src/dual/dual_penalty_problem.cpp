@@ -4,6 +4,7 @@
 #include "dual/contact_qp.hpp"
 #include "dual/dual_preconditioner.hpp"
 #include "qp/conjugate_gradient.hpp"
+#include "qp/mpgp.hpp"
 #include "qp/norm_estimate.hpp"
 
 #include <algorithm>
@@ -139,6 +140,8 @@ std::vector<char> active_rows(const FetiOperators& feti, const ContactQp& qp, co
     }
     else if (kinds[i] == RowKind::tangential)
       active[i] = std::abs(lambda(i)) < qp.slip_bound(i) - 1e-12 * lambda_max;
+  for (const qp::Disc& disc : qp.constraints().discs) // 3D: the pair's norm
+    active[disc.i] = active[disc.j] = std::hypot(lambda(disc.i), lambda(disc.j)) < disc.radius - 1e-12 * lambda_max;
   active_contacts = feti.comm().sum(local_active);
   return active;
 }
@@ -179,17 +182,25 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, 
   qp::MprgpOptions mprgp = mprgp_options(options);
   const bool smalbe_method = options.method == DualMethod::smalbe;
   qp::SmalbeReport smalbe_report;
+  // MPRGP for bounds; MPGP where 3D friction adds discs.
+  const bool discs = !qp.constraints().discs.empty();
+  const auto inner_solver = [discs](const la::LinearOperator& H,
+                                    const qp::MprgpOptions& o) -> std::unique_ptr<qp::QpSolver> {
+    if (discs)
+      return std::make_unique<qp::Mpgp>(H, o);
+    return std::make_unique<qp::Mprgp>(H, o);
+  };
   if (!smalbe_method)
   {
     mprgp.preconditioner = qp.preconditioner();
-    qp::Mprgp solver(qp.hessian(), mprgp);
-    out.report = solver.solve(qp.rhs(), qp.constraints(), mu);
+    out.report = inner_solver(qp.hessian(), mprgp)->solve(qp.rhs(), qp.constraints(), mu);
     out.report.outer_iterations = 1;
   }
   else
   {
-    qp::Smalbe solver(qp.hessian(), qp.equality(), smalbe_options(feti, qp.projector(), options, mprgp),
-                      qp.preconditioner());
+    qp::SmalbeOptions smalbe = smalbe_options(feti, qp.projector(), options, mprgp);
+    smalbe.inner_solver = inner_solver;
+    qp::Smalbe solver(qp.hessian(), qp.equality(), smalbe, qp.preconditioner());
     const std::optional<qp::QpState> start = qp.inner_start(warm);
     smalbe_report = solver.solve(qp.rhs(), qp.constraints(), mu, start ? &*start : nullptr);
     out.report = smalbe_report;

@@ -641,7 +641,7 @@ std::optional<dual::FrictionRows> FetiContactSolve::slip_bounds(const dual::Feti
   const Friction& friction = _settings.friction;
   const bool first_qp = _multipliers.contact().empty();
   const int64_t n_contact = contact_rows.n_rows();
-  dual::FrictionRows out{n_contact, la::Vector::Zero(feti.n_dual())};
+  dual::FrictionRows out{n_contact, la::Vector::Zero(feti.n_dual()), tangential.n_tangents};
   for (la::Index i = 0; i < feti.n_dual(); ++i)
   {
     const int64_t j = feti.row_id(i) - _n_equality - n_contact;

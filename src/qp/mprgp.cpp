@@ -3,8 +3,8 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "common/timer.hpp"
-#include "qp/norm_estimate.hpp"
 #include "qp/ritz_estimate.hpp"
+#include "qp/solve_stop.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -176,26 +176,6 @@ void check_input(const la::LinearOperator& A, const Vector& b, const Vector& low
     check_upper(lower, *upper, n);
 }
 
-void log_iterate(const MprgpIterate& it, double tolerance, bool custom_stop)
-{
-  char line[160];
-  if (custom_stop)
-    std::snprintf(line, sizeof line, "mprgp %6d %-13s |g_P| %.3e |phi| %.3e |beta| %.3e tol caller  f %.9e",
-                  it.iteration, to_string(it.step), it.projected_gradient_norm, it.free_gradient_norm,
-                  it.chopped_gradient_norm, it.cost);
-  else
-    std::snprintf(line, sizeof line, "mprgp %6d %-13s |g_P| %.3e |phi| %.3e |beta| %.3e tol %.3e f %.9e", it.iteration,
-                  to_string(it.step), it.projected_gradient_norm, it.free_gradient_norm, it.chopped_gradient_norm,
-                  tolerance, it.cost);
-  log::iteration(line);
-}
-
-std::string format_number(double value)
-{
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3e", value);
-  return text;
-}
 } // namespace
 
 const char* to_string(MprgpStep step)
@@ -217,15 +197,8 @@ const char* to_string(MprgpStep step)
 Mprgp::Mprgp(const la::LinearOperator& A, MprgpOptions options)
     : _A(A), _options(std::move(options)), _alpha_bar(_options.alpha_bar)
 {
-  FETICON_CHECK(_options.rtol >= 0.0, "Mprgp: rtol = " << _options.rtol << " must be >= 0");
-  FETICON_CHECK(_options.gamma > 0.0, "Mprgp: gamma = " << _options.gamma << " must be > 0");
-  FETICON_CHECK(_options.max_iterations >= 0, "Mprgp: max_iterations = " << _options.max_iterations << " must be >= 0");
-  FETICON_CHECK(_options.alpha_bar >= 0.0 && std::isfinite(_options.alpha_bar),
-                "Mprgp: alpha_bar = " << _options.alpha_bar << " must be > 0 (or 0 to estimate 1.8/||A||)");
-  FETICON_CHECK(_options.power_iterations >= 1,
-                "Mprgp: power_iterations = " << _options.power_iterations << " must be >= 1");
-  FETICON_CHECK(_options.gradient_refresh >= 1,
-                "Mprgp: gradient_refresh = " << _options.gradient_refresh << " must be >= 1");
+  check_solver_options("Mprgp", _options.rtol, _options.gamma, _options.max_iterations, _options.alpha_bar,
+                       _options.power_iterations, _options.gradient_refresh);
 }
 
 MprgpExpansion expansion_from_name(const std::string& name)
@@ -252,41 +225,6 @@ struct Mprgp::SolveState
   RitzEstimate ritz;
   MprgpStep step = MprgpStep::start;
 };
-
-namespace
-{
-/// How a solve ends: the test that was met, or what stopped it.
-struct MprgpStop
-{
-  bool converged;
-  std::string reason;
-};
-
-/// Why the solve stops at the iterate x with ||g_P|| = gp_norm; no value while it goes on.
-std::optional<MprgpStop> stopping_test(const MprgpOptions& options, const QpReport& report, const Vector& x,
-                                       const Vector& g, double gp_norm, double tolerance, double b_norm)
-{
-  const bool custom_stop = static_cast<bool>(options.stop);
-  // Stopping tests, in this order: a NaN must not pass as converged.
-  if (!std::isfinite(gp_norm))
-    return MprgpStop{false,
-                     "projected gradient norm is not finite (" + format_number(gp_norm) + ") at iteration " +
-                         std::to_string(report.iterations)};
-  if (custom_stop && options.stop(x, g, gp_norm))
-    return MprgpStop{true, "caller's stopping test met, |g_P| = " + format_number(gp_norm)};
-  if (!custom_stop && gp_norm <= tolerance)
-    return MprgpStop{true,
-                     "|g_P| = " + format_number(gp_norm) + " <= " + (b_norm > 0.0 ? "rtol |b| = " : "rtol (b = 0) = ") +
-                         format_number(tolerance)};
-  if (gp_norm == 0.0)
-    return MprgpStop{true, "projected gradient is exactly zero (KKT conditions hold)"};
-  if (report.iterations >= options.max_iterations)
-    return MprgpStop{false,
-                     "maximum number of iterations (" + std::to_string(options.max_iterations) +
-                         ") reached, |g_P| = " + format_number(gp_norm)};
-  return std::nullopt;
-}
-} // namespace
 
 QpReport Mprgp::solve(const Vector& b, const Vector& lower, Vector& x) { return solve_box(b, lower, nullptr, x); }
 
@@ -322,7 +260,7 @@ QpReport Mprgp::solve_box(const Vector& b, const Vector& lower, const Vector* up
     return finish(true, "empty problem");
 
   if (_alpha_bar == 0.0)
-    if (std::optional<std::string> failure = estimate_alpha_bar(s.report))
+    if (std::optional<std::string> failure = estimate_alpha_bar(_A, _options.power_iterations, s.report, _alpha_bar))
       return finish(false, std::move(*failure));
 
   box.project(x);
@@ -344,9 +282,10 @@ QpReport Mprgp::solve_box(const Vector& b, const Vector& lower, const Vector* up
     if (_options.monitor)
       _options.monitor(iterate);
     if (log::enabled(log::Level::iterations))
-      log_iterate(iterate, tolerance, static_cast<bool>(_options.stop));
+      log_iterate("mprgp", iterate, tolerance, static_cast<bool>(_options.stop));
 
-    if (std::optional<MprgpStop> stop = stopping_test(_options, s.report, x, s.g, gp_norm, tolerance, b_norm))
+    if (std::optional<SolveStop> stop =
+            stopping_test(_options.stop, _options.max_iterations, s.report, x, s.g, gp_norm, tolerance, b_norm))
       return finish(stop->converged, std::move(stop->reason));
 
     const double gamma2 = _options.gamma * _options.gamma;
@@ -360,22 +299,6 @@ QpReport Mprgp::solve_box(const Vector& b, const Vector& lower, const Vector* up
     if (s.report.iterations % _options.gradient_refresh == 0)
       refresh_gradient(s);
   }
-}
-
-std::optional<std::string> Mprgp::estimate_alpha_bar(QpReport& report)
-{
-  const NormEstimate norm = estimate_norm(_A, _options.power_iterations, 1e-3, 1);
-  report.hessian_multiplications += norm.applications;
-  if (!std::isfinite(norm.value))
-    return "power iteration for ||A|| gave a non-finite Rayleigh quotient "
-           "v'Av = " +
-        format_number(norm.value);
-  if (!(norm.value > 0.0))
-    return "operator is not positive definite: power iteration Rayleigh "
-           "quotient v'Av = " +
-        format_number(norm.value) + " <= 0";
-  _alpha_bar = 1.8 / norm.value;
-  return std::nullopt;
 }
 
 void Mprgp::refresh_gradient(SolveState& s) const

@@ -182,9 +182,6 @@ private:
   /// of the lower-bound algorithm).
   QpReport solve_box(const la::Vector& b, const la::Vector& lower, const la::Vector* upper, la::Vector& x);
 
-  /// alpha_bar = 1.8/||A|| from power iterations (counted in `report`); a reason if the
-  /// estimate is not finite or not positive.
-  std::optional<std::string> estimate_alpha_bar(QpReport& report);
   /// g = Ax - b recomputed: the initial gradient, and every gradient_refresh steps against the
   /// drift of the recursive update.
   void refresh_gradient(SolveState& s) const;

@@ -291,6 +291,41 @@ expect "explicit operators without the Dirichlet preconditioner" "qp.preconditio
 expect "dual.operator unknown" "dual.operator" -- --set dual.operator=dense
 expect "qp.expansion unknown" "qp.expansion" -- --set qp.expansion=bogus
 
+# `feticon qp --discs` (MPGP, issue 39): a bad disc file is one line naming the file, the line
+# and the index or radius, exit status 1.
+expect_qp() { # NAME PATTERN -- feticon qp arguments...
+  local name="$1" pattern="$2"
+  shift 3
+  cases=$((cases + 1))
+  timeout 60 "$feticon" qp "$@" > /dev/null 2> "$work/err"
+  local rc=$?
+  if [[ $rc -ne 1 ]]; then
+    echo "FAIL $name: exit status $rc (expected 1)"; failures=$((failures + 1)); return
+  fi
+  if [[ $(wc -l < "$work/err") -ne 1 ]] || ! grep -q -- "$pattern" "$work/err"; then
+    echo "FAIL $name: expected one line naming '$pattern', got:"; cat "$work/err"; failures=$((failures + 1))
+  fi
+}
+printf '%%%%MatrixMarket matrix coordinate real symmetric\n4 4 4\n1 1 2\n2 2 2\n3 3 2\n4 4 2\n' > "$work/A4.mtx"
+printf '%%%%MatrixMarket matrix array real general\n4 1\n1\n1\n1\n1\n' > "$work/b4.mtx"
+printf '%%%%MatrixMarket matrix array real general\n4 1\n-inf\n-inf\n0\n-inf\n' > "$work/l4.mtx"
+qp_discs() { printf "$2" > "$work/$1.txt"; echo "$work/$1.txt"; }
+expect_qp "disc index out of range" "out_of_range.txt:2: index 5 is outside 1..4" -- \
+  --A "$work/A4.mtx" --b "$work/b4.mtx" --discs "$(qp_discs out_of_range '%% i j r\n1 5 1\n')"
+expect_qp "disc index 0 (the file is 1-based)" "zero_index.txt:1: index 0 is outside 1..4" -- \
+  --A "$work/A4.mtx" --b "$work/b4.mtx" --discs "$(qp_discs zero_index '0 1 1\n')"
+expect_qp "index in two discs" "two_discs.txt:2: index 2 is already in the disc of line 1" -- \
+  --A "$work/A4.mtx" --b "$work/b4.mtx" --discs "$(qp_discs two_discs '1 2 1\n2 4 1\n')"
+expect_qp "disc component with a finite bound" "bounded.txt:1: index 3 has the bounds \\[0, inf\\]" -- \
+  --A "$work/A4.mtx" --b "$work/b4.mtx" --lower "$work/l4.mtx" --discs "$(qp_discs bounded '3 4 1\n')"
+expect_qp "negative radius" "negative.txt:1: radius -0.5" -- \
+  --A "$work/A4.mtx" --b "$work/b4.mtx" --discs "$(qp_discs negative '1 2 -0.5\n')"
+expect_qp "disc line with two fields" "short.txt:1: expected 'i j radius'" -- \
+  --A "$work/A4.mtx" --b "$work/b4.mtx" --discs "$(qp_discs short '1 2\n')"
+expect_qp "a disc joining a component with itself" "self.txt:1: index 2 twice" -- \
+  --A "$work/A4.mtx" --b "$work/b4.mtx" --discs "$(qp_discs self '2 2 1\n')"
+expect_qp "a folder as disc file" "is not a regular file" -- --A "$work/A4.mtx" --b "$work/b4.mtx" --discs "$work"
+
 # A diverging modified Newton loop (finite rotations in two load steps with K_0) ends with a
 # message saying so, not with the NaN of a later step.
 expect "diverging outer loop" "diverged" -- --set problem=cantilever_obstacle --set displacements=large \

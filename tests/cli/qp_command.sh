@@ -8,7 +8,9 @@
 # the nine report keys and converged = true, x written and x >= l exactly; an unconstrained
 # run (l = -inf) converges; an iteration limit gives exit status 3 with the JSON still
 # printed; malformed input gives a non-zero status and exactly one line on stderr; with
-# --upper the box l <= x <= u is solved and an empty box is one line.
+# --upper the box l <= x <= u is solved and an empty box is one line; with --discs MPGP
+# solves the QP with discs (KKT checked here) and an empty disc file reproduces MPRGP's
+# standard run.
 set -euo pipefail
 
 feticon=$1
@@ -192,5 +194,60 @@ status=0
 [ "$status" -eq 1 ] || fail "empty box: expected exit status 1, got $status"
 [ "$(wc -l <empty.err)" -eq 1 ] || fail "expected one line on stderr, got: $(cat empty.err)"
 grep -q 'component 2' empty.err || fail "stderr does not name component 2: $(cat empty.err)"
+
+# 10. Discs (--discs, MPGP): ||(x_1, x_2)|| <= 1e-3 (active), ||(x_5, x_6)|| <= 1e6 (inactive),
+# (x_9, x_10) = 0 (radius 0), x_i >= -1 on components 13..20, the rest free. KKT checked from
+# the written x with A and b: on the active disc g = -nu x/|x| with nu >= 0, elsewhere the
+# sign conditions, to 1e-6 (rtol 1e-10 times |b| = 3e3, and the Matrix Market round trip).
+awk -v n="$n" 'BEGIN {
+  print "%%MatrixMarket matrix array real general"
+  print n, 1
+  for (i = 1; i <= n; ++i) printf "%.17g\n", 1000 * sin(i)
+}' >bd.mtx
+awk -v n="$n" 'BEGIN {
+  print "%%MatrixMarket matrix array real general"
+  print n, 1
+  for (i = 1; i <= n; ++i) print (i >= 13 ? -1 : "-inf")
+}' >ld.mtx
+printf '%% i j radius (1-based)\n1 2 1e-3\n\n5 6 1e6\n# a fixed pair\n9 10 0\n' >discs.txt
+status=0
+"$feticon" qp --A A.mtx --b bd.mtx --lower ld.mtx --discs discs.txt --rtol 1e-10 --out xd.mtx >discs.json \
+  2>err.txt || status=$?
+[ "$status" -eq 0 ] || fail "disc run: exit status $status: $(cat err.txt)"
+check_json discs.json true || fail "disc run: bad JSON: $(cat discs.json)"
+"$python" - <<'PY' || fail "disc run: x is not the KKT point"
+import math
+def vector(path):
+    lines = [s for s in open(path).read().splitlines() if s.strip() and not s.startswith("%")]
+    return [float(s) for s in lines[1:]]
+x, b, lower = vector("xd.mtx"), vector("bd.mtx"), vector("ld.mtx")
+n, h = len(x), 1.0 / (len(x) + 1)
+g = [(2 * x[i] - (x[i - 1] if i > 0 else 0) - (x[i + 1] if i + 1 < n else 0)) / h**2 - b[i] for i in range(n)]
+tol = 1e-6
+r = math.hypot(x[0], x[1])
+assert abs(r - 1e-3) <= 1e-15, f"disc (1, 2) not active: |x| = {r}"
+nu = -(x[0] * g[0] + x[1] * g[1]) / r
+assert nu > 0, f"disc (1, 2): nu = {nu}"
+assert math.hypot(g[0] + nu * x[0] / r, g[1] + nu * x[1] / r) <= tol, "disc (1, 2): tangential gradient"
+assert math.hypot(x[4], x[5]) < 1e6 and math.hypot(g[4], g[5]) <= tol, "disc (5, 6) inactive but g != 0"
+assert x[8] == 0 and x[9] == 0, "disc (9, 10) of radius 0 not at 0"
+for i in [2, 3, 6, 7, 10, 11]:
+    assert abs(g[i]) <= tol, f"free component {i + 1}: g = {g[i]}"
+for i in range(12, n):
+    assert x[i] >= -1, f"x_{i + 1} < -1"
+    assert (g[i] >= -tol) if x[i] == -1 else (abs(g[i]) <= tol), f"component {i + 1}: g = {g[i]}"
+PY
+printf '%% no discs\n' >no_discs.txt
+"$feticon" qp --A A.mtx --b b.mtx --lower l.mtx --discs no_discs.txt --rtol 1e-8 >nodisc.json 2>err.txt ||
+  fail "run with an empty disc file failed: $(cat err.txt)"
+"$feticon" qp --A A.mtx --b b.mtx --lower l.mtx --expansion std --rtol 1e-8 >std.json 2>err.txt ||
+  fail "MPRGP std run failed: $(cat err.txt)"
+"$python" - <<'PY' || fail "MPGP without discs differs from MPRGP's standard run"
+import json
+a, b = json.load(open("std.json")), json.load(open("nodisc.json"))
+for key in ["iterations", "cg_steps", "expansion_steps", "proportioning_steps",
+            "hessian_multiplications", "projected_gradient_norm", "cost"]:
+    assert a[key] == b[key], f"{key}: {a[key]} != {b[key]}"
+PY
 
 echo "qp_command: all checks passed"

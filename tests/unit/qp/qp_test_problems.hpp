@@ -28,6 +28,18 @@ private:
   const la::Matrix& _matrix;
 };
 
+/// Jacobi preconditioner diag(A)^{-1}.
+class JacobiOperator : public la::LinearOperator
+{
+public:
+  explicit JacobiOperator(const la::Matrix& A) : _inverse_diagonal(A.diagonal().cwiseInverse()) {}
+  la::Index size() const override { return _inverse_diagonal.size(); }
+  void apply(const la::Vector& x, la::Vector& y) const override { y = _inverse_diagonal.cwiseProduct(x); }
+
+private:
+  la::Vector _inverse_diagonal;
+};
+
 /// min 1/2 x'Ax - b'x subject to x >= lower.
 struct BoundQp
 {

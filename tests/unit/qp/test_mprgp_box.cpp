@@ -7,6 +7,7 @@
 #include "qp/mprgp.hpp"
 #include "qp_test_problems.hpp"
 #include "reference_qp.hpp"
+#include "solve_trace.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,18 +25,6 @@ double largest_eigenvalue(const la::Matrix& A)
 {
   return Eigen::SelfAdjointEigenSolver<la::Matrix>(A).eigenvalues().maxCoeff();
 }
-
-/// Jacobi preconditioner diag(A)^{-1}.
-class JacobiOperator : public la::LinearOperator
-{
-public:
-  explicit JacobiOperator(const la::Matrix& A) : _inverse_diagonal(A.diagonal().cwiseInverse()) {}
-  la::Index size() const override { return _inverse_diagonal.size(); }
-  void apply(const la::Vector& x, la::Vector& y) const override { y = _inverse_diagonal.cwiseProduct(x); }
-
-private:
-  la::Vector _inverse_diagonal;
-};
 
 /// Components of x at their lower (l_i < u_i) and at their upper bound (l_i < u_i).
 struct ActiveCounts
@@ -78,19 +67,11 @@ const unsigned seeds[] = {1, 2, 3, 4, 5, 6};
 const qp::MprgpExpansion expansions[] = {qp::MprgpExpansion::standard, qp::MprgpExpansion::projected_cg};
 std::string name(qp::MprgpExpansion e) { return e == qp::MprgpExpansion::standard ? "std" : "projcg"; }
 
-/// Everything a solve produces: iterates seen by the monitor, the final x and the report.
-struct Trace
-{
-  std::vector<qp::MprgpIterate> iterates;
-  la::Vector x;
-  qp::QpReport report;
-};
-
 /// One solve of `qp` from x0 = 0, with u = `upper` (the lower-bound overload if null).
-Trace traced_solve(const la::Matrix& matrix, const la::Vector& b, const la::Vector& lower, const la::Vector* upper,
-                   qp::MprgpOptions options)
+test::Trace traced_solve(const la::Matrix& matrix, const la::Vector& b, const la::Vector& lower,
+                         const la::Vector* upper, qp::MprgpOptions options)
 {
-  Trace trace;
+  test::Trace trace;
   options.monitor = [&](const qp::MprgpIterate& it) { trace.iterates.push_back(it); };
   test::CountingOperator A(matrix);
   qp::Mprgp mprgp(A, options);
@@ -99,32 +80,6 @@ Trace traced_solve(const la::Matrix& matrix, const la::Vector& b, const la::Vect
   return trace;
 }
 
-/// Bitwise equality of two traces (the reports' times aside).
-void expect_identical(const Trace& first, const Trace& second)
-{
-  ASSERT_EQ(first.iterates.size(), second.iterates.size());
-  for (std::size_t k = 0; k < first.iterates.size(); ++k)
-  {
-    const qp::MprgpIterate& a = first.iterates[k];
-    const qp::MprgpIterate& b = second.iterates[k];
-    EXPECT_EQ(a.step, b.step) << "iterate " << k;
-    EXPECT_EQ(a.projected_gradient_norm, b.projected_gradient_norm) << "iterate " << k;
-    EXPECT_EQ(a.free_gradient_norm, b.free_gradient_norm) << "iterate " << k;
-    EXPECT_EQ(a.chopped_gradient_norm, b.chopped_gradient_norm) << "iterate " << k;
-    EXPECT_EQ(a.cost, b.cost) << "iterate " << k;
-  }
-  EXPECT_TRUE(first.x == second.x);
-  EXPECT_EQ(first.report.converged, second.report.converged);
-  EXPECT_EQ(first.report.reason, second.report.reason);
-  EXPECT_EQ(first.report.iterations, second.report.iterations);
-  EXPECT_EQ(first.report.cg_steps, second.report.cg_steps);
-  EXPECT_EQ(first.report.expansion_steps, second.report.expansion_steps);
-  EXPECT_EQ(first.report.expansion_fallbacks, second.report.expansion_fallbacks);
-  EXPECT_EQ(first.report.proportioning_steps, second.report.proportioning_steps);
-  EXPECT_EQ(first.report.hessian_multiplications, second.report.hessian_multiplications);
-  EXPECT_EQ(first.report.projected_gradient_norm, second.report.projected_gradient_norm);
-  EXPECT_EQ(first.report.cost, second.report.cost);
-}
 /// The minimizer of a box QP by enumeration (n <= 8): every assignment of each component to
 /// free, its lower or its upper bound (finite ones only), the free part solved by LDLT; the
 /// assignment whose point is feasible and meets the KKT sign conditions to `tol` is the
@@ -234,7 +189,7 @@ TEST(MprgpBox, RandomBoxProblemsMatchActiveSetReference)
           ASSERT_LE(test::projected_gradient_norm(reference, qp.A * reference - qp.b, qp.lower, qp.upper),
                     1e-12 * qp.b.norm());
           test::CountingOperator A(qp.A);
-          const JacobiOperator jacobi(qp.A);
+          const test::JacobiOperator jacobi(qp.A);
           qp::Mprgp mprgp(
               A, {.rtol = 1e-12, .expansion = expansion, .preconditioner = preconditioned ? &jacobi : nullptr});
           la::Vector x = la::Vector::Zero(n);
@@ -259,7 +214,7 @@ TEST(MprgpBox, CostDecreasesMonotonically)
           SCOPED_TRACE(name(expansion) + ", condition " + std::to_string(condition) + ", n = " + std::to_string(n) +
                        ", seed = " + std::to_string(seed));
           const test::BoxQp qp = test::random_box_qp(n, seed + 200, condition);
-          const Trace trace =
+          const test::Trace trace =
               traced_solve(qp.A, qp.b, qp.lower, &qp.upper,
                            {.rtol = 1e-10, .expansion = expansion, .alpha_bar = 1.8 / largest_eigenvalue(qp.A)});
           ASSERT_TRUE(trace.report.converged) << trace.report.reason;
@@ -290,14 +245,14 @@ TEST(MprgpBox, InfiniteUpperBoundReproducesTheLowerBoundSolveBitwise)
                        ", seed = " + std::to_string(seed));
           const test::BoundQp qp = test::random_bound_qp(n, seed + 300, 1e3);
           const la::Vector upper = la::Vector::Constant(n, infinity);
-          const JacobiOperator jacobi(qp.A);
+          const test::JacobiOperator jacobi(qp.A);
           const qp::MprgpOptions options{
               .rtol = 1e-10, .expansion = expansion, .preconditioner = preconditioned ? &jacobi : nullptr};
-          const Trace lower_only = traced_solve(qp.A, qp.b, qp.lower, nullptr, options);
-          const Trace box = traced_solve(qp.A, qp.b, qp.lower, &upper, options);
+          const test::Trace lower_only = traced_solve(qp.A, qp.b, qp.lower, nullptr, options);
+          const test::Trace box = traced_solve(qp.A, qp.b, qp.lower, &upper, options);
           ASSERT_TRUE(lower_only.report.converged) << lower_only.report.reason;
           ASSERT_GT(lower_only.report.proportioning_steps + lower_only.report.expansion_steps, 0);
-          expect_identical(lower_only, box);
+          test::expect_identical(lower_only, box);
         }
 }
 
@@ -317,11 +272,11 @@ TEST(MprgpBox, UpperBoundsMirrorLowerBoundsExactly)
         const la::Vector upper = -qp.lower;
         const la::Vector minus_b = -qp.b;
         const qp::MprgpOptions options{.rtol = 1e-10, .expansion = expansion};
-        const Trace mirrored = traced_solve(qp.A, minus_b, no_lower, &upper, options);
-        Trace lower = traced_solve(qp.A, qp.b, qp.lower, nullptr, options);
+        const test::Trace mirrored = traced_solve(qp.A, minus_b, no_lower, &upper, options);
+        test::Trace lower = traced_solve(qp.A, qp.b, qp.lower, nullptr, options);
         ASSERT_TRUE(lower.report.converged) << lower.report.reason;
         lower.x = -lower.x;
-        expect_identical(lower, mirrored);
+        test::expect_identical(lower, mirrored);
       }
 }
 
