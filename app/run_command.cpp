@@ -261,7 +261,8 @@ void compare_with_theory(RunContext& run, const nonlinear::ContactSolution& solu
   std::vector<problems::SurfaceSample> surface;
   surface.reserve(samples.size());
   for (const nonlinear::PressureSample& s : samples)
-    surface.push_back({s.x, s.y, s.deformed_x, s.deformed_y, s.pressure});
+    surface.push_back(
+        {s.x, s.y, s.deformed_x, s.deformed_y, s.pressure, s.shear.x(), s.friction_force.x(), s.slipping});
   const bool large = run.solver.kinematics == fem::Kinematics::total_lagrangian;
   const std::optional<problems::TheoryComparison> theory =
       run.built_in->compare_with_theory(*run.problem, solution.u, surface, large);
@@ -272,6 +273,8 @@ void compare_with_theory(RunContext& run, const nonlinear::ContactSolution& solu
   run.theory_line = theory->summary_line;
   for (size_t i = 0; i < samples.size(); ++i)
     samples[i].analytic = theory->analytic[i];
+  for (size_t i = 0; i < theory->analytic_shear.size(); ++i)
+    samples[i].shear_analytic = theory->analytic_shear[i];
 }
 
 /// Post-processing: the contact figures of a completed run (the last iterate of a failed solve
@@ -283,7 +286,7 @@ void summarize_contact(RunContext& run, const nonlinear::ContactSolution& soluti
     return;
   ScopedTimer t(run.timers, "post-processing");
   // Pressure along the slave surface; the analytic column is filled where theory is known.
-  auto samples = nonlinear::slave_pressure_by_x(*run.problem, solution, run.solver.kinematics);
+  auto samples = nonlinear::slave_pressure_by_x(*run.problem, solution, run.solver.kinematics, run.solver.friction);
   int64_t active = 0;
   for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)
     active += solution.contact_lambda(i) > 0;
@@ -299,7 +302,8 @@ void summarize_contact(RunContext& run, const nonlinear::ContactSolution& soluti
                         {"feasibility_error", solution.feasibility_error}};
   compare_with_theory(run, solution, samples, summary);
   if (run.writer)
-    write_pressure_csv(run.out_dir / "contact_pressure.csv", samples);
+    write_pressure_csv(run.out_dir / "contact_pressure.csv", samples,
+                       run.solver.friction.model != nonlinear::FrictionModel::none);
 }
 
 /// No silent wrong answers: the deck's and the solver's warnings, and a completed result that

@@ -87,17 +87,26 @@ void write_step_pvtu(const std::filesystem::path& path, const fem::Problem& prob
   io::write_pvtu(path, pieces, problem.mesh, {f.displacement, f.pressure}, {f.cauchy, f.mises});
 }
 
-void write_pressure_csv(const std::filesystem::path& path, const std::vector<nonlinear::PressureSample>& samples)
+void write_pressure_csv(const std::filesystem::path& path, const std::vector<nonlinear::PressureSample>& samples,
+                        bool friction)
 {
   std::ostringstream os;
   os << "x_m,y_m,z_m,force_N,area_m2,pressure_multipliers_Pa,pressure_stress_Pa,pressure_analytic_Pa,"
-        "x_deformed_m,y_deformed_m\n";
-  char line[320];
+        "x_deformed_m,y_deformed_m";
+  os << (friction ? ",shear_x_Pa,shear_y_Pa,shear_z_Pa,shear_analytic_x_Pa,slip\n" : "\n");
+  char line[480];
   for (const auto& s : samples)
   {
-    std::snprintf(line, sizeof line, "%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n", s.x, s.y, s.z, s.force,
+    std::snprintf(line, sizeof line, "%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e", s.x, s.y, s.z, s.force,
                   s.area, s.pressure, s.stress_pressure, s.analytic, s.deformed_x, s.deformed_y);
     os << line;
+    if (friction)
+    {
+      std::snprintf(line, sizeof line, ",%.9e,%.9e,%.9e,%.9e,%d", s.shear.x(), s.shear.y(), s.shear.z(),
+                    s.shear_analytic, s.slipping ? 1 : 0);
+      os << line;
+    }
+    os << '\n';
   }
   feticon::write_file_atomically(path, os.str());
 }

@@ -25,8 +25,11 @@ void write_step_pvtu(const std::filesystem::path& path, const fem::Problem& prob
                      const std::vector<std::string>& pieces);
 
 /// contact_pressure.csv: position, force, area, pressure from multipliers, from stresses,
-/// McEwen's (Hertz only; 0 otherwise).
-void write_pressure_csv(const std::filesystem::path& path, const std::vector<nonlinear::PressureSample>& samples);
+/// McEwen's (Hertz only; 0 otherwise); with `friction` also the shear traction (Pa),
+/// Cattaneo-Mindlin's along x (Hertz with a tangential load; 0 otherwise) and 1 for a sliding
+/// sample.
+void write_pressure_csv(const std::filesystem::path& path, const std::vector<nonlinear::PressureSample>& samples,
+                        bool friction = false);
 
 /// history.csv: one line per outer iteration.
 void write_history_csv(const std::filesystem::path& path, const std::vector<nonlinear::OuterIteration>& history);

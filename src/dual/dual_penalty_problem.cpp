@@ -146,6 +146,19 @@ std::vector<char> active_rows(const FetiOperators& feti, const ContactQp& qp, co
   return active;
 }
 
+/// Whether friction rows exist on some rank and none of them sticks.
+bool sliding_only(const FetiOperators& feti, const ContactQp& qp, const std::vector<char>& active)
+{
+  int64_t tangential = 0, sticking = 0;
+  for (size_t i = 0; i < active.size(); ++i)
+    if (qp.kinds()[i] == RowKind::tangential)
+    {
+      ++tangential;
+      sticking += active[i];
+    }
+  return feti.comm().sum(tangential) > 0 && feti.comm().sum(sticking) == 0;
+}
+
 /// Why no contact force holds a body, for recover_primal's message when the active rows
 /// leave one free: empty unless the load is below what the QP resolves.
 std::string unheld_body_message(const FetiOperators& feti, const la::Vector& b, double e_norm, int64_t active_contacts,
@@ -216,7 +229,17 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, 
   la::Vector lambda = qp.lambda(mu);
   out.feasibility_error = qp.feasibility_error(lambda);
   const std::vector<char> active = active_rows(feti, qp, lambda, out.active_contacts);
-  const std::string unheld = unheld_body_message(feti, qp.rhs(), qp.load_norm(), out.active_contacts, options.rtol);
+  // Every friction row sliding leaves the body free along the slide: the limit Q = mu P, whose
+  // slide is undetermined, or beyond it no equilibrium, where the QP does not converge.
+  const bool sliding = sliding_only(feti, qp, active);
+  const std::string sliding_message =
+      "every tangential (friction) row slides: the tangential load reaches or exceeds what friction can carry (mu "
+      "times the normal force, or Tresca's g times the contact area), and a body sliding under a force has no "
+      "unique equilibrium; lower the tangential load, or prescribe the displacement that drives the slide";
+  FETICON_CHECK(out.report.converged || !sliding, sliding_message << " (dual QP: " << out.report.reason << ")");
+  const std::string unheld = sliding
+      ? sliding_message
+      : unheld_body_message(feti, qp.rhs(), qp.load_norm(), out.active_contacts, options.rtol);
   if (options.spectrum_steps > 0)
     measure_solution_face(feti, qp.projector(), qp.scaled_F(), options, qp.pfp_norm(), n_equality,
                           smalbe_method ? smalbe_report.final_rho : options.rho, active, out.report);

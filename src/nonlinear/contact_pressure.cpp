@@ -2,12 +2,14 @@
 
 #include "common/error.hpp"
 #include "contact/contact_constraints.hpp"
+#include "contact/tangential_rows.hpp"
 #include "fem/loads.hpp"
 #include "fem/stress.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
 
 namespace feticon::nonlinear
@@ -38,7 +40,7 @@ la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& 
 }
 
 std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, const ContactSolution& solution,
-                                                fem::Kinematics kinematics)
+                                                fem::Kinematics kinematics, const Friction& friction)
 {
   const auto& rows = solution.constraints;
   FETICON_CHECK(static_cast<la::Index>(rows.slave_node.size()) == solution.contact_lambda.size(),
@@ -89,6 +91,14 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
     // Average over the nodes of the line (weights: equal).
     s.stress_pressure += -n.dot(sigma * n);
   }
+  if (solution.tangential_lambda.size() > 0)
+  {
+    const la::Vector f_T =
+        contact::tangential_forces(solution.tangential, solution.tangential_lambda, 3 * problem.mesh.n_nodes());
+    for (const int32_t node :
+         std::set<int32_t>(solution.tangential.slave_node.begin(), solution.tangential.slave_node.end()))
+      by_x[key_of(node)].friction_force += f_T.segment<3>(3 * node);
+  }
   std::vector<PressureSample> out;
   for (auto& [key, s] : by_x)
   {
@@ -97,6 +107,11 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
     if (rows_in_sample[key] > 0)
       s.stress_pressure /= rows_in_sample[key];
     s.pressure = s.area > 0 ? s.force / s.area : 0;
+    s.shear = s.area > 0 ? Eigen::Vector3d(s.friction_force / s.area) : Eigen::Vector3d::Zero();
+    const double bound = friction.model == FrictionModel::tresca ? friction.slip_bound * s.area
+        : friction.model == FrictionModel::coulomb               ? friction.coefficient * std::max(s.force, 0.0)
+                                                                 : 0.0;
+    s.slipping = bound > 0 && s.friction_force.norm() >= (1 - 1e-5) * bound;
     out.push_back(s);
   }
   return out;

@@ -10,6 +10,7 @@
 
 #include "fem/problem.hpp"
 #include "nonlinear/contact_solution.hpp"
+#include "nonlinear/solver_settings.hpp"
 
 #include <vector>
 
@@ -27,13 +28,21 @@ struct PressureSample
   double pressure = 0;        ///< force / area (Pa)
   double stress_pressure = 0; ///< -n' sigma n from the averaged stress (Pa)
   double analytic = 0;        ///< McEwen's p(x) or Hertz's p(r) (Pa), when compared
+  /// With friction: the friction force on the node(s) (N), its traction (Pa, over `area`),
+  /// whether it slides (|F_T| at the bound within 1e-5: Tresca's g area, Coulomb's mu force)
+  /// and Cattaneo-Mindlin's shear traction along x (Pa), when compared.
+  Eigen::Vector3d friction_force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d shear = Eigen::Vector3d::Zero();
+  bool slipping = false;
+  double shear_analytic = 0;
 };
 
 /// Pressure on the slave surface of pair 0. Plane strain (u_z eliminated): one sample per
 /// node line through the thickness (same reference x), sorted by x. Otherwise one sample
 /// per slave node, sorted by x, then y, then z.
+/// `friction`: the model whose bound tells sliding from sticking samples.
 std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, const ContactSolution& solution,
-                                                fem::Kinematics kinematics);
+                                                fem::Kinematics kinematics, const Friction& friction = {});
 
 /// Tributary area integral(N_a dA) of every mesh node on the slave surface of pair 0 (m^2;
 /// 0 off it): reference surface with linear kinematics, current one (X + u) otherwise.

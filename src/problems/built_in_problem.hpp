@@ -38,16 +38,20 @@ struct SurfaceSample
   double x = 0, y = 0;                   ///< reference coordinates (m)
   double deformed_x = 0, deformed_y = 0; ///< x + u_x, y + u_y (m)
   double pressure = 0;                   ///< (Pa)
+  double shear_x = 0;                    ///< friction traction along x (Pa)
+  double friction_force_x = 0;           ///< friction force along x (N)
+  bool slipping = false;                 ///< the friction force is at its bound
 };
 
 /// A completed run's figures against theory.
 struct TheoryComparison
 {
-  std::string name;               ///< of summary.json's block ("hertz")
-  nlohmann::ordered_json figures; ///< that block
-  double applied_load = 0;        ///< the load the contact must carry (N): summary.json contact.applied_load
-  std::vector<double> analytic;   ///< the theory's pressure at each sample, in the frame of the figures (Pa)
-  std::string summary_line;       ///< for the end-of-run table
+  std::string name;                   ///< of summary.json's block ("hertz")
+  nlohmann::ordered_json figures;     ///< that block
+  double applied_load = 0;            ///< the load the contact must carry (N): summary.json contact.applied_load
+  std::vector<double> analytic;       ///< the theory's pressure at each sample, in the frame of the figures (Pa)
+  std::vector<double> analytic_shear; ///< its shear traction along x (Pa), where it has one (else empty)
+  std::string summary_line;           ///< for the end-of-run table
 };
 
 class BuiltInProblem

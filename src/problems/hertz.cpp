@@ -4,25 +4,81 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace feticon::problems
 {
+namespace
+{
+/// Cattaneo and Mindlin's tangential load acts in the contact plane; ours, Q on the load face
+/// y = R1, has the moment Q R1 about the contact, which the contact would take as a tilted
+/// pressure (measured: the contact zone shifted by one element, 8 % of p0 at its edges). A
+/// normal traction t_y = k x on the load face, k = 3 Q R1 / (2 Xc^3) per unit thickness,
+/// cancels it: its moment int x t_y dx over [-Xc, Xc] is Q R1 and its resultant 0. As
+/// consistent nodal forces of the load faces (exact for a linear traction: sum x_i f_i =
+/// int x t_y). `force` = Q times the thickness (N).
+std::vector<fem::NodalForce> moment_free_couple(const mesh::HexMesh& mesh, double force, double radius)
+{
+  double half_width = 0;
+  for (const mesh::Face& face : mesh.face_set("load"))
+    for (int32_t node : face)
+      half_width = std::max(half_width, std::abs(mesh.nodes(node, 0)));
+  std::map<int32_t, double> nodal;
+  for (const mesh::Face& face : mesh.face_set("load"))
+  {
+    // A face of the extruded layer: two nodes at each of two abscissae; a quarter of its
+    // area times the linear traction's consistent weights on each.
+    double x_min = 1e300, x_max = -1e300, z_min = 1e300, z_max = -1e300;
+    for (int32_t node : face)
+    {
+      x_min = std::min(x_min, mesh.nodes(node, 0)), x_max = std::max(x_max, mesh.nodes(node, 0));
+      z_min = std::min(z_min, mesh.nodes(node, 2)), z_max = std::max(z_max, mesh.nodes(node, 2));
+    }
+    const double thickness = z_max - z_min, length = x_max - x_min;
+    const double k = 3 * force * radius / (2 * std::pow(half_width, 3) * thickness); // Pa/m
+    for (int32_t node : face)
+    {
+      const bool left = mesh.nodes(node, 0) == x_min;
+      const double t_here = k * (left ? x_min : x_max), t_other = k * (left ? x_max : x_min);
+      nodal[node] += 0.5 * thickness * length / 6 * (2 * t_here + t_other);
+    }
+  }
+  std::vector<fem::NodalForce> out;
+  for (const auto& [node, value] : nodal)
+    out.push_back({node, 1, value});
+  return out;
+}
+} // namespace
+
 fem::Problem hertz_problem(const HertzParameters& parameters)
 {
   FETICON_CHECK(std::isfinite(parameters.line_load) && parameters.line_load > 0,
                 "hertz: line_load = " << parameters.line_load << " N/m must be positive");
+  FETICON_CHECK(std::isfinite(parameters.tangential_load) && parameters.tangential_load >= 0,
+                "hertz: tangential_load = " << parameters.tangential_load << " N/m must be >= 0");
   fem::Problem p;
   p.name = "hertz";
-  p.mesh = generate_hertz(parameters.mesh, &p.mesh_from_cache);
+  const HertzMeshParameters& mesh = parameters.mesh;
+  FETICON_CHECK(mesh.full || parameters.tangential_load == 0,
+                "hertz: a tangential load needs the full model (HertzMeshParameters::full)");
+  p.mesh = generate_hertz(mesh, &p.mesh_from_cache);
   p.materials = {parameters.material, parameters.block()}; // bodies "cylinder", "block"
   p.eliminated = {false, false, true};
-  p.dirichlet = {
-      {"symmetry", {0.0, std::nullopt, std::nullopt}},
-      {"support", {0.0, 0.0, std::nullopt}},
-  };
-  const double half_load = 0.5 * parameters.line_load;
-  const double width = parameters.mesh.cylinder_width;
-  p.tractions = {{"load", Eigen::Vector3d(0, -half_load / width, 0)}};
+  p.dirichlet = {{"support", {0.0, 0.0, std::nullopt}}};
+  if (!mesh.full)
+    p.dirichlet.insert(p.dirichlet.begin(), {"symmetry", {0.0, std::nullopt, std::nullopt}});
+  // The load face spans x in [0, Xc] (half model, which carries Q/2) or [-Xc, Xc].
+  const double width = (mesh.full ? 2 : 1) * parameters.mesh.cylinder_width;
+  const double modelled = mesh.full ? 1.0 : 0.5;
+  p.tractions = {{"load", Eigen::Vector3d(0, -modelled * parameters.line_load / width, 0)}};
+  if (parameters.tangential_load > 0) // a second stage: the normal load held, the tangential one added
+    p.later_stages.push_back(
+        {{{"load", Eigen::Vector3d(parameters.tangential_load / width, -parameters.line_load / width, 0)}},
+         {},
+         moment_free_couple(p.mesh, parameters.tangential_load * parameters.mesh.thickness,
+                            parameters.mesh.cylinder_radius),
+         p.dirichlet,
+         1});
   p.contacts = {{"cylinder_contact", "block_contact"}};
   p.validate();
   return p;
@@ -59,7 +115,7 @@ HertzComparison compare_with_hertz(const HertzParameters& parameters, std::vecto
   HertzComparison h;
   h.a_analytic = analytic.half_width;
   h.p0_analytic = analytic.peak_pressure;
-  h.applied_load = 0.5 * parameters.line_load * parameters.mesh.thickness;
+  h.applied_load = (parameters.mesh.full ? 1.0 : 0.5) * parameters.line_load * parameters.mesh.thickness;
   if (samples.empty())
     return h;
   std::ranges::sort(samples, {}, &ProfilePoint::r);

@@ -22,7 +22,11 @@ namespace feticon::problems
 struct HertzParameters
 {
   HertzMeshParameters mesh;
-  double line_load = 4.0e8;                    ///< Q (N/m) on the whole cylinder; the half model carries Q/2
+  double line_load = 4.0e8; ///< Q (N/m) on the whole cylinder; the half model carries Q/2
+  /// Tangential line load (N/m, along +x) applied after the normal one, in a second load
+  /// stage: Cattaneo-Mindlin with friction. Non-zero: the full model (mesh.full).
+  double tangential_load = 0;
+  double friction_coefficient = 0;             ///< Coulomb's mu (contact.friction), for Cattaneo-Mindlin; 0: none
   fem::Material material{2.0e11, 0.3};         ///< the cylinder's, and the block's if not given
   std::optional<fem::Material> block_material; ///< the block's if it differs
   fem::Material block() const { return block_material.value_or(material); }
@@ -60,7 +64,7 @@ struct HertzComparison
   /// linearly between samples, over p0 (bench/calculix_compare.py computes the same).
   double rms_error_over_p0 = 0;
   double element_size = 0; ///< sample spacing at x = a_computed (m)
-  double applied_load = 0; ///< Q/2 * thickness (N) carried by the half model
+  double applied_load = 0; ///< Q/2 * thickness (N) carried by the half model, Q * thickness by the full
 };
 
 /// The figures; `samples` are the slave node lines at their distance r = x from the

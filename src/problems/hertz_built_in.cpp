@@ -1,8 +1,12 @@
 /// The 2D Hertz benchmark as a built-in problem: its `hertz.*` keys, and its comparison with
 /// McEwen's profile.
 
+#include "common/error.hpp"
+#include "problems/cattaneo_mindlin.hpp"
 #include "problems/hertz.hpp"
 #include "problems/hertz_figures.hpp"
+
+#include <cstdio>
 
 namespace feticon::problems
 {
@@ -31,10 +35,37 @@ public:
     const HertzAnalytic analytic = hertz_analytic(_parameters);
     for (const ProfilePoint& p : pressure_profile(samples, false, large))
       out.analytic.push_back(analytic.pressure(p.r));
+    if (_parameters.tangential_load > 0 && _parameters.friction_coefficient > 0)
+      add_cattaneo_mindlin(h, samples, large, out);
     return out;
   }
 
 private:
+  /// The `friction` block against Cattaneo-Mindlin, its line and the analytic shear column.
+  void add_cattaneo_mindlin(const HertzComparison& h, const std::vector<SurfaceSample>& samples, bool large,
+                            TheoryComparison& out) const
+  {
+    const CattaneoMindlin theory = cattaneo_mindlin(_parameters.friction_coefficient, h.p0_analytic, h.a_analytic,
+                                                    _parameters.line_load, _parameters.tangential_load);
+    std::vector<double> x;
+    for (const ProfilePoint& p : pressure_profile(samples, false, large))
+    {
+      x.push_back(p.r);
+      out.analytic_shear.push_back(theory.shear(p.r));
+    }
+    const double applied = _parameters.tangential_load * _parameters.mesh.thickness;
+    out.figures["friction"] = cattaneo_mindlin_figures(theory, samples, x, applied);
+    const auto& f = out.figures["friction"];
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "\nCattaneo-Mindlin: stick half-width c %.3f mm (analytic %.3f mm, %+.2f%%), shear RMS error "
+                  "%.2f%% of mu p0, friction force %.6g N (applied %.6g N)",
+                  1e3 * f["stick_half_width_computed"].get<double>(), 1e3 * theory.stick_half_width,
+                  100 * (f["stick_half_width_computed"].get<double>() / theory.stick_half_width - 1),
+                  100 * f["shear_rms_error_over_mu_p0"].get<double>(), f["tangential_force"].get<double>(), applied);
+    out.summary_line += line;
+  }
+
   HertzParameters _parameters;
 };
 } // namespace
@@ -46,6 +77,9 @@ std::vector<io::SettingSpec> hertz_setting_specs()
   // clang-format off
   return {
       {"hertz.line_load", "4e8", "line load Q on the cylinder (N/m)", Type::number, {}, 0, inf, true},
+      {"hertz.tangential_load", "0", "tangential line load along +x on the cylinder (N/m), applied after the "
+       "normal load in a second load stage (needs contact.friction; the full model is meshed: the load "
+       "breaks the symmetry)", Type::number, {}, 0, inf, false},
       {"hertz.mesh", "graded", "graded (Gmsh quadrilaterals with a size field growing by growth_ratio "
                                "away from the contact, shape-regular) or tensor (mapped blocks with "
                                "tensor-product grading)", Type::text, {"graded", "tensor"}, 0, 0, false},
@@ -70,6 +104,14 @@ HertzParameters hertz_parameters(const io::Settings& s)
 {
   HertzParameters p;
   p.line_load = s.number("hertz.line_load");
+  p.tangential_load = s.number("hertz.tangential_load");
+  p.mesh.full = p.tangential_load > 0;
+  p.friction_coefficient =
+      s.text("contact.friction.model") == "coulomb" ? s.number("contact.friction.coefficient") : 0.0;
+  FETICON_CHECK(p.tangential_load == 0 || s.text("contact.friction.model") != "none",
+                "hertz.tangential_load = " << p.tangential_load
+                                           << " N/m needs friction to hold the cylinder: set contact.friction.model "
+                                              "(coulomb with contact.friction.coefficient, or tresca)");
   p.mesh.kind = s.text("hertz.mesh") == "tensor" ? HertzMeshKind::tensor : HertzMeshKind::graded;
   p.mesh.refinement = s.number("hertz.refinement");
   p.mesh.element_size = s.number("hertz.element_size");

@@ -47,6 +47,9 @@ void check_parameters(const HertzMeshParameters& p)
                 "Hertz mesh: fine_width = " << p.fine_width << " m must be < cylinder_width and block_width");
   FETICON_CHECK(p.fine_depth < std::min(p.cylinder_radius, p.block_depth),
                 "Hertz mesh: fine_depth = " << p.fine_depth << " m must be < cylinder_radius and block_depth");
+  FETICON_CHECK(
+      !p.full || p.kind == HertzMeshKind::graded,
+      "Hertz mesh: the full model (a tangential load) is meshed by the graded mesh only: hertz.mesh = graded");
   const double h_max = std::max(1.0, p.master_ratio) * p.element_size / p.refinement;
   FETICON_CHECK(std::min(p.fine_width, p.fine_depth) >= h_max,
                 "Hertz mesh: the fine region (fine_width, fine_depth >= "
@@ -124,7 +127,7 @@ auto graded_size(const HertzMeshParameters& p, double h)
 {
   const double largest = 0.1 * std::max({p.block_width, p.block_depth, p.cylinder_radius});
   return [&p, h, largest](double x, double y) {
-    return std::min(largest, h + (p.growth_ratio - 1) * std::hypot(std::max(x - p.fine_width, 0.0), y));
+    return std::min(largest, h + (p.growth_ratio - 1) * std::hypot(std::max(std::abs(x) - p.fine_width, 0.0), y));
   };
 }
 
@@ -148,6 +151,19 @@ HexMesh graded_bodies(const HertzMeshParameters& p)
                   {{p.block_width, 0}, "side"},
                   {{0, 0}, "contact"},
                   {{0, -p.block_depth}, "symmetry"}};
+  if (p.full) // the mirror images of the curves replace the symmetry line
+  {
+    cylinder = {"cylinder", {-x_arc, y_arc}, {}};
+    cylinder.curves = {{{x_arc, y_arc}, "contact", true, {0, radius}},
+                       {{x_arc, radius}, "side"},
+                       {{-x_arc, radius}, "load"},
+                       {{-x_arc, y_arc}, "side"}};
+    block = {"block", {-p.block_width, -p.block_depth}, {}};
+    block.curves = {{{p.block_width, -p.block_depth}, "support"},
+                    {{p.block_width, 0}, "side"},
+                    {{-p.block_width, 0}, "contact"},
+                    {{-p.block_width, -p.block_depth}, "side"}};
+  }
   HexMesh mesh;
   mesh::append_mesh(mesh, mesh::extrude_cross_section(cylinder, graded_size(p, h_slave), p.thickness), "cylinder_");
   mesh::append_mesh(mesh, mesh::extrude_cross_section(block, graded_size(p, p.master_ratio * h_slave), p.thickness),
@@ -163,7 +179,8 @@ std::string graded_cache_key(const HertzMeshParameters& p)
   key << std::setprecision(17) << "hertz graded: radius " << p.cylinder_radius << " cylinder_width " << p.cylinder_width
       << " block_width " << p.block_width << " block_depth " << p.block_depth << " thickness " << p.thickness
       << " element_size " << p.element_size << " master_ratio " << p.master_ratio << " fine_width " << p.fine_width
-      << " fine_depth " << p.fine_depth << " growth_ratio " << p.growth_ratio << " refinement " << p.refinement;
+      << " fine_depth " << p.fine_depth << " growth_ratio " << p.growth_ratio << " refinement " << p.refinement
+      << (p.full ? " full" : "");
   return key.str();
 }
 
@@ -227,7 +244,8 @@ int64_t hertz_node_estimate(const HertzMeshParameters& p)
   // recombined quadrilaterals come out smaller than the size field asks, by a steady factor
   // (nodes built / integral 1.35, 1.34, 1.29 at refinement 0.5, 1, 4.4): 1.3 corrects it.
   const double quad_factor = p.kind == HertzMeshKind::graded ? 1.3 : 1.0;
-  return static_cast<int64_t>(std::min(2 * quad_factor * cells, 4e18));
+  const double halves = p.full ? 2.0 : 1.0;
+  return static_cast<int64_t>(std::min(2 * quad_factor * halves * cells, 4e18));
 }
 
 HexMesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache)
@@ -241,6 +259,8 @@ HexMesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache)
       : tensor_bodies(parameters);
   merge_sets(mesh, {"cylinder_zmin", "block_zmin"}, "zmin");
   merge_sets(mesh, {"cylinder_zmax", "block_zmax"}, "zmax");
+  if (parameters.full)
+    return mesh;
   std::vector<int32_t> symmetry;
   std::ranges::set_union(mesh.node_set("cylinder_symmetry"), mesh.node_set("block_symmetry"),
                          std::back_inserter(symmetry));

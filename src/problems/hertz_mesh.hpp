@@ -43,7 +43,9 @@
 ///   "load"             cylinder top y = R1            "support"       block bottom y = -D
 ///   "cylinder_symmetry", "block_symmetry" x = 0       "cylinder_side" x = Xc, "block_side" x = W
 ///   "zmin", "zmax"     the z faces of both bodies
-/// and the node set "symmetry" = cylinder_symmetry + block_symmetry nodes.
+/// and the node set "symmetry" = cylinder_symmetry + block_symmetry nodes. The full model
+/// (HertzMeshParameters::full) has no symmetry sets; its "cylinder_side" and "block_side" are
+/// both sides.
 
 #include "mesh/hex_mesh.hpp"
 
@@ -84,6 +86,9 @@ struct HertzMeshParameters
   double growth_ratio = 1.1;
   /// Refinement factor r: h -> h / r; for the tensor mesh also q -> q^(1/r).
   double refinement = 1.0;
+  /// Both halves, -Xc <= x <= Xc and -W <= x <= W, without the symmetry sets: a tangential load
+  /// breaks the symmetry (graded mesh only).
+  bool full = false;
 };
 
 /// @brief Builds the Hertz mesh described in the file comment.
