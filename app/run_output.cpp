@@ -205,7 +205,7 @@ bool is_result_file(std::string name)
   if (const auto tmp = name.find(".tmp."); tmp != std::string::npos)
     name.resize(tmp);
   for (const char* fixed : {"summary.json", "problem.yaml", "history.csv", "contact_pressure.csv", "solution.pvd",
-                            "checkpoint.bin", "contact_pressure.png", "iterations.png"})
+                            "checkpoint.bin", "contact_pressure.png", "iterations.png", "shear_traction.png"})
     if (name == fixed)
       return true;
   // step_NNN.vtu, step_NNN.pvtu, step_NNN_rankNNN.vtu

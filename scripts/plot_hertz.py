@@ -4,7 +4,9 @@
 Usage:
   plot_hertz.py RESULTS_DIR                       contact_pressure.png (against McEwen for
                                                   hertz, against Hertz's p(r) for hertz3d)
-                                                  and iterations.png
+                                                  and iterations.png; with friction
+                                                  shear_traction.png (against Cattaneo-
+                                                  Mindlin for hertz with a tangential load)
   plot_hertz.py --figure OUT.png --title T DIR... pressure of several runs (e.g. five
                                                   penalties), labelled by their summary.json
 Reads contact_pressure.csv, history.csv and summary.json; writes PNG.
@@ -70,7 +72,7 @@ def plot(folders, out, title):
                 ax.set_xlim(0, 2 * a)
             else:
                 ax.plot(x, pa, "k-", lw=2, label="McEwen (analytic)")
-                ax.set_xlim(0, 100)
+                ax.set_xlim(-100 if min(x) < 0 else 0, 100)  # the full model with a tangential load
             analytic_drawn = True
         ax.plot(x, p, "o" if three_d else "o-", ms=3, lw=1, label=label_of(summary))
     if not ax.get_xlabel():
@@ -80,6 +82,40 @@ def plot(folders, out, title):
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
+    fig.savefig(out, dpi=130)
+    print("wrote", out)
+
+
+def plot_shear(folder):
+    """Shear traction along x of a run with friction, sliding node lines marked, against
+    Cattaneo-Mindlin's when the run compared with it."""
+    rows, summary = read_run(folder)
+    if "shear_x_Pa" not in rows[0]:
+        return
+    friction = summary.get("hertz", {}).get("friction")
+    x = [1e3 * float(r["x_m"]) for r in rows]
+    q = [1e-6 * float(r["shear_x_Pa"]) for r in rows]
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    if friction:
+        ax.plot(x, [1e-6 * float(r["shear_analytic_x_Pa"]) for r in rows], "k-", lw=2,
+                label="Cattaneo-Mindlin, c = %.1f mm" % (1e3 * friction["stick_half_width_analytic"]))
+        a = 1e3 * summary["hertz"]["a_analytic"]
+        ax.set_xlim(-1.5 * a, 1.5 * a)
+    ax.plot(x, q, "o-", ms=3, lw=1, label="feticon")
+    slid = [(xi, qi) for xi, qi, r in zip(x, q, rows) if r["slip"] == "1"]
+    if slid:
+        ax.plot([s[0] for s in slid], [s[1] for s in slid], "rx", ms=5, label="sliding")
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("shear traction on the slave surface, along x (MPa)")
+    title = "Friction"
+    if friction:
+        title = "Cattaneo-Mindlin, mu = %g: c computed %.1f mm" % (
+            friction["coefficient"], 1e3 * friction["stick_half_width_computed"])
+    ax.set_title(title)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    out = os.path.join(folder, "shear_traction.png")
     fig.savefig(out, dpi=130)
     print("wrote", out)
 
@@ -115,6 +151,7 @@ def main():
         return
     plot(args.folders, os.path.join(args.folders[0], "contact_pressure.png"), args.title)
     plot_history(args.folders[0])
+    plot_shear(args.folders[0])
 
 
 if __name__ == "__main__":
