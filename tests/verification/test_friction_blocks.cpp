@@ -7,12 +7,14 @@
 /// force is the bound integrated over the interface: g A (Tresca), mu p A (Coulomb).
 
 #include "contact/tangential_rows.hpp"
+#include "common/error.hpp"
 #include "mesh/box.hpp"
 #include "nonlinear/contact_pressure.hpp"
 #include "nonlinear/feti_contact_solver.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <set>
 
@@ -220,6 +222,60 @@ TEST(FrictionBlocks, DiscsHoldAndSlideIn3D)
       // nu p / E = 1.5e-4 of their width against the 10 mm drag): x carries all but 1e-4.
       EXPECT_NEAR(r.force_x, -expected, 1e-4 * expected);
       EXPECT_NEAR(r.force_y, 0, 1e-6 * expected);
+    }
+  }
+}
+
+// The blocks tilted by alpha about y (the interface an inclined plane), the upper one pressed by
+// a vertical traction p (its weight): along the plane the load is p sin(alpha) A, across it
+// p cos(alpha) A. Reference: Coulomb's law; mu = 0.3 > tan(10 deg) = 0.18 holds the block
+// with the friction force p sin(alpha) A; mu < tan(20 deg) = 0.36 cannot, and the run says the
+// block slides.
+TEST(FrictionBlocks, BlockOnAnInclinedPlaneSticksOrSlidesByMuAgainstTanAlpha)
+{
+  const double mu = 0.3;
+  for (const double degrees : {10.0, 20.0})
+  {
+    const double alpha = degrees * M_PI / 180;
+    fem::Problem problem = sheared_blocks(0, 0);
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(alpha, Eigen::Vector3d::UnitY()).toRotationMatrix();
+    for (la::Index n = 0; n < problem.mesh.nodes.rows(); ++n)
+      problem.mesh.nodes.row(n) = (R * problem.mesh.nodes.row(n).transpose()).transpose();
+    problem.tractions = {{"upper_zmax", Eigen::Vector3d(0, 0, -pressure)}};
+    const auto s = settings(nonlinear::FrictionModel::coulomb, mu);
+    TimerTable timers;
+    if (std::tan(alpha) < mu)
+    {
+      const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
+      ASSERT_TRUE(solution.converged) << solution.reason;
+      const la::Vector f =
+          contact::tangential_forces(solution.tangential, solution.tangential_lambda, 3 * problem.mesh.n_nodes());
+      Eigen::Vector3d total = Eigen::Vector3d::Zero();
+      for (const int32_t node :
+           std::set<int32_t>(solution.tangential.slave_node.begin(), solution.tangential.slave_node.end()))
+        total += f.segment<3>(3 * node);
+      const double along = total.dot(R * Eigen::Vector3d::UnitX()); // down the plane is -x'
+      std::printf("inclined %.0f deg: friction force along the plane %.9e (p sin(alpha) A = %.9e), normal %.9e "
+                  "(p cos(alpha) A = %.9e)\n",
+                  degrees, along, pressure * std::sin(alpha), nonlinear::total_normal_force(solution),
+                  pressure * std::cos(alpha));
+      // The load pushes the upper block down the plane (-x' for a rotation by +alpha about y
+      // lifts +x'): friction holds it up the plane.
+      EXPECT_NEAR(std::abs(along), pressure * std::sin(alpha), 1e-6 * pressure);
+      EXPECT_NEAR(nonlinear::total_normal_force(solution), pressure * std::cos(alpha), 1e-6 * pressure);
+    }
+    else
+    {
+      try
+      {
+        const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
+        ADD_FAILURE() << "mu below tan(alpha): the block should slide, the run converged: " << solution.converged;
+      }
+      catch (const Error& e)
+      {
+        std::printf("inclined %.0f deg: %s\n", degrees, e.what());
+        EXPECT_NE(std::string(e.what()).find("slides"), std::string::npos) << e.what();
+      }
     }
   }
 }
