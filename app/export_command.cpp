@@ -37,6 +37,11 @@ void export_model(const ExportOptions& options)
   FETICON_CHECK(options.format == "calculix",
                 "export: --format " << options.format << " is not known; the one format is calculix");
   const io::ProblemFile file = load_problem(options.problem_file, options.overrides);
+  // CalculiX's *FRICTION is Coulomb's law; a slip bound independent of the pressure has no
+  // keyword there, and writing Coulomb instead would compare two different models.
+  FETICON_CHECK(file.settings.text("contact.friction.model") != "tresca",
+                "export: Tresca friction (contact.friction.model=tresca) has no CalculiX equivalent: ccx's "
+                "*FRICTION is Coulomb's law (mu times the pressure); export with coulomb or none");
   // The mesh and the deck only: no solve, so the guard counts the mesh alone.
   const problems::MeshPrediction predicted = predict_mesh(file);
   check_fits(estimate_mesh_memory(predicted.nodes), memory_budget(file.settings),
@@ -49,6 +54,8 @@ void export_model(const ExportOptions& options)
   deck.increments = solver.steps();
   deck.contact_stiffness_factor = options.contact_stiffness_factor;
   deck.overclosure = options.overclosure;
+  if (solver.friction.model == nonlinear::FrictionModel::coulomb)
+    deck.friction_coefficient = solver.friction.coefficient;
 
   std::ostringstream text;
   const io::CalculixDeckSummary s = io::write_calculix_deck(problem, deck, text);
@@ -64,6 +71,8 @@ void export_model(const ExportOptions& options)
           << s.n_master_faces << " master faces, K = " << s.contact_stiffness << " Pa/m), " << s.n_cloads
           << " nodal loads, total (" << s.total_load[0] << ", " << s.total_load[1] << ", " << s.total_load[2] << ") N, "
           << deck.increments << " increment(s)" << (deck.nlgeom ? ", NLGEOM" : "");
+  if (s.stick_slope > 0)
+    message << ", Coulomb friction mu = " << deck.friction_coefficient << " (stick slope " << s.stick_slope << " Pa/m)";
   if (s.overclosure > 0)
     message << ", floating slave body shifted " << s.overclosure << " m into its master";
   log::info(message.str());

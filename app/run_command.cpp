@@ -319,6 +319,10 @@ nlohmann::ordered_json run_warnings(const RunContext& run, const nonlinear::Cont
   if (run.calculix)
     for (const std::string& w : run.calculix->warnings())
       warnings.push_back("deck output: " + w);
+  if (run.calculix && run.solver.friction.model != nonlinear::FrictionModel::none)
+    warnings.push_back("deck output: the .frd and .dat hold the normal contact only: slip and shear (CSLIP, "
+                       "CSHEAR, the tangential CSTR) are written as 0, and RF subtracts only the normal "
+                       "contact force");
   const io::Settings& settings = run.settings();
   const double feasibility_tolerance = settings.number("contact.feasibility_tolerance");
   if (solution.completed && run.solver.method == nonlinear::ContactMethod::dual_penalty &&

@@ -174,6 +174,8 @@ std::vector<ContactPairFaces> contact_pairs(const fem::Problem& problem, const C
   summary.n_contact_pairs = static_cast<int64_t>(pairs.size());
   if (!pairs.empty())
     summary.contact_stiffness = pairs.front().stiffness;
+  if (!pairs.empty() && options.friction_coefficient > 0)
+    summary.stick_slope = pairs.front().stiffness / options.stick_slope_ratio;
   return pairs;
 }
 
@@ -231,9 +233,10 @@ void write_materials(std::ostream& out, const fem::Problem& problem)
   }
 }
 
-/// Per contact pair: its two *SURFACEs, a linear pressure-overclosure interaction and the
-/// surface-to-surface *CONTACT PAIR.
-void write_contact(std::ostream& out, const fem::Problem& problem, const std::vector<ContactPairFaces>& pairs)
+/// Per contact pair: its two *SURFACEs, a linear pressure-overclosure interaction (with
+/// *FRICTION for Coulomb friction) and the surface-to-surface *CONTACT PAIR.
+void write_contact(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
+                   const std::vector<ContactPairFaces>& pairs)
 {
   for (size_t p = 0; p < pairs.size(); ++p)
   {
@@ -247,8 +250,13 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const std::ve
     }
     const std::string interaction = "SI_" + std::to_string(p + 1);
     out << "*SURFACE INTERACTION, NAME=" << interaction << "\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n"
-        << number(pairs[p].stiffness) << '\n'
-        << "*CONTACT PAIR, INTERACTION=" << interaction << ", TYPE=SURFACE TO SURFACE\n"
+        << number(pairs[p].stiffness) << '\n';
+    if (options.friction_coefficient > 0)
+      out << "** Coulomb friction; the stick slope is the normal slope / " << options.stick_slope_ratio
+          << " (src/io/calculix_deck.hpp)\n*FRICTION\n"
+          << number(options.friction_coefficient) << ", " << number(pairs[p].stiffness / options.stick_slope_ratio)
+          << '\n';
+    out << "*CONTACT PAIR, INTERACTION=" << interaction << ", TYPE=SURFACE TO SURFACE\n"
         << deck_name("S_", names.slave) << ", " << deck_name("S_", names.master) << '\n';
   }
 }
@@ -292,6 +300,10 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   FETICON_CHECK(std::isfinite(options.contact_stiffness_factor) && options.contact_stiffness_factor > 0,
                 "calculix export: contact stiffness factor " << options.contact_stiffness_factor
                                                              << " must be positive");
+  FETICON_CHECK(std::isfinite(options.friction_coefficient) && options.friction_coefficient >= 0,
+                "calculix export: friction coefficient " << options.friction_coefficient << " must be >= 0");
+  FETICON_CHECK(std::isfinite(options.stick_slope_ratio) && options.stick_slope_ratio > 0,
+                "calculix export: stick slope ratio " << options.stick_slope_ratio << " must be positive");
   const mesh::HexMesh& mesh = problem.mesh;
   CalculixDeckSummary summary;
   summary.n_nodes = mesh.n_nodes();
@@ -307,7 +319,7 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
     node_sets.insert(d.set);
   write_node_sets(out, mesh, node_sets);
   write_materials(out, problem);
-  write_contact(out, problem, pairs);
+  write_contact(out, problem, options, pairs);
   write_step(out, problem, options, summary);
   out << "*NODE FILE\nU, RF\n";
   if (!pairs.empty())

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <deque>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -123,6 +124,14 @@ struct DeckSection
   DeckPosition where;
 };
 
+/// *FRICTION under a *SURFACE INTERACTION (CalculiX's data line: mu, stick slope).
+struct DeckFriction
+{
+  double coefficient = 0; ///< Coulomb's mu, >= 0 (0: frictionless)
+  double stick_slope = 0; ///< CalculiX's penalty slope of the stick range (Pa/m); 0 if not given
+  DeckPosition where;
+};
+
 struct DeckContactPair
 {
   std::string interaction, slave, master;
@@ -156,6 +165,7 @@ struct DeckData
   std::map<std::string, fem::Material> materials;
   std::vector<DeckSection> sections;
   std::set<std::string> interactions;
+  std::map<std::string, DeckFriction> frictions; ///< by interaction name
   std::vector<DeckContactPair> pairs;
   std::vector<fem::LinearEquation> equations;
 
@@ -175,6 +185,13 @@ struct DeckData
       warnings.push_back(line);
   }
 };
+
+/// The largest friction coefficient a deck may give: the range of contact.friction.coefficient.
+constexpr double largest_friction_coefficient = 100;
+
+/// A real number of a deck's data field (a leading '+' and Fortran's exponent 1.5D3 allowed),
+/// or nothing if the field is not one finite number.
+std::optional<double> parse_deck_real(std::string_view field);
 
 /// Runs the keyword handlers over the whole deck; `outline` sizes the node and cell arrays.
 DeckData read_deck_data(const std::filesystem::path& path, const DeckOutline& outline);

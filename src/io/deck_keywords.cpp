@@ -42,7 +42,6 @@ const std::map<std::string, std::string> inert_keywords = {
 
 /// Keywords feticon does not implement, with what they are (for the one-line error).
 const std::map<std::string, std::string> unsupported_keywords = {
-    {"FRICTION", "friction (feticon's contact is frictionless)"},
     {"DYNAMIC", "dynamics"},
     {"MODAL DYNAMIC", "dynamics"},
     {"FREQUENCY", "eigenfrequencies"},
@@ -168,23 +167,10 @@ private:
   {
     if (i >= line.fields.size() || line.fields[i].empty())
       fail_at(line.at(i), std::string("missing ") + what);
-    std::string_view v = line.fields[i];
-    if (v.front() == '+')
-      v.remove_prefix(1);
-    double out = 0;
-    auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
-    if (ec == std::errc() && end != v.data() + v.size() && (*end == 'd' || *end == 'D'))
-    {
-      // Fortran's double-precision exponent: 1.5D3.
-      std::string copy(v);
-      copy[end - v.data()] = 'e';
-      auto r = std::from_chars(copy.data(), copy.data() + copy.size(), out);
-      ec = r.ec;
-      end = r.ptr == copy.data() + copy.size() ? v.data() + v.size() : v.data();
-    }
-    if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(out))
+    const std::optional<double> out = parse_deck_real(line.fields[i]);
+    if (!out)
       fail_at(line.at(i), "'" + text(line.fields[i]) + "' is not a finite number (" + what + ")");
-    return out;
+    return *out;
   }
 
   int64_t integer(const DeckDataLine& line, size_t i, const char* what) const
@@ -267,6 +253,7 @@ private:
         {"EQUATION", &KeywordReader::equation},
         {"SURFACE INTERACTION", &KeywordReader::surface_interaction},
         {"SURFACE BEHAVIOR", &KeywordReader::surface_behavior},
+        {"FRICTION", &KeywordReader::friction},
         {"CONTACT PAIR", &KeywordReader::contact_pair},
         {"STEP", &KeywordReader::step},
         {"STATIC", &KeywordReader::static_procedure},
@@ -278,6 +265,7 @@ private:
         {"EL FILE", &KeywordReader::output_request},
         {"CONTACT FILE", &KeywordReader::output_request},
     };
+    _in_interaction = _in_interaction && (_keyword.name == "SURFACE BEHAVIOR" || _keyword.name == "FRICTION");
     if (const auto it = handlers.find(_keyword.name); it != handlers.end())
     {
       (this->*(it->second))();
@@ -687,6 +675,7 @@ private:
     known_parameters({"NAME"});
     _interaction = required("NAME");
     _data.interactions.insert(_interaction);
+    _in_interaction = true;
     no_data();
   }
 
@@ -711,6 +700,62 @@ private:
                _keyword.where.str() +
                ") is a penalty law; feticon enforces non-penetration exactly, so its "
                "answer differs from CalculiX's by the penetration the law allows (pressure / slope)");
+  }
+
+  /// *FRICTION (CalculiX: no parameters, one line "mu, stick slope"): Coulomb's law on the
+  /// interaction whose block it is in. Abaqus's options that change the law are refused;
+  /// those that only tune a penalty stick are reported (feticon's stick is exact).
+  void friction()
+  {
+    static const std::map<std::string, std::string> other_laws = {
+        {"EXPONENTIAL DECAY", "a coefficient that decays with the slip rate"},
+        {"EXPONENTIAL", "a coefficient that decays with the slip rate"},
+        {"ANISOTROPIC", "anisotropic friction"},
+        {"ROUGH", "rough friction (no slip at any load)"},
+        {"TAUMAX", "a shear stress limit beside Coulomb's law"},
+        {"USER", "user friction subroutines"},
+        {"DEPENDENCIES", "a coefficient that depends on field variables"},
+        {"TEMPERATURE", "a coefficient that depends on temperature"},
+    };
+    for (const auto& [key, value] : _keyword.parameters)
+      if (const auto it = other_laws.find(key); it != other_laws.end())
+        throw Error(where() + ": " + key + " (" + it->second + ") is not implemented by feticon (Coulomb's law: mu)");
+    known_parameters({"LAGRANGE", "SLIP TOLERANCE", "ELASTIC SLIP"});
+    if (!_in_interaction)
+      throw Error(where() +
+                  " belongs in the block of a *SURFACE INTERACTION (right after it or its *SURFACE BEHAVIOR)");
+    if (_data.frictions.count(_interaction))
+      throw Error(where() + ": interaction " + _interaction + " has a *FRICTION already (at " +
+                  _data.frictions.at(_interaction).where.str() + ")");
+    DeckFriction friction;
+    friction.where = _keyword.where;
+    DeckDataLine line;
+    if (!_tokens.next_data(line))
+      throw Error(where() + " needs a data line: friction coefficient mu [, stick slope]");
+    friction.coefficient = real(line, 0, "friction coefficient mu");
+    if (friction.coefficient < 0 || friction.coefficient > largest_friction_coefficient)
+      fail_at(line.at(0), "friction coefficient " + text(line.fields[0]) + " is outside 0 to 100");
+    if (line.fields.size() > 2)
+      fail_at(line.at(2),
+              "a coefficient that depends on slip rate, pressure or temperature is not implemented by "
+              "feticon (the data line is: mu, stick slope)");
+    std::string slope;
+    if (line.fields.size() == 2 && !line.fields[1].empty())
+    {
+      friction.stick_slope = real(line, 1, "stick slope");
+      slope = text(line.fields[1]);
+      if (!(friction.stick_slope > 0))
+        fail_at(line.at(1), "the stick slope " + slope + " must be positive");
+    }
+    if (_tokens.next_data(line))
+      fail_at(line.where, "takes one data line (a table of coefficients is not implemented by feticon)");
+    for (const char* p : {"LAGRANGE", "SLIP TOLERANCE", "ELASTIC SLIP"})
+      if (_keyword.has(p))
+        _data.warn(where() + ": " + p + " is not used; feticon enforces the stick exactly");
+    if (!slope.empty())
+      _data.warn("interaction " + _interaction + ": the stick slope " + slope + " of *FRICTION (" +
+                 _keyword.where.str() + ") is not used; feticon enforces the stick exactly (no elastic slip)");
+    _data.frictions[_interaction] = friction;
   }
 
   void contact_pair()
@@ -864,11 +909,36 @@ private:
   DeckKeyword _keyword;
   DeckData _data;
   std::string _material, _interaction;
+  /// True from a *SURFACE INTERACTION until a keyword other than its *SURFACE BEHAVIOR and
+  /// *FRICTION (CalculiX: the interaction's block ends there, as a material's does).
+  bool _in_interaction = false;
   bool _in_step = false, _have_procedure = false;
   DeckPosition _step_where;
   DeckStep _step;
 };
 } // namespace
+
+std::optional<double> parse_deck_real(std::string_view v)
+{
+  if (!v.empty() && v.front() == '+')
+    v.remove_prefix(1);
+  if (v.empty())
+    return std::nullopt;
+  double out = 0;
+  auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
+  if (ec == std::errc() && end != v.data() + v.size() && (*end == 'd' || *end == 'D'))
+  {
+    // Fortran's double-precision exponent: 1.5D3.
+    std::string copy(v);
+    copy[end - v.data()] = 'e';
+    auto r = std::from_chars(copy.data(), copy.data() + copy.size(), out);
+    ec = r.ec;
+    end = r.ptr == copy.data() + copy.size() ? v.data() + v.size() : v.data();
+  }
+  if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(out))
+    return std::nullopt;
+  return out;
+}
 
 bool LabelIndex::insert(int64_t label, int32_t index)
 {

@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <tuple>
 #include <unordered_map>
@@ -340,8 +342,14 @@ private:
                     at << ": master surface '" << pair.master << "' must be made of element faces (TYPE=ELEMENT)");
       _p.contacts.push_back(
           {pair.slave, pair.master, _restricted_surfaces.count(pair.slave) ? "slave_nodes_" + pair.slave : ""});
+      if (const auto it = _d.frictions.find(pair.interaction); it != _d.frictions.end())
+        _deck.friction_coefficient = it->second.coefficient;
       (pair.node_to_surface ? any_node_to_surface : any_surface_to_surface) = true;
     }
+    for (const auto& [interaction, friction] : _d.frictions)
+      if (_d.pairs.empty() || _d.pairs.front().interaction != interaction)
+        _d.warn("*FRICTION of interaction " + interaction + " (" + friction.where.str() +
+                ") is not used: no *CONTACT PAIR takes that interaction");
     if (any_node_to_surface && any_surface_to_surface)
       _d.warn("the deck has NODE TO SURFACE and SURFACE TO SURFACE pairs; feticon takes one formulation for "
               "all (mortar, the surface-to-surface one)");
@@ -494,9 +502,46 @@ Deck read_deck(const std::filesystem::path& path, const DeckOutline& outline)
   if (steps.back().nlgeom && !steps.front().nlgeom)
     data.warn("NLGEOM is set from a later step on; feticon takes one kinematics for the run, large displacements");
   deck.info.warnings = std::move(data.warnings);
+  // The settings took mu from the outline; a reader that read another would solve another law.
+  FETICON_CHECK(deck.info.friction_coefficient == outline.friction_coefficient,
+                path.string() << ": internal: the deck's friction coefficient " << deck.info.friction_coefficient
+                              << " is not the outline's " << outline.friction_coefficient);
   deck.problem.validate();
   return deck;
 }
+
+namespace
+{
+/// The outline's reading of a *FRICTION data line: mu where the reader would take it, else 0.
+double outline_friction(DeckTokenizer& tokens)
+{
+  DeckDataLine line;
+  if (!tokens.next_data(line) || line.fields.empty() || line.fields.size() > 2)
+    return 0;
+  const std::optional<double> mu = parse_deck_real(line.fields[0]);
+  if (line.fields.size() == 2 && !line.fields[1].empty())
+  {
+    const std::optional<double> slope = parse_deck_real(line.fields[1]);
+    if (!slope || !(*slope > 0))
+      return 0;
+  }
+  return mu && *mu >= 0 && *mu <= largest_friction_coefficient ? *mu : 0.0;
+}
+
+/// The number of load steps of the first *STATIC's data line (1 if it has none).
+int outline_increments(DeckTokenizer& tokens)
+{
+  DeckDataLine line;
+  if (!tokens.next_data(line) || line.fields.empty())
+    return 1;
+  // The reader checks these numbers; here a malformed one leaves the default.
+  const double initial = std::strtod(std::string(line.fields[0]).c_str(), nullptr);
+  const double total = line.fields.size() > 1 ? std::strtod(std::string(line.fields[1]).c_str(), nullptr) : 1.0;
+  if (initial > 0 && total > 0 && total / initial <= 1000)
+    return std::max(1, static_cast<int>(std::ceil(total / initial - 1e-9)));
+  return 1;
+}
+} // namespace
 
 DeckOutline deck_outline(const std::filesystem::path& path)
 {
@@ -504,12 +549,19 @@ DeckOutline deck_outline(const std::filesystem::path& path)
   DeckTokenizer tokens(path);
   DeckKeyword keyword;
   bool first_step = true, node_to_surface = false, surface_to_surface = false;
+  std::string interaction, pair_interaction;
+  std::map<std::string, double> friction; // mu by interaction
   while (tokens.next_keyword(keyword))
   {
+    // An interaction's block: its *SURFACE BEHAVIOR and *FRICTION (as the reader takes it).
+    if (keyword.name != "SURFACE BEHAVIOR" && keyword.name != "FRICTION")
+      interaction = keyword.name == "SURFACE INTERACTION" && keyword.value("NAME") ? *keyword.value("NAME") : "";
     if (keyword.name == "CONTACT PAIR")
     {
       const std::string* type = keyword.value("TYPE");
       (!type || *type == "NODE TO SURFACE" ? node_to_surface : surface_to_surface) = true;
+      if (pair_interaction.empty() && keyword.value("INTERACTION"))
+        pair_interaction = *keyword.value("INTERACTION");
     }
     if (keyword.name == "NODE")
       out.nodes += tokens.count_data_lines();
@@ -523,18 +575,14 @@ DeckOutline deck_outline(const std::filesystem::path& path)
     else if (keyword.name == "STATIC" && first_step)
     {
       first_step = false;
-      DeckDataLine line;
-      if (tokens.next_data(line) && !line.fields.empty())
-      {
-        // The reader checks these numbers; here a malformed one leaves the default.
-        const double initial = std::strtod(std::string(line.fields[0]).c_str(), nullptr);
-        const double total = line.fields.size() > 1 ? std::strtod(std::string(line.fields[1]).c_str(), nullptr) : 1.0;
-        if (initial > 0 && total > 0 && total / initial <= 1000)
-          out.increments = std::max(1, static_cast<int>(std::ceil(total / initial - 1e-9)));
-      }
+      out.increments = outline_increments(tokens);
     }
+    else if (keyword.name == "FRICTION" && !interaction.empty())
+      friction.emplace(interaction, outline_friction(tokens));
   }
   out.contact_formulation = node_to_surface && !surface_to_surface ? "node_to_segment" : "mortar";
+  if (const auto it = friction.find(pair_interaction); it != friction.end())
+    out.friction_coefficient = it->second;
   return out;
 }
 } // namespace feticon::io

@@ -32,7 +32,9 @@ std::vector<SettingSpec> make_specs()
        Type::text, {"node_to_segment", "mortar"}, 0, 0, false},
       {"contact.friction.model", "none", "friction on the contact pair (FETI solver): none, tresca (the "
        "tangential traction bounded by contact.friction.slip_bound) or coulomb (bounded by "
-       "contact.friction.coefficient times the contact pressure)", Type::text, {"none", "tresca", "coulomb"}, 0, 0, false},
+       "contact.friction.coefficient times the contact pressure); an input deck's *FRICTION or a problem "
+       "file's contact pair (friction: {model: coulomb, coefficient: 0.3}) sets the keys not given otherwise",
+       Type::text, {"none", "tresca", "coulomb"}, 0, 0, false},
       {"contact.friction.coefficient", "0", "Coulomb's friction coefficient mu", Type::number, {}, 0, 100, false},
       {"contact.friction.slip_bound", "0", "Tresca's slip bound g, the largest tangential traction (Pa)",
        Type::number, {}, 0, inf, false},

@@ -117,6 +117,10 @@ expect "traction with two components" "loads.0.traction" -- "$(variant 's/tracti
 expect "traction not a number" "loads.0.traction" -- "$(variant 's/traction: \[0, -1e8, 0\]/traction: [0, heavy, 0]/' texttraction)"
 expect "contact on an unknown set" "contact.0" -- "$(variant 's/slave: punch_ymin/slave: punch_bottom/' unknowncontact)"
 expect "contact pair without master" "contact.0.master" -- "$(variant 's/, master: base_ymax//' nomaster)"
+expect "contact friction negative" "contact.friction.coefficient = -0.3 is out of range" -- \
+  "$(variant 's/master: base_ymax}/master: base_ymax, friction: {model: coulomb, coefficient: -0.3}}/' frictionneg)"
+expect "contact friction without coefficient" "contact.0.friction (model coulomb) needs coefficient" -- \
+  "$(variant 's/master: base_ymax}/master: base_ymax, friction: {model: coulomb}}/' frictionnomu)"
 expect "body free to fly away" "rigid-body motion\|free to move" -- "$(variant '/{set: punch_xmin, x: 0}/d' flying)"
 expect "index out of range" "index" -- "$(variant 's/x/x/' plain)" --set loads.5.traction=[0,0,1]
 expect "mesh too coarse for the subdomains" "subdomains" -- "$(variant 's/x/x/' plain2)" --set subdomains=500
@@ -125,7 +129,18 @@ expect "QP iteration limit" "converge\|iteration" -- --set qp.max_iterations=3 -
 # Input decks (CalculiX's contactenergy.inp mutated): each a line naming file, line and keyword.
 deck_variant() { sed "$1" "$src_dir/tests/data/calculix/contactenergy.inp" > "$work/$2.inp"; echo "$work/$2.inp"; }
 expect "deck missing" "does not exist" -- "$work/absent.inp"
-expect "deck with friction" "FRICTION" -- "$(deck_variant 's/^\*SURFACE BEHAVIOR.*/&\n*FRICTION\n0.3/' friction)"
+# *FRICTION after the interaction's *SURFACE BEHAVIOR and its data line (1.E7).
+friction_variant() { deck_variant "/^\*SURFACE BEHAVIOR/{n;s/\$/\n$1/}" "$2"; }
+expect "deck friction negative" "friction coefficient -0.3 is outside 0 to 100" -- "$(friction_variant '*FRICTION\n-0.3' friction_negative)"
+expect "deck friction without data" "FRICTION needs a data line" -- "$(friction_variant '*FRICTION' friction_nodata)"
+expect "deck friction exponential decay" "EXPONENTIAL DECAY (a coefficient that decays" -- \
+  "$(friction_variant '*FRICTION, EXPONENTIAL DECAY\n0.3' friction_decay)"
+expect "deck friction anisotropic" "ANISOTROPIC (anisotropic friction)" -- \
+  "$(friction_variant '*FRICTION, ANISOTROPIC\n0.3, 0.2' friction_anisotropic)"
+expect "deck friction rough" "ROUGH (rough friction" -- "$(friction_variant '*FRICTION, ROUGH' friction_rough)"
+expect "deck friction table" "takes one data line" -- "$(friction_variant '*FRICTION\n0.3\n0.2' friction_table)"
+expect "deck friction negative stick slope" "stick slope -1e6 must be positive" -- \
+  "$(friction_variant '*FRICTION\n0.3, -1e6' friction_slope)"
 expect "deck element type" "C3D10" -- "$(deck_variant 's/TYPE=C3D8/TYPE=C3D10/I' c3d10)"
 expect "deck face S7" "S7" -- "$(deck_variant '0,/, *S[1-6]/s//, S7/' s7)"
 expect "deck absent node" "not defined" -- "$(deck_variant 's/^ *1, *1, *2,/1, 1, 999,/' absent_node)"

@@ -4,7 +4,8 @@
 # the original run; the deck holds the same mesh, materials, supports, the tractions as their
 # consistent nodal forces and plane strain as u_z = 0 on every node, so the contact pressures
 # and the contact force agree to the QP tolerance (1e-6 of the peak; measured 3e-10 on Hertz).
-# --overclosure 0: the model as it is (the shift is for CalculiX's penalty contact).
+# --overclosure 0: the model as it is (the shift is for CalculiX's penalty contact). With Coulomb
+# friction the deck's *FRICTION alone gives the deck run its mu.
 # Usage: deck_round_trip.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -36,4 +37,7 @@ check hertz-large --set hertz.refinement=0.5
 check hertz-small --set hertz.refinement=0.5 --set displacements=small
 check hertz3d --set problem=hertz3d --set hertz3d.refinement=0.5 --set displacements=small
 check punch "$src/examples/flat_punch/problem.yaml"
+# Coulomb friction: the export writes *FRICTION, the deck run takes mu from it alone.
+check punch-coulomb "$src/examples/flat_punch/problem.yaml" --set contact.friction.model=coulomb \
+  --set contact.friction.coefficient=0.3
 check sphere "$src/examples/sphere_on_block/problem.yaml" --set displacements=small

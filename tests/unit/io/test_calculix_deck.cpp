@@ -194,6 +194,43 @@ TEST(CalculixDeck, SupportedSlaveIsNotShiftedAndSmallDisplacementsHaveNoNlgeom)
   EXPECT_NE(text.str().find("N_punch_ymax, 2, 2, -1.000000000000e-04"), std::string::npos);
 }
 
+// Coulomb friction: *FRICTION in the interaction's block, mu and the stick slope K / 50.
+TEST(CalculixDeck, CoulombFrictionGoesUnderTheInteraction)
+{
+  std::ostringstream plain;
+  write_calculix_deck(punch_problem(false), CalculixOptions{}, plain);
+  EXPECT_EQ(plain.str().find("*FRICTION"), std::string::npos);
+
+  CalculixOptions options;
+  options.friction_coefficient = 0.3;
+  std::ostringstream text;
+  const CalculixDeckSummary summary = write_calculix_deck(punch_problem(false), options, text);
+  const auto deck = blocks(text.str());
+  std::vector<std::string> order;
+  std::vector<std::string> friction;
+  for (const auto& [keyword, lines] : deck)
+  {
+    order.push_back(keyword.substr(0, keyword.find(',')));
+    if (keyword == "*FRICTION")
+    {
+      ASSERT_EQ(lines.size(), 1u);
+      friction = lines[0];
+    }
+  }
+  const auto at = std::find(order.begin(), order.end(), "*FRICTION");
+  ASSERT_NE(at, order.end());
+  EXPECT_EQ(*(at - 2), "*SURFACE INTERACTION");
+  EXPECT_EQ(*(at - 1), "*SURFACE BEHAVIOR");
+  ASSERT_EQ(friction.size(), 2u);
+  EXPECT_EQ(std::stod(friction[0]), 0.3);
+  // K = 5 E / h = 1e13 Pa/m (E = 2e11, h = 0.1 m): lambda = 2e11 Pa/m.
+  EXPECT_NEAR(std::stod(friction[1]), 5 * 2e11 / 0.1 / 50, 1e-12 * 2e11);
+  EXPECT_NEAR(summary.stick_slope, std::stod(friction[1]), 1e-12 * 2e11);
+
+  options.friction_coefficient = -0.1;
+  EXPECT_THROW(write_calculix_deck(punch_problem(false), options, text), Error);
+}
+
 TEST(CalculixDeck, RefusesAContactSurfaceOnTwoBodies)
 {
   fem::Problem problem = punch_problem(false);

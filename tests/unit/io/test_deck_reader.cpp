@@ -199,6 +199,23 @@ TEST(DeckReader, ExportedDeckReadsBackAsTheProblem)
   EXPECT_EQ(deck.info.node_labels.back(), p.mesh.n_nodes());
 }
 
+// Round trip of the friction: the exported *FRICTION reads back as mu, in the deck and in the
+// settings of a run of it.
+TEST(DeckReader, ExportedFrictionReadsBackAsCoulombsMu)
+{
+  CalculixOptions options;
+  options.overclosure = 0;
+  options.friction_coefficient = 0.35;
+  const auto dir = test::fresh_directory("deck_friction_round_trip");
+  std::ostringstream text;
+  write_calculix_deck(punch_problem(), options, text);
+  const auto path = write(dir, "punch.inp", text.str());
+  EXPECT_EQ(read_deck(path).info.friction_coefficient, 0.35);
+  const ProblemFile file = load_problem_file(path, {}, {});
+  EXPECT_EQ(file.settings.text("contact.friction.model"), "coulomb");
+  EXPECT_EQ(file.settings.number("contact.friction.coefficient"), 0.35);
+}
+
 TEST(DeckReader, PlaneStrainDeckEliminatesUz)
 {
   fem::Problem p = punch_problem();
@@ -309,8 +326,31 @@ TEST(DeckReader, MalformedDecksEndInOneLineNamingFileAndLine)
       {"upper_bottom, lower_top", "lower_top, lower_top", "slave and master are the same surface 'LOWER_TOP'"},
       {"lower, s2", "nothere, s2", "two_cubes.inp:42:1: *SURFACE: no element set 'NOTHERE'"},
       {"15, 0, 0, 2", "15, 0, zero, 2", "two_cubes.inp:17:8: *NODE: 'zero' is not a finite number"},
-      {"*SURFACE INTERACTION, NAME=si", "*SURFACE INTERACTION, NAME=si\n*FRICTION\n0.3",
-       "*FRICTION is not implemented by feticon (friction"},
+      {"*SURFACE INTERACTION, NAME=si", "*SURFACE INTERACTION, NAME=si\n*FRICTION\n-0.3",
+       "two_cubes.inp:45:1: *FRICTION: friction coefficient -0.3 is outside 0 to 100"},
+      {"*SURFACE INTERACTION, NAME=si", "*SURFACE INTERACTION, NAME=si\n*FRICTION",
+       "two_cubes.inp:44: *FRICTION needs a data line: friction coefficient mu"},
+      {"*SURFACE INTERACTION, NAME=si", "*SURFACE INTERACTION, NAME=si\n*FRICTION, EXPONENTIAL DECAY\n0.3",
+       "*FRICTION: EXPONENTIAL DECAY (a coefficient that decays with the slip rate) is not implemented"},
+      {"*SURFACE INTERACTION, NAME=si", "*SURFACE INTERACTION, NAME=si\n*FRICTION, ANISOTROPIC\n0.3, 0.2",
+       "ANISOTROPIC (anisotropic friction) is not implemented"},
+      {"*SURFACE INTERACTION, NAME=si", "*SURFACE INTERACTION, NAME=si\n*FRICTION, ROUGH", "ROUGH (rough friction"},
+      {"*SURFACE INTERACTION, NAME=si", "*SURFACE INTERACTION, NAME=si\n*FRICTION, FOO\n0.3",
+       "*FRICTION: parameter FOO is not implemented by feticon"},
+      {"*SURFACE INTERACTION, NAME=si", "*SURFACE INTERACTION, NAME=si\n*FRICTION\n0.3, 1e9, 0.1",
+       "two_cubes.inp:45:11: *FRICTION: a coefficient that depends on slip rate"},
+      {"*SURFACE INTERACTION, NAME=si", "*SURFACE INTERACTION, NAME=si\n*FRICTION\n0.3\n0.2, 1.0",
+       "two_cubes.inp:46: *FRICTION: takes one data line"},
+      {"*SURFACE INTERACTION, NAME=si", "*SURFACE INTERACTION, NAME=si\n*FRICTION\n0.3, -5",
+       "the stick slope -5 must be positive"},
+      {"*SURFACE INTERACTION, NAME=si", "*SURFACE INTERACTION, NAME=si\n*FRICTION\nmu",
+       "'mu' is not a finite number (friction coefficient mu)"},
+      {"*SURFACE INTERACTION, NAME=si", "*SURFACE INTERACTION, NAME=si\n*FRICTION\n0.3\n*FRICTION\n0.2",
+       "two_cubes.inp:46: *FRICTION: interaction SI has a *FRICTION already (at "},
+      {"*SURFACE, NAME=upper_bottom", "*FRICTION\n0.3\n*SURFACE, NAME=upper_bottom",
+       "*FRICTION belongs in the block of a *SURFACE INTERACTION"},
+      {"upper_bottom, lower_top", "upper_bottom, lower_top\n*FRICTION\n0.3",
+       "two_cubes.inp:47: *FRICTION belongs in the block of a *SURFACE INTERACTION"},
       {"*END STEP\n*STEP\n", "*STEP\n", "has no *END STEP before this one"},
       {"*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL", "*SOLID SECTION, ELSET=EALL, MATERIAL=IRON",
        "*SOLID SECTION: no material 'IRON'"},
@@ -357,6 +397,107 @@ TEST(DeckReader, ProblemFileOfADeckTakesItsSettings)
   EXPECT_EQ(file.settings.integer("load_steps"), 3); // --set wins over the deck's 4
   EXPECT_EQ(file.deck, std::filesystem::absolute(path));
   EXPECT_EQ(custom_mesh_size(file).nodes, 16);
+}
+/// two_cubes with `friction` (a *FRICTION keyword and its data) in the interaction's block.
+std::string two_cubes_with_friction(const std::string& friction)
+{
+  std::string text = two_cubes;
+  const std::string at = "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n";
+  text.insert(text.find(at) + at.size(), friction);
+  return text;
+}
+
+// *FRICTION (CalculiX's "mu, stick slope") is Coulomb's law with that mu, in the deck and in
+// the settings a run takes from it; mu = 0 is frictionless.
+TEST(DeckReader, FrictionIsCoulombsLawInTheSettings)
+{
+  const auto dir = test::fresh_directory("deck_friction");
+  const auto path = write(dir, "friction.inp", two_cubes_with_friction("*FRICTION\n0.3, 5000.\n"));
+  const Deck deck = read_deck(path);
+  EXPECT_EQ(deck.info.friction_coefficient, 0.3);
+  EXPECT_EQ(deck_outline(path).friction_coefficient, 0.3);
+  EXPECT_TRUE(std::any_of(deck.info.warnings.begin(), deck.info.warnings.end(), [](const std::string& w) {
+    return w.find("stick slope 5000. of *FRICTION") != std::string::npos;
+  }));
+  const ProblemFile file = load_problem_file(path, {}, {});
+  EXPECT_EQ(file.settings.text("contact.friction.model"), "coulomb");
+  EXPECT_EQ(file.settings.number("contact.friction.coefficient"), 0.3);
+
+  // --set wins, key by key.
+  EXPECT_EQ(load_problem_file(path, {"contact.friction.model=none"}, {}).settings.text("contact.friction.model"),
+            "none");
+  const ProblemFile other = load_problem_file(path, {"contact.friction.coefficient=0.5"}, {});
+  EXPECT_EQ(other.settings.text("contact.friction.model"), "coulomb");
+  EXPECT_EQ(other.settings.number("contact.friction.coefficient"), 0.5);
+
+  // A problem file naming the deck: the deck's friction, below the file's own keys.
+  write(dir, "deck.yaml", "problem: custom\nmesh: {file: friction.inp}\n");
+  EXPECT_EQ(load_problem_file(dir / "deck.yaml", {}, {}).settings.text("contact.friction.model"), "coulomb");
+  write(dir, "frictionless.yaml", "problem: custom\nmesh: {file: friction.inp}\ncontact.friction.model: none\n");
+  EXPECT_EQ(load_problem_file(dir / "frictionless.yaml", {}, {}).settings.text("contact.friction.model"), "none");
+
+  // mu = 0, Fortran's exponent, and an interaction no pair uses.
+  const auto zero = write(dir, "zero.inp", two_cubes_with_friction("*FRICTION\n0.\n"));
+  EXPECT_EQ(read_deck(zero).info.friction_coefficient, 0.0);
+  EXPECT_EQ(load_problem_file(zero, {}, {}).settings.text("contact.friction.model"), "none");
+  const auto fortran = write(dir, "fortran.inp", two_cubes_with_friction("*FRICTION\n2.5D-1\n"));
+  EXPECT_EQ(read_deck(fortran).info.friction_coefficient, 0.25);
+  EXPECT_EQ(load_problem_file(fortran, {}, {}).settings.number("contact.friction.coefficient"), 0.25);
+  std::string unused = two_cubes;
+  unused.insert(unused.find("*CONTACT PAIR"), "*SURFACE INTERACTION, NAME=spare\n*FRICTION\n0.4\n");
+  const Deck spare = read_deck(write(dir, "unused.inp", unused));
+  EXPECT_EQ(spare.info.friction_coefficient, 0.0);
+  EXPECT_TRUE(std::any_of(spare.info.warnings.begin(), spare.info.warnings.end(), [](const std::string& w) {
+    return w.find("*FRICTION of interaction SPARE") != std::string::npos;
+  }));
+  EXPECT_EQ(load_problem_file(dir / "unused.inp", {}, {}).settings.text("contact.friction.model"), "none");
+}
+
+// A problem file's contact pair carries the friction law: the same settings as the keys.
+TEST(DeckReader, ProblemFileContactPairCarriesFriction)
+{
+  const auto dir = test::fresh_directory("pair_friction");
+  const std::string head = "problem: custom\nmesh: {boxes: [{name: a, lengths: [1, 1, 1], cells: [1, 1, 1]}]}\n";
+  const auto load = [&](const std::string& name, const std::string& contact, std::vector<std::string> sets = {}) {
+    return load_problem_file(write(dir, name, head + contact), sets, {});
+  };
+  const ProblemFile coulomb = load(
+      "coulomb.yaml", "contact:\n  - {slave: a_zmin, master: a_zmax, friction: {model: coulomb, coefficient: 0.3}}\n");
+  EXPECT_EQ(coulomb.settings.text("contact.friction.model"), "coulomb");
+  EXPECT_EQ(coulomb.settings.number("contact.friction.coefficient"), 0.3);
+  const ProblemFile tresca = load("tresca.yaml",
+                                  "contact:\n  - {slave: a_zmin, master: a_zmax, friction: {model: "
+                                  "tresca, slip_bound: 2e7}}\n",
+                                  {"contact.friction.slip_bound=3e7"});
+  EXPECT_EQ(tresca.settings.text("contact.friction.model"), "tresca");
+  EXPECT_EQ(tresca.settings.number("contact.friction.slip_bound"), 3e7); // --set wins
+
+  const auto error = [&](const std::string& contact) {
+    try
+    {
+      load("bad.yaml", contact);
+    }
+    catch (const Error& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string pair = "contact:\n  - {slave: a_zmin, master: a_zmax, friction: ";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"{model: coulomb}}\n", "bad.yaml: contact.0.friction (model coulomb) needs coefficient"},
+      {"{model: tresca, coefficient: 0.3}}\n", "contact.0.friction.coefficient does not belong"},
+      {"{model: coulomb, coefficient: -0.3}}\n", "contact.friction.coefficient = -0.3 is out of range"},
+      {"{model: sticky}}\n", "contact.friction.model = 'sticky' must be one of"},
+      {"{model: coulomb, mu: 0.3}}\n", "unknown key 'mu' in contact.0.friction"},
+      {"{model: coulomb, coefficient: 0.3}}\n  - {slave: a_xmin, master: a_xmax}\n",
+       "contact.1.friction is not given, but contact.0.friction is"},
+  };
+  for (const auto& [friction, expected] : cases)
+  {
+    const std::string message = error(pair + friction);
+    EXPECT_NE(message.find(expected), std::string::npos) << "expected '" << expected << "', got '" << message << "'";
+  }
 }
 } // namespace
 } // namespace feticon::io
