@@ -85,7 +85,8 @@ void write_checkpoint(const std::filesystem::path& path, const nonlinear::Contac
     // Last, so that checkpoints written before it existed still read (their runs continue
     // with a cold SMALBE-M start).
     write_block(os, r.dual.omega.data(), r.dual.omega.size());
-    write_block(os, r.schur_boundary.data(), static_cast<int64_t>(r.schur_boundary.size())); // likewise
+    write_block(os, r.schur_boundary.data(), static_cast<int64_t>(r.schur_boundary.size()));         // likewise
+    write_block(os, r.contact_tangential.data(), static_cast<int64_t>(r.contact_tangential.size())); // likewise
   });
 }
 
@@ -182,6 +183,8 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
   }
   if (is.peek() != std::char_traits<char>::eof())
     r.schur_boundary = read_block<int32_t>(is, path);
+  if (is.peek() != std::char_traits<char>::eof())
+    r.contact_tangential = read_block<double>(is, path);
   FETICON_CHECK(r.completed_steps >= 1 && r.u_stacked.allFinite(),
                 path.string() << ": the checkpoint holds no converged step");
 }

@@ -156,12 +156,13 @@ def calculix_run(folder, deck_nodes, slave_nodes, plane_strain):
     frd = os.path.join(folder, "feticon.frd")
     disp = read_frd_last(frd, "DISP")
     contact = read_frd_last(frd, "CONTACT")
-    rows = []
+    rows, shear = [], []
     for node in slave_nodes:
         values = contact.get(node, [0.0] * 6)
         x = deck_nodes[node]
         if plane_strain:
             rows.append((x[0], x[0] + disp[node][0], values[3]))  # CPRESS is the 4th component
+            shear.append((x[0], values[3], abs(values[4])))  # CSHEAR1, along the slave face's first tangent
         else:  # distance from the z axis
             rows.append((math.hypot(x[0], x[1]), math.hypot(x[0] + disp[node][0], x[1] + disp[node][1]), values[3]))
     # Reactions: *NODE PRINT TOTALS=ONLY of every support set, last increment.
@@ -172,18 +173,20 @@ def calculix_run(folder, deck_nodes, slave_nodes, plane_strain):
         totals[name] = [float(v) for v in body.split()]
     return {"seconds": wall, "peak_memory_bytes": rss, "cpu_percent": cpu,
             "equations": int(eq.group(1)) if eq else None, "increments": increments,
-            "reactions": totals}, group_plane_strain(rows, plane_strain)
+            "reactions": totals}, group_plane_strain(rows, plane_strain), group_plane_strain(shear, plane_strain)
 
 
 def feticon_run(folder, plane_strain):
     wall, rss, cpu = time_of(os.path.join(folder, "time"))
     with open(os.path.join(folder, "summary.json")) as f:
         summary = json.load(f)
-    rows = []
+    rows, shear = [], []
     with open(os.path.join(folder, "contact_pressure.csv")) as f:
         head = f.readline().strip().split(",")
         for line in f:
             r = dict(zip(head, (float(v) for v in line.split(","))))
+            if "shear_x_Pa" in r:
+                shear.append((r["x_m"], r["pressure_multipliers_Pa"], abs(r["shear_x_Pa"])))
             if plane_strain or "y_deformed_m" not in r:
                 rows.append((r["x_m"], r["x_deformed_m"], r["pressure_multipliers_Pa"]))
             else:  # distance from the z axis
@@ -196,7 +199,39 @@ def feticon_run(folder, plane_strain):
             "outer_iterations": sum(s["outer_iterations"] for s in summary.get("steps", [])),
             "mprgp_iterations": qp.get("iterations"), "hessian_multiplications": qp.get("hessian_multiplications"),
             "total_normal_force": summary.get("contact", {}).get("total_normal_force"),
-            "mesh_from_cache": summary.get("mesh_from_cache", False)}, rows, summary
+            "mesh_from_cache": summary.get("mesh_from_cache", False)}, rows, summary, shear
+
+
+def cattaneo_mindlin_figures(shear, friction, a, p0):
+    """Both codes' stick-zone half-width and shear RMS from (x, p, |q|) node lines with the same
+    rule: a loaded line sticks where |q| < 0.99 mu p (CalculiX's penalty friction has no stick
+    flag), c = half the span of the central sticking run, RMS of |q| - |q_CM| over [-a, a] / (mu p0)."""
+    mu, c = friction["coefficient"], friction["stick_half_width_analytic"]
+
+    def q_cm(x):
+        if abs(x) >= a:
+            return 0.0
+        q = mu * p0 * math.sqrt(1 - (x / a) ** 2)
+        if abs(x) < c:
+            q -= mu * p0 * (c / a) * math.sqrt(1 - (x / c) ** 2)
+        return q
+
+    rows = sorted(shear)
+    peak = max(p for _, p, _ in rows)
+    loaded = [(x, p, q) for x, p, q in rows if p > 1e-3 * peak]
+    centre = min(range(len(loaded)), key=lambda k: abs(loaded[k][0]))
+    stick = lambda k: loaded[k][2] < 0.99 * mu * loaded[k][1]  # noqa: E731
+    lo = hi = centre
+    while lo > 0 and stick(lo - 1):
+        lo -= 1
+    while hi + 1 < len(loaded) and stick(hi + 1):
+        hi += 1
+    left = 0.5 * (loaded[lo - 1][0] + loaded[lo][0]) if lo > 0 else loaded[lo][0]
+    right = 0.5 * (loaded[hi][0] + loaded[hi + 1][0]) if hi + 1 < len(loaded) else loaded[hi][0]
+    within = [(x, q) for x, _, q in rows if abs(x) <= a]
+    rms = math.sqrt(sum((q - q_cm(x)) ** 2 for x, q in within) / len(within)) / (mu * p0)
+    return {"stick_half_width": 0.5 * (right - left), "stick_half_width_analytic": c,
+            "shear_rms_over_mu_p0": rms}
 
 
 def median_run(runs):
@@ -219,17 +254,19 @@ def main(case):
     for line in text.split("\n"):
         if line.startswith("*"):
             in_cload = line.startswith("*CLOAD")
+            if line.startswith("*CLOAD, OP=NEW"):  # a later step's loads replace the last step's
+                load = [0.0, 0.0, 0.0]
         elif in_cload and line.strip():
             node, dof, value = line.split(",")
             load[int(dof) - 1] += float(value)
 
-    fet_runs, fet_rows, summary = [], None, None
+    fet_runs, fet_rows, summary, fet_shear = [], None, None, None
     for d in sorted(glob.glob(os.path.join(case, "feticon.rep*"))):
-        r, fet_rows, summary = feticon_run(d, plane_strain)
+        r, fet_rows, summary, fet_shear = feticon_run(d, plane_strain)
         fet_runs.append(r)
-    ccx_runs, ccx_rows = [], None
+    ccx_runs, ccx_rows, ccx_shear = [], None, None
     for d in sorted(glob.glob(os.path.join(case, "ccx.rep*"))):
-        r, ccx_rows = calculix_run(d, deck_nodes, slave_nodes, plane_strain)
+        r, ccx_rows, ccx_shear = calculix_run(d, deck_nodes, slave_nodes, plane_strain)
         ccx_runs.append(r)
     out = {"case": os.path.basename(os.path.normpath(case)), "applied_load_N": load,
            "feticon": median_run(fet_runs) if fet_runs else None,
@@ -245,6 +282,12 @@ def main(case):
                 if large:
                     out[name]["hertz_reference_frame"] = hertz_figures(rows, h["a_analytic"], h["p0_analytic"],
                                                                        False, radial)
+    friction = (summary or {}).get("hertz", {}).get("friction")
+    for name, shear in (("feticon", fet_shear), ("calculix", ccx_shear)):
+        if friction and shear and out[name]:
+            h = summary["hertz"]
+            out[name]["cattaneo_mindlin"] = cattaneo_mindlin_figures(shear, friction, h["a_analytic"],
+                                                                     h["p0_analytic"])
     meshing = os.path.join(case, "feticon.meshing")
     if os.path.isdir(meshing):
         out["feticon_meshing"] = feticon_run(meshing, plane_strain)[0]

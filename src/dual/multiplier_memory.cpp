@@ -69,12 +69,17 @@ la::Vector MultiplierMemory::remember(const FetiOperators& feti, const DualSolut
 }
 
 void MultiplierMemory::restore(qp::QpState state, const std::vector<int32_t>& contact_slave,
-                               const std::vector<double>& contact_lambda)
+                               const std::vector<double>& contact_lambda, const std::vector<double>& tangential)
 {
   _owned.resize(0);
   _restart_equality = std::move(state.x);
   _contact.clear();
-  _tangential.clear(); // a checkpoint keeps no tangential multipliers: they restart from 0
+  _tangential.clear();
+  FETICON_CHECK(tangential.empty() || tangential.size() == 2 * contact_slave.size(),
+                "restart: the checkpoint holds " << tangential.size() << " tangential multipliers for "
+                                                 << contact_slave.size() << " contact nodes");
+  for (size_t j = 0; j < contact_slave.size() && !tangential.empty(); ++j)
+    _tangential[contact_slave[j]] = {tangential[2 * j], tangential[2 * j + 1]};
   for (size_t j = 0; j < contact_slave.size(); ++j)
     _contact[contact_slave[j]] = contact_lambda[j];
   _state = std::move(state);

@@ -40,11 +40,15 @@ public:
   void forget_operator_norm() { _state.operator_norm = 0; }
 
   /// The state of a checkpoint: `state` with x the equality multipliers by row id (used by the
-  /// next solve only), and the contact multipliers by slave node.
-  void restore(qp::QpState state, const std::vector<int32_t>& contact_slave, const std::vector<double>& contact_lambda);
+  /// next solve only), the contact multipliers by slave node and, with friction, two
+  /// tangential multipliers per slave node (`tangential` empty: none).
+  void restore(qp::QpState state, const std::vector<int32_t>& contact_slave, const std::vector<double>& contact_lambda,
+               const std::vector<double>& tangential = {});
 
   /// Contact multiplier by slave node, of the last solve.
   const std::map<int32_t, double>& contact() const { return _contact; }
+  /// Tangential multipliers by slave node (the second 0 in plane strain), of the last solve.
+  const std::map<int32_t, std::array<double, 2>>& tangential() const { return _tangential; }
   /// The state of the last solve, without its multipliers (SMALBE-M's omega, M, rho; ||PFP||).
   const qp::QpState& state() const { return _state; }
   /// Slave nodes whose contact multiplier is positive, with the dual solver's threshold

@@ -1,6 +1,7 @@
 #include "io/calculix_deck.hpp"
 
 #include "common/error.hpp"
+#include "fem/load_history.hpp"
 
 #include <algorithm>
 #include <cinttypes>
@@ -292,6 +293,35 @@ void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOp
       ++summary.n_cloads;
     }
 }
+/// A later load stage as the next *STEP: the prescribed values that changed since the last
+/// stage (*BOUNDARY keeps the others) and the stage's whole external force (*CLOAD, OP=NEW
+/// drops the last step's loads), reached linearly in `increments` increments, as feticon's
+/// load history runs from one stage's end to the next.
+void write_later_step(std::ostream& out, const fem::LoadHistory& history, int stage, int increments,
+                      const CalculixOptions& options, CalculixDeckSummary& summary)
+{
+  const double increment = 1.0 / increments;
+  out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "") << ", INC=10000\n*STATIC\n"
+      << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
+  const fem::StageEnd& now = history.stage_end(stage);
+  const fem::StageEnd& before = history.stage_end(stage - 1);
+  out << "*BOUNDARY\n";
+  for (size_t k = 0; k < history.dofs().size(); ++k)
+    if (now.values(k) != before.values(k))
+    {
+      const int64_t dof = history.dofs()[k];
+      out << dof / 3 + 1 << ", " << dof % 3 + 1 << ", " << dof % 3 + 1 << ", " << number(now.values(k)) << '\n';
+    }
+  out << "*CLOAD, OP=NEW\n";
+  std::fill(std::begin(summary.total_load), std::end(summary.total_load), 0.0);
+  for (la::Index i = 0; i < now.force.size(); ++i)
+    if (now.force(i) != 0)
+    {
+      out << i / 3 + 1 << ", " << i % 3 + 1 << ", " << number(now.force(i)) << '\n';
+      summary.total_load[i % 3] += now.force(i);
+      ++summary.n_cloads;
+    }
+}
 } // namespace
 
 CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const CalculixOptions& options, std::ostream& out)
@@ -320,13 +350,25 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   write_node_sets(out, mesh, node_sets);
   write_materials(out, problem);
   write_contact(out, problem, options, pairs);
+  const auto output_requests = [&] {
+    out << "*NODE FILE\nU, RF\n";
+    if (!pairs.empty())
+      out << "*CONTACT FILE\nCSTR\n";
+    for (const std::string& name : node_sets)
+      out << "*NODE PRINT, NSET=" << deck_name("N_", name) << ", TOTALS=ONLY\nRF\n";
+    out << "*END STEP\n";
+  };
   write_step(out, problem, options, summary);
-  out << "*NODE FILE\nU, RF\n";
-  if (!pairs.empty())
-    out << "*CONTACT FILE\nCSTR\n";
-  for (const std::string& name : node_sets)
-    out << "*NODE PRINT, NSET=" << deck_name("N_", name) << ", TOTALS=ONLY\nRF\n";
-  out << "*END STEP\n";
+  output_requests();
+  if (!problem.later_stages.empty())
+  {
+    const fem::LoadHistory history(problem, options.increments);
+    for (int stage = 2; stage <= history.n_stages(); ++stage)
+    {
+      write_later_step(out, history, stage, problem.later_stages[stage - 2].increments, options, summary);
+      output_requests();
+    }
+  }
   FETICON_CHECK(out.good(), "calculix export: writing the deck failed");
   return summary;
 }

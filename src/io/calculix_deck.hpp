@@ -62,7 +62,7 @@ struct CalculixDeckSummary
 {
   int64_t n_nodes = 0, n_elements = 0, n_cloads = 0, n_contact_pairs = 0;
   int64_t n_slave_faces = 0, n_master_faces = 0;
-  double total_load[3] = {0, 0, 0}; ///< sum of the *CLOAD forces (N)
+  double total_load[3] = {0, 0, 0}; ///< sum of the *CLOAD forces (N) of the last step
   double contact_stiffness = 0;     ///< K of the first pair (Pa/m)
   double stick_slope = 0;           ///< lambda of the first pair's *FRICTION (Pa/m), 0 if none
   double overclosure = 0;           ///< shift applied to floating slave bodies (m), 0 if none

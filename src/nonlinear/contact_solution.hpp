@@ -58,6 +58,8 @@ struct RestartState
   qp::QpState dual;
   std::vector<int32_t> contact_slave; ///< slave node of each contact multiplier
   std::vector<double> contact_lambda; ///< contact multiplier by slave node
+  /// With friction: two tangential multipliers per contact_slave entry; empty without.
+  std::vector<double> contact_tangential;
   /// The Dirichlet preconditioner's boundary DOFs (3 node + component) once contact rows made
   /// it grow (ContactSolution::schur_boundary_widened); empty while it has its initial extent.
   /// A restart forms its operators on it, as the uninterrupted run has them.

@@ -477,7 +477,7 @@ int FetiContactSolve::restore(const ContactSolution& previous)
                                                        << ", this run's at " << _history.load_factor(r.completed_steps)
                                                        << " (different load_steps or load stages?)");
   _u = _decomp->owned_slice(r.u_stacked);
-  _multipliers.restore(r.dual, r.contact_slave, r.contact_lambda);
+  _multipliers.restore(r.dual, r.contact_slave, r.contact_lambda, r.contact_tangential);
   _previous_active = _multipliers.active_slave_nodes(_force_floor);
   if (!r.schur_boundary.empty() && _schur) // the boundary had grown: its operators as they were
   {
@@ -818,10 +818,18 @@ void FetiContactSolve::end_load_step(const LoadStep& record)
   r.dual.x = _equality_by_id;
   r.contact_slave.clear();
   r.contact_lambda.clear();
+  r.contact_tangential.clear();
+  const auto& tangential = _multipliers.tangential();
   for (const auto& [node, value] : _multipliers.contact())
   {
     r.contact_slave.push_back(node);
     r.contact_lambda.push_back(value);
+    if (!tangential.empty())
+    {
+      const auto t = tangential.find(node);
+      r.contact_tangential.push_back(t == tangential.end() ? 0.0 : t->second[0]);
+      r.contact_tangential.push_back(t == tangential.end() ? 0.0 : t->second[1]);
+    }
   }
 }
 } // namespace

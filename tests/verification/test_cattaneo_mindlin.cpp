@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <map>
 
 using namespace feticon;
 
@@ -67,4 +68,42 @@ TEST(CattaneoMindlin, CylinderSticksInTheCentreAndSlidesAtTheEdges)
     EXPECT_GT(f["slipping_nodes"].get<int>(), 0);
     EXPECT_GT(f["sticking_nodes"].get<int>(), 0);
   }
+}
+
+// Reference: the uninterrupted run. Restarted from the state after the normal load (the
+// checkpoint's RestartState, kept in memory), the tangential stage starts from the same
+// tangential multipliers (RestartState::contact_tangential) and ends where the uninterrupted
+// run ends: the same outer iterations and MPRGP steps, u bitwise. A restart that lost them
+// starts the tangential stage's first QP from zero friction forces (measured: 5.8e-13 apart,
+// and other steps).
+TEST(CattaneoMindlin, RestartKeepsTheTangentialMultipliers)
+{
+  problems::HertzParameters parameters;
+  parameters.mesh.full = true;
+  parameters.tangential_load = 0.6 * 0.3 * parameters.line_load;
+  nonlinear::SolverSettings s;
+  s.kinematics = fem::Kinematics::linear;
+  s.subdomains = 4;
+  s.friction = {nonlinear::FrictionModel::coulomb, 0.3, 0};
+  const fem::Problem problem = problems::hertz_problem(parameters);
+  std::map<int, nonlinear::ContactSolution> after;
+  TimerTable timers;
+  const auto full = nonlinear::solve_feti_contact(
+      problem, s, timers, [&](int step, const nonlinear::ContactSolution& solution) { after[step] = solution; });
+  ASSERT_TRUE(full.converged) << full.reason;
+  ASSERT_FALSE(after.at(1).restart.contact_tangential.empty()) << "the checkpoint should hold friction forces";
+  const auto restarted = nonlinear::solve_feti_contact(problem, s, timers, {}, &after.at(1));
+  ASSERT_TRUE(restarted.converged) << restarted.reason;
+  const double difference = (restarted.u - full.u).lpNorm<Eigen::Infinity>() / full.u.lpNorm<Eigen::Infinity>();
+  int steps = 0, steps_full = 0; // MPRGP steps of the tangential stage's QPs
+  for (const auto& it : restarted.history)
+    steps += it.load_step == 2 ? it.qp.iterations : 0;
+  for (const auto& it : full.history)
+    steps_full += it.load_step == 2 ? it.qp.iterations : 0;
+  std::printf("restarted tangential stage: %zu outer iterations (uninterrupted %zu), MPRGP steps %d (%d), max |du| "
+              "/ max |u| %.1e\n",
+              restarted.history.size(), full.history.size(), steps, steps_full, difference);
+  EXPECT_EQ(restarted.history.size(), full.history.size());
+  EXPECT_EQ(steps, steps_full);
+  EXPECT_EQ(difference, 0.0) << "the same state should give the same arithmetic";
 }
