@@ -86,13 +86,13 @@ void MultiplierMemory::restore(qp::QpState state, const std::vector<int32_t>& co
   _state.x.resize(0);
 }
 
-std::set<int32_t> MultiplierMemory::active_slave_nodes(double floor) const
+std::set<int32_t> MultiplierMemory::positive_nodes(const std::map<int32_t, double>& contact, double floor)
 {
   double largest = 0;
-  for (const auto& [node, value] : _contact)
+  for (const auto& [node, value] : contact)
     largest = std::max(largest, value);
   std::set<int32_t> active;
-  for (const auto& [node, value] : _contact)
+  for (const auto& [node, value] : contact)
     if (value > std::max(1e-12 * largest, floor))
       active.insert(node);
   return active;

@@ -54,7 +54,10 @@ public:
   /// Slave nodes whose contact multiplier is positive, with the dual solver's threshold
   /// against round-off (1e-12 of the largest) and above `floor` (a force at round-off: when
   /// nothing is loaded, the largest multiplier is itself noise).
-  std::set<int32_t> active_slave_nodes(double floor = 0) const;
+  std::set<int32_t> active_slave_nodes(double floor = 0) const { return positive_nodes(_contact, floor); }
+
+  /// The nodes of `contact` (multiplier by node) that active_slave_nodes would call active.
+  static std::set<int32_t> positive_nodes(const std::map<int32_t, double>& contact, double floor);
 
 private:
   la::Vector _owned;            ///< owned multipliers of the last solve (equality rows first)

@@ -637,9 +637,11 @@ std::optional<dual::FrictionRows> FetiContactSolve::slip_bounds(const dual::Feti
   // bound g (N) is g |b| in the multiplier's units; Coulomb's mu lambda_N is mu lambda_hat_N.
   // Coulomb's bound is mu times the normal force of the last QP; the first QP of a run has
   // none and sticks everywhere (infinite bound): without friction, or with bound 0, a body
-  // that only friction holds along the interface would be free.
+  // that only friction holds along the interface would be free. Tresca's g acts where the last
+  // QP had contact (everywhere in the first), not on rows whose bodies are apart.
   const Friction& friction = _settings.friction;
   const bool first_qp = _multipliers.contact().empty();
+  const std::set<int32_t> touching = _multipliers.active_slave_nodes(_force_floor);
   const int64_t n_contact = contact_rows.n_rows();
   dual::FrictionRows out{n_contact, la::Vector::Zero(feti.n_dual()), tangential.n_tangents};
   for (la::Index i = 0; i < feti.n_dual(); ++i)
@@ -649,7 +651,9 @@ std::optional<dual::FrictionRows> FetiContactSolve::slip_bounds(const dual::Feti
       continue;
     const int64_t row = j / tangential.n_tangents;
     if (friction.model == FrictionModel::tresca)
-      out.slip_bound(i) = friction.slip_bound * contact_rows.slave_area[row] * contact_rows.row_norm[row];
+      out.slip_bound(i) = first_qp || touching.count(contact_rows.slave_node[row])
+          ? friction.slip_bound * contact_rows.slave_area[row] * contact_rows.row_norm[row]
+          : 0.0;
     else if (first_qp)
       out.slip_bound(i) = std::numeric_limits<double>::infinity();
     else if (const auto it = _multipliers.contact().find(contact_rows.slave_node[row]);
@@ -663,11 +667,14 @@ bool FetiContactSolve::friction_settled(const std::map<int32_t, double>& normal_
                                         const contact::TangentialRows& tangential) const
 {
   // Coulomb's fixed point: the bounds mu lambda_N of this QP against those of the next, to the
-  // displacement tolerance (relative).
-  if (_settings.friction.model != FrictionModel::coulomb || tangential.n_tangents == 0)
+  // displacement tolerance (relative); Tresca's: the nodes in contact, which carry its bound.
+  if (_settings.friction.model == FrictionModel::none || tangential.n_tangents == 0)
     return true;
   if (normal_before.empty())
-    return false; // the QP that sticks everywhere and starts a run
+    return false; // the QP that starts a run, its bounds on every row
+  if (_settings.friction.model == FrictionModel::tresca)
+    return dual::MultiplierMemory::positive_nodes(normal_before, _force_floor) ==
+        _multipliers.active_slave_nodes(_force_floor);
   double change = 0, size = 0;
   for (const auto& [node, value] : _multipliers.contact())
   {
