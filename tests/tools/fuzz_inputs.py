@@ -390,7 +390,10 @@ MM_MUTATORS = [number_replacer(EXTREMES), mm_header, mm_size]
 # numbers it parses, the references between nodes, elements, sets and surfaces, *INCLUDE, and
 # the magnitudes a valid deck may carry (1e-30 to 1e30 moduli, loads and coordinates).
 
-DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp"]
+DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_friction.inp"]
+# Seeds made from another by an edit: contact1 with Coulomb friction (*FRICTION after the
+# pressure-overclosure law, as tests/cli/deck_friction.sh adds it to CalculiX's decks).
+DECK_DERIVED = {"contact1_friction.inp": ("contact1.inp", "*SURFACE BEHAVIOR", "*FRICTION\n0.3, 1e6\n")}
 DECK_EXTREMES = EXTREMES + ["1e400", "-1e400", "NaN", "-nan", "Infinity", "1.5D3", "1d999",
                             "9223372036854775807", "9223372036854775808",
                             "-9223372036854775809", "-0", "1e-30", "1e30", "-1e30"]
@@ -763,7 +766,7 @@ def make_case(kind, rng, source_dir):
     seed_dir = os.path.join(source_dir, "tests", "data", "fuzz")
     if kind == "deck":
         name = rng.choice(DECK_SEEDS)
-        files = {name: read(os.path.join(source_dir, "tests", "data", "calculix"), name)}
+        files = {name: deck_seed(os.path.join(source_dir, "tests", "data", "calculix"), name)}
         return files, name, ["run", name, "--output", "out"] + RUN_OPTIONS
     if kind == "mm":
         files = {name: read(seed_dir, name) for name in MM_FILES}
@@ -773,6 +776,17 @@ def make_case(kind, rng, source_dir):
     files = {name: read(seed_dir, name) for name in names}
     target = names[0] if kind == "problem" else names[1]
     return files, target, ["run", names[0], "--output", "out"] + RUN_OPTIONS
+
+
+def deck_seed(folder, name):
+    """A deck seed's bytes: the file, or a DECK_DERIVED edit of one (text inserted after the data
+    line of the keyword)."""
+    if name not in DECK_DERIVED:
+        return read(folder, name)
+    source, keyword, insert = DECK_DERIVED[name]
+    lines = read(folder, source).decode("latin-1").split("\n")
+    at = next(k for k, line in enumerate(lines) if line.upper().startswith(keyword)) + 2
+    return "\n".join(lines[:at] + insert.rstrip("\n").split("\n") + lines[at:]).encode("latin-1")
 
 
 def read(folder, name):
