@@ -1,5 +1,7 @@
 #include "nonlinear/solver_settings.hpp"
 
+#include "common/error.hpp"
+
 namespace feticon::nonlinear
 {
 SolverSettings::SolverSettings() : SolverSettings(io::Settings{}) {}
@@ -38,6 +40,10 @@ SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
                                               : FrictionModel::none;
   friction.coefficient = s.number("contact.friction.coefficient");
   friction.slip_bound = s.number("contact.friction.slip_bound");
+  FETICON_CHECK(friction.model == FrictionModel::none || method != ContactMethod::primal_penalty,
+                "contact.friction.model = " << friction_model
+                                            << " needs the FETI solver (method smalbe or dual_penalty): the primal "
+                                               "penalty has no friction");
   linear_contact_band = s.number("contact.linear_band");
 }
 } // namespace feticon::nonlinear

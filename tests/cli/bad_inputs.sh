@@ -100,6 +100,12 @@ expect "unknown kinematics" "displacements" -- --set displacements=medium
 expect "unknown problem" "problem" -- --set problem=sphere
 expect "zero load steps" "load_steps" -- --set load_steps=0
 expect "zero refinement" "hertz.refinement" -- --set hertz.refinement=0
+expect "tangential load without friction" "needs friction to hold the cylinder" -- --set hertz.tangential_load=1e7
+expect "tangential load on the tensor mesh" "graded mesh only" -- --set hertz.tangential_load=1e7 \
+  --set contact.friction.model=coulomb --set contact.friction.coefficient=0.3 --set hertz.mesh=tensor
+expect "negative tangential load" "hertz.tangential_load = -1 is out of range" -- --set hertz.tangential_load=-1
+expect "friction with the primal penalty" "the primal penalty has no friction" -- --set method=primal_penalty \
+  --set contact.friction.model=coulomb --set contact.friction.coefficient=0.3
 expect "--set without =" "KEY=VALUE" -- --set rho
 expect "missing problem file" "does not exist\|not exist\|exist" -- "$work/nothing.yaml"
 printf 'problem: custom\n' > "$work/nomesh.yaml"
