@@ -1,7 +1,10 @@
 #include "app/calculix_results.hpp"
 
+#include "fem/cell_element.hpp"
+
 #include "contact/contact_constraints.hpp"
 #include "fem/assembler.hpp"
+#include "fem/cell_element.hpp"
 #include "fem/hex8_element.hpp"
 #include "fem/stress.hpp"
 #include "nonlinear/contact_pressure.hpp"
@@ -41,6 +44,79 @@ void add_warnings(std::vector<std::string>& to, const std::vector<std::string>& 
     if (std::find(to.begin(), to.end(), line) == to.end())
       to.push_back(line);
 }
+/// Gauss point stresses and strains (tensor shears) for the .dat, and their cell averages for
+/// the .frd's nodal values. The .dat's integration points are C3D8's: other cell types only get
+/// the nodal values (the .dat reports S and E as unavailable).
+struct PointResults
+{
+  std::vector<double> stress, strain; ///< cells x 8 points x 6, or empty
+  std::vector<Eigen::Matrix<double, 6, 1>> cell_stress, cell_strain;
+};
+
+PointResults point_results(const fem::Problem& p, const la::Vector& u, fem::Kinematics kinematics)
+{
+  const mesh::Mesh& mesh = p.mesh;
+  PointResults out;
+  const bool dat_points = mesh.cells.all_of_kind(mesh::CellKind::hex8);
+  std::vector<double>& point_stress = out.stress;
+  std::vector<double>& point_strain = out.strain;
+  point_stress.assign(dat_points ? static_cast<size_t>(mesh.n_cells()) * 48 : 0, 0.0);
+  point_strain.assign(point_stress.size(), 0.0);
+  std::vector<Eigen::Matrix<double, 6, 1>>& cell_stress = out.cell_stress;
+  std::vector<Eigen::Matrix<double, 6, 1>>& cell_strain = out.cell_strain;
+  cell_stress.resize(mesh.n_cells());
+  cell_strain.resize(mesh.n_cells());
+  fem::NodeCoords X, ue;
+  Eigen::MatrixX3d X_any, u_any;
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+  {
+    const std::span<const int32_t> cell = mesh.cells[c];
+    const fem::Material& material = p.materials[mesh.cell_body[c]];
+    fem::CellPointResults r;
+    if (mesh.cells.kind(c) == mesh::CellKind::hex8)
+    {
+      for (int a = 0; a < 8; ++a)
+      {
+        X.row(a) = mesh.nodes.row(cell[a]);
+        ue.row(a) = u.segment<3>(3 * cell[a]).transpose();
+      }
+      const fem::Hex8PointResults h = fem::hex8_point_results(X, ue, material, kinematics, c);
+      r.stress.assign(h.stress.begin(), h.stress.end());
+      r.strain.assign(h.strain.begin(), h.strain.end());
+      r.weight.assign(h.weight.begin(), h.weight.end());
+    }
+    else
+    {
+      X_any.resize(static_cast<Eigen::Index>(cell.size()), 3);
+      u_any.resize(X_any.rows(), 3);
+      for (size_t a = 0; a < cell.size(); ++a)
+      {
+        X_any.row(a) = mesh.nodes.row(cell[a]);
+        u_any.row(a) = u.segment<3>(3 * cell[a]).transpose();
+      }
+      r = fem::cell_point_results(mesh.cells.kind(c), X_any, u_any, material, kinematics, fem::Integration::full, c);
+    }
+    Eigen::Matrix<double, 6, 1> s = Eigen::Matrix<double, 6, 1>::Zero(), e = s;
+    double volume = 0;
+    for (size_t g = 0; g < r.weight.size(); ++g)
+    {
+      Eigen::Matrix<double, 6, 1> strain = r.strain[g];
+      strain.tail<3>() *= 0.5; // engineering to tensor shears
+      if (dat_points)
+        for (int j = 0; j < 6; ++j)
+        {
+          point_stress[48 * c + 6 * g + j] = r.stress[g](j);
+          point_strain[48 * c + 6 * g + j] = strain(j);
+        }
+      s += r.weight[g] * r.stress[g];
+      e += r.weight[g] * strain;
+      volume += r.weight[g];
+    }
+    cell_stress[c] = s / volume;
+    cell_strain[c] = e / volume;
+  }
+  return out;
+}
 } // namespace
 
 CalculixResults::CalculixResults(const std::filesystem::path& out_dir, const fem::Problem& problem,
@@ -70,23 +146,22 @@ CalculixResults::CalculixResults(const std::filesystem::path& out_dir, const fem
 void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
 {
   const fem::Problem& p = _problem;
-  const mesh::HexMesh& mesh = p.mesh;
+  const mesh::Mesh& mesh = p.mesh;
   const int32_t n = mesh.n_nodes();
   const auto [k, time] = step_and_time(_deck, solution.steps.back().load_factor);
   const io::DeckStep& step = _deck.steps[k];
 
-  // Contact: pressure = normal force / tributary area per slave node, and the linearized gap.
+  // Contact: the nodal pressure (slave_nodal_pressures) per slave node, and the linearized gap.
   const auto& rows = solution.constraints;
   std::vector<double> pressure(n, 0.0), gap(n, 0.0);
   if (!p.contacts.empty() && rows.n_rows() > 0)
   {
-    const la::Vector areas = nonlinear::slave_tributary_areas(p, solution.u, _kinematics);
+    const la::Vector nodal_pressure = nonlinear::slave_nodal_pressures(p, solution, _kinematics);
     const la::Vector Bu = rows.B * solution.u;
     for (int64_t i = 0; i < rows.n_rows(); ++i)
     {
       const int32_t node = rows.slave_node[i];
-      const double force = solution.contact_lambda(i) / rows.row_norm[i];
-      pressure[node] = areas(node) > 0 ? force / areas(node) : 0.0;
+      pressure[node] = nodal_pressure(node);
       gap[node] = (rows.c(i) - Bu(i)) * rows.row_norm[i];
     }
   }
@@ -97,36 +172,11 @@ void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
   if (rows.n_rows() > 0)
     reaction += rows.B.transpose() * solution.contact_lambda;
 
-  // Gauss point stresses and strains (tensor shears), and their nodal averages for the .frd.
-  std::vector<double> point_stress(static_cast<size_t>(mesh.n_cells()) * 48), point_strain(point_stress.size());
-  std::vector<Eigen::Matrix<double, 6, 1>> cell_stress(mesh.n_cells()), cell_strain(mesh.n_cells());
-  fem::NodeCoords X, ue;
-  for (int32_t c = 0; c < mesh.n_cells(); ++c)
-  {
-    for (int a = 0; a < 8; ++a)
-    {
-      X.row(a) = mesh.nodes.row(mesh.cells[c][a]);
-      ue.row(a) = solution.u.segment<3>(3 * mesh.cells[c][a]).transpose();
-    }
-    const fem::Hex8PointResults r = fem::hex8_point_results(X, ue, p.materials[mesh.cell_body[c]], _kinematics, c);
-    Eigen::Matrix<double, 6, 1> s = Eigen::Matrix<double, 6, 1>::Zero(), e = s;
-    double volume = 0;
-    for (size_t g = 0; g < 8; ++g)
-    {
-      Eigen::Matrix<double, 6, 1> strain = r.strain[g];
-      strain.tail<3>() *= 0.5; // engineering to tensor shears
-      for (int j = 0; j < 6; ++j)
-      {
-        point_stress[48 * c + 6 * g + j] = r.stress[g](j);
-        point_strain[48 * c + 6 * g + j] = strain(j);
-      }
-      s += r.weight[g] * r.stress[g];
-      e += r.weight[g] * strain;
-      volume += r.weight[g];
-    }
-    cell_stress[c] = s / volume;
-    cell_strain[c] = e / volume;
-  }
+  const PointResults points = point_results(p, solution.u, _kinematics);
+  const std::vector<double>& point_stress = points.stress;
+  const std::vector<double>& point_strain = points.strain;
+  const auto& cell_stress = points.cell_stress;
+  const auto& cell_strain = points.cell_strain;
   const auto nodal_stress = fem::nodal_average(mesh, cell_stress), nodal_strain = fem::nodal_average(mesh, cell_strain);
   std::vector<double> stress(6 * static_cast<size_t>(n)), strain(stress.size());
   for (int32_t i = 0; i < n; ++i)

@@ -49,6 +49,19 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Prob
               std::to_string(problem.mesh.n_cells()) + " cells: one subdomain per cell");
     out.subdomains = problem.mesh.n_cells();
   }
+  // Mortar rows integrate quad4 faces: contact surfaces of other face types (tetrahedra,
+  // wedges, quadratic cells) get node-to-segment rows unless the user asked for mortar.
+  if (out.formulation == contact::ContactFormulation::mortar && !s.given("contact.formulation"))
+    for (const fem::ContactPairNames& pair : problem.contacts)
+      for (const std::string& set : {pair.slave, pair.master})
+        if (std::ranges::any_of(problem.mesh.face_set(set),
+                                [](const mesh::Face& f) { return f.kind != mesh::FaceKind::quad4; }) &&
+            out.formulation == contact::ContactFormulation::mortar)
+        {
+          log::info("contact: face set '" + set +
+                    "' has faces other than quad4; its rows are node_to_segment (mortar integrates quad4 faces)");
+          out.formulation = contact::ContactFormulation::node_to_segment;
+        }
   return out;
 }
 

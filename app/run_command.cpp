@@ -140,7 +140,7 @@ void set_up(const RunOptions& options, RunContext& run)
                                      run.comm.max(static_cast<double>(resident_memory_bytes())));
   run.solver = solver_settings(settings, problem);
   run.solver.explicit_block_budget = run.memory_estimate.explicit_block_budget;
-  log::info("feticon: problem " + problem.name + ", " + std::to_string(problem.mesh.n_cells()) + " hex8 cells, " +
+  log::info("feticon: problem " + problem.name + ", " + mesh::describe_cells(problem.mesh.cells) + ", " +
             std::to_string(3 * static_cast<int64_t>(problem.mesh.n_nodes())) + " DOFs, method " +
             settings.text("method") + ", " + settings.text("displacements") + " displacements" +
             (problem.mesh_from_cache ? "; mesh from the mesh cache (FETICON_MESH_CACHE=off remeshes)" : ""));

@@ -35,8 +35,8 @@ void write_step_vtu(const std::filesystem::path& path, const fem::Problem& probl
                     const std::vector<int32_t>& cells)
 {
   std::vector<int32_t> node_of_local;
-  const mesh::HexMesh piece = cells.empty() ? mesh::HexMesh{} : mesh::submesh(problem.mesh, cells, node_of_local);
-  const mesh::HexMesh& mesh = cells.empty() ? problem.mesh : piece;
+  const mesh::Mesh piece = cells.empty() ? mesh::Mesh{} : mesh::submesh(problem.mesh, cells, node_of_local);
+  const mesh::Mesh& mesh = cells.empty() ? problem.mesh : piece;
   if (cells.empty())
   {
     node_of_local.resize(mesh.n_nodes());

@@ -33,8 +33,8 @@ public:
   explicit SurfaceBoundary(const std::vector<mesh::Face>& faces)
   {
     for (const mesh::Face& face : faces)
-      for (int a = 0; a < 4; ++a)
-        ++_edge_faces[key(face[a], face[(a + 1) % 4])];
+      for (int a = 0, n = face.n_corners(); a < n; ++a)
+        ++_edge_faces[key(face[a], face[(a + 1) % n])];
   }
   bool edge_on_boundary(int32_t a, int32_t b) const { return _edge_faces.at(key(a, b)) == 1; }
 
@@ -53,7 +53,7 @@ bool has_corner(const mesh::Face& face, int32_t node) { return std::ranges::find
 /// projection is a stationary point, so |g| = |x_s - x(xi_bar)| is at least the distance from x_s
 /// to the face's box: candidates are visited by increasing box distance (then id) and the visit
 /// stops once that distance exceeds the best |g| found, which leaves the result unchanged.
-std::optional<ClosestPoint> closest_face_projection(const std::vector<QuadCoordinates>& quads,
+std::optional<ClosestPoint> closest_face_projection(const std::vector<FaceGeometry>& geometries,
                                                     const std::vector<BoundingBox>& face_boxes,
                                                     const std::vector<mesh::Face>& faces,
                                                     const std::vector<int32_t>& candidates, int32_t slave,
@@ -70,7 +70,7 @@ std::optional<ClosestPoint> closest_face_projection(const std::vector<QuadCoordi
   {
     if (best && box_distance > std::abs(best->gap))
       break;
-    const QuadProjection p = project_to_quad(quads[f], x_s);
+    const QuadProjection p = project_to_face(geometries[f], x_s);
     if (p.accepted() && (!best || std::abs(p.gap) < std::abs(best->gap)))
       best = ClosestPoint{f, p.xi, p.normal, p.gap, ProjectionKind::face};
   }
@@ -80,7 +80,7 @@ std::optional<ClosestPoint> closest_face_projection(const std::vector<QuadCoordi
 /// Fallback of the file comment when no projection is accepted: the closest point x_e on the
 /// candidate faces' edges, on face f. Beyond a boundary side of f: the projection on f if it lies
 /// within the rim extension, else nothing (overhanging). Otherwise the node-to-edge point x_e.
-std::optional<ClosestPoint> outside_point(const std::vector<QuadCoordinates>& quads,
+std::optional<ClosestPoint> outside_point(const std::vector<FaceGeometry>& geometries,
                                           const std::vector<mesh::Face>& faces, const std::vector<int32_t>& candidates,
                                           const SurfaceBoundary& boundary, int32_t slave, const Eigen::Vector3d& x_s,
                                           double rim_extension)
@@ -93,10 +93,11 @@ std::optional<ClosestPoint> outside_point(const std::vector<QuadCoordinates>& qu
   {
     if (has_corner(faces[f], slave))
       continue;
-    for (int a = 0; a < 4; ++a)
+    for (int a = 0, n = geometries[f].n_corners(); a < n; ++a)
     {
-      const Eigen::Vector3d start = quads[f].row(a).transpose();
-      const Eigen::Vector3d end = quads[f].row((a + 1) % 4).transpose();
+      // Straight sides between the corners (a quadratic face's curved edges are near them).
+      const Eigen::Vector3d start = geometries[f].x.row(a).transpose();
+      const Eigen::Vector3d end = geometries[f].x.row((a + 1) % n).transpose();
       const double t = closest_on_segment(start, end, x_s);
       const double distance = (start + t * (end - start) - x_s).norm();
       if (distance < best_distance)
@@ -112,59 +113,61 @@ std::optional<ClosestPoint> outside_point(const std::vector<QuadCoordinates>& qu
     return std::nullopt;
 
   const mesh::Face& face = faces[best_face];
-  const QuadCoordinates& quad = quads[best_face];
-  const double face_size = std::max((quad.row(2) - quad.row(0)).norm(), (quad.row(3) - quad.row(1)).norm());
+  const FaceGeometry& geometry = geometries[best_face];
+  const int n_corners = geometry.n_corners();
+  const double size = face_size(geometry);
   // Beyond a boundary side k of the face, i.e. on the outer side of the side's line in the face's
   // tangent plane; the outward in-plane normal of side k is (x_k+1 - x_k) x n_f (counter-clockwise
   // sides seen from outside).
   bool beyond_rim = false;
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < n_corners; ++k)
   {
-    const int next = (k + 1) % 4;
+    const int next = (k + 1) % n_corners;
     if (!boundary.edge_on_boundary(face[k], face[next]))
       continue;
-    const Eigen::Vector3d start = quad.row(k).transpose();
-    const Eigen::Vector3d side = quad.row(next).transpose() - start;
-    const Eigen::Vector2d mid = 0.5 * (quad_corner(k) + quad_corner(next));
-    const Eigen::Vector3d outward = side.cross(quad_normal(quad, mid)).normalized();
-    beyond_rim = beyond_rim || outward.dot(x_s - start) > rim_tolerance * face_size;
+    const Eigen::Vector3d start = geometry.x.row(k).transpose();
+    const Eigen::Vector3d side = geometry.x.row(next).transpose() - start;
+    const Eigen::Vector2d mid = 0.5 * (face_corner_xi(geometry.kind, k) + face_corner_xi(geometry.kind, next));
+    const Eigen::Vector3d outward = side.cross(face_normal(geometry, mid)).normalized();
+    beyond_rim = beyond_rim || outward.dot(x_s - start) > rim_tolerance * size;
   }
   if (beyond_rim)
   {
-    const QuadProjection p = project_to_quad(quad, x_s);
-    if (p.converged && p.xi.lpNorm<Eigen::Infinity>() <= 1 + rim_extension)
+    const QuadProjection p = project_to_face(geometry, x_s);
+    if (p.converged && within_extension(geometry.kind, p.xi, rim_extension))
       return ClosestPoint{best_face, p.xi, p.normal, p.gap, ProjectionKind::rim};
     return std::nullopt;
   }
 
-  const int b = (best_edge + 1) % 4;
+  const int b = (best_edge + 1) % n_corners;
   ClosestPoint point;
   point.face = best_face;
   point.kind = ProjectionKind::edge;
-  point.xi = (1 - best_t) * quad_corner(best_edge) + best_t * quad_corner(b);
-  const Eigen::Vector3d face_normal = quad_normal(quad, point.xi);
-  const Eigen::Vector3d distance = x_s - quad_point(quad, point.xi);
+  point.xi = (1 - best_t) * face_corner_xi(geometry.kind, best_edge) + best_t * face_corner_xi(geometry.kind, b);
+  const Eigen::Vector3d normal_there = face_normal(geometry, point.xi);
+  const Eigen::Vector3d distance = x_s - face_point(geometry, point.xi);
   // Within the rim tolerance of the face in its own plane, the node lies on the face: its row
   // takes the face normal. The distance vector to the side is no normal there: for a node in
   // contact (gap ~ 0) off a side by round-off, such as a node of a symmetry plane that the
   // Dirichlet rows hold to ~1e-10 m, it points anywhere (measured: 60 degrees from the face
   // normal on hertz3d's axis node, which tilted its row and inflated its multiplier by 1/n_z).
-  const Eigen::Vector3d in_plane = distance - distance.dot(face_normal) * face_normal;
-  if (in_plane.norm() <= rim_tolerance * face_size)
+  const Eigen::Vector3d in_plane = distance - distance.dot(normal_there) * normal_there;
+  if (in_plane.norm() <= rim_tolerance * size)
   {
-    point.normal = face_normal;
-    point.gap = face_normal.dot(distance);
+    point.normal = normal_there;
+    point.gap = normal_there.dot(distance);
     return point;
   }
-  const double side = distance.dot(face_normal) < 0 ? -1.0 : 1.0;
+  const double side = distance.dot(normal_there) < 0 ? -1.0 : 1.0;
   point.normal = side * distance.normalized();
   point.gap = side * distance.norm();
   return point;
 }
 } // namespace
 
-QuadCoordinates current_face_coordinates(const mesh::HexMesh& mesh, const la::Vector& u, const mesh::Face& face)
+QuadCoordinates current_face_coordinates(const mesh::Mesh& mesh, const la::Vector& u, const mesh::Face& face)
 {
+  FETICON_ASSERT(face.kind == mesh::FaceKind::quad4, "current_face_coordinates of a face other than quad4");
   QuadCoordinates quad;
   for (int a = 0; a < 4; ++a)
   {
@@ -175,20 +178,15 @@ QuadCoordinates current_face_coordinates(const mesh::HexMesh& mesh, const la::Ve
   return quad;
 }
 
-double face_diagonal(const QuadCoordinates& quad)
-{
-  return std::max((quad.row(2) - quad.row(0)).norm(), (quad.row(3) - quad.row(1)).norm());
-}
-
-double largest_face_diagonal(const mesh::HexMesh& mesh, const la::Vector& u, const std::vector<mesh::Face>& faces)
+double largest_face_diagonal(const mesh::Mesh& mesh, const la::Vector& u, const std::vector<mesh::Face>& faces)
 {
   double diagonal = 0;
   for (const mesh::Face& face : faces)
-    diagonal = std::max(diagonal, face_diagonal(current_face_coordinates(mesh, u, face)));
+    diagonal = std::max(diagonal, face_size(current_face_geometry(mesh, u, face)));
   return diagonal;
 }
 
-std::vector<int32_t> slave_nodes(const mesh::HexMesh& mesh, const ContactPair& pair)
+std::vector<int32_t> slave_nodes(const mesh::Mesh& mesh, const ContactPair& pair)
 {
   std::vector<int32_t> nodes = mesh.face_set_nodes(pair.slave);
   if (pair.slave_nodes.empty())
@@ -199,7 +197,7 @@ std::vector<int32_t> slave_nodes(const mesh::HexMesh& mesh, const ContactPair& p
   return out;
 }
 
-ContactConstraints build_contact_constraints(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair,
+ContactConstraints build_contact_constraints(const mesh::Mesh& mesh, const la::Vector& u, const ContactPair& pair,
                                              const ContactOptions& options)
 {
   if (options.formulation == ContactFormulation::mortar)
@@ -207,7 +205,7 @@ ContactConstraints build_contact_constraints(const mesh::HexMesh& mesh, const la
   return build_node_to_segment_constraints(mesh, u, pair, options);
 }
 
-ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh, const la::Vector& u,
+ContactConstraints build_node_to_segment_constraints(const mesh::Mesh& mesh, const la::Vector& u,
                                                      const ContactPair& pair, const ContactOptions& options)
 {
   const la::Index n_dofs = 3 * static_cast<la::Index>(mesh.n_nodes());
@@ -226,10 +224,10 @@ ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh, 
   FETICON_CHECK(!faces.empty(), "contact: master face set '" << pair.master << "' is empty");
   const std::vector<int32_t> slave_nodes = contact::slave_nodes(mesh, pair);
 
-  std::vector<QuadCoordinates> quads;
-  quads.reserve(faces.size());
+  std::vector<FaceGeometry> geometries;
+  geometries.reserve(faces.size());
   for (const mesh::Face& face : faces)
-    quads.push_back(current_face_coordinates(mesh, u, face));
+    geometries.push_back(current_face_geometry(mesh, u, face));
 
   ContactConstraints out;
   out.n_slave_nodes = static_cast<int32_t>(slave_nodes.size());
@@ -238,8 +236,8 @@ ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh, 
 
   std::vector<BoundingBox> face_boxes(faces.size());
   for (size_t f = 0; f < faces.size(); ++f)
-    for (int a = 0; a < 4; ++a)
-      face_boxes[f].extend(quads[f].row(a).transpose());
+    for (Eigen::Index a = 0; a < geometries[f].x.rows(); ++a)
+      face_boxes[f].extend(geometries[f].x.row(a).transpose());
   std::vector<BoundingBox> search_boxes = face_boxes;
   for (BoundingBox& box : search_boxes)
     box.inflate(out.search_distance);
@@ -257,10 +255,10 @@ ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh, 
       x_s += u.segment<3>(3 * static_cast<la::Index>(s));
     search.candidates(x_s, candidates);
     std::optional<ClosestPoint>& closest = closest_points[i];
-    closest = closest_face_projection(quads, face_boxes, faces, candidates, s, x_s);
+    closest = closest_face_projection(geometries, face_boxes, faces, candidates, s, x_s);
     if (!closest && !candidates.empty())
     {
-      closest = outside_point(quads, faces, candidates, boundary, s, x_s, options.rim_extension);
+      closest = outside_point(geometries, faces, candidates, boundary, s, x_s, options.rim_extension);
       if (!closest)
         ++out.n_overhanging;
     }
@@ -272,21 +270,23 @@ ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh, 
   const double contact_level = std::max(smallest_gap, 0.0);
   const auto near_contact = [&](const ClosestPoint& c) {
     return std::isinf(options.near_contact_fraction) ||
-        c.gap < contact_level + options.near_contact_fraction * face_diagonal(quads[c.face]);
+        c.gap < contact_level + options.near_contact_fraction * face_size(geometries[c.face]);
   };
 
   const SlaveNodalAreas areas = slave_nodal_areas(mesh, u, pair.slave);
   ContactRowBuilder rows;
-  std::vector<std::pair<int32_t, double>> weights(4);
+  std::vector<std::pair<int32_t, double>> weights;
   for (size_t i = 0; i < slave_nodes.size(); ++i)
   {
     const int32_t s = slave_nodes[i];
     const std::optional<ClosestPoint>& closest = closest_points[i];
     if (!closest || !(closest->gap < out.search_distance) || !near_contact(*closest))
       continue;
-    const Eigen::Vector4d shape = quad_shape_functions(closest->xi);
-    for (int a = 0; a < 4; ++a)
-      weights[a] = {faces[closest->face][a], shape(a)};
+    const mesh::Face& face = faces[closest->face];
+    const Eigen::VectorXd shape = face_weights(face.kind, closest->xi);
+    weights.resize(face.size());
+    for (int a = 0; a < face.size(); ++a)
+      weights[a] = {face[a], shape(a)};
     rows.add({s, closest->normal, closest->gap, areas.of(s), closest->face, closest->xi, closest->kind}, weights);
   }
   rows.finish(n_dofs, out);

@@ -73,10 +73,11 @@
 ///   const la::Vector p_nodal = slave_normal_forces(rows, lambda_I);
 
 #include "contact/closest_point.hpp"
+#include "contact/face_geometry.hpp"
 #include "contact/surface_search.hpp"
 
 #include "la/types.hpp"
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <cstdint>
 #include <limits>
@@ -95,7 +96,7 @@ struct ContactPair
 };
 
 /// The slave nodes of a pair, sorted: the slave faces' nodes, restricted to pair.slave_nodes.
-std::vector<int32_t> slave_nodes(const mesh::HexMesh& mesh, const ContactPair& pair);
+std::vector<int32_t> slave_nodes(const mesh::Mesh& mesh, const ContactPair& pair);
 
 /// How the rows are built: one closest point per slave node (node_to_segment, this file) or
 /// integrated dual mortar weights (mortar, mortar_constraints.hpp). Both give rows of the same
@@ -171,14 +172,11 @@ struct ContactConstraints
 
 /// @brief Current corner coordinates x = X + u of a face (m).
 /// @param[in] u global displacement (3 per node), or empty for u = 0
-QuadCoordinates current_face_coordinates(const mesh::HexMesh& mesh, const la::Vector& u, const mesh::Face& face);
+QuadCoordinates current_face_coordinates(const mesh::Mesh& mesh, const la::Vector& u, const mesh::Face& face);
 
-/// @brief The longer diagonal of a face (m).
-double face_diagonal(const QuadCoordinates& quad);
-
-/// @brief Largest diagonal of the faces of `faces` in the current configuration (m): the
+/// @brief Largest size (face_size: a quad4's longer diagonal) of the faces of `faces` in the current configuration (m): the
 /// automatic search distance.
-double largest_face_diagonal(const mesh::HexMesh& mesh, const la::Vector& u, const std::vector<mesh::Face>& faces);
+double largest_face_diagonal(const mesh::Mesh& mesh, const la::Vector& u, const std::vector<mesh::Face>& faces);
 
 /// @brief Contact rows of `pair` at the displacement `u`: build_node_to_segment_constraints or
 /// build_mortar_constraints (mortar_constraints.hpp) according to options.formulation.
@@ -189,12 +187,12 @@ double largest_face_diagonal(const mesh::HexMesh& mesh, const la::Vector& u, con
 /// @return rows sorted by slave node id
 /// @throws feticon::Error for an unknown face set, an empty master set, a wrong size of u or a
 ///         negative search distance or rim extension, or mortar_min_overlap outside (0, 1].
-ContactConstraints build_contact_constraints(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair,
+ContactConstraints build_contact_constraints(const mesh::Mesh& mesh, const la::Vector& u, const ContactPair& pair,
                                              const ContactOptions& options = {});
 
 /// @brief Node-to-segment rows of `pair` (see file comment); options.formulation is ignored.
 /// Arguments, result and errors as build_contact_constraints.
-ContactConstraints build_node_to_segment_constraints(const mesh::HexMesh& mesh, const la::Vector& u,
+ContactConstraints build_node_to_segment_constraints(const mesh::Mesh& mesh, const la::Vector& u,
                                                      const ContactPair& pair, const ContactOptions& options = {});
 
 /// @brief Constraint forces -B' lambda_hat on the structure (N, per global DOF), with lambda_hat

@@ -38,7 +38,7 @@ bool share_a_node(const mesh::Face& first, const mesh::Face& second)
   return std::ranges::any_of(first, [&](int32_t node) { return std::ranges::find(second, node) != second.end(); });
 }
 
-Eigen::Vector3d current_position(const mesh::HexMesh& mesh, const la::Vector& u, int32_t node)
+Eigen::Vector3d current_position(const mesh::Mesh& mesh, const la::Vector& u, int32_t node)
 {
   Eigen::Vector3d x = mesh.nodes.row(node).transpose();
   if (u.size() > 0)
@@ -46,7 +46,7 @@ Eigen::Vector3d current_position(const mesh::HexMesh& mesh, const la::Vector& u,
   return x;
 }
 
-void check_displacement(const mesh::HexMesh& mesh, const la::Vector& u)
+void check_displacement(const mesh::Mesh& mesh, const la::Vector& u)
 {
   const la::Index n_dofs = 3 * static_cast<la::Index>(mesh.n_nodes());
   FETICON_CHECK(u.size() == 0 || u.size() == n_dofs,
@@ -56,7 +56,7 @@ void check_displacement(const mesh::HexMesh& mesh, const la::Vector& u)
 
 /// What mortar integration needs of its input: u of the mesh, a positive search distance and
 /// non-empty slave and master face sets (mortar integrates whole faces, not nodes).
-void check_mortar_input(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair, double search_distance)
+void check_mortar_input(const mesh::Mesh& mesh, const la::Vector& u, const ContactPair& pair, double search_distance)
 {
   check_displacement(mesh, u);
   FETICON_CHECK(std::isfinite(search_distance) && search_distance > 0,
@@ -66,6 +66,12 @@ void check_mortar_input(const mesh::HexMesh& mesh, const la::Vector& u, const Co
                                               << "slave faces: use contact.formulation=node_to_segment");
   FETICON_CHECK(!mesh.face_set(pair.slave).empty(), "mortar: slave face set '" << pair.slave << "' is empty");
   FETICON_CHECK(!mesh.face_set(pair.master).empty(), "mortar: master face set '" << pair.master << "' is empty");
+  for (const std::string& set : {pair.slave, pair.master})
+    for (const mesh::Face& face : mesh.face_set(set))
+      FETICON_CHECK(face.kind == mesh::FaceKind::quad4,
+                    "mortar: face set '" << set << "' has faces other than quad4 (faces of tetrahedra, wedges or "
+                                         << "quadratic cells); mortar rows integrate quad4 faces only: use "
+                                         << "contact.formulation=node_to_segment");
 }
 } // namespace
 
@@ -82,7 +88,7 @@ double SlaveNodalAreas::of(int32_t node) const
   return area(j);
 }
 
-SlaveNodalAreas slave_nodal_areas(const mesh::HexMesh& mesh, const la::Vector& u, const std::string& slave)
+SlaveNodalAreas slave_nodal_areas(const mesh::Mesh& mesh, const la::Vector& u, const std::string& slave)
 {
   check_displacement(mesh, u);
   SlaveNodalAreas areas;
@@ -90,14 +96,14 @@ SlaveNodalAreas slave_nodal_areas(const mesh::HexMesh& mesh, const la::Vector& u
   areas.area = la::Vector::Zero(static_cast<la::Index>(areas.nodes.size()));
   for (const mesh::Face& face : mesh.face_set(slave))
   {
-    const Eigen::Vector4d nodal_areas = face_nodal_areas(current_face_coordinates(mesh, u, face));
-    for (int k = 0; k < 4; ++k)
+    const Eigen::VectorXd nodal_areas = face_lumped_areas(current_face_geometry(mesh, u, face));
+    for (int k = 0; k < face.size(); ++k)
       areas.area(areas.index_of(face[k])) += nodal_areas(k);
   }
   return areas;
 }
 
-MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair,
+MortarCoupling compute_mortar_coupling(const mesh::Mesh& mesh, const la::Vector& u, const ContactPair& pair,
                                        double search_distance, const SegmentOptions& options,
                                        const std::vector<int32_t>* row_nodes)
 {
@@ -195,7 +201,7 @@ MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vect
   return coupling;
 }
 
-ContactConstraints build_mortar_constraints(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair,
+ContactConstraints build_mortar_constraints(const mesh::Mesh& mesh, const la::Vector& u, const ContactPair& pair,
                                             const ContactOptions& options)
 {
   // Validates the input and gives, per slave node, whether a row exists and its normal.

@@ -58,7 +58,7 @@
 #include "contact/mortar_integration.hpp"
 
 #include "la/types.hpp"
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <cstdint>
 #include <string>
@@ -81,7 +81,7 @@ struct SlaveNodalAreas
 };
 
 /// @brief Nodal areas D_j of the face set `slave` at the displacement `u` (m, or empty for 0).
-SlaveNodalAreas slave_nodal_areas(const mesh::HexMesh& mesh, const la::Vector& u, const std::string& slave);
+SlaveNodalAreas slave_nodal_areas(const mesh::Mesh& mesh, const la::Vector& u, const std::string& slave);
 
 /// Raw dual mortar coupling of a contact pair (file comment), before any row selection.
 struct MortarCoupling
@@ -105,12 +105,12 @@ struct MortarCoupling
 ///            these nodes (their support is integrated whole) and partial for the others
 /// @throws feticon::Error for an unknown or empty face set, a wrong size of u, a nonpositive
 ///         search distance, or a degenerate or non-convex slave face (of those integrated).
-MortarCoupling compute_mortar_coupling(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair,
+MortarCoupling compute_mortar_coupling(const mesh::Mesh& mesh, const la::Vector& u, const ContactPair& pair,
                                        double search_distance, const SegmentOptions& options = {},
                                        const std::vector<int32_t>* row_nodes = nullptr);
 
 /// @brief Dual mortar rows of `pair` (file comment); options.formulation is ignored.
 /// Arguments, result and errors as build_contact_constraints.
-ContactConstraints build_mortar_constraints(const mesh::HexMesh& mesh, const la::Vector& u, const ContactPair& pair,
+ContactConstraints build_mortar_constraints(const mesh::Mesh& mesh, const la::Vector& u, const ContactPair& pair,
                                             const ContactOptions& options = {});
 } // namespace feticon::contact

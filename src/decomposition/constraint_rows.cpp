@@ -89,7 +89,7 @@ std::vector<EquationRow> orthonormal_equation_rows(const Decomposition& decompos
                                                    const fem::ConstrainedDofs& dirichlet,
                                                    const std::vector<fem::LinearEquation>& equations)
 {
-  const mesh::HexMesh& mesh = decomposition.mesh();
+  const mesh::Mesh& mesh = decomposition.mesh();
   const std::vector<fem::ReducedEquation> reduced = fem::reduce_equations(
       equations, 3 * static_cast<int64_t>(mesh.n_nodes()), dirichlet, decomposition.eliminated(), &mesh);
   std::vector<EquationRow> out(reduced.size());
@@ -161,7 +161,7 @@ std::vector<EquationRow> orthonormal_equation_rows(const Decomposition& decompos
 EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::ConstrainedDofs& dirichlet,
                                  const std::vector<fem::LinearEquation>& equations)
 {
-  const mesh::HexMesh& mesh = decomposition.mesh();
+  const mesh::Mesh& mesh = decomposition.mesh();
   // Prescribed value per global DOF (NaN where free).
   std::vector<double> prescribed(3 * static_cast<size_t>(mesh.n_nodes()), std::numeric_limits<double>::quiet_NaN());
   for (size_t k = 0; k < dirichlet.dofs.size(); ++k)

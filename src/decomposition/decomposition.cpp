@@ -7,7 +7,7 @@
 
 namespace feticon::decomposition
 {
-Decomposition::Decomposition(const mesh::HexMesh& mesh, const Partition& partition, std::array<bool, 3> eliminated,
+Decomposition::Decomposition(const mesh::Mesh& mesh, const Partition& partition, std::array<bool, 3> eliminated,
                              par::Communicator comm)
     : _mesh(mesh), _partition(partition), _eliminated(eliminated), _comm(comm)
 {

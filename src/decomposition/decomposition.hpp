@@ -47,11 +47,11 @@ public:
   /// @param eliminated components removed from every node (e.g. {false,false,true} for
   ///        plane strain u_z = 0), so they are neither unknowns nor multipliers.
   /// @param comm         ranks that share the subdomains (each owns a contiguous range)
-  Decomposition(const mesh::HexMesh& mesh, const Partition& partition,
+  Decomposition(const mesh::Mesh& mesh, const Partition& partition,
                 std::array<bool, 3> eliminated = {false, false, false},
                 par::Communicator comm = par::Communicator::self());
 
-  const mesh::HexMesh& mesh() const { return _mesh; }
+  const mesh::Mesh& mesh() const { return _mesh; }
   int32_t n_subdomains() const { return static_cast<int32_t>(_subdomains.size()); }
   const Subdomain& subdomain(int32_t s) const { return _subdomains[s]; }
   const std::vector<Subdomain>& subdomains() const { return _subdomains; }
@@ -93,7 +93,7 @@ public:
   Eigen::VectorBlock<const la::Vector> segment(const la::Vector& stacked, int32_t s) const;
 
 private:
-  const mesh::HexMesh& _mesh;
+  const mesh::Mesh& _mesh;
   Partition _partition;
   std::array<bool, 3> _eliminated;
   std::vector<Subdomain> _subdomains;

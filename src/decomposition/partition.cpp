@@ -14,7 +14,6 @@ namespace feticon::decomposition
 {
 namespace
 {
-/// Cells sharing a face (4 common nodes) with each cell: CSR adjacency.
 /// True if the graph (CSR) is connected: a breadth-first search from vertex 0 reaches all.
 bool face_graph_connected(const std::vector<idx_t>& xadj, const std::vector<idx_t>& adjncy)
 {
@@ -32,15 +31,17 @@ bool face_graph_connected(const std::vector<idx_t>& xadj, const std::vector<idx_
   return queue.size() == n;
 }
 
-void cell_face_graph(const mesh::HexMesh& mesh, std::vector<idx_t>& xadj, std::vector<idx_t>& adjncy)
+/// Cells sharing a face (its corners) with each cell: CSR adjacency.
+void cell_face_graph(const mesh::Mesh& mesh, std::vector<idx_t>& xadj, std::vector<idx_t>& adjncy)
 {
   std::map<std::array<int32_t, 4>, std::vector<int32_t>> face_cells;
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
-    for (const auto& local : mesh::hex_faces)
+    for (const mesh::CellFace& face : mesh::cell_type(mesh.cells.kind(c)).faces)
     {
-      std::array<int32_t, 4> key;
-      for (int k = 0; k < 4; ++k)
-        key[k] = mesh.cells[c][local[k]];
+      // The corners sorted (-1 after a triangle's) name the face in every cell that has it.
+      std::array<int32_t, 4> key{-1, -1, -1, -1};
+      for (int k = 0; k < mesh::face_corners(face.kind); ++k)
+        key[k] = mesh.cells[c][face.nodes[k]];
       std::sort(key.begin(), key.end());
       face_cells[key].push_back(c);
     }
@@ -61,7 +62,7 @@ void cell_face_graph(const mesh::HexMesh& mesh, std::vector<idx_t>& xadj, std::v
 }
 
 /// Parts per body in proportion to its cells (largest remainder), at least one each.
-std::vector<int> parts_per_body(const mesh::HexMesh& mesh, int n_subdomains)
+std::vector<int> parts_per_body(const mesh::Mesh& mesh, int n_subdomains)
 {
   FETICON_CHECK(n_subdomains >= mesh.n_bodies(),
                 "partition: " << n_subdomains << " subdomains requested but the mesh has " << mesh.n_bodies()
@@ -84,12 +85,12 @@ std::vector<int> parts_per_body(const mesh::HexMesh& mesh, int n_subdomains)
   return body_parts;
 }
 
-std::vector<Eigen::Vector3d> cell_centroids(const mesh::HexMesh& mesh)
+std::vector<Eigen::Vector3d> cell_centroids(const mesh::Mesh& mesh)
 {
   std::vector<Eigen::Vector3d> centroid(mesh.n_cells(), Eigen::Vector3d::Zero());
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
     for (int32_t node : mesh.cells[c])
-      centroid[c] += mesh.nodes.row(node).transpose() / 8.0;
+      centroid[c] += mesh.nodes.row(node).transpose() / static_cast<double>(mesh.cells[c].size());
   return centroid;
 }
 
@@ -176,7 +177,7 @@ void bisect(std::vector<int32_t>& cells, size_t first, size_t last, int n, int32
 }
 } // namespace
 
-Partition partition_structured(const mesh::HexMesh& mesh, std::array<int, 3> parts)
+Partition partition_structured(const mesh::Mesh& mesh, std::array<int, 3> parts)
 {
   for (int p : parts)
     FETICON_CHECK(p >= 1, "structured partition: parts per direction must be >= 1, got " << p);
@@ -210,7 +211,7 @@ Partition partition_structured(const mesh::HexMesh& mesh, std::array<int, 3> par
   return split_disconnected(mesh, compact(std::move(ids)));
 }
 
-Partition partition_metis(const mesh::HexMesh& mesh, int n_subdomains)
+Partition partition_metis(const mesh::Mesh& mesh, int n_subdomains)
 {
   std::vector<idx_t> xadj, adjncy;
   cell_face_graph(mesh, xadj, adjncy);
@@ -267,7 +268,7 @@ Partition partition_metis(const mesh::HexMesh& mesh, int n_subdomains)
   return split_disconnected(mesh, compact(std::move(ids)));
 }
 
-Partition partition_rcb(const mesh::HexMesh& mesh, int n_subdomains)
+Partition partition_rcb(const mesh::Mesh& mesh, int n_subdomains)
 {
   const std::vector<Eigen::Vector3d> centroid = cell_centroids(mesh);
   std::vector<Eigen::Vector3d> size(mesh.n_cells()); // bounding-box edges of each cell
@@ -296,7 +297,7 @@ Partition partition_rcb(const mesh::HexMesh& mesh, int n_subdomains)
   return split_disconnected(mesh, compact(std::move(ids)));
 }
 
-Partition split_disconnected(const mesh::HexMesh& mesh, const Partition& partition)
+Partition split_disconnected(const mesh::Mesh& mesh, const Partition& partition)
 {
   std::vector<idx_t> xadj, adjncy;
   cell_face_graph(mesh, xadj, adjncy);

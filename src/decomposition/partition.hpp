@@ -5,7 +5,7 @@
 /// is exactly the rigid-body modes (6 in 3D). All partitioners enforce this: bodies
 /// are partitioned separately and disconnected pieces are split into separate subdomains.
 
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <array>
 #include <vector>
@@ -22,16 +22,16 @@ struct Partition
 /// Structured partition: the bounding box of each body's cell centroids is cut into
 /// parts[0] x parts[1] x parts[2] equal boxes (for a box mesh with n_i divisible by
 /// parts[i], subdomains of exactly H/h elements per direction).
-Partition partition_structured(const mesh::HexMesh& mesh, std::array<int, 3> parts);
+Partition partition_structured(const mesh::Mesh& mesh, std::array<int, 3> parts);
 
 /// METIS k-way partition of the cell dual graph (cells adjacent through faces) into
 /// about `n_subdomains` parts, shared among bodies in proportion to their cell counts.
-Partition partition_metis(const mesh::HexMesh& mesh, int n_subdomains);
+Partition partition_metis(const mesh::Mesh& mesh, int n_subdomains);
 
 /// Recursive coordinate bisection: each body's cells are halved along the axis of largest
 /// extent (in cells) until about `n_subdomains` parts, shared among bodies like METIS.
-Partition partition_rcb(const mesh::HexMesh& mesh, int n_subdomains);
+Partition partition_rcb(const mesh::Mesh& mesh, int n_subdomains);
 
 /// Splits every subdomain that is not face-connected into its connected pieces.
-Partition split_disconnected(const mesh::HexMesh& mesh, const Partition& partition);
+Partition split_disconnected(const mesh::Mesh& mesh, const Partition& partition);
 } // namespace feticon::decomposition

@@ -1,6 +1,7 @@
 #include "fem/assembler.hpp"
 
 #include "common/error.hpp"
+#include "fem/cell_element.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -63,17 +64,19 @@ la::SparseMatrix block_pattern(const NodeAdjacency& adjacency)
 }
 
 /// Adds the element matrix into K (whose pattern contains it).
-void scatter(la::SparseMatrix& K, const std::array<int32_t, 8>& local_nodes, const ElementMatrix& Ke)
+template <class Matrix>
+void scatter(la::SparseMatrix& K, std::span<const int32_t> local_nodes, const Matrix& Ke)
 {
   const int* outer = K.outerIndexPtr();
   const int* inner = K.innerIndexPtr();
   double* values = K.valuePtr();
-  for (int b = 0; b < 8; ++b)
+  const int n = static_cast<int>(local_nodes.size());
+  for (int b = 0; b < n; ++b)
   {
     const int col0 = 3 * local_nodes[b];
     const int* begin = inner + outer[col0];
     const int* end = inner + outer[col0 + 1];
-    for (int a = 0; a < 8; ++a)
+    for (int a = 0; a < n; ++a)
     {
       // Columns 3n, 3n+1, 3n+2 share one structure, so one search serves all three.
       const int offset = static_cast<int>(std::lower_bound(begin, end, 3 * local_nodes[a]) - begin);
@@ -88,16 +91,33 @@ void scatter(la::SparseMatrix& K, const std::array<int32_t, 8>& local_nodes, con
     }
   }
 }
+/// Adds one cell's force and stiffness (the latter if K is not null).
+template <class Vector, class Matrix>
+void add_cell(std::span<const int32_t> local, const Vector& fe, const Matrix& Ke, la::Vector* f_int,
+              la::SparseMatrix* K)
+{
+  if (f_int)
+    for (size_t a = 0; a < local.size(); ++a)
+      f_int->segment<3>(3 * local[a]) += fe.template segment<3>(3 * a);
+  if (K)
+    scatter(*K, local, Ke);
+}
 } // namespace
 
-AssemblyDomain make_domain(const mesh::HexMesh& mesh, std::vector<int32_t> cells)
+AssemblyDomain make_domain(const mesh::Mesh& mesh, std::vector<int32_t> cells)
 {
   AssemblyDomain domain;
   domain.cells = std::move(cells);
   // Work proportional to the domain's cells, never to the mesh: a run makes one domain
   // per subdomain.
   auto& nodes = domain.local_to_global;
-  nodes.reserve(8 * domain.cells.size());
+  size_t n_entries = 0;
+  for (int32_t c : domain.cells)
+  {
+    FETICON_CHECK(c >= 0 && c < mesh.n_cells(), "cell id " << c << " out of range");
+    n_entries += mesh.cells[c].size();
+  }
+  nodes.reserve(n_entries);
   for (int32_t c : domain.cells)
   {
     FETICON_CHECK(c >= 0 && c < mesh.n_cells(), "cell id " << c << " out of range");
@@ -106,15 +126,19 @@ AssemblyDomain make_domain(const mesh::HexMesh& mesh, std::vector<int32_t> cells
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   nodes.shrink_to_fit();
-  domain.cell_nodes.resize(domain.cells.size());
-  for (size_t k = 0; k < domain.cells.size(); ++k)
-    for (int a = 0; a < 8; ++a)
-      domain.cell_nodes[k][a] = static_cast<int32_t>(
-          std::lower_bound(nodes.begin(), nodes.end(), mesh.cells[domain.cells[k]][a]) - nodes.begin());
+  domain.cell_nodes.reserve(domain.cells.size(), n_entries);
+  std::vector<int32_t> local;
+  for (const int32_t c : domain.cells)
+  {
+    local.clear();
+    for (const int32_t n : mesh.cells[c])
+      local.push_back(static_cast<int32_t>(std::lower_bound(nodes.begin(), nodes.end(), n) - nodes.begin()));
+    domain.cell_nodes.add(mesh.cells.kind(c), local);
+  }
   return domain;
 }
 
-AssemblyDomain whole_mesh_domain(const mesh::HexMesh& mesh)
+AssemblyDomain whole_mesh_domain(const mesh::Mesh& mesh)
 {
   std::vector<int32_t> cells(mesh.n_cells());
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
@@ -122,7 +146,7 @@ AssemblyDomain whole_mesh_domain(const mesh::HexMesh& mesh)
   return make_domain(mesh, std::move(cells));
 }
 
-Assembler::Assembler(const mesh::HexMesh& mesh, AssemblyDomain domain, std::vector<Material> body_materials,
+Assembler::Assembler(const mesh::Mesh& mesh, AssemblyDomain domain, std::vector<Material> body_materials,
                      Kinematics kinematics)
     : _mesh(mesh), _domain(std::move(domain)), _materials(std::move(body_materials)), _kinematics(kinematics),
       _adjacency(node_adjacency(_domain))
@@ -149,22 +173,37 @@ void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatr
   NodeCoords X, ue;
   ElementVector fe;
   ElementMatrix Ke;
+  Eigen::MatrixX3d X_any, u_any;
+  Eigen::VectorXd fe_any;
+  Eigen::MatrixXd Ke_any;
   for (size_t k = 0; k < _domain.cells.size(); ++k)
   {
     const int32_t c = _domain.cells[k];
-    const auto& cell = _mesh.cells[c];
-    const std::array<int32_t, 8>& local = _domain.cell_nodes[k];
-    for (int a = 0; a < 8; ++a)
+    const std::span<const int32_t> cell = _mesh.cells[c];
+    const std::span<const int32_t> local = _domain.cell_nodes[k];
+    const mesh::CellKind type = _mesh.cells.kind(c);
+    const Material& material = _materials[_mesh.cell_body[c]];
+    if (type == mesh::CellKind::hex8)
     {
-      X.row(a) = _mesh.nodes.row(cell[a]);
-      ue.row(a) = u.segment<3>(3 * local[a]).transpose();
-    }
-    hex8_element(X, ue, _materials[_mesh.cell_body[c]], _kinematics, element_kind, fe, &Ke, c);
-    if (f_int)
       for (int a = 0; a < 8; ++a)
-        f_int->segment<3>(3 * local[a]) += fe.segment<3>(3 * a);
-    if (K)
-      scatter(*K, local, Ke);
+      {
+        X.row(a) = _mesh.nodes.row(cell[a]);
+        ue.row(a) = u.segment<3>(3 * local[a]).transpose();
+      }
+      hex8_element(X, ue, material, _kinematics, element_kind, fe, &Ke, c);
+      add_cell(local, fe, Ke, f_int, K);
+      continue;
+    }
+    const auto n = static_cast<Eigen::Index>(cell.size());
+    X_any.resize(n, 3);
+    u_any.resize(n, 3);
+    for (Eigen::Index a = 0; a < n; ++a)
+    {
+      X_any.row(a) = _mesh.nodes.row(cell[a]);
+      u_any.row(a) = u.segment<3>(3 * local[a]).transpose();
+    }
+    cell_element(type, X_any, u_any, material, _kinematics, element_kind, Integration::full, fe_any, &Ke_any, c);
+    add_cell(local, fe_any, Ke_any, f_int, K);
   }
 }
 

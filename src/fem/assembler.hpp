@@ -5,10 +5,12 @@
 /// penalty) and each FETI subdomain (its cells with local node numbering). The node
 /// adjacency is built once; each assembly writes K's pattern from it and adds the element
 /// matrices in place, so no triplet list of 576 entries per cell is ever held in memory.
+/// hex8 cells go through hex8_element (fixed-size, the fast path), every other type through
+/// cell_element.
 
 #include "fem/hex8_element.hpp"
 #include "la/types.hpp"
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <array>
 #include <vector>
@@ -23,16 +25,16 @@ struct AssemblyDomain
   /// Local node ids of each cell, in the order of `cells`. Kept instead of a mesh-sized
   /// global-to-local map, which cost every subdomain O(mesh) memory and setup time
   /// (docs/measurements.md).
-  std::vector<std::array<int32_t, 8>> cell_nodes;
+  mesh::CellList cell_nodes;
 
   int32_t n_nodes() const { return static_cast<int32_t>(local_to_global.size()); }
   int64_t n_dofs() const { return 3 * static_cast<int64_t>(local_to_global.size()); }
 };
 
 /// Domain of the given cells, local nodes in increasing mesh id order.
-AssemblyDomain make_domain(const mesh::HexMesh& mesh, std::vector<int32_t> cells);
+AssemblyDomain make_domain(const mesh::Mesh& mesh, std::vector<int32_t> cells);
 /// Domain of every cell; local numbering equals mesh numbering.
-AssemblyDomain whole_mesh_domain(const mesh::HexMesh& mesh);
+AssemblyDomain whole_mesh_domain(const mesh::Mesh& mesh);
 
 /// Which nodes share a cell, compressed: the neighbours of node n (itself included) are
 /// neighbours[offsets[n], offsets[n + 1]), increasing.
@@ -47,8 +49,7 @@ class Assembler
 {
 public:
   /// @param body_materials one material per body of the mesh (indexed by cell_body)
-  Assembler(const mesh::HexMesh& mesh, AssemblyDomain domain, std::vector<Material> body_materials,
-            Kinematics kinematics);
+  Assembler(const mesh::Mesh& mesh, AssemblyDomain domain, std::vector<Material> body_materials, Kinematics kinematics);
 
   const AssemblyDomain& domain() const { return _domain; }
   Kinematics kinematics() const { return _kinematics; }
@@ -64,7 +65,7 @@ public:
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> local_coordinates() const;
 
 private:
-  const mesh::HexMesh& _mesh;
+  const mesh::Mesh& _mesh;
   AssemblyDomain _domain;
   std::vector<Material> _materials;
   Kinematics _kinematics;

@@ -103,6 +103,47 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
   }
 }
 
+CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
+                                    const Material& material, Kinematics kinematics, Integration integration,
+                                    int64_t cell)
+{
+  const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
+  const QuadratureRule& rule = quadrature(type, integration);
+  CellPointResults out;
+  for (size_t q = 0; q < rule.points.size(); ++q)
+  {
+    const PointGeometry geo = point_geometry(type, X, rule.points[q], rule.weights[q], cell);
+    const auto [Fd, strain] = deformation(geo.dN_dX, u, kinematics, cell);
+    Voigt stress = D * strain;
+    if (kinematics == Kinematics::total_lagrangian)
+    {
+      // sigma = F S F' / det F (det F > 0, checked in deformation).
+      Eigen::Matrix3d S;
+      S << stress(0), stress(3), stress(5), stress(3), stress(1), stress(4), stress(5), stress(4), stress(2);
+      const Eigen::Matrix3d sigma = Fd * S * Fd.transpose() / Fd.determinant();
+      stress << sigma(0, 0), sigma(1, 1), sigma(2, 2), sigma(0, 1), sigma(1, 2), sigma(2, 0);
+    }
+    out.stress.push_back(stress);
+    out.strain.push_back(strain);
+    out.weight.push_back(geo.weight_det_j);
+  }
+  return out;
+}
+
+Voigt cell_cauchy_stress(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
+                         const Material& material, Kinematics kinematics, int64_t cell)
+{
+  const CellPointResults points = cell_point_results(type, X, u, material, kinematics, Integration::full, cell);
+  Voigt sum = Voigt::Zero();
+  double volume = 0;
+  for (size_t q = 0; q < points.weight.size(); ++q)
+  {
+    sum += points.stress[q] * points.weight[q];
+    volume += points.weight[q];
+  }
+  return sum / volume;
+}
+
 std::vector<Voigt> cell_point_strains(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
                                       Kinematics kinematics, Integration integration, int64_t cell)
 {

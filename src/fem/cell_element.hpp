@@ -26,6 +26,24 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
                   Kinematics kinematics, StiffnessKind kind, Integration integration, Eigen::VectorXd& f,
                   Eigen::MatrixXd* K, int64_t cell);
 
+/// Cauchy stress (Pa) and strain (small strain, or Green-Lagrange E; engineering shears) at the
+/// quadrature points of the cell, Voigt [11,22,33,12,23,31], and each point's weight times
+/// det J (m^3): hex8_point_results for any cell type.
+struct CellPointResults
+{
+  std::vector<Eigen::Matrix<double, 6, 1>> stress, strain;
+  std::vector<double> weight;
+};
+CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
+                                    const Material& material, Kinematics kinematics, Integration integration,
+                                    int64_t cell);
+
+/// Volume-averaged Cauchy stress of one cell (Pa), Voigt [11,22,33,12,23,31]: the weighted mean
+/// of cell_point_results' stresses, as hex8_cauchy_stress.
+Eigen::Matrix<double, 6, 1> cell_cauchy_stress(mesh::CellKind type, const Eigen::MatrixX3d& X,
+                                               const Eigen::MatrixX3d& u, const Material& material,
+                                               Kinematics kinematics, int64_t cell);
+
 /// Small strain (linear) or Green-Lagrange strain (total Lagrangian), Voigt
 /// [11,22,33,12,23,31] with engineering shears, at each quadrature point of the cell.
 std::vector<Eigen::Matrix<double, 6, 1>> cell_point_strains(mesh::CellKind type, const Eigen::MatrixX3d& X,

@@ -78,8 +78,7 @@ void substitute_pivot(int64_t pivot, const Expression& x, std::map<int64_t, Expr
 /// Gaussian elimination of the equations, one dependent DOF (the pivot) per equation: the
 /// expressions of the dependent DOFs in the independent ones.
 std::map<int64_t, Expression> eliminate_equations(const std::vector<ReducedEquation>& reduced,
-                                                  const std::vector<LinearEquation>& equations,
-                                                  const mesh::HexMesh* mesh)
+                                                  const std::vector<LinearEquation>& equations, const mesh::Mesh* mesh)
 {
   std::map<int64_t, Expression> dependent;
   std::map<int64_t, std::set<int64_t>> used_by; // independent DOF -> dependent DOFs whose expression has it
@@ -117,7 +116,7 @@ std::map<int64_t, Expression> eliminate_equations(const std::vector<ReducedEquat
 } // namespace
 
 ConstraintElimination::ConstraintElimination(int64_t n_dofs, const ConstrainedDofs& prescribed,
-                                             const std::vector<LinearEquation>& equations, const mesh::HexMesh* mesh)
+                                             const std::vector<LinearEquation>& equations, const mesh::Mesh* mesh)
     : _n_dofs(n_dofs), _dirichlet(n_dofs, prescribed), _with_equations(!equations.empty())
 {
   if (!_with_equations)

@@ -32,7 +32,7 @@ public:
   /// @throws feticon::Error naming the equation if one has no free term or is linearly
   ///         dependent on the supports and the equations before it
   ConstraintElimination(int64_t n_dofs, const ConstrainedDofs& prescribed,
-                        const std::vector<LinearEquation>& equations = {}, const mesh::HexMesh* mesh = nullptr);
+                        const std::vector<LinearEquation>& equations = {}, const mesh::Mesh* mesh = nullptr);
 
   int64_t n_free() const;
   /// T' K T (K in full symmetric storage).

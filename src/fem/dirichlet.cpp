@@ -9,7 +9,7 @@
 
 namespace feticon::fem
 {
-ConstrainedDofs collect_dirichlet(const mesh::HexMesh& mesh, const std::vector<DirichletCondition>& conditions,
+ConstrainedDofs collect_dirichlet(const mesh::Mesh& mesh, const std::vector<DirichletCondition>& conditions,
                                   double scale)
 {
   std::map<int64_t, double> prescribed;

@@ -2,7 +2,7 @@
 /// @file Dirichlet conditions on named node sets, per component.
 
 #include "la/types.hpp"
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <array>
 #include <map>
@@ -32,7 +32,7 @@ ConstrainedDofs to_constrained_dofs(const std::map<int64_t, double>& prescribed)
 
 /// Collects the DOFs of all conditions; throws if two conditions prescribe different
 /// values on one DOF.
-ConstrainedDofs collect_dirichlet(const mesh::HexMesh& mesh, const std::vector<DirichletCondition>& conditions,
+ConstrainedDofs collect_dirichlet(const mesh::Mesh& mesh, const std::vector<DirichletCondition>& conditions,
                                   double scale = 1.0);
 
 /// Elimination of constrained DOFs for direct solves of undecomposed problems:

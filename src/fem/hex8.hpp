@@ -2,7 +2,7 @@
 /// @file Trilinear hexahedron (hex8): shape functions and 2x2x2 Gauss quadrature.
 ///
 /// Reference node a has coordinates (xi_a, eta_a, zeta_a) in {-1,+1}^3 in VTK order
-/// (mesh/hex_mesh.hpp); N_a = 1/8 (1 + xi_a xi)(1 + eta_a eta)(1 + zeta_a zeta).
+/// (mesh/mesh.hpp); N_a = 1/8 (1 + xi_a xi)(1 + eta_a eta)(1 + zeta_a zeta).
 
 #include <Eigen/Dense>
 #include <array>

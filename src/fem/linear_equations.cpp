@@ -11,7 +11,7 @@ namespace feticon::fem
 {
 std::vector<ReducedEquation> reduce_equations(const std::vector<LinearEquation>& equations, int64_t n_dofs,
                                               const ConstrainedDofs& prescribed, const std::array<bool, 3>& eliminated,
-                                              const mesh::HexMesh* mesh)
+                                              const mesh::Mesh* mesh)
 {
   std::vector<ReducedEquation> out;
   out.reserve(equations.size());
@@ -55,7 +55,7 @@ std::vector<ReducedEquation> reduce_equations(const std::vector<LinearEquation>&
   return out;
 }
 
-std::string describe_equation(const std::vector<LinearEquation>& equations, size_t index, const mesh::HexMesh* mesh)
+std::string describe_equation(const std::vector<LinearEquation>& equations, size_t index, const mesh::Mesh* mesh)
 {
   static constexpr const char* component_name[] = {"u_x", "u_y", "u_z"};
   std::ostringstream os;
@@ -83,7 +83,7 @@ std::string describe_equation(const std::vector<LinearEquation>& equations, size
 }
 
 std::string dependent_equation_message(const std::vector<LinearEquation>& equations, size_t index,
-                                       const mesh::HexMesh* mesh)
+                                       const mesh::Mesh* mesh)
 {
   return describe_equation(equations, index, mesh) +
       " is linearly dependent on the supports and the equations before it (a repeated or redundant "

@@ -41,16 +41,16 @@ inline constexpr double equation_dependence_tolerance = 1e-10;
 std::vector<ReducedEquation> reduce_equations(const std::vector<LinearEquation>& equations, int64_t n_dofs,
                                               const ConstrainedDofs& prescribed,
                                               const std::array<bool, 3>& eliminated = {false, false, false},
-                                              const mesh::HexMesh* mesh = nullptr);
+                                              const mesh::Mesh* mesh = nullptr);
 
 /// "linear equation 2 of 5 (1 u_x at node 17 (1, 0.5, 1) - 1 u_x at node 40 (...) = 0)": for
 /// messages (1-based: the order of a deck's *EQUATION blocks; nodes are mesh indices, with their
 /// coordinates if `mesh` is given).
 std::string describe_equation(const std::vector<LinearEquation>& equations, size_t index,
-                              const mesh::HexMesh* mesh = nullptr);
+                              const mesh::Mesh* mesh = nullptr);
 
 /// The one-line message for equation `index`, which is linearly dependent on the supports and the
 /// equations before it.
 std::string dependent_equation_message(const std::vector<LinearEquation>& equations, size_t index,
-                                       const mesh::HexMesh* mesh = nullptr);
+                                       const mesh::Mesh* mesh = nullptr);
 } // namespace feticon::fem

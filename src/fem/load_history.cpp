@@ -29,7 +29,7 @@ auto in_stage(int stage, F&& check)
 /// The consistent nodal forces of a later stage, as Problem::external_force() makes stage 1's.
 la::Vector stage_force(const Problem& problem, const LoadStage& stage, int number)
 {
-  const mesh::HexMesh& mesh = problem.mesh;
+  const mesh::Mesh& mesh = problem.mesh;
   la::Vector f = la::Vector::Zero(3 * static_cast<la::Index>(mesh.n_nodes()));
   in_stage(number, [&] {
     for (const FaceTraction& t : stage.tractions)
@@ -85,7 +85,7 @@ ConstrainedDofs stage_dirichlet(const Problem& problem, const LoadStage& stage, 
 }
 
 /// "u_y of node 17 (set 'FIX')": the first of `conditions` that prescribes `dof`.
-std::string describe(const mesh::HexMesh& mesh, const std::vector<DirichletCondition>& conditions, int64_t dof)
+std::string describe(const mesh::Mesh& mesh, const std::vector<DirichletCondition>& conditions, int64_t dof)
 {
   const auto node = static_cast<int32_t>(dof / 3);
   const int component = static_cast<int>(dof % 3);

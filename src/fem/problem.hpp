@@ -4,7 +4,7 @@
 #include "fem/dirichlet.hpp"
 #include "fem/material.hpp"
 #include "la/types.hpp"
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <array>
 #include <string>
@@ -76,7 +76,7 @@ struct LoadStage
 struct Problem
 {
   std::string name;
-  mesh::HexMesh mesh;
+  mesh::Mesh mesh;
   bool mesh_from_cache = false;    ///< the mesh came from the mesh cache (mesh/mesh_cache.hpp)
   std::vector<Material> materials; ///< one per body
   std::vector<DirichletCondition> dirichlet;

@@ -1,17 +1,33 @@
 #include "fem/stress.hpp"
 
+#include "fem/cell_element.hpp"
 #include "fem/hex8_element.hpp"
 
 namespace feticon::fem
 {
-std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::HexMesh& mesh, const la::Vector& u,
+std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& mesh, const la::Vector& u,
                                                               const std::vector<Material>& body_materials,
                                                               Kinematics kinematics)
 {
   std::vector<Eigen::Matrix<double, 6, 1>> stresses(mesh.n_cells());
   NodeCoords X, ue;
+  Eigen::MatrixX3d X_any, u_any;
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
   {
+    const mesh::CellKind type = mesh.cells.kind(c);
+    if (type != mesh::CellKind::hex8)
+    {
+      const std::span<const int32_t> cell = mesh.cells[c];
+      X_any.resize(static_cast<Eigen::Index>(cell.size()), 3);
+      u_any.resize(X_any.rows(), 3);
+      for (size_t a = 0; a < cell.size(); ++a)
+      {
+        X_any.row(a) = mesh.nodes.row(cell[a]);
+        u_any.row(a) = u.segment<3>(3 * cell[a]).transpose();
+      }
+      stresses[c] = cell_cauchy_stress(type, X_any, u_any, body_materials[mesh.cell_body[c]], kinematics, c);
+      continue;
+    }
     for (int a = 0; a < 8; ++a)
     {
       X.row(a) = mesh.nodes.row(mesh.cells[c][a]);
@@ -22,7 +38,7 @@ std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::HexMes
   return stresses;
 }
 
-std::vector<Eigen::Matrix<double, 6, 1>> nodal_average(const mesh::HexMesh& mesh,
+std::vector<Eigen::Matrix<double, 6, 1>> nodal_average(const mesh::Mesh& mesh,
                                                        const std::vector<Eigen::Matrix<double, 6, 1>>& cell_values)
 {
   std::vector<Eigen::Matrix<double, 6, 1>> sum(mesh.n_nodes(), Eigen::Matrix<double, 6, 1>::Zero());

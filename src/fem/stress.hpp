@@ -3,7 +3,7 @@
 
 #include "fem/material.hpp"
 #include "la/types.hpp"
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <vector>
 
@@ -11,11 +11,11 @@ namespace feticon::fem
 {
 /// Volume-averaged Cauchy stress of every cell (Pa), Voigt [11,22,33,12,23,31].
 /// @param u global displacement (3 DOFs per mesh node)
-std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::HexMesh& mesh, const la::Vector& u,
+std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& mesh, const la::Vector& u,
                                                               const std::vector<Material>& body_materials,
                                                               Kinematics kinematics);
 
 /// Nodal average of cell stresses (each node: mean over its cells, within one body).
-std::vector<Eigen::Matrix<double, 6, 1>> nodal_average(const mesh::HexMesh& mesh,
+std::vector<Eigen::Matrix<double, 6, 1>> nodal_average(const mesh::Mesh& mesh,
                                                        const std::vector<Eigen::Matrix<double, 6, 1>>& cell_values);
 } // namespace feticon::fem

@@ -14,15 +14,14 @@ namespace feticon::io
 {
 namespace
 {
-/// CalculiX's C3D8 faces S1..S6 as VTK-order local node ids (CalculiX manual, C3D8).
-constexpr std::array<std::array<int, 4>, 6> calculix_faces = {{
-    {0, 1, 2, 3}, // S1
-    {4, 7, 6, 5}, // S2
-    {0, 4, 5, 1}, // S3
-    {1, 5, 6, 2}, // S4
-    {2, 6, 7, 3}, // S5
-    {3, 7, 4, 0}, // S6
-}};
+/// A face's corners sorted, -1 after a triangle's: the same key from every cell that has it.
+std::array<int32_t, 4> corner_key(std::span<const int32_t> corners)
+{
+  std::array<int32_t, 4> key{-1, -1, -1, -1};
+  std::ranges::copy(corners, key.begin());
+  std::sort(key.begin(), key.end());
+  return key;
+}
 
 /// A real number in CalculiX's free format: 13 significant digits fit its 20-character fields.
 std::string number(double v)
@@ -45,36 +44,38 @@ std::string deck_name(const std::string& prefix, const std::string& name)
 }
 
 /// Element and CalculiX face number (1..6) of every face of a set.
-std::vector<std::pair<int32_t, int>> element_faces(const mesh::HexMesh& mesh, const std::string& set,
+std::vector<std::pair<int32_t, int>> element_faces(const mesh::Mesh& mesh, const std::string& set,
                                                    const std::vector<std::vector<int32_t>>& cells_of_node)
 {
   std::vector<std::pair<int32_t, int>> out;
   for (const mesh::Face& face : mesh.face_set(set))
   {
-    std::array<int32_t, 4> key = face;
-    std::sort(key.begin(), key.end());
+    const std::array<int32_t, 4> key = corner_key({face.begin(), static_cast<size_t>(face.n_corners())});
     std::pair<int32_t, int> found{-1, 0};
     for (int32_t c : cells_of_node[face[0]])
-      for (int f = 0; f < 6 && found.first < 0; ++f)
+    {
+      // cell_type's faces are CalculiX's S1, S2, ... in order.
+      const std::vector<mesh::CellFace>& faces = mesh::cell_type(mesh.cells.kind(c)).faces;
+      for (size_t f = 0; f < faces.size() && found.first < 0; ++f)
       {
-        std::array<int32_t, 4> nodes;
-        for (int k = 0; k < 4; ++k)
-          nodes[k] = mesh.cells[c][calculix_faces[f][k]];
-        std::sort(nodes.begin(), nodes.end());
-        if (nodes == key)
-          found = {c, f + 1};
+        std::array<int32_t, 4> nodes{};
+        const int n = mesh::face_corners(faces[f].kind);
+        for (int k = 0; k < n; ++k)
+          nodes[k] = mesh.cells[c][faces[f].nodes[k]];
+        if (corner_key({nodes.data(), static_cast<size_t>(n)}) == key)
+          found = {c, static_cast<int>(f) + 1};
       }
+    }
     FETICON_CHECK(found.first >= 0,
-                  "calculix export: a face of set '" << set << "' (nodes " << face[0] << ", " << face[1] << ", "
-                                                     << face[2] << ", " << face[3] << ") is no face of a hex8 cell");
+                  "calculix export: a face of set '" << set << "' (corner nodes " << face[0] << ", " << face[1] << ", "
+                                                     << face[2] << ", ...) is no face of a cell");
     out.push_back(found);
   }
   return out;
 }
 
 /// The one body the cells of a face set belong to.
-int32_t body_of_faces(const mesh::HexMesh& mesh, const std::string& set,
-                      const std::vector<std::pair<int32_t, int>>& faces)
+int32_t body_of_faces(const mesh::Mesh& mesh, const std::string& set, const std::vector<std::pair<int32_t, int>>& faces)
 {
   std::set<int32_t> bodies;
   for (const auto& [cell, f] : faces)
@@ -88,17 +89,20 @@ int32_t body_of_faces(const mesh::HexMesh& mesh, const std::string& set,
 /// Area-weighted mean outward normal of a face set (unit), and its shortest face edge: the
 /// contact element size where the mesh is finest (the thickness of a plane-strain layer is
 /// no contact size, and it is the longer edge there).
-std::pair<Eigen::Vector3d, double> mean_normal_and_size(const mesh::HexMesh& mesh, const std::string& set)
+std::pair<Eigen::Vector3d, double> mean_normal_and_size(const mesh::Mesh& mesh, const std::string& set)
 {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   double shortest = std::numeric_limits<double>::infinity();
   for (const mesh::Face& f : mesh.face_set(set))
   {
+    const int n = f.n_corners();
+    // Area vector of the corners' polygon: half the cross product of the diagonals of a quad,
+    // of two edges of a triangle.
     const Eigen::Vector3d a = mesh.nodes.row(f[2]) - mesh.nodes.row(f[0]);
-    const Eigen::Vector3d b = mesh.nodes.row(f[3]) - mesh.nodes.row(f[1]);
-    sum += 0.5 * a.cross(b); // area vector of the quad
-    for (int k = 0; k < 4; ++k)
-      shortest = std::min(shortest, (mesh.nodes.row(f[(k + 1) % 4]) - mesh.nodes.row(f[k])).norm());
+    const Eigen::Vector3d b = mesh.nodes.row(f[n - 1]) - mesh.nodes.row(f[1]);
+    sum += 0.5 * a.cross(b);
+    for (int k = 0; k < n; ++k)
+      shortest = std::min(shortest, (mesh.nodes.row(f[(k + 1) % n]) - mesh.nodes.row(f[k])).norm());
   }
   FETICON_CHECK(sum.norm() > 0 && shortest > 0, "calculix export: face set '" << set << "' has no area");
   return {sum.normalized(), shortest};
@@ -137,7 +141,7 @@ struct ContactPairFaces
 std::vector<ContactPairFaces> contact_pairs(const fem::Problem& problem, const CalculixOptions& options, Coordinates& x,
                                             CalculixDeckSummary& summary)
 {
-  const mesh::HexMesh& mesh = problem.mesh;
+  const mesh::Mesh& mesh = problem.mesh;
   std::vector<std::vector<int32_t>> cells_of_node(mesh.n_nodes());
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
     for (int32_t n : mesh.cells[c])
@@ -184,9 +188,9 @@ std::vector<ContactPairFaces> contact_pairs(const fem::Problem& problem, const C
 void write_mesh(std::ostream& out, const fem::Problem& problem, const Coordinates& x,
                 const CalculixDeckSummary& summary)
 {
-  const mesh::HexMesh& mesh = problem.mesh;
+  const mesh::Mesh& mesh = problem.mesh;
   out << "** CalculiX deck of the feticon problem '" << problem.name << "' (feticon export --format calculix)\n"
-      << "** SI units: m, N, Pa. " << mesh.n_nodes() << " nodes, " << mesh.n_cells() << " C3D8 elements.\n";
+      << "** SI units: m, N, Pa. " << mesh.n_nodes() << " nodes, " << mesh.n_cells() << " elements.\n";
   if (summary.overclosure > 0)
     out << "** Slave bodies held only by contact are shifted by " << number(summary.overclosure)
         << " m into their master (see src/io/calculix_deck.hpp).\n";
@@ -195,20 +199,30 @@ void write_mesh(std::ostream& out, const fem::Problem& problem, const Coordinate
     out << n + 1 << ", " << number(x(n, 0)) << ", " << number(x(n, 1)) << ", " << number(x(n, 2)) << '\n';
   for (int32_t b = 0; b < mesh.n_bodies(); ++b)
   {
-    out << "*ELEMENT, TYPE=C3D8, ELSET=" << deck_name("B_", mesh.body_names[b]) << '\n';
-    for (int32_t c = 0; c < mesh.n_cells(); ++c)
-      if (mesh.cell_body[c] == b)
-      {
-        out << c + 1;
-        for (int32_t n : mesh.cells[c])
-          out << ", " << n + 1;
-        out << '\n';
-      }
+    // One *ELEMENT block per cell type of the body.
+    for (const mesh::CellKind kind : mesh::all_cell_kinds)
+    {
+      bool any = false;
+      for (int32_t c = 0; c < mesh.n_cells(); ++c)
+        if (mesh.cell_body[c] == b && mesh.cells.kind(c) == kind)
+        {
+          if (!any)
+            out << "*ELEMENT, TYPE=" << mesh::cell_type(kind).calculix_names.front()
+                << ", ELSET=" << deck_name("B_", mesh.body_names[b]) << '\n';
+          any = true;
+          out << c + 1;
+          // CalculiX reads at most 16 entries a line: the label and 15 nodes, then the rest.
+          const std::span<const int32_t> cell = mesh.cells[c];
+          for (size_t k = 0; k < cell.size(); ++k)
+            out << (k == 15 ? ",\n" : ", ") << cell[k] + 1;
+          out << '\n';
+        }
+    }
   }
 }
 
 /// One *NSET per node set that a support names, 16 nodes a line.
-void write_node_sets(std::ostream& out, const mesh::HexMesh& mesh, const std::set<std::string>& node_sets)
+void write_node_sets(std::ostream& out, const mesh::Mesh& mesh, const std::set<std::string>& node_sets)
 {
   for (const std::string& name : node_sets)
   {
@@ -223,7 +237,7 @@ void write_node_sets(std::ostream& out, const mesh::HexMesh& mesh, const std::se
 /// *MATERIAL with *ELASTIC and its *SOLID SECTION, per body.
 void write_materials(std::ostream& out, const fem::Problem& problem)
 {
-  const mesh::HexMesh& mesh = problem.mesh;
+  const mesh::Mesh& mesh = problem.mesh;
   for (int32_t b = 0; b < mesh.n_bodies(); ++b)
   {
     const fem::Material& m = problem.materials[b];
@@ -267,7 +281,7 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
 void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
                 CalculixDeckSummary& summary)
 {
-  const mesh::HexMesh& mesh = problem.mesh;
+  const mesh::Mesh& mesh = problem.mesh;
   const double increment = 1.0 / options.increments;
   out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "") << ", INC=10000\n*STATIC\n"
       << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
@@ -334,7 +348,7 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
                 "calculix export: friction coefficient " << options.friction_coefficient << " must be >= 0");
   FETICON_CHECK(std::isfinite(options.stick_slope_ratio) && options.stick_slope_ratio > 0,
                 "calculix export: stick slope ratio " << options.stick_slope_ratio << " must be positive");
-  const mesh::HexMesh& mesh = problem.mesh;
+  const mesh::Mesh& mesh = problem.mesh;
   CalculixDeckSummary summary;
   summary.n_nodes = mesh.n_nodes();
   summary.n_elements = mesh.n_cells();

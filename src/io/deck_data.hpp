@@ -6,7 +6,7 @@
 #include "fem/material.hpp"
 #include "io/deck.hpp"
 #include "io/deck_tokenizer.hpp"
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <algorithm>
 #include <deque>
@@ -156,7 +156,7 @@ struct DeckData
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> coordinates;
   LabelIndex node_index;
   Labels element_labels;
-  std::vector<mesh::Cell> cells; ///< node indices, VTK hex order (= CalculiX C3D8 order)
+  mesh::CellList cells; ///< node indices, CalculiX's order (mesh/cell_type.hpp)
   LabelIndex element_index;
 
   std::map<std::string, IndexRuns> node_sets;    ///< node indices, may repeat

@@ -114,7 +114,7 @@ public:
   {
     _data.coordinates.resize(outline.nodes, 3);
     _data.node_labels.reserve(outline.nodes);
-    _data.cells.reserve(outline.elements);
+    _data.cells.reserve(outline.elements, 8 * static_cast<size_t>(outline.elements));
     _data.element_labels.reserve(outline.elements);
     _data.node_index.reserve(outline.nodes);
     _data.element_index.reserve(outline.elements);
@@ -321,14 +321,20 @@ private:
   {
     known_parameters({"TYPE", "ELSET"});
     const std::string& type = required("TYPE");
+    const mesh::CellType* cell_type = mesh::cell_type_of_calculix_name(type);
+    if (!cell_type)
+      throw Error(where() + ": element type " + type +
+                  " is not implemented by feticon (C3D8, C3D8R, C3D8I, C3D20, C3D20R, C3D4, C3D10, C3D6)");
     if (type == "C3D8R" || type == "C3D8I")
       _data.warn("element type " + type + " (" + _keyword.where.str() +
                  ") is solved as C3D8 (full 2x2x2 "
                  "integration" +
                  (type == "C3D8R" ? std::string(", not reduced with hourglass control)")
                                   : std::string(", without incompatible modes: stiffer in bending)")));
-    else if (type != "C3D8")
-      throw Error(where() + ": element type " + type + " is not implemented by feticon (C3D8, C3D8R, C3D8I)");
+    if (type == "C3D20R")
+      _data.warn("element type C3D20R (" + _keyword.where.str() + ") is solved as C3D20 (full 3x3x3 integration)");
+    const size_t n_nodes = static_cast<size_t>(cell_type->n_nodes);
+    const std::string count = std::to_string(n_nodes);
     IndexRuns* set = _keyword.has("ELSET") ? &_data.element_sets[required("ELSET")] : nullptr;
     DeckDataLine line;
     std::vector<int32_t> nodes_of_element;
@@ -348,24 +354,23 @@ private:
       }
       for (size_t k = first; k < line.fields.size(); ++k)
       {
-        if (nodes_of_element.size() == 8)
-          fail_at(line.at(k), "element " + std::to_string(label) + " of type " + type + " has more than 8 nodes");
+        if (nodes_of_element.size() == n_nodes)
+          fail_at(line.at(k),
+                  "element " + std::to_string(label) + " of type " + type + " has more than " + count + " nodes");
         nodes_of_element.push_back(node(line, k));
       }
-      if (nodes_of_element.size() < 8)
+      if (nodes_of_element.size() < n_nodes)
       {
         if (line.continues)
           continue;
         fail_at(line.where,
                 "element " + std::to_string(label) + " of type " + type + " has " +
-                    std::to_string(nodes_of_element.size()) + " nodes, not 8");
+                    std::to_string(nodes_of_element.size()) + " nodes, not " + count);
       }
       const int32_t index = static_cast<int32_t>(_data.cells.size());
       if (!_data.element_index.insert(label, index))
         fail_at(start, "element " + std::to_string(label) + " is defined twice");
-      mesh::Cell cell;
-      std::copy(nodes_of_element.begin(), nodes_of_element.end(), cell.begin());
-      _data.cells.push_back(cell);
+      _data.cells.add(cell_type->kind, nodes_of_element);
       _data.element_labels.push_back(static_cast<int32_t>(label));
       if (set)
         set->push_back(index);
@@ -373,7 +378,7 @@ private:
       label = 0;
     }
     if (label != 0)
-      fail_at(start, "element " + std::to_string(label) + " of type " + type + " has fewer than 8 nodes");
+      fail_at(start, "element " + std::to_string(label) + " of type " + type + " has fewer than " + count + " nodes");
   }
 
   /// *NSET and *ELSET: numbers, names of sets of the same kind, or GENERATE triples.
@@ -446,7 +451,7 @@ private:
         fail_at(line.where, "an element face needs its face, S1 to S6");
       const std::string face = name_of(line.fields[1]);
       if (face.size() != 2 || face[0] != 'S' || face[1] < '1' || face[1] > '6')
-        fail_at(line.at(1), "face '" + text(line.fields[1]) + "' of a C3D8 element is not S1 to S6");
+        fail_at(line.at(1), "face '" + text(line.fields[1]) + "' of an element is not S1 to S6");
       for (int32_t c : cells)
         s.faces.push_back({c, face[1] - '0'});
     }

@@ -27,7 +27,7 @@ constexpr std::array<int, 7> hex_face_of_calculix = {-1, 0, 1, 2, 5, 3, 4};
 /// The first corner of a hex8 cell where the trilinear map's Jacobian (the triple product of
 /// the three edges there, in the reference directions) is below 1e-10 of the centre's `centre`
 /// (8 x volume), or -1. The centre test alone passes a cell with a repeated node.
-int first_degenerate_corner(const mesh::HexMesh& mesh, const mesh::Cell& cell, double centre)
+int first_degenerate_corner(const mesh::Mesh& mesh, std::span<const int32_t> cell, double centre)
 {
   static constexpr int sign[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                                      {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
@@ -44,10 +44,49 @@ int first_degenerate_corner(const mesh::HexMesh& mesh, const mesh::Cell& cell, d
   return -1;
 }
 
-mesh::Face face_nodes(const mesh::Cell& cell, int calculix_face)
+/// The local position of a node repeated in a cell's node list, or -1: a collapsed cell.
+int first_repeated_node(std::span<const int32_t> cell)
 {
-  const auto& local = mesh::hex_faces[hex_face_of_calculix[calculix_face]];
+  for (size_t a = 1; a < cell.size(); ++a)
+    for (size_t b = 0; b < a; ++b)
+      if (cell[a] == cell[b])
+        return static_cast<int>(a);
+  return -1;
+}
+
+/// Face count of cell c (6 for hex8, 4 for tetrahedra, 5 for wedges).
+int n_cell_faces(const mesh::Mesh& mesh, int32_t c)
+{
+  return static_cast<int>(mesh::cell_type(mesh.cells.kind(c)).faces.size());
+}
+
+/// The outward face `k` (0-based) of cell c: hex8's in mesh::hex_faces order and node order, as
+/// hex8 decks were read before cells had types; other types in cell_type.hpp's (CalculiX's)
+/// order.
+mesh::Face local_face(const mesh::Mesh& mesh, int32_t c, int k)
+{
+  const std::span<const int32_t> cell = mesh.cells[c];
+  if (mesh.cells.kind(c) != mesh::CellKind::hex8)
+    return mesh::cell_face(mesh.cells.kind(c), cell, k);
+  const auto& local = mesh::hex_faces[k];
   return {cell[local[0]], cell[local[1]], cell[local[2]], cell[local[3]]};
+}
+
+/// CalculiX's face S`calculix_face` (1-based) of cell c, outward.
+mesh::Face face_nodes(const mesh::Mesh& mesh, int32_t c, int calculix_face)
+{
+  if (mesh.cells.kind(c) == mesh::CellKind::hex8)
+    return local_face(mesh, c, hex_face_of_calculix[calculix_face]);
+  return local_face(mesh, c, calculix_face - 1);
+}
+
+/// A face's corners sorted, -1 after a triangle's: the same key from every cell that has it.
+std::array<int32_t, 4> face_key(const mesh::Face& face)
+{
+  std::array<int32_t, 4> key{-1, -1, -1, -1};
+  std::copy_n(face.begin(), face.n_corners(), key.begin());
+  std::sort(key.begin(), key.end());
+  return key;
 }
 
 std::string step_name(const DeckStep& step, size_t k)
@@ -93,7 +132,7 @@ private:
   {
     const int32_t n_read = static_cast<int32_t>(_d.node_labels.size());
     _mesh_node.assign(n_read, -1);
-    for (const mesh::Cell& cell : _d.cells)
+    for (const std::span<const int32_t> cell : _d.cells)
       for (int32_t n : cell)
         _mesh_node[n] = 0;
     int32_t count = 0;
@@ -104,7 +143,7 @@ private:
       _d.warn(std::to_string(n_read - count) +
               " nodes of the deck belong to no element; supports on them are "
               "not used");
-    mesh::HexMesh& mesh = _p.mesh;
+    mesh::Mesh& mesh = _p.mesh;
     // The label tables are done with: free them before the mesh arrays are formed.
     _d.node_index = {};
     _d.element_index = {};
@@ -127,12 +166,21 @@ private:
     mesh.cells = std::move(_d.cells);
     for (size_t c = 0; c < mesh.cells.size(); ++c)
     {
-      for (int32_t& n : mesh.cells[c])
+      for (int32_t& n : mesh.cells.nodes_of(c))
         n = _mesh_node[n];
-      const double det = mesh::centre_jacobian_determinant(mesh, mesh.cells[c]);
+      const mesh::CellType& type = mesh::cell_type(mesh.cells.kind(c));
+      // hex8's corner test below names a repeated node where the map degenerates.
+      const int repeated = type.kind == mesh::CellKind::hex8 ? -1 : first_repeated_node(mesh.cells[c]);
+      FETICON_CHECK(repeated < 0,
+                    "element " << _d.element_labels[c] << " repeats its node "
+                               << _deck.node_labels[mesh.cells[c][repeated]] << ": a collapsed "
+                               << type.calculix_names.front() << " is not implemented");
+      const double det = mesh::centre_jacobian_determinant(mesh, static_cast<int32_t>(c));
       FETICON_CHECK(det > 0,
                     "element " << _d.element_labels[c] << " is inverted or degenerate (Jacobian " << det
-                               << " at its centre): its nodes are not in C3D8 order");
+                               << " at its centre): its nodes are not in " << type.calculix_names.front() << " order");
+      if (type.kind != mesh::CellKind::hex8)
+        continue;
       const int corner = first_degenerate_corner(mesh, mesh.cells[c], det);
       FETICON_CHECK(corner < 0,
                     "element " << _d.element_labels[c] << " is degenerate at its node "
@@ -163,10 +211,10 @@ private:
 
   void bodies_and_materials()
   {
-    mesh::HexMesh& mesh = _p.mesh;
+    mesh::Mesh& mesh = _p.mesh;
     Components components(mesh.n_nodes());
-    for (const mesh::Cell& cell : mesh.cells)
-      for (int k = 1; k < 8; ++k)
+    for (const std::span<const int32_t> cell : mesh.cells)
+      for (size_t k = 1; k < cell.size(); ++k)
         components.join(cell[0], cell[k]);
 
     // The section of every cell, held in cell_body until the bodies replace it below (one
@@ -230,7 +278,7 @@ private:
 
   void sets_and_surfaces()
   {
-    mesh::HexMesh& mesh = _p.mesh;
+    mesh::Mesh& mesh = _p.mesh;
     for (auto& [name, members] : _d.node_sets)
     {
       std::vector<int32_t> nodes;
@@ -259,7 +307,13 @@ private:
         faces = faces_of_node_surface(name, surface);
       else
         for (const DeckFace& f : surface.faces)
-          faces.push_back(face_nodes(mesh.cells[f.cell], f.face));
+        {
+          FETICON_CHECK(f.face <= n_cell_faces(mesh, f.cell),
+                        surface.where.str() << ": *SURFACE " << name << " names face S" << f.face << " of element "
+                                            << _deck.element_labels[f.cell] << ", which has "
+                                            << n_cell_faces(mesh, f.cell) << " faces");
+          faces.push_back(face_nodes(mesh, f.cell, f.face));
+        }
       FETICON_CHECK(!faces.empty(), surface.where.str() << ": *SURFACE " << name << " has no faces");
       mesh.face_sets[name] = std::move(faces);
     }
@@ -270,21 +324,19 @@ private:
   /// node set `slave_nodes_NAME` restricts the contact rows to the surface's own nodes.
   std::vector<mesh::Face> faces_of_node_surface(const std::string& name, const DeckSurface& surface)
   {
-    const mesh::HexMesh& mesh = _p.mesh;
+    const mesh::Mesh& mesh = _p.mesh;
     std::vector<char> in_surface(mesh.n_nodes(), 0);
     for (int32_t n : surface.nodes)
       if (mesh_of(n) >= 0)
         in_surface[mesh_of(n)] = 1;
     std::map<std::array<int32_t, 4>, std::pair<mesh::Face, int>> candidates;
-    for (const mesh::Cell& cell : mesh.cells)
-      for (const auto& local : mesh::hex_faces)
+    for (int32_t c = 0; c < mesh.n_cells(); ++c)
+      for (int k = 0; k < n_cell_faces(mesh, c); ++k)
       {
-        mesh::Face face{cell[local[0]], cell[local[1]], cell[local[2]], cell[local[3]]};
-        if (!(in_surface[face[0]] && in_surface[face[1]] && in_surface[face[2]] && in_surface[face[3]]))
+        const mesh::Face face = local_face(mesh, c, k);
+        if (!std::all_of(face.begin(), face.end(), [&](int32_t n) { return in_surface[n] != 0; }))
           continue;
-        std::array<int32_t, 4> key = face;
-        std::sort(key.begin(), key.end());
-        auto [it, added] = candidates.emplace(key, std::pair{face, 0});
+        auto [it, added] = candidates.emplace(face_key(face), std::pair{face, 0});
         ++it->second.second;
       }
     std::vector<mesh::Face> faces;
@@ -308,18 +360,17 @@ private:
       return faces;
     // Boundary faces around the uncovered nodes: every cell face counted once is on the boundary.
     std::map<std::array<int32_t, 4>, std::pair<mesh::Face, int>> around;
-    for (const mesh::Cell& cell : mesh.cells)
-      for (const auto& local : mesh::hex_faces)
+    for (int32_t c = 0; c < mesh.n_cells(); ++c)
+      for (int k = 0; k < n_cell_faces(mesh, c); ++k)
       {
-        mesh::Face face{cell[local[0]], cell[local[1]], cell[local[2]], cell[local[3]]};
-        std::array<int32_t, 4> key = face;
-        std::sort(key.begin(), key.end());
-        auto [it, added] = around.emplace(key, std::pair{face, 0});
+        const mesh::Face face = local_face(mesh, c, k);
+        auto [it, added] = around.emplace(face_key(face), std::pair{face, 0});
         ++it->second.second;
       }
     for (const auto& [key, face_count] : around)
       if (face_count.second == 1 && !candidates.count(key) &&
-          std::any_of(key.begin(), key.end(), [&](int32_t n) { return in_surface[n] && !covered[n]; }))
+          std::any_of(face_count.first.begin(), face_count.first.end(),
+                      [&](int32_t n) { return in_surface[n] && !covered[n]; }))
         faces.push_back(face_count.first);
     _p.mesh.node_sets["slave_nodes_" + name] = std::move(nodes);
     _restricted_surfaces.insert(name);
@@ -393,7 +444,12 @@ private:
   {
     std::map<double, std::vector<mesh::Face>> groups;
     for (const auto& [face, value] : dload)
-      groups[value].push_back(face_nodes(_p.mesh.cells[face.first], face.second));
+    {
+      FETICON_CHECK(face.second <= n_cell_faces(_p.mesh, face.first),
+                    prefix << ": *DLOAD P" << face.second << " on element " << _deck.element_labels[face.first]
+                           << ", which has " << n_cell_faces(_p.mesh, face.first) << " faces");
+      groups[value].push_back(face_nodes(_p.mesh, face.first, face.second));
+    }
     std::vector<fem::FacePressure> out;
     for (auto& [value, faces] : groups)
     {

@@ -12,8 +12,19 @@ namespace feticon::io
 namespace
 {
 /// The I10 field of node and element labels.
-/// frd element type of the 8-node brick (C3D8).
-constexpr int frd_hex8 = 1;
+/// frd element types (CalculiX's frd format: 1 he8, 2 pe6, 3 te4, 4 he20, 6 te10), indexed by
+/// mesh::CellKind (hex8, tet4, tet10, hex20, wedge6).
+constexpr std::array<int, 5> frd_type = {1, 3, 6, 4, 2};
+
+/// The frd's node k of a cell is its local node frd_local(kind)[k]: CalculiX's order, except
+/// that the frd lists a he20's vertical edges (CalculiX's nodes 17-20) before its top edges
+/// (13-16), as CalculiX's own frd writer does.
+int frd_local(mesh::CellKind kind, int k)
+{
+  if (kind != mesh::CellKind::hex20 || k < 12)
+    return k;
+  return k < 16 ? k + 4 : k - 4;
+}
 
 /// A "    1U" record: keyword from column 6, value from column 24, 72 characters.
 void append_user_record(std::string& out, const std::string& keyword, const std::string& value)
@@ -123,7 +134,7 @@ FrdFields frd_fields(const std::vector<DeckOutputRequest>& outputs, std::vector<
   return fields;
 }
 
-FrdWriter::FrdWriter(const std::filesystem::path& path, const mesh::HexMesh& mesh, const Labels& node_labels,
+FrdWriter::FrdWriter(const std::filesystem::path& path, const mesh::Mesh& mesh, const Labels& node_labels,
                      const Labels& element_labels)
     : _path(path), _node_labels(node_labels), _n_nodes(mesh.n_nodes())
 {
@@ -132,7 +143,7 @@ FrdWriter::FrdWriter(const std::filesystem::path& path, const mesh::HexMesh& mes
   FETICON_CHECK(mesh.cell_body.empty() || mesh.cell_body.size() == mesh.cells.size(),
                 "frd '" << path.string() << "': mesh has " << mesh.cells.size() << " cells but "
                         << mesh.cell_body.size() << " body indices");
-  for (const mesh::Cell& cell : mesh.cells)
+  for (const std::span<const int32_t> cell : mesh.cells)
     for (const int32_t id : cell)
       FETICON_CHECK(id >= 0 && id < mesh.n_nodes(),
                     "frd '" << path.string() << "': cell node id " << id << " outside [0, " << mesh.n_nodes() << ")");
@@ -177,12 +188,18 @@ FrdWriter::FrdWriter(const std::filesystem::path& path, const mesh::HexMesh& mes
     const int32_t material = mesh.cell_body.empty() ? 1 : mesh.cell_body[c] + 1;
     text += " -1";
     append_integer(text, label_of(element_labels, c), 10);
-    append_integer(text, frd_hex8, 5);
+    append_integer(text, frd_type[static_cast<size_t>(mesh.cells.kind(c))], 5);
     append_integer(text, 0, 5);
     append_integer(text, material, 5);
     text += "\n -2";
-    for (const int32_t node : mesh.cells[c])
-      append_integer(text, label_of(node_labels, node), 10);
+    // At most 10 nodes a line (I10 fields), as CalculiX writes its 20-node elements.
+    const std::span<const int32_t> cell = mesh.cells[c];
+    for (size_t k = 0; k < cell.size(); ++k)
+    {
+      if (k > 0 && k % 10 == 0)
+        text += "\n -2";
+      append_integer(text, label_of(node_labels, cell[frd_local(mesh.cells.kind(c), static_cast<int>(k))]), 10);
+    }
     text += '\n';
     out.flush_if_full();
   }

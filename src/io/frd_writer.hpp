@@ -34,7 +34,7 @@
 #include "io/deck.hpp"
 #include "io/fixed_width.hpp"
 #include "io/result_labels.hpp"
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <cstdint>
 #include <cstdio>
@@ -90,7 +90,7 @@ public:
   /// @param[in] element_labels deck number of every mesh cell; empty: 1..n_cells
   /// @throws feticon::Error if a label vector has the wrong size, a label is outside
   ///   [1, 9999999999] (the I10 field), or the file cannot be written.
-  FrdWriter(const std::filesystem::path& path, const mesh::HexMesh& mesh, const Labels& node_labels = {},
+  FrdWriter(const std::filesystem::path& path, const mesh::Mesh& mesh, const Labels& node_labels = {},
             const Labels& element_labels = {});
   FrdWriter(const FrdWriter&) = delete;
   FrdWriter& operator=(const FrdWriter&) = delete;

@@ -170,10 +170,10 @@ std::array<int, 3> box_cells(const YAML::Node& box, const std::string& key, cons
   return {static_cast<int>(cells(0)), static_cast<int>(cells(1)), static_cast<int>(cells(2))};
 }
 
-mesh::HexMesh boxes_mesh(const YAML::Node& boxes, const Reader& r)
+mesh::Mesh boxes_mesh(const YAML::Node& boxes, const Reader& r)
 {
   FETICON_CHECK(boxes.IsSequence() && boxes.size() > 0, r.source << ": mesh.boxes must be a non-empty list of boxes");
-  mesh::HexMesh out;
+  mesh::Mesh out;
   for (size_t i = 0; i < boxes.size(); ++i)
   {
     const std::string key = "mesh.boxes." + std::to_string(i);
@@ -186,7 +186,7 @@ mesh::HexMesh boxes_mesh(const YAML::Node& boxes, const Reader& r)
     p.nx = cells[0];
     p.ny = cells[1];
     p.nz = cells[2];
-    mesh::HexMesh box = mesh::generate_box(p); // validates lengths
+    mesh::Mesh box = mesh::generate_box(p); // validates lengths
     if (i == 0)
     {
       // Sets are always <body>_<face> so that every box reads alike.

@@ -17,7 +17,6 @@ namespace feticon::io
 namespace
 {
 /// VTK cell type id of the linear hexahedron.
-constexpr uint8_t vtk_hexahedron = 12;
 
 const char* byte_order() { return std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian"; }
 
@@ -97,11 +96,11 @@ void check_fields(const std::vector<VtuField>& fields, int64_t n_entities, const
   }
 }
 
-void check_mesh(const mesh::HexMesh& mesh)
+void check_mesh(const mesh::Mesh& mesh)
 {
   FETICON_CHECK(mesh.cell_body.size() == mesh.cells.size(),
                 "VTU: mesh has " << mesh.cells.size() << " cells but " << mesh.cell_body.size() << " body indices");
-  for (const mesh::Cell& cell : mesh.cells)
+  for (const std::span<const int32_t> cell : mesh.cells)
     for (const int32_t id : cell)
       FETICON_CHECK(id >= 0 && id < mesh.n_nodes(),
                     "VTU: cell node id " << id << " outside [0, " << mesh.n_nodes() << ")");
@@ -111,7 +110,7 @@ void check_mesh(const mesh::HexMesh& mesh)
                     "VTU: node set '" << name << "' has node id " << id << " outside [0, " << mesh.n_nodes() << ")");
 }
 
-void write_piece(std::ostream& out, const mesh::HexMesh& mesh, const Eigen::Ref<const PointMatrix>& points,
+void write_piece(std::ostream& out, const mesh::Mesh& mesh, const Eigen::Ref<const PointMatrix>& points,
                  const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields)
 {
   out << "<?xml version=\"1.0\"?>\n"
@@ -141,21 +140,28 @@ void write_piece(std::ostream& out, const mesh::HexMesh& mesh, const Eigen::Ref<
       encoder.write(points.row(i).data(), 3 * sizeof(double));
   });
   out << "      </Points>\n      <Cells>\n";
+  // VTK's node k of a cell is its local node vtk_to_local[k] (cell_type.hpp).
   std::vector<int64_t> connectivity;
-  connectivity.reserve(std::size_t{8} * mesh.n_cells());
-  for (const mesh::Cell& cell : mesh.cells)
-    connectivity.insert(connectivity.end(), cell.begin(), cell.end());
-  write_vector(out, "connectivity", 1, connectivity);
+  connectivity.reserve(mesh.cells.n_node_entries());
   std::vector<int64_t> offsets(mesh.n_cells());
+  std::vector<uint8_t> types(mesh.n_cells());
   for (std::size_t c = 0; c < offsets.size(); ++c)
-    offsets[c] = 8 * static_cast<int64_t>(c + 1);
+  {
+    const mesh::CellType& type = mesh::cell_type(mesh.cells.kind(c));
+    const std::span<const int32_t> cell = mesh.cells[c];
+    for (const int local : type.vtk_to_local)
+      connectivity.push_back(cell[local]);
+    offsets[c] = static_cast<int64_t>(connectivity.size());
+    types[c] = static_cast<uint8_t>(type.vtk_type);
+  }
+  write_vector(out, "connectivity", 1, connectivity);
   write_vector(out, "offsets", 1, offsets);
-  write_vector(out, "types", 1, std::vector<uint8_t>(mesh.n_cells(), vtk_hexahedron));
+  write_vector(out, "types", 1, types);
   out << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
 }
 } // namespace
 
-void write_vtu(const std::filesystem::path& path, const mesh::HexMesh& mesh,
+void write_vtu(const std::filesystem::path& path, const mesh::Mesh& mesh,
                const Eigen::Ref<const PointMatrix>* deformed_points, const std::vector<VtuField>& point_fields,
                const std::vector<VtuField>& cell_fields)
 {
@@ -176,7 +182,7 @@ void write_vtu(const std::filesystem::path& path, const mesh::HexMesh& mesh,
   write_file_atomically(path, [&](std::ostream& out) { write_piece(out, mesh, points, point_fields, cell_fields); });
 }
 
-void write_pvtu(const std::filesystem::path& path, const std::vector<std::string>& pieces, const mesh::HexMesh& mesh,
+void write_pvtu(const std::filesystem::path& path, const std::vector<std::string>& pieces, const mesh::Mesh& mesh,
                 const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields)
 {
   std::ostringstream out;

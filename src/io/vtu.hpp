@@ -15,7 +15,7 @@
 ///   write_vtu(out / "step_0001.vtu", mesh, &deformed, {{"displacement", 3, u}}, {{"stress", 6,
 ///   s}}); series.add(1.0, "step_0001.vtu");
 
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -53,7 +53,7 @@ struct VtuField
 /// @param[in] cell_fields     one tuple per cell
 /// @throws feticon::Error naming the field if a size does not match the mesh, a name is empty or
 ///         repeated, or the file cannot be written.
-void write_vtu(const std::filesystem::path& path, const mesh::HexMesh& mesh,
+void write_vtu(const std::filesystem::path& path, const mesh::Mesh& mesh,
                const Eigen::Ref<const PointMatrix>* deformed_points, const std::vector<VtuField>& point_fields = {},
                const std::vector<VtuField>& cell_fields = {});
 
@@ -61,7 +61,7 @@ void write_vtu(const std::filesystem::path& path, const mesh::HexMesh& mesh,
 /// piece a submesh) into one dataset for ParaView.
 /// @param pieces  the piece files, relative to the directory of `path`
 /// @param mesh    any of the pieces' meshes (for the names of the generated set_* fields)
-void write_pvtu(const std::filesystem::path& path, const std::vector<std::string>& pieces, const mesh::HexMesh& mesh,
+void write_pvtu(const std::filesystem::path& path, const std::vector<std::string>& pieces, const mesh::Mesh& mesh,
                 const std::vector<VtuField>& point_fields, const std::vector<VtuField>& cell_fields);
 
 /// @brief A ParaView .pvd collection of time steps, rewritten atomically after every add(), so

@@ -34,7 +34,7 @@ double geometric_sum(double spacing, double r, int m)
 }
 } // namespace
 
-HexMesh generate_mapped_block(const std::array<int32_t, 3>& n_cells, const GridMap& point, const std::string& body_name)
+Mesh generate_mapped_block(const std::array<int32_t, 3>& n_cells, const GridMap& point, const std::string& body_name)
 {
   const auto [nx, ny, nz] = n_cells;
   FETICON_CHECK(nx >= 1 && ny >= 1 && nz >= 1,
@@ -46,7 +46,7 @@ HexMesh generate_mapped_block(const std::array<int32_t, 3>& n_cells, const GridM
                                      << " nodes, more than int32 local ids allow");
   auto node_id = [&](int32_t i, int32_t j, int32_t k) { return i + (nx + 1) * (j + (ny + 1) * k); };
 
-  HexMesh mesh;
+  Mesh mesh;
   mesh.body_names = {body_name};
   mesh.nodes.resize(n_nodes, 3);
   for (int32_t k = 0; k <= nz; ++k)
@@ -59,17 +59,18 @@ HexMesh generate_mapped_block(const std::array<int32_t, 3>& n_cells, const GridM
     for (int32_t j = 0; j < ny; ++j)
       for (int32_t i = 0; i < nx; ++i)
       {
-        const Cell cell = {
+        const Hex8Nodes cell = {
             node_id(i, j, k),     node_id(i + 1, j, k),     node_id(i + 1, j + 1, k),     node_id(i, j + 1, k),
             node_id(i, j, k + 1), node_id(i + 1, j, k + 1), node_id(i + 1, j + 1, k + 1), node_id(i, j + 1, k + 1)};
-        const double det = centre_jacobian_determinant(mesh, cell);
+        mesh.cells.add(CellKind::hex8, cell);
+        const double det = centre_jacobian_determinant(mesh, mesh.n_cells() - 1);
         FETICON_CHECK(det > 0,
                       "cell (" << i << ", " << j << ", " << k << ") of block '" << body_name
                                << "' is inverted or flat (Jacobian determinant " << det
                                << " at its centre); the node map must preserve orientation");
         auto add_face = [&](const char* name, int local_face) {
           const auto& local = hex_faces[local_face];
-          sets[name].push_back({cell[local[0]], cell[local[1]], cell[local[2]], cell[local[3]]});
+          sets[name].push_back(Face{cell[local[0]], cell[local[1]], cell[local[2]], cell[local[3]]});
         };
         // Local face numbers follow the hex_faces table: 0/1 zeta, 2/3 eta, 4/5 xi.
         if (i == 0)
@@ -84,7 +85,6 @@ HexMesh generate_mapped_block(const std::array<int32_t, 3>& n_cells, const GridM
           add_face("zmin", 0);
         if (k == nz - 1)
           add_face("zmax", 1);
-        mesh.cells.push_back(cell);
       }
   mesh.cell_body.assign(mesh.cells.size(), 0);
   for (const auto& [name, faces] : sets)
@@ -92,7 +92,7 @@ HexMesh generate_mapped_block(const std::array<int32_t, 3>& n_cells, const GridM
   return mesh;
 }
 
-HexMesh generate_box(const BoxParameters& parameters)
+Mesh generate_box(const BoxParameters& parameters)
 {
   const BoxParameters& p = parameters;
   FETICON_CHECK(p.nx >= 1 && p.ny >= 1 && p.nz >= 1,
@@ -111,7 +111,7 @@ HexMesh generate_box(const BoxParameters& parameters)
       p.body_name);
 }
 
-void append_mesh(HexMesh& target, const HexMesh& other, const std::string& prefix)
+void append_mesh(Mesh& target, const Mesh& other, const std::string& prefix)
 {
   // Check everything before changing target, so a failed append leaves it untouched.
   for (const std::string& name : other.body_names)
@@ -135,11 +135,13 @@ void append_mesh(HexMesh& target, const HexMesh& other, const std::string& prefi
   const int32_t body_offset = target.n_bodies();
   target.nodes.conservativeResize(node_offset + other.n_nodes(), 3);
   target.nodes.bottomRows(other.n_nodes()) = other.nodes;
-  for (Cell cell : other.cells)
+  std::vector<int32_t> cell;
+  for (size_t c = 0; c < other.cells.size(); ++c)
   {
-    for (int32_t& id : cell)
-      id += node_offset;
-    target.cells.push_back(cell);
+    cell.clear();
+    for (const int32_t id : other.cells[c])
+      cell.push_back(id + node_offset);
+    target.cells.add(other.cells.kind(c), cell);
   }
   for (const int32_t body : other.cell_body)
     target.cell_body.push_back(body + body_offset);

@@ -9,11 +9,11 @@
 /// node sets) "xmin" (i = 0), "xmax" (i = n_x), "ymin", "ymax", "zmin", "zmax".
 ///
 /// Usage (two blocks for a contact test):
-///   HexMesh mesh = generate_box({.lengths = {1, 1, 1}, .nx = 4, .ny = 4, .nz = 4, .body_name =
+///   Mesh mesh = generate_box({.lengths = {1, 1, 1}, .nx = 4, .ny = 4, .nz = 4, .body_name =
 ///   "lower"}); append_mesh(mesh, generate_box({.origin = {0, 0, 1}, .body_name = "upper"}),
 ///   "upper_");
 
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <functional>
 #include <string>
@@ -31,8 +31,7 @@ using GridMap = std::function<Eigen::Vector3d(int32_t i, int32_t j, int32_t k)>;
 /// @param[in] point     node placement (m); must preserve orientation, checked at every cell centre
 /// @param[in] body_name name of the single body
 /// @return mesh with the six side sets "xmin" .. "zmax" (faces outward, and node sets)
-HexMesh generate_mapped_block(const std::array<int32_t, 3>& n_cells, const GridMap& point,
-                              const std::string& body_name);
+Mesh generate_mapped_block(const std::array<int32_t, 3>& n_cells, const GridMap& point, const std::string& body_name);
 
 /// Axis-aligned box [origin, origin + lengths] meshed by nx * ny * nz equal cells.
 struct BoxParameters
@@ -49,14 +48,14 @@ struct BoxParameters
 /// @brief Structured box mesh, one body, with the six side sets "xmin" .. "zmax" (see file
 /// comment).
 /// @throws feticon::Error for n < 1 or a non-positive length.
-HexMesh generate_box(const BoxParameters& parameters);
+Mesh generate_box(const BoxParameters& parameters);
 
 /// @brief Appends `other` as new bodies of `target`.
 ///
 /// Node and cell ids of `other` are shifted by the current counts of `target`, its body indices by
 /// target.n_bodies(), and its node and face sets are renamed `prefix + name`.
 /// @throws feticon::Error if a body name or a renamed set already exists in `target`.
-void append_mesh(HexMesh& target, const HexMesh& other, const std::string& prefix);
+void append_mesh(Mesh& target, const Mesh& other, const std::string& prefix);
 
 /// @brief Graded 1D node positions 0 = t_0 < t_1 < ... < t_n = length.
 ///

@@ -195,23 +195,6 @@ const std::array<CellType, 5>& table()
 }
 } // namespace
 
-int face_corners(FaceKind kind) { return kind == FaceKind::tri3 || kind == FaceKind::tri6 ? 3 : 4; }
-int face_nodes(FaceKind kind)
-{
-  switch (kind)
-  {
-  case FaceKind::tri3:
-    return 3;
-  case FaceKind::tri6:
-    return 6;
-  case FaceKind::quad4:
-    return 4;
-  case FaceKind::quad8:
-    return 8;
-  }
-  return 0;
-}
-
 const CellType& cell_type(CellKind kind) { return table()[static_cast<size_t>(kind)]; }
 
 const CellType* cell_type_of_calculix_name(std::string_view name)

@@ -39,8 +39,12 @@ enum class FaceKind : uint8_t
 };
 
 /// Corners of a face type (3 or 4) and all its nodes (3, 6, 4 or 8).
-int face_corners(FaceKind kind);
-int face_nodes(FaceKind kind);
+constexpr int face_corners(FaceKind kind) { return kind == FaceKind::tri3 || kind == FaceKind::tri6 ? 3 : 4; }
+constexpr int face_nodes(FaceKind kind)
+{
+  constexpr std::array<int, 4> nodes = {3, 6, 4, 8};
+  return nodes[static_cast<size_t>(kind)];
+}
 
 struct CellFace
 {
@@ -66,6 +70,13 @@ struct CellType
   /// VTK's node k is local node vtk_to_local[k].
   std::vector<int> vtk_to_local;
 };
+
+/// Node count of a cell type (cell_type(kind).n_nodes, without the table lookup).
+constexpr int cell_nodes(CellKind kind)
+{
+  constexpr std::array<int, 5> nodes = {8, 4, 10, 20, 6};
+  return nodes[static_cast<size_t>(kind)];
+}
 
 /// The table entry of `kind`.
 const CellType& cell_type(CellKind kind);

@@ -107,7 +107,7 @@ void straighten_corners(std::vector<Eigen::Vector2d>& points, const std::vector<
 }
 } // namespace
 
-HexMesh extrude_cross_section(const CrossSection& section, const SizeField& size, double thickness)
+Mesh extrude_cross_section(const CrossSection& section, const SizeField& size, double thickness)
 {
   FETICON_CHECK(thickness > 0, "cross section of " << section.body << ": thickness " << thickness << " must be > 0");
   QuadSection gmsh_mesh;
@@ -123,7 +123,7 @@ HexMesh extrude_cross_section(const CrossSection& section, const SizeField& size
       on_boundary[a] = on_boundary[b] = 1;
   straighten_corners(points, quads, on_boundary);
 
-  HexMesh mesh;
+  Mesh mesh;
   mesh.body_names = {section.body};
   mesh.nodes.resize(2 * n, 3);
   for (int32_t i = 0; i < n; ++i)
@@ -133,11 +133,11 @@ HexMesh extrude_cross_section(const CrossSection& section, const SizeField& size
   std::set<std::pair<int32_t, int32_t>> directed;
   for (const auto& q : quads)
   {
-    mesh.cells.push_back({q[0], q[1], q[2], q[3], q[0] + n, q[1] + n, q[2] + n, q[3] + n});
+    mesh.cells.add(CellKind::hex8, Hex8Nodes{q[0], q[1], q[2], q[3], q[0] + n, q[1] + n, q[2] + n, q[3] + n});
     for (int k = 0; k < 4; ++k)
       directed.insert({q[k], q[(k + 1) % 4]});
-    mesh.face_sets["zmin"].push_back({q[0], q[3], q[2], q[1]});
-    mesh.face_sets["zmax"].push_back({q[0] + n, q[1] + n, q[2] + n, q[3] + n});
+    mesh.face_sets["zmin"].push_back(Face{q[0], q[3], q[2], q[1]});
+    mesh.face_sets["zmax"].push_back(Face{q[0] + n, q[1] + n, q[2] + n, q[3] + n});
   }
   mesh.cell_body.assign(mesh.cells.size(), 0);
   for (size_t c = 0; c < section.curves.size(); ++c)
@@ -151,13 +151,13 @@ HexMesh extrude_cross_section(const CrossSection& section, const SizeField& size
                     "cross section of " << section.body << ": a boundary edge of '" << section.curves[c].set
                                         << "' is no cell edge");
       // (x_b - x_a) x e_z points to the right of a -> b: out of the body.
-      faces.push_back({a, b, b + n, a + n});
+      faces.push_back(Face{a, b, b + n, a + n});
     }
   }
   for (const auto& [name, faces] : mesh.face_sets)
     mesh.add_node_set_from_faces(name, name);
-  for (const Cell& cell : mesh.cells)
-    FETICON_CHECK(centre_jacobian_determinant(mesh, cell) > 0,
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    FETICON_CHECK(centre_jacobian_determinant(mesh, c) > 0,
                   "cross section of " << section.body << ": Gmsh made an inverted cell");
   return mesh;
 }

@@ -10,7 +10,7 @@
 /// form the face set of that name (outward), and "zmin" / "zmax" are the layer's two faces.
 /// Each face set also becomes the node set of the same name.
 
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <functional>
 #include <string>
@@ -41,5 +41,5 @@ using SizeField = std::function<double(double x, double y)>;
 /// @brief Meshes `section` with quadrilaterals of the size `size` and extrudes them into one
 /// layer of hex8 cells of thickness `thickness` (m) along z.
 /// @throws feticon::Error if Gmsh fails or leaves a cell that is not a quadrilateral.
-HexMesh extrude_cross_section(const CrossSection& section, const SizeField& size, double thickness);
+Mesh extrude_cross_section(const CrossSection& section, const SizeField& size, double thickness);
 } // namespace feticon::mesh

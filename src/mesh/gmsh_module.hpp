@@ -12,7 +12,7 @@
 /// success, and the caller throws it as feticon::Error.
 
 #include "mesh/cross_section.hpp"
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <array>
 #include <filesystem>
@@ -36,7 +36,7 @@ struct GmshModule
   int abi_version = 0;
   std::string (*mesh_cross_section)(const CrossSection& section, const SizeField& size, QuadSection& out) = nullptr;
   /// Reads the hexahedra, bodies and sets of a .msh file that precheck_gmsh_file accepted.
-  std::string (*read_model)(const std::filesystem::path& path, const std::string& where, HexMesh& out) = nullptr;
+  std::string (*read_model)(const std::filesystem::path& path, const std::string& where, Mesh& out) = nullptr;
 };
 
 /// Changes whenever GmshModule or the types it passes change: a stale module is refused.

@@ -13,7 +13,7 @@
 
 namespace feticon::mesh
 {
-HexMesh read_gmsh(const std::filesystem::path& path, bool* from_cache)
+Mesh read_gmsh(const std::filesystem::path& path, bool* from_cache)
 {
   const std::string where = "Gmsh file '" + path.string() + "'";
   std::error_code error;
@@ -39,7 +39,7 @@ HexMesh read_gmsh(const std::filesystem::path& path, bool* from_cache)
       [&] {
     // What would crash libgmsh's reader is an input error here.
     precheck_gmsh_file(path, where);
-    HexMesh mesh;
+    Mesh mesh;
     const std::string failure = gmsh_module().read_model(path, where, mesh);
     FETICON_CHECK(failure.empty(), failure);
     return mesh;

@@ -1,5 +1,5 @@
 #pragma once
-/// @file Reading Gmsh .msh files (format 2.2 or 4.x, ASCII or binary) into a HexMesh through the
+/// @file Reading Gmsh .msh files (format 2.2 or 4.x, ASCII or binary) into a Mesh through the
 /// Gmsh C++ API, called in the Gmsh module (gmsh_module.hpp; the reading is in
 /// gmsh/model_reader.cpp). A file read before comes from the mesh cache (mesh_cache.hpp).
 ///
@@ -27,7 +27,7 @@
 ///     meshing a model drawn in mm).
 ///
 /// Usage:
-///   const feticon::mesh::HexMesh mesh = feticon::mesh::read_gmsh("examples/x/x.msh");
+///   const feticon::mesh::Mesh mesh = feticon::mesh::read_gmsh("examples/x/x.msh");
 ///   const auto& contact_faces = mesh.face_set("punch_contact");
 ///
 /// Gmsh keeps process-wide state: the module initializes and finalizes the Gmsh API itself, so it
@@ -35,7 +35,7 @@
 /// initialized. Gmsh's own messages are silenced (General.Terminal = 0, no user option files
 /// read); its errors become feticon::Error.
 
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <filesystem>
 
@@ -50,5 +50,5 @@ namespace feticon::mesh
 ///         3D groups or quad4 in 2D groups, a quadrangle that is not a boundary face of a
 ///         hexahedron, bodies sharing nodes, inverted or degenerate cells.
 /// @param[out] from_cache whether the mesh came from the mesh cache (may be null)
-HexMesh read_gmsh(const std::filesystem::path& path, bool* from_cache = nullptr);
+Mesh read_gmsh(const std::filesystem::path& path, bool* from_cache = nullptr);
 } // namespace feticon::mesh

@@ -22,7 +22,7 @@ namespace feticon::mesh
 {
 namespace
 {
-constexpr char magic[] = "feticon mesh cache 1\n";
+constexpr char magic[] = "feticon mesh cache 2\n";
 
 struct Fnv1a
 {
@@ -99,12 +99,68 @@ void put_vector(std::string& out, const std::vector<T>& v)
   out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
 }
 
-std::string serialize(const HexMesh& mesh)
+/// Cells as their kinds and their node lists back to back (the offsets follow from the kinds),
+/// faces as the kind and eight node slots: plain integers, no padding bytes in the checksum.
+using CachedFace = std::array<int32_t, 9>;
+
+std::vector<uint8_t> cell_kinds(const CellList& cells)
+{
+  std::vector<uint8_t> out(cells.size());
+  for (size_t c = 0; c < cells.size(); ++c)
+    out[c] = static_cast<uint8_t>(cells.kind(c));
+  return out;
+}
+
+std::vector<int32_t> cell_node_entries(const CellList& cells)
+{
+  std::vector<int32_t> out;
+  out.reserve(cells.n_node_entries());
+  for (const std::span<const int32_t> cell : cells)
+    out.insert(out.end(), cell.begin(), cell.end());
+  return out;
+}
+
+std::vector<CachedFace> cached_faces(const std::vector<Face>& faces)
+{
+  std::vector<CachedFace> out(faces.size());
+  for (size_t f = 0; f < faces.size(); ++f)
+  {
+    out[f][0] = static_cast<int32_t>(faces[f].kind);
+    std::copy(faces[f].nodes.begin(), faces[f].nodes.end(), out[f].begin() + 1);
+  }
+  return out;
+}
+
+/// The cell list of cached kinds and nodes; false if they do not fit together or name a node
+/// outside [0, n_nodes).
+bool restore_cells(const std::vector<uint8_t>& kinds, const std::vector<int32_t>& nodes, int32_t n_nodes,
+                   CellList& cells)
+{
+  size_t at = 0;
+  cells.reserve(kinds.size(), nodes.size());
+  for (const uint8_t kind : kinds)
+  {
+    if (kind >= all_cell_kinds.size())
+      return false;
+    const auto n = static_cast<size_t>(cell_nodes(static_cast<CellKind>(kind)));
+    if (nodes.size() - at < n)
+      return false;
+    const std::span<const int32_t> cell(nodes.data() + at, n);
+    if (!std::ranges::all_of(cell, [n_nodes](int32_t id) { return id >= 0 && id < n_nodes; }))
+      return false;
+    cells.add(static_cast<CellKind>(kind), cell);
+    at += n;
+  }
+  return at == nodes.size();
+}
+
+std::string serialize(const Mesh& mesh)
 {
   std::string out;
   put<uint64_t>(out, static_cast<uint64_t>(mesh.nodes.rows()));
   out.append(reinterpret_cast<const char*>(mesh.nodes.data()), mesh.nodes.size() * sizeof(double));
-  put_vector(out, mesh.cells);
+  put_vector(out, cell_kinds(mesh.cells));
+  put_vector(out, cell_node_entries(mesh.cells));
   put_vector(out, mesh.cell_body);
   put<uint64_t>(out, mesh.body_names.size());
   for (const std::string& name : mesh.body_names)
@@ -119,7 +175,7 @@ std::string serialize(const HexMesh& mesh)
   for (const auto& [name, faces] : mesh.face_sets)
   {
     put_string(out, name);
-    put_vector(out, faces);
+    put_vector(out, cached_faces(faces));
   }
   return out;
 }
@@ -191,15 +247,17 @@ private:
   size_t _end;
 };
 
-bool deserialize(const std::string& data, HexMesh& mesh)
+bool deserialize(const std::string& data, Mesh& mesh)
 {
   Reader in(data);
   uint64_t rows = 0;
   if (!in.get(rows) || rows > data.size() / (3 * sizeof(double)))
     return false;
   mesh.nodes.resize(static_cast<Eigen::Index>(rows), 3);
-  if (!in.get_bytes(mesh.nodes.data(), 3 * rows, sizeof(double)) || !in.get_vector(mesh.cells) ||
-      !in.get_vector(mesh.cell_body))
+  std::vector<uint8_t> kinds;
+  std::vector<int32_t> cell_nodes;
+  if (!in.get_bytes(mesh.nodes.data(), 3 * rows, sizeof(double)) || !in.get_vector(kinds) ||
+      !in.get_vector(cell_nodes) || !in.get_vector(mesh.cell_body))
     return false;
   uint64_t count = 0;
   if (!in.get(count) || count > data.size())
@@ -208,14 +266,22 @@ bool deserialize(const std::string& data, HexMesh& mesh)
   for (std::string& name : mesh.body_names)
     if (!in.get_string(name))
       return false;
-  if (!in.get_named_vectors(mesh.node_sets) || !in.get_named_vectors(mesh.face_sets))
+  std::map<std::string, std::vector<CachedFace>> face_sets;
+  if (!in.get_named_vectors(mesh.node_sets) || !in.get_named_vectors(face_sets))
     return false;
   // Ids in range, so that a damaged entry that passed the checksum cannot crash a later step.
   const auto n = static_cast<int32_t>(rows);
   const auto in_range = [n](int32_t id) { return id >= 0 && id < n; };
-  for (const Cell& cell : mesh.cells)
-    if (!std::ranges::all_of(cell, in_range))
-      return false;
+  if (!restore_cells(kinds, cell_nodes, n, mesh.cells))
+    return false;
+  for (const auto& [name, faces] : face_sets)
+    for (const CachedFace& face : faces)
+    {
+      if (face[0] < 0 || face[0] > static_cast<int32_t>(FaceKind::quad8))
+        return false;
+      const auto kind = static_cast<FaceKind>(face[0]);
+      mesh.face_sets[name].push_back(Face(kind, std::span<const int32_t>(face.data() + 1, face_nodes(kind))));
+    }
   for (const auto& [name, nodes] : mesh.node_sets)
     if (!std::ranges::all_of(nodes, in_range))
       return false;
@@ -240,7 +306,7 @@ std::string entry_content(const std::string& key, const std::string& payload)
   return out;
 }
 
-bool read_entry(const std::filesystem::path& path, const std::string& key, HexMesh& mesh)
+bool read_entry(const std::filesystem::path& path, const std::string& key, Mesh& mesh)
 {
   std::ifstream file(path, std::ios::binary);
   if (!file)
@@ -259,7 +325,7 @@ bool read_entry(const std::filesystem::path& path, const std::string& key, HexMe
   std::string stored_key, payload;
   if (!in.get_string(stored_key) || stored_key != key || !in.get_string(payload) || !in.at_end())
     return false;
-  HexMesh read;
+  Mesh read;
   if (!deserialize(payload, read))
     return false;
   mesh = std::move(read);
@@ -321,8 +387,8 @@ MeshCacheLocation mesh_cache_location()
   return location;
 }
 
-HexMesh cached_mesh(const MeshCacheLocation& location, const std::string& key, const std::function<HexMesh()>& build,
-                    bool* hit)
+Mesh cached_mesh(const MeshCacheLocation& location, const std::string& key, const std::function<Mesh()>& build,
+                 bool* hit)
 {
   if (hit)
     *hit = false;
@@ -332,7 +398,7 @@ HexMesh cached_mesh(const MeshCacheLocation& location, const std::string& key, c
   Fnv1a name;
   name.add(full_key.data(), full_key.size());
   const std::filesystem::path path = location.folder / (name.hex() + ".mesh");
-  HexMesh mesh;
+  Mesh mesh;
   if (read_entry(path, full_key, mesh))
   {
     std::error_code error; // the time of last use orders the pruning
@@ -355,7 +421,7 @@ HexMesh cached_mesh(const MeshCacheLocation& location, const std::string& key, c
   return mesh;
 }
 
-HexMesh cached_mesh(const std::string& key, const std::function<HexMesh()>& build, bool* hit)
+Mesh cached_mesh(const std::string& key, const std::function<Mesh()>& build, bool* hit)
 {
   return cached_mesh(mesh_cache_location(), key, build, hit);
 }

@@ -5,7 +5,7 @@
 /// Making the graded Hertz mesh and loading libgmsh (mesh/gmsh_module.hpp) are most of a small
 /// run (docs/measurements.md), and the same work again in every run of a load or material
 /// study on one mesh. A cached mesh is a binary
-/// copy of the HexMesh, so a hit gives the identical mesh, bit for bit.
+/// copy of the Mesh, so a hit gives the identical mesh, bit for bit.
 ///
 /// An entry is found by its key, the text of every input of the mesh, together with the build
 /// id of the running executable, so that a rebuilt feticon (whose mesher may have changed)
@@ -15,7 +15,7 @@
 /// $XDG_CACHE_HOME/feticon/meshes, else ~/.cache/feticon/meshes; FETICON_MESH_CACHE=off turns
 /// the cache off. Its oldest entries are removed when it holds more than 256 MiB.
 
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -39,11 +39,11 @@ MeshCacheLocation mesh_cache_location();
 /// Errors of build() propagate and store nothing; a cache that cannot be read or written
 /// only costs the rebuild (a failed write is one warning).
 /// @param[out] hit whether the mesh came from the cache (may be null)
-HexMesh cached_mesh(const MeshCacheLocation& location, const std::string& key, const std::function<HexMesh()>& build,
-                    bool* hit = nullptr);
+Mesh cached_mesh(const MeshCacheLocation& location, const std::string& key, const std::function<Mesh()>& build,
+                 bool* hit = nullptr);
 
 /// The same with mesh_cache_location().
-HexMesh cached_mesh(const std::string& key, const std::function<HexMesh()>& build, bool* hit = nullptr);
+Mesh cached_mesh(const std::string& key, const std::function<Mesh()>& build, bool* hit = nullptr);
 
 /// Hexadecimal 64-bit FNV-1a digest of a file's bytes (a cache key for a mesh read from it);
 /// throws feticon::Error if it cannot be read.

@@ -6,19 +6,22 @@
 
 namespace feticon::mesh
 {
-MeshQuality mesh_quality(const HexMesh& mesh, bool in_plane)
+MeshQuality mesh_quality(const Mesh& mesh, bool in_plane)
 {
   MeshQuality q;
   q.min_angle_deg = std::numeric_limits<double>::infinity();
-  const int n_faces = in_plane ? 1 : 6; // hex_faces[0] is the zeta = -1 face
-  for (const Cell& cell : mesh.cells)
+  for (size_t c = 0; c < mesh.cells.size(); ++c)
   {
+    const std::span<const int32_t> cell = mesh.cells[c];
+    const CellType& type = cell_type(mesh.cells.kind(c));
+    // A hex8's face S1 is its zeta = -1 face, the plane-strain section.
+    const size_t n_faces = in_plane ? 1 : type.faces.size();
     double shortest = std::numeric_limits<double>::infinity(), longest = 0;
-    for (int f = 0; f < n_faces; ++f)
-      for (int k = 0; k < 4; ++k)
+    for (size_t f = 0; f < n_faces; ++f)
+      for (int k = 0, m = face_corners(type.faces[f].kind); k < m; ++k)
       {
-        auto at = [&](int j) { return Eigen::Vector3d(mesh.nodes.row(cell[hex_faces[f][(k + j) % 4]])); };
-        const Eigen::Vector3d to_next = at(1) - at(0), to_previous = at(3) - at(0);
+        auto at = [&](int j) { return Eigen::Vector3d(mesh.nodes.row(cell[type.faces[f].nodes[(k + j) % m]])); };
+        const Eigen::Vector3d to_next = at(1) - at(0), to_previous = at(m - 1) - at(0);
         shortest = std::min(shortest, to_next.norm());
         longest = std::max(longest, to_next.norm());
         const double angle = std::atan2(to_next.cross(to_previous).norm(), to_next.dot(to_previous)) * 180 / M_PI;

@@ -1,8 +1,8 @@
 #pragma once
-/// @file Shape measures of a hex8 mesh: the worst aspect ratio and the extreme corner angles of
+/// @file Shape measures of a mesh: the worst aspect ratio and the extreme corner angles of
 /// its cells, reported in summary.json so that a needle or a flattened cell is visible.
 
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace feticon::mesh
 {
@@ -16,5 +16,5 @@ struct MeshQuality
 /// @brief The measures over all cells.
 /// @param in_plane true for a plane-strain layer: only the cells' z = min faces count (their
 ///   4 edges and corners), since the layer thickness is no element size of the 2D problem.
-MeshQuality mesh_quality(const HexMesh& mesh, bool in_plane);
+MeshQuality mesh_quality(const Mesh& mesh, bool in_plane);
 } // namespace feticon::mesh

@@ -134,7 +134,7 @@ void add_boundary_faces(const std::vector<uint8_t>& flags, OctantBall& out)
 {
   // Boundary faces: a cell face whose four nodes lie on one of the octant's boundary surfaces
   // is a face of that surface (hex_faces are outward for positively oriented cells).
-  for (const Cell& cell : out.cells)
+  for (const Hex8Nodes& cell : out.cells)
     for (const auto& local : hex_faces)
     {
       const Face f{cell[local[0]], cell[local[1]], cell[local[2]], cell[local[3]]};

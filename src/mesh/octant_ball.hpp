@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace feticon::mesh
 {
@@ -36,7 +36,7 @@ struct OctantBallParameters
 struct OctantBall
 {
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> nodes;
-  std::vector<Cell> cells;
+  std::vector<Hex8Nodes> cells;
   std::vector<Face> flat;       ///< boundary faces on d = 0, oriented outward (-d)
   std::vector<Face> outer;      ///< boundary faces on the sphere |p| = R
   std::vector<Face> symmetry_x; ///< boundary faces on x = 0

@@ -4,11 +4,13 @@
 #include "contact/contact_constraints.hpp"
 #include "contact/tangential_rows.hpp"
 #include "fem/loads.hpp"
+#include "fem/reference_face.hpp"
 #include "fem/stress.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -22,21 +24,97 @@ double total_normal_force(const ContactSolution& solution)
   return total;
 }
 
+namespace
+{
+/// The slave surface in the configuration of the kinematics (see slave_tributary_areas).
+mesh::Mesh pressure_surface(const fem::Problem& problem, const la::Vector& u, fem::Kinematics kinematics)
+{
+  mesh::Mesh surface = problem.mesh;
+  if (kinematics == fem::Kinematics::total_lagrangian)
+    for (int32_t n = 0; n < surface.n_nodes(); ++n)
+      surface.nodes.row(n) += u.segment<3>(3 * n).transpose();
+  return surface;
+}
+
+} // namespace
+
 la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& u, fem::Kinematics kinematics)
 {
   // The x-component of the consistent load of a unit x-traction, on the surface the kinematics
   // has: the small-strain model has no deformed surface (dividing by it put the surface strain,
   // ~0.9 % at the Hertz centre, into the pressure).
-  mesh::HexMesh surface = problem.mesh;
-  if (kinematics == fem::Kinematics::total_lagrangian)
-    for (int32_t n = 0; n < surface.n_nodes(); ++n)
-      surface.nodes.row(n) += u.segment<3>(3 * n).transpose();
+  const mesh::Mesh surface = pressure_surface(problem, u, kinematics);
+  // Quadratic faces' consistent loads vanish at corners (tri6): theirs are lumped from linear
+  // sub-facets (contact/face_geometry.hpp), so that every slave node has a positive area.
+  std::vector<mesh::Face> quad4, others;
+  for (const mesh::Face& face : surface.face_set(problem.contacts[0].slave))
+    (face.kind == mesh::FaceKind::quad4 ? quad4 : others).push_back(face);
   la::Vector load = la::Vector::Zero(3 * surface.n_nodes());
-  fem::add_face_traction(surface, surface.face_set(problem.contacts[0].slave), Eigen::Vector3d(1, 0, 0), load);
+  fem::add_face_traction(surface, quad4, Eigen::Vector3d(1, 0, 0), load);
   la::Vector areas(surface.n_nodes());
   for (int32_t n = 0; n < surface.n_nodes(); ++n)
     areas(n) = load(3 * n);
+  for (const mesh::Face& face : others)
+  {
+    const Eigen::VectorXd lumped = contact::face_lumped_areas(contact::current_face_geometry(surface, {}, face));
+    for (int a = 0; a < face.size(); ++a)
+      areas(face[a]) += lumped(a);
+  }
   return areas;
+}
+
+namespace
+{
+/// Face-averaged pressures at the nodes of the quadratic slave faces (slave_nodal_pressures),
+/// written into `pressure` at those nodes.
+void average_quadratic_face_pressures(const mesh::Mesh& surface, const std::vector<mesh::Face>& faces,
+                                      const la::Vector& nodal_force, la::Vector& pressure)
+{
+  // Each node's force goes to its faces in proportion to its lumped area in each.
+  std::vector<Eigen::VectorXd> lumped;
+  std::map<int32_t, double> node_area;
+  for (const mesh::Face& face : faces)
+  {
+    lumped.push_back(contact::face_lumped_areas(contact::current_face_geometry(surface, {}, face)));
+    for (int a = 0; a < face.size(); ++a)
+      node_area[face[a]] += lumped.back()(a);
+  }
+  std::map<int32_t, std::pair<double, double>> force_and_area; // over the faces around each node
+  for (size_t f = 0; f < faces.size(); ++f)
+  {
+    double face_force = 0;
+    for (int a = 0; a < faces[f].size(); ++a)
+      face_force += nodal_force(faces[f][a]) * lumped[f](a) / node_area.at(faces[f][a]);
+    for (int a = 0; a < faces[f].size(); ++a)
+    {
+      auto& [force, area] = force_and_area[faces[f][a]];
+      force += face_force;
+      area += lumped[f].sum();
+    }
+  }
+  for (const auto& [node, force_area] : force_and_area)
+    pressure(node) = force_area.first / force_area.second;
+}
+} // namespace
+
+la::Vector slave_nodal_pressures(const fem::Problem& problem, const ContactSolution& solution,
+                                 fem::Kinematics kinematics)
+{
+  const auto& rows = solution.constraints;
+  la::Vector force = la::Vector::Zero(problem.mesh.n_nodes());
+  for (size_t i = 0; i < rows.slave_node.size(); ++i)
+    force(rows.slave_node[i]) += solution.contact_lambda(static_cast<la::Index>(i)) / rows.row_norm[i];
+  const la::Vector areas = slave_tributary_areas(problem, solution.u, kinematics);
+  la::Vector pressure = la::Vector::Zero(problem.mesh.n_nodes());
+  for (int32_t n = 0; n < problem.mesh.n_nodes(); ++n)
+    pressure(n) = areas(n) > 0 ? force(n) / areas(n) : 0.0;
+  std::vector<mesh::Face> quadratic;
+  for (const mesh::Face& face : problem.mesh.face_set(problem.contacts[0].slave))
+    if (face.kind == mesh::FaceKind::tri6 || face.kind == mesh::FaceKind::quad8)
+      quadratic.push_back(face);
+  if (!quadratic.empty())
+    average_quadratic_face_pressures(pressure_surface(problem, solution.u, kinematics), quadratic, force, pressure);
+  return pressure;
 }
 
 std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, const ContactSolution& solution,
@@ -99,6 +177,12 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
          std::set<int32_t>(solution.tangential.slave_node.begin(), solution.tangential.slave_node.end()))
       by_x[key_of(node)].friction_force += f_T.segment<3>(3 * node);
   }
+  // 3D samples are nodes: those of quadratic faces take the L2 projection.
+  std::optional<la::Vector> quadratic_pressure;
+  if (!plane_strain && std::ranges::any_of(problem.mesh.face_set(pair.slave), [](const mesh::Face& f) {
+        return f.kind == mesh::FaceKind::tri6 || f.kind == mesh::FaceKind::quad8;
+      }))
+    quadratic_pressure = slave_nodal_pressures(problem, solution, kinematics);
   std::vector<PressureSample> out;
   for (auto& [key, s] : by_x)
   {
@@ -107,6 +191,8 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
     if (rows_in_sample[key] > 0)
       s.stress_pressure /= rows_in_sample[key];
     s.pressure = s.area > 0 ? s.force / s.area : 0;
+    if (quadratic_pressure)
+      s.pressure = (*quadratic_pressure)(std::get<3>(key));
     s.shear = s.area > 0 ? Eigen::Vector3d(s.friction_force / s.area) : Eigen::Vector3d::Zero();
     const double bound = friction.model == FrictionModel::tresca ? friction.slip_bound * s.area
         : friction.model == FrictionModel::coulomb               ? friction.coefficient * std::max(s.force, 0.0)

@@ -48,6 +48,18 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
 /// 0 off it): reference surface with linear kinematics, current one (X + u) otherwise.
 la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& u, fem::Kinematics kinematics);
 
+/// Contact pressure at every mesh node of the slave surface of pair 0 (Pa; 0 off it), on the
+/// surface of slave_tributary_areas. Nodes of linear faces: normal force over tributary area.
+/// Nodes of quadratic faces (tri6, quad8), whose forces are near consistent nodal loads (a
+/// uniform pressure's are zero at a tri6's corners, A/3 at its midsides), which force over area
+/// would turn into 0 at corners and 4/3 p at midsides: the mean pressure of the faces around
+/// the node, each face's pressure its share of its nodes' forces (in proportion to their
+/// lumped areas, contact/face_geometry.hpp) over its area. A uniform pressure comes back
+/// exactly; the L2 projection M p = f, tried first, blew the corners' small forces up to 2.5 p0
+/// on the tet10 sphere (docs/elements.md).
+la::Vector slave_nodal_pressures(const fem::Problem& problem, const ContactSolution& solution,
+                                 fem::Kinematics kinematics);
+
 /// Total normal contact force (N): sum of lambda_i / ||b_i||.
 double total_normal_force(const ContactSolution& solution);
 

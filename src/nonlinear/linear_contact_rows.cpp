@@ -21,7 +21,7 @@ la::Vector linearized_gaps(const contact::ContactConstraints& rows, const la::Ve
 }
 } // namespace
 
-LinearContactRows::LinearContactRows(const mesh::HexMesh& mesh, const std::string& master,
+LinearContactRows::LinearContactRows(const mesh::Mesh& mesh, const std::string& master,
                                      contact::ContactConstraints candidates, double band)
     : _candidates(std::move(candidates))
 {
@@ -31,8 +31,8 @@ LinearContactRows::LinearContactRows(const mesh::HexMesh& mesh, const std::strin
   double smallest = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < n; ++i)
   {
-    const auto quad = contact::current_face_coordinates(mesh, {}, faces[_candidates.master_face[i]]);
-    _band_gap[i] = band * contact::face_diagonal(quad);
+    _band_gap[i] =
+        band * contact::face_size(contact::current_face_geometry(mesh, {}, faces[_candidates.master_face[i]]));
     smallest = std::min(smallest, _candidates.gap[i]);
   }
   const double contact_level = std::max(smallest, 0.0);

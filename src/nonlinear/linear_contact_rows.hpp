@@ -20,7 +20,7 @@
 /// (a convex QP whose solution with fewer constraints satisfies the others).
 
 #include "contact/contact_constraints.hpp"
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <vector>
 
@@ -31,7 +31,7 @@ class LinearContactRows
 public:
   /// @param candidates rows at the reference configuration (u = 0)
   /// @param band       the near-contact band in master face diagonals
-  LinearContactRows(const mesh::HexMesh& mesh, const std::string& master, contact::ContactConstraints candidates,
+  LinearContactRows(const mesh::Mesh& mesh, const std::string& master, contact::ContactConstraints candidates,
                     double band);
 
   /// The selected rows with c = c_ref - B u (u global, 3 per node).

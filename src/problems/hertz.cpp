@@ -17,7 +17,7 @@ namespace
 /// cancels it: its moment int x t_y dx over [-Xc, Xc] is Q R1 and its resultant 0. As
 /// consistent nodal forces of the load faces (exact for a linear traction: sum x_i f_i =
 /// int x t_y). `force` = Q times the thickness (N).
-std::vector<fem::NodalForce> moment_free_couple(const mesh::HexMesh& mesh, double force, double radius)
+std::vector<fem::NodalForce> moment_free_couple(const mesh::Mesh& mesh, double force, double radius)
 {
   double half_width = 0;
   for (const mesh::Face& face : mesh.face_set("load"))

@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "fem/loads.hpp"
+#include "mesh/cell_conversion.hpp"
 #include "mesh/octant_ball.hpp"
 
 #include <algorithm>
@@ -15,7 +16,7 @@ namespace
 /// `reflect` when `place` reverses the orientation (then cells and faces are reordered so
 /// that they stay positive and outward).
 template <class Place>
-void append_body(mesh::HexMesh& mesh, const mesh::OctantBall& ball, const std::string& name, bool reflect, Place place,
+void append_body(mesh::Mesh& mesh, const mesh::OctantBall& ball, const std::string& name, bool reflect, Place place,
                  const std::string& flat_set, const std::string& outer_set)
 {
   const int32_t offset = mesh.n_nodes();
@@ -24,12 +25,12 @@ void append_body(mesh::HexMesh& mesh, const mesh::OctantBall& ball, const std::s
   mesh.nodes.conservativeResize(offset + ball.nodes.rows(), 3);
   for (Eigen::Index i = 0; i < ball.nodes.rows(); ++i)
     mesh.nodes.row(offset + i) = place(Eigen::Vector3d(ball.nodes.row(i))).transpose();
-  for (const mesh::Cell& c : ball.cells)
+  for (const mesh::Hex8Nodes& c : ball.cells)
   {
-    mesh::Cell cell;
+    mesh::Hex8Nodes cell;
     for (int k = 0; k < 8; ++k)
       cell[k] = offset + c[reflect ? (k + 4) % 8 : k];
-    mesh.cells.push_back(cell);
+    mesh.cells.add(mesh::CellKind::hex8, cell);
     mesh.cell_body.push_back(body);
   }
   auto add_faces = [&](const std::vector<mesh::Face>& faces, const std::string& set) {
@@ -45,7 +46,7 @@ void append_body(mesh::HexMesh& mesh, const mesh::OctantBall& ball, const std::s
 }
 /// Tributary areas of the sphere's loaded face: the consistent nodal load of a unit traction
 /// in z (3 entries per node, the z entry holds the area).
-la::Vector load_face_weights(const mesh::HexMesh& mesh)
+la::Vector load_face_weights(const mesh::Mesh& mesh)
 {
   la::Vector weights = la::Vector::Zero(3 * static_cast<la::Index>(mesh.n_nodes()));
   fem::add_face_traction(mesh, mesh.face_set("sphere_load"), Eigen::Vector3d(0, 0, 1), weights);
@@ -113,7 +114,11 @@ std::pair<mesh::OctantBallParameters, mesh::OctantBallParameters> octant_balls(c
 int64_t hertz3d_node_count(const Hertz3dParameters& parameters)
 {
   const auto [sphere, block] = octant_balls(parameters);
-  return mesh::octant_ball_size(sphere).nodes + mesh::octant_ball_size(block).nodes;
+  const int64_t corners = mesh::octant_ball_size(sphere).nodes + mesh::octant_ball_size(block).nodes;
+  // Edges per node of a hex mesh: 3; with Kuhn's tetrahedra 7 (face and cell diagonals).
+  return parameters.cell == mesh::CellKind::hex20 ? 4 * corners
+      : parameters.cell == mesh::CellKind::tet10  ? 8 * corners
+                                                  : corners;
 }
 
 fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
@@ -141,6 +146,16 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
   append_body(
       p.mesh, block, "block", true, [](const Eigen::Vector3d& q) { return Eigen::Vector3d(q(0), q(1), -q(2)); },
       "block_contact", "block_support");
+  if (parameters.cell != mesh::CellKind::hex8)
+  {
+    // An edge between two nodes on the sphere |x - c| = R keeps its node on the sphere.
+    const Eigen::Vector3d centre(0, 0, R);
+    p.mesh = mesh::convert_hex8_mesh(p.mesh, parameters.cell, [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+      const Eigen::Vector3d middle = 0.5 * (a + b);
+      const auto on_sphere = [&](const Eigen::Vector3d& x) { return std::abs((x - centre).norm() - R) < 1e-9 * R; };
+      return on_sphere(a) && on_sphere(b) ? Eigen::Vector3d(centre + R * (middle - centre).normalized()) : middle;
+    });
+  }
   for (const auto& [name, faces] : p.mesh.face_sets)
     p.mesh.add_node_set_from_faces(name, name);
 

@@ -45,6 +45,9 @@ struct Hertz3dParameters
   double block_radius = 0.04;                  ///< radius of the modelled half-space (m)
   double cap_radius = 0.025;                   ///< radius of the modelled part of the sphere (m), <= R / 2
   double radial_aspect = 1.5;                  ///< radial / tangential cell size away from the core
+  /// Cell type: hex8 as meshed, or those cells converted (mesh/cell_conversion.hpp), the
+  /// quadratic cells' edge nodes on the sphere where the edge lies on it.
+  mesh::CellKind cell = mesh::CellKind::hex8;
   fem::Material block() const { return block_material.value_or(material); }
 };
 

@@ -56,6 +56,9 @@ std::vector<io::SettingSpec> hertz3d_setting_specs()
       {"hertz3d.cap_radius", "0.025", "radius of the modelled part of the sphere about the contact point (m), "
        "at most R / 2", Type::number, {}, 0, inf, true},
       {"hertz3d.radial_aspect", "1.5", "radial / tangential cell size outside the contact core", Type::number, {}, 0.5, 3, false},
+      {"hertz3d.cell", "hex8", "cell type: hex8 as meshed, or its cells split into tet4 / tet10 (six tetrahedra each), "
+       "wedge6 (two), or hex20; quadratic cells keep their edge nodes on the sphere", Type::text,
+       {"hex8", "tet4", "tet10", "hex20", "wedge6"}, 0, 0, false},
       {"hertz3d.block_young", "", "Young's modulus of the block (Pa), if it differs from the sphere's "
        "material.young (E* from both)", Type::number, {}, 0, inf, true},
       {"hertz3d.block_poisson", "", "Poisson's ratio of the block, if it differs from material.poisson",
@@ -77,6 +80,9 @@ Hertz3dParameters hertz3d_parameters(const io::Settings& s)
   p.block_radius = s.number("hertz3d.block_radius");
   p.cap_radius = s.number("hertz3d.cap_radius");
   p.radial_aspect = s.number("hertz3d.radial_aspect");
+  for (const mesh::CellKind kind : mesh::all_cell_kinds)
+    if (mesh::cell_type(kind).name == s.text("hertz3d.cell"))
+      p.cell = kind;
   return p;
 }
 

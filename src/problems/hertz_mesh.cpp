@@ -19,7 +19,7 @@ namespace feticon::problems
 {
 using mesh::CrossSection;
 using mesh::Face;
-using mesh::HexMesh;
+using mesh::Mesh;
 
 namespace
 {
@@ -58,7 +58,7 @@ void check_parameters(const HertzMeshParameters& p)
 }
 
 /// Replaces the face sets `sources` by their union `target` (with its node set).
-void merge_sets(HexMesh& mesh, const std::vector<std::string>& sources, const std::string& target)
+void merge_sets(Mesh& mesh, const std::vector<std::string>& sources, const std::string& target)
 {
   std::vector<Face> faces;
   for (const std::string& source : sources)
@@ -74,7 +74,7 @@ void merge_sets(HexMesh& mesh, const std::vector<std::string>& sources, const st
 
 /// The two bodies of the tensor mesh with the sets named as in hertz_mesh.hpp (but zmin, zmax and
 /// symmetry, which generate_hertz adds for both kinds).
-HexMesh tensor_bodies(const HertzMeshParameters& p)
+Mesh tensor_bodies(const HertzMeshParameters& p)
 {
   const double radius = p.cylinder_radius;
   const double h_slave = p.element_size / p.refinement;
@@ -89,7 +89,7 @@ HexMesh tensor_bodies(const HertzMeshParameters& p)
   auto n_cells = [](const std::vector<double>& positions) { return static_cast<int32_t>(positions.size()) - 1; };
 
   // Column at abscissa x spans from the arc to the axis plane, height sqrt(R1^2 - x^2).
-  const HexMesh cylinder = mesh::generate_mapped_block(
+  const Mesh cylinder = mesh::generate_mapped_block(
       {n_cells(cylinder_x), n_cells(cylinder_t), 1},
       [&](int32_t i, int32_t j, int32_t k) {
     const double x = cylinder_x[i];
@@ -100,14 +100,14 @@ HexMesh tensor_bodies(const HertzMeshParameters& p)
       "cylinder");
   // j counts upward, while the graded depths start at the contact surface y = 0.
   const int32_t block_ny = n_cells(block_d);
-  const HexMesh block = mesh::generate_mapped_block(
+  const Mesh block = mesh::generate_mapped_block(
       {n_cells(block_x), block_ny, 1},
       [&](int32_t i, int32_t j, int32_t k) {
     return Eigen::Vector3d(block_x[i], -block_d[block_ny - j], k * thickness);
       },
       "block");
 
-  HexMesh mesh;
+  Mesh mesh;
   mesh::append_mesh(mesh, cylinder, "cylinder_");
   mesh::append_mesh(mesh, block, "block_");
   const std::vector<std::pair<std::string, std::string>> renames = {
@@ -135,7 +135,7 @@ auto graded_size(const HertzMeshParameters& p, double h)
 /// quadrilaterals whose size is h_b at the distance d = 0 from the contact band
 /// [0, fine_width] x {0} and h_b + (q - 1) d beyond, i.e. cells growing by about q from one
 /// to the next, then extruded into one layer.
-HexMesh graded_bodies(const HertzMeshParameters& p)
+Mesh graded_bodies(const HertzMeshParameters& p)
 {
   const double radius = p.cylinder_radius;
   const double h_slave = p.element_size / p.refinement;
@@ -164,7 +164,7 @@ HexMesh graded_bodies(const HertzMeshParameters& p)
                     {{-p.block_width, 0}, "contact"},
                     {{-p.block_width, -p.block_depth}, "side"}};
   }
-  HexMesh mesh;
+  Mesh mesh;
   mesh::append_mesh(mesh, mesh::extrude_cross_section(cylinder, graded_size(p, h_slave), p.thickness), "cylinder_");
   mesh::append_mesh(mesh, mesh::extrude_cross_section(block, graded_size(p, p.master_ratio * h_slave), p.thickness),
                     "block_");
@@ -248,12 +248,12 @@ int64_t hertz_node_estimate(const HertzMeshParameters& p)
   return static_cast<int64_t>(std::min(2 * quad_factor * halves * cells, 4e18));
 }
 
-HexMesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache)
+Mesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache)
 {
   check_parameters(parameters);
   if (from_cache)
     *from_cache = false;
-  HexMesh mesh = parameters.kind == HertzMeshKind::graded
+  Mesh mesh = parameters.kind == HertzMeshKind::graded
       ? mesh::cached_mesh(
             graded_cache_key(parameters), [&] { return graded_bodies(parameters); }, from_cache)
       : tensor_bodies(parameters);
@@ -268,7 +268,7 @@ HexMesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache)
   return mesh;
 }
 
-ContactZoneSummary summarize_contact_zone(const HexMesh& mesh, const std::string& face_set, double half_width)
+ContactZoneSummary summarize_contact_zone(const Mesh& mesh, const std::string& face_set, double half_width)
 {
   ContactZoneSummary summary;
   summary.min_size = std::numeric_limits<double>::infinity();

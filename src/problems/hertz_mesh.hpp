@@ -47,7 +47,7 @@
 /// (HertzMeshParameters::full) has no symmetry sets; its "cylinder_side" and "block_side" are
 /// both sides.
 
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <cstdint>
 #include <string>
@@ -95,7 +95,7 @@ struct HertzMeshParameters
 /// @throws feticon::Error naming the offending parameter if one is out of range.
 /// The graded mesh comes from the mesh cache when it was made before (mesh/mesh_cache.hpp).
 /// @param[out] from_cache whether it did (may be null)
-mesh::HexMesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache = nullptr);
+mesh::Mesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache = nullptr);
 
 /// Nodes of the mesh generate_hertz would build, estimated without building it (memory guard):
 /// exact up to rounding for `tensor`, the integral of the size field for `graded`.
@@ -117,5 +117,5 @@ struct ContactZoneSummary
 /// The in-plane size of a face is the largest x-y distance between two of its nodes, i.e. the
 /// chord length for faces extruded along z.
 /// @throws feticon::Error if no face of the set reaches into x < half_width.
-ContactZoneSummary summarize_contact_zone(const mesh::HexMesh& mesh, const std::string& face_set, double half_width);
+ContactZoneSummary summarize_contact_zone(const mesh::Mesh& mesh, const std::string& face_set, double half_width);
 } // namespace feticon::problems

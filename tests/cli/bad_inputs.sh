@@ -147,7 +147,7 @@ expect "deck friction rough" "ROUGH (rough friction" -- "$(friction_variant '*FR
 expect "deck friction table" "takes one data line" -- "$(friction_variant '*FRICTION\n0.3\n0.2' friction_table)"
 expect "deck friction negative stick slope" "stick slope -1e6 must be positive" -- \
   "$(friction_variant '*FRICTION\n0.3, -1e6' friction_slope)"
-expect "deck element type" "C3D10" -- "$(deck_variant 's/TYPE=C3D8/TYPE=C3D10/I' c3d10)"
+expect "deck element type" "C3D15" -- "$(deck_variant 's/TYPE=C3D8/TYPE=C3D15/I' c3d15)"
 expect "deck face S7" "S7" -- "$(deck_variant '0,/, *S[1-6]/s//, S7/' s7)"
 expect "deck absent node" "not defined" -- "$(deck_variant 's/^ *1, *1, *2,/1, 1, 999,/' absent_node)"
 expect "deck without step" "STEP" -- "$(deck_variant '/^\*STEP/,$d' nostep)"

@@ -43,7 +43,7 @@ struct Cantilever
   double width = 0.1;  ///< b (m)
   double depth = 0.1;  ///< h (m)
   fem::Material material{2.0e11, 0.0};
-  mesh::HexMesh mesh;
+  mesh::Mesh mesh;
   fem::ConstrainedDofs clamp;
 
   Cantilever(double length_to_depth, int n_depth)

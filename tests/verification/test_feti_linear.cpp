@@ -27,7 +27,7 @@ namespace
 /// subdomains for every partition used below.
 struct BeamProblem
 {
-  mesh::HexMesh mesh;
+  mesh::Mesh mesh;
   fem::Material material{2e11, 0.3};
   fem::ConstrainedDofs dirichlet;
   la::Vector f;

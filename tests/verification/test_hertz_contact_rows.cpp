@@ -34,7 +34,7 @@ struct BruteForceRow
   Eigen::Vector2d xi{0, 0};
 };
 
-BruteForceRow brute_force(const mesh::HexMesh& mesh, const la::Vector& u, int32_t slave)
+BruteForceRow brute_force(const mesh::Mesh& mesh, const la::Vector& u, int32_t slave)
 {
   BruteForceRow best;
   const std::vector<mesh::Face>& faces = mesh.face_set(hertz_pair.master);
@@ -64,7 +64,7 @@ la::Index row_of(const ContactConstraints& rows, int32_t s)
 /// minimum taken in the same order). A node without any accepted projection may only have a rim
 /// row: its projection on the row's face lies just outside, within the rim extension.
 /// Returns the number of rim rows.
-int expect_same_as_brute_force(const mesh::HexMesh& mesh, const la::Vector& u, const ContactConstraints& rows)
+int expect_same_as_brute_force(const mesh::Mesh& mesh, const la::Vector& u, const ContactConstraints& rows)
 {
   int n_rim = 0;
   const std::vector<mesh::Face>& faces = mesh.face_set(hertz_pair.master);
@@ -102,7 +102,7 @@ int expect_same_as_brute_force(const mesh::HexMesh& mesh, const la::Vector& u, c
 
 TEST(HertzContact, GapsEqualAnalyticArcAndBruteForce)
 {
-  const mesh::HexMesh mesh = problems::generate_hertz({});
+  const mesh::Mesh mesh = problems::generate_hertz({});
   const double radius = 1.0;
   const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), hertz_pair);
   const std::vector<int32_t> slave_nodes = mesh.face_set_nodes(hertz_pair.slave);
@@ -138,7 +138,7 @@ TEST(HertzContact, SearchTimeAtRefinement4)
 {
   problems::HertzMeshParameters parameters;
   parameters.refinement = 4;
-  const mesh::HexMesh mesh = problems::generate_hertz(parameters);
+  const mesh::Mesh mesh = problems::generate_hertz(parameters);
   const auto start = std::chrono::steady_clock::now();
   const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), hertz_pair);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -163,7 +163,7 @@ TEST(HertzContact, DeformedConfigurationMatchesBruteForce)
   // reference. The surface also tilts across the thickness (du_y/dz = 2e-3 cos(3x)), so the
   // projections of penetrating nodes on z = 0 land just outside the rim z = 0 of the master
   // surface: rim rows.
-  const mesh::HexMesh mesh = problems::generate_hertz({});
+  const mesh::Mesh mesh = problems::generate_hertz({});
   la::Vector u = la::Vector::Zero(3 * mesh.n_nodes());
   for (int32_t node = 0; node < mesh.n_nodes(); ++node)
   {
@@ -204,7 +204,7 @@ TEST(HertzContact, MortarRowsAndTiming)
   {
     problems::HertzMeshParameters parameters;
     parameters.refinement = refinement;
-    const mesh::HexMesh mesh = problems::generate_hertz(parameters);
+    const mesh::Mesh mesh = problems::generate_hertz(parameters);
     auto time = [&](const ContactOptions& options, ContactConstraints& rows) {
       double best = 1e300;
       for (int repeat = 0; repeat < 3; ++repeat)

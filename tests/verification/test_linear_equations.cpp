@@ -33,7 +33,7 @@ namespace
 {
 constexpr double gap = 1e-3;
 
-int32_t node_at(const mesh::HexMesh& m, double x, double y, double z)
+int32_t node_at(const mesh::Mesh& m, double x, double y, double z)
 {
   for (int32_t n = 0; n < m.n_nodes(); ++n)
     if ((m.nodes.row(n) - Eigen::RowVector3d(x, y, z)).norm() < 1e-12)

@@ -10,5 +10,5 @@ namespace feticon::mesh
 QuadSection mesh_cross_section_with_gmsh(const CrossSection& section, const SizeField& size);
 
 /// The hexahedra, bodies and sets of a .msh file (read_gmsh has checked the file first).
-HexMesh read_model_with_gmsh(const std::filesystem::path& path, const std::string& where);
+Mesh read_model_with_gmsh(const std::filesystem::path& path, const std::string& where);
 } // namespace feticon::mesh

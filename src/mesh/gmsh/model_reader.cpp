@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <optional>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -20,10 +22,26 @@ namespace feticon::mesh
 {
 namespace
 {
-// Gmsh element types (Gmsh reference manual, "MSH file format": elm-type).
-constexpr int gmsh_triangle = 2;
-constexpr int gmsh_quadrangle = 3;
-constexpr int gmsh_hexahedron = 5;
+/// Gmsh's boundary element types (Gmsh reference manual, "MSH file format": elm-type) as the
+/// face types of the cells' faces.
+std::optional<FaceKind> face_kind_of_gmsh_type(int type)
+{
+  switch (type)
+  {
+  case 2:
+    return FaceKind::tri3;
+  case 3:
+    return FaceKind::quad4;
+  case 9:
+    return FaceKind::tri6;
+  case 16:
+    return FaceKind::quad8;
+  default:
+    return std::nullopt;
+  }
+}
+
+constexpr std::array<std::string_view, 4> face_kind_names = {"tri3", "tri6", "quad4", "quad8"};
 
 struct PhysicalGroup
 {
@@ -33,7 +51,14 @@ struct PhysicalGroup
   std::vector<int> entities;
 };
 
-using GmshCell = std::array<std::size_t, 8>;
+/// A volume element: its type and Gmsh node tags in feticon's local order.
+struct GmshCell
+{
+  CellKind kind;
+  std::array<std::size_t, 20> tags;
+  std::span<const std::size_t> nodes() const { return {tags.data(), static_cast<std::size_t>(cell_nodes(kind))}; }
+};
+/// A face's corners sorted, -1 after a triangle's three: the key that finds a face from any cell.
 using SortedFace = std::array<int32_t, 4>;
 
 struct SortedFaceHash
@@ -47,7 +72,7 @@ struct SortedFaceHash
   }
 };
 
-/// The hexahedron faces with a given node set: the first (cell, local face) and how many.
+/// The cell faces with a given node set: the first (cell, local face) and how many.
 struct FaceOwner
 {
   int32_t cell = 0;
@@ -95,7 +120,7 @@ std::vector<PhysicalGroup> read_groups(const std::string& where)
   }
   FETICON_CHECK(std::any_of(groups.begin(), groups.end(), [](const PhysicalGroup& g) { return g.dim == 3; }),
                 where << ": no 3D physical group; every body must be a Physical Volume(\"name\") "
-                         "meshed with hexahedra");
+                         "meshed with tetrahedra, hexahedra or prisms");
   return groups;
 }
 
@@ -139,16 +164,18 @@ void read_body_cells(const PhysicalGroup& group, const std::string& where, std::
     gmsh::model::mesh::getElements(types, tags, nodes, 3, entity);
     for (std::size_t t = 0; t < types.size(); ++t)
     {
-      FETICON_CHECK(types[t] == gmsh_hexahedron,
+      const CellType* type = cell_type_of_gmsh_type(types[t]);
+      FETICON_CHECK(type,
                     where << ": physical volume '" << group.name << "' holds " << tags[t].size() << " elements of type "
                           << element_type_name(types[t])
-                          << "; only 8-node hexahedra are supported; remesh with "
-                             "Mesh.RecombineAll = 1 and transfinite volumes (or recombined "
-                             "extrusions), first order");
+                          << "; feticon reads 4- and 10-node tetrahedra, 8- and 20-node hexahedra and 6-node prisms "
+                             "(for 20-node hexahedra set Mesh.SecondOrderIncomplete = 1)");
+      const std::size_t n = static_cast<std::size_t>(type->n_nodes);
       for (std::size_t e = 0; e < tags[t].size(); ++e)
       {
-        GmshCell cell;
-        std::copy_n(nodes[t].begin() + 8 * e, 8, cell.begin());
+        GmshCell cell{type->kind, {}};
+        for (std::size_t k = 0; k < n; ++k)
+          cell.tags[type->gmsh_to_local[k]] = nodes[t][n * e + k];
         cells.push_back(cell);
         element_tags.push_back(tags[t][e]);
       }
@@ -160,7 +187,7 @@ void read_body_cells(const PhysicalGroup& group, const std::string& where, std::
 /// Bodies, nodes and cells from the 3D groups.
 /// @return the local node id of every Gmsh node tag used by a hexahedron
 std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGroup>& groups, const std::string& where,
-                                                    HexMesh& mesh)
+                                                    Mesh& mesh)
 {
   std::vector<GmshCell> gmsh_cells;
   std::vector<std::size_t> element_tags;
@@ -176,7 +203,7 @@ std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGr
   std::unordered_map<std::size_t, int32_t> body_of_node;
   std::vector<std::vector<std::size_t>> body_nodes(mesh.body_names.size());
   for (std::size_t c = 0; c < gmsh_cells.size(); ++c)
-    for (const std::size_t tag : gmsh_cells[c])
+    for (const std::size_t tag : gmsh_cells[c].nodes())
     {
       const int32_t body = mesh.cell_body[c];
       const auto [it, inserted] = body_of_node.emplace(tag, body);
@@ -214,39 +241,40 @@ std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGr
       found[it->second] = true;
     }
   FETICON_CHECK(std::all_of(found.begin(), found.end(), [](bool f) { return f; }),
-                where << ": hexahedra use nodes that the file does not define (corrupt file?)");
+                where << ": cells use nodes that the file does not define (corrupt file?)");
 
-  mesh.cells.reserve(gmsh_cells.size());
+  mesh.cells.reserve(gmsh_cells.size(), gmsh_cells.size() * 8);
+  std::vector<int32_t> cell, sorted;
   for (std::size_t c = 0; c < gmsh_cells.size(); ++c)
   {
-    Cell cell;
-    for (int a = 0; a < 8; ++a)
-      cell[a] = local_id.at(gmsh_cells[c][a]);
-    Cell sorted = cell;
+    const CellType& type = cell_type(gmsh_cells[c].kind);
+    cell.clear();
+    for (const std::size_t tag : gmsh_cells[c].nodes())
+      cell.push_back(local_id.at(tag));
+    const auto name = [&] {
+      return std::string(type.name) + " (Gmsh element " + std::to_string(element_tags[c]) + ") of body '" +
+          mesh.body_names[mesh.cell_body[c]] + "'";
+    };
+    sorted = cell;
     std::sort(sorted.begin(), sorted.end());
     FETICON_CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end(),
-                  where << ": hexahedron (Gmsh element " << element_tags[c] << ") of body '"
-                        << mesh.body_names[mesh.cell_body[c]] << "' repeats a node (degenerate)");
-    mesh.cells.push_back(cell);
+                  where << ": " << name() << " repeats a node (degenerate)");
+    mesh.cells.add(type.kind, cell);
     // Distinct nodes at one place collapse an edge: the centre's Jacobian can stay positive,
     // but the cell is degenerate (its aspect ratio infinite).
-    constexpr int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
-                                  {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
     double shortest = std::numeric_limits<double>::infinity(), longest = 0;
-    for (const auto& e : edges)
+    for (const auto& e : type.edges)
     {
       const double length = (mesh.nodes.row(cell[e[0]]) - mesh.nodes.row(cell[e[1]])).norm();
       shortest = std::min(shortest, length);
       longest = std::max(longest, length);
     }
     FETICON_CHECK(shortest > 1e-9 * longest,
-                  where << ": hexahedron (Gmsh element " << element_tags[c] << ") of body '"
-                        << mesh.body_names[mesh.cell_body[c]] << "' has an edge of length " << shortest
+                  where << ": " << name() << " has an edge of length " << shortest
                         << " (coincident nodes; degenerate)");
-    const double det = centre_jacobian_determinant(mesh, cell);
+    const double det = centre_jacobian_determinant(mesh, static_cast<int32_t>(c));
     FETICON_CHECK(det > 0,
-                  where << ": hexahedron (Gmsh element " << element_tags[c] << ") of body '"
-                        << mesh.body_names[mesh.cell_body[c]] << "' is inverted or flat (Jacobian determinant " << det
+                  where << ": " << name() << " is inverted or flat (Jacobian determinant " << det
                         << " at its centre); check the volume's orientation");
   }
   return local_id;
@@ -254,21 +282,24 @@ std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGr
 
 /// Face sets (and node sets of the same names) from the 2D groups.
 void read_face_sets(const std::vector<PhysicalGroup>& groups, const std::string& where,
-                    const std::unordered_map<std::size_t, int32_t>& local_id, HexMesh& mesh)
+                    const std::unordered_map<std::size_t, int32_t>& local_id, Mesh& mesh)
 {
   std::unordered_map<SortedFace, FaceOwner, SortedFaceHash> owners;
   owners.reserve(6 * mesh.cells.size());
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
-    for (int f = 0; f < 6; ++f)
+  {
+    const CellType& type = cell_type(mesh.cells.kind(c));
+    for (size_t f = 0; f < type.faces.size(); ++f)
     {
-      SortedFace key;
-      for (int k = 0; k < 4; ++k)
-        key[k] = mesh.cells[c][hex_faces[f][k]];
+      SortedFace key{-1, -1, -1, -1};
+      for (int k = 0; k < face_corners(type.faces[f].kind); ++k)
+        key[k] = mesh.cells[c][type.faces[f].nodes[k]];
       std::sort(key.begin(), key.end());
       FaceOwner& owner = owners[key];
       if (owner.count++ == 0)
-        owner = {c, f, 1};
+        owner = {c, static_cast<int>(f), 1};
     }
+  }
 
   for (const PhysicalGroup& group : groups)
   {
@@ -282,35 +313,40 @@ void read_face_sets(const std::vector<PhysicalGroup>& groups, const std::string&
       gmsh::model::mesh::getElements(types, tags, nodes, 2, entity);
       for (std::size_t t = 0; t < types.size(); ++t)
       {
-        FETICON_CHECK(types[t] == gmsh_quadrangle,
+        const std::optional<FaceKind> kind = face_kind_of_gmsh_type(types[t]);
+        FETICON_CHECK(kind,
                       where << ": physical surface '" << group.name << "' holds " << tags[t].size()
                             << " elements of type " << element_type_name(types[t])
-                            << (types[t] == gmsh_triangle ? "; its volumes must be hexahedra, so recombine the surface "
-                                                            "(Mesh.RecombineAll = 1)"
-                                                          : "; only 4-node quadrangles (faces of hex8) are supported"));
+                            << "; faces of cells are 3- or 6-node triangles and 4- or 8-node quadrangles");
+        const auto n = static_cast<std::size_t>(face_nodes(*kind));
         for (std::size_t e = 0; e < tags[t].size(); ++e)
         {
-          SortedFace key;
+          SortedFace key{-1, -1, -1, -1};
           bool on_cells = true;
-          for (int k = 0; k < 4; ++k)
+          for (int k = 0; k < face_corners(*kind); ++k)
           {
-            const auto it = local_id.find(nodes[t][4 * e + k]);
+            const auto it = local_id.find(nodes[t][n * e + k]);
             on_cells = on_cells && it != local_id.end();
             key[k] = on_cells ? it->second : -1;
           }
           std::sort(key.begin(), key.end());
           const auto owner = on_cells ? owners.find(key) : owners.end();
+          const std::string element = std::string(face_kind_names[static_cast<size_t>(*kind)]) + " (Gmsh element " +
+              std::to_string(tags[t][e]) + ") of physical surface '" + group.name + "'";
           FETICON_CHECK(owner != owners.end(),
-                        where << ": quadrangle (Gmsh element " << tags[t][e] << ") of physical surface '" << group.name
-                              << "' is not a face of any hexahedron of a body; the surface must "
+                        where << ": " << element
+                              << " is not a face of any cell of a body; the surface must "
                                  "bound a physical volume and share its mesh");
           FETICON_CHECK(owner->second.count == 1,
-                        where << ": quadrangle (Gmsh element " << tags[t][e] << ") of physical surface '" << group.name
-                              << "' lies between two hexahedra; face sets must be on "
-                              << "the boundary of a body");
-          const Cell& cell = mesh.cells[owner->second.cell];
-          const auto& local = hex_faces[owner->second.local_face];
-          faces.push_back({cell[local[0]], cell[local[1]], cell[local[2]], cell[local[3]]});
+                        where << ": " << element
+                              << " lies between two cells; face sets must be on the boundary of a body");
+          const int32_t c = owner->second.cell;
+          const Face face = cell_face(mesh.cells.kind(c), mesh.cells[c], owner->second.local_face);
+          FETICON_CHECK(face.kind == *kind,
+                        where << ": " << element << " is a face of a " << cell_type(mesh.cells.kind(c)).name
+                              << " cell, whose faces are " << face_kind_names[static_cast<size_t>(face.kind)]
+                              << "; mesh surfaces and volumes at the same order");
+          faces.push_back(face);
         }
       }
     }
@@ -321,7 +357,7 @@ void read_face_sets(const std::vector<PhysicalGroup>& groups, const std::string&
 
 /// Node sets from the 0D and 1D groups.
 void read_node_sets(const std::vector<PhysicalGroup>& groups, const std::string& where,
-                    const std::unordered_map<std::size_t, int32_t>& local_id, HexMesh& mesh)
+                    const std::unordered_map<std::size_t, int32_t>& local_id, Mesh& mesh)
 {
   for (const PhysicalGroup& group : groups)
   {
@@ -337,7 +373,7 @@ void read_node_sets(const std::vector<PhysicalGroup>& groups, const std::string&
       const auto it = local_id.find(tag);
       FETICON_CHECK(it != local_id.end(),
                     where << ": Gmsh node " << tag << " of " << group_kind(group.dim) << " '" << group.name
-                          << "' is not a node of any hexahedron of a body");
+                          << "' is not a node of any cell of a body");
       ids.push_back(it->second);
     }
     std::sort(ids.begin(), ids.end());
@@ -345,11 +381,11 @@ void read_node_sets(const std::vector<PhysicalGroup>& groups, const std::string&
   }
 }
 
-HexMesh read_open_model(const std::string& where)
+Mesh read_open_model(const std::string& where)
 {
   const std::vector<PhysicalGroup> groups = read_groups(where);
   check_volume_entities(groups, where);
-  HexMesh mesh;
+  Mesh mesh;
   const std::unordered_map<std::size_t, int32_t> local_id = read_cells(groups, where, mesh);
   read_face_sets(groups, where, local_id, mesh);
   read_node_sets(groups, where, local_id, mesh);
@@ -364,7 +400,7 @@ std::string one_line(std::string text)
 }
 } // namespace
 
-HexMesh read_model_with_gmsh(const std::filesystem::path& path, const std::string& where)
+Mesh read_model_with_gmsh(const std::filesystem::path& path, const std::string& where)
 {
   const char* stage = "opening";
   try

@@ -32,7 +32,7 @@ std::string mesh_cross_section(const CrossSection& section, const SizeField& siz
   return error_of([&] { out = mesh_cross_section_with_gmsh(section, size); });
 }
 
-std::string read_model(const std::filesystem::path& path, const std::string& where, HexMesh& out)
+std::string read_model(const std::filesystem::path& path, const std::string& where, Mesh& out)
 {
   return error_of([&] { out = read_model_with_gmsh(path, where); });
 }

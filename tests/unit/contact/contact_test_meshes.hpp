@@ -13,9 +13,9 @@ namespace feticon::contact::test
 /// Box "lower" [0,1]^3 (4 x 4 x 2 cells) and box "upper" (3 x 3 x 1 cells, non-matching) of size
 /// 1 x 1 x 0.5 at (shift_x, shift_y, 1 + gap). Sets are prefixed "lower_" and "upper_"; the slave
 /// surface is "upper_zmin", the master "lower_zmax".
-inline mesh::HexMesh stacked_boxes(double gap, double shift_x = 0, double shift_y = 0)
+inline mesh::Mesh stacked_boxes(double gap, double shift_x = 0, double shift_y = 0)
 {
-  mesh::HexMesh mesh;
+  mesh::Mesh mesh;
   mesh::append_mesh(mesh, mesh::generate_box({.lengths = {1, 1, 1}, .nx = 4, .ny = 4, .nz = 2, .body_name = "lower"}),
                     "lower_");
   mesh::append_mesh(mesh,
@@ -32,10 +32,10 @@ inline mesh::HexMesh stacked_boxes(double gap, double shift_x = 0, double shift_
 /// Lower block [0,1]^2 x [0, 1 + w_l(x, y)] (5 x 4 x 2 cells) with a wavy top
 /// w_l = 0.06 sin(2 pi x) cos(pi y), so its top faces are warped, and an upper block (4 x 3 x 1)
 /// from 1.02 + w_u to 1.4 over [0.05, 0.95] x [0.05, 0.95], w_u = 0.04 cos(2 pi y) sin(pi x).
-inline mesh::HexMesh wavy_blocks()
+inline mesh::Mesh wavy_blocks()
 {
   using std::numbers::pi;
-  mesh::HexMesh mesh;
+  mesh::Mesh mesh;
   const int nx = 5, ny = 4, nz = 2;
   mesh::append_mesh(mesh,
                     mesh::generate_mapped_block(
@@ -62,7 +62,7 @@ inline mesh::HexMesh wavy_blocks()
 }
 
 /// Random displacement of size `amplitude` (m) on every node.
-inline la::Vector random_displacement(const mesh::HexMesh& mesh, double amplitude, unsigned seed)
+inline la::Vector random_displacement(const mesh::Mesh& mesh, double amplitude, unsigned seed)
 {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> unit(-1, 1);
@@ -75,9 +75,9 @@ inline la::Vector random_displacement(const mesh::HexMesh& mesh, double amplitud
 /// Lower body with a roof-shaped top: z = 0.8 at x = 0 and x = 1, z = 1 on the ridge x = 0.5
 /// (2 x 1 x 1 cells, so the ridge is an interior edge of the top surface "lower_zmax"), and a flat
 /// block "upper" [0.25, 0.75] x [0, 1] x [1.1, 1.3] (2 x 1 x 1 cells) above it, slave "upper_zmin".
-inline mesh::HexMesh roof_and_block()
+inline mesh::Mesh roof_and_block()
 {
-  mesh::HexMesh mesh;
+  mesh::Mesh mesh;
   mesh::append_mesh(mesh,
                     mesh::generate_mapped_block(
                         {2, 1, 1},

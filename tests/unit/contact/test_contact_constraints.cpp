@@ -43,7 +43,7 @@ TEST(ContactConstraints, StackedBoxesGapNormalAndRowNorm)
   // projects inside (or onto the boundary of) the master surface with g = 1e-3 and n = +z, the
   // outward normal of the lower (master) body.
   const double gap = 1e-3;
-  const mesh::HexMesh mesh = test::stacked_boxes(gap);
+  const mesh::Mesh mesh = test::stacked_boxes(gap);
   const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), upper_on_lower);
   ASSERT_EQ(rows.n_slave_nodes, 16);
   ASSERT_EQ(rows.n_rows(), 16);
@@ -70,7 +70,7 @@ TEST(ContactConstraints, PenetrationGivesNegativeGapInCurrentConfiguration)
 {
   // Reference gap 1e-3; the current configuration moves the upper body down by 3e-3, so the gap
   // is -2e-3 (penetration). With u = 0 and a reference overlap of 1e-3 the gap is -1e-3.
-  mesh::HexMesh mesh = test::stacked_boxes(1e-3);
+  mesh::Mesh mesh = test::stacked_boxes(1e-3);
   la::Vector u = la::Vector::Zero(3 * mesh.n_nodes());
   for (const int32_t node : mesh.node_set("upper_zmin"))
     u(3 * node + 2) = -3e-3;
@@ -89,7 +89,7 @@ TEST(ContactConstraints, PenetrationGivesNegativeGapInCurrentConfiguration)
 TEST(ContactConstraints, RowsOnlyBelowSearchDistance)
 {
   // Gap 0.1 against an explicit d_s = 0.05: no row; d_s = 0.2: all rows.
-  const mesh::HexMesh mesh = test::stacked_boxes(0.1);
+  const mesh::Mesh mesh = test::stacked_boxes(0.1);
   EXPECT_EQ(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.search_distance = 0.05}).n_rows(), 0);
   EXPECT_EQ(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.search_distance = 0.2}).n_rows(), 16);
 }
@@ -99,7 +99,7 @@ TEST(ContactConstraints, NearContactRowsOnlyWhereTheBodiesTouchOrNearlyTouch)
   // The upper body tilted about the line x = 0, y free: the gap of a slave node is exactly
   // offset + slope x at x = 0, 1/3, 2/3, 1 (master flat, n = +z), four nodes per column. Master
   // diagonal sqrt(2) / 4, so f = 0.05 allows 0.0177 above the contact level max(g_min, 0).
-  const mesh::HexMesh mesh = test::stacked_boxes(0);
+  const mesh::Mesh mesh = test::stacked_boxes(0);
   const double allowance = 0.05 * std::sqrt(2.0) / 4;
   const auto rows_at = [&](double offset, double slope, double fraction) {
     la::Vector u = la::Vector::Zero(3 * mesh.n_nodes());
@@ -145,7 +145,7 @@ TEST(ContactConstraints, OverhangingSlaveNodesAreSkipped)
   // x, y <= 0.833 get rows; the 5 others with x, y <= 1.167 are within d_s = 0.354 of the master
   // faces but beyond the boundary x = 1 or y = 1 (overhanging); the 7 with x or y = 1.5 have no
   // candidate face at all.
-  const mesh::HexMesh mesh = test::stacked_boxes(1e-3, 0.5, 0.5);
+  const mesh::Mesh mesh = test::stacked_boxes(1e-3, 0.5, 0.5);
   const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), upper_on_lower);
   EXPECT_EQ(rows.n_rows(), 4);
   EXPECT_EQ(rows.n_overhanging, 5);
@@ -165,7 +165,7 @@ TEST(ContactConstraints, RimExtensionKeepsNodesJustBeyondTheMasterBoundary)
   // beyond it (dx = 0.01, excess 0.08) they are skipped as overhanging.
   for (const double dx : {0.002, 0.01})
   {
-    const mesh::HexMesh mesh = test::stacked_boxes(1e-3, dx);
+    const mesh::Mesh mesh = test::stacked_boxes(1e-3, dx);
     const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), upper_on_lower);
     const bool within = dx / 0.125 <= ContactOptions{}.rim_extension;
     EXPECT_EQ(rows.n_overhanging, within ? 0 : 4) << "dx = " << dx;
@@ -200,7 +200,7 @@ TEST(ContactConstraints, NodeInContactJustOffTheMasterBoundaryTakesTheFaceNormal
   // precision of its Dirichlet rows. The master surface is flat, so every row's normal is +z
   // and its gap 1e-10; the direction of the distance vector to the boundary side, (-2e-7, 0,
   // 1e-10), is no normal (it tilted the row by 90 degrees before).
-  const mesh::HexMesh mesh = test::stacked_boxes(1e-10, -2e-7);
+  const mesh::Mesh mesh = test::stacked_boxes(1e-10, -2e-7);
   const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), upper_on_lower);
   ASSERT_EQ(rows.n_rows(), 16);
   int n_off = 0;
@@ -216,7 +216,7 @@ TEST(ContactConstraints, NodeInContactJustOffTheMasterBoundaryTakesTheFaceNormal
 TEST(ContactConstraints, RowsAnnihilateRigidTranslations)
 {
   // Partition of unity: b . (t, t, ..., t) = -n.t + sum_a N_a n.t = 0 for every translation t.
-  const mesh::HexMesh mesh = test::wavy_blocks();
+  const mesh::Mesh mesh = test::wavy_blocks();
   const la::Vector u = test::random_displacement(mesh, 1e-3, 1);
   const ContactConstraints rows = build_contact_constraints(mesh, u, upper_on_lower);
   ASSERT_EQ(rows.n_rows(), rows.n_slave_nodes); // all slave nodes are over the master surface
@@ -232,7 +232,7 @@ TEST(ContactConstraints, RowsAnnihilateRigidTranslations)
 TEST(ContactConstraints, ForcesOfEveryRowSumToZero)
 {
   // -B' e_i: slave force +n/|b| and master forces -N_a n/|b|, summed over all nodes = 0.
-  const mesh::HexMesh mesh = test::wavy_blocks();
+  const mesh::Mesh mesh = test::wavy_blocks();
   const la::Vector u = test::random_displacement(mesh, 1e-3, 2);
   const ContactConstraints rows = build_contact_constraints(mesh, u, upper_on_lower);
   const int64_t n_dofs = 3 * mesh.n_nodes();
@@ -255,7 +255,7 @@ TEST(ContactConstraints, ForcesOfEveryRowSumToZero)
 TEST(ContactConstraints, MovingSlaveAlongNormalChangesGapByDelta)
 {
   // x_s + delta n keeps xi_bar stationary (r_alpha = -delta x_,alpha . n = 0), so g -> g + delta.
-  const mesh::HexMesh mesh = test::wavy_blocks();
+  const mesh::Mesh mesh = test::wavy_blocks();
   const la::Vector u = test::random_displacement(mesh, 1e-3, 3);
   const ContactConstraints rows = build_contact_constraints(mesh, u, upper_on_lower);
   for (la::Index i = 0; i < rows.n_rows(); ++i)
@@ -274,7 +274,7 @@ TEST(ContactConstraints, MovingSlaveAlongNormalChangesGapByDelta)
 TEST(ContactConstraints, RowIsMinusGapGradient)
 {
   // Central differences of the exact gap: g(u + eps du) - g(u - eps du) = -2 eps b du + O(eps^3).
-  const mesh::HexMesh mesh = test::wavy_blocks();
+  const mesh::Mesh mesh = test::wavy_blocks();
   const la::Vector u = test::random_displacement(mesh, 1e-3, 4);
   const la::Vector du = test::random_displacement(mesh, 1.0, 5);
   const ContactConstraints rows = build_contact_constraints(mesh, u, upper_on_lower);
@@ -304,7 +304,7 @@ TEST(ContactConstraints, ConvexRidgeBlindSpotUsesNodeToEdgeRow)
   // projections fall outside both roof faces, so they get edge rows with n = +z, g = 0.1.
   // Slave nodes at x = 0.25 and 0.75 project inside a roof face: the face plane through
   // (0, ., 0.8) and (0.5, ., 1) has normal (-0.4, 0, 1)/sqrt(1.16), so g = 0.2/sqrt(1.16).
-  const mesh::HexMesh mesh = test::roof_and_block();
+  const mesh::Mesh mesh = test::roof_and_block();
   const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), upper_on_lower);
   ASSERT_EQ(rows.n_rows(), 6);
   EXPECT_EQ(rows.n_overhanging, 0);
@@ -354,7 +354,7 @@ TEST(ContactConstraints, ConvexRidgeBlindSpotUsesNodeToEdgeRow)
 
 TEST(ContactConstraints, InvalidInputThrows)
 {
-  const mesh::HexMesh mesh = test::stacked_boxes(1e-3);
+  const mesh::Mesh mesh = test::stacked_boxes(1e-3);
   EXPECT_THROW(build_contact_constraints(mesh, la::Vector::Zero(5), upper_on_lower), Error);
   EXPECT_THROW(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.search_distance = -1}), Error);
   EXPECT_THROW(build_contact_constraints(mesh, la::Vector(), upper_on_lower, {.rim_extension = -0.1}), Error);

@@ -39,8 +39,8 @@ ContactOptions mortar_options()
 /// surfaces are tilted and meshed by parallelograms. `reference` keeps the unmapped mesh.
 struct FlatPair
 {
-  mesh::HexMesh mesh;
-  mesh::HexMesh reference;
+  mesh::Mesh mesh;
+  mesh::Mesh reference;
   Eigen::Matrix3d map;
   /// Area factor of the map on planes z = const: |map e_x x map e_y|.
   double area_factor = 1;
@@ -176,7 +176,7 @@ TEST(MortarConstraints, PartitionOfUnityOnNonMatchingSurfaces)
   // entirely over the master surface, and the renormalization makes sum_a w_ja = 1 exactly
   // elsewhere; then b . (t, ..., t) = (-1 + sum_a w_ja) n . t = 0 for every translation t.
   // (1) Curved, warped, non-matching faces (wavy blocks, all slave supports over the master).
-  const mesh::HexMesh wavy = test::wavy_blocks();
+  const mesh::Mesh wavy = test::wavy_blocks();
   const la::Vector u = test::random_displacement(wavy, 1e-3, 1);
   const ContactConstraints rows = build_contact_constraints(wavy, u, upper_on_lower, mortar_options());
   ASSERT_EQ(rows.n_rows(), rows.n_slave_nodes);
@@ -194,7 +194,7 @@ TEST(MortarConstraints, PartitionOfUnityOnNonMatchingSurfaces)
 
   // (2) Flat non-matching faces, the slave block shifted half out of the master surface: the
   // boundary nodes overlap only in part, are renormalized, or skipped below the minimum overlap.
-  const mesh::HexMesh shifted = test::stacked_boxes(1e-3, 0.3, 0.2);
+  const mesh::Mesh shifted = test::stacked_boxes(1e-3, 0.3, 0.2);
   const ContactConstraints partial = build_contact_constraints(shifted, la::Vector(), upper_on_lower, mortar_options());
   const MortarCoupling partial_coupling =
       compute_mortar_coupling(shifted, la::Vector(), upper_on_lower, partial.search_distance);
@@ -215,7 +215,7 @@ TEST(MortarConstraints, CouplingOfGivenRowNodesEqualsTheFullOneBitForBit)
 {
   // Reference: the full computation. Only the faces around the given nodes are integrated, and
   // those are all the faces that contribute to their D_j and M_ja.
-  const mesh::HexMesh wavy = test::wavy_blocks();
+  const mesh::Mesh wavy = test::wavy_blocks();
   const la::Vector u = test::random_displacement(wavy, 1e-3, 2);
   const MortarCoupling full = compute_mortar_coupling(wavy, u, upper_on_lower, 0.3);
   const std::vector<int32_t> row_nodes{full.slave.nodes[0], full.slave.nodes[7]};
@@ -378,7 +378,7 @@ TEST(MortarConstraints, UniformPressureGivesConsistentNodalForces)
 
 TEST(MortarConstraints, InvalidInputThrows)
 {
-  const mesh::HexMesh mesh = test::stacked_boxes(1e-3);
+  const mesh::Mesh mesh = test::stacked_boxes(1e-3);
   for (const double overlap : {0.0, -0.1, 1.5})
   {
     ContactOptions options = mortar_options();

@@ -19,14 +19,14 @@ using decomposition::GeneralizedInverseMethod;
 namespace
 {
 /// A box whose interior nodes are displaced, so that elements are distorted.
-mesh::HexMesh distorted_box(int n)
+mesh::Mesh distorted_box(int n)
 {
   mesh::BoxParameters p;
   p.lengths = Eigen::Vector3d(2, 1, 1);
   p.nx = 2 * n;
   p.ny = n;
   p.nz = n;
-  mesh::HexMesh m = mesh::generate_box(p);
+  mesh::Mesh m = mesh::generate_box(p);
   for (int32_t i = 0; i < m.n_nodes(); ++i)
   {
     Eigen::Vector3d x = m.nodes.row(i).transpose();
@@ -173,7 +173,7 @@ namespace
 {
 /// Per subdomain: cell count and whether its cells fill the box spanned by their centroids
 /// (cell units of a uniform box mesh with cell size h).
-std::vector<std::pair<int, bool>> part_shapes(const mesh::HexMesh& m, const decomposition::Partition& partition,
+std::vector<std::pair<int, bool>> part_shapes(const mesh::Mesh& m, const decomposition::Partition& partition,
                                               const Eigen::Vector3d& h)
 {
   std::vector<Eigen::Vector3d> lo(partition.n_subdomains, Eigen::Vector3d::Constant(1e300));

@@ -18,7 +18,7 @@ using namespace feticon;
 namespace
 {
 /// [0,2]x[0,1]x[0,1], 4x2x2 cells: split 2x2x2, its centre node (1, 0.5, 0.5) has 8 copies.
-mesh::HexMesh box()
+mesh::Mesh box()
 {
   mesh::BoxParameters p;
   p.lengths = Eigen::Vector3d(2, 1, 1);
@@ -28,7 +28,7 @@ mesh::HexMesh box()
   return mesh::generate_box(p);
 }
 
-int32_t node_at(const mesh::HexMesh& m, double x, double y, double z)
+int32_t node_at(const mesh::Mesh& m, double x, double y, double z)
 {
   for (int32_t n = 0; n < m.n_nodes(); ++n)
     if ((m.nodes.row(n) - Eigen::RowVector3d(x, y, z)).norm() < 1e-12)
@@ -72,7 +72,7 @@ std::string error_of(const std::function<void()>& f)
 // support prescribing 0.002 (moved to c) and one with a repeated term (summed).
 TEST(EquationRows, OrthonormalAndTheSameConstraintsAsTheEquations)
 {
-  const mesh::HexMesh m = box();
+  const mesh::Mesh m = box();
   const decomposition::Decomposition decomp(m, decomposition::partition_structured(m, {2, 2, 2}));
   const int32_t centre = node_at(m, 1, 0.5, 0.5), corner = node_at(m, 2, 1, 1);
   const int32_t bottom = node_at(m, 0.5, 0, 0), support = node_at(m, 0, 0.5, 0.5);
@@ -128,7 +128,7 @@ TEST(EquationRows, OrthonormalAndTheSameConstraintsAsTheEquations)
 // the equations before them; each must be refused with a one-line message naming it.
 TEST(EquationRows, DegenerateEquationsAreNamed)
 {
-  const mesh::HexMesh m = box();
+  const mesh::Mesh m = box();
   const decomposition::Decomposition decomp(m, decomposition::partition_structured(m, {2, 1, 1}));
   const fem::ConstrainedDofs clamp = fem::collect_dirichlet(m, {{"xmin", {0.0, 0.0, 0.0}}});
   const int32_t a = node_at(m, 1, 0.5, 0.5), b = node_at(m, 2, 1, 1), c = node_at(m, 1.5, 0, 0);

@@ -19,14 +19,14 @@ using decomposition::GeneralizedInverseMethod;
 
 namespace
 {
-mesh::HexMesh distorted_box()
+mesh::Mesh distorted_box()
 {
   mesh::BoxParameters p;
   p.lengths = Eigen::Vector3d(2, 1, 1);
   p.nx = 6;
   p.ny = 3;
   p.nz = 3;
-  mesh::HexMesh m = mesh::generate_box(p);
+  mesh::Mesh m = mesh::generate_box(p);
   for (int32_t i = 0; i < m.n_nodes(); ++i)
     m.nodes.row(i) += 0.04 * Eigen::RowVector3d(std::sin(3.1 * i), std::cos(1.7 * i), std::sin(0.7 * i + 1));
   return m;
@@ -44,7 +44,7 @@ la::Matrix dense_of(la::Index n, const Apply& apply)
 
 void check_blocks(GeneralizedInverseMethod method, bool whole_surface_on_boundary, double young = 2e11)
 {
-  const mesh::HexMesh m = distorted_box();
+  const mesh::Mesh m = distorted_box();
   const decomposition::Decomposition decomp(m, decomposition::partition_structured(m, {3, 1, 1}));
   decomposition::SubdomainSystem system(decomp, {fem::Material{young, 0.3}}, fem::Kinematics::linear, method);
   system.update(la::Vector::Zero(decomp.n_primal()));
@@ -156,7 +156,7 @@ TEST(ExplicitBoundaryOperators, EliminatesFixingDofsAndRefusesASingularSgg)
 // reused blocks are the same arithmetic on the same boundary).
 TEST(ExplicitBoundaryOperators, UnchangedBoundariesKeepTheirBlocks)
 {
-  const mesh::HexMesh m = distorted_box();
+  const mesh::Mesh m = distorted_box();
   const decomposition::Decomposition decomp(m, decomposition::partition_structured(m, {3, 1, 1}));
   decomposition::SubdomainSystem system(decomp, {fem::Material{2e11, 0.3}}, fem::Kinematics::linear,
                                         GeneralizedInverseMethod::fixing_dofs);

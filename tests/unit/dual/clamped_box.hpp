@@ -12,7 +12,7 @@ namespace feticon::test
 {
 struct ClampedBox
 {
-  mesh::HexMesh mesh;
+  mesh::Mesh mesh;
   std::unique_ptr<decomposition::Decomposition> decomp;
   std::unique_ptr<decomposition::SubdomainSystem> system;
   decomposition::EqualityRows equality; ///< gluing rows and the clamp's Dirichlet rows

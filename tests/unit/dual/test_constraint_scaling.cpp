@@ -24,7 +24,7 @@ std::unique_ptr<Setup> make_setup(int extra)
 {
   auto s = std::make_unique<Setup>();
   s->box = test::make_clamped_box();
-  const mesh::HexMesh& mesh = s->box->mesh;
+  const mesh::Mesh& mesh = s->box->mesh;
   s->rows = s->box->equality.rows;
   s->n_equality = s->box->equality.n_global();
   if (extra > 0)

@@ -1,7 +1,7 @@
 #pragma once
 /// Small hand-built meshes for the fem unit tests (independent of the mesh generators).
 
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <cmath>
 
@@ -10,9 +10,9 @@ namespace feticon::test
 /// A 2x2x2 patch of the unit cube whose 27 nodes are perturbed (all but the 8 corners),
 /// so that every element is a distorted hexahedron. Node set "boundary" holds the 26
 /// boundary nodes, "interior" the centre node.
-inline mesh::HexMesh distorted_patch()
+inline mesh::Mesh distorted_patch()
 {
-  mesh::HexMesh m;
+  mesh::Mesh m;
   m.nodes.resize(27, 3);
   auto id = [](int i, int j, int k) { return i + 3 * j + 9 * k; };
   for (int k = 0; k < 3; ++k)
@@ -31,8 +31,10 @@ inline mesh::HexMesh distorted_patch()
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i)
-        m.cells.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
-                           id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+        m.cells.add(feticon::mesh::CellKind::hex8,
+                    feticon::mesh::Hex8Nodes{id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+                                             id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+                                             id(i, j + 1, k + 1)});
   m.cell_body.assign(8, 0);
   m.body_names = {"patch"};
   for (int n = 0; n < 27; ++n)
@@ -41,12 +43,12 @@ inline mesh::HexMesh distorted_patch()
 }
 
 /// The unit cube as one hex8 cell; face set "xmax" (x = 1), node sets for each face.
-inline mesh::HexMesh unit_cube()
+inline mesh::Mesh unit_cube()
 {
-  mesh::HexMesh m;
+  mesh::Mesh m;
   m.nodes.resize(8, 3);
   m.nodes << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1;
-  m.cells.push_back({0, 1, 2, 3, 4, 5, 6, 7});
+  m.cells.add(feticon::mesh::CellKind::hex8, feticon::mesh::Hex8Nodes{0, 1, 2, 3, 4, 5, 6, 7});
   m.cell_body = {0};
   m.body_names = {"cube"};
   m.face_sets["xmax"] = {{1, 2, 6, 5}};

@@ -14,7 +14,7 @@ using namespace feticon;
 
 namespace
 {
-int32_t node_at(const mesh::HexMesh& m, double x, double y, double z)
+int32_t node_at(const mesh::Mesh& m, double x, double y, double z)
 {
   for (int32_t n = 0; n < m.n_nodes(); ++n)
     if ((m.nodes.row(n) - Eigen::RowVector3d(x, y, z)).norm() < 1e-12)
@@ -38,7 +38,7 @@ TEST(ConstraintElimination, MatchesTheLagrangeMultiplierSolve)
   p.nx = 4;
   p.ny = 2;
   p.nz = 2;
-  const mesh::HexMesh m = mesh::generate_box(p);
+  const mesh::Mesh m = mesh::generate_box(p);
   const int64_t n = 3 * m.n_nodes();
   const fem::Assembler assembler(m, fem::whole_mesh_domain(m), {fem::Material{2e11, 0.3}}, fem::Kinematics::linear);
   const la::SparseMatrix K = assembler.stiffness(la::Vector::Zero(n), fem::StiffnessKind::tangent);

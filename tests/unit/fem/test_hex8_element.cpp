@@ -17,7 +17,7 @@ using fem::NodeCoords;
 
 namespace
 {
-NodeCoords cell_coords(const mesh::HexMesh& m, int c)
+NodeCoords cell_coords(const mesh::Mesh& m, int c)
 {
   NodeCoords X;
   for (int a = 0; a < 8; ++a)

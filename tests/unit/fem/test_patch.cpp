@@ -16,7 +16,7 @@ using namespace feticon;
 namespace
 {
 /// Exact field u = A X + c at every node.
-la::Vector linear_field(const mesh::HexMesh& m, const Eigen::Matrix3d& A, const Eigen::Vector3d& c)
+la::Vector linear_field(const mesh::Mesh& m, const Eigen::Matrix3d& A, const Eigen::Vector3d& c)
 {
   la::Vector u(3 * m.n_nodes());
   for (int n = 0; n < m.n_nodes(); ++n)
@@ -25,7 +25,7 @@ la::Vector linear_field(const mesh::HexMesh& m, const Eigen::Matrix3d& A, const 
 }
 
 /// Boundary nodes prescribed from the exact field.
-fem::ConstrainedDofs boundary_values(const mesh::HexMesh& m, const la::Vector& exact)
+fem::ConstrainedDofs boundary_values(const mesh::Mesh& m, const la::Vector& exact)
 {
   fem::ConstrainedDofs dofs;
   const auto& nodes = m.node_set("boundary");

@@ -173,7 +173,7 @@ TEST(FrdWriter, ReproducesWhatCcxWrites)
   const Frd reference = parse_frd(reference_lines);
   ASSERT_TRUE(reference.closed);
 
-  mesh::HexMesh mesh;
+  mesh::Mesh mesh;
   std::map<int64_t, int32_t> index_of_label;
   mesh.nodes.resize(static_cast<Eigen::Index>(reference.node_labels.size()), 3);
   for (std::size_t i = 0; i < reference.node_labels.size(); ++i)
@@ -184,10 +184,10 @@ TEST(FrdWriter, ReproducesWhatCcxWrites)
   }
   for (const auto& nodes : reference.element_nodes)
   {
-    mesh::Cell cell;
+    feticon::mesh::Hex8Nodes cell;
     for (int k = 0; k < 8; ++k)
       cell[k] = index_of_label.at(nodes[k]);
-    mesh.cells.push_back(cell);
+    mesh.cells.add(feticon::mesh::CellKind::hex8, cell);
     mesh.cell_body.push_back(0);
   }
   mesh.body_names = {"EL"}; // ccx's material 1 of the deck
@@ -275,17 +275,18 @@ TEST(FrdWriter, ReproducesWhatCcxWrites)
 }
 
 /// Two hex8 cells side by side. Each is its own body only to give two material numbers; the
-/// writer does not look at HexMesh's rule that bodies share no nodes.
-mesh::HexMesh two_cells()
+/// writer does not look at Mesh's rule that bodies share no nodes.
+mesh::Mesh two_cells()
 {
-  mesh::HexMesh mesh;
+  mesh::Mesh mesh;
   mesh.nodes.resize(12, 3);
   for (int i = 0; i < 12; ++i)
   {
     const int x = i % 3, y = (i / 3) % 2, z = i / 6;
     mesh.nodes.row(i) << 0.5 * x, 0.25 * y, -0.125 * z;
   }
-  mesh.cells = {{0, 1, 4, 3, 6, 7, 10, 9}, {1, 2, 5, 4, 7, 8, 11, 10}};
+  mesh.cells.add(mesh::CellKind::hex8, mesh::Hex8Nodes{0, 1, 4, 3, 6, 7, 10, 9});
+  mesh.cells.add(mesh::CellKind::hex8, mesh::Hex8Nodes{1, 2, 5, 4, 7, 8, 11, 10});
   mesh.cell_body = {0, 1};
   mesh.body_names = {"slab", "punch"};
   return mesh;
@@ -298,7 +299,7 @@ TEST(FrdWriter, WritesKnownValuesStepByStep)
 {
   // Reference: the values set here; the parser reads them back by fixed columns. %12.5E of a
   // float-rounded value keeps 6 significant digits: relative error <= 5e-6 + 6e-8.
-  const mesh::HexMesh mesh = two_cells();
+  const mesh::Mesh mesh = two_cells();
   io::Labels node_labels(12), element_labels = {70, 9};
   for (int i = 0; i < 12; ++i)
     node_labels[i] = 1000 + 10 * i;
@@ -378,7 +379,7 @@ TEST(FrdWriter, WritesKnownValuesStepByStep)
 TEST(FrdWriter, RejectsWrongSizesAndLabels)
 {
   // Reference: the sizes the header documents (n x 3, n x 6, n; positive labels).
-  const mesh::HexMesh mesh = two_cells();
+  const mesh::Mesh mesh = two_cells();
   const fs::path directory = fresh_directory("frd_rejects");
   EXPECT_THROW(FrdWriter(directory / "a.frd", mesh, io::Labels(11, 1)), Error);
   EXPECT_THROW(FrdWriter(directory / "b.frd", mesh, {}, {1, 0}), Error);
@@ -433,7 +434,7 @@ TEST(FrdWriter, CgxReadsTheFile)
   // needs a display) and reporting the extremes of D3 and of SXX with their node labels.
   if (!on_path("cgx"))
     GTEST_SKIP() << "cgx is not installed (Debian: calculix-cgx)";
-  const mesh::HexMesh mesh = two_cells();
+  const mesh::Mesh mesh = two_cells();
   io::Labels node_labels(12);
   for (int i = 0; i < 12; ++i)
     node_labels[i] = 1000 + 10 * i;

@@ -52,7 +52,7 @@ double sum(const std::vector<double>& values) { return std::accumulate(values.be
 /// the summation orders of C++ and numpy differ by a few ulps only.
 double relative_difference(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
 
-mesh::HexMesh small_box()
+mesh::Mesh small_box()
 {
   mesh::BoxParameters p;
   p.lengths = Eigen::Vector3d(1.0, 0.5, 0.25);
@@ -90,7 +90,7 @@ std::string read(const fs::path& path)
 TEST(Vtu, RoundTripThroughAnIndependentReader)
 {
   const fs::path directory = fresh_directory("vtu_round_trip");
-  const mesh::HexMesh mesh = small_box();
+  const mesh::Mesh mesh = small_box();
   const int32_t n_points = mesh.n_nodes(), n_cells = mesh.n_cells();
   const VtuField displacement{"displacement", 3, positive_values(3 * n_points, 1e-3)};
   const VtuField temperature{"temperature", 1, positive_values(n_points, 300.0)};
@@ -148,7 +148,7 @@ TEST(Vtu, RoundTripThroughAnIndependentReader)
   EXPECT_EQ(cells["offsets"]["max"], 8 * n_cells);
   EXPECT_EQ(cells["offsets"]["sum"], 8.0 * n_cells * (n_cells + 1) / 2);
   double connectivity_sum = 0;
-  for (const mesh::Cell& cell : mesh.cells)
+  for (const auto cell : mesh.cells)
     connectivity_sum += std::accumulate(cell.begin(), cell.end(), 0.0);
   EXPECT_EQ(cells["connectivity"]["n_values"], 8 * n_cells);
   EXPECT_EQ(cells["connectivity"]["sum"], connectivity_sum);
@@ -163,7 +163,7 @@ TEST(Vtu, RoundTripThroughAnIndependentReader)
 TEST(Vtu, RejectsMismatchedFields)
 {
   const fs::path directory = fresh_directory("vtu_errors");
-  const mesh::HexMesh mesh = small_box();
+  const mesh::Mesh mesh = small_box();
   const fs::path path = directory / "bad.vtu";
   const VtuField short_field{"short", 3, std::vector<double>(3 * mesh.n_nodes() - 1, 1.0)};
   EXPECT_THROW(write_vtu(path, mesh, nullptr, {short_field}, {}), Error);
@@ -191,7 +191,7 @@ TEST(Vtu, UnwritablePathThrows)
 TEST(Pvd, ListsExactlyTheStepsAddedAndLeavesNoTemporary)
 {
   const fs::path directory = fresh_directory("pvd");
-  const mesh::HexMesh mesh = small_box();
+  const mesh::Mesh mesh = small_box();
   PvdWriter series(directory / "series.pvd");
   EXPECT_EQ(count(read(directory / "series.pvd"), "<DataSet "), 0);
   const std::vector<double> times = {0.1, 0.5, 1.0};

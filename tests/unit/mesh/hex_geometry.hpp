@@ -3,7 +3,7 @@
 /// trilinear map x(xi) = sum_a N_a(xi) x_a with N_a = (1 + xi xi_a)(1 + eta eta_a)(1 + zeta
 /// zeta_a)/8 and the VTK corner order written out again here.
 
-#include "mesh/hex_mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <algorithm>
 #include <array>
@@ -28,7 +28,7 @@ inline constexpr std::array<std::array<double, 3>, 8> reference_corners = {{
 }};
 
 /// Jacobian d x / d xi of the trilinear map of `cell` at reference point `xi`.
-inline Eigen::Matrix3d jacobian(const HexMesh& mesh, const Cell& cell, const Eigen::Vector3d& xi)
+inline Eigen::Matrix3d jacobian(const Mesh& mesh, std::span<const int32_t> cell, const Eigen::Vector3d& xi)
 {
   Eigen::Matrix3d result = Eigen::Matrix3d::Zero();
   for (int a = 0; a < 8; ++a)
@@ -55,7 +55,7 @@ inline std::vector<Eigen::Vector3d> gauss_points()
 
 /// Cell volume by 2x2x2 Gauss quadrature of det J, exact for trilinear cells (det J has degree
 /// at most 2 in each reference coordinate).
-inline double cell_volume(const HexMesh& mesh, const Cell& cell)
+inline double cell_volume(const Mesh& mesh, std::span<const int32_t> cell)
 {
   double volume = 0;
   for (const Eigen::Vector3d& xi : gauss_points())
@@ -63,16 +63,16 @@ inline double cell_volume(const HexMesh& mesh, const Cell& cell)
   return volume;
 }
 
-inline Eigen::Vector3d point(const HexMesh& mesh, int32_t id) { return mesh.nodes.row(id).transpose(); }
+inline Eigen::Vector3d point(const Mesh& mesh, int32_t id) { return mesh.nodes.row(id).transpose(); }
 
-/// Unit normal (x1 - x0) x (x3 - x0) of a face (the orientation convention of HexMesh).
-inline Eigen::Vector3d face_normal(const HexMesh& mesh, const Face& face)
+/// Unit normal (x1 - x0) x (x3 - x0) of a face (the orientation convention of Mesh).
+inline Eigen::Vector3d face_normal(const Mesh& mesh, const Face& face)
 {
   const Eigen::Vector3d x0 = point(mesh, face[0]);
   return (point(mesh, face[1]) - x0).cross(point(mesh, face[3]) - x0).normalized();
 }
 
-inline Eigen::Vector3d face_centroid(const HexMesh& mesh, const Face& face)
+inline Eigen::Vector3d face_centroid(const Mesh& mesh, const Face& face)
 {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const int32_t id : face)
@@ -80,7 +80,7 @@ inline Eigen::Vector3d face_centroid(const HexMesh& mesh, const Face& face)
   return sum / 4;
 }
 
-inline Eigen::Vector3d cell_centroid(const HexMesh& mesh, const Cell& cell)
+inline Eigen::Vector3d cell_centroid(const Mesh& mesh, std::span<const int32_t> cell)
 {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const int32_t id : cell)
@@ -89,15 +89,21 @@ inline Eigen::Vector3d cell_centroid(const HexMesh& mesh, const Cell& cell)
 }
 
 using SortedFace = std::array<int32_t, 4>;
-inline SortedFace sorted(Face face)
+inline SortedFace sorted(SortedFace face)
 {
   std::sort(face.begin(), face.end());
   return face;
 }
+inline SortedFace sorted(const Face& face)
+{
+  SortedFace corners{};
+  std::copy(face.begin(), face.end(), corners.begin());
+  return sorted(corners);
+}
 
 /// The 6 faces of every cell keyed by their sorted node ids, from the corner order alone: a face
 /// is the 4 corners sharing one reference coordinate value. Maps each face to its cells.
-inline std::map<SortedFace, std::vector<int32_t>> faces_to_cells(const HexMesh& mesh)
+inline std::map<SortedFace, std::vector<int32_t>> faces_to_cells(const Mesh& mesh)
 {
   std::map<SortedFace, std::vector<int32_t>> result;
   for (int32_t c = 0; c < mesh.n_cells(); ++c)

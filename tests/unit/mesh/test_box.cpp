@@ -44,14 +44,14 @@ constexpr std::array<Side, 6> sides = {{{"xmin", 0, false},
 TEST(Box, CountsAndVolume)
 {
   const BoxParameters p = test_box();
-  const HexMesh mesh = generate_box(p);
+  const Mesh mesh = generate_box(p);
   EXPECT_EQ(mesh.n_nodes(), 4 * 5 * 6);
   EXPECT_EQ(mesh.n_cells(), 3 * 4 * 5);
   EXPECT_EQ(mesh.n_bodies(), 1);
   EXPECT_EQ(mesh.body_names[0], "box");
   ASSERT_EQ(mesh.cell_body.size(), mesh.cells.size());
   double volume = 0;
-  for (const Cell& cell : mesh.cells)
+  for (const auto cell : mesh.cells)
   {
     const double cell_volume = test::cell_volume(mesh, cell);
     EXPECT_GT(cell_volume, 0);
@@ -64,7 +64,7 @@ TEST(Box, CountsAndVolume)
 TEST(Box, SidesOnTheirPlanesWithOutwardNormals)
 {
   const BoxParameters p = test_box();
-  const HexMesh mesh = generate_box(p);
+  const Mesh mesh = generate_box(p);
   for (const Side& side : sides)
   {
     SCOPED_TRACE(side.name);
@@ -91,7 +91,7 @@ TEST(Box, SidesOnTheirPlanesWithOutwardNormals)
 
 TEST(Box, EveryBoundaryFaceInExactlyOneSet)
 {
-  const HexMesh mesh = generate_box(test_box());
+  const Mesh mesh = generate_box(test_box());
   std::set<test::SortedFace> boundary;
   for (const auto& [face, cells] : test::faces_to_cells(mesh))
     if (cells.size() == 1)
@@ -134,8 +134,8 @@ TEST(AppendMesh, ShiftsIdsAndRenamesSets)
   upper.origin = Eigen::Vector3d(0, 0, 1);
   upper.ny = 3;
   upper.body_name = "upper";
-  HexMesh mesh = generate_box(lower);
-  const HexMesh second = generate_box(upper);
+  Mesh mesh = generate_box(lower);
+  const Mesh second = generate_box(upper);
   const int32_t n_first = mesh.n_nodes();
   append_mesh(mesh, second, "upper_");
 
@@ -160,7 +160,7 @@ TEST(AppendMesh, ShiftsIdsAndRenamesSets)
       EXPECT_GE(id, n_first);
 
   EXPECT_THROW(append_mesh(mesh, second, "again_"), Error); // body "upper" exists
-  HexMesh renamed = second;
+  Mesh renamed = second;
   renamed.body_names = {"third"};
   EXPECT_THROW(append_mesh(mesh, renamed, "upper_"), Error); // set "upper_xmin" exists
 }

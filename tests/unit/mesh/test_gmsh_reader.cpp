@@ -262,11 +262,11 @@ TEST(GmshReader, SingleHexKeepsNodeOrderAndRejectsInvertedCell)
   TempFolder folder;
   const fs::path path = folder / "single.msh";
   write_single_hex(path, {0, 1, 2, 3, 4, 5, 6, 7});
-  const HexMesh mesh = read_gmsh(path);
+  const Mesh mesh = read_gmsh(path);
   ASSERT_EQ(mesh.n_cells(), 1);
   ASSERT_EQ(mesh.n_nodes(), 8);
   // Gmsh tags 1..8 are renumbered 0..7 in tag order, so the cell is the identity.
-  EXPECT_EQ(mesh.cells[0], (Cell{0, 1, 2, 3, 4, 5, 6, 7}));
+  EXPECT_TRUE(std::ranges::equal(mesh.cells[0], Hex8Nodes{0, 1, 2, 3, 4, 5, 6, 7}));
   // The sheared cube's volume: det of the linear map [[1,0,0.3],[0,2,0],[0.1,0,0.5]] = 0.94.
   EXPECT_NEAR(test::cell_volume(mesh, mesh.cells[0]), 0.94, 1e-14);
 
@@ -281,7 +281,7 @@ TEST(GmshReader, TwoBoxesCountsAndVolumes)
   TempFolder folder;
   const fs::path path = folder / "two_boxes.msh";
   const GmshCounts gmsh_counts = write_two_boxes(path);
-  const HexMesh mesh = read_gmsh(path);
+  const Mesh mesh = read_gmsh(path);
 
   EXPECT_EQ(static_cast<std::size_t>(mesh.n_nodes()), gmsh_counts.n_nodes);
   EXPECT_EQ(static_cast<std::size_t>(mesh.n_cells()), gmsh_counts.n_hexahedra);
@@ -315,7 +315,7 @@ TEST(GmshReader, TwoBoxesFaceSetsOnTheirPlanesOutward)
   TempFolder folder;
   const fs::path path = folder / "two_boxes.msh";
   write_two_boxes(path);
-  const HexMesh mesh = read_gmsh(path);
+  const Mesh mesh = read_gmsh(path);
 
   const auto faces_cells = test::faces_to_cells(mesh);
   const std::array<FaceSetCase, 4> cases = {{{"lower_top", 0, 2, 0.5, 1, 4 * 3},
@@ -372,16 +372,112 @@ TEST(GmshReader, TruncatedFile)
   EXPECT_MESSAGE(read_error(half), half, "ends inside $Nodes");
 }
 
-TEST(GmshReader, RejectsTetrahedra)
+/// How a box is meshed for one cell type: unstructured tetrahedra, transfinite hexahedra, or
+/// prisms extruded from a triangulated rectangle; then raised to second order if asked.
+struct CellTypeCase
+{
+  CellKind kind;
+  FaceKind side_faces; ///< the faces on the box's side z = 0
+  int order;
+  bool hexahedra;
+  bool prisms;
+};
+
+/// A 1 x 0.8 x 0.5 box of the case's cells with the physical surface "bottom" (z = 0), written
+/// to `path`; returns Gmsh's element count of the volume.
+std::size_t write_box_of(const CellTypeCase& c, const fs::path& path)
+{
+  GmshModel model;
+  int volume = 0;
+  if (c.prisms)
+  {
+    const int rectangle = gmsh::model::occ::addRectangle(0, 0, 0, lower_box.lengths.x(), lower_box.lengths.y());
+    gmsh::vectorpair out;
+    gmsh::model::occ::extrude({{2, rectangle}}, 0, 0, lower_box.lengths.z(), out, {2}, {}, true);
+    gmsh::model::occ::synchronize();
+    for (const auto& [dim, tag] : out)
+      if (dim == 3)
+        volume = tag;
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.3);
+  }
+  else
+  {
+    volume = add_box(lower_box, c.hexahedra);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 0.3);
+  }
+  add_group(3, {volume}, "block");
+  add_group(2, {side(volume, 2, 0.0)}, "bottom");
+  gmsh::option::setNumber("Mesh.ElementOrder", c.order);
+  gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 1);
+  mesh_and_write(path);
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> tags, nodes;
+  gmsh::model::mesh::getElements(types, tags, nodes, 3, volume);
+  return types.size() == 1 ? tags[0].size() : 0;
+}
+
+class GmshCellTypes : public ::testing::TestWithParam<CellTypeCase>
+{
+};
+
+// Reference: Gmsh's element count, the box geometry (the bottom's area 0.8 m^2 and normal -z),
+// and the orientation of every cell (centre Jacobian > 0).
+TEST_P(GmshCellTypes, ReadsTheCellsAndOrientsTheirFacesOutward)
+{
+  const CellTypeCase c = GetParam();
+  TempFolder folder;
+  const fs::path path = folder / (std::string(cell_type(c.kind).name) + ".msh");
+  const std::size_t n_elements = write_box_of(c, path);
+  ASSERT_GT(n_elements, 0u) << "Gmsh made more than one element type";
+  const Mesh mesh = read_gmsh(path);
+  ASSERT_EQ(static_cast<std::size_t>(mesh.n_cells()), n_elements);
+  EXPECT_TRUE(mesh.cells.all_of_kind(c.kind));
+  for (int32_t cell = 0; cell < mesh.n_cells(); ++cell)
+    EXPECT_GT(centre_jacobian_determinant(mesh, cell), 0) << "cell " << cell;
+  double area = 0;
+  for (const Face& face : mesh.face_set("bottom"))
+  {
+    ASSERT_EQ(face.kind, c.side_faces);
+    const Eigen::Vector3d x0 = mesh.nodes.row(face[0]).transpose();
+    const Eigen::Vector3d to_second = mesh.nodes.row(face[1]).transpose() - x0;
+    const Eigen::Vector3d to_last = mesh.nodes.row(face[face.n_corners() - 1]).transpose() - x0;
+    const Eigen::Vector3d normal = to_second.cross(to_last);
+    EXPECT_LT(normal.z(), 0) << "a bottom face points into the box";
+    for (int a = 0; a < face.size(); ++a)
+      EXPECT_NEAR(mesh.nodes(face[a], 2), 0.0, 1e-12);
+    // The corners' polygon: a triangle, or a quad split along its diagonal.
+    area += 0.5 * std::abs(normal.z());
+    if (face.n_corners() == 4)
+    {
+      const Eigen::Vector3d to_third = mesh.nodes.row(face[2]).transpose() - x0;
+      area += 0.5 * std::abs(to_third.cross(to_last).z()) - 0.5 * std::abs(normal.z()) +
+          0.5 * std::abs(to_second.cross(to_third).z());
+    }
+  }
+  EXPECT_NEAR(area, lower_box.lengths.x() * lower_box.lengths.y(), 1e-12);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryType, GmshCellTypes,
+                         ::testing::Values(CellTypeCase{CellKind::tet4, FaceKind::tri3, 1, false, false},
+                                           CellTypeCase{CellKind::tet10, FaceKind::tri6, 2, false, false},
+                                           CellTypeCase{CellKind::hex8, FaceKind::quad4, 1, true, false},
+                                           CellTypeCase{CellKind::hex20, FaceKind::quad8, 2, true, false},
+                                           CellTypeCase{CellKind::wedge6, FaceKind::tri3, 1, false, true}),
+                         [](const ::testing::TestParamInfo<CellTypeCase>& info) {
+  return std::string(cell_type(info.param.kind).name);
+});
+
+TEST(GmshReader, RejectsTwentySevenNodeHexahedra)
 {
   TempFolder folder;
-  const fs::path path = folder / "tets.msh";
+  const fs::path path = folder / "hex27.msh";
   {
     GmshModel model;
-    add_group(3, {add_box(lower_box, false)}, "block");
+    add_group(3, {add_box(lower_box)}, "block");
+    gmsh::option::setNumber("Mesh.ElementOrder", 2);
     mesh_and_write(path);
   }
-  EXPECT_MESSAGE(read_error(path), path, "Tetrahedron");
+  EXPECT_MESSAGE(read_error(path), path, "Hexahedron 27");
 }
 
 TEST(GmshReader, RejectsFileWithoutPhysicalVolume)
@@ -468,7 +564,7 @@ TEST(GmshReader, RejectsQuadranglesOffTheHexahedra)
     add_group(2, {loose}, "loose");
     mesh_and_write(path);
   }
-  EXPECT_MESSAGE(read_error(path), path, "'loose' is not a face of any hexahedron");
+  EXPECT_MESSAGE(read_error(path), path, "'loose' is not a face of any cell");
 }
 
 TEST(GmshReader, RejectsVolumeOutsidePhysicalGroups)

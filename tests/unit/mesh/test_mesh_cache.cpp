@@ -21,7 +21,7 @@ namespace
 {
 namespace fs = std::filesystem;
 
-HexMesh test_mesh()
+Mesh test_mesh()
 {
   BoxParameters p;
   p.origin = Eigen::Vector3d(-0.5, 2.0, 0.25);
@@ -29,12 +29,12 @@ HexMesh test_mesh()
   p.nx = 3;
   p.ny = 4;
   p.nz = 2;
-  HexMesh mesh = generate_box(p);
+  Mesh mesh = generate_box(p);
   mesh.nodes(5, 1) += 1e-13; // a value text would round
   return mesh;
 }
 
-void expect_identical(const HexMesh& a, const HexMesh& b)
+void expect_identical(const Mesh& a, const Mesh& b)
 {
   ASSERT_EQ(a.nodes.rows(), b.nodes.rows());
   EXPECT_EQ(0, std::memcmp(a.nodes.data(), b.nodes.data(), sizeof(double) * a.nodes.size()));
@@ -67,7 +67,7 @@ protected:
     return files.empty() ? fs::path() : files.front();
   }
 
-  HexMesh get(const std::string& key, bool& hit)
+  Mesh get(const std::string& key, bool& hit)
   {
     return cached_mesh(
         location, key,
@@ -88,7 +88,7 @@ TEST_F(MeshCache, SecondCallReadsTheStoredMeshBitForBit)
   bool hit = true;
   expect_identical(get("box", hit), test_mesh());
   EXPECT_FALSE(hit);
-  const HexMesh again = get("box", hit);
+  const Mesh again = get("box", hit);
   EXPECT_TRUE(hit);
   EXPECT_EQ(builds, 1);
   expect_identical(again, test_mesh());
@@ -129,7 +129,7 @@ TEST_F(MeshCache, FailedBuildStoresNothing)
 {
   bool hit = true;
   EXPECT_THROW(cached_mesh(
-                   location, "bad", []() -> HexMesh { throw Error("no mesh"); }, &hit),
+                   location, "bad", []() -> Mesh { throw Error("no mesh"); }, &hit),
                Error);
   EXPECT_FALSE(fs::exists(folder) && !fs::is_empty(folder));
 }

@@ -18,11 +18,12 @@ namespace feticon::mesh
 {
 namespace
 {
-HexMesh as_mesh(const OctantBall& ball)
+Mesh as_mesh(const OctantBall& ball)
 {
-  HexMesh m;
+  Mesh m;
   m.nodes = ball.nodes;
-  m.cells = ball.cells;
+  for (const Hex8Nodes& cell : ball.cells)
+    m.cells.add(CellKind::hex8, cell);
   m.cell_body.assign(ball.cells.size(), 0);
   m.body_names = {"ball"};
   return m;
@@ -38,10 +39,10 @@ TEST(OctantBall, CellsArePositiveAndFillTheOctant)
 {
   const OctantBallParameters p = small_ball();
   const OctantBall ball = octant_ball(p);
-  const HexMesh mesh = as_mesh(ball);
+  const Mesh mesh = as_mesh(ball);
   EXPECT_EQ(mesh.n_cells(), 6 * 6 * 6 + ball.layers * 3 * 6 * 6);
   double volume = 0;
-  for (const Cell& cell : mesh.cells)
+  for (const auto cell : mesh.cells)
   {
     for (const Eigen::Vector3d& xi : test::gauss_points())
       ASSERT_GT(test::jacobian(mesh, cell, xi).determinant(), 0);
@@ -58,7 +59,7 @@ TEST(OctantBall, BoundaryFacesLieOnTheirSurfacesAndPointOutward)
 {
   const OctantBallParameters p = small_ball();
   const OctantBall ball = octant_ball(p);
-  const HexMesh mesh = as_mesh(ball);
+  const Mesh mesh = as_mesh(ball);
   std::set<test::SortedFace> boundary;
   for (const auto& [face, cells] : test::faces_to_cells(mesh))
     if (cells.size() == 1)

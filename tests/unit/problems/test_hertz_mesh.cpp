@@ -19,9 +19,8 @@ namespace feticon::problems
 {
 namespace
 {
-using mesh::Cell;
 using mesh::Face;
-using mesh::HexMesh;
+using mesh::Mesh;
 using mesh::mesh_quality;
 using mesh::MeshQuality;
 namespace test = mesh::test;
@@ -29,7 +28,7 @@ namespace test = mesh::test;
 /// Hertz contact half-width of the steel cylinder of section 9 (m).
 constexpr double half_width = 0.068078;
 
-HexMesh hertz(double refinement, HertzMeshKind kind)
+Mesh hertz(double refinement, HertzMeshKind kind)
 {
   HertzMeshParameters p;
   p.refinement = refinement;
@@ -38,7 +37,7 @@ HexMesh hertz(double refinement, HertzMeshKind kind)
 }
 
 /// Body of every node (bodies share no nodes).
-std::vector<int32_t> node_bodies(const HexMesh& mesh)
+std::vector<int32_t> node_bodies(const Mesh& mesh)
 {
   std::vector<int32_t> body(mesh.n_nodes(), -1);
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
@@ -48,7 +47,7 @@ std::vector<int32_t> node_bodies(const HexMesh& mesh)
 }
 
 /// Area of the cylinder part of the mesh: volume of its cells / thickness (m^2).
-double cylinder_area(const HexMesh& mesh, double thickness)
+double cylinder_area(const Mesh& mesh, double thickness)
 {
   double volume = 0;
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
@@ -59,7 +58,7 @@ double cylinder_area(const HexMesh& mesh, double thickness)
 
 /// Area between the arc and the chords of the cylinder_contact faces: each chord of length l cuts
 /// off the circular segment R^2/2 (theta - sin theta), theta = 2 asin(l / (2R)).
-double chord_segments_area(const HexMesh& mesh, double radius)
+double chord_segments_area(const Mesh& mesh, double radius)
 {
   double area = 0;
   for (const Face& face : mesh.face_set("cylinder_contact"))
@@ -79,17 +78,17 @@ double chord_segments_area(const HexMesh& mesh, double radius)
 class HertzMesh : public ::testing::TestWithParam<std::tuple<HertzMeshKind, double>>
 {
 protected:
-  HexMesh mesh() const { return hertz(std::get<1>(GetParam()), std::get<0>(GetParam())); }
+  Mesh mesh() const { return hertz(std::get<1>(GetParam()), std::get<0>(GetParam())); }
 };
 
 TEST_P(HertzMesh, PositiveJacobianAtAllGaussPoints)
 {
-  const HexMesh mesh = this->mesh();
+  const Mesh mesh = this->mesh();
   ASSERT_EQ(mesh.n_bodies(), 2);
   EXPECT_EQ(mesh.body_names, (std::vector<std::string>{"cylinder", "block"}));
   const auto points = test::gauss_points();
   int32_t n_bad = 0;
-  for (const Cell& cell : mesh.cells)
+  for (const auto cell : mesh.cells)
     for (const Eigen::Vector3d& xi : points)
       n_bad += test::jacobian(mesh, cell, xi).determinant() <= 0;
   EXPECT_EQ(n_bad, 0);
@@ -98,7 +97,7 @@ TEST_P(HertzMesh, PositiveJacobianAtAllGaussPoints)
 TEST_P(HertzMesh, SetsLieOnTheirBoundaries)
 {
   const HertzMeshParameters p;
-  const HexMesh mesh = this->mesh();
+  const Mesh mesh = this->mesh();
   const double R = p.cylinder_radius;
   const std::vector<int32_t> body = node_bodies(mesh);
   // name, body (-1: both), coordinate test
@@ -155,7 +154,7 @@ TEST_P(HertzMesh, SetsLieOnTheirBoundaries)
 TEST_P(HertzMesh, FacesPointOutward)
 {
   const HertzMeshParameters p;
-  const HexMesh mesh = this->mesh();
+  const Mesh mesh = this->mesh();
   const Eigen::Vector3d axis(0, p.cylinder_radius, 0);
   const auto face_cells = test::faces_to_cells(mesh);
   const std::map<std::string, Eigen::Vector3d> plane_normals = {
@@ -196,7 +195,7 @@ TEST_P(HertzMesh, FacesPointOutward)
 
 TEST_P(HertzMesh, ContactMeshesDoNotMatch)
 {
-  const HexMesh mesh = this->mesh();
+  const Mesh mesh = this->mesh();
   std::set<double> master_x;
   for (const int32_t id : mesh.node_set("block_contact"))
     master_x.insert(mesh.nodes(id, 0));
@@ -221,7 +220,7 @@ TEST_P(HertzMesh, ContactMeshesDoNotMatch)
 TEST_P(HertzMesh, CylinderAreaIsTheSegmentLessTheChordSegments)
 {
   const HertzMeshParameters p;
-  const HexMesh mesh = this->mesh();
+  const Mesh mesh = this->mesh();
   const double R = p.cylinder_radius, Xc = p.cylinder_width;
   // Integral of sqrt(R^2 - x^2) from 0 to Xc.
   const double exact = 0.5 * (Xc * std::sqrt(R * R - Xc * Xc) + R * R * std::asin(Xc / R));
@@ -294,8 +293,8 @@ TEST(HertzMeshQuality, GradedHasNoNeedleCells)
   // shape-regular, with far fewer cells for the same contact resolution.
   for (double refinement : {1.0, 4.4})
   {
-    const HexMesh graded = hertz(refinement, HertzMeshKind::graded);
-    const HexMesh tensor = hertz(refinement, HertzMeshKind::tensor);
+    const Mesh graded = hertz(refinement, HertzMeshKind::graded);
+    const Mesh tensor = hertz(refinement, HertzMeshKind::tensor);
     // Issue 17's bounds: aspect ratio <= 3, corners within [45, 135] degrees.
     const MeshQuality q = mesh_quality(graded, true);
     EXPECT_LE(q.max_aspect_ratio, 3.0) << refinement;

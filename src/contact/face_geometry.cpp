@@ -1,0 +1,189 @@
+#include "contact/face_geometry.hpp"
+
+#include "contact/mortar_integration.hpp"
+#include "fem/reference_face.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace feticon::contact
+{
+namespace
+{
+using mesh::FaceKind;
+
+/// Tangents x_,xi and x_,eta at xi, columns of a 3 x 2 matrix.
+Eigen::Matrix<double, 3, 2> tangents(const FaceGeometry& face, const Eigen::Vector2d& xi)
+{
+  return face.x.transpose() * fem::face_shape_gradients(face.kind, xi);
+}
+
+/// A Newton step is capped at the reference face's width, as in project_to_quad.
+constexpr double max_step = 2.0;
+/// Step of the central differences of the tangents that give the curvature term.
+constexpr double difference_step = 1e-5;
+
+/// Sub-facets of a quadratic face as local node lists (see file comment).
+const std::vector<std::vector<int>>& sub_facets(FaceKind kind)
+{
+  static const std::vector<std::vector<int>> tri6 = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
+  static const std::vector<std::vector<int>> quad8 = {{0, 4, 7}, {4, 1, 5}, {5, 2, 6}, {7, 6, 3}, {4, 5, 6, 7}};
+  return kind == FaceKind::tri6 ? tri6 : quad8;
+}
+} // namespace
+
+FaceGeometry current_face_geometry(const mesh::Mesh& mesh, const la::Vector& u, const mesh::Face& face)
+{
+  FaceGeometry out;
+  out.kind = face.kind;
+  out.x.resize(face.size(), 3);
+  for (int a = 0; a < face.size(); ++a)
+  {
+    out.x.row(a) = mesh.nodes.row(face[a]);
+    if (u.size() > 0)
+      out.x.row(a) += u.segment<3>(3 * static_cast<la::Index>(face[a])).transpose();
+  }
+  return out;
+}
+
+Eigen::Vector2d face_corner_xi(FaceKind kind, int k)
+{
+  if (mesh::face_corners(kind) == 4)
+    return quad_corner(k);
+  static const std::array<Eigen::Vector2d, 3> corners = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0),
+                                                         Eigen::Vector2d(0, 1)};
+  return corners[k];
+}
+
+bool within_extension(FaceKind kind, const Eigen::Vector2d& xi, double extension)
+{
+  if (mesh::face_corners(kind) == 4)
+    return xi.lpNorm<Eigen::Infinity>() <= 1 + extension;
+  return outside_distance(kind, xi) <= extension;
+}
+
+double outside_distance(FaceKind kind, const Eigen::Vector2d& xi)
+{
+  if (mesh::face_corners(kind) == 4)
+    return xi.lpNorm<Eigen::Infinity>() - 1;
+  return std::max({-xi(0), -xi(1), xi(0) + xi(1) - 1});
+}
+
+Eigen::VectorXd face_weights(FaceKind kind, const Eigen::Vector2d& xi)
+{
+  if (kind == FaceKind::quad4)
+    return quad_shape_functions(xi);
+  return fem::face_shape_values(kind, xi);
+}
+
+Eigen::Vector3d face_point(const FaceGeometry& face, const Eigen::Vector2d& xi)
+{
+  if (face.kind == FaceKind::quad4)
+    return quad_point(face.quad(), xi);
+  return face.x.transpose() * face_weights(face.kind, xi);
+}
+
+Eigen::Vector3d face_normal(const FaceGeometry& face, const Eigen::Vector2d& xi)
+{
+  if (face.kind == FaceKind::quad4)
+    return quad_normal(face.quad(), xi);
+  const Eigen::Matrix<double, 3, 2> t = tangents(face, xi);
+  const Eigen::Vector3d cross = t.col(0).cross(t.col(1));
+  const double length = cross.norm();
+  return length > 0 ? Eigen::Vector3d(cross / length) : Eigen::Vector3d::Zero();
+}
+
+double face_diagonal(const QuadCoordinates& quad)
+{
+  return std::max((quad.row(2) - quad.row(0)).norm(), (quad.row(3) - quad.row(1)).norm());
+}
+
+double face_size(const FaceGeometry& face)
+{
+  if (face.kind == FaceKind::quad4)
+    return face_diagonal(face.quad());
+  double size = 0;
+  for (int a = 0; a < face.n_corners(); ++a)
+    for (int b = a + 1; b < face.n_corners(); ++b)
+      size = std::max(size, (face.x.row(a) - face.x.row(b)).norm());
+  return size;
+}
+
+QuadProjection project_to_face(const FaceGeometry& face, const Eigen::Vector3d& point, const ProjectionOptions& options)
+{
+  if (face.kind == FaceKind::quad4)
+    return project_to_quad(face.quad(), point, options);
+  QuadProjection p;
+  p.xi = face.n_corners() == 3 ? Eigen::Vector2d(1.0 / 3, 1.0 / 3) : Eigen::Vector2d(0, 0);
+  for (p.iterations = 0; p.iterations < options.max_iterations;)
+  {
+    const Eigen::Vector3d distance = face_point(face, p.xi) - point;
+    const Eigen::Matrix<double, 3, 2> t = tangents(face, p.xi);
+    const Eigen::Vector2d r = t.transpose() * distance;
+    Eigen::Matrix2d J = t.transpose() * t;
+    Eigen::Matrix2d curvature;
+    for (int b = 0; b < 2; ++b)
+    {
+      const Eigen::Vector2d h = difference_step * Eigen::Vector2d::Unit(b);
+      const Eigen::Matrix<double, 3, 2> dt =
+          (tangents(face, p.xi + h) - tangents(face, p.xi - h)) / (2 * difference_step);
+      curvature.col(b) = dt.transpose() * distance;
+    }
+    const Eigen::Matrix2d full = J + 0.5 * (curvature + curvature.transpose());
+    const bool newton = full.determinant() > 0 && full.trace() > 0;
+    if (newton)
+      J = full;
+    else
+      ++p.gauss_newton_steps;
+    if (!(J.determinant() > 0))
+      break; // degenerate face
+    Eigen::Vector2d step = -J.inverse() * r;
+    ++p.iterations;
+    if (step.norm() > max_step)
+      step *= max_step / step.norm();
+    p.xi += step;
+    if (step.norm() < options.step_tolerance)
+    {
+      p.converged = true;
+      break;
+    }
+  }
+  p.point = face_point(face, p.xi);
+  p.normal = face_normal(face, p.xi);
+  p.gap = p.normal.dot(point - p.point);
+  p.converged = p.converged && p.normal.squaredNorm() > 0;
+  p.inside = outside_distance(face.kind, p.xi) <= options.inside_tolerance;
+  return p;
+}
+
+Eigen::VectorXd face_lumped_areas(const FaceGeometry& face)
+{
+  switch (face.kind)
+  {
+  case FaceKind::quad4:
+    return face_nodal_areas(face.quad());
+  case FaceKind::tri3:
+  {
+    const double area = 0.5 * (face.x.row(1) - face.x.row(0)).cross(face.x.row(2) - face.x.row(0)).norm();
+    return Eigen::Vector3d::Constant(area / 3);
+  }
+  case FaceKind::tri6:
+  case FaceKind::quad8:
+    break;
+  }
+  Eigen::VectorXd areas = Eigen::VectorXd::Zero(face.x.rows());
+  for (const std::vector<int>& facet : sub_facets(face.kind))
+  {
+    FaceGeometry sub;
+    sub.kind = facet.size() == 3 ? FaceKind::tri3 : FaceKind::quad4;
+    sub.x.resize(static_cast<Eigen::Index>(facet.size()), 3);
+    for (size_t k = 0; k < facet.size(); ++k)
+      sub.x.row(static_cast<Eigen::Index>(k)) = face.x.row(facet[k]);
+    const Eigen::VectorXd sub_areas = face_lumped_areas(sub);
+    for (size_t k = 0; k < facet.size(); ++k)
+      areas(facet[k]) += sub_areas(static_cast<Eigen::Index>(k));
+  }
+  return areas;
+}
+} // namespace feticon::contact

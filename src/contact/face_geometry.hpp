@@ -1,0 +1,67 @@
+#pragma once
+/// @file A contact face of any type (tri3, tri6, quad4, quad8) in the current configuration, and
+/// what the contact rows need of it: its points, normals and shape functions at reference
+/// coordinates xi, the closest-point projection, whether xi lies inside, its size and its
+/// slave nodal areas.
+///
+/// Reference faces (fem/reference_face.hpp): triangles on the unit triangle (corners (0,0),
+/// (1,0), (0,1)), quadrilaterals on [-1, 1]^2. quad4 faces go through closest_point.hpp's
+/// bilinear code unchanged (the arithmetic of hex8 runs before faces had types); the others
+/// through the general Newton iteration of project_to_face, whose curvature term is a central
+/// difference of the shape gradients (exact for tri3, whose map is linear).
+///
+/// Slave nodal areas. The contact pressure at a slave node is its normal force over its area.
+/// For quadratic faces int N_a dA is zero at a tri6's corners and negative at a quad8's, so the
+/// areas are lumped from linear sub-facets instead: a tri6 as its four corner-and-midpoint
+/// triangles, a quad8 as its four corner triangles and the quadrilateral of its midpoints; each
+/// triangle gives a third of its area to each of its nodes, each quadrilateral int N_a dA. Every
+/// node gets a positive area and they sum to the face's (facet) area.
+
+#include "contact/closest_point.hpp"
+#include "la/types.hpp"
+#include "mesh/mesh.hpp"
+
+#include <Eigen/Dense>
+
+namespace feticon::contact
+{
+/// Node coordinates of a face, one row per face node (at most 8).
+using FaceNodeCoordinates = Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 8, 3>;
+
+struct FaceGeometry
+{
+  mesh::FaceKind kind = mesh::FaceKind::quad4;
+  FaceNodeCoordinates x;
+
+  int n_corners() const { return mesh::face_corners(kind); }
+  /// The first four rows as a quad (quad4 only).
+  QuadCoordinates quad() const { return x.topRows<4>(); }
+};
+
+/// @brief The face's node coordinates x = X + u (m); u empty for u = 0.
+FaceGeometry current_face_geometry(const mesh::Mesh& mesh, const la::Vector& u, const mesh::Face& face);
+
+/// Reference coordinates of corner k of a face type.
+Eigen::Vector2d face_corner_xi(mesh::FaceKind kind, int k);
+/// How far xi lies outside the reference face, in reference units: max(|xi|, |eta|) - 1 for a
+/// quadrilateral, max(-xi, -eta, xi + eta - 1) for a triangle; <= 0 inside.
+double outside_distance(mesh::FaceKind kind, const Eigen::Vector2d& xi);
+/// Whether xi lies within `extension` (reference units) of the reference face.
+bool within_extension(mesh::FaceKind kind, const Eigen::Vector2d& xi, double extension);
+/// Shape functions of the face's nodes at xi (quad4: quad_shape_functions).
+Eigen::VectorXd face_weights(mesh::FaceKind kind, const Eigen::Vector2d& xi);
+/// The point x(xi) (m).
+Eigen::Vector3d face_point(const FaceGeometry& face, const Eigen::Vector2d& xi);
+/// Unit normal x_,xi x x_,eta / |.| at xi, outward of the face's body; zero if degenerate there.
+Eigen::Vector3d face_normal(const FaceGeometry& face, const Eigen::Vector2d& xi);
+/// The longer diagonal of a quad (m).
+double face_diagonal(const QuadCoordinates& quad);
+/// The longest distance between two corners (a quad4's longer diagonal, face_diagonal) (m).
+double face_size(const FaceGeometry& face);
+/// @brief Closest point on the face to `point`, as project_to_quad (whose result type it
+/// shares; `inside` means outside_distance <= options.inside_tolerance).
+QuadProjection project_to_face(const FaceGeometry& face, const Eigen::Vector3d& point,
+                               const ProjectionOptions& options = {});
+/// Lumped slave nodal areas of the face's nodes (m^2), positive (see file comment).
+Eigen::VectorXd face_lumped_areas(const FaceGeometry& face);
+} // namespace feticon::contact
