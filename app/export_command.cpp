@@ -67,7 +67,7 @@ void export_model(const ExportOptions& options)
 
   std::ostringstream message;
   message << "export: " << (dir / "feticon.inp").string() << ": " << s.n_nodes << " nodes, " << s.n_elements
-          << " C3D8 elements, " << s.n_contact_pairs << " contact pair(s) (" << s.n_slave_faces << " slave, "
+          << " elements, " << s.n_contact_pairs << " contact pair(s) (" << s.n_slave_faces << " slave, "
           << s.n_master_faces << " master faces, K = " << s.contact_stiffness << " Pa/m), " << s.n_cloads
           << " nodal loads, total (" << s.total_load[0] << ", " << s.total_load[1] << ", " << s.total_load[2] << ") N, "
           << deck.increments << " increment(s)" << (deck.nlgeom ? ", NLGEOM" : "");

@@ -138,6 +138,16 @@ void check_fits(const MemoryEstimate& estimate, const MemoryBudget& budget, cons
                      << (shared ? ", shared by the ranks of a node" : "") << "); " << fix);
 }
 
+int64_t guard_nodes(const mesh::Mesh& mesh)
+{
+  if (mesh.cells.empty())
+    return mesh.n_nodes();
+  double weight = 0;
+  for (size_t c = 0; c < mesh.cells.size(); ++c)
+    weight += mesh.cells.kind(c) == mesh::CellKind::hex20 ? 1.25 : 1.0;
+  return static_cast<int64_t>(std::llround(mesh.n_nodes() * weight / static_cast<double>(mesh.cells.size())));
+}
+
 MemoryEstimate guard_memory(const io::Settings& settings, int64_t nodes, bool plane_strain, const std::string& what,
                             double resident)
 {

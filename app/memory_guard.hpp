@@ -13,6 +13,7 @@
 /// and auto forms them only if they fit it.
 
 #include "io/problem_file.hpp"
+#include "mesh/mesh.hpp"
 
 #include <cstdint>
 #include <string>
@@ -76,6 +77,14 @@ MemoryBudget memory_budget(const io::Settings& settings);
 /// Throws feticon::Error (one line: the estimate, the budget and what to change) when
 /// `estimate` exceeds `budget`; `what` names the run ("hertz.refinement = 64", ...).
 void check_fits(const MemoryEstimate& estimate, const MemoryBudget& budget, const std::string& what);
+
+/// Nodes weighted for the guard's bytes per DOF, which were fitted on hex8 meshes. hex20 cells
+/// count 1.25 times (the estimate grows faster than the nodes, through the subdomain size):
+/// on hertz3d's hex20 meshes the estimates were 0.71 / 0.75 / 0.71 of the peaks at 23k / 59k /
+/// 151k DOFs unweighted, 0.91 / 0.98 weighted (23k, 59k measured). tet10's were 0.95-1.05 at
+/// 35k-112k DOFs unweighted, and the linear types couple fewer nodes than hex8: they count once.
+/// A mixed mesh takes the cell-weighted mean (docs/elements.md).
+int64_t guard_nodes(const mesh::Mesh& mesh);
 
 /// The memory guard of a run before anything large is allocated: the estimate for `nodes`
 /// (plane strain or 3D) with the settings' method, subdomains, ranks and dual.operator,

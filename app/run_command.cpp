@@ -136,7 +136,7 @@ void set_up(const RunOptions& options, RunContext& run)
   }
   const fem::Problem& problem = *run.problem;
   // Again for the mesh as made, from what the ranks hold now (with or without Gmsh loaded).
-  run.memory_estimate = guard_memory(settings, problem.mesh.n_nodes(), problem.eliminated[2], what,
+  run.memory_estimate = guard_memory(settings, guard_nodes(problem.mesh), problem.eliminated[2], what,
                                      run.comm.max(static_cast<double>(resident_memory_bytes())));
   run.solver = solver_settings(settings, problem);
   run.solver.explicit_block_budget = run.memory_estimate.explicit_block_budget;

@@ -4,8 +4,9 @@
 /// (bench/calculix.sh measures both on it).
 ///
 /// Translation (CalculiX 2.20 keywords, SI units as in feticon):
-///  - nodes and hex8 cells as *NODE and C3D8 *ELEMENT (CalculiX's C3D8 node order is VTK's);
-///    one *ELSET, *MATERIAL (*ELASTIC) and *SOLID SECTION per body;
+///  - nodes and cells as *NODE and *ELEMENT blocks of C3D8, C3D4, C3D10, C3D20 and C3D6 (the
+///    cell types' local order is CalculiX's); one *ELSET, *MATERIAL (*ELASTIC) and *SOLID
+///    SECTION per body;
 ///  - Dirichlet conditions as *BOUNDARY on node sets, eliminated components (plane strain)
 ///    as *BOUNDARY on every node; nonzero values are ramped over the step like feticon's
 ///    u_D(t);

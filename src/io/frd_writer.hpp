@@ -85,7 +85,7 @@ class FrdWriter
 public:
   /// @brief Creates `path` (replacing an older file; parent directories are created) with the
   /// header, nodes and elements, and flushes it.
-  /// @param[in] mesh           nodes (m) and hex8 cells; cell_body sets the material number
+  /// @param[in] mesh           nodes (m) and cells (he8, te4, te10, he20, pe6); cell_body sets the material number
   /// @param[in] node_labels    deck number of every mesh node; empty: 1..n_nodes
   /// @param[in] element_labels deck number of every mesh cell; empty: 1..n_cells
   /// @throws feticon::Error if a label vector has the wrong size, a label is outside

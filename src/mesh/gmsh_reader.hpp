@@ -5,24 +5,25 @@
 ///
 /// What the file must contain, and what becomes of it:
 ///   - 3D physical groups are the bodies, one body per group, named by the physical name, in
-///     the order of the group tags. Their elements must all be 8-node hexahedra (Gmsh type 5,
-///     whose node order is VTK's, see hex_mesh.hpp); tetrahedra, prisms, pyramids and 20/27-node
-///     hexahedra are rejected: remesh with transfinite volumes and Mesh.RecombineAll = 1 (or
-///     extrusions with Recombine). A volume entity may belong to one 3D group only, and every
-///     volume entity with elements must belong to one (Gmsh only writes elements without a
-///     physical group when Mesh.SaveAll = 1).
+///     the order of the group tags. Their elements are 4- and 10-node tetrahedra, 8- and
+///     20-node hexahedra (Mesh.SecondOrderIncomplete = 1) and 6-node prisms, of one or several
+///     types (cell_type.hpp; Gmsh's node order turned into CalculiX's by gmsh_to_local);
+///     pyramids, 27-node hexahedra and higher orders are rejected. A volume entity may belong
+///     to one 3D group only, and every volume entity with elements must belong to one (Gmsh
+///     only writes elements without a physical group when Mesh.SaveAll = 1).
 ///   - Bodies share no nodes: two bodies meant to touch (contact) must be separate volumes with
 ///     their own surface meshes, i.e. not fragmented / not `Coherence`d together.
 ///   - 2D physical groups are face sets and node sets of the same name. Each element must be a
-///     4-node quadrangle (Gmsh type 3) that is the face of exactly one hexahedron (a boundary
-///     face); it is stored with that hexahedron's nodes in the outward order of hex_faces, so the
-///     quadrangle's own orientation in the file does not matter.
+///     3- or 6-node triangle or a 4- or 8-node quadrangle that is the face of exactly one cell
+///     (a boundary face) and of its type; it is stored with that cell's nodes in the outward
+///     order of the cell's face (mesh::cell_face), so its own orientation in the file does not
+///     matter.
 ///   - 0D and 1D physical groups are node sets.
 ///   - Every physical group needs a name (Physical Surface("load") = {...}), names are unique
 ///     over all dimensions (sets and bodies are looked up by name alone), and every group has
 ///     elements. 2D elements outside physical groups are ignored.
 ///   - Nodes are renumbered 0..n-1 body by body, by increasing Gmsh node tag within a body; only
-///     nodes of hexahedra are kept. Coordinates are taken as written: feticon works in SI units,
+///     nodes of cells are kept. Coordinates are taken as written: feticon works in SI units,
 ///     so the file must be in metres (Gmsh has no units; scale with Mesh.ScalingFactor when
 ///     meshing a model drawn in mm).
 ///
@@ -41,14 +42,15 @@
 
 namespace feticon::mesh
 {
-/// @brief Reads a Gmsh mesh of 8-node hexahedra with named physical groups (see file comment).
+/// @brief Reads a Gmsh mesh of the cell types of cell_type.hpp with named physical groups (see
+/// file comment).
 /// @param[in] path a `.msh` file (metres)
 /// @return the mesh: bodies from 3D groups, face sets and node sets from 2D groups, node sets
 ///         from 0D/1D groups; cells have positive Jacobian determinant at their centres
 /// @throws feticon::Error naming the file and the problem: missing, unreadable or corrupt file,
-///         no 3D physical group, unnamed, duplicate or empty groups, elements other than hex8 in
-///         3D groups or quad4 in 2D groups, a quadrangle that is not a boundary face of a
-///         hexahedron, bodies sharing nodes, inverted or degenerate cells.
+///         no 3D physical group, unnamed, duplicate or empty groups, element types feticon does
+///         not know, a surface element that is not a boundary face of a cell of its type,
+///         bodies sharing nodes, inverted or degenerate cells.
 /// @param[out] from_cache whether the mesh came from the mesh cache (may be null)
 Mesh read_gmsh(const std::filesystem::path& path, bool* from_cache = nullptr);
 } // namespace feticon::mesh

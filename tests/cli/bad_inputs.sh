@@ -148,6 +148,8 @@ expect "deck friction table" "takes one data line" -- "$(friction_variant '*FRIC
 expect "deck friction negative stick slope" "stick slope -1e6 must be positive" -- \
   "$(friction_variant '*FRICTION\n0.3, -1e6' friction_slope)"
 expect "deck element type" "C3D15" -- "$(deck_variant 's/TYPE=C3D8/TYPE=C3D15/I' c3d15)"
+# A C3D8 block declared C3D10: its 8-node lines are short of 10 nodes.
+expect "deck element node count" "nodes, not 10" -- "$(deck_variant 's/TYPE=C3D8/TYPE=C3D10/I' c3d10_short)"
 expect "deck face S7" "S7" -- "$(deck_variant '0,/, *S[1-6]/s//, S7/' s7)"
 expect "deck absent node" "not defined" -- "$(deck_variant 's/^ *1, *1, *2,/1, 1, 999,/' absent_node)"
 expect "deck without step" "STEP" -- "$(deck_variant '/^\*STEP/,$d' nostep)"

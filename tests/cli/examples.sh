@@ -26,4 +26,8 @@ if [[ -f "$src/examples/sphere_on_block/problem.yaml" ]]; then
   "$feticon" run -q "$src/examples/sphere_on_block/problem.yaml" --output "$work/sphere"
   /usr/bin/python3 -c "import json; s=json.load(open('$work/sphere/summary.json')); assert s['converged']"
 fi
+# The tet10 sphere on block from OpenCASCADE solids: 50 MPa on the 10 mm x 10 mm quarter
+# punch = 5 kN, carried by contact alone.
+"$feticon" run -q "$src/examples/sphere_on_block_tet10/problem.yaml" --output "$work/sphere_tet10"
+check_force "$work/sphere_tet10" 5000
 echo "examples: all ran"

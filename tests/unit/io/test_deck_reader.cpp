@@ -11,6 +11,7 @@
 #include "common/error.hpp"
 #include "io_test_files.hpp"
 #include "mesh/box.hpp"
+#include "mesh/cell_conversion.hpp"
 
 #include <gtest/gtest.h>
 
@@ -155,6 +156,51 @@ U, RF
 top, 1, 2, 1e-3
 *END STEP
 )";
+
+// Every cell type through the CalculiX export and back (C3D4, C3D10, C3D20, C3D6 blocks; faces
+// by S-number; 20-node elements on two lines): the same cells with the same node order, the
+// same loads, and contact faces with the same outward node order. Reference: the problem that
+// was written.
+class DeckCellTypes : public ::testing::TestWithParam<mesh::CellKind>
+{
+};
+
+TEST_P(DeckCellTypes, ExportedDeckReadsBackWithItsCellTypes)
+{
+  fem::Problem p = punch_problem();
+  p.mesh = mesh::convert_hex8_mesh(p.mesh, GetParam());
+  p.validate();
+  CalculixOptions options;
+  options.overclosure = 0;
+  const auto dir = test::fresh_directory("deck_round_trip_" + std::string(mesh::cell_type(GetParam()).name));
+  std::ostringstream text;
+  write_calculix_deck(p, options, text);
+  const Deck deck = read_deck(write(dir, "punch.inp", text.str()));
+  const fem::Problem& q = deck.problem;
+  ASSERT_EQ(q.mesh.n_nodes(), p.mesh.n_nodes());
+  ASSERT_EQ(q.mesh.n_cells(), p.mesh.n_cells());
+  EXPECT_TRUE(q.mesh.cells.all_of_kind(GetParam()));
+  EXPECT_LE((q.mesh.nodes - p.mesh.nodes).cwiseAbs().maxCoeff(), 1e-12);
+  const auto cell_set = [](const mesh::CellList& cells) {
+    std::set<std::vector<int32_t>> out;
+    for (const auto cell : cells)
+      out.emplace(cell.begin(), cell.end());
+    return out;
+  };
+  EXPECT_EQ(cell_set(p.mesh.cells), cell_set(q.mesh.cells));
+  EXPECT_LE((q.external_force() - p.external_force()).cwiseAbs().maxCoeff(),
+            1e-12 * p.external_force().cwiseAbs().maxCoeff());
+  ASSERT_EQ(q.contacts.size(), 1u);
+  EXPECT_EQ(face_keys(q.mesh.face_set(q.contacts[0].slave), false), face_keys(p.mesh.face_set("punch_ymin"), false));
+  EXPECT_EQ(face_keys(q.mesh.face_set(q.contacts[0].master), false), face_keys(p.mesh.face_set("base_ymax"), false));
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryType, DeckCellTypes,
+                         ::testing::Values(mesh::CellKind::tet4, mesh::CellKind::tet10, mesh::CellKind::hex20,
+                                           mesh::CellKind::wedge6),
+                         [](const ::testing::TestParamInfo<mesh::CellKind>& info) {
+  return std::string(mesh::cell_type(info.param).name);
+});
 
 TEST(DeckReader, ExportedDeckReadsBackAsTheProblem)
 {
