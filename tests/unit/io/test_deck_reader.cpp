@@ -54,6 +54,15 @@ fem::Problem punch_problem()
   return p;
 }
 
+/// The cells as node lists, for comparing meshes whose cells come in another order.
+std::set<std::vector<int32_t>> cell_set(const mesh::CellList& cells)
+{
+  std::set<std::vector<int32_t>> out;
+  for (const auto cell : cells)
+    out.emplace(cell.begin(), cell.end());
+  return out;
+}
+
 std::set<std::vector<int32_t>> face_keys(const std::vector<mesh::Face>& faces, bool sorted)
 {
   std::set<std::vector<int32_t>> out;
@@ -181,12 +190,6 @@ TEST_P(DeckCellTypes, ExportedDeckReadsBackWithItsCellTypes)
   ASSERT_EQ(q.mesh.n_cells(), p.mesh.n_cells());
   EXPECT_TRUE(q.mesh.cells.all_of_kind(GetParam()));
   EXPECT_LE((q.mesh.nodes - p.mesh.nodes).cwiseAbs().maxCoeff(), 1e-12);
-  const auto cell_set = [](const mesh::CellList& cells) {
-    std::set<std::vector<int32_t>> out;
-    for (const auto cell : cells)
-      out.emplace(cell.begin(), cell.end());
-    return out;
-  };
   EXPECT_EQ(cell_set(p.mesh.cells), cell_set(q.mesh.cells));
   EXPECT_LE((q.external_force() - p.external_force()).cwiseAbs().maxCoeff(),
             1e-12 * p.external_force().cwiseAbs().maxCoeff());
@@ -217,12 +220,6 @@ TEST(DeckReader, ExportedDeckReadsBackAsTheProblem)
   ASSERT_EQ(q.mesh.n_cells(), p.mesh.n_cells());
   // The writer numbers nodes n + 1 and cells by body; the reader keeps reading order.
   EXPECT_LE((q.mesh.nodes - p.mesh.nodes).cwiseAbs().maxCoeff(), 1e-12);
-  const auto cell_set = [](const mesh::CellList& cells) {
-    std::set<std::vector<int32_t>> out;
-    for (const auto cell : cells)
-      out.emplace(cell.begin(), cell.end());
-    return out;
-  };
   const std::set<std::vector<int32_t>> cells_p = cell_set(p.mesh.cells), cells_q = cell_set(q.mesh.cells);
   EXPECT_EQ(cells_p, cells_q);
   ASSERT_EQ(q.mesh.n_bodies(), 2);
