@@ -35,7 +35,7 @@ import time
 # Seeds, each run well under 2 s unmutated. A problem or gmsh case lists its files: the
 # problem file first (the one `feticon run` gets), then the mesh it names.
 PROBLEM_SEEDS = [["two_boxes.yaml"], ["hertz_small.yaml"], ["gmsh41.yaml", "punch41.msh"],
-                 ["gmsh22.yaml", "punch22.msh"]]
+                 ["gmsh22.yaml", "punch22.msh"], ["gmsh_tet10.yaml", "punch_tet10.msh"]]
 MM_FILES = ["A.mtx", "b.mtx", "l.mtx"]
 
 # Work bound: the machine running the fuzzer is shared, so a mutant whose model legitimately
@@ -390,7 +390,9 @@ MM_MUTATORS = [number_replacer(EXTREMES), mm_header, mm_size]
 # numbers it parses, the references between nodes, elements, sets and surfaces, *INCLUDE, and
 # the magnitudes a valid deck may carry (1e-30 to 1e30 moduli, loads and coordinates).
 
-DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_friction.inp"]
+DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_friction.inp", "punch_tet10.inp"]
+# Seeds of our own (tests/data/fuzz/): a C3D10 deck, feticon's export of gmsh_tet10.yaml.
+FUZZ_FOLDER_DECKS = {"punch_tet10.inp"}
 # Seeds made from another by an edit: contact1 with Coulomb friction (*FRICTION after the
 # pressure-overclosure law, as tests/cli/deck_friction.sh adds it to CalculiX's decks).
 DECK_DERIVED = {"contact1_friction.inp": ("contact1.inp", "*SURFACE BEHAVIOR", "*FRICTION\n0.3, 1e6\n")}
@@ -766,7 +768,8 @@ def make_case(kind, rng, source_dir):
     seed_dir = os.path.join(source_dir, "tests", "data", "fuzz")
     if kind == "deck":
         name = rng.choice(DECK_SEEDS)
-        files = {name: deck_seed(os.path.join(source_dir, "tests", "data", "calculix"), name)}
+        folder = seed_dir if name in FUZZ_FOLDER_DECKS else os.path.join(source_dir, "tests", "data", "calculix")
+        files = {name: deck_seed(folder, name)}
         return files, name, ["run", name, "--output", "out"] + RUN_OPTIONS
     if kind == "mm":
         files = {name: read(seed_dir, name) for name in MM_FILES}
