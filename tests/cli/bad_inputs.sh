@@ -115,6 +115,8 @@ expect "negative box length" "length" -- "$(variant 's/lengths: \[0.4/lengths: [
 expect "zero cells" "cells" -- "$(variant 's/cells: \[8, 4, 1\]/cells: [0, 4, 1]/' zerocells)"
 expect "body without material" "bodies.punch" -- "$(variant '/  punch: {young/d' nomaterial)"
 expect "material for an unknown body" "bodies.lid" -- "$(variant 's/^bodies:/bodies:\n  lid: {young: 1e9, poisson: 0.2}/' extrabody)"
+expect "moduli beyond double precision" "differ by more than 1e15" -- \
+  "$(variant 's/punch: {young: 2e11/punch: {young: 2e41/' contrast)"
 expect "negative Young's modulus" "bodies.base" -- "$(variant 's/base: {young: 2e11/base: {young: -2e11/' negyoung)"
 expect "support on an unknown set" "supports.0.set" -- "$(variant 's/set: base_ymin/set: floor/' unknownsupport)"
 expect "support without components" "prescribes no component" -- "$(variant 's/{set: base_xmin, x: 0}/{set: base_xmin}/' nocomponent)"
