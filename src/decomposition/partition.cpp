@@ -36,15 +36,9 @@ void cell_face_graph(const mesh::Mesh& mesh, std::vector<idx_t>& xadj, std::vect
 {
   std::map<std::array<int32_t, 4>, std::vector<int32_t>> face_cells;
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
-    for (const mesh::CellFace& face : mesh::cell_type(mesh.cells.kind(c)).faces)
-    {
-      // The corners sorted (-1 after a triangle's) name the face in every cell that has it.
-      std::array<int32_t, 4> key{-1, -1, -1, -1};
-      for (int k = 0; k < mesh::face_corners(face.kind); ++k)
-        key[k] = mesh.cells[c][face.nodes[k]];
-      std::sort(key.begin(), key.end());
-      face_cells[key].push_back(c);
-    }
+    for (size_t k = 0; k < mesh::cell_type(mesh.cells.kind(c)).faces.size(); ++k)
+      face_cells[mesh::sorted_corners(mesh::cell_face(mesh.cells.kind(c), mesh.cells[c], static_cast<int>(k)))]
+          .push_back(c);
   std::vector<std::vector<int32_t>> neighbours(mesh.n_cells());
   for (const auto& [key, cells] : face_cells)
     if (cells.size() == 2)

@@ -127,9 +127,8 @@ ShapeTable shape_table(CellKind kind, const Eigen::Vector3d& xi)
 /// The tensor product of an n-point Gauss rule on [-1, 1] with itself, three times.
 QuadratureRule gauss_cube(int n)
 {
-  const std::vector<double> x = n == 2 ? std::vector<double>{-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)}
-                                       : std::vector<double>{-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
-  const std::vector<double> w = n == 2 ? std::vector<double>{1.0, 1.0} : std::vector<double>{5.0 / 9, 8.0 / 9, 5.0 / 9};
+  const std::vector<double>& x = gauss_line(n).points;
+  const std::vector<double>& w = gauss_line(n).weights;
   QuadratureRule rule;
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
@@ -167,6 +166,13 @@ QuadratureRule wedge_rule()
   return rule;
 }
 } // namespace
+
+const GaussLine& gauss_line(int n)
+{
+  static const GaussLine two{{-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)}, {1.0, 1.0}};
+  static const GaussLine three{{-std::sqrt(0.6), 0.0, std::sqrt(0.6)}, {5.0 / 9, 8.0 / 9, 5.0 / 9}};
+  return n == 2 ? two : three;
+}
 
 Eigen::VectorXd shape_values(mesh::CellKind kind, const Eigen::Vector3d& xi) { return shape_table(kind, xi).col(0); }
 

@@ -32,6 +32,14 @@ struct QuadratureRule
   std::vector<double> weights;         ///< summing to the reference cell's volume
 };
 
+/// The n-point Gauss rule on [-1, 1], n = 2 or 3 (the tensor rules of hexahedra and
+/// quadrilateral faces are built from it).
+struct GaussLine
+{
+  std::vector<double> points, weights;
+};
+const GaussLine& gauss_line(int n);
+
 /// N_a(xi) for every local node a.
 Eigen::VectorXd shape_values(mesh::CellKind kind, const Eigen::Vector3d& xi);
 /// dN_a/dxi_j(xi): row a, column j.

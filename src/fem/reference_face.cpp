@@ -1,5 +1,7 @@
 #include "fem/reference_face.hpp"
 
+#include "fem/reference_element.hpp"
+
 #include <array>
 #include <cmath>
 
@@ -17,9 +19,8 @@ constexpr std::array<std::array<int, 2>, 3> tri_edges = {{{0, 1}, {1, 2}, {2, 0}
 
 FaceQuadrature gauss_square(int n)
 {
-  const std::vector<double> x = n == 2 ? std::vector<double>{-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)}
-                                       : std::vector<double>{-std::sqrt(0.6), 0, std::sqrt(0.6)};
-  const std::vector<double> w = n == 2 ? std::vector<double>{1, 1} : std::vector<double>{5.0 / 9, 8.0 / 9, 5.0 / 9};
+  const std::vector<double>& x = gauss_line(n).points;
+  const std::vector<double>& w = gauss_line(n).weights;
   FaceQuadrature rule;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)

@@ -14,15 +14,6 @@ namespace feticon::io
 {
 namespace
 {
-/// A face's corners sorted, -1 after a triangle's: the same key from every cell that has it.
-std::array<int32_t, 4> corner_key(std::span<const int32_t> corners)
-{
-  std::array<int32_t, 4> key{-1, -1, -1, -1};
-  std::ranges::copy(corners, key.begin());
-  std::sort(key.begin(), key.end());
-  return key;
-}
-
 /// A real number in CalculiX's free format: 13 significant digits fit its 20-character fields.
 std::string number(double v)
 {
@@ -50,21 +41,15 @@ std::vector<std::pair<int32_t, int>> element_faces(const mesh::Mesh& mesh, const
   std::vector<std::pair<int32_t, int>> out;
   for (const mesh::Face& face : mesh.face_set(set))
   {
-    const std::array<int32_t, 4> key = corner_key({face.begin(), static_cast<size_t>(face.n_corners())});
+    const std::array<int32_t, 4> key = mesh::sorted_corners(face);
     std::pair<int32_t, int> found{-1, 0};
     for (int32_t c : cells_of_node[face[0]])
     {
       // cell_type's faces are CalculiX's S1, S2, ... in order.
-      const std::vector<mesh::CellFace>& faces = mesh::cell_type(mesh.cells.kind(c)).faces;
-      for (size_t f = 0; f < faces.size() && found.first < 0; ++f)
-      {
-        std::array<int32_t, 4> nodes{};
-        const int n = mesh::face_corners(faces[f].kind);
-        for (int k = 0; k < n; ++k)
-          nodes[k] = mesh.cells[c][faces[f].nodes[k]];
-        if (corner_key({nodes.data(), static_cast<size_t>(n)}) == key)
-          found = {c, static_cast<int>(f) + 1};
-      }
+      const int n_faces = static_cast<int>(mesh::cell_type(mesh.cells.kind(c)).faces.size());
+      for (int f = 0; f < n_faces && found.first < 0; ++f)
+        if (mesh::sorted_corners(mesh::cell_face(mesh.cells.kind(c), mesh.cells[c], f)) == key)
+          found = {c, f + 1};
     }
     FETICON_CHECK(found.first >= 0,
                   "calculix export: a face of set '" << set << "' (corner nodes " << face[0] << ", " << face[1] << ", "

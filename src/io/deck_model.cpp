@@ -80,15 +80,6 @@ mesh::Face face_nodes(const mesh::Mesh& mesh, int32_t c, int calculix_face)
   return local_face(mesh, c, calculix_face - 1);
 }
 
-/// A face's corners sorted, -1 after a triangle's: the same key from every cell that has it.
-std::array<int32_t, 4> face_key(const mesh::Face& face)
-{
-  std::array<int32_t, 4> key{-1, -1, -1, -1};
-  std::copy_n(face.begin(), face.n_corners(), key.begin());
-  std::sort(key.begin(), key.end());
-  return key;
-}
-
 std::string step_name(const DeckStep& step, size_t k)
 {
   return "step " + std::to_string(k + 1) + " (" + step.where + ")";
@@ -336,7 +327,7 @@ private:
         const mesh::Face face = local_face(mesh, c, k);
         if (!std::all_of(face.begin(), face.end(), [&](int32_t n) { return in_surface[n] != 0; }))
           continue;
-        auto [it, added] = candidates.emplace(face_key(face), std::pair{face, 0});
+        auto [it, added] = candidates.emplace(mesh::sorted_corners(face), std::pair{face, 0});
         ++it->second.second;
       }
     std::vector<mesh::Face> faces;
@@ -364,7 +355,7 @@ private:
       for (int k = 0; k < n_cell_faces(mesh, c); ++k)
       {
         const mesh::Face face = local_face(mesh, c, k);
-        auto [it, added] = around.emplace(face_key(face), std::pair{face, 0});
+        auto [it, added] = around.emplace(mesh::sorted_corners(face), std::pair{face, 0});
         ++it->second.second;
       }
     for (const auto& [key, face_count] : around)

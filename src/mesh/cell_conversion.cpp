@@ -50,14 +50,6 @@ private:
   std::vector<Eigen::Vector3d> _points;
 };
 
-std::array<int32_t, 4> corner_key(const Face& face)
-{
-  std::array<int32_t, 4> key{-1, -1, -1, -1};
-  std::copy_n(face.begin(), face.n_corners(), key.begin());
-  std::sort(key.begin(), key.end());
-  return key;
-}
-
 /// The new cells' faces that lie inside each old face of the sets.
 void convert_face_sets(const Mesh& hex, Mesh& out)
 {
@@ -66,7 +58,7 @@ void convert_face_sets(const Mesh& hex, Mesh& out)
     for (size_t k = 0; k < cell_type(out.cells.kind(c)).faces.size(); ++k)
     {
       const Face face = cell_face(out.cells.kind(c), out.cells[c], static_cast<int>(k));
-      auto [it, fresh] = faces.emplace(corner_key(face), std::pair{face, 0});
+      auto [it, fresh] = faces.emplace(sorted_corners(face), std::pair{face, 0});
       ++it->second.second;
     }
   // Boundary faces by their smallest corner, to find those inside an old face quickly.

@@ -91,22 +91,9 @@ void CellList::reserve(size_t n_cells, size_t n_node_entries)
   _nodes.reserve(n_node_entries);
 }
 
-void CellList::clear()
-{
-  std::vector<CellKind>().swap(_kinds);
-  std::vector<int64_t>{0}.swap(_offsets);
-  std::vector<int32_t>().swap(_nodes);
-}
-
 bool CellList::all_of_kind(CellKind kind) const
 {
   return std::ranges::all_of(_kinds, [kind](CellKind k) { return k == kind; });
-}
-
-size_t CellList::memory_bytes() const
-{
-  return _kinds.capacity() * sizeof(CellKind) + _offsets.capacity() * sizeof(int64_t) +
-      _nodes.capacity() * sizeof(int32_t);
 }
 
 std::string describe_cells(const CellList& cells)
@@ -127,6 +114,14 @@ Face::Face(FaceKind face_kind, std::span<const int32_t> face_nodes) : kind(face_
 {
   FETICON_ASSERT(static_cast<int>(face_nodes.size()) == mesh::face_nodes(face_kind), "face node count");
   std::ranges::copy(face_nodes, nodes.begin());
+}
+
+std::array<int32_t, 4> sorted_corners(const Face& face)
+{
+  std::array<int32_t, 4> key{-1, -1, -1, -1};
+  std::copy_n(face.begin(), face.n_corners(), key.begin());
+  std::sort(key.begin(), key.end());
+  return key;
 }
 
 Face cell_face(CellKind kind, std::span<const int32_t> cell_nodes, int k)

@@ -35,7 +35,6 @@ public:
   /// Appends a cell; nodes.size() must be the type's node count.
   void add(CellKind kind, std::span<const int32_t> nodes);
   void reserve(size_t n_cells, size_t n_node_entries);
-  void clear();
 
   std::span<const int32_t> operator[](size_t c) const
   {
@@ -52,8 +51,6 @@ public:
   size_t n_node_entries() const { return _nodes.size(); }
   /// Whether every cell is of type `kind` (true for an empty list).
   bool all_of_kind(CellKind kind) const;
-  /// Bytes held (capacity), for the memory accounting of the readers.
-  size_t memory_bytes() const;
 
   bool operator==(const CellList& other) const = default;
 
@@ -128,6 +125,10 @@ inline constexpr std::array<std::array<int, 4>, 6> hex_faces = {{
     {0, 4, 7, 3}, // xi = -1
     {1, 2, 6, 5}, // xi = +1
 }};
+
+/// A face's corners sorted, -1 after a triangle's three: the same key from every cell that has
+/// the face, whatever its node order there (partition graphs, readers, the export).
+std::array<int32_t, 4> sorted_corners(const Face& face);
 
 /// Face `k` (cell_type(kind).faces order, CalculiX's S1, S2, ...) of a cell, outward.
 Face cell_face(CellKind kind, std::span<const int32_t> cell_nodes, int k);

@@ -288,16 +288,11 @@ void read_face_sets(const std::vector<PhysicalGroup>& groups, const std::string&
   owners.reserve(6 * mesh.cells.size());
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
   {
-    const CellType& type = cell_type(mesh.cells.kind(c));
-    for (size_t f = 0; f < type.faces.size(); ++f)
+    for (int f = 0; f < static_cast<int>(cell_type(mesh.cells.kind(c)).faces.size()); ++f)
     {
-      SortedFace key{-1, -1, -1, -1};
-      for (int k = 0; k < face_corners(type.faces[f].kind); ++k)
-        key[k] = mesh.cells[c][type.faces[f].nodes[k]];
-      std::sort(key.begin(), key.end());
-      FaceOwner& owner = owners[key];
+      FaceOwner& owner = owners[sorted_corners(cell_face(mesh.cells.kind(c), mesh.cells[c], f))];
       if (owner.count++ == 0)
-        owner = {c, static_cast<int>(f), 1};
+        owner = {c, f, 1};
     }
   }
 
@@ -321,16 +316,17 @@ void read_face_sets(const std::vector<PhysicalGroup>& groups, const std::string&
         const auto n = static_cast<std::size_t>(face_nodes(*kind));
         for (std::size_t e = 0; e < tags[t].size(); ++e)
         {
-          SortedFace key{-1, -1, -1, -1};
+          // The element's corners as a linear face of their own, for their key.
+          Face corners;
+          corners.kind = face_corners(*kind) == 3 ? FaceKind::tri3 : FaceKind::quad4;
           bool on_cells = true;
           for (int k = 0; k < face_corners(*kind); ++k)
           {
             const auto it = local_id.find(nodes[t][n * e + k]);
             on_cells = on_cells && it != local_id.end();
-            key[k] = on_cells ? it->second : -1;
+            corners[k] = on_cells ? it->second : -1;
           }
-          std::sort(key.begin(), key.end());
-          const auto owner = on_cells ? owners.find(key) : owners.end();
+          const auto owner = on_cells ? owners.find(sorted_corners(corners)) : owners.end();
           const std::string element = std::string(face_kind_names[static_cast<size_t>(*kind)]) + " (Gmsh element " +
               std::to_string(tags[t][e]) + ") of physical surface '" + group.name + "'";
           FETICON_CHECK(owner != owners.end(),
