@@ -15,6 +15,8 @@
 #include "app/commands.hpp"
 #include "app/mprgp_benchmark.hpp"
 #include "app/memory_guard.hpp"
+#include "app/petsc_binary.hpp"
+#include "par/communicator.hpp"
 #include "app/problem_setup.hpp"
 #include "app/qp_counters_json.hpp"
 #include "common/error.hpp"
@@ -24,6 +26,7 @@
 #include "nonlinear/contact_pressure.hpp"
 #include "nonlinear/feti_contact_solver.hpp"
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -42,7 +45,26 @@ struct BenchOptions
   std::string obstacle_expansion = "projcg";
   int applications = 21;
   bool verbose = false;
+  std::string bonded_system; ///< folder for the bonded system in PETSc's format (empty: none)
 };
+
+/// The bonded system of `solution`'s active set in PETSc's format in `folder` (bench/gamg);
+/// what was written, for the JSON line.
+nlohmann::ordered_json write_bonded_system(const fem::Problem& problem, const nonlinear::SolverSettings& solver,
+                                           const nonlinear::ContactSolution& solution,
+                                           const std::filesystem::path& folder)
+{
+  const nonlinear::BondedSystem system =
+      nonlinear::bonded_system(problem, solver, nonlinear::active_slave_nodes(solution));
+  std::filesystem::create_directories(folder);
+  write_petsc_matrix(folder / "A.petsc", system.A);
+  write_petsc_vectors(folder / "b.petsc", system.b);
+  write_petsc_vectors(folder / "near_kernel.petsc", system.near_kernel);
+  return {{"folder", folder.string()},
+          {"unknowns", system.A.rows()},
+          {"nonzeros", system.A.nonZeros()},
+          {"near_kernel_vectors", system.near_kernel.cols()}};
+}
 
 /// The FETI contact solve and the bonded direct solve of one problem.
 nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
@@ -52,14 +74,21 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
                 "feticon bench measures the FETI methods; set method=smalbe or dual_penalty");
   TimerTable timers;
   const problems::MeshPrediction predicted = predict_mesh(file);
-  const MemoryEstimate estimate =
-      guard_memory(file.settings, predicted.nodes, predicted.plane_strain, "problem " + file.settings.text("problem"));
+  const std::string what = "problem " + file.settings.text("problem");
+  const MemoryBudget budget = memory_budget(file.settings);
+  const int ranks = par::Communicator::world().size();
+  guard_memory(file.settings,
+               choose_feti(file.settings, {predicted.nodes, 0, 1, predicted.plane_strain}, budget, ranks),
+               predicted.nodes, predicted.plane_strain, what);
   std::unique_ptr<fem::Problem> problem;
   {
     ScopedTimer t(timers, "mesh");
     problem = std::make_unique<fem::Problem>(build_problem(file));
   }
-  nonlinear::SolverSettings solver = solver_settings(file.settings, *problem);
+  const FetiChoice feti = choose_feti(file.settings, model_size(*problem), budget, ranks);
+  const MemoryEstimate estimate =
+      guard_memory(file.settings, feti, guard_nodes(problem->mesh), problem->eliminated[2], what);
+  nonlinear::SolverSettings solver = solver_settings(file.settings, *problem, feti);
   solver.explicit_block_budget = estimate.explicit_block_budget;
   const nonlinear::ContactSolution solution = nonlinear::solve_feti_contact(*problem, solver, timers);
   const long peak_contact = peak_memory_bytes();
@@ -68,7 +97,7 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   out["problem"] = problem->name;
   out["displacements"] = file.settings.text("displacements");
   out["method"] = file.settings.text("method");
-  out["preconditioner"] = file.settings.text("qp.preconditioner");
+  out["preconditioner"] = feti.preconditioner_name;
   out["dual_operator"] = solution.dual_operator; // implicit or explicit, after dual.operator = auto
   out["explicit_operator_bytes"] = solution.explicit_operator_bytes;
   out["converged"] = solution.converged;
@@ -78,6 +107,7 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   out["degrees_of_freedom"] = 3 * static_cast<int64_t>(problem->mesh.n_nodes());
   out["elements"] = problem->mesh.n_cells();
   out["subdomains"] = solution.n_subdomains;
+  out["subdomains_reason"] = feti.subdomains_reason;
   out["dual_size"] = solution.n_dual;
   out["coarse_size"] = solution.n_kernel;
   out["load_steps"] = solution.steps.size();
@@ -103,7 +133,13 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
       qp_seconds / std::max(iterations, 1) / (per_application + per_preconditioner);
   out["peak_memory_bytes"] = peak_contact;
   out["total_normal_force"] = nonlinear::total_normal_force(solution);
-  if (!options.direct || !solution.completed)
+  if (!solution.completed)
+    return out;
+  // The system for another solver (bench/gamg) first: the direct solve's factor is the
+  // largest allocation, and its peak is measured alone below.
+  if (!options.bonded_system.empty())
+    out["bonded_system"] = write_bonded_system(*problem, solver, solution, options.bonded_system);
+  if (!options.direct)
     return out;
 
   const nonlinear::BondedSolve direct =
@@ -133,6 +169,9 @@ void register_bench_command(CLI::App& app)
   cmd->add_option("problem", options->problem_file, "problem file (YAML); omit for the built-in Hertz problem");
   cmd->add_option("--set,-s", options->overrides, "override a setting, KEY=VALUE (repeatable; see run --help)");
   cmd->add_flag("!--no-direct", options->direct, "skip the bonded direct solve");
+  cmd->add_option("--bonded-system", options->bonded_system,
+                  "also write the bonded system (A.petsc, b.petsc, near_kernel.petsc in PETSc's binary format) to "
+                  "this folder, for bench/gamg");
   cmd->add_option("--mprgp-obstacle", options->obstacle_n, "instead: MPRGP on the 2D obstacle QP with N x N unknowns");
   cmd->add_option("--rtol", options->obstacle_rtol, "MPRGP tolerance of the obstacle QP")->capture_default_str();
   cmd->add_option("--max-iterations", options->obstacle_max_iterations, "MPRGP step limit of the obstacle QP")

@@ -8,6 +8,7 @@
 
 #include "app/commands.hpp"
 #include "app/memory_guard.hpp"
+#include "par/communicator.hpp"
 #include "app/problem_setup.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
@@ -48,7 +49,9 @@ void export_model(const ExportOptions& options)
              "exporting problem " + file.settings.text("problem"));
   const fem::Problem problem = build_problem(file);
   // Kinematics and load steps exactly as `feticon run` takes them.
-  const nonlinear::SolverSettings solver = solver_settings(file.settings, problem);
+  const nonlinear::SolverSettings solver = solver_settings(
+      file.settings, problem,
+      choose_feti(file.settings, model_size(problem), memory_budget(file.settings), par::Communicator::world().size()));
   io::CalculixOptions deck;
   deck.nlgeom = solver.kinematics == fem::Kinematics::total_lagrangian;
   deck.increments = solver.steps();

@@ -1,5 +1,7 @@
 #include "app/memory_guard.hpp"
 
+#include "app/feti_choice.hpp"
+
 #include "common/available_memory.hpp"
 #include "common/error.hpp"
 #include "common/parallel.hpp"
@@ -148,8 +150,8 @@ int64_t guard_nodes(const mesh::Mesh& mesh)
   return static_cast<int64_t>(std::llround(mesh.n_nodes() * weight / static_cast<double>(mesh.cells.size())));
 }
 
-MemoryEstimate guard_memory(const io::Settings& settings, int64_t nodes, bool plane_strain, const std::string& what,
-                            double resident)
+MemoryEstimate guard_memory(const io::Settings& settings, const FetiChoice& feti, int64_t nodes, bool plane_strain,
+                            const std::string& what, double resident)
 {
   const MemoryBudget budget = memory_budget(settings);
   if (settings.text("method") == "primal_penalty")
@@ -159,12 +161,9 @@ MemoryEstimate guard_memory(const io::Settings& settings, int64_t nodes, bool pl
     return estimate;
   }
   const int ranks = par::Communicator::world().size();
-  int subdomains = settings.integer("subdomains");
-  const int cells_per_subdomain = settings.integer("subdomain_cells");
-  if (cells_per_subdomain > 0) // about as many cells as nodes (half in a plane-strain layer)
-    subdomains = static_cast<int>(std::max<int64_t>(1, (plane_strain ? nodes / 2 : nodes) / cells_per_subdomain));
+  const int subdomains = feti.subdomains;
   const std::string& mode = settings.text("dual.operator");
-  const bool dirichlet = settings.text("qp.preconditioner") == "dirichlet";
+  const bool dirichlet = feti.dirichlet();
   const bool explicit_blocks = mode == "explicit";
   // auto is checked as implicit, with the K_ii factors: the run it can always fall back to.
   MemoryEstimate estimate = estimate_run_memory(nodes, plane_strain, subdomains, ranks, explicit_blocks,

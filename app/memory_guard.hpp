@@ -86,12 +86,15 @@ void check_fits(const MemoryEstimate& estimate, const MemoryBudget& budget, cons
 /// A mixed mesh takes the cell-weighted mean (docs/elements.md).
 int64_t guard_nodes(const mesh::Mesh& mesh);
 
+struct FetiChoice; // app/feti_choice.hpp
+
 /// The memory guard of a run before anything large is allocated: the estimate for `nodes`
-/// (plane strain or 3D) with the settings' method, subdomains, ranks and dual.operator,
+/// (plane strain or 3D) with the settings' method, dual.operator, the ranks and `feti`'s
+/// subdomain count and preconditioner,
 /// checked against the budget; `what` names the model in the message. `resident`: the bytes
 /// the rank holds already, measured once the mesh is built (the libraries, Gmsh among them if
 /// it made or read the mesh, and the mesh; common/available_memory.hpp); 0 before the mesh.
 /// Returns the estimate (with auto's block budget).
-MemoryEstimate guard_memory(const io::Settings& settings, int64_t nodes, bool plane_strain, const std::string& what,
-                            double resident = 0);
+MemoryEstimate guard_memory(const io::Settings& settings, const FetiChoice& feti, int64_t nodes, bool plane_strain,
+                            const std::string& what, double resident = 0);
 } // namespace feticon::app

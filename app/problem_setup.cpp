@@ -34,21 +34,11 @@ fem::Problem build_problem(const io::ProblemFile& file, io::DeckInfo* deck)
   return io::build_custom_problem(file);
 }
 
-nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Problem& problem)
+nonlinear::SolverSettings solver_settings(const io::Settings& s, const fem::Problem& problem, const FetiChoice& feti)
 {
   nonlinear::SolverSettings out(s);
-  const int cells = s.integer("subdomain_cells");
-  if (cells > 0)
-    out.subdomains =
-        std::max<int>(problem.mesh.n_bodies(), static_cast<int>((problem.mesh.n_cells() + cells - 1) / cells));
-  // A small model (a user's deck of a few elements) gets at most a subdomain per cell rather
-  // than an error for the default count; a count the user gives is checked by the partition.
-  if (!s.given("subdomains") && out.subdomains > problem.mesh.n_cells())
-  {
-    log::info("subdomains: " + std::to_string(out.subdomains) + " asked for, the mesh has " +
-              std::to_string(problem.mesh.n_cells()) + " cells: one subdomain per cell");
-    out.subdomains = problem.mesh.n_cells();
-  }
+  out.subdomains = feti.subdomains;
+  out.dual.preconditioner = feti.preconditioner;
   // Mortar rows integrate quad4 faces: contact surfaces of other face types (tetrahedra,
   // wedges, quadratic cells) get node-to-segment rows unless the user asked for mortar.
   if (out.formulation == contact::ContactFormulation::mortar && !s.given("contact.formulation"))

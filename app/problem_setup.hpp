@@ -3,6 +3,7 @@
 /// `feticon run`, `feticon bench` and `feticon export` so that all solve the same thing for the
 /// same file.
 
+#include "app/feti_choice.hpp"
 #include "fem/problem.hpp"
 #include "io/problem_file.hpp"
 #include "io/settings.hpp"
@@ -27,8 +28,9 @@ problems::MeshPrediction predict_mesh(const io::ProblemFile& file);
 /// deck's numbering, steps and warnings go to `deck` if given.
 fem::Problem build_problem(const io::ProblemFile& file, io::DeckInfo* deck = nullptr);
 
-/// Solver settings of the method, QP, contact, Newton and decomposition settings; with
-/// `subdomain_cells` > 0 the subdomain count follows from the problem's cell count.
-nonlinear::SolverSettings solver_settings(const io::Settings& settings, const fem::Problem& problem);
+/// Solver settings of the method, QP, contact, Newton and decomposition settings, with the
+/// subdomain count and the preconditioner of `feti` (choose_feti on model_size(problem)).
+nonlinear::SolverSettings solver_settings(const io::Settings& settings, const fem::Problem& problem,
+                                          const FetiChoice& feti);
 
 } // namespace feticon::app

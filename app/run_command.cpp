@@ -88,6 +88,7 @@ struct RunContext
   std::string theory_line; ///< the built-in problem's comparison with theory, for the table
   io::DeckInfo deck;       ///< the model's input deck, if it is one
   MemoryEstimate memory_estimate;
+  FetiChoice feti; ///< the subdomain count and the preconditioner, with why
   nonlinear::SolverSettings solver;
   std::optional<CalculixResults> calculix; ///< a deck's results also in CalculiX's files
   std::optional<io::PvdWriter> pvd;
@@ -116,7 +117,10 @@ void set_up(const RunOptions& options, RunContext& run)
   const std::string what = "problem " + settings.text("problem");
   run.built_in = problems::make_built_in_problem(settings);
   const problems::MeshPrediction predicted = predict_mesh(run.file);
-  guard_memory(settings, predicted.nodes, predicted.plane_strain, what);
+  const int ranks = run.comm.size();
+  guard_memory(settings,
+               choose_feti(settings, {predicted.nodes, 0, 1, predicted.plane_strain}, memory_budget(settings), ranks),
+               predicted.nodes, predicted.plane_strain, what);
 
   // Under MPI every rank runs this function; rank 0 writes the folder's shared files, every
   // rank its piece of each step's VTU.
@@ -136,14 +140,28 @@ void set_up(const RunOptions& options, RunContext& run)
   }
   const fem::Problem& problem = *run.problem;
   // Again for the mesh as made, from what the ranks hold now (with or without Gmsh loaded).
-  run.memory_estimate = guard_memory(settings, guard_nodes(problem.mesh), problem.eliminated[2], what,
-                                     run.comm.max(static_cast<double>(resident_memory_bytes())));
-  run.solver = solver_settings(settings, problem);
+  ModelSize size = model_size(problem);
+  size.resident = run.comm.max(static_cast<double>(resident_memory_bytes()));
+  run.feti = choose_feti(settings, size, memory_budget(settings), ranks);
+  run.memory_estimate = guard_memory(settings, run.feti, size.nodes, size.plane_strain, what, size.resident);
+  run.solver = solver_settings(settings, problem, run.feti);
+  // A restart must decompose and precondition as this run does, whatever memory the machine
+  // has then: problem.yaml gets auto's choices.
+  if (run.writer && !run.restart)
+  {
+    io::ProblemFile resolved = run.file;
+    resolved.settings.set("subdomains", std::to_string(run.feti.subdomains), "the auto choice");
+    resolved.settings.set("qp.preconditioner", run.feti.preconditioner_name, "the auto choice");
+    feticon::write_file_atomically(run.out_dir / "problem.yaml", effective_problem(resolved));
+  }
   run.solver.explicit_block_budget = run.memory_estimate.explicit_block_budget;
   log::info("feticon: problem " + problem.name + ", " + mesh::describe_cells(problem.mesh.cells) + ", " +
             std::to_string(3 * static_cast<int64_t>(problem.mesh.n_nodes())) + " DOFs, method " +
             settings.text("method") + ", " + settings.text("displacements") + " displacements" +
             (problem.mesh_from_cache ? "; mesh from the mesh cache (FETICON_MESH_CACHE=off remeshes)" : ""));
+  if (run.solver.method != nonlinear::ContactMethod::primal_penalty)
+    log::info("subdomains: " + std::to_string(run.feti.subdomains) + " (" + run.feti.subdomains_reason +
+              "); preconditioner: " + run.feti.preconditioner_name + " (" + run.feti.preconditioner_reason + ")");
   if (!run.deck.path.empty() && run.writer) // rank 0 holds the gathered solution
     run.calculix.emplace(run.out_dir, problem, run.deck, run.solver.kinematics);
   if (run.writer)
@@ -235,6 +253,8 @@ void summarize_problem(const RunContext& run, const nonlinear::ContactSolution& 
   summary["elements"] = problem.mesh.n_cells();
   summary["mesh_from_cache"] = problem.mesh_from_cache;
   summary["subdomains"] = solution.n_subdomains;
+  summary["subdomains_reason"] = run.feti.subdomains_reason;
+  summary["preconditioner"] = {{"choice", run.feti.preconditioner_name}, {"reason", run.feti.preconditioner_reason}};
   summary["dual_size"] = solution.n_dual;
   summary["coarse_size"] = solution.n_kernel;
   const mesh::MeshQuality quality = mesh::mesh_quality(problem.mesh, problem.eliminated[2]);

@@ -14,9 +14,10 @@ DualPenaltyOptions::DualPenaltyOptions(const io::Settings& s)
   max_iterations = s.integer("qp.max_iterations");
   expansion = qp::expansion_from_name(s.text("qp.expansion"));
   const std::string& name = s.text("qp.preconditioner");
+  // auto: the Dirichlet one unless app::choose_feti resolves it (SolverSettings).
   preconditioner = name == "lumped" ? DualPreconditioner::lumped
-      : name == "dirichlet"         ? DualPreconditioner::dirichlet
-                                    : DualPreconditioner::none;
+      : name == "none"              ? DualPreconditioner::none
+                                    : DualPreconditioner::dirichlet;
   constraint_scaling = s.flag("qp.constraint_scaling");
   spectrum_steps = s.integer("qp.spectrum_steps");
 }

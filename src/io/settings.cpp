@@ -57,7 +57,8 @@ std::vector<SettingSpec> make_specs()
       {"newton.forcing", "0.001", "inexact outer iterations: the QP of outer iteration k stops at "
        "max(qp.rtol, min(1e-4, forcing * |du_(k-1)|/|u|)); 0 solves every QP to qp.rtol", Type::number, {}, 0, 1, false},
       {"load_steps", "2", "load steps for large displacements", Type::integer, {}, 1, 1000, false},
-      {"subdomains", "8", "number of FETI subdomains", Type::integer, {}, 1, 1e6, false},
+      {"subdomains", "auto", "number of FETI subdomains, or auto: chosen from the mesh size and the memory "
+       "budget (summary.json subdomains_reason; docs/usage.md)", Type::integer, {}, 1, 1e6, false, false, true},
       {"subdomain_cells", "0", "cells per subdomain, (H/h)^3 in 3D or (H/h)^2 for one layer; if > 0 "
                                "it sets the number of subdomains instead of 'subdomains'",
        Type::integer, {}, 0, 1e9, false},
@@ -73,9 +74,10 @@ std::vector<SettingSpec> make_specs()
       {"qp.expansion", "std", "MPRGP expansion step: std (feasible half step and projected gradient step, "
        "ALGORITHMS.md 5) or projcg (the CG step projected, with std as fallback where it raises the cost)",
        Type::text, {"std", "projcg"}, 0, 0, false},
-      {"qp.preconditioner", "dirichlet", "MPRGP preconditioning in the face: none, lumped (P B K B' P) or "
-       "dirichlet (P B S B' P, S the subdomain Schur complements on their boundary)",
-       Type::text, {"none", "lumped", "dirichlet"}, 0, 0, false},
+      {"qp.preconditioner", "auto", "MPRGP preconditioning in the face: none, lumped (P B K B' P), "
+       "dirichlet (P B S B' P, S the subdomain Schur complements on their boundary) or auto (dirichlet in plane "
+       "strain and for 3D subdomains of at most 5000 DOFs, else lumped; summary.json preconditioner.reason)",
+       Type::text, {"none", "lumped", "dirichlet", "auto"}, 0, 0, false},
       {"qp.constraint_scaling", "true", "scale the preconditioner by (B B')^-1 on both sides "
        "(mortar FETI): needed when contact rows are not orthogonal to each other and to the gluing rows",
        Type::boolean, {}, 0, 0, false},
@@ -150,11 +152,14 @@ void Settings::set(const std::string& key, const std::string& raw, const std::st
   case Type::number:
   case Type::integer:
   {
+    if (s.or_auto && value == "auto")
+      break;
     char* end = nullptr;
     errno = 0;
     const double v = std::strtod(value.c_str(), &end);
     FETICON_CHECK(!value.empty() && end && *end == '\0' && std::isfinite(v),
-                  source << ": " << key << " = '" << value << "' is not a finite number");
+                  source << ": " << key << " = '" << value << "' is not a finite number"
+                         << (s.or_auto ? " or auto" : ""));
     // Underflow (1e-320, subnormal) as well: no setting means anything there, and number()
     // would not read it back.
     FETICON_CHECK(errno != ERANGE,
@@ -202,7 +207,11 @@ std::optional<double> Settings::optional_number(const std::string& key) const
   const std::string& value = _values.at(key);
   return value.empty() ? std::nullopt : std::optional<double>(std::stod(value));
 }
-int Settings::integer(const std::string& key) const { return static_cast<int>(std::stod(_values.at(key))); }
+int Settings::integer(const std::string& key) const
+{
+  FETICON_CHECK(!is_auto(key), key << " is auto: the run chooses it (app/feti_choice)");
+  return static_cast<int>(std::stod(_values.at(key)));
+}
 const std::string& Settings::text(const std::string& key) const { return _values.at(key); }
 bool Settings::flag(const std::string& key) const { return _values.at(key) == "true"; }
 

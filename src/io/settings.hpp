@@ -32,6 +32,8 @@ struct SettingSpec
   double max = 1e300;
   bool min_exclusive = false;
   bool max_exclusive = false;
+  /// For an integer: "auto" is also a value (the run chooses; Settings::is_auto).
+  bool or_auto = false;
 };
 
 /// The keys of a run at their values. The table is the solver's and the outputs' keys
@@ -57,7 +59,10 @@ public:
   double number(const std::string& key) const;
   /// An optional number: empty if the key was not given.
   std::optional<double> optional_number(const std::string& key) const;
+  /// An integer key's value; an error for a key at "auto" (ask is_auto first).
   int integer(const std::string& key) const;
+  /// True if `key` (an integer key that allows it) is "auto".
+  bool is_auto(const std::string& key) const { return _values.at(key) == "auto"; }
   const std::string& text(const std::string& key) const;
   bool flag(const std::string& key) const;
   /// True if `key` was set (problem file, deck, --set), false if it has its default.

@@ -44,6 +44,22 @@ struct BondedSolve
   long factor_nonzeros = 0;
 };
 
+/// The bonded system of bonded_direct_solve after the elimination, for other solvers of it
+/// (bench: PETSc's algebraic multigrid, the iterative floor of issue 40).
+struct BondedSystem
+{
+  la::SparseMatrix A; ///< T' (K + B_A' E B_A) T, both triangles
+  la::Vector b;       ///< T' (f_ext + B_A' E c_A - (K + B_A' E B_A) g)
+  /// The rigid-body modes as vectors of the free DOFs, orthonormal columns (the near kernel
+  /// an algebraic multigrid builds its coarse spaces from); filled by bonded_system only.
+  la::Matrix near_kernel;
+};
+
+/// @brief The system bonded_direct_solve factorizes, with its near kernel; arguments and
+///        errors as there.
+BondedSystem bonded_system(const fem::Problem& problem, const SolverSettings& settings,
+                           const std::vector<int32_t>& bonded_nodes);
+
 /// @brief Slave nodes of the rows with a positive multiplier (the nodes in contact).
 std::vector<int32_t> active_slave_nodes(const ContactSolution& solution);
 

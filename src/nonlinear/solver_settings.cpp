@@ -22,7 +22,7 @@ SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
   stiffness = stiffness_name == "initial" ? StiffnessUpdate::initial
       : stiffness_name == "step"          ? StiffnessUpdate::load_step
                                           : StiffnessUpdate::iteration;
-  subdomains = s.integer("subdomains");
+  subdomains = s.is_auto("subdomains") ? 8 : s.integer("subdomains");
   const std::string& partitioner_name = s.text("partitioner");
   partitioner = partitioner_name == "metis" ? Partitioner::metis
       : partitioner_name == "rcb"           ? Partitioner::rcb

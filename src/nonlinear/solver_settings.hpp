@@ -67,7 +67,11 @@ struct SolverSettings
   SolverSettings();
   /// From the settings `method`, `displacements`, `load_steps`, `newton.*`, `subdomains`,
   /// `partitioner`, `dual.operator`, `contact.formulation`, `eps_n` and the dual's (rho,
-  /// smalbe.*, qp.*). `subdomain_cells` needs the mesh: app::solver_settings applies it.
+  /// smalbe.*, qp.*). `subdomain_cells` needs the mesh: app::solver_settings applies it, and
+  /// resolves `subdomains = auto` and `qp.preconditioner = auto` from the model's size and the
+  /// machine's memory (app/feti_choice.hpp). Made here from settings at auto, they are the
+  /// fixed values of before issue 40, 8 subdomains and the Dirichlet preconditioner (the
+  /// library's callers, the tests among them, get reproducible runs).
   explicit SolverSettings(const io::Settings& settings);
 
   /// Load steps of the first load stage (all of a one-stage problem): load_steps with large

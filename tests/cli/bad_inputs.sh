@@ -361,9 +361,10 @@ expect_qp "a disc joining a component with itself" "self.txt:1: index 2 twice" -
 expect_qp "a folder as disc file" "is not a regular file" -- --A "$work/A4.mtx" --b "$work/b4.mtx" --discs "$work"
 
 # A diverging modified Newton loop (finite rotations in two load steps with K_0) ends with a
-# message saying so, not with the NaN of a later step.
+# message saying so, not with the NaN of a later step (8 subdomains: with other counts the
+# round-off takes the iterates to an inverted element first, also one line).
 expect "diverging outer loop" "diverged" -- --set problem=cantilever_obstacle --set displacements=large \
-  --set output.plots=false
+  --set output.plots=false --set subdomains=8
 
 echo "$((cases - failures)) passed, $failures failed"
 [[ $failures -eq 0 ]]

@@ -54,8 +54,11 @@ SH
 failures=0
 fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 
-# hertz3d at refinement 1: about 250 MiB, over the 124 MiB of room.
-under_limit big run -q --output "$work/big" --set problem=hertz3d --set displacements=small
+# hertz3d at refinement 1 in 8 subdomains with the Dirichlet preconditioner: about 250 MiB,
+# over the 124 MiB of room (subdomains = auto would take more, smaller subdomains; it cannot
+# fit them either: see the second case).
+under_limit big run -q --output "$work/big" --set problem=hertz3d --set displacements=small --set subdomains=8 \
+  --set qp.preconditioner=dirichlet
 [[ $(cat "$work/big.status") != 0 ]] || fail "a run over the cgroup's room was not refused"
 grep -q "needs about .* MiB.*the cgroup limit /sys/fs/cgroup/.*less its usage.*raise the cgroup's memory limit" \
   "$work/big.err" || fail "the refusal does not name the cgroup limit: $(cat "$work/big.err")"
@@ -63,6 +66,12 @@ grep -q "needs about .* MiB.*the cgroup limit /sys/fs/cgroup/.*less its usage.*r
 [[ ! -e $work/big ]] || fail "the refused run made its output folder"
 # Refused before it allocates: the process stays far below the limit (64 MiB of libraries).
 (($(cat "$work/big.rss") * 1024 < limit)) || fail "the refused run peaked at $(cat "$work/big.rss") KB"
+
+# With subdomains = auto the count is raised towards the room, but not below subdomains of
+# 1000 DOFs (39 here), where the estimate is still over it: refused as well.
+under_limit auto run -q --output "$work/auto" --set problem=hertz3d --set displacements=small
+[[ $(cat "$work/auto.status") != 0 ]] || fail "an auto run over the cgroup's room was not refused"
+grep -q "in 39 subdomains" "$work/auto.err" || fail "the auto run was not raised to 39 subdomains: $(cat "$work/auto.err")"
 
 # A small Hertz run fits the same room and runs.
 under_limit small run -q --output "$work/small" --set hertz.refinement=0.5 --set displacements=small \

@@ -24,7 +24,8 @@ run() { # NAME SETTINGS...
   local name=$1
   shift
   timeout 300 mpirun --oversubscribe -np 2 "$feticon" run -q --output "$work/$name" \
-    "$source_dir/examples/sphere_on_block/problem.yaml" --set output.vtu=false --set output.plots=false "$@"
+    "$source_dir/examples/sphere_on_block/problem.yaml" --set output.vtu=false --set output.plots=false \
+    --set qp.preconditioner=dirichlet "$@"
 }
 run free
 run limited --set memory_limit=$((2 * share))

@@ -1,0 +1,68 @@
+#pragma once
+/// @file `subdomains = auto` and `qp.preconditioner = auto` (issue 40): the subdomain count
+/// and the dual preconditioner chosen from the model's size and the memory the machine has,
+/// with the reason written to summary.json; values the user gives win.
+///
+/// The rules are fitted to sweeps of both settings (bench/settings_sweep.sh, the table in
+/// docs/benchmarks.md, "subdomains = auto"):
+/// - plane strain: the Dirichlet preconditioner, whose boundary blocks are small there (the
+///   explicit operators), took 1.3-4.6 times less dual-solve time than the lumped one at every
+///   count; 3D: the lumped one, whose cheaper steps beat the Dirichlet one's fewer ones on
+///   the 3D models swept, and which needs no second set of factors (K_ii), unless the
+///   subdomains are small (auto_dirichlet_subdomain_dofs_3d);
+/// - the steps grow with the subdomain count while a step's cost hardly falls (the dual grows
+///   with the boundaries), so the count is the power of two nearest (geometrically) to the
+///   count of subdomains of a target size, where the factorizations stop dominating; then it
+///   is doubled until the memory guard's estimate of the run fits in half the budget.
+
+#include "app/memory_guard.hpp"
+#include "dual/dual_penalty_problem.hpp"
+#include "fem/problem.hpp"
+#include "io/settings.hpp"
+
+#include <cstdint>
+#include <string>
+
+namespace feticon::app
+{
+/// What the choice looks at.
+struct ModelSize
+{
+  int64_t nodes = 0; ///< as the memory guard counts them (guard_nodes)
+  int64_t cells = 0; ///< 0: not known yet (before the mesh is made)
+  int bodies = 1;    ///< a subdomain never spans two bodies
+  bool plane_strain = false;
+  double resident = 0; ///< bytes a rank holds already (0: the guard's model of the process)
+};
+
+/// The subdomain count and the preconditioner of a run, each with why.
+struct FetiChoice
+{
+  int subdomains = 8;
+  std::string subdomains_reason; ///< "given" for a value of the settings
+  dual::DualPreconditioner preconditioner = dual::DualPreconditioner::dirichlet;
+  std::string preconditioner_name = "dirichlet";
+  std::string preconditioner_reason;
+  /// The preconditioner keeps the K_ii factors (the implicit Dirichlet one): the memory
+  /// guard counts them.
+  bool dirichlet() const { return preconditioner == dual::DualPreconditioner::dirichlet; }
+};
+
+/// The size of `problem`'s mesh as the choice sees it.
+ModelSize model_size(const fem::Problem& problem);
+
+/// DOFs per subdomain that `subdomains = auto` aims at (plane strain, 3D).
+constexpr double auto_subdomain_dofs_plane_strain = 3000;
+constexpr double auto_subdomain_dofs_3d = 10000;
+/// In 3D, subdomains of at most this many DOFs get the Dirichlet preconditioner (the sphere
+/// on a block in 4 subdomains of 4 200 DOFs: 66 MPRGP steps against the lumped one's 158,
+/// 1.13 s against 1.37 s; at 8 500 DOFs the lumped one won, 1.23 s against 1.53 s).
+constexpr double auto_dirichlet_subdomain_dofs_3d = 5000;
+/// The smallest subdomains auto raises the count to for memory: below them a subdomain's
+/// factor hardly shrinks (the fixed bytes per DOF dominate) while the steps keep growing.
+constexpr double auto_min_subdomain_dofs = 1000;
+
+/// The choice for a model of `size` on `ranks` ranks under `budget` (per rank), from the
+/// settings `subdomains`, `subdomain_cells` and `qp.preconditioner`.
+FetiChoice choose_feti(const io::Settings& settings, const ModelSize& size, const MemoryBudget& budget, int ranks);
+} // namespace feticon::app

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# CLI test of `subdomains = auto` and `qp.preconditioner = auto` (app/feti_choice.hpp, issue 40).
+# References: the rules of app/feti_choice.hpp (the power of two nearest DOFs / target, at least the
+# bodies; Dirichlet in plane strain, lumped in 3D), the memory guard's own estimate written to
+# summary.json (it must fit in half of memory_limit when auto raised the count for it), and the
+# given values, which must pass through untouched.
+# Usage: auto_settings.sh FETICON SOURCE_DIR
+set -euo pipefail
+feticon="$1"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+run() { "$feticon" run "$@" -q --overwrite --set output.plots=false --set output.vtu=false; }
+field() { /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1]))
+for k in sys.argv[2].split('.'): d=d[k]
+print(d)" "$1/summary.json" "$2"; }
+fail() { echo "auto_settings: $*"; exit 1; }
+
+# 1. Plane strain (the default Hertz problem): Dirichlet, the power of two nearest DOFs / 3000.
+run --output "$work/hertz" --set hertz.refinement=0.5
+dofs=$(field "$work/hertz" degrees_of_freedom)
+expected=$(/usr/bin/python3 -c "import math,sys; print(max(2, 2 ** round(math.log2(max(1, int(sys.argv[1]) / 3000)))))" "$dofs") # two bodies at least
+[[ $(field "$work/hertz" subdomains) == "$expected" ]] || fail "Hertz: $(field "$work/hertz" subdomains) subdomains, expected $expected for $dofs DOFs"
+[[ $(field "$work/hertz" subdomains_reason) == *"DOFs a subdomain"* ]] || fail "Hertz: reason '$(field "$work/hertz" subdomains_reason)'"
+[[ $(field "$work/hertz" preconditioner.choice) == dirichlet ]] || fail "Hertz: preconditioner $(field "$work/hertz" preconditioner.choice)"
+# problem.yaml keeps the choices, so that a restart decomposes the same way on any machine.
+grep -qx "subdomains: $expected" "$work/hertz/problem.yaml" || fail "problem.yaml: $(grep '^subdomains' "$work/hertz/problem.yaml")"
+grep -qx "qp.preconditioner: dirichlet" "$work/hertz/problem.yaml" || fail "problem.yaml lacks the preconditioner"
+
+# 2. 3D (hertz3d): the lumped preconditioner.
+run --output "$work/h3" --set problem=hertz3d --set hertz3d.refinement=0.8 --set displacements=small
+[[ $(field "$work/h3" preconditioner.choice) == lumped ]] || fail "hertz3d: preconditioner $(field "$work/h3" preconditioner.choice)"
+[[ $(field "$work/h3" converged) == True ]] || fail "hertz3d did not converge"
+
+# 2b. 3D in small subdomains (the sphere example's 4 given subdomains of 4 200 DOFs): Dirichlet.
+run "$2/examples/sphere_on_block/problem.yaml" --output "$work/sphere"
+[[ $(field "$work/sphere" preconditioner.choice) == dirichlet ]] \
+  || fail "sphere: preconditioner $(field "$work/sphere" preconditioner.choice)"
+[[ $(field "$work/sphere" preconditioner.reason) == *"small subdomains"* ]] || fail "sphere: '$(field "$work/sphere" preconditioner.reason)'"
+
+# 3. Given values win, and say so.
+run --output "$work/given" --set hertz.refinement=0.5 --set subdomains=3 --set qp.preconditioner=lumped
+[[ $(field "$work/given" subdomains) == 3 && $(field "$work/given" subdomains_reason) == given ]] || fail "given count not kept"
+[[ $(field "$work/given" preconditioner.choice) == lumped && $(field "$work/given" preconditioner.reason) == given ]] \
+  || fail "given preconditioner not kept"
+
+# 4. A tight budget raises the count until the guard's estimate fits in half of it.
+limit=2.4e8
+run --output "$work/tight" --set problem=hertz3d --set hertz3d.refinement=0.8 --set displacements=small \
+  --set memory_limit=$limit
+[[ $(field "$work/tight" subdomains_reason) == *"raised from"* ]] || fail "tight budget: '$(field "$work/tight" subdomains_reason)'"
+/usr/bin/python3 -c "import sys; e, l = float(sys.argv[1]), float(sys.argv[2]); sys.exit(0 if e <= 0.5 * l else 1)" \
+  "$(field "$work/tight" memory_estimate_bytes)" "$limit" || fail "estimate $(field "$work/tight" memory_estimate_bytes) over half of $limit"
+(( $(field "$work/tight" subdomains) > $(field "$work/h3" subdomains) )) || fail "tight budget did not raise the count"
+
+# 5. "auto" is no number elsewhere; a bad count names the key.
+if "$feticon" run -q --output "$work/bad" --set subdomains=many 2> "$work/err"; then fail "subdomains=many accepted"; fi
+grep -q "subdomains = 'many' is not a finite number or auto" "$work/err" || fail "message: $(cat "$work/err")"
+echo "auto_settings: ok"
