@@ -16,6 +16,7 @@
 #   bench/run.sh --obstacle 1000 --obstacle-steps 1000   # MPRGP QP size n^2 and step cap
 #   bench/run.sh --preconditioners none,dirichlet  # dual preconditioners of the contact cases
 #   bench/run.sh --operators implicit,explicit     # dual.operator of the contact cases (default auto)
+#   bench/run.sh --only contact --gamg             # and the bonded system by PETSc GAMG-CG (bench/gamg)
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -32,6 +33,7 @@ obstacle=1000
 obstacle_steps=1000
 preconditioners=dirichlet
 operators=auto
+gamg=0
 while [[ $# -gt 0 ]]; do
   case $1 in
     --sizes) sizes=$2; shift 2 ;;
@@ -44,6 +46,7 @@ while [[ $# -gt 0 ]]; do
     --obstacle-steps) obstacle_steps=$2; shift 2 ;;
     --preconditioners) preconditioners=$2; shift 2 ;;
     --operators) operators=$2; shift 2 ;;
+    --gamg) gamg=1; shift ;;
     --weak) weak=$2; shift 2 ;;
     --weak-cells) weak_cells=$2; shift 2 ;;
     --weak-problems) weak_problems=$2; shift 2 ;;
@@ -70,7 +73,11 @@ run_case() {
   rm -f "$out/raw/$name".rep*.json
   for ((i = 1; i <= reps; i++)); do
     echo "bench: $name ($i/$reps)" >&2
-    nice -n 10 "$feticon" bench "$@" | tail -n 1 > "$out/raw/$name.rep$i.json"
+    if ((gamg)) && [[ $name == contact.* ]]; then
+      nice -n 10 "$root/bench/gamg/run.sh" --feticon "$feticon" -- "$@" | tail -n 1 > "$out/raw/$name.rep$i.json"
+    else
+      nice -n 10 "$feticon" bench "$@" | tail -n 1 > "$out/raw/$name.rep$i.json"
+    fi
   done
 }
 

@@ -71,6 +71,10 @@ CONTACT = {
     "direct solve (s)": lambda c: c.get("direct.solve_seconds", ""),
     "factor nnz": lambda c: c.get("direct.factor_nonzeros", ""),
     "contact / direct": lambda c: c.get("ratio_contact_to_direct", ""),
+    "GAMG set-up + solve (s)": lambda c: (c["gamg.setup_seconds"] + c["gamg.solve_seconds"]
+                                          if "gamg.setup_seconds" in c else ""),
+    "GAMG CG iterations": lambda c: c.get("gamg.iterations", ""),
+    "contact / GAMG": lambda c: c.get("ratio_contact_to_gamg", ""),
     "QP (s)": lambda c: c["qp_seconds"],
     "s / MPRGP iteration": lambda c: c["qp_seconds"] / max(c["qp.iterations"], 1),
     "s / H application": lambda c: c["seconds_per_operator_application"],
@@ -159,7 +163,8 @@ CONTACT_GROUPS = [
      "converged", "reps"],
     ["size", "displacements", "preconditioner", "operator"] + [phase + " (s)" for phase in PHASES],
     ["size", "displacements", "preconditioner", "total solve (s)", "direct assembly (s)", "direct factorization (s)",
-     "direct solve (s)", "factor nnz", "contact / direct"],
+     "direct solve (s)", "factor nnz", "contact / direct", "GAMG set-up + solve (s)", "GAMG CG iterations",
+     "contact / GAMG"],
     ["size", "displacements", "preconditioner", "operator", "MPRGP", "QP (s)", "s / MPRGP iteration", "s / H application",
      "s / preconditioner application", "iteration / H application", "iteration / (H + preconditioner)"],
 ]
