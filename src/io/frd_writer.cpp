@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <ctime>
+#include <limits>
 
 namespace feticon::io
 {
@@ -78,6 +79,18 @@ void check_field(std::span<const double> values, int32_t n_nodes, int components
   FETICON_CHECK(values.size() == expected,
                 "frd '" << path.string() << "': " << name << " has " << values.size() << " values, expected " << n_nodes
                         << " nodes x " << components << " = " << expected);
+}
+
+/// The .frd holds single-precision numbers, as CalculiX writes them: a value beyond float's
+/// range would be written as INF (a model far from SI magnitudes, e.g. lengths of 1e-30 m).
+void check_single_precision(std::span<const double> values, int components, const char* name, const Labels& node_labels,
+                            const std::filesystem::path& path)
+{
+  for (std::size_t j = 0; j < values.size(); ++j)
+    FETICON_CHECK(std::isfinite(values[j]) && std::abs(values[j]) <= std::numeric_limits<float>::max(),
+                  "frd '" << path.string() << "': " << name << " of node "
+                          << label_of(node_labels, static_cast<int64_t>(j / components)) << " is " << values[j]
+                          << ", beyond the single precision of the .frd (3.4e38): check the model's units");
 }
 
 /// value(i, k) of a field stored node after node, `components` values each.
@@ -270,6 +283,12 @@ void FrdWriter::check_step(const FrdStep& step) const
   check_field(step.reaction_force, _n_nodes, 3, "reaction_force", _path);
   check_field(step.contact_pressure, _n_nodes, 1, "contact_pressure", _path);
   check_field(step.contact_gap, _n_nodes, 1, "contact_gap", _path);
+  check_single_precision(step.displacement, 3, "displacement", _node_labels, _path);
+  check_single_precision(step.stress, 6, "stress", _node_labels, _path);
+  check_single_precision(step.strain, 6, "strain", _node_labels, _path);
+  check_single_precision(step.reaction_force, 3, "reaction force", _node_labels, _path);
+  check_single_precision(step.contact_pressure, 1, "contact pressure", _node_labels, _path);
+  check_single_precision(step.contact_gap, 1, "contact gap", _node_labels, _path);
   FETICON_CHECK(step.step >= 1, "frd '" << _path.string() << "': step " << step.step << " must be >= 1");
   FETICON_CHECK(step.time >= 0.0 && step.time < 1e99,
                 "frd '" << _path.string() << "': time " << step.time << " outside [0, 1e99)");
