@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "common/parallel.hpp"
+#include "la/submatrix.hpp"
 
 #include <algorithm>
 #include <map>
@@ -156,6 +157,53 @@ la::Vector FetiOperators::net_force_weights() const
   return gather_coarse(comm(), local);
 }
 
+namespace
+{
+/// B's columns j with position[j] >= 0, column j becoming position[j]; every entry of B must
+/// be in one of them.
+la::SparseMatrix restrict_columns(const la::SparseMatrix& B, const std::vector<int32_t>& position, la::Index n_kept,
+                                  int32_t subdomain)
+{
+  std::vector<la::Triplet> triplets;
+  for (int j = 0; j < B.outerSize(); ++j)
+    for (la::SparseMatrix::InnerIterator it(B, j); it; ++it)
+    {
+      FETICON_CHECK(position[it.col()] >= 0,
+                    "explicit dual operators: a constraint row of subdomain "
+                        << subdomain << " touches DOF " << it.col() << ", which is not on its boundary");
+      triplets.emplace_back(it.row(), position[it.col()], it.value());
+    }
+  la::SparseMatrix restricted(B.rows(), n_kept);
+  restricted.setFromTriplets(triplets.begin(), triplets.end());
+  return restricted;
+}
+} // namespace
+
+void FetiOperators::use_lumped_blocks()
+{
+  const auto& decomp = _system.decomposition();
+  _B_touched.clear();
+  _K_touched.clear();
+  int64_t entries = 0;
+  for (int32_t s = decomp.first_owned(); s < decomp.end_owned(); ++s)
+  {
+    const la::SparseMatrix& B = _B[s - decomp.first_owned()];
+    std::vector<int32_t> position(B.cols(), -1);
+    for (int j = 0; j < B.outerSize(); ++j)
+      for (la::SparseMatrix::InnerIterator it(B, j); it; ++it)
+        position[it.col()] = 0;
+    int32_t n_touched = 0;
+    for (int32_t& p : position) // increasing with the DOF: K's lower triangle stays lower
+      if (p == 0)
+        p = n_touched++;
+    _B_touched.push_back(restrict_columns(B, position, n_touched, s));
+    _K_touched.push_back(la::principal_submatrix(_system.operators(s).K, position, n_touched));
+    entries += _K_touched.back().nonZeros();
+  }
+  // A product reads each stored entry twice (the symmetric view); counted like the blocks.
+  _lumped_work = entries / 25;
+}
+
 void FetiOperators::use_explicit(const decomposition::ExplicitBoundaryOperators& ops)
 {
   const auto& decomp = _system.decomposition();
@@ -167,18 +215,7 @@ void FetiOperators::use_explicit(const decomposition::ExplicitBoundaryOperators&
     std::vector<int32_t> position(B.cols(), -1);
     for (size_t k = 0; k < boundary.size(); ++k)
       position[boundary[k]] = static_cast<int32_t>(k);
-    std::vector<la::Triplet> triplets;
-    for (int j = 0; j < B.outerSize(); ++j)
-      for (la::SparseMatrix::InnerIterator it(B, j); it; ++it)
-      {
-        FETICON_CHECK(position[it.col()] >= 0,
-                      "explicit dual operators: a constraint row of subdomain " << s << " touches DOF " << it.col()
-                                                                                << ", which is not on its boundary");
-        triplets.emplace_back(it.row(), position[it.col()], it.value());
-      }
-    la::SparseMatrix Bb(B.rows(), static_cast<la::Index>(boundary.size()));
-    Bb.setFromTriplets(triplets.begin(), triplets.end());
-    _B_boundary.push_back(std::move(Bb));
+    _B_boundary.push_back(restrict_columns(B, position, static_cast<la::Index>(boundary.size()), s));
   }
   _explicit = &ops;
   // A product reads each block once; the threads pay from about 25 * min_parallel_work block
@@ -203,6 +240,10 @@ la::Vector FetiOperators::apply_F(const la::Vector& lambda) const
 
 la::Vector FetiOperators::apply_lumped(const la::Vector& lambda) const
 {
+  if (!_K_touched.empty())
+    return sum_over_subdomains(_B_touched, lambda, _lumped_work, [this](int32_t s, const la::Vector& v) {
+      return la::Vector(_K_touched[s - _system.decomposition().first_owned()].selfadjointView<Eigen::Lower>() * v);
+    });
   return sum_over_subdomains(_B, lambda, n_primal(), [this](int32_t s, const la::Vector& v) {
     return la::Vector(_system.operators(s).K.selfadjointView<Eigen::Lower>() * v);
   });

@@ -72,6 +72,11 @@ public:
   /// Dirichlet preconditioner B S B' lambda (decomposition/schur_complements.hpp): one K_ii
   /// solve per subdomain, a better approximate inverse of F than B K B'.
   la::Vector apply_dirichlet(const la::Vector& lambda, const decomposition::SchurComplements& schur) const;
+  /// From now on the lumped preconditioner multiplies with K_s on the DOFs the rows of s
+  /// touch only, B_s K_s B_s' = B_c K_cc B_c' (the rest of K_s meets zeros of B_s'): a step
+  /// reads the boundary's share of K instead of all of it (hertz3d at 924k DOFs in 128
+  /// subdomains: docs/benchmarks.md). The same operator to round-off.
+  void use_lumped_blocks();
   /// From now on F and the Dirichlet preconditioner are dense products with the boundary
   /// blocks of `ops` (kept by reference; must outlive this object): B_b (K_s+)_bb B_b' and
   /// B_b S_s B_b', the same operators to round-off. Throws if a row touches a DOF outside b_s.
@@ -113,6 +118,9 @@ private:
   std::vector<la::Matrix> _BR;
   const decomposition::ExplicitBoundaryOperators* _explicit = nullptr;
   std::vector<la::SparseMatrix> _B_boundary; ///< per owned subdomain: B_s on the columns b_s
+  std::vector<la::SparseMatrix> _B_touched;  ///< per owned subdomain: B_s on the columns it touches (c_s)
+  std::vector<la::SparseMatrix> _K_touched;  ///< per owned subdomain: K_s on c_s, lower triangle
+  int64_t _lumped_work = 0;                  ///< one product with the K_cc, in parallel_for's units
   /// Nonzeros of the subdomain factors per unit of parallel_for's work (its DOFs): the
   /// plane-strain meshes, where min_parallel_work was measured, have about this many per DOF.
   static constexpr int64_t factor_nonzeros_per_work_unit = 50;

@@ -718,6 +718,8 @@ std::unique_ptr<dual::FetiOperators> FetiContactSolve::coarse_problem(const deco
   auto feti = std::make_unique<dual::FetiOperators>(*_system, rows);
   if (_explicit_operators)
     feti->use_explicit(*_explicit_operators);
+  if (_settings.dual.preconditioner == dual::DualPreconditioner::lumped)
+    feti->use_lumped_blocks();
   return feti;
 }
 
