@@ -47,8 +47,7 @@ void choose_preconditioner(const io::Settings& settings, const ModelSize& size, 
 }
 
 /// 3D with small subdomains: the Dirichlet preconditioner's second factors and boundary
-/// blocks are cheap there, and its fewer steps win.
-/// Only where its factors fit in the count's room too.
+/// blocks are cheap there, and its fewer steps win; only where they fit in the count's room.
 void revise_preconditioner(const io::Settings& settings, const ModelSize& size, const MemoryBudget& budget, int ranks,
                            FetiChoice& out)
 {
@@ -101,11 +100,15 @@ void choose_count(const io::Settings& settings, const ModelSize& size, const Mem
   const int smallest = clamp(std::floor(dofs / auto_min_subdomain_dofs));
   while (budget.per_rank >= 0 && n < smallest && estimated_peak(size, n, ranks, out.dirichlet()) > room)
     n = std::min(smallest, clamp(2.0 * n));
-  if (n != first)
-    out.subdomains_reason +=
-        format("; raised from %.0f so that the estimated peak, %.0f MiB a rank, fits in half "
-               "the %.0f MiB available",
-               first, estimated_peak(size, n, ranks, out.dirichlet()) / 1048576.0, budget.per_rank / 1048576.0);
+  const double peak = estimated_peak(size, n, ranks, out.dirichlet());
+  if (n != first && peak <= room)
+    out.subdomains_reason += format("; raised from %.0f so that the estimated peak, %.0f MiB a rank, fits in half "
+                                    "the %.0f MiB available",
+                                    first, peak / 1048576.0, budget.per_rank / 1048576.0);
+  else if (n != first) // the guard decides whether the whole budget holds it
+    out.subdomains_reason += format("; raised from %.0f to subdomains of about %.0f DOFs, the smallest auto takes; "
+                                    "the estimated peak, %.0f MiB a rank, is over half the budget",
+                                    first, auto_min_subdomain_dofs, peak / 1048576.0);
   out.subdomains = n;
 }
 } // namespace

@@ -52,6 +52,13 @@ run --output "$work/tight" --set problem=hertz3d --set hertz3d.refinement=0.8 --
   "$(field "$work/tight" memory_estimate_bytes)" "$limit" || fail "estimate $(field "$work/tight" memory_estimate_bytes) over half of $limit"
 (( $(field "$work/tight" subdomains) > $(field "$work/h3" subdomains) )) || fail "tight budget did not raise the count"
 
+# 4b. Tighter: even subdomains of 1000 DOFs leave the estimate over half the budget; the run
+# takes them (the guard checks the whole budget) and says so.
+run --output "$work/tighter" --set problem=hertz3d --set hertz3d.refinement=0.8 --set displacements=small \
+  --set memory_limit=1.6e8
+[[ $(field "$work/tighter" subdomains_reason) == *"the smallest auto takes"* ]] \
+  || fail "tighter budget: '$(field "$work/tighter" subdomains_reason)'"
+
 # 5. "auto" is no number elsewhere; a bad count names the key.
 if "$feticon" run -q --output "$work/bad" --set subdomains=many 2> "$work/err"; then fail "subdomains=many accepted"; fi
 grep -q "subdomains = 'many' is not a finite number or auto" "$work/err" || fail "message: $(cat "$work/err")"
