@@ -160,6 +160,8 @@ FrdWriter::FrdWriter(const std::filesystem::path& path, const mesh::Mesh& mesh, 
     for (const int32_t id : cell)
       FETICON_CHECK(id >= 0 && id < mesh.n_nodes(),
                     "frd '" << path.string() << "': cell node id " << id << " outside [0, " << mesh.n_nodes() << ")");
+  check_single_precision({mesh.nodes.data(), static_cast<std::size_t>(mesh.nodes.size())}, 3, "coordinate", node_labels,
+                         path);
   _file = create_file(path);
 
   TextFileBuffer out(_file.get(), path.string());

@@ -242,7 +242,10 @@ GmshDeclaredSizes precheck_gmsh_file(const std::filesystem::path& path, const st
                       << "' is not a MSH 2 or MSH 4 format line ('4.1 0 8': version, ascii 0 or binary 1, "
                          "size of a double)");
   const bool msh4 = format[0][0] == '4', binary = format[1] == "1";
-  const int size_t_bytes = std::stoi(format[2]);
+  FETICON_CHECK(format[2] == "8" || format[2] == "4",
+                where << ": line " << in.number() << ": data size '" << format[2]
+                      << "' in the format line is not 8 or 4 (the bytes of a double, MSH 2, or of a size_t, MSH 4)");
+  const int size_t_bytes = format[2] == "4" ? 4 : 8;
 
   // Every node or element takes at least one byte of the file in any format, so a count
   // beyond the file's size is a corrupt header, refused before libgmsh allocates for it.

@@ -150,9 +150,10 @@ expect "deck friction table" "takes one data line" -- "$(friction_variant '*FRIC
 expect "deck friction negative stick slope" "stick slope -1e6 must be positive" -- \
   "$(friction_variant '*FRICTION\n0.3, -1e6' friction_slope)"
 expect "deck element type" "C3D15" -- "$(deck_variant 's/TYPE=C3D8/TYPE=C3D15/I' c3d15)"
-# Lengths of 1e-30 m (a fuzz mutant): stresses of 1e52 Pa, beyond the .frd's single precision,
+# Lengths of 1e-30 m (a fuzz mutant): stresses of 5e44 Pa, beyond the .frd's single precision,
 # were written as INF; now one line.
-/usr/bin/python3 - "$src_dir/tests/data/calculix/contactenergy.inp" "$work/tiny.inp" <<'PY'
+scaled_deck() { # FACTOR NAME: contactenergy.inp with every coordinate times FACTOR
+/usr/bin/python3 - "$src_dir/tests/data/calculix/contactenergy.inp" "$work/$2.inp" "$1" <<'PY'
 import sys
 lines, nodes = [], False
 for line in open(sys.argv[1]).read().split("\n"):
@@ -160,11 +161,17 @@ for line in open(sys.argv[1]).read().split("\n"):
         nodes = line.upper().startswith("*NODE") and "PRINT" not in line.upper() and "FILE" not in line.upper()
     elif nodes and line.strip():
         label, *xyz = line.split(",")
-        line = ",".join([label] + [repr(float(x) * 1e-30) for x in xyz])
+        line = ",".join([label] + [repr(float(x) * float(sys.argv[3])) for x in xyz])
     lines.append(line)
 open(sys.argv[2], "w").write("\n".join(lines))
 PY
-expect "deck of lengths 1e-30 m" "beyond the single precision of the .frd" -- "$work/tiny.inp" --set subdomains=2
+echo "$work/$2.inp"
+}
+expect "deck of lengths 1e-30 m" "stress of node .* beyond the single precision of the .frd" -- \
+  "$(scaled_deck 1e-30 tiny)" --set subdomains=2
+# Lengths of 1e60 m (another mutant): coordinates beyond it, refused before the solve.
+expect "deck of lengths 1e60 m" "coordinate of node 1 is 1e+60, beyond the single precision" -- \
+  "$(scaled_deck 1e60 huge)" --set subdomains=2
 # C3D10 decks (feticon's export in tests/data/fuzz/): a tetrahedron has faces S1-S4 only, for
 # *SURFACE and for *DLOAD.
 tet_variant() { sed "$1" "$src_dir/tests/data/fuzz/punch_tet10.inp" > "$work/$2.inp"; echo "$work/$2.inp"; }
@@ -195,6 +202,8 @@ gmsh_problem() { # MESH NAME
 expect "Gmsh file missing" "nothing.msh" -- "$(gmsh_problem nothing.msh gmsh_missing)"
 head -c 20000 "$2/examples/sphere_on_block/sphere_on_block.msh" > "$work/truncated.msh"
 expect "Gmsh file truncated" "truncated.msh" -- "$(gmsh_problem truncated.msh gmsh_truncated)"
+sed '2s/^4.1 0 8$/4.1 0 inf/' "$2/examples/sphere_on_block/sphere_on_block.msh" > "$work/data_size.msh"
+expect "Gmsh format line's data size" "data size 'inf'" -- "$(gmsh_problem data_size.msh gmsh_data_size)"
 expect "Gmsh file lacks the named groups" "no node set 'base_ymin'" -- "$(gmsh_problem "$(cd "$2" && pwd)/examples/sphere_on_block/sphere_on_block.msh" gmsh_groups)"
 
 # Hand-written MSH 2.2 files: one hexahedron "block" with a bottom face and an empty-named
