@@ -162,15 +162,15 @@ namespace
 /// B's columns j with position[j] >= 0, column j becoming position[j]; every entry of B must
 /// be in one of them.
 la::SparseMatrix restrict_columns(const la::SparseMatrix& B, const std::vector<int32_t>& position, la::Index n_kept,
-                                  int32_t subdomain)
+                                  int32_t subdomain, const char* caller)
 {
   std::vector<la::Triplet> triplets;
   for (int j = 0; j < B.outerSize(); ++j)
     for (la::SparseMatrix::InnerIterator it(B, j); it; ++it)
     {
       FETICON_CHECK(position[it.col()] >= 0,
-                    "explicit dual operators: a constraint row of subdomain "
-                        << subdomain << " touches DOF " << it.col() << ", which is not on its boundary");
+                    caller << ": a constraint row of subdomain " << subdomain << " touches DOF " << it.col()
+                           << ", which is not on its boundary");
       triplets.emplace_back(it.row(), position[it.col()], it.value());
     }
   la::SparseMatrix restricted(B.rows(), n_kept);
@@ -196,7 +196,7 @@ void FetiOperators::use_lumped_blocks()
     for (int32_t& p : position) // increasing with the DOF: K's lower triangle stays lower
       if (p == 0)
         p = n_touched++;
-    _B_touched.push_back(restrict_columns(B, position, n_touched, s));
+    _B_touched.push_back(restrict_columns(B, position, n_touched, s, "lumped preconditioner"));
     _K_touched.push_back(la::principal_submatrix(_system.operators(s).K, position, n_touched));
     entries += _K_touched.back().nonZeros();
   }
@@ -215,7 +215,8 @@ void FetiOperators::use_explicit(const decomposition::ExplicitBoundaryOperators&
     std::vector<int32_t> position(B.cols(), -1);
     for (size_t k = 0; k < boundary.size(); ++k)
       position[boundary[k]] = static_cast<int32_t>(k);
-    _B_boundary.push_back(restrict_columns(B, position, static_cast<la::Index>(boundary.size()), s));
+    _B_boundary.push_back(
+        restrict_columns(B, position, static_cast<la::Index>(boundary.size()), s, "explicit dual operators"));
   }
   _explicit = &ops;
   // A product reads each block once; the threads pay from about 25 * min_parallel_work block
