@@ -2,6 +2,9 @@
 
 #include "common/error.hpp"
 
+#include <algorithm>
+#include <bit>
+#include <cmath>
 #include <map>
 
 namespace feticon::contact
@@ -25,10 +28,35 @@ std::vector<Eigen::Vector3d> unit_tangents(const Eigen::Vector3d& n, const std::
   return {t1, n.cross(t1)};
 }
 
-TangentialRows build_tangential_rows(const ContactConstraints& normal, const std::array<bool, 3>& eliminated)
+namespace
+{
+/// The axes e (bit e set) along which supports hold every node of `weight`, with n normal to
+/// them (|n_e| < 1e-3: symmetry planes through the contact). Weights below 1e-3 of the largest
+/// do not count: mortar integration leaves weights of 1e-6 on master nodes beside the plane
+/// (slivers of its clipped segments), which would hide the plane.
+int supported_axes(const std::map<int64_t, double>& weight, const Eigen::Vector3d& n,
+                   const std::vector<int64_t>& supported)
+{
+  double largest = 0;
+  for (const auto& [node, w] : weight)
+    largest = std::max(largest, std::abs(w));
+  int axes = 0;
+  for (int e = 0; e < 3 && !supported.empty(); ++e)
+    if (std::abs(n(e)) < 1e-3 && std::ranges::all_of(weight, [&](const auto& node_weight) {
+          return std::abs(node_weight.second) < 1e-3 * largest ||
+              std::ranges::binary_search(supported, 3 * node_weight.first + e);
+        }))
+      axes |= 1 << e;
+  return axes;
+}
+} // namespace
+
+TangentialRows build_tangential_rows(const ContactConstraints& normal, const std::array<bool, 3>& eliminated,
+                                     const std::vector<int64_t>& supported)
 {
   TangentialRows out;
   std::vector<Eigen::Triplet<double>> triplets;
+  const bool plane_strain = eliminated[0] || eliminated[1] || eliminated[2];
   for (int64_t i = 0; i < normal.n_rows(); ++i)
   {
     const Eigen::Vector3d& n = normal.normal[i];
@@ -36,10 +64,24 @@ TangentialRows build_tangential_rows(const ContactConstraints& normal, const std
     std::map<int64_t, double> weight;
     for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(normal.B, i); it; ++it)
       weight[it.col() / 3] += it.value() * n(it.col() % 3);
-    const std::vector<Eigen::Vector3d> tangents = unit_tangents(n, eliminated);
-    out.n_tangents = static_cast<int>(tangents.size());
-    for (const Eigen::Vector3d& t : tangents)
+    std::vector<Eigen::Vector3d> tangents = unit_tangents(n, eliminated);
+    // Held tangents: t_2 along a supported axis; t_1 too where a second one holds it (the
+    // line where two symmetry planes meet).
+    const int axes = plane_strain ? 0 : supported_axes(weight, n, supported);
+    std::array<bool, 2> held{false, false};
+    if (axes != 0)
     {
+      const int axis = std::countr_zero(static_cast<unsigned>(axes));
+      const Eigen::Vector3d t1 = Eigen::Vector3d::Unit(axis).cross(n).normalized();
+      tangents = {t1, n.cross(t1)};
+      held[1] = true;
+      for (int e = axis + 1; e < 3; ++e)
+        held[0] = held[0] || ((axes >> e & 1) && std::abs(t1(e)) > 1 - 1e-3);
+    }
+    out.n_tangents = static_cast<int>(tangents.size());
+    for (size_t k = 0; k < tangents.size(); ++k)
+    {
+      const Eigen::Vector3d& t = tangents[k];
       const int64_t row = out.n_rows();
       for (const auto& [node, w] : weight)
         for (int c = 0; c < 3; ++c)
@@ -47,10 +89,11 @@ TangentialRows build_tangential_rows(const ContactConstraints& normal, const std
             triplets.emplace_back(row, 3 * node + c, w * t(c));
       out.tangent.push_back(t);
       out.slave_node.push_back(normal.slave_node[i]);
+      out.held.push_back(axes != 0 && held[k]);
     }
   }
   if (normal.n_rows() == 0)
-    out.n_tangents = eliminated[0] || eliminated[1] || eliminated[2] ? 1 : 2;
+    out.n_tangents = plane_strain ? 1 : 2;
   out.B.resize(out.n_rows(), normal.B.cols());
   out.B.setFromTriplets(triplets.begin(), triplets.end());
   return out;

@@ -12,6 +12,13 @@
 /// |e_k x n|, in the model's plane; in 3D two, t_1 = e x n / |e x n| with e the coordinate axis
 /// least aligned with n, and t_2 = n x t_1 (an orthonormal basis of the tangent plane).
 ///
+/// A symmetry plane through the contact (3D): where the slave node and every master node of a
+/// row have their displacement along an axis e held by supports and n is normal to e, t_1 = e x
+/// n / |e x n| and t_2 = n x t_1 = e. The row of t_2 then repeats the supports' rows (B would be
+/// rank-deficient, and the QP's solution along it not unique); it is kept for the layout of two
+/// rows per node and marked `held`: its multiplier is fixed at 0 (friction across the plane is
+/// the supports' reaction) and only t_1 takes friction, |lambda_1| <= g.
+///
 /// The rows' right-hand sides are the caller's: for friction, c_T = -B_T (u - u_0), the slip
 /// of the current outer iteration's start since the last converged load step (u_0), so that
 /// B_T du - c_T is the slip increment of the step.
@@ -30,6 +37,7 @@ struct TangentialRows
   Eigen::SparseMatrix<double, Eigen::RowMajor> B;
   std::vector<Eigen::Vector3d> tangent; ///< unit tangent of each row
   std::vector<int32_t> slave_node;      ///< slave node of each row
+  std::vector<char> held;               ///< the row's tangent is held by supports (file comment)
   int n_tangents = 0;                   ///< 1 in plane strain, 2 in 3D
 
   int64_t n_rows() const { return static_cast<int64_t>(tangent.size()); }
@@ -40,8 +48,10 @@ struct TangentialRows
 /// more than one component is eliminated.
 std::vector<Eigen::Vector3d> unit_tangents(const Eigen::Vector3d& n, const std::array<bool, 3>& eliminated);
 
-/// The tangential rows of `normal` (see file comment) over the same DOFs.
-TangentialRows build_tangential_rows(const ContactConstraints& normal, const std::array<bool, 3>& eliminated);
+/// The tangential rows of `normal` (see file comment) over the same DOFs; `supported`: the
+/// global DOFs (3 node + component) that supports hold, sorted (none if empty).
+TangentialRows build_tangential_rows(const ContactConstraints& normal, const std::array<bool, 3>& eliminated,
+                                     const std::vector<int64_t>& supported = {});
 
 /// Tangential forces on the structure (N, per global DOF): -B_T' lambda_hat_T.
 la::Vector tangential_forces(const TangentialRows& rows, const la::Vector& lambda_hat, la::Index n_dofs);

@@ -8,7 +8,8 @@
 
 namespace feticon::dual
 {
-ConstraintScaling::ConstraintScaling(const FetiOperators& feti, int64_t n_equality) : _feti(feti)
+ConstraintScaling::ConstraintScaling(const FetiOperators& feti, int64_t n_equality, const std::vector<char>& held)
+    : _feti(feti)
 {
   const auto is_contact = [n_equality](int64_t id) { return id >= n_equality; };
   std::vector<int64_t> local_keys;
@@ -37,13 +38,23 @@ ConstraintScaling::ConstraintScaling(const FetiOperators& feti, int64_t n_equali
     return static_cast<la::Index>(std::ranges::lower_bound(_ids, id) - _ids.begin());
   };
 
+  std::vector<int64_t> local_held;
+  for (size_t i = 0; i < held.size(); ++i)
+    if (held[i])
+      local_held.push_back(feti.row_id(static_cast<la::Index>(i)));
+  std::vector<int64_t> held_ids = comm.all_gather(local_held);
+  std::ranges::sort(held_ids);
+  const auto is_held = [&](int64_t id) { return std::ranges::binary_search(held_ids, id); };
+
   std::vector<la::Triplet> triplets;
   triplets.reserve(values.size() + _ids.size());
   for (const size_t k : order)
-    triplets.emplace_back(position(keys[3 * k]), position(keys[3 * k + 1]), values[k]);
-  // Equality-equality entries are not among the gathered ones: B_E B_E' = I.
+    if (!is_held(keys[3 * k]) && !is_held(keys[3 * k + 1]))
+      triplets.emplace_back(position(keys[3 * k]), position(keys[3 * k + 1]), values[k]);
+  // Equality-equality entries are not among the gathered ones: B_E B_E' = I; held rows are
+  // the identity.
   for (const int64_t id : _ids)
-    if (!is_contact(id))
+    if (!is_contact(id) || is_held(id))
       triplets.emplace_back(position(id), position(id), 1.0);
   const auto n = static_cast<la::Index>(_ids.size());
   la::SparseMatrix block(n, n);

@@ -27,7 +27,10 @@ public:
   /// @param n_equality rows with a global id below it are equality rows (B_E B_E' = I).
   ///        If the block is singular (dependent rows), Y falls back to the identity and
   ///        factorized() is false.
-  ConstraintScaling(const FetiOperators& feti, int64_t n_equality);
+  /// @param held owned rows (by dual index) on which Y is the identity, apart from the rest:
+  ///        friction rows that supports hold (FrictionRows::held; fixed at 0 in the QP), which
+  ///        nearly repeat support rows and would make the block nearly singular. Empty: none.
+  ConstraintScaling(const FetiOperators& feti, int64_t n_equality, const std::vector<char>& held = {});
 
   /// Rows of the block C over all ranks (0: Y = I, nothing to scale).
   int64_t block_size() const { return static_cast<int64_t>(_ids.size()); }

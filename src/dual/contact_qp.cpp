@@ -92,6 +92,12 @@ qp::SeparableConstraints constraint_set(const FetiOperators& feti, const std::ve
       else
         second_tangent[feti.row_id(i)] = static_cast<la::Index>(i);
     }
+  // A held row's multiplier is 0; its partner alone takes friction, in the box |lambda| <= g.
+  const auto fix_or_box = [&](la::Index i) {
+    const double g = friction->is_held(i) ? 0.0 : friction->slip_bound(i);
+    set.lower(i) = -g - lambda_tilde(i);
+    set.upper(i) = g - lambda_tilde(i);
+  };
   for (const auto& [id, i] : second_tangent)
   {
     if ((id - n_equality - friction->n_normal) % 2 != 0)
@@ -99,7 +105,9 @@ qp::SeparableConstraints constraint_set(const FetiOperators& feti, const std::ve
     const auto j = second_tangent.find(id + 1);
     FETICON_CHECK(j != second_tangent.end(),
                   "friction: the tangential rows " << id << " and " << id + 1 << " of one node are on different ranks");
-    if (std::isfinite(friction->slip_bound(i))) // +infinity: the pair sticks, free components
+    if (friction->is_held(i) || friction->is_held(j->second))
+      fix_or_box(i), fix_or_box(j->second);
+    else if (std::isfinite(friction->slip_bound(i))) // +infinity: the pair sticks, free components
       set.discs.push_back({i, j->second, friction->slip_bound(i), -lambda_tilde(i), -lambda_tilde(j->second)});
   }
   return set;
@@ -136,7 +144,8 @@ ContactQp::ContactQp(const FetiOperators& feti, const la::Vector& c, const la::V
   _b = _projector.apply_P(_scale * (d - feti.apply_F(_lambda_tilde)));
   if (options.preconditioner != DualPreconditioner::none)
     _timed_preconditioner.emplace(_preconditioner.emplace(feti, _projector, options, _norm.value, n_equality,
-                                                          options.method == DualMethod::smalbe ? 0.0 : options.rho));
+                                                          options.method == DualMethod::smalbe ? 0.0 : options.rho,
+                                                          held_rows()));
 }
 
 la::Vector ContactQp::mu(const la::Vector& lambda) const

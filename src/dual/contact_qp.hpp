@@ -50,6 +50,11 @@ struct FrictionRows
   /// the rows n_equality + n_normal + 2j and + 2j + 1 of node j, on one rank, in the disc
   /// ||(lambda_i, lambda_i+1)|| <= g_i).
   int n_tangents = 1;
+  /// Per owned row: a tangential row whose tangent supports hold (contact::TangentialRows::
+  /// held): its multiplier is fixed at 0 and the other row of its node has the box
+  /// |lambda_i| <= g_i. Empty: none.
+  std::vector<char> held;
+  bool is_held(la::Index i) const { return !held.empty() && held[static_cast<size_t>(i)]; }
 };
 
 /// The kinds of `feti`'s owned rows: ids below n_equality are equalities; without friction the
@@ -87,6 +92,14 @@ public:
   const std::vector<RowKind>& kinds() const { return _kinds; }
   /// g_i of owned tangential row i (0 without friction).
   double slip_bound(la::Index i) const { return _friction ? _friction->slip_bound(i) : 0.0; }
+  /// Whether owned row i is a tangential row that supports hold (FrictionRows::held).
+  bool held(la::Index i) const { return _friction && _friction->is_held(i); }
+  /// Per owned row, FrictionRows::held (empty: none).
+  const std::vector<char>& held_rows() const
+  {
+    static const std::vector<char> none;
+    return _friction ? _friction->held : none;
+  }
 
   /// mu of lambda, projected onto Ker G (a warm start of a changed G); 0 if lambda is empty.
   la::Vector mu(const la::Vector& lambda) const;

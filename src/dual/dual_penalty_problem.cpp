@@ -43,12 +43,12 @@ private:
 /// entries from a hash of the row id, so the estimate is the same on any number of ranks.
 void measure_solution_face(const FetiOperators& feti, const CoarseProjector& projector, const FOperator& F,
                            const DualPenaltyOptions& options, double s, int64_t n_equality, double rho,
-                           const std::vector<char>& free, qp::QpCounters& out)
+                           const std::vector<char>& free, const std::vector<char>& held, qp::QpCounters& out)
 {
   const ProjectedOperator H(F, projector, rho);
   std::optional<DualPreconditionerOperator> M;
   if (options.preconditioner != DualPreconditioner::none)
-    M.emplace(feti, projector, options, s, n_equality, rho);
+    M.emplace(feti, projector, options, s, n_equality, rho, held);
   const FaceRestriction face(free);
   la::Vector r = la::Vector::Zero(feti.n_dual());
   for (la::Index i = 0; i < r.size(); ++i)
@@ -138,8 +138,8 @@ std::vector<char> active_rows(const FetiOperators& feti, const ContactQp& qp, co
       active[i] = lambda(i) > 1e-12 * lambda_max;
       local_active += active[i];
     }
-    else if (kinds[i] == RowKind::tangential)
-      active[i] = std::abs(lambda(i)) < qp.slip_bound(i) - 1e-12 * lambda_max;
+    else if (kinds[i] == RowKind::tangential) // a held row's direction is the supports'
+      active[i] = !qp.held(i) && std::abs(lambda(i)) < qp.slip_bound(i) - 1e-12 * lambda_max;
   for (const qp::Disc& disc : qp.constraints().discs) // 3D: the pair's norm
     active[disc.i] = active[disc.j] = std::hypot(lambda(disc.i), lambda(disc.j)) < disc.radius - 1e-12 * lambda_max;
   active_contacts = feti.comm().sum(local_active);
@@ -151,7 +151,7 @@ bool sliding_only(const FetiOperators& feti, const ContactQp& qp, const std::vec
 {
   int64_t tangential = 0, sticking = 0;
   for (size_t i = 0; i < active.size(); ++i)
-    if (qp.kinds()[i] == RowKind::tangential)
+    if (qp.kinds()[i] == RowKind::tangential && !qp.held(static_cast<la::Index>(i)))
     {
       ++tangential;
       sticking += active[i];
@@ -242,7 +242,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, 
       : unheld_body_message(feti, qp.rhs(), qp.load_norm(), out.active_contacts, options.rtol);
   if (options.spectrum_steps > 0)
     measure_solution_face(feti, qp.projector(), qp.scaled_F(), options, qp.pfp_norm(), n_equality,
-                          smalbe_method ? smalbe_report.final_rho : options.rho, active, out.report);
+                          smalbe_method ? smalbe_report.final_rho : options.rho, active, qp.held_rows(), out.report);
   PrimalSolution primal = qp.recover(lambda, active, unheld);
   out.u = std::move(primal.u);
   out.alpha = std::move(primal.alpha);

@@ -180,6 +180,8 @@ OctantBallSize octant_ball_size(const OctantBallParameters& parameters)
   const int64_t m = n + 1, surface = m * m * m - int64_t(n) * n * n;
   size.nodes = m * m * m + size.layers * surface;
   size.cells = int64_t(n) * n * n + size.layers * 3 * int64_t(n) * n;
+  // A flat face: the core's square, and per layer the two core edges' rays (2 n + 1 nodes).
+  size.plane_nodes = m * m + size.layers * (2 * int64_t(n) + 1);
   return size;
 }
 
@@ -192,6 +194,47 @@ OctantBall octant_ball(const OctantBallParameters& parameters)
   const std::vector<uint8_t> flags = place_nodes(parameters, size, numbering, out);
   add_cells(parameters.core_cells, size.layers, numbering, out);
   add_boundary_faces(flags, out);
+  return out;
+}
+
+OctantBall mirrored_across_x(const OctantBall& ball)
+{
+  const auto n = static_cast<int32_t>(ball.nodes.rows());
+  std::vector<char> on_plane(n, 0);
+  for (const Face& f : ball.symmetry_x)
+    for (int32_t node : f)
+      on_plane[node] = 1;
+  // image[i]: the mirror image of node i (itself on the plane).
+  std::vector<int32_t> image(n);
+  int32_t next = n;
+  for (int32_t i = 0; i < n; ++i)
+    image[i] = on_plane[i] ? i : next++;
+  OctantBall out;
+  out.layers = ball.layers;
+  out.nodes.resize(next, 3);
+  out.nodes.topRows(n) = ball.nodes;
+  for (int32_t i = 0; i < n; ++i)
+    if (!on_plane[i])
+      out.nodes.row(image[i]) = Eigen::RowVector3d(-ball.nodes(i, 0), ball.nodes(i, 1), ball.nodes(i, 2));
+  // A reflection reverses orientation: a cell's image swaps its bottom and top quads, a face's
+  // image runs its corners the other way round.
+  out.cells = ball.cells;
+  for (const Hex8Nodes& c : ball.cells)
+  {
+    Hex8Nodes m;
+    for (int k = 0; k < 8; ++k)
+      m[k] = image[c[(k + 4) % 8]];
+    out.cells.push_back(m);
+  }
+  auto with_images = [&](const std::vector<Face>& faces) {
+    std::vector<Face> all = faces;
+    for (const Face& f : faces)
+      all.push_back(Face{image[f[0]], image[f[3]], image[f[2]], image[f[1]]});
+    return all;
+  };
+  out.flat = with_images(ball.flat);
+  out.outer = with_images(ball.outer);
+  out.symmetry_y = with_images(ball.symmetry_y);
   return out;
 }
 } // namespace feticon::mesh

@@ -51,6 +51,7 @@ struct OctantBallSize
   int blend_layers = 0; ///< the first layers, which blend the core's faces into the sphere
   int64_t nodes = 0;
   int64_t cells = 0;
+  int64_t plane_nodes = 0; ///< nodes on each of the planes x = 0 and y = 0
 };
 
 /// @throws feticon::Error when a parameter is out of range (the message names it).
@@ -58,4 +59,10 @@ OctantBallSize octant_ball_size(const OctantBallParameters& parameters);
 
 /// @throws feticon::Error when a parameter is out of range (the message names it).
 OctantBall octant_ball(const OctantBallParameters& parameters);
+
+/// The ball's half {y, d >= 0}: `ball` and its mirror image across x = 0, sharing the nodes of
+/// that plane (numbered first as in `ball`, the images after them). Cells and faces stay
+/// positive and outward; `symmetry_x` is empty (the plane is inside), the other face lists
+/// gain their images. For a load that breaks the symmetry x -> -x (hertz3d's tangential load).
+OctantBall mirrored_across_x(const OctantBall& ball);
 } // namespace feticon::mesh

@@ -620,7 +620,8 @@ contact::TangentialRows FetiContactSolve::friction_rows(const contact::ContactCo
 {
   if (_settings.friction.model == FrictionModel::none)
     return {};
-  contact::TangentialRows tangential = contact::build_tangential_rows(contact_rows, _problem.eliminated);
+  contact::TangentialRows tangential =
+      contact::build_tangential_rows(contact_rows, _problem.eliminated, _dirichlet.dofs);
   // c_T = -B_T (u - u_0): B_T du - c_T is then the slip since the last converged load step.
   const la::Vector c_T = -(tangential.B * (u_global - _u_step_start));
   rows.append(decomposition::rows_from_global(*_decomp, tangential.B, c_T), _n_equality + contact_rows.n_rows());
@@ -643,12 +644,14 @@ std::optional<dual::FrictionRows> FetiContactSolve::slip_bounds(const dual::Feti
   const bool first_qp = _multipliers.contact().empty();
   const std::set<int32_t> touching = _multipliers.active_slave_nodes(_force_floor);
   const int64_t n_contact = contact_rows.n_rows();
-  dual::FrictionRows out{n_contact, la::Vector::Zero(feti.n_dual()), tangential.n_tangents};
+  dual::FrictionRows out{n_contact, la::Vector::Zero(feti.n_dual()), tangential.n_tangents,
+                         std::vector<char>(feti.n_dual(), 0)};
   for (la::Index i = 0; i < feti.n_dual(); ++i)
   {
     const int64_t j = feti.row_id(i) - _n_equality - n_contact;
     if (j < 0)
       continue;
+    out.held[i] = tangential.held[j];
     const int64_t row = j / tangential.n_tangents;
     if (friction.model == FrictionModel::tresca)
       out.slip_bound(i) = first_qp || touching.count(contact_rows.slave_node[row])

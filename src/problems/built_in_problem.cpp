@@ -1,5 +1,6 @@
 #include "problems/built_in_problem.hpp"
 
+#include "common/error.hpp"
 #include "problems/cantilever_obstacle.hpp"
 #include "problems/hertz.hpp"
 #include "problems/hertz3d.hpp"
@@ -56,6 +57,15 @@ std::unique_ptr<BuiltInProblem> make_built_in_problem(const io::Settings& settin
     if (name == e.name)
       return e.make(settings);
   return nullptr;
+}
+
+double cattaneo_mindlin_coefficient(const io::Settings& s, const std::string& key, double tangential_load,
+                                    const std::string& unit, const std::string& body)
+{
+  FETICON_CHECK(tangential_load == 0 || s.text("contact.friction.model") != "none",
+                "" << key << " = " << tangential_load << " " << unit << " needs friction to hold the " << body
+                   << ": set contact.friction.model (coulomb with contact.friction.coefficient, or tresca)");
+  return s.text("contact.friction.model") == "coulomb" ? s.number("contact.friction.coefficient") : 0.0;
 }
 
 fem::Material material_setting(const io::Settings& s)

@@ -41,6 +41,8 @@ struct SurfaceSample
   double shear_x = 0;                    ///< friction traction along x (Pa)
   double friction_force_x = 0;           ///< friction force along x (N)
   bool slipping = false;                 ///< the friction force is at its bound
+  double shear_y = 0;                    ///< friction traction along y (Pa)
+  double area = 0;                       ///< the sample's tributary area (m^2)
 };
 
 /// A completed run's figures against theory.
@@ -83,6 +85,11 @@ std::unique_ptr<BuiltInProblem> make_built_in_problem(const io::Settings& settin
 
 /// `material.young` and `material.poisson`.
 fem::Material material_setting(const io::Settings& settings);
+/// Coulomb's mu for a Cattaneo-Mindlin comparison (0 unless contact.friction.model = coulomb);
+/// throws feticon::Error if `tangential_load` (the setting `key`, in `unit`) is positive and
+/// the model has no friction to hold `body`.
+double cattaneo_mindlin_coefficient(const io::Settings& settings, const std::string& key, double tangential_load,
+                                    const std::string& unit, const std::string& body);
 /// The second body's material if `prefix`.block_young or `prefix`.block_poisson is given (the
 /// other one from `material`).
 std::optional<fem::Material> block_material_setting(const io::Settings& settings, const std::string& prefix,

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <map>
 
 namespace feticon::problems
 {
@@ -22,12 +24,13 @@ double CattaneoMindlin::shear(double x) const
 }
 
 CattaneoMindlin cattaneo_mindlin(double coefficient, double peak_pressure, double half_width, double line_load,
-                                 double tangential_load)
+                                 double tangential_load, HertzContact contact)
 {
   FETICON_CHECK(coefficient > 0 && line_load > 0 && tangential_load >= 0,
                 "Cattaneo-Mindlin: need mu > 0, P > 0 and Q >= 0");
   const double ratio = std::min(tangential_load / (coefficient * line_load), 1.0);
-  return {coefficient, peak_pressure, half_width, half_width * std::sqrt(1 - ratio)};
+  const double c = contact == HertzContact::cylinder ? std::sqrt(1 - ratio) : std::cbrt(1 - ratio);
+  return {coefficient, peak_pressure, half_width, half_width * c};
 }
 
 namespace
@@ -75,6 +78,42 @@ double mirrored_shear(const std::vector<SurfaceSample>& samples, const std::vect
     return 0;
   return above > below ? q_below + (q_above - q_below) * (-at - below) / (above - below) : q_below;
 }
+
+/// The shear's squared errors over the samples within [-a, a] (or r <= a): against the theory,
+/// of the part symmetric across x = 0 against it, and the antisymmetric part.
+struct ShearErrors
+{
+  double sum_sq = 0, symmetric_sq = 0, antisymmetric_sq = 0;
+  int within = 0;
+  void add(double shear, double mirrored, double theory)
+  {
+    sum_sq += std::pow(shear - theory, 2);
+    symmetric_sq += std::pow(0.5 * (shear + mirrored) - theory, 2);
+    antisymmetric_sq += std::pow(0.5 * (shear - mirrored), 2);
+    ++within;
+  }
+  double rms(double sum, const CattaneoMindlin& theory) const
+  {
+    return within > 0 ? std::sqrt(sum / within) / (theory.coefficient * theory.peak_pressure) : 0.0;
+  }
+};
+
+/// The `friction` block's keys both geometries share.
+nlohmann::ordered_json figures(const CattaneoMindlin& theory, double force, double applied, double stick_computed,
+                               const ShearErrors& e, int sliding, int sticking)
+{
+  return {{"coefficient", theory.coefficient},
+          {"tangential_force", force},
+          {"applied_tangential_force", applied},
+          {"tangential_force_error", std::abs(force + applied) / applied},
+          {"stick_half_width_computed", stick_computed},
+          {"stick_half_width_analytic", theory.stick_half_width},
+          {"shear_rms_error_over_mu_p0", e.rms(e.sum_sq, theory)},
+          {"shear_symmetric_rms_error_over_mu_p0", e.rms(e.symmetric_sq, theory)},
+          {"shear_antisymmetric_rms_over_mu_p0", e.rms(e.antisymmetric_sq, theory)},
+          {"slipping_nodes", sliding},
+          {"sticking_nodes", sticking}};
+}
 } // namespace
 
 nlohmann::ordered_json cattaneo_mindlin_figures(const CattaneoMindlin& theory,
@@ -85,8 +124,9 @@ nlohmann::ordered_json cattaneo_mindlin_figures(const CattaneoMindlin& theory,
   for (const SurfaceSample& s : samples)
     peak = std::max(peak, s.pressure);
   std::vector<char> loaded(samples.size());
-  double force = 0, sum_sq = 0, symmetric_sq = 0, antisymmetric_sq = 0;
-  int within = 0, sliding = 0, sticking = 0;
+  double force = 0;
+  ShearErrors errors;
+  int sliding = 0, sticking = 0;
   for (size_t i = 0; i < samples.size(); ++i)
   {
     const SurfaceSample& s = samples[i];
@@ -95,26 +135,61 @@ nlohmann::ordered_json cattaneo_mindlin_figures(const CattaneoMindlin& theory,
     if (loaded[i])
       (s.slipping ? sliding : sticking) += 1;
     if (std::abs(x[i]) <= theory.half_width)
-    {
-      const double mirrored = mirrored_shear(samples, x, x[i]);
-      sum_sq += std::pow(s.shear_x - theory.shear(x[i]), 2);
-      symmetric_sq += std::pow(0.5 * (s.shear_x + mirrored) - theory.shear(x[i]), 2);
-      antisymmetric_sq += std::pow(0.5 * (s.shear_x - mirrored), 2);
-      ++within;
-    }
+      errors.add(s.shear_x, mirrored_shear(samples, x, x[i]), theory.shear(x[i]));
   }
-  const double mu_p0 = theory.coefficient * theory.peak_pressure;
-  auto rms = [&](double sum) { return within > 0 ? std::sqrt(sum / within) / mu_p0 : 0.0; };
-  return {{"coefficient", theory.coefficient},
-          {"tangential_force", force},
-          {"applied_tangential_force", applied_tangential_force},
-          {"tangential_force_error", std::abs(force + applied_tangential_force) / applied_tangential_force},
-          {"stick_half_width_computed", computed_stick_half_width(samples, x, loaded)},
-          {"stick_half_width_analytic", theory.stick_half_width},
-          {"shear_rms_error_over_mu_p0", rms(sum_sq)},
-          {"shear_symmetric_rms_error_over_mu_p0", rms(symmetric_sq)},
-          {"shear_antisymmetric_rms_over_mu_p0", rms(antisymmetric_sq)},
-          {"slipping_nodes", sliding},
-          {"sticking_nodes", sticking}};
+  return figures(theory, force, applied_tangential_force, computed_stick_half_width(samples, x, loaded), errors,
+                 sliding, sticking);
+}
+
+nlohmann::ordered_json cattaneo_mindlin_sphere_figures(const CattaneoMindlin& theory,
+                                                       const std::vector<SurfaceSample>& samples, bool deformed,
+                                                       double applied_tangential_force)
+{
+  double peak = 0;
+  for (const SurfaceSample& s : samples)
+    peak = std::max(peak, s.pressure);
+  // The mirror node of (x, y) is (-x, y) exactly (mesh::mirrored_across_x).
+  const auto key = [](double x, double y) { return std::make_pair(std::llround(x * 1e12), std::llround(y * 1e12)); };
+  std::map<std::pair<long long, long long>, size_t> by_position;
+  for (size_t i = 0; i < samples.size(); ++i)
+    by_position[key(samples[i].x, samples[i].y)] = i;
+  double force = 0, stick_area = 0, across_sq = 0;
+  ShearErrors errors;
+  int sliding = 0, sticking = 0;
+  for (const SurfaceSample& s : samples)
+  {
+    force += s.friction_force_x;
+    if (s.pressure > loaded_fraction * peak)
+    {
+      (s.slipping ? sliding : sticking) += 1;
+      stick_area += s.slipping ? 0.0 : s.area;
+    }
+    const double r = deformed ? std::hypot(s.deformed_x, s.deformed_y) : std::hypot(s.x, s.y);
+    if (r > theory.half_width)
+      continue;
+    const auto mirror = by_position.find(key(-s.x, s.y));
+    FETICON_CHECK(mirror != by_position.end(),
+                  "Cattaneo-Mindlin: the slave node at (" << s.x << ", " << s.y
+                                                          << ") m has no mirror node across x = 0");
+    errors.add(s.shear_x, samples[mirror->second].shear_x, theory.shear(r));
+    across_sq += s.shear_y * s.shear_y;
+  }
+  nlohmann::ordered_json out =
+      figures(theory, force, applied_tangential_force, std::sqrt(2 * stick_area / M_PI), errors, sliding, sticking);
+  out["shear_y_rms_over_mu_p0"] = errors.rms(across_sq, theory);
+  return out;
+}
+
+std::string cattaneo_mindlin_line(const nlohmann::ordered_json& f, const CattaneoMindlin& theory, double applied,
+                                  const std::string& zone)
+{
+  const double c = f["stick_half_width_computed"].get<double>();
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "\nCattaneo-Mindlin: stick %s c %.3f mm (analytic %.3f mm, %+.2f%%), shear RMS error %.2f%% of mu p0, "
+                "friction force %.6g N (applied %.6g N)",
+                zone.c_str(), 1e3 * c, 1e3 * theory.stick_half_width, 100 * (c / theory.stick_half_width - 1),
+                100 * f["shear_rms_error_over_mu_p0"].get<double>(), f["tangential_force"].get<double>(), applied);
+  return line;
 }
 } // namespace feticon::problems

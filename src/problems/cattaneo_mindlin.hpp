@@ -7,9 +7,16 @@
 /// (for similar materials the pressure stays Hertz's); Q >= mu P slides everywhere, q = mu p.
 /// The friction traction on the cylinder opposes Q: -q(x) along x. The comparison with a run
 /// fills summary.json's `friction` block.
+///
+/// The sphere (Mindlin 1949; Johnson section 7.2, eqs. 7.49-7.51): pressed by P (N), pulled
+/// by Q (N), it sticks on r < c = a (1 - Q / (mu P))^(1/3), with the same q(r) as above in the
+/// distance r from the axis and the traction along x. (In the slip annulus the theory takes the
+/// slip parallel to x, which Johnson notes is approximate for nu > 0; in the stick zone its
+/// displacement is exactly uniform.)
 
 #include "problems/built_in_problem.hpp"
 
+#include <string>
 #include <vector>
 
 namespace feticon::problems
@@ -24,9 +31,16 @@ struct CattaneoMindlin
   double shear(double x) const;
 };
 
-/// @param line_load, tangential_load  P and Q (N/m); Q >= 0
+enum class HertzContact
+{
+  cylinder, ///< plane strain: c = a sqrt(1 - Q / (mu P))
+  sphere,   ///< c = a (1 - Q / (mu P))^(1/3)
+};
+
+/// @param line_load, tangential_load  P and Q (N/m for the cylinder, N for the sphere); Q >= 0
+/// @param half_width  a: the half-width (cylinder) or contact radius (sphere)
 CattaneoMindlin cattaneo_mindlin(double coefficient, double peak_pressure, double half_width, double line_load,
-                                 double tangential_load);
+                                 double tangential_load, HertzContact contact = HertzContact::cylinder);
 
 /// The figures of the samples (`x` in the frame of the comparison, ascending or not) against
 /// the theory: `coefficient`, `tangential_force` (N, the friction forces on the cylinder along
@@ -41,4 +55,20 @@ CattaneoMindlin cattaneo_mindlin(double coefficient, double peak_pressure, doubl
 nlohmann::ordered_json cattaneo_mindlin_figures(const CattaneoMindlin& theory,
                                                 const std::vector<SurfaceSample>& samples, const std::vector<double>& x,
                                                 double applied_tangential_force);
+
+/// The sphere's figures (half model y >= 0, mirror symmetric across x = 0): the same keys as
+/// cattaneo_mindlin_figures, with the samples at their distance from the axis and
+///  - the stick radius from the area of the loaded sticking samples, c = sqrt(2 A_stick / pi)
+///    (a half disc; the edge of the zone is a circle, so its cells' errors average out where
+///    the outermost sticking node's radius would be one cell off);
+///  - the RMS over the samples with r <= a of shear_x - theory and of shear_y (the theory's 0),
+///    and the part of shear_x symmetric across x = 0 (the sample at (-x, y) is the mirror node).
+/// `deformed`: the samples' deformed coordinates for r.
+nlohmann::ordered_json cattaneo_mindlin_sphere_figures(const CattaneoMindlin& theory,
+                                                       const std::vector<SurfaceSample>& samples, bool deformed,
+                                                       double applied_tangential_force);
+
+/// The line of the end-of-run table for a `friction` block `f`; `zone`: "half-width" or "radius".
+std::string cattaneo_mindlin_line(const nlohmann::ordered_json& f, const CattaneoMindlin& theory, double applied,
+                                  const std::string& zone);
 } // namespace feticon::problems

@@ -41,7 +41,8 @@ void append_body(mesh::Mesh& mesh, const mesh::OctantBall& ball, const std::stri
   };
   add_faces(ball.flat, flat_set);
   add_faces(ball.outer, outer_set);
-  add_faces(ball.symmetry_x, "symmetry_x");
+  if (!ball.symmetry_x.empty())
+    add_faces(ball.symmetry_x, "symmetry_x");
   add_faces(ball.symmetry_y, "symmetry_y");
 }
 /// Tributary areas of the sphere's loaded face: the consistent nodal load of a unit traction
@@ -51,6 +52,29 @@ la::Vector load_face_weights(const mesh::Mesh& mesh)
   la::Vector weights = la::Vector::Zero(3 * static_cast<la::Index>(mesh.n_nodes()));
   fem::add_face_traction(mesh, mesh.face_set("sphere_load"), Eigen::Vector3d(0, 0, 1), weights);
   return weights;
+}
+
+/// Cattaneo and Mindlin's tangential load acts in the contact plane; ours, the traction
+/// `traction_x` on the sphere's far face (consistent nodal forces traction_x w_i, w_i the
+/// face's `weights`), has the moment sum_i z_i traction_x w_i about the contact point, which
+/// the contact would take as a tilted pressure. Nodal forces f_z = k x_i w_i (a normal traction
+/// k x) cancel it exactly: k sum_i x_i^2 w_i equals that moment, and their resultant
+/// k sum_i x_i w_i vanishes on the face, symmetric across x = 0 (the 2D model's
+/// moment_free_couple, hertz.cpp).
+std::vector<fem::NodalForce> moment_free_couple(const mesh::Mesh& mesh, const la::Vector& weights, double traction_x)
+{
+  double moment = 0, second_moment = 0;
+  for (int32_t n = 0; n < mesh.n_nodes(); ++n)
+  {
+    moment += mesh.nodes(n, 2) * traction_x * weights(3 * n + 2);
+    second_moment += mesh.nodes(n, 0) * mesh.nodes(n, 0) * weights(3 * n + 2);
+  }
+  const double k = moment / second_moment;
+  std::vector<fem::NodalForce> out;
+  for (int32_t n = 0; n < mesh.n_nodes(); ++n)
+    if (weights(3 * n + 2) != 0)
+      out.push_back({n, 2, k * mesh.nodes(n, 0) * weights(3 * n + 2)});
+  return out;
 }
 } // namespace
 
@@ -114,7 +138,11 @@ std::pair<mesh::OctantBallParameters, mesh::OctantBallParameters> octant_balls(c
 int64_t hertz3d_node_count(const Hertz3dParameters& parameters)
 {
   const auto [sphere, block] = octant_balls(parameters);
-  const int64_t corners = mesh::octant_ball_size(sphere).nodes + mesh::octant_ball_size(block).nodes;
+  auto ball_nodes = [&](const mesh::OctantBallParameters& ball) {
+    const mesh::OctantBallSize size = mesh::octant_ball_size(ball);
+    return parameters.half_model() ? 2 * size.nodes - size.plane_nodes : size.nodes;
+  };
+  const int64_t corners = ball_nodes(sphere) + ball_nodes(block);
   // Edges per node of a hex mesh: 3; with Kuhn's tetrahedra 7 (face and cell diagonals).
   return parameters.cell == mesh::CellKind::hex20 ? 4 * corners
       : parameters.cell == mesh::CellKind::tet10  ? 8 * corners
@@ -124,9 +152,14 @@ int64_t hertz3d_node_count(const Hertz3dParameters& parameters)
 fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
 {
   const auto [sphere_parameters, block_parameters] = octant_balls(parameters);
+  FETICON_CHECK(std::isfinite(parameters.tangential_load) && parameters.tangential_load >= 0,
+                "hertz3d: tangential_load = " << parameters.tangential_load << " N must be >= 0");
   const double R = parameters.radius;
-  const mesh::OctantBall sphere = mesh::octant_ball(sphere_parameters);
-  const mesh::OctantBall block = mesh::octant_ball(block_parameters);
+  const auto ball = [&](const mesh::OctantBallParameters& b) {
+    return parameters.half_model() ? mesh::mirrored_across_x(mesh::octant_ball(b)) : mesh::octant_ball(b);
+  };
+  const mesh::OctantBall sphere = ball(sphere_parameters);
+  const mesh::OctantBall block = ball(block_parameters);
 
   fem::Problem p;
   p.name = "hertz3d";
@@ -161,17 +194,26 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
 
   p.materials = {parameters.material, parameters.block()}; // bodies "sphere", "block"
   p.dirichlet = {
-      {"symmetry_x", {0.0, std::nullopt, std::nullopt}},
       {"symmetry_y", {std::nullopt, 0.0, std::nullopt}},
       {"block_support", {0.0, 0.0, 0.0}},
   };
-  // A downward traction on the sphere's far face with resultant F / 4: its area from the
-  // consistent load of a unit traction, so the resultant is exact for the discrete face.
+  if (!parameters.half_model())
+    p.dirichlet.insert(p.dirichlet.begin(), {"symmetry_x", {0.0, std::nullopt, std::nullopt}});
+  // A downward traction on the sphere's far face with resultant F / 4 (F / 2): its area from
+  // the consistent load of a unit traction, so the resultant is exact for the discrete face.
   const la::Vector weights = load_face_weights(p.mesh);
   double area = 0;
   for (int32_t n = 0; n < p.mesh.n_nodes(); ++n)
     area += weights(3 * n + 2);
-  p.tractions = {{"sphere_load", Eigen::Vector3d(0, 0, -0.25 * parameters.load / area)}};
+  const double normal = parameters.modelled() * parameters.load / area;
+  p.tractions = {{"sphere_load", Eigen::Vector3d(0, 0, -normal)}};
+  if (parameters.half_model()) // a second stage: the normal load held, the tangential one added
+    p.later_stages.push_back(
+        {{{"sphere_load", Eigen::Vector3d(parameters.modelled() * parameters.tangential_load / area, 0, -normal)}},
+         {},
+         moment_free_couple(p.mesh, weights, parameters.modelled() * parameters.tangential_load / area),
+         p.dirichlet,
+         1});
   p.contacts = {{"sphere_contact", "block_contact"}};
   p.validate();
   return p;

@@ -1,6 +1,8 @@
 #pragma once
 /// @file 3D Hertz (issue 20): an elastic sphere of radius R pressed with the force F onto an
-/// elastic half-space, quarter model (symmetry planes x = 0 and y = 0).
+/// elastic half-space, quarter model (symmetry planes x = 0 and y = 0); with a tangential load
+/// along x (Cattaneo-Mindlin, after the normal load in a second load stage) the half model
+/// y >= 0 (the octant balls mirrored across x = 0).
 /// Analytic reference: Hertz's point contact (Johnson 1985, Contact Mechanics, section 4.2):
 /// 1/E* = (1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2 (frictionless: dissimilar materials enter only
 /// through E*), a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi a^2),
@@ -11,8 +13,10 @@
 ///    as an octant ball (mesh/octant_ball.hpp) in (x, y, d) mapped by
 ///    z = d + (R - sqrt(R^2 - x^2 - y^2)) (1 - d / cap_radius), which lays the ball's flat face
 ///    exactly on the sphere. Its far face "sphere_load" carries a
-///    uniform downward traction whose resultant is F / 4; the sphere is held vertically only by
-///    contact.
+///    uniform downward traction whose resultant is F / 4 (F / 2 in the half model); the sphere
+///    is held vertically only by contact. The tangential load Q (half model: Q / 2) is a uniform
+///    traction along x on the same face, with a normal traction k x that cancels its moment
+///    about the contact point (as hertz.cpp's moment_free_couple in 2D).
 ///  - body 1 "block": the half-space truncated to the octant ball of radius block_radius
 ///    below z = 0 (z = -d), fixed on its curved face "block_support".
 /// Both meshes are graded from h = element_size / refinement (sphere) and master_ratio h
@@ -37,6 +41,8 @@ struct Hertz3dParameters
 {
   double radius = 0.05;                        ///< R, sphere radius (m)
   double load = 2.0e4;                         ///< F on the whole sphere (N); the quarter model carries F / 4
+  double tangential_load = 0;                  ///< Q along +x on the whole sphere (N), after F; > 0: half model
+  double friction_coefficient = 0;             ///< Coulomb's mu (contact.friction), for Cattaneo-Mindlin; 0: none
   fem::Material material{2.0e11, 0.3};         ///< the sphere's, and the block's if not given
   std::optional<fem::Material> block_material; ///< the block's if it differs
   double element_size = 2.5e-4;                ///< slave cell size in the contact core at refinement 1 (m)
@@ -49,6 +55,9 @@ struct Hertz3dParameters
   /// quadratic cells' edge nodes on the sphere where the edge lies on it.
   mesh::CellKind cell = mesh::CellKind::hex8;
   fem::Material block() const { return block_material.value_or(material); }
+  bool half_model() const { return tangential_load > 0; }
+  /// The fraction of the sphere modelled: 1/4 or 1/2.
+  double modelled() const { return half_model() ? 0.5 : 0.25; }
 };
 
 struct Hertz3dAnalytic

@@ -1,6 +1,8 @@
 /// The 3D Hertz problem (a sphere on a half-space) as a built-in problem: its `hertz3d.*`
 /// keys, and its comparison with Hertz's p(r) and approach.
 
+#include "common/error.hpp"
+#include "problems/cattaneo_mindlin.hpp"
 #include "problems/hertz3d.hpp"
 #include "problems/hertz_figures.hpp"
 
@@ -24,7 +26,7 @@ public:
   {
     const auto reference = compare_with_hertz3d(_parameters, pressure_profile(samples, true, false));
     const auto h = large ? compare_with_hertz3d(_parameters, pressure_profile(samples, true, true)) : reference;
-    TheoryComparison out = hertz_theory_comparison(h, reference, large, 0.25 * _parameters.load);
+    TheoryComparison out = hertz_theory_comparison(h, reference, large, _parameters.modelled() * _parameters.load);
     out.figures["rms_nodes"] = h.nodes_in_rms;
     out.figures["approach_analytic"] = h.approach_analytic;
     out.figures["approach_computed"] = hertz3d_approach(problem, u);
@@ -32,10 +34,26 @@ public:
     const Hertz3dAnalytic analytic = hertz3d_analytic(_parameters);
     for (const ProfilePoint& p : pressure_profile(samples, true, large))
       out.analytic.push_back(analytic.pressure(p.r));
+    if (_parameters.tangential_load > 0 && _parameters.friction_coefficient > 0)
+      add_cattaneo_mindlin(h, samples, large, out);
     return out;
   }
 
 private:
+  /// The `friction` block against Mindlin's sphere, its line and the analytic shear column.
+  void add_cattaneo_mindlin(const Hertz3dComparison& h, const std::vector<SurfaceSample>& samples, bool large,
+                            TheoryComparison& out) const
+  {
+    const CattaneoMindlin theory =
+        cattaneo_mindlin(_parameters.friction_coefficient, h.p0_analytic, h.a_analytic, _parameters.load,
+                         _parameters.tangential_load, HertzContact::sphere);
+    for (const ProfilePoint& p : pressure_profile(samples, true, large))
+      out.analytic_shear.push_back(theory.shear(p.r));
+    const double applied = _parameters.modelled() * _parameters.tangential_load;
+    out.figures["friction"] = cattaneo_mindlin_sphere_figures(theory, samples, large, applied);
+    out.summary_line += cattaneo_mindlin_line(out.figures["friction"], theory, applied, "radius");
+  }
+
   Hertz3dParameters _parameters;
 };
 } // namespace
@@ -47,7 +65,10 @@ std::vector<io::SettingSpec> hertz3d_setting_specs()
   // clang-format off
   return {
       {"hertz3d.radius", "0.05", "sphere radius R (m)", Type::number, {}, 0, inf, true},
-      {"hertz3d.load", "2e4", "force F on the whole sphere (N); the quarter model carries F/4", Type::number, {}, 0, inf, true},
+      {"hertz3d.load", "2e4", "force F on the whole sphere (N); the quarter model carries F/4, the half model F/2", Type::number, {}, 0, inf, true},
+      {"hertz3d.tangential_load", "0", "tangential force along +x on the whole sphere (N), applied after the normal "
+       "load in a second load stage (needs contact.friction; the half model y >= 0 is meshed: the load breaks "
+       "the symmetry x -> -x)", Type::number, {}, 0, inf, false},
       {"hertz3d.refinement", "1", "divides hertz3d.element_size", Type::number, {}, 0.05, 64, false},
       {"hertz3d.element_size", "0.00025", "sphere cell size in the contact core at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
       {"hertz3d.master_ratio", "1.3", "block (master) / sphere (slave) cell size in the contact core", Type::number, {}, 0.2, 5, false},
@@ -72,6 +93,8 @@ Hertz3dParameters hertz3d_parameters(const io::Settings& s)
   Hertz3dParameters p;
   p.radius = s.number("hertz3d.radius");
   p.load = s.number("hertz3d.load");
+  p.tangential_load = s.number("hertz3d.tangential_load");
+  p.friction_coefficient = cattaneo_mindlin_coefficient(s, "hertz3d.tangential_load", p.tangential_load, "N", "sphere");
   p.material = material_setting(s);
   p.block_material = block_material_setting(s, "hertz3d", p.material);
   p.element_size = s.number("hertz3d.element_size");

@@ -6,8 +6,6 @@
 #include "problems/hertz.hpp"
 #include "problems/hertz_figures.hpp"
 
-#include <cstdio>
-
 namespace feticon::problems
 {
 namespace
@@ -55,15 +53,7 @@ private:
     }
     const double applied = _parameters.tangential_load * _parameters.mesh.thickness;
     out.figures["friction"] = cattaneo_mindlin_figures(theory, samples, x, applied);
-    const auto& f = out.figures["friction"];
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "\nCattaneo-Mindlin: stick half-width c %.3f mm (analytic %.3f mm, %+.2f%%), shear RMS error "
-                  "%.2f%% of mu p0, friction force %.6g N (applied %.6g N)",
-                  1e3 * f["stick_half_width_computed"].get<double>(), 1e3 * theory.stick_half_width,
-                  100 * (f["stick_half_width_computed"].get<double>() / theory.stick_half_width - 1),
-                  100 * f["shear_rms_error_over_mu_p0"].get<double>(), f["tangential_force"].get<double>(), applied);
-    out.summary_line += line;
+    out.summary_line += cattaneo_mindlin_line(out.figures["friction"], theory, applied, "half-width");
   }
 
   HertzParameters _parameters;
@@ -107,11 +97,7 @@ HertzParameters hertz_parameters(const io::Settings& s)
   p.tangential_load = s.number("hertz.tangential_load");
   p.mesh.full = p.tangential_load > 0;
   p.friction_coefficient =
-      s.text("contact.friction.model") == "coulomb" ? s.number("contact.friction.coefficient") : 0.0;
-  FETICON_CHECK(p.tangential_load == 0 || s.text("contact.friction.model") != "none",
-                "hertz.tangential_load = " << p.tangential_load
-                                           << " N/m needs friction to hold the cylinder: set contact.friction.model "
-                                              "(coulomb with contact.friction.coefficient, or tresca)");
+      cattaneo_mindlin_coefficient(s, "hertz.tangential_load", p.tangential_load, "N/m", "cylinder");
   p.mesh.kind = s.text("hertz.mesh") == "tensor" ? HertzMeshKind::tensor : HertzMeshKind::graded;
   p.mesh.refinement = s.number("hertz.refinement");
   p.mesh.element_size = s.number("hertz.element_size");

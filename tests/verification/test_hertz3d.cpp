@@ -5,6 +5,7 @@
 /// Tolerances are the acceptance: peak pressure and contact radius within 2 %, RMS
 /// error at most 2 % of p0, contact force equal to the load to 1e-6 (SMALBE-M).
 
+#include "fem/load_history.hpp"
 #include "fem/loads.hpp"
 #include "mesh/mesh_quality.hpp"
 #include "nonlinear/contact_pressure.hpp"
@@ -50,6 +51,42 @@ TEST(Hertz3d, ModelGeometryLoadAndMeshQuality)
   const mesh::MeshQuality q = mesh::mesh_quality(problem.mesh, false);
   EXPECT_LE(q.max_aspect_ratio, 3.0);
   EXPECT_GE(q.min_angle_deg, 45.0);
+}
+
+TEST(Hertz3d, HalfModelOfATangentialLoadCarriesItWithoutMoment)
+{
+  // hertz3d.tangential_load: the octant balls mirrored across x = 0 (half model y >= 0), F / 2
+  // in the first stage, then Q / 2 along x added with the couple that cancels its moment
+  // about the contact point (Cattaneo and Mindlin's load acts in the contact plane). References:
+  // the loads' definitions (resultants), statics (moment about the origin), the count the
+  // memory guard predicts.
+  problems::Hertz3dParameters parameters;
+  parameters.tangential_load = 3600;
+  const fem::Problem problem = problems::hertz3d_problem(parameters);
+  EXPECT_EQ(problem.mesh.n_nodes(), problems::hertz3d_node_count(parameters));
+  EXPECT_EQ(problem.mesh.face_sets.count("symmetry_x"), 0u);
+  double x_min = 0;
+  for (int32_t n : problem.mesh.face_set_nodes("sphere_contact"))
+    x_min = std::min(x_min, problem.mesh.nodes(n, 0));
+  EXPECT_LT(x_min, -0.001); // both halves of the contact zone
+  const fem::LoadHistory history(problem, 1, true);
+  ASSERT_EQ(history.n_steps(), 2);
+  for (int step : {1, 2})
+  {
+    const la::Vector f = history.external_force(step);
+    Eigen::Vector3d total = Eigen::Vector3d::Zero();
+    double moment_y = 0; // about the contact point, the origin
+    for (int32_t n = 0; n < problem.mesh.n_nodes(); ++n)
+    {
+      total += f.segment<3>(3 * n);
+      moment_y += problem.mesh.nodes(n, 2) * f(3 * n) - problem.mesh.nodes(n, 0) * f(3 * n + 2);
+    }
+    const double Q = step == 2 ? 0.5 * parameters.tangential_load : 0.0;
+    EXPECT_NEAR(total(0), Q, 1e-9 * parameters.load);
+    EXPECT_NEAR(total(1), 0, 1e-9 * parameters.load);
+    EXPECT_NEAR(total(2), -0.5 * parameters.load, 1e-9 * parameters.load);
+    EXPECT_NEAR(moment_y, 0, 1e-12 * parameters.load);
+  }
 }
 
 namespace
@@ -160,5 +197,49 @@ TEST(Hertz3d, LargeDisplacementsOnTriangularFacesConverge)
     EXPECT_LE(r.outer_max, 15) << mesh::cell_type(cell).name;
     EXPECT_GE(r.force, 5000 * (1 - 1e-6)) << mesh::cell_type(cell).name;
     EXPECT_LE(r.force, 5000 / std::cos(1.1 * r.hertz.a_analytic / 0.05)) << mesh::cell_type(cell).name;
+  }
+}
+
+TEST(Hertz3d, CoulombFrictionAcrossSymmetryPlanesConverges)
+{
+  // The quarter model with Coulomb friction (mu = 0.3): the tangential rows of slave nodes on
+  // x = 0 and y = 0 across their plane repeat the symmetry supports' rows
+  // (contact/tangential_rows.hpp); without holding them the second QP made no progress in
+  // 20 000 MPGP steps (measured, 4 subdomains, lumped preconditioner: this run's settings, the
+  // CLI's auto choice for this model). Still open: with 8 subdomains the second QP stalls
+  // all the same (docs/friction.md). For elastically similar bodies friction leaves Hertz's
+  // pressure unchanged (the normal and tangential problems uncouple for half-spaces of one material; measured:
+  // the frictionless figures to 4 digits):
+  // the frictionless acceptance applies.
+  const fem::Problem problem = problems::hertz3d_problem({});
+  nonlinear::SolverSettings s;
+  s.kinematics = fem::Kinematics::linear;
+  s.dual.preconditioner = dual::DualPreconditioner::lumped; // the 3D default
+  s.subdomains = 4;
+  s.friction.model = nonlinear::FrictionModel::coulomb;
+  s.friction.coefficient = 0.3;
+  TimerTable timers;
+  const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
+  ASSERT_TRUE(solution.converged) << solution.reason;
+  int steps = 0;
+  for (const auto& outer : solution.history)
+    steps += outer.qp.iterations;
+  EXPECT_LE(solution.history.size(), 4u); // measured 3 QPs: stick, Coulomb, settled
+  EXPECT_LE(steps, 600);                  // measured 259
+  std::vector<problems::ProfilePoint> radial;
+  for (const auto& p : nonlinear::slave_pressure_by_x(problem, solution, s.kinematics, s.friction))
+    radial.push_back({std::hypot(p.x, p.y), p.pressure});
+  const problems::Hertz3dComparison h = problems::compare_with_hertz3d({}, radial);
+  EXPECT_LT(std::abs(h.p_peak_computed / h.p0_analytic - 1), 0.02);
+  EXPECT_LT(std::abs(h.a_computed / h.a_analytic - 1), 0.02);
+  EXPECT_LE(h.rms_error_over_p0, 0.02);
+  EXPECT_NEAR(nonlinear::total_normal_force(solution), 5000, 1e-6 * 5000);
+  // A held row carries no force.
+  for (size_t i = 0; i < solution.tangential.held.size(); ++i)
+  {
+    if (solution.tangential.held[i])
+    {
+      EXPECT_EQ(solution.tangential_lambda(static_cast<la::Index>(i)), 0.0);
+    }
   }
 }

@@ -126,7 +126,51 @@ TEST(OctantBall, SizeCountedWithoutBuildingIsTheBuiltMesh)
         EXPECT_EQ(size.nodes, ball.nodes.rows()) << n << " " << radius << " " << aspect;
         EXPECT_EQ(size.cells, static_cast<int64_t>(ball.cells.size()));
         EXPECT_EQ(size.layers, ball.layers);
+        int64_t on_plane = 0;
+        for (Eigen::Index i = 0; i < ball.nodes.rows(); ++i)
+          on_plane += ball.nodes(i, 0) == 0.0;
+        EXPECT_EQ(size.plane_nodes, on_plane);
       }
+}
+
+TEST(OctantBall, MirroredAcrossXIsTheHalfBall)
+{
+  // References: the half ball's volume is twice the octant's (to round-off), its boundary is
+  // the faces of one cell only (found independently), every listed face points outward, and
+  // the x = 0 plane is inside.
+  const OctantBallParameters p = small_ball();
+  const OctantBall ball = octant_ball(p);
+  const OctantBall half = mirrored_across_x(ball);
+  EXPECT_EQ(half.nodes.rows(), 2 * ball.nodes.rows() - octant_ball_size(p).plane_nodes);
+  EXPECT_EQ(half.cells.size(), 2 * ball.cells.size());
+  EXPECT_TRUE(half.symmetry_x.empty());
+  const Mesh octant = as_mesh(ball), mesh = as_mesh(half);
+  double volume = 0, octant_volume = 0;
+  for (const auto cell : mesh.cells)
+  {
+    for (const Eigen::Vector3d& xi : test::gauss_points())
+      ASSERT_GT(test::jacobian(mesh, cell, xi).determinant(), 0);
+    volume += test::cell_volume(mesh, cell);
+  }
+  for (const auto cell : octant.cells)
+    octant_volume += test::cell_volume(octant, cell);
+  EXPECT_NEAR(volume, 2 * octant_volume, 1e-12 * volume);
+
+  std::set<test::SortedFace> boundary, listed;
+  for (const auto& [face, cells] : test::faces_to_cells(mesh))
+    if (cells.size() == 1)
+      boundary.insert(face);
+  for (const auto* faces : {&half.symmetry_y, &half.flat, &half.outer})
+    for (const Face& f : *faces)
+    {
+      EXPECT_TRUE(listed.insert(test::sorted(f)).second) << "face listed twice";
+      const Eigen::Vector3d centre = test::face_centroid(mesh, f);
+      const Eigen::Vector3d outward = faces == &half.symmetry_y ? Eigen::Vector3d(0, -1, 0)
+          : faces == &half.flat                                 ? Eigen::Vector3d(0, 0, -1)
+                                                                : centre.normalized();
+      EXPECT_GT(test::face_normal(mesh, f).dot(outward), 0.9);
+    }
+  EXPECT_EQ(listed, boundary);
 }
 
 TEST(OctantBall, RejectsBadParameters)

@@ -1,0 +1,109 @@
+/// Tests of build_tangential_rows (friction rows from normal contact rows). References: the
+/// definitions of contact/tangential_rows.hpp (orthonormal tangents, the normal row's weights)
+/// and linear algebra: a held row is a combination of the supports' rows e_k at its nodes.
+
+#include "contact/tangential_rows.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace feticon::contact
+{
+namespace
+{
+/// One normal row: slave node 0 with normal n, master nodes 1 and 2 with weights 0.6 and 0.4
+/// (row entries w n / |b|, w = -1 on the slave), over 3 nodes.
+ContactConstraints one_row(const Eigen::Vector3d& n)
+{
+  ContactConstraints rows;
+  const double norm = std::sqrt(1 + 0.6 * 0.6 + 0.4 * 0.4);
+  std::vector<Eigen::Triplet<double>> t;
+  for (int c = 0; c < 3; ++c)
+  {
+    t.emplace_back(0, c, -n(c) / norm);
+    t.emplace_back(0, 3 + c, 0.6 * n(c) / norm);
+    t.emplace_back(0, 6 + c, 0.4 * n(c) / norm);
+  }
+  rows.B.resize(1, 9);
+  rows.B.setFromTriplets(t.begin(), t.end());
+  rows.slave_node = {0};
+  rows.normal = {n};
+  rows.row_norm = {norm};
+  return rows;
+}
+} // namespace
+
+TEST(TangentialRows, ThreeDTangentsAreOrthonormalAndShareTheWeights)
+{
+  const Eigen::Vector3d n = Eigen::Vector3d(0.2, -0.3, 1).normalized();
+  const TangentialRows rows = build_tangential_rows(one_row(n), {false, false, false});
+  ASSERT_EQ(rows.n_rows(), 2);
+  EXPECT_EQ(rows.n_tangents, 2);
+  for (int k = 0; k < 2; ++k)
+  {
+    EXPECT_NEAR(rows.tangent[k].norm(), 1, 1e-14);
+    EXPECT_NEAR(rows.tangent[k].dot(n), 0, 1e-14);
+    EXPECT_FALSE(rows.held[k]);
+    // The row is the normal row with n replaced by t_k.
+    const double norm = std::sqrt(1 + 0.6 * 0.6 + 0.4 * 0.4);
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(rows.B.coeff(k, c), -rows.tangent[k](c) / norm, 1e-14);
+      EXPECT_NEAR(rows.B.coeff(k, 6 + c), 0.4 * rows.tangent[k](c) / norm, 1e-14);
+    }
+  }
+  EXPECT_NEAR(rows.tangent[0].dot(rows.tangent[1]), 0, 1e-14);
+}
+
+TEST(TangentialRows, SymmetryPlaneThroughTheContactHoldsTheTangentAcrossIt)
+{
+  // n in the plane y = 0 and every node of the row held along y (a symmetry plane): t_2 = e_y,
+  // held; its row is then -e_y at the slave and w_a e_y at the masters over |b|, a combination
+  // of the supports' rows.
+  const Eigen::Vector3d n = Eigen::Vector3d(0.1, 0, 1).normalized();
+  const std::vector<int64_t> supported = {1, 4, 7}; // y of nodes 0, 1, 2
+  const TangentialRows rows = build_tangential_rows(one_row(n), {false, false, false}, supported);
+  ASSERT_EQ(rows.n_rows(), 2);
+  EXPECT_FALSE(rows.held[0]);
+  EXPECT_TRUE(rows.held[1]);
+  EXPECT_NEAR(std::abs(rows.tangent[1].y()), 1, 1e-14);
+  EXPECT_NEAR(rows.tangent[0].y(), 0, 1e-14);
+  EXPECT_NEAR(rows.tangent[0].dot(n), 0, 1e-14);
+  for (int node = 0; node < 3; ++node)
+  {
+    EXPECT_EQ(rows.B.coeff(1, 3 * node), 0.0);
+    EXPECT_EQ(rows.B.coeff(1, 3 * node + 2), 0.0);
+  }
+
+  // One master node free along y: no symmetry plane, nothing held.
+  const TangentialRows free = build_tangential_rows(one_row(n), {false, false, false}, {1, 4});
+  EXPECT_FALSE(free.held[0] || free.held[1]);
+  // A normal with a component along y: the plane is not a symmetry plane of the contact.
+  const TangentialRows tilted =
+      build_tangential_rows(one_row(Eigen::Vector3d(0, 0.1, 1).normalized()), {false, false, false}, supported);
+  EXPECT_FALSE(tilted.held[0] || tilted.held[1]);
+}
+
+TEST(TangentialRows, TwoSymmetryPlanesHoldBothTangents)
+{
+  // The line x = y = 0 of a quarter model: n = e_z, held along x and y at every node.
+  const std::vector<int64_t> supported = {0, 1, 3, 4, 6, 7};
+  const TangentialRows rows =
+      build_tangential_rows(one_row(Eigen::Vector3d::UnitZ()), {false, false, false}, supported);
+  EXPECT_TRUE(rows.held[0]);
+  EXPECT_TRUE(rows.held[1]);
+}
+
+TEST(TangentialRows, PlaneStrainHasOneTangentAndHoldsNone)
+{
+  const Eigen::Vector3d n = Eigen::Vector3d(0.1, 1, 0).normalized();
+  // z is eliminated (and so supported everywhere); the one tangent lies in the x-y plane.
+  const TangentialRows rows = build_tangential_rows(one_row(n), {false, false, true}, {2, 5, 8});
+  ASSERT_EQ(rows.n_rows(), 1);
+  EXPECT_EQ(rows.n_tangents, 1);
+  EXPECT_FALSE(rows.held[0]);
+  EXPECT_NEAR(rows.tangent[0].z(), 0, 1e-14);
+  EXPECT_NEAR(rows.tangent[0].dot(n), 0, 1e-14);
+}
+} // namespace feticon::contact
