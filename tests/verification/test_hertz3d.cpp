@@ -203,43 +203,47 @@ TEST(Hertz3d, LargeDisplacementsOnTriangularFacesConverge)
 TEST(Hertz3d, CoulombFrictionAcrossSymmetryPlanesConverges)
 {
   // The quarter model with Coulomb friction (mu = 0.3): the tangential rows of slave nodes on
-  // x = 0 and y = 0 across their plane repeat the symmetry supports' rows
-  // (contact/tangential_rows.hpp); without holding them the second QP made no progress in
-  // 20 000 MPGP steps (measured, 4 subdomains, lumped preconditioner: this run's settings, the
-  // CLI's auto choice for this model). Still open: with 8 subdomains the second QP stalls
-  // all the same (docs/friction.md). For elastically similar bodies friction leaves Hertz's
-  // pressure unchanged (the normal and tangential problems uncouple for half-spaces of one material; measured:
-  // the frictionless figures to 4 digits):
-  // the frictionless acceptance applies.
+  // x = 0 and y = 0 across their plane repeat the symmetry supports' rows up to the mortar
+  // weights beside the plane (contact/tangential_rows.hpp). Not held, they made the second QP
+  // stall (20 000 MPGP steps without progress, 4 subdomains, lumped preconditioner: the CLI's
+  // auto choice); held only where no weight beside the plane exceeded 1e-3 of the largest,
+  // 8 subdomains still stalled ((B B')_CC nearly singular, its inverse amplifying by 2.5e6).
+  // For elastically similar bodies friction leaves Hertz's pressure unchanged (the normal and
+  // tangential problems uncouple for half-spaces of one material; measured: the frictionless
+  // figures to 4 digits): the frictionless acceptance applies.
   const fem::Problem problem = problems::hertz3d_problem({});
-  nonlinear::SolverSettings s;
-  s.kinematics = fem::Kinematics::linear;
-  s.dual.preconditioner = dual::DualPreconditioner::lumped; // the 3D default
-  s.subdomains = 4;
-  s.friction.model = nonlinear::FrictionModel::coulomb;
-  s.friction.coefficient = 0.3;
-  TimerTable timers;
-  const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
-  ASSERT_TRUE(solution.converged) << solution.reason;
-  int steps = 0;
-  for (const auto& outer : solution.history)
-    steps += outer.qp.iterations;
-  EXPECT_LE(solution.history.size(), 4u); // measured 3 QPs: stick, Coulomb, settled
-  EXPECT_LE(steps, 600);                  // measured 259
-  std::vector<problems::ProfilePoint> radial;
-  for (const auto& p : nonlinear::slave_pressure_by_x(problem, solution, s.kinematics, s.friction))
-    radial.push_back({std::hypot(p.x, p.y), p.pressure});
-  const problems::Hertz3dComparison h = problems::compare_with_hertz3d({}, radial);
-  EXPECT_LT(std::abs(h.p_peak_computed / h.p0_analytic - 1), 0.02);
-  EXPECT_LT(std::abs(h.a_computed / h.a_analytic - 1), 0.02);
-  EXPECT_LE(h.rms_error_over_p0, 0.02);
-  EXPECT_NEAR(nonlinear::total_normal_force(solution), 5000, 1e-6 * 5000);
-  // A held row carries no force.
-  for (size_t i = 0; i < solution.tangential.held.size(); ++i)
+  for (const int subdomains : {4, 8})
   {
-    if (solution.tangential.held[i])
+    SCOPED_TRACE(subdomains);
+    nonlinear::SolverSettings s;
+    s.kinematics = fem::Kinematics::linear;
+    s.dual.preconditioner = dual::DualPreconditioner::lumped; // the 3D default
+    s.subdomains = subdomains;
+    s.friction.model = nonlinear::FrictionModel::coulomb;
+    s.friction.coefficient = 0.3;
+    TimerTable timers;
+    const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
+    ASSERT_TRUE(solution.converged) << solution.reason;
+    int steps = 0;
+    for (const auto& outer : solution.history)
+      steps += outer.qp.iterations;
+    EXPECT_LE(solution.history.size(), 4u); // measured 3 QPs: stick, Coulomb, settled
+    EXPECT_LE(steps, 500);                  // measured 169 (4 subdomains) and 292 (8)
+    std::vector<problems::ProfilePoint> radial;
+    for (const auto& p : nonlinear::slave_pressure_by_x(problem, solution, s.kinematics, s.friction))
+      radial.push_back({std::hypot(p.x, p.y), p.pressure});
+    const problems::Hertz3dComparison h = problems::compare_with_hertz3d({}, radial);
+    EXPECT_LT(std::abs(h.p_peak_computed / h.p0_analytic - 1), 0.02);
+    EXPECT_LT(std::abs(h.a_computed / h.a_analytic - 1), 0.02);
+    EXPECT_LE(h.rms_error_over_p0, 0.02);
+    EXPECT_NEAR(nonlinear::total_normal_force(solution), 5000, 1e-6 * 5000);
+    // A held row carries no force.
+    for (size_t i = 0; i < solution.tangential.held.size(); ++i)
     {
-      EXPECT_EQ(solution.tangential_lambda(static_cast<la::Index>(i)), 0.0);
+      if (solution.tangential.held[i])
+      {
+        EXPECT_EQ(solution.tangential_lambda(static_cast<la::Index>(i)), 0.0);
+      }
     }
   }
 }

@@ -13,19 +13,22 @@ namespace feticon::contact
 namespace
 {
 /// One normal row: slave node 0 with normal n, master nodes 1 and 2 with weights 0.6 and 0.4
-/// (row entries w n / |b|, w = -1 on the slave), over 3 nodes.
-ContactConstraints one_row(const Eigen::Vector3d& n)
+/// (row entries w n / |b|, w = -1 on the slave), over 3 nodes; with `fourth` != 0 a master
+/// node 3 of that weight (over 4 nodes).
+ContactConstraints one_row(const Eigen::Vector3d& n, double fourth = 0)
 {
   ContactConstraints rows;
-  const double norm = std::sqrt(1 + 0.6 * 0.6 + 0.4 * 0.4);
+  const double norm = std::sqrt(1 + 0.6 * 0.6 + 0.4 * 0.4 + fourth * fourth);
   std::vector<Eigen::Triplet<double>> t;
   for (int c = 0; c < 3; ++c)
   {
     t.emplace_back(0, c, -n(c) / norm);
     t.emplace_back(0, 3 + c, 0.6 * n(c) / norm);
     t.emplace_back(0, 6 + c, 0.4 * n(c) / norm);
+    if (fourth != 0)
+      t.emplace_back(0, 9 + c, fourth * n(c) / norm);
   }
-  rows.B.resize(1, 9);
+  rows.B.resize(1, fourth != 0 ? 12 : 9);
   rows.B.setFromTriplets(t.begin(), t.end());
   rows.slave_node = {0};
   rows.normal = {n};
@@ -83,6 +86,23 @@ TEST(TangentialRows, SymmetryPlaneThroughTheContactHoldsTheTangentAcrossIt)
   const TangentialRows tilted =
       build_tangential_rows(one_row(Eigen::Vector3d(0, 0.1, 1).normalized()), {false, false, false}, supported);
   EXPECT_FALSE(tilted.held[0] || tilted.held[1]);
+}
+
+TEST(TangentialRows, MortarWeightsBesideTheSymmetryPlaneDoNotHideIt)
+{
+  // The dual mortar basis of a slave node on the plane reaches master nodes one cell row
+  // beside it: 0.17 % of the row's norm on hertz3d. Node 3 is such a node, free along y.
+  const Eigen::Vector3d n = Eigen::Vector3d(0.1, 0, 1).normalized();
+  const std::vector<int64_t> supported = {1, 4, 7}; // y of nodes 0, 1, 2
+  const TangentialRows beside = build_tangential_rows(one_row(n, 0.002), {false, false, false}, supported);
+  EXPECT_FALSE(beside.held[0]);
+  EXPECT_TRUE(beside.held[1]);
+  // A master node off the plane with a weight of 10 % of the row: not a symmetry plane.
+  const TangentialRows off = build_tangential_rows(one_row(n, 0.12), {false, false, false}, supported);
+  EXPECT_FALSE(off.held[0] || off.held[1]);
+  // The slave node itself free along y: nothing held, whatever the masters.
+  const TangentialRows slave_free = build_tangential_rows(one_row(n), {false, false, false}, {4, 7});
+  EXPECT_FALSE(slave_free.held[0] || slave_free.held[1]);
 }
 
 TEST(TangentialRows, TwoSymmetryPlanesHoldBothTangents)

@@ -20,7 +20,8 @@ struct Setup
 /// The clamped box with `extra` rows after the equality rows that play contact rows:
 /// node-to-segment-like rows -n' on one node and +n'/2 on two others, over nodes on and off
 /// the subdomain interfaces (not orthogonal to the gluing rows or to each other).
-std::unique_ptr<Setup> make_setup(int extra)
+/// `near_copy`: one more row, the first one plus `near_copy` times e_x at a fourth node.
+std::unique_ptr<Setup> make_setup(int extra, double near_copy = 0)
 {
   auto s = std::make_unique<Setup>();
   s->box = test::make_clamped_box();
@@ -48,9 +49,20 @@ std::unique_ptr<Setup> make_setup(int extra)
         triplets.emplace_back(r, 3 * right + k, 0.5 * normal(k));
       }
     }
-    Eigen::SparseMatrix<double, Eigen::RowMajor> B(extra, 3 * mesh.n_nodes());
+    const int n_rows = extra + (near_copy != 0 ? 1 : 0);
+    if (near_copy != 0)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        triplets.emplace_back(extra, 3 * top[1] + k, -normal(k));
+        triplets.emplace_back(extra, 3 * top[0] + k, 0.5 * normal(k));
+        triplets.emplace_back(extra, 3 * top[2] + k, 0.5 * normal(k));
+      }
+      triplets.emplace_back(extra, 3 * top[3], near_copy);
+    }
+    Eigen::SparseMatrix<double, Eigen::RowMajor> B(n_rows, 3 * mesh.n_nodes());
     B.setFromTriplets(triplets.begin(), triplets.end());
-    s->rows.append(decomposition::rows_from_global(*s->box->decomp, B, la::Vector::Zero(extra)), s->n_equality);
+    s->rows.append(decomposition::rows_from_global(*s->box->decomp, B, la::Vector::Zero(n_rows)), s->n_equality);
   }
   s->feti = std::make_unique<dual::FetiOperators>(*s->box->system, s->rows);
   return s;
@@ -83,4 +95,23 @@ TEST(ConstraintScaling, IsTheIdentityForOrthonormalEqualityRows)
   const la::Vector v = la::Vector::Random(s->feti->n_dual());
   EXPECT_LT((s->feti->apply_B(s->feti->apply_Bt(v)) - v).norm(), 1e-12 * v.norm());
   EXPECT_EQ(Y.apply(v), v);
+}
+
+// Reference: two rows of norm^2 1.5 that differ by d = 1e-3 e_x at one node: B B' has an
+// eigenvalue of about d^2 / 2 (measured 2.5e-7 with the gluing rows), far below
+// 1 / max_amplification, so Y would amplify by ~1e6; it falls back to the identity as for
+// dependent rows. With d = 0.5 the scaling stays.
+TEST(ConstraintScaling, FallsBackToTheIdentityForNearlyDependentRows)
+{
+  const auto nearly = make_setup(2, 1e-3);
+  const dual::ConstraintScaling Y(*nearly->feti, nearly->n_equality);
+  EXPECT_FALSE(Y.factorized());
+  EXPECT_EQ(Y.block_size(), 0);
+  const la::Vector v = la::Vector::Random(nearly->feti->n_dual());
+  EXPECT_EQ(Y.apply(v), v);
+
+  const auto apart = make_setup(2, 0.5);
+  const dual::ConstraintScaling Z(*apart->feti, apart->n_equality);
+  EXPECT_TRUE(Z.factorized());
+  EXPECT_GT(Z.block_size(), 3);
 }
