@@ -185,6 +185,16 @@ std::string cattaneo_mindlin_line(const nlohmann::ordered_json& f, const Cattane
 {
   const double c = f["stick_half_width_computed"].get<double>();
   char line[256];
+  if (theory.stick_half_width == 0) // Q >= mu P: nothing to compare c with
+  {
+    const int sliding = f["slipping_nodes"].get<int>();
+    std::snprintf(line, sizeof line,
+                  "\nCattaneo-Mindlin, full slide: %d of %d loaded nodes slide, shear RMS error %.2f%% of mu p0, "
+                  "friction force %.6g N (mu P %.6g N)",
+                  sliding, sliding + f["sticking_nodes"].get<int>(),
+                  100 * f["shear_rms_error_over_mu_p0"].get<double>(), f["tangential_force"].get<double>(), applied);
+    return line;
+  }
   std::snprintf(line, sizeof line,
                 "\nCattaneo-Mindlin: stick %s c %.3f mm (analytic %.3f mm, %+.2f%%), shear RMS error %.2f%% of mu p0, "
                 "friction force %.6g N (applied %.6g N)",

@@ -56,29 +56,49 @@ fem::Problem hertz_problem(const HertzParameters& parameters)
                 "hertz: line_load = " << parameters.line_load << " N/m must be positive");
   FETICON_CHECK(std::isfinite(parameters.tangential_load) && parameters.tangential_load >= 0,
                 "hertz: tangential_load = " << parameters.tangential_load << " N/m must be >= 0");
+  FETICON_CHECK(std::isfinite(parameters.tangential_displacement) && parameters.tangential_displacement >= 0,
+                "hertz: tangential_displacement = " << parameters.tangential_displacement << " m must be >= 0");
+  const bool pulled = parameters.tangential_load > 0, slid = parameters.tangential_displacement > 0;
+  FETICON_CHECK(!(pulled && slid), "hertz: give a tangential load or a tangential displacement, not both");
+  FETICON_CHECK(!slid || parameters.friction_coefficient > 0,
+                "hertz: a tangential displacement needs Coulomb friction (its couple balances the full "
+                "slide's force mu P)");
   fem::Problem p;
   p.name = "hertz";
   const HertzMeshParameters& mesh = parameters.mesh;
-  FETICON_CHECK(mesh.full || parameters.tangential_load == 0,
-                "hertz: a tangential load needs the full model (HertzMeshParameters::full)");
+  FETICON_CHECK(mesh.full || !(pulled || slid),
+                "hertz: a tangential load or displacement needs the full model (HertzMeshParameters::full)");
   p.mesh = generate_hertz(mesh, &p.mesh_from_cache);
   p.materials = {parameters.material, parameters.block()}; // bodies "cylinder", "block"
   p.eliminated = {false, false, true};
   p.dirichlet = {{"support", {0.0, 0.0, std::nullopt}}};
   if (!mesh.full)
     p.dirichlet.insert(p.dirichlet.begin(), {"symmetry", {0.0, std::nullopt, std::nullopt}});
+  if (slid) // held along x while pressed, then moved
+    p.dirichlet.push_back({"load", {0.0, std::nullopt, std::nullopt}});
   // The load face spans x in [0, Xc] (half model, which carries Q/2) or [-Xc, Xc].
   const double width = (mesh.full ? 2 : 1) * parameters.mesh.cylinder_width;
   const double modelled = mesh.full ? 1.0 : 0.5;
-  p.tractions = {{"load", Eigen::Vector3d(0, -modelled * parameters.line_load / width, 0)}};
-  if (parameters.tangential_load > 0) // a second stage: the normal load held, the tangential one added
+  const Eigen::Vector3d normal(0, -modelled * parameters.line_load / width, 0);
+  p.tractions = {{"load", normal}};
+  const double thickness = parameters.mesh.thickness, radius = parameters.mesh.cylinder_radius;
+  if (pulled) // a second stage: the normal load held, the tangential one added
+    p.later_stages.push_back({{{"load", normal + Eigen::Vector3d(parameters.tangential_load / width, 0, 0)}},
+                              {},
+                              moment_free_couple(p.mesh, parameters.tangential_load * thickness, radius),
+                              p.dirichlet,
+                              1});
+  if (slid)
+  {
+    std::vector<fem::DirichletCondition> moved = p.dirichlet;
+    moved.back() = {"load", {parameters.tangential_displacement, std::nullopt, std::nullopt}};
     p.later_stages.push_back(
-        {{{"load", Eigen::Vector3d(parameters.tangential_load / width, -parameters.line_load / width, 0)}},
+        {{{"load", normal}},
          {},
-         moment_free_couple(p.mesh, parameters.tangential_load * parameters.mesh.thickness,
-                            parameters.mesh.cylinder_radius),
-         p.dirichlet,
+         moment_free_couple(p.mesh, parameters.friction_coefficient * parameters.line_load * thickness, radius),
+         std::move(moved),
          1});
+  }
   p.contacts = {{"cylinder_contact", "block_contact"}};
   p.validate();
   return p;

@@ -26,6 +26,11 @@ struct HertzParameters
   /// Tangential line load (N/m, along +x) applied after the normal one, in a second load
   /// stage: Cattaneo-Mindlin with friction. Non-zero: the full model (mesh.full).
   double tangential_load = 0;
+  /// Instead of tangential_load: the load face moved along +x by this much (m) in the second
+  /// stage (held at u_x = 0 in the first), with the couple of the full slide's force mu P:
+  /// Cattaneo-Mindlin's Q >= mu P, where force control has no unique answer. Needs
+  /// friction_coefficient > 0 (Coulomb); non-zero: the full model (mesh.full).
+  double tangential_displacement = 0;
   double friction_coefficient = 0;             ///< Coulomb's mu (contact.friction), for Cattaneo-Mindlin; 0: none
   fem::Material material{2.0e11, 0.3};         ///< the cylinder's, and the block's if not given
   std::optional<fem::Material> block_material; ///< the block's if it differs

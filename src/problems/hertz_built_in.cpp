@@ -33,25 +33,28 @@ public:
     const HertzAnalytic analytic = hertz_analytic(_parameters);
     for (const ProfilePoint& p : pressure_profile(samples, false, large))
       out.analytic.push_back(analytic.pressure(p.r));
-    if (_parameters.tangential_load > 0 && _parameters.friction_coefficient > 0)
+    if ((_parameters.tangential_load > 0 || _parameters.tangential_displacement > 0) &&
+        _parameters.friction_coefficient > 0)
       add_cattaneo_mindlin(h, samples, large, out);
     return out;
   }
 
 private:
-  /// The `friction` block against Cattaneo-Mindlin, its line and the analytic shear column.
+  /// The `friction` block against Cattaneo-Mindlin, its line and the analytic shear column;
+  /// a tangential displacement is compared with the full slide, Q = mu P.
   void add_cattaneo_mindlin(const HertzComparison& h, const std::vector<SurfaceSample>& samples, bool large,
                             TheoryComparison& out) const
   {
-    const CattaneoMindlin theory = cattaneo_mindlin(_parameters.friction_coefficient, h.p0_analytic, h.a_analytic,
-                                                    _parameters.line_load, _parameters.tangential_load);
+    const double mu = _parameters.friction_coefficient;
+    const double Q = _parameters.tangential_displacement > 0 ? mu * _parameters.line_load : _parameters.tangential_load;
+    const CattaneoMindlin theory = cattaneo_mindlin(mu, h.p0_analytic, h.a_analytic, _parameters.line_load, Q);
     std::vector<double> x;
     for (const ProfilePoint& p : pressure_profile(samples, false, large))
     {
       x.push_back(p.r);
       out.analytic_shear.push_back(theory.shear(p.r));
     }
-    const double applied = _parameters.tangential_load * _parameters.mesh.thickness;
+    const double applied = Q * _parameters.mesh.thickness;
     out.figures["friction"] = cattaneo_mindlin_figures(theory, samples, x, applied);
     out.summary_line += cattaneo_mindlin_line(out.figures["friction"], theory, applied, "half-width");
   }
@@ -70,6 +73,9 @@ std::vector<io::SettingSpec> hertz_setting_specs()
       {"hertz.tangential_load", "0", "tangential line load along +x on the cylinder (N/m), applied after the "
        "normal load in a second load stage (needs contact.friction; the full model is meshed: the load "
        "breaks the symmetry)", Type::number, {}, 0, inf, false},
+      {"hertz.tangential_displacement", "0", "instead of hertz.tangential_load: the load face held along x "
+       "while pressed, then moved along +x by this much (m) in a second load stage, with the couple of the "
+       "full slide's force mu P (Q >= mu P: every node slides; needs Coulomb friction)", Type::number, {}, 0, inf, false},
       {"hertz.mesh", "graded", "graded (Gmsh quadrilaterals with a size field growing by growth_ratio "
                                "away from the contact, shape-regular) or tensor (mapped blocks with "
                                "tensor-product grading)", Type::text, {"graded", "tensor"}, 0, 0, false},
@@ -95,9 +101,13 @@ HertzParameters hertz_parameters(const io::Settings& s)
   HertzParameters p;
   p.line_load = s.number("hertz.line_load");
   p.tangential_load = s.number("hertz.tangential_load");
-  p.mesh.full = p.tangential_load > 0;
+  p.tangential_displacement = s.number("hertz.tangential_displacement");
+  p.mesh.full = p.tangential_load > 0 || p.tangential_displacement > 0;
   p.friction_coefficient =
       cattaneo_mindlin_coefficient(s, "hertz.tangential_load", p.tangential_load, "N/m", "cylinder");
+  if (p.tangential_displacement > 0)
+    p.friction_coefficient =
+        cattaneo_mindlin_coefficient(s, "hertz.tangential_displacement", p.tangential_displacement, "m", "cylinder");
   p.mesh.kind = s.text("hertz.mesh") == "tensor" ? HertzMeshKind::tensor : HertzMeshKind::graded;
   p.mesh.refinement = s.number("hertz.refinement");
   p.mesh.element_size = s.number("hertz.element_size");

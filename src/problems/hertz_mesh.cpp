@@ -47,9 +47,9 @@ void check_parameters(const HertzMeshParameters& p)
                 "Hertz mesh: fine_width = " << p.fine_width << " m must be < cylinder_width and block_width");
   FETICON_CHECK(p.fine_depth < std::min(p.cylinder_radius, p.block_depth),
                 "Hertz mesh: fine_depth = " << p.fine_depth << " m must be < cylinder_radius and block_depth");
-  FETICON_CHECK(
-      !p.full || p.kind == HertzMeshKind::graded,
-      "Hertz mesh: the full model (a tangential load) is meshed by the graded mesh only: hertz.mesh = graded");
+  FETICON_CHECK(!p.full || p.kind == HertzMeshKind::graded,
+                "Hertz mesh: the full model (a tangential load or displacement) is meshed by the graded mesh only: "
+                "hertz.mesh = graded");
   const double h_max = std::max(1.0, p.master_ratio) * p.element_size / p.refinement;
   FETICON_CHECK(std::min(p.fine_width, p.fine_depth) >= h_max,
                 "Hertz mesh: the fine region (fine_width, fine_depth >= "

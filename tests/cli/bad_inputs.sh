@@ -104,6 +104,12 @@ expect "tangential load without friction" "needs friction to hold the cylinder" 
 expect "tangential load on the tensor mesh" "graded mesh only" -- --set hertz.tangential_load=1e7 \
   --set contact.friction.model=coulomb --set contact.friction.coefficient=0.3 --set hertz.mesh=tensor
 expect "negative tangential load" "hertz.tangential_load = -1 is out of range" -- --set hertz.tangential_load=-1
+expect "tangential displacement without friction" "needs friction to hold the cylinder" -- \
+  --set hertz.tangential_displacement=5e-3
+expect "tangential displacement with Tresca" "needs Coulomb friction" -- --set hertz.tangential_displacement=5e-3 \
+  --set contact.friction.model=tresca --set contact.friction.slip_bound=1e8
+expect "tangential load and displacement" "not both" -- --set hertz.tangential_displacement=5e-3 \
+  --set hertz.tangential_load=1e7 --set contact.friction.model=coulomb --set contact.friction.coefficient=0.3
 expect "3D tangential load without friction" "needs friction to hold the sphere" -- --set problem=hertz3d \
   --set hertz3d.tangential_load=3600
 expect "3D negative tangential load" "hertz3d.tangential_load = -1 is out of range" -- --set problem=hertz3d \

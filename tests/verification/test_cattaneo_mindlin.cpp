@@ -20,35 +20,50 @@
 
 using namespace feticon;
 
+namespace
+{
+/// The surface samples of the full 2D Hertz model with Coulomb friction mu (small
+/// displacements, 8 subdomains, mortar) at 55 elements across 2a, pulled by the tangential
+/// load or displacement `parameters` give. Empty if the solve did not converge (a failure).
+std::pair<std::vector<problems::SurfaceSample>, std::vector<double>> solve_and_sample(
+    problems::HertzParameters& parameters, double mu)
+{
+  parameters.mesh.refinement = 2; // 55 elements across 2a
+  parameters.mesh.full = true;
+  parameters.friction_coefficient = mu;
+  nonlinear::SolverSettings s;
+  s.kinematics = fem::Kinematics::linear;
+  s.subdomains = 8;
+  s.formulation = contact::ContactFormulation::mortar;
+  s.dual.rtol = 1e-8;
+  s.friction = {nonlinear::FrictionModel::coulomb, mu, 0};
+  const fem::Problem problem = problems::hertz_problem(parameters);
+  TimerTable timers;
+  const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
+  EXPECT_TRUE(solution.converged) << solution.reason;
+  std::vector<problems::SurfaceSample> surface;
+  std::vector<double> x;
+  if (!solution.converged)
+    return {};
+  for (const auto& p : nonlinear::slave_pressure_by_x(problem, solution, s.kinematics, s.friction))
+  {
+    surface.push_back(
+        {p.x, p.y, p.deformed_x, p.deformed_y, p.pressure, p.shear.x(), p.friction_force.x(), p.slipping});
+    x.push_back(p.x);
+  }
+  return {surface, x};
+}
+} // namespace
+
 TEST(CattaneoMindlin, CylinderSticksInTheCentreAndSlidesAtTheEdges)
 {
   const double mu = 0.3;
   for (const double ratio : {0.3, 0.6, 0.9})
   {
     problems::HertzParameters parameters;
-    parameters.mesh.refinement = 2; // 55 elements across 2a
-    parameters.mesh.full = true;
     parameters.tangential_load = ratio * mu * parameters.line_load;
-    parameters.friction_coefficient = mu;
-    nonlinear::SolverSettings s;
-    s.kinematics = fem::Kinematics::linear;
-    s.subdomains = 8;
-    s.formulation = contact::ContactFormulation::mortar;
-    s.dual.rtol = 1e-8;
-    s.friction = {nonlinear::FrictionModel::coulomb, mu, 0};
-    const fem::Problem problem = problems::hertz_problem(parameters);
-    TimerTable timers;
-    const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
-    ASSERT_TRUE(solution.converged) << solution.reason;
-
-    std::vector<problems::SurfaceSample> surface;
-    std::vector<double> x;
-    for (const auto& p : nonlinear::slave_pressure_by_x(problem, solution, s.kinematics, s.friction))
-    {
-      surface.push_back(
-          {p.x, p.y, p.deformed_x, p.deformed_y, p.pressure, p.shear.x(), p.friction_force.x(), p.slipping});
-      x.push_back(p.x);
-    }
+    const auto [surface, x] = solve_and_sample(parameters, mu);
+    ASSERT_FALSE(surface.empty());
     const problems::HertzAnalytic hertz = problems::hertz_analytic(parameters);
     const problems::CattaneoMindlin theory = problems::cattaneo_mindlin(
         mu, hertz.peak_pressure, hertz.half_width, parameters.line_load, parameters.tangential_load);
@@ -70,6 +85,32 @@ TEST(CattaneoMindlin, CylinderSticksInTheCentreAndSlidesAtTheEdges)
   }
 }
 
+// Q >= mu P (Johnson 1985, section 7.2): the whole contact slides and q = mu p. Under force
+// control that has no unique answer (the slide is undetermined), so the load face is moved:
+// held along x while pressed, then displaced 5 mm (hertz.tangential_displacement; measured:
+// 2 mm leaves 3 of 28 nodes sticking at refinement 1). Reference: the friction force is mu P
+// exactly, every loaded node slides, the shear is mu p(x) of Hertz.
+TEST(CattaneoMindlin, CylinderMovedFarEnoughSlidesEverywhere)
+{
+  const double mu = 0.3;
+  problems::HertzParameters parameters;
+  parameters.tangential_displacement = 5e-3;
+  const auto [surface, x] = solve_and_sample(parameters, mu);
+  ASSERT_FALSE(surface.empty());
+  const problems::HertzAnalytic hertz = problems::hertz_analytic(parameters);
+  const problems::CattaneoMindlin theory = problems::cattaneo_mindlin(mu, hertz.peak_pressure, hertz.half_width,
+                                                                      parameters.line_load, mu * parameters.line_load);
+  const double mu_P = mu * parameters.line_load * parameters.mesh.thickness;
+  const auto f = problems::cattaneo_mindlin_figures(theory, surface, x, mu_P);
+  std::printf("full slide: %d sliding, %d sticking, shear RMS %.2f%% of mu p0, friction force error %.1e\n",
+              f["slipping_nodes"].get<int>(), f["sticking_nodes"].get<int>(),
+              100 * f["shear_rms_error_over_mu_p0"].get<double>(), f["tangential_force_error"].get<double>());
+  EXPECT_EQ(theory.stick_half_width, 0.0);
+  EXPECT_EQ(f["sticking_nodes"].get<int>(), 0);
+  EXPECT_GT(f["slipping_nodes"].get<int>(), 40);
+  EXPECT_LT(f["tangential_force_error"].get<double>(), 1e-6);
+  EXPECT_LT(f["shear_rms_error_over_mu_p0"].get<double>(), 0.03);
+}
 // Reference: the uninterrupted run. Restarted from the state after the normal load (the
 // checkpoint's RestartState, kept in memory), the tangential stage starts from the same
 // tangential multipliers (RestartState::contact_tangential) and ends where the uninterrupted
