@@ -202,7 +202,8 @@ void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatr
       X_any.row(a) = _mesh.nodes.row(cell[a]);
       u_any.row(a) = u.segment<3>(3 * local[a]).transpose();
     }
-    cell_element(type, X_any, u_any, material, _kinematics, element_kind, Integration::full, fe_any, &Ke_any, c);
+    const Integration integration = _mesh.reduced(c) ? Integration::reduced : Integration::full;
+    cell_element(type, X_any, u_any, material, _kinematics, element_kind, integration, fe_any, &Ke_any, c);
     add_cell(local, fe_any, Ke_any, f_int, K);
   }
 }

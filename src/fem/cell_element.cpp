@@ -131,9 +131,9 @@ CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d&
 }
 
 Voigt cell_cauchy_stress(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
-                         const Material& material, Kinematics kinematics, int64_t cell)
+                         const Material& material, Kinematics kinematics, int64_t cell, Integration integration)
 {
-  const CellPointResults points = cell_point_results(type, X, u, material, kinematics, Integration::full, cell);
+  const CellPointResults points = cell_point_results(type, X, u, material, kinematics, integration, cell);
   Voigt sum = Voigt::Zero();
   double volume = 0;
   for (size_t q = 0; q < points.weight.size(); ++q)

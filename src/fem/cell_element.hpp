@@ -39,10 +39,11 @@ CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d&
                                     int64_t cell);
 
 /// Volume-averaged Cauchy stress of one cell (Pa), Voigt [11,22,33,12,23,31]: the weighted mean
-/// of cell_point_results' stresses, as hex8_cauchy_stress.
+/// of cell_point_results' stresses (at the points of `integration`), as hex8_cauchy_stress.
 Eigen::Matrix<double, 6, 1> cell_cauchy_stress(mesh::CellKind type, const Eigen::MatrixX3d& X,
                                                const Eigen::MatrixX3d& u, const Material& material,
-                                               Kinematics kinematics, int64_t cell);
+                                               Kinematics kinematics, int64_t cell,
+                                               Integration integration = Integration::full);
 
 /// Small strain (linear) or Green-Lagrange strain (total Lagrangian), Voigt
 /// [11,22,33,12,23,31] with engineering shears, at each quadrature point of the cell.

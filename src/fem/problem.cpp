@@ -47,6 +47,14 @@ ConstrainedDofs Problem::all_constrained_dofs() const
 void Problem::validate() const
 {
   FETICON_CHECK(mesh.n_cells() > 0, "problem '" << name << "': the mesh has no cells");
+  FETICON_CHECK(mesh.reduced_integration.empty() ||
+                    static_cast<int32_t>(mesh.reduced_integration.size()) == mesh.n_cells(),
+                "problem '" << name << "': reduced-integration flags for " << mesh.reduced_integration.size()
+                            << " cells, the mesh has " << mesh.n_cells());
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    FETICON_CHECK(!mesh.reduced(c) || mesh.cells.kind(c) == mesh::CellKind::hex20,
+                  "problem '" << name << "': cell " << c << " (" << mesh::cell_type(mesh.cells.kind(c)).name
+                              << ") is marked for reduced integration, which only hex20 offers");
   FETICON_CHECK(static_cast<int32_t>(materials.size()) == mesh.n_bodies(),
                 "problem '" << name << "': " << mesh.n_bodies() << " bodies but " << materials.size() << " materials");
   for (size_t b = 0; b < materials.size(); ++b)

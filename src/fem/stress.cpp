@@ -25,7 +25,8 @@ std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& 
         X_any.row(a) = mesh.nodes.row(cell[a]);
         u_any.row(a) = u.segment<3>(3 * cell[a]).transpose();
       }
-      stresses[c] = cell_cauchy_stress(type, X_any, u_any, body_materials[mesh.cell_body[c]], kinematics, c);
+      stresses[c] = cell_cauchy_stress(type, X_any, u_any, body_materials[mesh.cell_body[c]], kinematics, c,
+                                       mesh.reduced(c) ? Integration::reduced : Integration::full);
       continue;
     }
     for (int a = 0; a < 8; ++a)

@@ -184,25 +184,26 @@ void write_mesh(std::ostream& out, const fem::Problem& problem, const Coordinate
     out << n + 1 << ", " << number(x(n, 0)) << ", " << number(x(n, 1)) << ", " << number(x(n, 2)) << '\n';
   for (int32_t b = 0; b < mesh.n_bodies(); ++b)
   {
-    // One *ELEMENT block per cell type of the body.
+    // One *ELEMENT block per cell type of the body, and integration (C3D20 and C3D20R).
     for (const mesh::CellKind kind : mesh::all_cell_kinds)
-    {
-      bool any = false;
-      for (int32_t c = 0; c < mesh.n_cells(); ++c)
-        if (mesh.cell_body[c] == b && mesh.cells.kind(c) == kind)
-        {
-          if (!any)
-            out << "*ELEMENT, TYPE=" << mesh::cell_type(kind).calculix_names.front()
-                << ", ELSET=" << deck_name("B_", mesh.body_names[b]) << '\n';
-          any = true;
-          out << c + 1;
-          // CalculiX reads at most 16 entries a line: the label and 15 nodes, then the rest.
-          const std::span<const int32_t> cell = mesh.cells[c];
-          for (size_t k = 0; k < cell.size(); ++k)
-            out << (k == 15 ? ",\n" : ", ") << cell[k] + 1;
-          out << '\n';
-        }
-    }
+      for (const bool reduced : {false, true})
+      {
+        bool any = false;
+        for (int32_t c = 0; c < mesh.n_cells(); ++c)
+          if (mesh.cell_body[c] == b && mesh.cells.kind(c) == kind && mesh.reduced(c) == reduced)
+          {
+            if (!any)
+              out << "*ELEMENT, TYPE=" << (reduced ? "C3D20R" : mesh::cell_type(kind).calculix_names.front())
+                  << ", ELSET=" << deck_name("B_", mesh.body_names[b]) << '\n';
+            any = true;
+            out << c + 1;
+            // CalculiX reads at most 16 entries a line: the label and 15 nodes, then the rest.
+            const std::span<const int32_t> cell = mesh.cells[c];
+            for (size_t k = 0; k < cell.size(); ++k)
+              out << (k == 15 ? ",\n" : ", ") << cell[k] + 1;
+            out << '\n';
+          }
+      }
   }
 }
 

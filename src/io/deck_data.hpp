@@ -156,7 +156,8 @@ struct DeckData
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> coordinates;
   LabelIndex node_index;
   Labels element_labels;
-  mesh::CellList cells; ///< node indices, CalculiX's order (mesh/cell_type.hpp)
+  mesh::CellList cells;                  ///< node indices, CalculiX's order (mesh/cell_type.hpp)
+  std::vector<char> reduced_integration; ///< per cell: C3D20R (mesh::Mesh::reduced_integration)
   LabelIndex element_index;
 
   std::map<std::string, IndexRuns> node_sets;    ///< node indices, may repeat

@@ -116,6 +116,7 @@ public:
     _data.node_labels.reserve(outline.nodes);
     _data.cells.reserve(outline.elements, 8 * static_cast<size_t>(outline.elements));
     _data.element_labels.reserve(outline.elements);
+    _data.reduced_integration.reserve(outline.elements);
     _data.node_index.reserve(outline.nodes);
     _data.element_index.reserve(outline.elements);
   }
@@ -331,8 +332,7 @@ private:
                  "integration" +
                  (type == "C3D8R" ? std::string(", not reduced with hourglass control)")
                                   : std::string(", without incompatible modes: stiffer in bending)")));
-    if (type == "C3D20R")
-      _data.warn("element type C3D20R (" + _keyword.where.str() + ") is solved as C3D20 (full 3x3x3 integration)");
+    const char reduced = type == "C3D20R" ? 1 : 0; // 2x2x2 Gauss points, as CalculiX
     const size_t n_nodes = static_cast<size_t>(cell_type->n_nodes);
     const std::string count = std::to_string(n_nodes);
     IndexRuns* set = _keyword.has("ELSET") ? &_data.element_sets[required("ELSET")] : nullptr;
@@ -371,6 +371,7 @@ private:
       if (!_data.element_index.insert(label, index))
         fail_at(start, "element " + std::to_string(label) + " is defined twice");
       _data.cells.add(cell_type->kind, nodes_of_element);
+      _data.reduced_integration.push_back(reduced);
       _data.element_labels.push_back(static_cast<int32_t>(label));
       if (set)
         set->push_back(index);

@@ -155,6 +155,8 @@ private:
           _deck.node_labels[m] = _d.node_labels[n];
     }
     mesh.cells = std::move(_d.cells);
+    if (std::ranges::any_of(_d.reduced_integration, [](char r) { return r != 0; }))
+      mesh.reduced_integration = std::move(_d.reduced_integration);
     for (size_t c = 0; c < mesh.cells.size(); ++c)
     {
       for (int32_t& n : mesh.cells.nodes_of(c))

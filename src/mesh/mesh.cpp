@@ -164,6 +164,8 @@ Mesh submesh(const Mesh& mesh, const std::vector<int32_t>& cells, std::vector<in
       cell.push_back(local_of_node[n]);
     piece.cells.add(mesh.cells.kind(c), cell);
     piece.cell_body.push_back(mesh.cell_body[c]);
+    if (!mesh.reduced_integration.empty())
+      piece.reduced_integration.push_back(mesh.reduced_integration[c]);
   }
   for (const auto& [name, ids] : mesh.node_sets)
   {

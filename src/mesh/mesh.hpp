@@ -148,6 +148,12 @@ struct Mesh
   std::map<std::string, std::vector<int32_t>> node_sets;
   /// Named boundary-face sets, each face oriented outward from its body.
   std::map<std::string, std::vector<Face>> face_sets;
+  /// Per cell: integrated with the reduced rule (hex20: CalculiX's C3D20R, 2x2x2 Gauss points;
+  /// fem/reference_element.hpp). Empty when no cell is.
+  std::vector<char> reduced_integration;
+
+  /// Whether cell `cell` is integrated with the reduced rule.
+  bool reduced(int32_t cell) const { return !reduced_integration.empty() && reduced_integration[cell] != 0; }
 
   int32_t n_nodes() const { return static_cast<int32_t>(nodes.rows()); }
   int32_t n_cells() const { return static_cast<int32_t>(cells.size()); }

@@ -135,9 +135,11 @@ fem::QuadratureRule error_rule(CellKind kind)
 }
 
 /// The displacement of the linear problem on `mesh`: body force `b`, u = 0 at the nodes where
-/// `fixed` holds; one row per node.
+/// `fixed` holds, stiffness integrated by `integration` (loads by the full rule); one row per
+/// node.
 template <class BodyForce, class Fixed>
-Eigen::MatrixX3d solve(CellKind kind, const CubeMesh& mesh, const fem::Material& material, BodyForce&& b, Fixed&& fixed)
+Eigen::MatrixX3d solve(CellKind kind, const CubeMesh& mesh, const fem::Material& material, BodyForce&& b, Fixed&& fixed,
+                       fem::Integration integration = fem::Integration::full)
 {
   const Eigen::Index n_dofs = 3 * static_cast<Eigen::Index>(mesh.nodes.size());
   std::vector<Eigen::Triplet<double>> triplets;
@@ -149,7 +151,7 @@ Eigen::MatrixX3d solve(CellKind kind, const CubeMesh& mesh, const fem::Material&
     Eigen::VectorXd f;
     Eigen::MatrixXd K;
     fem::cell_element(kind, X, Eigen::MatrixX3d::Zero(X.rows(), 3), material, fem::Kinematics::linear,
-                      fem::StiffnessKind::material, fem::Integration::full, f, &K, 0);
+                      fem::StiffnessKind::material, integration, f, &K, 0);
     for (size_t a = 0; a < cell.size(); ++a)
       for (size_t c = 0; c < cell.size(); ++c)
         for (int i = 0; i < 3; ++i)
@@ -191,13 +193,13 @@ Eigen::MatrixX3d solve(CellKind kind, const CubeMesh& mesh, const fem::Material&
 }
 
 /// The L2 norm of u_h - u over the cube for the mesh of n^3 cubes.
-double l2_error(CellKind kind, int n)
+double l2_error(CellKind kind, int n, fem::Integration integration)
 {
   const CubeMesh mesh = box_mesh(kind, {n, n, n}, Eigen::Vector3d::Ones());
   // u = 0 on the boundary.
-  const Eigen::MatrixX3d solution = solve(kind, mesh, material, body_force, [](const Eigen::Vector3d& x) {
-    return (x.array() < 1e-12).any() || (x.array() > 1 - 1e-12).any();
-  });
+  const Eigen::MatrixX3d solution = solve(
+      kind, mesh, material, body_force,
+      [](const Eigen::Vector3d& x) { return (x.array() < 1e-12).any() || (x.array() > 1 - 1e-12).any(); }, integration);
   double error = 0;
   const fem::QuadratureRule fine = error_rule(kind);
   for (const auto& cell : mesh.cells)
@@ -221,6 +223,7 @@ struct ConvergenceCase
   CellKind kind;
   std::vector<int> cubes; ///< cubes per side, doubling
   double order;           ///< of the L2 error in h
+  fem::Integration integration = fem::Integration::full;
 };
 
 class ElementConvergence : public ::testing::TestWithParam<ConvergenceCase>
@@ -232,7 +235,7 @@ TEST_P(ElementConvergence, L2ErrorFallsAtTheElementsOrder)
   const ConvergenceCase& c = GetParam();
   std::vector<double> errors;
   for (int n : c.cubes)
-    errors.push_back(l2_error(c.kind, n));
+    errors.push_back(l2_error(c.kind, n, c.integration));
   const double rate = std::log2(errors[errors.size() - 2] / errors.back());
   std::printf("%s: L2 errors", std::string(mesh::cell_type(c.kind).name).c_str());
   for (size_t k = 0; k < errors.size(); ++k)
@@ -246,8 +249,15 @@ INSTANTIATE_TEST_SUITE_P(AllTypes, ElementConvergence,
                                            ConvergenceCase{CellKind::tet4, {4, 8, 16}, 2},
                                            ConvergenceCase{CellKind::wedge6, {4, 8, 16}, 2},
                                            ConvergenceCase{CellKind::tet10, {2, 4, 8}, 3},
-                                           ConvergenceCase{CellKind::hex20, {2, 4, 8}, 3}),
-                         [](const auto& info) { return std::string(mesh::cell_type(info.param.kind).name); });
+                                           ConvergenceCase{CellKind::hex20, {2, 4, 8}, 3},
+                                           // C3D20R: 2x2x2 points keep the order (Zienkiewicz & Taylor,
+                                           // vol. 1, ch. 9: the reduced rule still integrates the
+                                           // complete quadratic's energy exactly)
+                                           ConvergenceCase{CellKind::hex20, {2, 4, 8}, 3, fem::Integration::reduced}),
+                         [](const auto& info) {
+  return std::string(mesh::cell_type(info.param.kind).name) +
+      (info.param.integration == fem::Integration::reduced ? "_reduced" : "");
+});
 } // namespace
 } // namespace feticon
 
@@ -265,14 +275,15 @@ namespace
 /// the linear tetrahedron locks (0.35 of the beam: its constant strain cannot bend) and the
 /// fully integrated hexahedron and wedge lock in shear (0.69) (Zienkiewicz & Taylor, vol. 1,
 /// ch. 11).
-double tip_deflection_over_beam_theory(CellKind kind, int refinement = 1)
+double tip_deflection_over_beam_theory(CellKind kind, int refinement = 1,
+                                       fem::Integration integration = fem::Integration::full)
 {
   const Eigen::Vector3d lengths(10, 1, 1);
   const CubeMesh mesh = box_mesh(kind, {10 * refinement, 2 * refinement, 2 * refinement}, lengths);
   const double q = 1e-3;
   const Eigen::MatrixX3d u = solve(
       kind, mesh, material, [q](const Eigen::Vector3d&) { return Eigen::Vector3d(0, 0, -q); },
-      [](const Eigen::Vector3d& x) { return x.x() < 1e-12; });
+      [](const Eigen::Vector3d& x) { return x.x() < 1e-12; }, integration);
   double tip = 0;
   for (size_t p = 0; p < mesh.nodes.size(); ++p)
     if ((mesh.nodes[p] - Eigen::Vector3d(10, 0.5, 0.5)).norm() < 1e-12)
@@ -296,8 +307,13 @@ TEST(ElementCantilever, QuadraticCellsMeetTheFineSolutionAndLinearTetrahedraLock
     std::printf("cantilever %s: tip deflection / Timoshenko %.4f\n", std::string(mesh::cell_type(kind).name).c_str(),
                 ratio[kind]);
   }
+  // C3D20R: reduced integration softens the cell towards the fine solution.
+  const double reduced = tip_deflection_over_beam_theory(CellKind::hex20, 1, fem::Integration::reduced);
+  std::printf("cantilever hex20 reduced (C3D20R): tip deflection / Timoshenko %.4f\n", reduced);
   EXPECT_NEAR(ratio[CellKind::tet10] / fine, 1.0, 0.02);
   EXPECT_NEAR(ratio[CellKind::hex20] / fine, 1.0, 0.02);
+  EXPECT_NEAR(reduced / fine, 1.0, 0.01);
+  EXPECT_GT(reduced, ratio[CellKind::hex20]);
   EXPECT_LT(ratio[CellKind::tet4], 0.5) << "tet4 locks with two cells through the depth";
   EXPECT_LT(ratio[CellKind::hex8], 0.8) << "hex8 with full integration locks in shear";
 }

@@ -7,6 +7,8 @@
 #include "io/calculix_deck.hpp"
 #include "io/deck.hpp"
 #include "io/problem_file.hpp"
+#include "fem/assembler.hpp"
+#include "fem/cell_element.hpp"
 
 #include "common/error.hpp"
 #include "io_test_files.hpp"
@@ -207,6 +209,70 @@ INSTANTIATE_TEST_SUITE_P(EveryType, DeckCellTypes,
                          [](const ::testing::TestParamInfo<mesh::CellKind>& info) {
   return std::string(mesh::cell_type(info.param).name);
 });
+
+// C3D20R (20-node hexahedra with 2x2x2 Gauss points, as CalculiX integrates them) beside
+// C3D20 in one deck: the export writes each block with its name, the reader keeps the flag per
+// cell, and the assembler integrates those cells with the reduced rule. Reference: the cells'
+// own stiffness from fem::cell_element with Integration::reduced and ::full.
+TEST(DeckReader, C3D20RCellsKeepTheirReducedIntegration)
+{
+  fem::Problem p = punch_problem();
+  p.mesh = mesh::convert_hex8_mesh(p.mesh, mesh::CellKind::hex20);
+  p.mesh.reduced_integration.assign(p.mesh.n_cells(), 0);
+  for (int32_t c = 0; c < p.mesh.n_cells(); ++c)
+    p.mesh.reduced_integration[c] = p.mesh.body_names[p.mesh.cell_body[c]] == "punch" ? 1 : 0;
+  p.validate();
+  CalculixOptions options;
+  options.overclosure = 0;
+  std::ostringstream text;
+  write_calculix_deck(p, options, text);
+  EXPECT_NE(text.str().find("*ELEMENT, TYPE=C3D20R, ELSET=B_punch"), std::string::npos);
+  EXPECT_NE(text.str().find("*ELEMENT, TYPE=C3D20, ELSET=B_base"), std::string::npos);
+  const Deck deck = read_deck(write(test::fresh_directory("deck_c3d20r"), "punch.inp", text.str()));
+  const mesh::Mesh& m = deck.problem.mesh;
+  ASSERT_EQ(m.n_cells(), p.mesh.n_cells());
+  for (const std::string& w : deck.info.warnings)
+    EXPECT_EQ(w.find("C3D20R"), std::string::npos) << w;
+  int reduced = 0;
+  for (int32_t c = 0; c < m.n_cells(); ++c)
+  {
+    EXPECT_EQ(m.reduced(c), m.body_names[m.cell_body[c]] == "B_PUNCH") << "cell " << c;
+    reduced += m.reduced(c) ? 1 : 0;
+  }
+  EXPECT_GT(reduced, 0);
+
+  // One cell of each kind, assembled, against its element stiffness.
+  const fem::Material material = deck.problem.materials[0];
+  for (const bool want_reduced : {false, true})
+  {
+    int32_t c = 0;
+    while (m.reduced(c) != want_reduced)
+      ++c;
+    // The cell alone, its nodes numbered 0..19 in its own order.
+    Eigen::MatrixX3d X(20, 3);
+    for (int a = 0; a < 20; ++a)
+      X.row(a) = m.nodes.row(m.cells[c][a]);
+    mesh::Mesh one;
+    one.nodes = X;
+    const std::vector<int32_t> local = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19};
+    one.cells.add(mesh::CellKind::hex20, local);
+    one.cell_body = {0};
+    one.body_names = {"one"};
+    one.reduced_integration = {static_cast<char>(want_reduced ? 1 : 0)};
+    const fem::Assembler assembler(one, fem::whole_mesh_domain(one), {material}, fem::Kinematics::linear);
+    const Eigen::MatrixXd K_assembled(assembler.stiffness(la::Vector::Zero(60), fem::StiffnessKind::material));
+    Eigen::VectorXd f;
+    Eigen::MatrixXd K_reduced, K_full;
+    fem::cell_element(mesh::CellKind::hex20, X, Eigen::MatrixX3d::Zero(20, 3), material, fem::Kinematics::linear,
+                      fem::StiffnessKind::material, fem::Integration::reduced, f, &K_reduced, c);
+    fem::cell_element(mesh::CellKind::hex20, X, Eigen::MatrixX3d::Zero(20, 3), material, fem::Kinematics::linear,
+                      fem::StiffnessKind::material, fem::Integration::full, f, &K_full, c);
+    const Eigen::MatrixXd& expected = want_reduced ? K_reduced : K_full;
+    const double difference = (K_assembled - expected).cwiseAbs().maxCoeff();
+    EXPECT_LE(difference, 1e-12 * expected.cwiseAbs().maxCoeff()) << (want_reduced ? "reduced" : "full");
+    EXPECT_GT((K_reduced - K_full).cwiseAbs().maxCoeff(), 1e-3 * K_full.cwiseAbs().maxCoeff());
+  }
+}
 
 TEST(DeckReader, ExportedDeckReadsBackAsTheProblem)
 {
