@@ -13,12 +13,12 @@
 /// least aligned with n, and t_2 = n x t_1 (an orthonormal basis of the tangent plane).
 ///
 /// A symmetry plane through the contact (3D): where supports hold a row's slave node along an
-/// axis e, n is normal to e and the row's nodes not held along e carry under 5 % of its norm
-/// (mortar weights one cell row beside the plane), t_1 = e x n / |e x n| and t_2 = n x t_1 =
-/// e. The row of t_2 then nearly repeats the supports' rows (B nearly rank-deficient, the QP's
-/// solution along it nearly not unique); it is kept for the layout of two rows per node and
-/// marked `held`: its multiplier is fixed at 0 (by symmetry no friction acts across the plane)
-/// and only t_1 takes friction, |lambda_1| <= g.
+/// axis e, n is nearly normal to e (|n_e| < 0.05) and the nodes not held along e carry under
+/// 5 % of its norm (mortar weights one cell row beside the plane), t_1 = e x n / |e x n| and
+/// t_2 = n x t_1 (= e where n_e = 0). The row of t_2 then nearly repeats the supports' rows (B
+/// nearly rank-deficient, the QP's solution along it nearly not unique); it is kept for the
+/// layout of two rows per node and marked `held`: its multiplier is fixed at 0 (by symmetry no
+/// friction acts across the plane) and only t_1 takes friction, |lambda_1| <= g.
 ///
 /// The rows' right-hand sides are the caller's: for friction, c_T = -B_T (u - u_0), the slip
 /// of the current outer iteration's start since the last converged load step (u_0), so that
