@@ -154,6 +154,14 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
   const auto [sphere_parameters, block_parameters] = octant_balls(parameters);
   FETICON_CHECK(std::isfinite(parameters.tangential_load) && parameters.tangential_load >= 0,
                 "hertz3d: tangential_load = " << parameters.tangential_load << " N must be >= 0");
+  FETICON_CHECK(std::isfinite(parameters.tangential_displacement) && parameters.tangential_displacement >= 0,
+                "hertz3d: tangential_displacement = " << parameters.tangential_displacement << " m must be >= 0");
+  const bool slid = parameters.tangential_displacement > 0;
+  FETICON_CHECK(!(slid && parameters.tangential_load > 0),
+                "hertz3d: give a tangential load or a tangential displacement, not both");
+  FETICON_CHECK(!slid || parameters.friction_coefficient > 0,
+                "hertz3d: a tangential displacement needs Coulomb friction (its couple balances the full "
+                "slide's force mu F)");
   const double R = parameters.radius;
   const auto ball = [&](const mesh::OctantBallParameters& b) {
     return parameters.half_model() ? mesh::mirrored_across_x(mesh::octant_ball(b)) : mesh::octant_ball(b);
@@ -199,6 +207,8 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
   };
   if (!parameters.half_model())
     p.dirichlet.insert(p.dirichlet.begin(), {"symmetry_x", {0.0, std::nullopt, std::nullopt}});
+  if (slid) // held along x while pressed, then moved
+    p.dirichlet.push_back({"sphere_load", {0.0, std::nullopt, std::nullopt}});
   // A downward traction on the sphere's far face with resultant F / 4 (F / 2): its area from
   // the consistent load of a unit traction, so the resultant is exact for the discrete face.
   const la::Vector weights = load_face_weights(p.mesh);
@@ -207,7 +217,19 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
     area += weights(3 * n + 2);
   const double normal = parameters.modelled() * parameters.load / area;
   p.tractions = {{"sphere_load", Eigen::Vector3d(0, 0, -normal)}};
-  if (parameters.half_model()) // a second stage: the normal load held, the tangential one added
+  if (slid)
+  {
+    std::vector<fem::DirichletCondition> moved = p.dirichlet;
+    moved.back() = {"sphere_load", {parameters.tangential_displacement, std::nullopt, std::nullopt}};
+    p.later_stages.push_back(
+        {{{"sphere_load", Eigen::Vector3d(0, 0, -normal)}},
+         {},
+         moment_free_couple(p.mesh, weights,
+                            parameters.modelled() * parameters.friction_coefficient * parameters.load / area),
+         std::move(moved),
+         1});
+  }
+  else if (parameters.half_model()) // a second stage: the normal load held, the tangential one added
     p.later_stages.push_back(
         {{{"sphere_load", Eigen::Vector3d(parameters.modelled() * parameters.tangential_load / area, 0, -normal)}},
          {},

@@ -39,9 +39,13 @@ namespace feticon::problems
 {
 struct Hertz3dParameters
 {
-  double radius = 0.05;                        ///< R, sphere radius (m)
-  double load = 2.0e4;                         ///< F on the whole sphere (N); the quarter model carries F / 4
-  double tangential_load = 0;                  ///< Q along +x on the whole sphere (N), after F; > 0: half model
+  double radius = 0.05;       ///< R, sphere radius (m)
+  double load = 2.0e4;        ///< F on the whole sphere (N); the quarter model carries F / 4
+  double tangential_load = 0; ///< Q along +x on the whole sphere (N), after F; > 0: half model
+  /// Instead of tangential_load: the load face moved along +x by this much (m) after F (held
+  /// at u_x = 0 before), with the couple of the full slide's force mu F: Q >= mu P, which
+  /// force control cannot drive. Needs friction_coefficient > 0; > 0: half model.
+  double tangential_displacement = 0;
   double friction_coefficient = 0;             ///< Coulomb's mu (contact.friction), for Cattaneo-Mindlin; 0: none
   fem::Material material{2.0e11, 0.3};         ///< the sphere's, and the block's if not given
   std::optional<fem::Material> block_material; ///< the block's if it differs
@@ -55,7 +59,7 @@ struct Hertz3dParameters
   /// quadratic cells' edge nodes on the sphere where the edge lies on it.
   mesh::CellKind cell = mesh::CellKind::hex8;
   fem::Material block() const { return block_material.value_or(material); }
-  bool half_model() const { return tangential_load > 0; }
+  bool half_model() const { return tangential_load > 0 || tangential_displacement > 0; }
   /// The fraction of the sphere modelled: 1/4 or 1/2.
   double modelled() const { return half_model() ? 0.5 : 0.25; }
 };

@@ -34,7 +34,7 @@ public:
     const Hertz3dAnalytic analytic = hertz3d_analytic(_parameters);
     for (const ProfilePoint& p : pressure_profile(samples, true, large))
       out.analytic.push_back(analytic.pressure(p.r));
-    if (_parameters.tangential_load > 0 && _parameters.friction_coefficient > 0)
+    if (_parameters.half_model() && _parameters.friction_coefficient > 0)
       add_cattaneo_mindlin(h, samples, large, out);
     return out;
   }
@@ -44,12 +44,14 @@ private:
   void add_cattaneo_mindlin(const Hertz3dComparison& h, const std::vector<SurfaceSample>& samples, bool large,
                             TheoryComparison& out) const
   {
+    // A tangential displacement is compared with the full slide, Q = mu F.
+    const double mu = _parameters.friction_coefficient;
+    const double Q = _parameters.tangential_displacement > 0 ? mu * _parameters.load : _parameters.tangential_load;
     const CattaneoMindlin theory =
-        cattaneo_mindlin(_parameters.friction_coefficient, h.p0_analytic, h.a_analytic, _parameters.load,
-                         _parameters.tangential_load, HertzContact::sphere);
+        cattaneo_mindlin(mu, h.p0_analytic, h.a_analytic, _parameters.load, Q, HertzContact::sphere);
     for (const ProfilePoint& p : pressure_profile(samples, true, large))
       out.analytic_shear.push_back(theory.shear(p.r));
-    const double applied = _parameters.modelled() * _parameters.tangential_load;
+    const double applied = _parameters.modelled() * Q;
     out.figures["friction"] = cattaneo_mindlin_sphere_figures(theory, samples, large, applied);
     out.summary_line += cattaneo_mindlin_line(out.figures["friction"], theory, applied, "radius");
   }
@@ -69,6 +71,10 @@ std::vector<io::SettingSpec> hertz3d_setting_specs()
       {"hertz3d.tangential_load", "0", "tangential force along +x on the whole sphere (N), applied after the normal "
        "load in a second load stage (needs contact.friction; the half model y >= 0 is meshed: the load breaks "
        "the symmetry x -> -x)", Type::number, {}, 0, inf, false},
+      {"hertz3d.tangential_displacement", "0", "instead of hertz3d.tangential_load: the sphere's far face held "
+       "along x while pressed, then moved along +x by this much (m) in a second load stage, with the couple of "
+       "the full slide's force mu F (Q >= mu P: every node slides; needs Coulomb friction)", Type::number, {}, 0,
+       inf, false},
       {"hertz3d.refinement", "1", "divides hertz3d.element_size", Type::number, {}, 0.05, 64, false},
       {"hertz3d.element_size", "0.00025", "sphere cell size in the contact core at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
       {"hertz3d.master_ratio", "1.3", "block (master) / sphere (slave) cell size in the contact core", Type::number, {}, 0.2, 5, false},
@@ -95,6 +101,10 @@ Hertz3dParameters hertz3d_parameters(const io::Settings& s)
   p.load = s.number("hertz3d.load");
   p.tangential_load = s.number("hertz3d.tangential_load");
   p.friction_coefficient = cattaneo_mindlin_coefficient(s, "hertz3d.tangential_load", p.tangential_load, "N", "sphere");
+  p.tangential_displacement = s.number("hertz3d.tangential_displacement");
+  if (p.tangential_displacement > 0)
+    p.friction_coefficient =
+        cattaneo_mindlin_coefficient(s, "hertz3d.tangential_displacement", p.tangential_displacement, "m", "sphere");
   p.material = material_setting(s);
   p.block_material = block_material_setting(s, "hertz3d", p.material);
   p.element_size = s.number("hertz3d.element_size");

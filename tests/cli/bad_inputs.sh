@@ -112,6 +112,11 @@ expect "tangential load and displacement" "not both" -- --set hertz.tangential_d
   --set hertz.tangential_load=1e7 --set contact.friction.model=coulomb --set contact.friction.coefficient=0.3
 expect "3D tangential load without friction" "needs friction to hold the sphere" -- --set problem=hertz3d \
   --set hertz3d.tangential_load=3600
+expect "3D tangential displacement without friction" "needs friction to hold the sphere" -- \
+  --set problem=hertz3d --set hertz3d.tangential_displacement=1e-4
+expect "3D tangential load and displacement" "not both" -- --set problem=hertz3d \
+  --set hertz3d.tangential_displacement=1e-4 --set hertz3d.tangential_load=3600 \
+  --set contact.friction.model=coulomb --set contact.friction.coefficient=0.3
 expect "3D negative tangential load" "hertz3d.tangential_load = -1 is out of range" -- --set problem=hertz3d \
   --set hertz3d.tangential_load=-1
 expect "friction with the primal penalty" "the primal penalty has no friction" -- --set method=primal_penalty \

@@ -284,3 +284,44 @@ TEST(Hertz3d, CoulombFrictionWithLargeDisplacementsConverges)
   EXPECT_LE(steps_with_held_rows_free(solution), 600); // measured 281
   EXPECT_LE(solution.history.size(), 14u);             // measured 10 outer iterations
 }
+
+TEST(Hertz3d, SphereMovedFarEnoughSlidesEverywhere)
+{
+  // hertz3d.tangential_displacement: the half model pressed by F with its far face held along
+  // x, then that face moved 0.1 mm (20 um slides 77 of 100 nodes at refinement 1). Reference:
+  // Coulomb's law at full slide (Mindlin's Q >= mu P): every loaded node slides with a
+  // friction force of mu times its normal force, and the friction force along x is mu F / 2.
+  // The slip directions turn across x by a few 1e-3 rad (the Poisson expansion under the
+  // pressure), so the x-component falls short of the magnitudes' sum by about their square
+  // (measured 1.2e-5 at refinement 1, as for the dragged 3D blocks of test_friction_blocks).
+  problems::Hertz3dParameters parameters;
+  parameters.refinement = 0.7;
+  parameters.tangential_displacement = 1e-4;
+  parameters.friction_coefficient = 0.3;
+  const fem::Problem problem = problems::hertz3d_problem(parameters);
+  nonlinear::SolverSettings s = coulomb_settings(fem::Kinematics::linear, 4);
+  TimerTable timers;
+  const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
+  ASSERT_TRUE(solution.converged) << solution.reason;
+  double normal = 0, magnitude = 0, along_x = 0;
+  int loaded = 0, sliding = 0;
+  for (const auto& p : nonlinear::slave_pressure_by_x(problem, solution, s.kinematics, s.friction))
+  {
+    if (p.force <= 0)
+      continue;
+    ++loaded;
+    sliding += p.slipping ? 1 : 0;
+    normal += p.force;
+    magnitude += p.friction_force.norm();
+    along_x += p.friction_force.x();
+    EXPECT_NEAR(p.friction_force.norm(), 0.3 * p.force, 1e-6 * 0.3 * parameters.load);
+  }
+  const double mu_F = 0.3 * 0.5 * parameters.load;
+  std::printf("full slide: %d of %d loaded nodes slide, friction magnitude - mu N %.1e, x-force + mu F/2 %.1e\n",
+              sliding, loaded, magnitude / (0.3 * normal) - 1, along_x / mu_F + 1);
+  EXPECT_EQ(sliding, loaded);
+  EXPECT_GT(loaded, 20);
+  EXPECT_NEAR(normal, 0.5 * parameters.load, 1e-6 * parameters.load);
+  EXPECT_NEAR(magnitude, mu_F, 1e-6 * mu_F);
+  EXPECT_NEAR(along_x, -mu_F, 1e-4 * mu_F);
+}
