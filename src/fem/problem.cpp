@@ -51,7 +51,7 @@ void Problem::validate() const
                     static_cast<int32_t>(mesh.reduced_integration.size()) == mesh.n_cells(),
                 "problem '" << name << "': reduced-integration flags for " << mesh.reduced_integration.size()
                             << " cells, the mesh has " << mesh.n_cells());
-  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+  for (int32_t c = 0; c < static_cast<int32_t>(mesh.reduced_integration.size()); ++c)
     FETICON_CHECK(!mesh.reduced(c) || mesh.cells.kind(c) == mesh::CellKind::hex20,
                   "problem '" << name << "': cell " << c << " (" << mesh::cell_type(mesh.cells.kind(c)).name
                               << ") is marked for reduced integration, which only hex20 offers");

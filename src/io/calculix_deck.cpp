@@ -188,6 +188,8 @@ void write_mesh(std::ostream& out, const fem::Problem& problem, const Coordinate
     for (const mesh::CellKind kind : mesh::all_cell_kinds)
       for (const bool reduced : {false, true})
       {
+        if (reduced && mesh.reduced_integration.empty())
+          continue;
         bool any = false;
         for (int32_t c = 0; c < mesh.n_cells(); ++c)
           if (mesh.cell_body[c] == b && mesh.cells.kind(c) == kind && mesh.reduced(c) == reduced)

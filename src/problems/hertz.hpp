@@ -35,6 +35,12 @@ struct HertzParameters
   fem::Material material{2.0e11, 0.3};         ///< the cylinder's, and the block's if not given
   std::optional<fem::Material> block_material; ///< the block's if it differs
   fem::Material block() const { return block_material.value_or(material); }
+  /// The Q (N/m) that Cattaneo-Mindlin is compared with: tangential_load, or mu P for the
+  /// full slide a tangential displacement drives; 0 without either.
+  double compared_tangential_load() const
+  {
+    return tangential_displacement > 0 ? friction_coefficient * line_load : tangential_load;
+  }
 };
 
 /// The problem: bodies "cylinder" (slave surface "cylinder_contact") and "block" (master

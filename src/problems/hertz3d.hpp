@@ -60,6 +60,12 @@ struct Hertz3dParameters
   mesh::CellKind cell = mesh::CellKind::hex8;
   fem::Material block() const { return block_material.value_or(material); }
   bool half_model() const { return tangential_load > 0 || tangential_displacement > 0; }
+  /// The Q (N, whole sphere) that Mindlin is compared with: tangential_load, or mu F for the
+  /// full slide a tangential displacement drives.
+  double compared_tangential_load() const
+  {
+    return tangential_displacement > 0 ? friction_coefficient * load : tangential_load;
+  }
   /// The fraction of the sphere modelled: 1/4 or 1/2.
   double modelled() const { return half_model() ? 0.5 : 0.25; }
 };

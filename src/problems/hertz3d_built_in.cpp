@@ -44,11 +44,9 @@ private:
   void add_cattaneo_mindlin(const Hertz3dComparison& h, const std::vector<SurfaceSample>& samples, bool large,
                             TheoryComparison& out) const
   {
-    // A tangential displacement is compared with the full slide, Q = mu F.
-    const double mu = _parameters.friction_coefficient;
-    const double Q = _parameters.tangential_displacement > 0 ? mu * _parameters.load : _parameters.tangential_load;
-    const CattaneoMindlin theory =
-        cattaneo_mindlin(mu, h.p0_analytic, h.a_analytic, _parameters.load, Q, HertzContact::sphere);
+    const double Q = _parameters.compared_tangential_load();
+    const CattaneoMindlin theory = cattaneo_mindlin(_parameters.friction_coefficient, h.p0_analytic, h.a_analytic,
+                                                    _parameters.load, Q, HertzContact::sphere);
     for (const ProfilePoint& p : pressure_profile(samples, true, large))
       out.analytic_shear.push_back(theory.shear(p.r));
     const double applied = _parameters.modelled() * Q;
@@ -100,11 +98,10 @@ Hertz3dParameters hertz3d_parameters(const io::Settings& s)
   p.radius = s.number("hertz3d.radius");
   p.load = s.number("hertz3d.load");
   p.tangential_load = s.number("hertz3d.tangential_load");
-  p.friction_coefficient = cattaneo_mindlin_coefficient(s, "hertz3d.tangential_load", p.tangential_load, "N", "sphere");
   p.tangential_displacement = s.number("hertz3d.tangential_displacement");
-  if (p.tangential_displacement > 0)
-    p.friction_coefficient =
-        cattaneo_mindlin_coefficient(s, "hertz3d.tangential_displacement", p.tangential_displacement, "m", "sphere");
+  p.friction_coefficient = p.tangential_displacement > 0
+      ? cattaneo_mindlin_coefficient(s, "hertz3d.tangential_displacement", p.tangential_displacement, "m", "sphere")
+      : cattaneo_mindlin_coefficient(s, "hertz3d.tangential_load", p.tangential_load, "N", "sphere");
   p.material = material_setting(s);
   p.block_material = block_material_setting(s, "hertz3d", p.material);
   p.element_size = s.number("hertz3d.element_size");

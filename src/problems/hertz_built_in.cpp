@@ -33,8 +33,7 @@ public:
     const HertzAnalytic analytic = hertz_analytic(_parameters);
     for (const ProfilePoint& p : pressure_profile(samples, false, large))
       out.analytic.push_back(analytic.pressure(p.r));
-    if ((_parameters.tangential_load > 0 || _parameters.tangential_displacement > 0) &&
-        _parameters.friction_coefficient > 0)
+    if (_parameters.compared_tangential_load() > 0 && _parameters.friction_coefficient > 0)
       add_cattaneo_mindlin(h, samples, large, out);
     return out;
   }
@@ -45,9 +44,9 @@ private:
   void add_cattaneo_mindlin(const HertzComparison& h, const std::vector<SurfaceSample>& samples, bool large,
                             TheoryComparison& out) const
   {
-    const double mu = _parameters.friction_coefficient;
-    const double Q = _parameters.tangential_displacement > 0 ? mu * _parameters.line_load : _parameters.tangential_load;
-    const CattaneoMindlin theory = cattaneo_mindlin(mu, h.p0_analytic, h.a_analytic, _parameters.line_load, Q);
+    const double Q = _parameters.compared_tangential_load();
+    const CattaneoMindlin theory =
+        cattaneo_mindlin(_parameters.friction_coefficient, h.p0_analytic, h.a_analytic, _parameters.line_load, Q);
     std::vector<double> x;
     for (const ProfilePoint& p : pressure_profile(samples, false, large))
     {
@@ -103,11 +102,9 @@ HertzParameters hertz_parameters(const io::Settings& s)
   p.tangential_load = s.number("hertz.tangential_load");
   p.tangential_displacement = s.number("hertz.tangential_displacement");
   p.mesh.full = p.tangential_load > 0 || p.tangential_displacement > 0;
-  p.friction_coefficient =
-      cattaneo_mindlin_coefficient(s, "hertz.tangential_load", p.tangential_load, "N/m", "cylinder");
-  if (p.tangential_displacement > 0)
-    p.friction_coefficient =
-        cattaneo_mindlin_coefficient(s, "hertz.tangential_displacement", p.tangential_displacement, "m", "cylinder");
+  p.friction_coefficient = p.tangential_displacement > 0
+      ? cattaneo_mindlin_coefficient(s, "hertz.tangential_displacement", p.tangential_displacement, "m", "cylinder")
+      : cattaneo_mindlin_coefficient(s, "hertz.tangential_load", p.tangential_load, "N/m", "cylinder");
   p.mesh.kind = s.text("hertz.mesh") == "tensor" ? HertzMeshKind::tensor : HertzMeshKind::graded;
   p.mesh.refinement = s.number("hertz.refinement");
   p.mesh.element_size = s.number("hertz.element_size");

@@ -390,9 +390,11 @@ MM_MUTATORS = [number_replacer(EXTREMES), mm_header, mm_size]
 # numbers it parses, the references between nodes, elements, sets and surfaces, *INCLUDE, and
 # the magnitudes a valid deck may carry (1e-30 to 1e30 moduli, loads and coordinates).
 
-DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_friction.inp", "punch_tet10.inp"]
-# Seeds of our own (tests/data/fuzz/): a C3D10 deck, feticon's export of gmsh_tet10.yaml.
-FUZZ_FOLDER_DECKS = {"punch_tet10.inp"}
+DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_friction.inp", "punch_tet10.inp",
+              "punch_c3d20r.inp"]
+# Seeds of our own (tests/data/fuzz/): a C3D10 deck, feticon's export of gmsh_tet10.yaml, and
+# a C3D20 / C3D20R one (reduced integration per cell), the same punch meshed with hex20.
+FUZZ_FOLDER_DECKS = {"punch_tet10.inp", "punch_c3d20r.inp"}
 # Seeds made from another by an edit: contact1 with Coulomb friction (*FRICTION after the
 # pressure-overclosure law, as tests/cli/deck_friction.sh adds it to CalculiX's decks).
 DECK_DERIVED = {"contact1_friction.inp": ("contact1.inp", "*SURFACE BEHAVIOR", "*FRICTION\n0.3, 1e6\n")}
