@@ -327,15 +327,19 @@ void summarize_contact(RunContext& run, const nonlinear::ContactSolution& soluti
 }
 
 /// No silent wrong answers: the deck's and the solver's warnings, and a completed result that
-/// is not what it claims (contact forces that do not balance the load) says so.
+/// is not what it claims (contact forces that do not balance the load) says so. `logged`: what
+/// the library warned of on its way (the mesh cache, the preconditioner's scaling).
 nlohmann::ordered_json run_warnings(const RunContext& run, const nonlinear::ContactSolution& solution,
-                                    const nlohmann::ordered_json& summary)
+                                    const nlohmann::ordered_json& summary, const std::vector<std::string>& logged)
 {
   nlohmann::ordered_json warnings = nlohmann::ordered_json::array();
   for (const std::string& w : run.deck.warnings)
     warnings.push_back("deck: " + w);
   for (const std::string& w : solution.warnings)
     warnings.push_back(w);
+  for (const std::string& w : logged)
+    if (std::ranges::find(warnings, nlohmann::ordered_json(w)) == warnings.end())
+      warnings.push_back(w);
   if (run.calculix)
     for (const std::string& w : run.calculix->warnings())
       warnings.push_back("deck output: " + w);
@@ -418,9 +422,11 @@ void run(const RunOptions& options)
   summarize_problem(run, solution, summary);
   summarize_contact(run, solution, summary);
   summary["qp"] = qp_json(solution);
-  const nlohmann::ordered_json warnings = run_warnings(run, solution, summary);
+  const std::vector<std::string> logged = log::take_warnings(); // already on stderr
+  const nlohmann::ordered_json warnings = run_warnings(run, solution, summary, logged);
   for (const auto& w : warnings)
-    log::warning(w.get<std::string>());
+    if (std::ranges::find(logged, w.get<std::string>()) == logged.end())
+      log::warning(w.get<std::string>());
   summary["warnings"] = warnings;
   write_results(run, solution, summary);
   FETICON_CHECK(solution.completed,

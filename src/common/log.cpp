@@ -1,6 +1,8 @@
 #include "common/log.hpp"
 
+#include <algorithm>
 #include <iostream>
+#include <mutex>
 
 namespace feticon::log
 {
@@ -8,6 +10,8 @@ namespace
 {
 Level current_level = Level::summary;
 int current_rank = 0;
+std::mutex pending_mutex;
+std::vector<std::string> pending; ///< warnings not yet taken, each once
 } // namespace
 
 void set_level(Level l) { current_level = l; }
@@ -21,5 +25,23 @@ void write(Level l, const std::string& line)
   // Progress goes to stdout; warnings to stderr so that they survive redirection of output.
   std::ostream& os = (l == Level::warning) ? std::cerr : std::cout;
   os << line << '\n' << std::flush;
+}
+
+void warning(const std::string& line)
+{
+  {
+    const std::lock_guard lock(pending_mutex);
+    if (std::ranges::find(pending, line) == pending.end())
+      pending.push_back(line);
+  }
+  write(Level::warning, "warning: " + line);
+}
+
+std::vector<std::string> take_warnings()
+{
+  const std::lock_guard lock(pending_mutex);
+  std::vector<std::string> out;
+  out.swap(pending);
+  return out;
 }
 } // namespace feticon::log

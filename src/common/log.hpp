@@ -6,6 +6,7 @@
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace feticon::log
 {
@@ -23,7 +24,11 @@ Level level();
 void set_rank(int rank);
 
 void write(Level level, const std::string& line);
-inline void warning(const std::string& line) { write(Level::warning, "warning: " + line); }
+/// Writes "warning: line" and keeps `line` for take_warnings(), whatever the level and rank:
+/// a warning from deep in the solver reaches the run's summary.json without a return path.
+void warning(const std::string& line);
+/// The warning lines since the last call, each once, in the order first logged.
+std::vector<std::string> take_warnings();
 inline void info(const std::string& line) { write(Level::summary, line); }
 inline void iteration(const std::string& line) { write(Level::iterations, line); }
 inline bool enabled(Level l) { return static_cast<int>(l) <= static_cast<int>(level()); }

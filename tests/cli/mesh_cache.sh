@@ -33,12 +33,14 @@ run --output "$work/rebuilt"
 cmp "$work/made/contact_pressure.csv" "$work/rebuilt/contact_pressure.csv"
 
 # 4. A cache that cannot be written (a file where its folder should be) costs one warning line
-#    naming it, not the run.
+#    naming it (on stderr and in summary.json), not the run.
 echo "not a folder" > "$work/blocked"
 FETICON_MESH_CACHE="$work/blocked" run --output "$work/blocked_run" 2> "$work/stderr"
 [[ $(wc -l < "$work/stderr") -eq 1 ]] && grep -q "mesh cache: .*$work/blocked" "$work/stderr" \
   || { echo "expected one warning naming the cache folder:"; cat "$work/stderr"; exit 1; }
 cmp "$work/made/contact_pressure.csv" "$work/blocked_run/contact_pressure.csv"
+/usr/bin/python3 -c "import json,sys; w=json.load(open(sys.argv[1]))['warnings']; sys.exit(not any('mesh cache' in x for x in w))" \
+  "$work/blocked_run/summary.json" || { echo "summary.json does not list the mesh cache warning"; exit 1; }
 
 # 5. Gmsh is loaded only when a mesh is made: not for the mapped (tensor) mesh nor a cached
 #    one (the dynamic linker's trace of the files it opens).
