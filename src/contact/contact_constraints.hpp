@@ -161,6 +161,14 @@ struct ContactConstraints
   std::vector<Eigen::Vector2d> xi;
   /// Face projection or edge fallback, per row.
   std::vector<ProjectionKind> kind;
+  /// Sum of the master weights w_a of each row: the share of the row's force on its slave node
+  /// that the master surface takes. 1, but for the rows of the edge nodes of quadratic slave
+  /// faces in mortar, 1 - 2 alpha: their rows put the rest on their edge's corners
+  /// (mortar_face_integration.hpp).
+  std::vector<double> master_share;
+  /// How the rows were made: mortar rows' force over slave_area is the nodal pressure of the
+  /// dual traction at every node, quadratic faces included.
+  ContactFormulation formulation = ContactFormulation::node_to_segment;
   /// Search distance d_s actually used (m).
   double search_distance = 0;
   /// Slave nodes of the pair, and those skipped because they overhang the master surface.

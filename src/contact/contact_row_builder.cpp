@@ -14,6 +14,7 @@ void ContactRowBuilder::append_fields(const ContactRowFields& fields, double nor
   _out.master_face.push_back(fields.master_face);
   _out.xi.push_back(fields.xi);
   _out.kind.push_back(fields.kind);
+  _out.master_share.push_back(fields.master_share);
 }
 
 void ContactRowBuilder::add(const ContactRowFields& fields,
@@ -42,9 +43,9 @@ void ContactRowBuilder::copy(const ContactConstraints& from, la::Index i, double
   const auto row = static_cast<int>(n_rows());
   for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(from.B, i); it; ++it)
     _triplets.emplace_back(row, static_cast<int>(it.col()), it.value());
-  append_fields(
-      {from.slave_node[i], from.normal[i], gap, from.slave_area[i], from.master_face[i], from.xi[i], from.kind[i]},
-      from.row_norm[i]);
+  append_fields({from.slave_node[i], from.normal[i], gap, from.slave_area[i], from.master_face[i], from.xi[i],
+                 from.kind[i], from.master_share[i]},
+                from.row_norm[i]);
 }
 
 void ContactRowBuilder::finish(la::Index n_dofs, ContactConstraints& into)
@@ -65,6 +66,7 @@ void ContactRowBuilder::finish(la::Index n_dofs, ContactConstraints& into)
   into.master_face = std::move(_out.master_face);
   into.xi = std::move(_out.xi);
   into.kind = std::move(_out.kind);
+  into.master_share = std::move(_out.master_share);
   _out = {};
   _triplets.clear();
 }

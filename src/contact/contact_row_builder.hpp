@@ -24,6 +24,7 @@ struct ContactRowFields
   int32_t master_face = 0;
   Eigen::Vector2d xi = Eigen::Vector2d::Zero();
   ProjectionKind kind = ProjectionKind::face;
+  double master_share = 1; ///< ContactConstraints::master_share
 };
 
 class ContactRowBuilder

@@ -24,14 +24,37 @@ constexpr double max_step = 2.0;
 /// Step of the central differences of the tangents that give the curvature term.
 constexpr double difference_step = 1e-5;
 
-/// Sub-facets of a quadratic face as local node lists (see file comment).
-const std::vector<std::vector<int>>& sub_facets(FaceKind kind)
+} // namespace
+
+const std::vector<std::vector<int>>& face_sub_facets(FaceKind kind)
 {
+  static const std::vector<std::vector<int>> tri3 = {{0, 1, 2}};
+  static const std::vector<std::vector<int>> quad4 = {{0, 1, 2, 3}};
   static const std::vector<std::vector<int>> tri6 = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
   static const std::vector<std::vector<int>> quad8 = {{0, 4, 7}, {4, 1, 5}, {5, 2, 6}, {7, 6, 3}, {4, 5, 6, 7}};
-  return kind == FaceKind::tri6 ? tri6 : quad8;
+  switch (kind)
+  {
+  case FaceKind::tri3:
+    return tri3;
+  case FaceKind::quad4:
+    return quad4;
+  case FaceKind::tri6:
+    return tri6;
+  case FaceKind::quad8:
+    return quad8;
+  }
+  return quad4;
 }
-} // namespace
+
+Eigen::Vector2d face_node_xi(FaceKind kind, int a)
+{
+  const int corners = mesh::face_corners(kind);
+  if (a < corners)
+    return face_corner_xi(kind, a);
+  // Edge node e joins corners e and e + 1.
+  const int e = a - corners;
+  return 0.5 * (face_corner_xi(kind, e) + face_corner_xi(kind, (e + 1) % corners));
+}
 
 FaceGeometry current_face_geometry(const mesh::Mesh& mesh, const la::Vector& u, const mesh::Face& face)
 {
@@ -173,7 +196,7 @@ Eigen::VectorXd face_lumped_areas(const FaceGeometry& face)
     break;
   }
   Eigen::VectorXd areas = Eigen::VectorXd::Zero(face.x.rows());
-  for (const std::vector<int>& facet : sub_facets(face.kind))
+  for (const std::vector<int>& facet : face_sub_facets(face.kind))
   {
     FaceGeometry sub;
     sub.kind = facet.size() == 3 ? FaceKind::tri3 : FaceKind::quad4;

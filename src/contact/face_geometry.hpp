@@ -23,6 +23,8 @@
 
 #include <Eigen/Dense>
 
+#include <vector>
+
 namespace feticon::contact
 {
 /// Node coordinates of a face, one row per face node (at most 8).
@@ -43,6 +45,11 @@ FaceGeometry current_face_geometry(const mesh::Mesh& mesh, const la::Vector& u, 
 
 /// Reference coordinates of corner k of a face type.
 Eigen::Vector2d face_corner_xi(mesh::FaceKind kind, int k);
+/// Reference coordinates of node a (corners, then edge midpoints) of a face type.
+Eigen::Vector2d face_node_xi(mesh::FaceKind kind, int a);
+/// Linear sub-facets of a face as local node lists, counter-clockwise seen from outside (file
+/// comment): the face itself for tri3 and quad4.
+const std::vector<std::vector<int>>& face_sub_facets(mesh::FaceKind kind);
 /// How far xi lies outside the reference face, in reference units: max(|xi|, |eta|) - 1 for a
 /// quadrilateral, max(-xi, -eta, xi + eta - 1) for a triangle; <= 0 inside.
 double outside_distance(mesh::FaceKind kind, const Eigen::Vector2d& xi);

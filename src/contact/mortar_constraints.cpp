@@ -1,6 +1,7 @@
 #include "contact/mortar_constraints.hpp"
 #include "contact/contact_row_builder.hpp"
 
+#include "contact/mortar_face_integration.hpp"
 #include "contact/surface_search.hpp"
 
 #include "common/error.hpp"
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 #include <utility>
 
 namespace feticon::contact
@@ -66,12 +68,117 @@ void check_mortar_input(const mesh::Mesh& mesh, const la::Vector& u, const Conta
                                               << "slave faces: use contact.formulation=node_to_segment");
   FETICON_CHECK(!mesh.face_set(pair.slave).empty(), "mortar: slave face set '" << pair.slave << "' is empty");
   FETICON_CHECK(!mesh.face_set(pair.master).empty(), "mortar: master face set '" << pair.master << "' is empty");
-  for (const std::string& set : {pair.slave, pair.master})
-    for (const mesh::Face& face : mesh.face_set(set))
-      FETICON_CHECK(face.kind == mesh::FaceKind::quad4,
-                    "mortar: face set '" << set << "' has faces other than quad4 (faces of tetrahedra, wedges or "
-                                         << "quadratic cells); mortar rows integrate quad4 faces only: use "
-                                         << "contact.formulation=node_to_segment");
+}
+
+/// Per slave index: the corners at the ends of its edge if it is an edge node of a quadratic
+/// slave face, else {-1, -1}.
+std::vector<std::array<int32_t, 2>> quadratic_edge_ends(const mesh::Mesh& mesh, const std::string& slave,
+                                                        const SlaveNodalAreas& nodes)
+{
+  std::vector<std::array<int32_t, 2>> ends(nodes.nodes.size(), {-1, -1});
+  for (const mesh::Face& face : mesh.face_set(slave))
+  {
+    if (!is_quadratic(face.kind))
+      continue;
+    // Edge node corners + e joins corners e and e + 1 (fem/reference_face.hpp).
+    const int corners = mesh::face_corners(face.kind);
+    for (int e = 0; e < corners; ++e)
+      ends[nodes.index_of(face[corners + e])] = {face[e], face[(e + 1) % corners]};
+  }
+  return ends;
+}
+
+/// Unit normals at the nodes of the master faces other than quad4: the mean of the normals there
+/// of the faces around each node.
+std::unordered_map<int32_t, Eigen::Vector3d> master_nodal_normals(const mesh::Mesh& mesh, const la::Vector& u,
+                                                                  const std::vector<mesh::Face>& faces)
+{
+  std::unordered_map<int32_t, Eigen::Vector3d> normals;
+  for (const mesh::Face& face : faces)
+  {
+    if (face.kind == mesh::FaceKind::quad4)
+      continue;
+    const FaceGeometry geometry = current_face_geometry(mesh, u, face);
+    for (int a = 0; a < face.size(); ++a)
+    {
+      auto [it, inserted] = normals.try_emplace(face[a], Eigen::Vector3d::Zero());
+      it->second += face_normal(geometry, face_node_xi(face.kind, a));
+    }
+  }
+  for (auto& [node, n] : normals)
+    n.normalize();
+  return normals;
+}
+
+/// The normal of row i: the node-to-segment one (the master face's normal at the closest point)
+/// on quad4 faces, the hex8 runs' rows; on the other face types the nodal normals interpolated
+/// at the closest point, continuous across the master faces' edges. Face normals jump there,
+/// by a few 1e-3 rad between the triangles of a deformed flat surface, and a weighted gap
+/// n . (x_j - sum_a w_a x_a) whose master point lies off the normal through x_j jumps with
+/// them: tet10 hertz3d with large displacements cycled between two row sets at |du|/|u| =
+/// 1.1e-6 with the face normals.
+Eigen::Vector3d row_normal(const ContactConstraints& closest, la::Index i, const std::vector<mesh::Face>& master_faces,
+                           const std::unordered_map<int32_t, Eigen::Vector3d>& master_normals)
+{
+  const mesh::Face& face = master_faces[closest.master_face[i]];
+  if (face.kind == mesh::FaceKind::quad4 || closest.kind[i] != ProjectionKind::face)
+    return closest.normal[i];
+  const Eigen::VectorXd shape = face_weights(face.kind, closest.xi[i]);
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (int a = 0; a < face.size(); ++a)
+    n += shape(a) * master_normals.at(face[a]);
+  return n.normalized();
+}
+
+/// Nodal areas and segments of one slave face.
+struct FaceSegments
+{
+  Eigen::VectorXd nodal_area;                                ///< D_j (D~_j of quadratic faces)
+  std::vector<std::pair<int32_t, Eigen::MatrixXd>> segments; ///< (master face, coupling)
+};
+
+/// The dual basis of a slave face and its segments with the candidate master faces (those
+/// sharing no node with it). quad4 against quad4 goes through integrate_segment, the arithmetic
+/// of hex8 runs; any other pair through integrate_face_segment.
+FaceSegments integrate_slave_face(const mesh::Face& face, const FaceGeometry& slave,
+                                  const std::vector<mesh::Face>& master_faces,
+                                  const std::vector<FaceGeometry>& master_geometry, const SurfaceSearch& search,
+                                  const SegmentOptions& options, std::vector<int32_t>& candidates)
+{
+  FaceSegments out;
+  BoundingBox box;
+  for (Eigen::Index k = 0; k < slave.x.rows(); ++k)
+    box.extend(slave.x.row(k).transpose());
+  search.candidates(box, candidates);
+  std::optional<DualBasis> quad_dual;
+  std::optional<FaceDualBasis> dual;
+  if (face.kind == mesh::FaceKind::quad4)
+  {
+    quad_dual = dual_basis(slave.quad());
+    out.nodal_area = quad_dual->nodal_area;
+  }
+  else
+  {
+    dual = face_dual_basis(slave);
+    out.nodal_area = dual->nodal_area;
+  }
+  for (const int32_t f : candidates)
+  {
+    if (share_a_node(face, master_faces[f]))
+      continue;
+    if (quad_dual && master_faces[f].kind == mesh::FaceKind::quad4)
+    {
+      if (const std::optional<SegmentCoupling> segment =
+              integrate_segment(slave.quad(), *quad_dual, master_geometry[f].quad(), options))
+        out.segments.emplace_back(f, segment->coupling);
+      continue;
+    }
+    if (!dual)
+      dual = face_dual_basis(slave);
+    if (std::optional<Eigen::MatrixXd> segment = integrate_face_segment(slave, *dual, master_geometry[f], options))
+      out.segments.emplace_back(f, std::move(*segment));
+  }
+  return out;
 }
 } // namespace
 
@@ -111,14 +218,14 @@ MortarCoupling compute_mortar_coupling(const mesh::Mesh& mesh, const la::Vector&
   const std::vector<mesh::Face>& slave_faces = mesh.face_set(pair.slave);
   const std::vector<mesh::Face>& master_faces = mesh.face_set(pair.master);
 
-  std::vector<QuadCoordinates> master_quads;
-  master_quads.reserve(master_faces.size());
+  std::vector<FaceGeometry> master_geometry;
+  master_geometry.reserve(master_faces.size());
   std::vector<BoundingBox> boxes(master_faces.size());
   for (size_t f = 0; f < master_faces.size(); ++f)
   {
-    master_quads.push_back(current_face_coordinates(mesh, u, master_faces[f]));
-    for (int a = 0; a < 4; ++a)
-      boxes[f].extend(master_quads[f].row(a).transpose());
+    master_geometry.push_back(current_face_geometry(mesh, u, master_faces[f]));
+    for (Eigen::Index a = 0; a < master_geometry[f].x.rows(); ++a)
+      boxes[f].extend(master_geometry[f].x.row(a).transpose());
     boxes[f].inflate(search_distance);
   }
   const SurfaceSearch search(std::move(boxes));
@@ -130,13 +237,8 @@ MortarCoupling compute_mortar_coupling(const mesh::Mesh& mesh, const la::Vector&
   coupling.slave.area = la::Vector::Zero(n_slave);
   // The segments of every slave face on the threads, then summed in face order: M and the
   // nodal areas are the same bit for bit whatever the thread count.
-  struct FaceSegments
-  {
-    DualBasis dual;
-    std::vector<std::pair<int32_t, Eigen::Matrix4d>> segments; ///< (master face, coupling)
-  };
   std::vector<FaceSegments> per_face(slave_faces.size());
-  // A face none of whose corners has a row adds nothing to the rows' D_j and M_ja: skipped (it
+  // A face none of whose nodes has a row adds nothing to the rows' D_j and M_ja: skipped (it
   // keeps a zero nodal area and no segments). The outer loop of large displacements has rows
   // only near contact, a few of the faces.
   std::vector<char> is_row_node;
@@ -155,39 +257,28 @@ MortarCoupling compute_mortar_coupling(const mesh::Mesh& mesh, const la::Vector&
     std::vector<int32_t> candidates;
     const size_t end = std::min(slave_faces.size(), static_cast<size_t>(chunk + 1) * faces_per_chunk);
     for (size_t i = static_cast<size_t>(chunk) * faces_per_chunk; i < end; ++i)
-    {
-      const mesh::Face& face = slave_faces[i];
-      if (!integrated(face))
-        continue;
-      const QuadCoordinates slave_quad = current_face_coordinates(mesh, u, face);
-      per_face[i].dual = dual_basis(slave_quad);
-      BoundingBox box;
-      for (int k = 0; k < 4; ++k)
-        box.extend(slave_quad.row(k).transpose());
-      search.candidates(box, candidates);
-      for (const int32_t f : candidates)
-        if (!share_a_node(face, master_faces[f]))
-          if (const std::optional<SegmentCoupling> segment =
-                  integrate_segment(slave_quad, per_face[i].dual, master_quads[f], options))
-            per_face[i].segments.emplace_back(f, segment->coupling);
-    }
+      if (integrated(slave_faces[i]))
+        per_face[i] = integrate_slave_face(slave_faces[i], current_face_geometry(mesh, u, slave_faces[i]), master_faces,
+                                           master_geometry, search, options, candidates);
   });
 
   std::vector<CouplingRow> rows(n_slave);
   for (size_t i = 0; i < slave_faces.size(); ++i)
   {
     const mesh::Face& face = slave_faces[i];
-    std::array<int32_t, 4> slave_index{};
-    for (int k = 0; k < 4; ++k)
+    if (per_face[i].nodal_area.size() == 0)
+      continue;
+    std::array<int32_t, 8> slave_index{};
+    for (int k = 0; k < face.size(); ++k)
     {
       slave_index[k] = coupling.slave.index_of(face[k]);
-      coupling.slave.area(slave_index[k]) += per_face[i].dual.nodal_area(k);
+      coupling.slave.area(slave_index[k]) += per_face[i].nodal_area(k);
     }
     for (const auto& [f, segment] : per_face[i].segments)
     {
       ++coupling.n_segments;
-      for (int k = 0; k < 4; ++k)
-        for (int a = 0; a < 4; ++a)
+      for (int k = 0; k < face.size(); ++k)
+        for (int a = 0; a < master_faces[f].size(); ++a)
           add_to_row(rows[slave_index[k]], master_faces[f][a], segment(k, a));
     }
   }
@@ -213,6 +304,10 @@ ContactConstraints build_mortar_constraints(const mesh::Mesh& mesh, const la::Ve
   out.search_distance = closest.search_distance;
   out.n_slave_nodes = closest.n_slave_nodes;
   out.n_overhanging = closest.n_overhanging;
+  out.formulation = ContactFormulation::mortar;
+  const std::vector<mesh::Face>& master_faces = mesh.face_set(pair.master);
+  const std::unordered_map<int32_t, Eigen::Vector3d> master_normals = master_nodal_normals(mesh, u, master_faces);
+  const std::vector<std::array<int32_t, 2>> edge_ends = quadratic_edge_ends(mesh, pair.slave, coupling.slave);
   ContactRowBuilder rows;
   CouplingRow weights;
   for (la::Index i = 0; i < closest.n_rows(); ++i)
@@ -233,17 +328,25 @@ ContactConstraints build_mortar_constraints(const mesh::Mesh& mesh, const la::Ve
       ++out.n_overhanging;
       continue;
     }
-    const Eigen::Vector3d n = closest.normal[i];
-    Eigen::Vector3d master_point = Eigen::Vector3d::Zero();
+    // An edge node's row is that of its transformed value x~_m = (x_m - alpha (x_c1 + x_c2)) /
+    // (1 - 2 alpha) (mortar_face_integration.hpp), scaled to a unit coefficient on x_m: the
+    // master weights times 1 - 2 alpha, its edge's corners alpha each (all summing to 1), and
+    // the area D~_m / (1 - 2 alpha), so that force / area is still the nodal pressure z_m.
+    const std::array<int32_t, 2>& ends = edge_ends[j];
+    const double share = ends[0] >= 0 ? 1 - 2 * quadratic_dual_alpha : 1.0;
     for (auto& [node, weight] : weights)
-    {
-      weight /= overlap;
+      weight = weight / overlap * share;
+    if (ends[0] >= 0)
+      for (const int32_t corner : ends)
+        weights.emplace_back(corner, quadratic_dual_alpha);
+    const Eigen::Vector3d n = row_normal(closest, i, master_faces, master_normals);
+    Eigen::Vector3d master_point = Eigen::Vector3d::Zero();
+    for (const auto& [node, weight] : weights)
       master_point += weight * current_position(mesh, u, node);
-    }
     const double gap = n.dot(current_position(mesh, u, s) - master_point);
     if (!(gap < out.search_distance))
       continue;
-    rows.add({s, n, gap, nodal_area, closest.master_face[i], closest.xi[i], closest.kind[i]}, weights);
+    rows.add({s, n, gap, nodal_area / share, closest.master_face[i], closest.xi[i], closest.kind[i], share}, weights);
   }
   rows.finish(3 * static_cast<la::Index>(mesh.n_nodes()), out);
   return out;

@@ -8,10 +8,7 @@
 
 namespace feticon::contact
 {
-namespace
-{
-/// Shape-function derivatives dN_a/dxi (column 0) and dN_a/deta (column 1) at xi.
-Eigen::Matrix<double, 4, 2> shape_derivatives(const Eigen::Vector2d& xi)
+Eigen::Matrix<double, 4, 2> bilinear_derivatives(const Eigen::Vector2d& xi)
 {
   Eigen::Matrix<double, 4, 2> d;
   for (int a = 0; a < 4; ++a)
@@ -22,13 +19,14 @@ Eigen::Matrix<double, 4, 2> shape_derivatives(const Eigen::Vector2d& xi)
   return d;
 }
 
-/// Area element |x_,xi x x_,eta| of a 3D bilinear face at xi.
 double surface_jacobian(const QuadCoordinates& quad, const Eigen::Vector2d& xi)
 {
-  const Eigen::Matrix<double, 3, 2> tangents = quad.transpose() * shape_derivatives(xi);
+  const Eigen::Matrix<double, 3, 2> tangents = quad.transpose() * bilinear_derivatives(xi);
   return tangents.col(0).cross(tangents.col(1)).norm();
 }
 
+namespace
+{
 /// Auxiliary plane of a slave face: origin x_0 (face centre), normal n_0, axes t_1 x t_2 = n_0.
 struct AuxiliaryPlane
 {
@@ -53,7 +51,7 @@ AuxiliaryPlane auxiliary_plane(const QuadCoordinates& slave)
   plane.origin = quad_point(slave, Eigen::Vector2d::Zero());
   plane.normal = quad_normal(slave, Eigen::Vector2d::Zero());
   // x_,xi at the centre is orthogonal to n_0 = x_,xi x x_,eta / |.| by construction.
-  const Eigen::Vector3d d_xi = slave.transpose() * shape_derivatives(Eigen::Vector2d::Zero()).col(0);
+  const Eigen::Vector3d d_xi = slave.transpose() * bilinear_derivatives(Eigen::Vector2d::Zero()).col(0);
   plane.axis_1 = d_xi.normalized();
   plane.axis_2 = plane.normal.cross(plane.axis_1);
   return plane;
@@ -61,21 +59,6 @@ AuxiliaryPlane auxiliary_plane(const QuadCoordinates& slave)
 
 double cross_2d(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a(0) * b(1) - a(1) * b(0); }
 
-/// Whether the polygon (corners in order) turns left at every corner by more than round-off.
-bool strictly_convex_ccw(const std::vector<Eigen::Vector2d>& polygon)
-{
-  const double tolerance = 1e-12 * std::abs(polygon_area(polygon));
-  const auto n = polygon.size();
-  for (size_t k = 0; k < n; ++k)
-  {
-    const Eigen::Vector2d& a = polygon[k];
-    const Eigen::Vector2d& b = polygon[(k + 1) % n];
-    const Eigen::Vector2d& c = polygon[(k + 2) % n];
-    if (!(cross_2d(b - a, c - b) > tolerance))
-      return false;
-  }
-  return true;
-}
 } // namespace
 
 QuadratureRule2d gauss_legendre_1d(int n)
@@ -174,10 +157,7 @@ DualBasis dual_basis(const QuadCoordinates& slave)
     mass += weight * shape * shape.transpose();
     dual.nodal_area += weight * shape;
   }
-  FETICON_CHECK((dual.nodal_area.array() > 0).all(),
-                "mortar: degenerate slave face (nodal areas " << dual.nodal_area.transpose()
-                                                              << " m^2); check the mesh");
-  dual.coefficients = dual.nodal_area.asDiagonal() * mass.inverse();
+  dual.coefficients = dual_coefficients(dual.nodal_area, mass);
   return dual;
 }
 
@@ -186,6 +166,20 @@ Eigen::Vector4d dual_shape_functions(const DualBasis& dual, const Eigen::Vector2
   return dual.coefficients * quad_shape_functions(xi);
 }
 
+bool strictly_convex_ccw(const std::vector<Eigen::Vector2d>& polygon)
+{
+  const double tolerance = 1e-12 * std::abs(polygon_area(polygon));
+  const auto n = polygon.size();
+  for (size_t k = 0; k < n; ++k)
+  {
+    const Eigen::Vector2d& a = polygon[k];
+    const Eigen::Vector2d& b = polygon[(k + 1) % n];
+    const Eigen::Vector2d& c = polygon[(k + 2) % n];
+    if (!(cross_2d(b - a, c - b) > tolerance))
+      return false;
+  }
+  return true;
+}
 double polygon_area(const std::vector<Eigen::Vector2d>& polygon)
 {
   double twice_area = 0;
@@ -236,7 +230,7 @@ std::optional<Eigen::Vector2d> inverse_bilinear(const Eigen::Matrix<double, 4, 2
   for (int iteration = 0; iteration < 30; ++iteration)
   {
     const Eigen::Vector2d residual = point - corners.transpose() * quad_shape_functions(xi);
-    const Eigen::Matrix2d jacobian = corners.transpose() * shape_derivatives(xi);
+    const Eigen::Matrix2d jacobian = corners.transpose() * bilinear_derivatives(xi);
     const double determinant = jacobian.determinant();
     if (!(std::abs(determinant) > 0) || !std::isfinite(determinant))
       return std::nullopt;
@@ -283,31 +277,18 @@ std::optional<SegmentCoupling> integrate_segment(const QuadCoordinates& slave, c
   if (polygon.empty() || !(polygon_area(polygon) > options.min_area_fraction * polygon_area(slave_polygon)))
     return std::nullopt;
 
-  // Fan about the vertex mean, which lies inside the convex intersection.
-  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-  for (const Eigen::Vector2d& vertex : polygon)
-    centre += vertex;
-  centre /= static_cast<double>(polygon.size());
-
   SegmentCoupling segment;
-  for (size_t k = 0; k < polygon.size(); ++k)
-  {
-    const Eigen::Vector2d edge_1 = polygon[k] - centre;
-    const Eigen::Vector2d edge_2 = polygon[(k + 1) % polygon.size()] - centre;
-    const double triangle_area = 0.5 * cross_2d(edge_1, edge_2);
-    for (size_t q = 0; q < rule.points.size(); ++q)
-    {
-      const Eigen::Vector2d point = centre + rule.points[q](0) * edge_1 + rule.points[q](1) * edge_2;
-      const std::optional<Eigen::Vector2d> xi_slave = inverse_bilinear(slave_corners, point);
-      const std::optional<Eigen::Vector2d> xi_master = inverse_bilinear(master_corners, point);
-      FETICON_CHECK(xi_slave && xi_master,
-                    "mortar: inverse bilinear map failed at plane point " << point.transpose() << "; check the mesh");
-      const double planar_jacobian = std::abs((slave_corners.transpose() * shape_derivatives(*xi_slave)).determinant());
-      const double area = rule.weights[q] * triangle_area * surface_jacobian(slave, *xi_slave) / planar_jacobian;
-      segment.coupling += area * dual_shape_functions(dual, *xi_slave) * quad_shape_functions(*xi_master).transpose();
-      segment.area += area;
-    }
-  }
+  for_each_fan_point(polygon, rule, [&](const Eigen::Vector2d& point, double weight) {
+    const std::optional<Eigen::Vector2d> xi_slave = inverse_bilinear(slave_corners, point);
+    const std::optional<Eigen::Vector2d> xi_master = inverse_bilinear(master_corners, point);
+    FETICON_CHECK(xi_slave && xi_master,
+                  "mortar: inverse bilinear map failed at plane point " << point.transpose() << "; check the mesh");
+    const double planar_jacobian =
+        std::abs((slave_corners.transpose() * bilinear_derivatives(*xi_slave)).determinant());
+    const double area = weight * surface_jacobian(slave, *xi_slave) / planar_jacobian;
+    segment.coupling += area * dual_shape_functions(dual, *xi_slave) * quad_shape_functions(*xi_master).transpose();
+    segment.area += area;
+  });
   return segment;
 }
 } // namespace feticon::contact

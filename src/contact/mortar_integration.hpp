@@ -34,6 +34,8 @@
 
 #include "contact/closest_point.hpp"
 
+#include "common/error.hpp"
+
 #include <optional>
 #include <vector>
 
@@ -68,6 +70,17 @@ struct DualBasis
   Eigen::Vector4d nodal_area = Eigen::Vector4d::Zero();
 };
 
+/// @brief The coefficients A = D M^-1 of a dual basis from the nodal areas D and the mass
+/// matrix M of a slave face (file comment).
+/// @throws feticon::Error if a nodal area is not positive (a degenerate slave face).
+template <class Vector, class Matrix>
+Matrix dual_coefficients(const Vector& nodal_area, const Matrix& mass)
+{
+  FETICON_CHECK((nodal_area.array() > 0).all(),
+                "mortar: degenerate slave face (nodal areas " << nodal_area.transpose() << " m^2); check the mesh");
+  return nodal_area.asDiagonal() * mass.inverse();
+}
+
 /// @brief Nodal areas int_e N_j dA of a face (m^2), 4 x 4 Gauss as dual_basis; no checks.
 Eigen::Vector4d face_nodal_areas(const QuadCoordinates& face);
 
@@ -85,6 +98,36 @@ std::vector<Eigen::Vector2d> clip_polygon(const std::vector<Eigen::Vector2d>& su
 
 /// Signed area of a polygon (> 0 counter-clockwise), shoelace formula.
 double polygon_area(const std::vector<Eigen::Vector2d>& polygon);
+
+/// Whether the polygon (corners in order) turns left at every corner by more than round-off.
+bool strictly_convex_ccw(const std::vector<Eigen::Vector2d>& polygon);
+
+/// Bilinear shape-function derivatives dN_a/dxi (column 0) and dN_a/deta (column 1) at xi.
+Eigen::Matrix<double, 4, 2> bilinear_derivatives(const Eigen::Vector2d& xi);
+
+/// Area element |x_,xi x x_,eta| of a 3D bilinear face at xi.
+double surface_jacobian(const QuadCoordinates& quad, const Eigen::Vector2d& xi);
+
+/// @brief Calls f(point, weight) for every point of `rule` (gauss_triangle) on the triangles
+/// that fan the convex polygon about its vertex mean (which lies inside it); weight is the
+/// rule's weight times the triangle's area, so the weights sum to the polygon's area.
+template <class Function>
+void for_each_fan_point(const std::vector<Eigen::Vector2d>& polygon, const QuadratureRule2d& rule, Function&& f)
+{
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& vertex : polygon)
+    centre += vertex;
+  centre /= static_cast<double>(polygon.size());
+  for (size_t k = 0; k < polygon.size(); ++k)
+  {
+    const Eigen::Vector2d edge_1 = polygon[k] - centre;
+    const Eigen::Vector2d edge_2 = polygon[(k + 1) % polygon.size()] - centre;
+    const double triangle_area = 0.5 * (edge_1(0) * edge_2(1) - edge_1(1) * edge_2(0));
+    for (size_t q = 0; q < rule.points.size(); ++q)
+      f(Eigen::Vector2d(centre + rule.points[q](0) * edge_1 + rule.points[q](1) * edge_2),
+        rule.weights[q] * triangle_area);
+  }
+}
 
 /// @brief Inverse of the planar bilinear map p(xi) = sum_a N_a(xi) corners_a (Newton from 0).
 /// @return xi with p(xi) = point to |dxi| < 1e-14, or nothing if Newton fails (singular map).

@@ -597,7 +597,7 @@ DeckOutline deck_outline(const std::filesystem::path& path)
   DeckOutline out;
   DeckTokenizer tokens(path);
   DeckKeyword keyword;
-  bool first_step = true, node_to_surface = false, surface_to_surface = false, hexahedra_only = true;
+  bool first_step = true, node_to_surface = false, surface_to_surface = false;
   std::string interaction, pair_interaction;
   std::map<std::string, double> friction; // mu by interaction
   while (tokens.next_keyword(keyword))
@@ -615,11 +615,7 @@ DeckOutline deck_outline(const std::filesystem::path& path)
     if (keyword.name == "NODE")
       out.nodes += tokens.count_data_lines();
     else if (keyword.name == "ELEMENT")
-    {
-      const std::string* type = keyword.value("TYPE");
-      hexahedra_only = hexahedra_only && (!type || type->starts_with("C3D8"));
       out.elements += tokens.count_data_lines();
-    }
     else if (keyword.name == "STEP")
     {
       const std::string* nlgeom = keyword.value("NLGEOM");
@@ -633,9 +629,7 @@ DeckOutline deck_outline(const std::filesystem::path& path)
     else if (keyword.name == "FRICTION" && !interaction.empty())
       friction.emplace(interaction, outline_friction(tokens));
   }
-  // Mortar rows integrate the quad4 faces of hexahedra: decks of other elements get
-  // node-to-segment rows for their surface-to-surface pairs too.
-  out.contact_formulation = (node_to_surface && !surface_to_surface) || !hexahedra_only ? "node_to_segment" : "mortar";
+  out.contact_formulation = node_to_surface && !surface_to_surface ? "node_to_segment" : "mortar";
   if (const auto it = friction.find(pair_interaction); it != friction.end())
     out.friction_coefficient = it->second;
   return out;

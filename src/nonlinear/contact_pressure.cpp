@@ -20,7 +20,7 @@ double total_normal_force(const ContactSolution& solution)
 {
   double total = 0;
   for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)
-    total += solution.contact_lambda(i) / solution.constraints.row_norm[i];
+    total += solution.contact_lambda(i) / solution.constraints.row_norm[i] * solution.constraints.master_share[i];
   return total;
 }
 
@@ -112,7 +112,15 @@ la::Vector slave_nodal_pressures(const fem::Problem& problem, const ContactSolut
   for (const mesh::Face& face : problem.mesh.face_set(problem.contacts[0].slave))
     if (face.kind == mesh::FaceKind::tri6 || face.kind == mesh::FaceKind::quad8)
       quadratic.push_back(face);
-  if (!quadratic.empty())
+  if (!quadratic.empty() && rows.formulation == contact::ContactFormulation::mortar)
+  {
+    // The dual traction's nodal values z_j = force / D~_j (mortar_constraints.hpp): the
+    // pressure at every node, corners included, as the runs' VTU writes it.
+    for (size_t i = 0; i < rows.slave_node.size(); ++i)
+      pressure(rows.slave_node[i]) =
+          solution.contact_lambda(static_cast<la::Index>(i)) / rows.row_norm[i] / rows.slave_area[i];
+  }
+  else if (!quadratic.empty())
     average_quadratic_face_pressures(pressure_surface(problem, solution.u, kinematics), quadratic, force, pressure);
   return pressure;
 }

@@ -76,6 +76,7 @@ contact::ContactConstraints LinearContactRows::subset(const std::vector<char>& k
   out.search_distance = all.search_distance;
   out.n_slave_nodes = all.n_slave_nodes;
   out.n_overhanging = all.n_overhanging;
+  out.formulation = all.formulation;
   const la::Vector gap = linearized_gaps(all, u);
   contact::ContactRowBuilder rows;
   for (la::Index i = 0; i < all.n_rows(); ++i)

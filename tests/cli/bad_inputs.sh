@@ -193,9 +193,6 @@ tet_variant() { sed "$1" "$src_dir/tests/data/fuzz/punch_tet10.inp" > "$work/$2.
 expect "deck tetrahedron face S5" "which has 4 faces" -- "$(tet_variant 's/^778, S3$/778, S5/' tet_s5)"
 expect "deck tetrahedron pressure P5" "which has 4 faces" -- \
   "$(tet_variant '/^\*STATIC/{n;s/$/\n*DLOAD\n1, P5, 1e6/}' tet_p5)"
-# Mortar rows asked for on tetrahedra's faces: one line saying to use node_to_segment.
-expect "mortar on triangles" "mortar rows integrate quad4 faces only" -- \
-  "$src_dir/tests/data/fuzz/gmsh_tet10.yaml" --set contact.formulation=mortar
 # A C3D8 block declared C3D10: its 8-node lines are short of 10 nodes.
 expect "deck element node count" "nodes, not 10" -- "$(deck_variant 's/TYPE=C3D8/TYPE=C3D10/I' c3d10_short)"
 expect "deck face S7" "S7" -- "$(deck_variant '0,/, *S[1-6]/s//, S7/' s7)"

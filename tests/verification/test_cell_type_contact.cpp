@@ -1,12 +1,16 @@
 /// Contact of two blocks of every cell type (issue 38): the contact patch test. A block
 /// [0,1]^2 x [0,0.5] pressed by a uniform pressure p onto a block [0,1]^2 x [-0.5,0] on a
-/// frictionless support, both on the symmetry planes x = 0 and y = 0, node-to-segment rows.
-/// References: equilibrium (the contact force equals p A, the upper block being held along z
-/// by contact alone) and the exact solution, a uniform stress sigma_zz = -p in both blocks with
-/// every other component zero, which matching meshes must reproduce to round-off: the slave
-/// nodes lie on the master nodes, and the consistent nodal forces of a uniform pressure on the
-/// slave faces (zero at a tri6's corners) are a solution of the contact QP. Not for hex20: its
-/// quad8 faces' consistent loads are negative at the corners (see the test).
+/// frictionless support, both on the symmetry planes x = 0 and y = 0, node-to-segment and dual
+/// mortar rows. References: equilibrium (the contact force equals p A, the upper block being
+/// held along z by contact alone) and the exact solution, a uniform stress sigma_zz = -p in both
+/// blocks with every other component zero. Mortar rows must reproduce it to round-off on
+/// matching and non-matching meshes of every type: a uniform pressure is a dual traction with
+/// z_j = p (sum_j Phi_j = 1), whose forces are the consistent nodal loads on both faces
+/// (contact/mortar_constraints.hpp, and for quadratic faces the transformed basis of
+/// contact/mortar_face_integration.hpp). Node-to-segment rows only on matching meshes (the slave
+/// nodes lie on the master nodes, and the consistent loads of the slave faces, zero at a tri6's
+/// corners, are a solution of the QP), and not for hex20, whose quad8 faces' consistent loads
+/// are negative at the corners (see the test).
 
 #include "fem/stress.hpp"
 #include "mesh/box.hpp"
@@ -27,6 +31,7 @@ struct PatchCase
 {
   CellKind kind;
   int upper_cells; ///< along x and y; the lower block has 2 x 2
+  contact::ContactFormulation formulation = contact::ContactFormulation::node_to_segment;
 };
 
 fem::Problem pressed_blocks(const PatchCase& c)
@@ -56,13 +61,13 @@ fem::Problem pressed_blocks(const PatchCase& c)
   return p;
 }
 
-nonlinear::SolverSettings patch_settings()
+nonlinear::SolverSettings patch_settings(contact::ContactFormulation formulation)
 {
   nonlinear::SolverSettings s;
   s.kinematics = fem::Kinematics::linear;
   s.dual.rtol = 1e-12;
   s.subdomains = 2;
-  s.formulation = contact::ContactFormulation::node_to_segment;
+  s.formulation = formulation;
   return s;
 }
 
@@ -74,12 +79,13 @@ TEST_P(ContactPatch, TransmitsAUniformPressure)
 {
   const PatchCase c = GetParam();
   const fem::Problem problem = pressed_blocks(c);
-  const test::FetiContactRun run = test::run_feti_contact(problem, patch_settings());
+  const test::FetiContactRun run = test::run_feti_contact(problem, patch_settings(c.formulation));
   EXPECT_NEAR(nonlinear::total_normal_force(run.solution), pressure, 1e-6 * pressure);
   // Non-matching node-to-segment rows pass no patch test (only the force balance). Nor do quad8
   // faces: a uniform pressure's consistent loads pull at their corners (-A/12 each), which a
-  // contact row cannot (measured: 2.3 % of p in the cells at the corners).
-  if (c.upper_cells != 2 || c.kind == CellKind::hex20)
+  // node-to-segment row cannot (measured: 2.3 % of p in the cells at the corners).
+  if (c.formulation == contact::ContactFormulation::node_to_segment &&
+      (c.upper_cells != 2 || c.kind == CellKind::hex20))
     return;
   const auto stresses =
       fem::cell_cauchy_stresses(problem.mesh, run.solution.u, problem.materials, fem::Kinematics::linear);
@@ -93,14 +99,20 @@ TEST_P(ContactPatch, TransmitsAUniformPressure)
   EXPECT_LT(worst, 1e-6 * pressure) << "largest stress error over all cells (Pa)";
 }
 
+constexpr auto mortar = contact::ContactFormulation::mortar;
 INSTANTIATE_TEST_SUITE_P(EveryCellType, ContactPatch,
                          ::testing::Values(PatchCase{CellKind::hex8, 2}, PatchCase{CellKind::tet4, 2},
                                            PatchCase{CellKind::tet10, 2}, PatchCase{CellKind::hex20, 2},
                                            PatchCase{CellKind::wedge6, 2}, PatchCase{CellKind::tet4, 3},
                                            PatchCase{CellKind::tet10, 3}, PatchCase{CellKind::hex20, 3},
-                                           PatchCase{CellKind::wedge6, 3}),
+                                           PatchCase{CellKind::wedge6, 3}, PatchCase{CellKind::hex8, 3, mortar},
+                                           PatchCase{CellKind::tet4, 2, mortar}, PatchCase{CellKind::tet4, 3, mortar},
+                                           PatchCase{CellKind::tet10, 2, mortar}, PatchCase{CellKind::tet10, 3, mortar},
+                                           PatchCase{CellKind::hex20, 2, mortar}, PatchCase{CellKind::hex20, 3, mortar},
+                                           PatchCase{CellKind::wedge6, 3, mortar}),
                          [](const ::testing::TestParamInfo<PatchCase>& info) {
   return std::string(mesh::cell_type(info.param.kind).name) +
-      (info.param.upper_cells == 2 ? "_matching" : "_nonmatching");
+      (info.param.upper_cells == 2 ? "_matching" : "_nonmatching") +
+      (info.param.formulation == mortar ? "_mortar" : "");
 });
 } // namespace

@@ -98,13 +98,13 @@ struct Hertz3dRun
   int outer_max = 0;
 };
 
-Hertz3dRun solve(const problems::Hertz3dParameters& parameters, fem::Kinematics kinematics)
+Hertz3dRun solve(const problems::Hertz3dParameters& parameters, fem::Kinematics kinematics,
+                 contact::ContactFormulation formulation = contact::ContactFormulation::mortar)
 {
   const fem::Problem problem = problems::hertz3d_problem(parameters);
   nonlinear::SolverSettings s;
   s.kinematics = kinematics;
-  if (parameters.cell != mesh::CellKind::hex8) // mortar rows integrate quad4 faces only
-    s.formulation = contact::ContactFormulation::node_to_segment;
+  s.formulation = formulation;
   s.load_steps = kinematics == fem::Kinematics::linear ? 1 : 2;
   s.dual.preconditioner = dual::DualPreconditioner::dirichlet;
   TimerTable timers;
@@ -181,22 +181,58 @@ TEST(Hertz3d, DissimilarBlockAgainstHertzWithTheContactModulusOfBoth)
 }
 
 // hertz3d split into tetrahedra or wedges (triangular contact faces), coarse (refinement 0.5),
-// large displacements: the outer loop must converge. Before triangles accepted projections up
-// to 1e-4 outside with ties to the smaller face, a slave node on the common side of two
-// triangles crossed it at every outer iteration and the loop stalled at |du|/|u| ~ 1e-5 for
-// 15 iterations (tet4, tet10 and wedge6 alike). Reference: the load (F/4 = 5000 N on the
-// quarter), which the normal forces carry to within the tilt of the deformed normals.
+// large displacements: the outer loop must converge. Node-to-segment: before triangles accepted
+// projections up to 1e-4 outside with ties to the smaller face, a slave node on the common side
+// of two triangles crossed it at every outer iteration and the loop stalled at |du|/|u| ~ 1e-5
+// for 15 iterations (tet4, tet10 and wedge6 alike). Mortar: with the master face's normal at
+// the closest point, which jumps across the triangles' sides, wedge6 and tet10 cycled between
+// two row sets at 1e-5 and 1.1e-6 (contact/mortar_constraints.cpp, row_normal). Reference: the
+// load (F/4 = 5000 N on the quarter), which the normal forces carry to within the tilt of the
+// deformed normals.
 TEST(Hertz3d, LargeDisplacementsOnTriangularFacesConverge)
 {
-  for (const mesh::CellKind cell : {mesh::CellKind::tet4, mesh::CellKind::wedge6})
+  for (const auto formulation : {contact::ContactFormulation::node_to_segment, contact::ContactFormulation::mortar})
+    for (const mesh::CellKind cell : {mesh::CellKind::tet4, mesh::CellKind::wedge6})
+    {
+      problems::Hertz3dParameters parameters;
+      parameters.refinement = 0.5;
+      parameters.cell = cell;
+      const Hertz3dRun r = solve(parameters, fem::Kinematics::total_lagrangian, formulation);
+      const std::string name = std::string(mesh::cell_type(cell).name) +
+          (formulation == contact::ContactFormulation::mortar ? " mortar" : " node-to-segment");
+      EXPECT_LE(r.outer_max, 15) << name;
+      EXPECT_GE(r.force, 5000 * (1 - 1e-6)) << name;
+      EXPECT_LE(r.force, 5000 / std::cos(1.1 * r.hertz.a_analytic / 0.05)) << name;
+    }
+}
+
+// hertz3d with quadratic cells and dual mortar rows on their tri6 and quad8 faces (the
+// transformed basis of contact/mortar_face_integration.hpp). Reference: Hertz's p0, a and
+// pressure profile, the load. hex20 at refinement 0.7 (58 629 DOFs) meets the acceptance of
+// SmallDisplacementsAgainstHertz (measured: peak +0.31 %, a +0.45 %, RMS 1.85 % of p0); with
+// node-to-segment rows it gave -2.56 %, +7.74 % and 3.33 %. tet10 at refinement 0.5 (42 444
+// DOFs): peak and radius within 2 % (measured -0.11 %, +0.98 %; node-to-segment -3.10 %,
+// +4.69 %); its RMS, 4.26 % of p0, is not within 2 % (docs/elements.md), so only printed.
+TEST(Hertz3d, QuadraticCellsWithMortarAgainstHertz)
+{
+  for (const auto& [cell, refinement] : {std::pair{mesh::CellKind::hex20, 0.7}, std::pair{mesh::CellKind::tet10, 0.5}})
   {
     problems::Hertz3dParameters parameters;
-    parameters.refinement = 0.5;
+    parameters.refinement = refinement;
     parameters.cell = cell;
-    const Hertz3dRun r = solve(parameters, fem::Kinematics::total_lagrangian);
-    EXPECT_LE(r.outer_max, 15) << mesh::cell_type(cell).name;
-    EXPECT_GE(r.force, 5000 * (1 - 1e-6)) << mesh::cell_type(cell).name;
-    EXPECT_LE(r.force, 5000 / std::cos(1.1 * r.hertz.a_analytic / 0.05)) << mesh::cell_type(cell).name;
+    const Hertz3dRun r = solve(parameters, fem::Kinematics::linear);
+    const auto& h = r.hertz;
+    const std::string name(mesh::cell_type(cell).name);
+    std::printf("%s: p_peak %+.2f%%, a %+.2f%%, RMS %.2f%% of p0, force / (F/4) - 1 = %.1e\n", name.c_str(),
+                100 * (h.p_peak_computed / h.p0_analytic - 1), 100 * (h.a_computed / h.a_analytic - 1),
+                100 * h.rms_error_over_p0, r.force / 5000 - 1);
+    EXPECT_LT(std::abs(h.p_peak_computed / h.p0_analytic - 1), 0.02) << name;
+    EXPECT_LT(std::abs(h.a_computed / h.a_analytic - 1), 0.02) << name;
+    if (cell == mesh::CellKind::hex20)
+    {
+      EXPECT_LE(h.rms_error_over_p0, 0.02) << name;
+    }
+    EXPECT_NEAR(r.force, 5000, 1e-6 * 5000) << name;
   }
 }
 

@@ -189,8 +189,8 @@ TEST_P(DeckCellTypes, ExportedDeckReadsBackWithItsCellTypes)
   const auto path = write(dir, "punch.inp", text.str());
   const Deck deck = read_deck(path);
   const fem::Problem& q = deck.problem;
-  // Its surface-to-surface pair gets node-to-segment rows: mortar integrates quad4 faces only.
-  EXPECT_EQ(deck_outline(path).contact_formulation, "node_to_segment");
+  // Its surface-to-surface pair gets mortar rows, whatever the faces' type.
+  EXPECT_EQ(deck_outline(path).contact_formulation, "mortar");
   ASSERT_EQ(q.mesh.n_nodes(), p.mesh.n_nodes());
   ASSERT_EQ(q.mesh.n_cells(), p.mesh.n_cells());
   EXPECT_TRUE(q.mesh.cells.all_of_kind(GetParam()));
