@@ -31,16 +31,35 @@ struct QuadSection
   std::vector<std::vector<std::pair<int32_t, int32_t>>> curve_edges;
 };
 
+/// The hertz3d quarter model as solids (problems/hertz3d.hpp): the sphere of radius `radius`
+/// centred at (0, 0, radius) cut to the ball of radius `cap_radius` about the origin, on the
+/// half-space z <= 0 cut to the ball of radius `block_radius`, both in x, y >= 0, meshed with
+/// tetrahedra of order `order` (1: tet4, 2: tet10, edge nodes on the geometry) of size
+/// min(size + growth max(0, r - core), max_size) at the distance r from the origin.
+struct SphereOnHalfSpace
+{
+  double radius = 0;
+  double cap_radius = 0;
+  double block_radius = 0;
+  double size = 0;
+  double core = 0;
+  double growth = 0;
+  double max_size = 0;
+  int order = 2;
+};
+
 struct GmshModule
 {
   int abi_version = 0;
   std::string (*mesh_cross_section)(const CrossSection& section, const SizeField& size, QuadSection& out) = nullptr;
   /// Reads the hexahedra, bodies and sets of a .msh file that precheck_gmsh_file accepted.
   std::string (*read_model)(const std::filesystem::path& path, const std::string& where, Mesh& out) = nullptr;
+  /// The tetrahedra, bodies "sphere" and "block" and the hertz3d sets of the model.
+  std::string (*mesh_sphere_on_half_space)(const SphereOnHalfSpace& geometry, Mesh& out) = nullptr;
 };
 
 /// Changes whenever GmshModule or the types it passes change: a stale module is refused.
-inline constexpr int gmsh_module_abi = 1;
+inline constexpr int gmsh_module_abi = 2;
 
 /// The loaded module (next to the executable, else in the build tree); throws
 /// feticon::Error naming the files tried and why when it cannot be loaded.

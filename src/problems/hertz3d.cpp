@@ -3,10 +3,12 @@
 #include "common/error.hpp"
 #include "fem/loads.hpp"
 #include "mesh/cell_conversion.hpp"
+#include "mesh/gmsh_module.hpp"
 #include "mesh/octant_ball.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace feticon::problems
 {
@@ -133,11 +135,106 @@ std::pair<mesh::OctantBallParameters, mesh::OctantBallParameters> octant_balls(c
   return {{h, slave_cells, parameters.cap_radius, parameters.radial_aspect},
           {h_master, master_cells, parameters.block_radius, parameters.radial_aspect}};
 }
+
+/// The sizes of the Gmsh mesh (gmsh_mesh).
+mesh::SphereOnHalfSpace gmsh_geometry(const Hertz3dParameters& parameters)
+{
+  mesh::SphereOnHalfSpace g;
+  g.radius = parameters.radius;
+  g.cap_radius = parameters.cap_radius;
+  g.block_radius = parameters.block_radius;
+  g.order = parameters.cell == mesh::CellKind::tet10 ? 2 : 1;
+  g.size = g.order * parameters.element_size / parameters.refinement;
+  g.core = 1.25 * hertz3d_analytic(parameters).contact_radius;
+  g.growth = parameters.gmsh_growth;
+  g.max_size = std::max(g.size, 0.25 * parameters.cap_radius);
+  return g;
+}
+
+/// Nodes of the Gmsh mesh, from the integral of 1 / h^3 over the two bodies (each about an
+/// eighth of its ball): measured 8.3 to 9.8 tet10 nodes per unit of it at refinements 1 to 2,
+/// and 0.45 tet4 nodes at refinement 1; rounded up to 10 and 0.5 (the memory guard's input).
+int64_t gmsh_node_estimate(const Hertz3dParameters& parameters)
+{
+  const mesh::SphereOnHalfSpace g = gmsh_geometry(parameters);
+  double integral = 0;
+  for (const double outer : {g.cap_radius, g.block_radius})
+  {
+    constexpr int n = 2000;
+    const double dr = outer / n;
+    for (int i = 0; i < n; ++i)
+    {
+      const double r = (i + 0.5) * dr;
+      const double h = std::min(g.size + g.growth * std::max(0.0, r - g.core), g.max_size);
+      integral += 0.5 * std::numbers::pi * r * r / (h * h * h) * dr;
+    }
+  }
+  return std::llround((g.order == 2 ? 10.0 : 0.5) * integral);
+}
+/// The graded octant balls of the sphere and the block (file comment), in the cells of
+/// parameters.cell.
+mesh::Mesh octant_mesh(const Hertz3dParameters& parameters, const mesh::OctantBallParameters& sphere_parameters,
+                       const mesh::OctantBallParameters& block_parameters)
+{
+  const double R = parameters.radius;
+  const auto ball = [&](const mesh::OctantBallParameters& b) {
+    return parameters.half_model() ? mesh::mirrored_across_x(mesh::octant_ball(b)) : mesh::octant_ball(b);
+  };
+  const mesh::OctantBall sphere = ball(sphere_parameters);
+  const mesh::OctantBall block = ball(block_parameters);
+
+  mesh::Mesh out;
+  out.nodes.resize(0, 3);
+  // The sphere's flat face is lifted onto the sphere by z = d + s(rho) (1 - d / cap_radius),
+  // s(rho) = R - sqrt(R^2 - rho^2): exact on the contact face, fading with depth so that the
+  // shear of the map (slope s' up to 0.58 at the rim) does not stretch the interior cells;
+  // dz/dd = 1 - s / cap_radius > 0 since s(rho) < rho <= cap_radius.
+  const double Rc = parameters.cap_radius;
+  append_body(
+      out, sphere, "sphere", false,
+      [R, Rc](const Eigen::Vector3d& q) {
+    const double lift = R - std::sqrt(R * R - q(0) * q(0) - q(1) * q(1));
+    return Eigen::Vector3d(q(0), q(1), q(2) + lift * (1 - q(2) / Rc));
+      },
+      "sphere_contact", "sphere_load");
+  append_body(
+      out, block, "block", true, [](const Eigen::Vector3d& q) { return Eigen::Vector3d(q(0), q(1), -q(2)); },
+      "block_contact", "block_support");
+  if (parameters.cell != mesh::CellKind::hex8)
+  {
+    // An edge between two nodes on the sphere |x - c| = R keeps its node on the sphere.
+    const Eigen::Vector3d centre(0, 0, R);
+    out = mesh::convert_hex8_mesh(out, parameters.cell, [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+      const Eigen::Vector3d middle = 0.5 * (a + b);
+      const auto on_sphere = [&](const Eigen::Vector3d& x) { return std::abs((x - centre).norm() - R) < 1e-9 * R; };
+      return on_sphere(a) && on_sphere(b) ? Eigen::Vector3d(centre + R * (middle - centre).normalized()) : middle;
+    });
+  }
+  return out;
+}
+
+/// The sphere and the block as solids meshed by Gmsh with graded tetrahedra (gmsh_mesh).
+mesh::Mesh gmsh_mesh(const Hertz3dParameters& parameters)
+{
+  FETICON_CHECK(parameters.cell == mesh::CellKind::tet10 || parameters.cell == mesh::CellKind::tet4,
+                "hertz3d: mesh=gmsh meshes tetrahedra: set hertz3d.cell to tet10 or tet4, not "
+                    << mesh::cell_type(parameters.cell).name);
+  FETICON_CHECK(!parameters.half_model(),
+                "hertz3d: mesh=gmsh builds the quarter model only (no tangential load "
+                "or displacement)");
+  mesh::Mesh out;
+  const std::string failure = mesh::gmsh_module().mesh_sphere_on_half_space(gmsh_geometry(parameters), out);
+  FETICON_CHECK(failure.empty(), failure);
+  return out;
+}
+
 } // namespace
 
 int64_t hertz3d_node_count(const Hertz3dParameters& parameters)
 {
-  const auto [sphere, block] = octant_balls(parameters);
+  const auto [sphere, block] = octant_balls(parameters); // checks the parameters
+  if (parameters.gmsh_mesh)
+    return gmsh_node_estimate(parameters);
   auto ball_nodes = [&](const mesh::OctantBallParameters& ball) {
     const mesh::OctantBallSize size = mesh::octant_ball_size(ball);
     return parameters.half_model() ? 2 * size.nodes - size.plane_nodes : size.nodes;
@@ -162,41 +259,12 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
   FETICON_CHECK(!slid || parameters.friction_coefficient > 0,
                 "hertz3d: a tangential displacement needs Coulomb friction (its couple balances the full "
                 "slide's force mu F)");
-  const double R = parameters.radius;
-  const auto ball = [&](const mesh::OctantBallParameters& b) {
-    return parameters.half_model() ? mesh::mirrored_across_x(mesh::octant_ball(b)) : mesh::octant_ball(b);
-  };
-  const mesh::OctantBall sphere = ball(sphere_parameters);
-  const mesh::OctantBall block = ball(block_parameters);
-
   fem::Problem p;
   p.name = "hertz3d";
-  p.mesh.nodes.resize(0, 3);
-  // The sphere's flat face is lifted onto the sphere by z = d + s(rho) (1 - d / cap_radius),
-  // s(rho) = R - sqrt(R^2 - rho^2): exact on the contact face, fading with depth so that the
-  // shear of the map (slope s' up to 0.58 at the rim) does not stretch the interior cells;
-  // dz/dd = 1 - s / cap_radius > 0 since s(rho) < rho <= cap_radius.
-  const double Rc = parameters.cap_radius;
-  append_body(
-      p.mesh, sphere, "sphere", false,
-      [R, Rc](const Eigen::Vector3d& q) {
-    const double lift = R - std::sqrt(R * R - q(0) * q(0) - q(1) * q(1));
-    return Eigen::Vector3d(q(0), q(1), q(2) + lift * (1 - q(2) / Rc));
-      },
-      "sphere_contact", "sphere_load");
-  append_body(
-      p.mesh, block, "block", true, [](const Eigen::Vector3d& q) { return Eigen::Vector3d(q(0), q(1), -q(2)); },
-      "block_contact", "block_support");
-  if (parameters.cell != mesh::CellKind::hex8)
-  {
-    // An edge between two nodes on the sphere |x - c| = R keeps its node on the sphere.
-    const Eigen::Vector3d centre(0, 0, R);
-    p.mesh = mesh::convert_hex8_mesh(p.mesh, parameters.cell, [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-      const Eigen::Vector3d middle = 0.5 * (a + b);
-      const auto on_sphere = [&](const Eigen::Vector3d& x) { return std::abs((x - centre).norm() - R) < 1e-9 * R; };
-      return on_sphere(a) && on_sphere(b) ? Eigen::Vector3d(centre + R * (middle - centre).normalized()) : middle;
-    });
-  }
+  if (parameters.gmsh_mesh)
+    p.mesh = gmsh_mesh(parameters);
+  else
+    p.mesh = octant_mesh(parameters, sphere_parameters, block_parameters);
   for (const auto& [name, faces] : p.mesh.face_sets)
     p.mesh.add_node_set_from_faces(name, name);
 

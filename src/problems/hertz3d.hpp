@@ -19,6 +19,8 @@
 ///    about the contact point (as hertz.cpp's moment_free_couple in 2D).
 ///  - body 1 "block": the half-space truncated to the octant ball of radius block_radius
 ///    below z = 0 (z = -d), fixed on its curved face "block_support".
+/// With gmsh_mesh the same bodies are OpenCASCADE solids (the sphere cut to the ball of
+/// cap_radius about the contact point) meshed by Gmsh with graded tetrahedra, and the sets the same.
 /// Both meshes are graded from h = element_size / refinement (sphere) and master_ratio h
 /// (block) in a uniform core covering 1.25 a out to cells `radial_aspect` times longer radially
 /// than tangentially and proportional in size to the distance from the contact; the contact
@@ -58,6 +60,12 @@ struct Hertz3dParameters
   /// Cell type: hex8 as meshed, or those cells converted (mesh/cell_conversion.hpp), the
   /// quadratic cells' edge nodes on the sphere where the edge lies on it.
   mesh::CellKind cell = mesh::CellKind::hex8;
+  /// Instead of the octant balls: the sphere cut to the ball of cap_radius and the block cut
+  /// to the ball of block_radius as OpenCASCADE solids, meshed by Gmsh with tetrahedra (cell
+  /// tet10 or tet4; quarter model only) of size element_size / refinement times the order
+  /// within 1.25 a of the contact point, growing by gmsh_growth per metre beyond.
+  bool gmsh_mesh = false;
+  double gmsh_growth = 0.25;
   fem::Material block() const { return block_material.value_or(material); }
   bool half_model() const { return tangential_load > 0 || tangential_displacement > 0; }
   /// The Q (N, whole sphere) that Mindlin is compared with: tangential_load, or mu F for the

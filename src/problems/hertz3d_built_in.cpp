@@ -84,6 +84,9 @@ std::vector<io::SettingSpec> hertz3d_setting_specs()
       {"hertz3d.cell", "hex8", "cell type: hex8 as meshed, or its cells split into tet4 / tet10 (six tetrahedra each), "
        "wedge6 (two), or hex20; quadratic cells keep their edge nodes on the sphere", Type::text,
        {"hex8", "tet4", "tet10", "hex20", "wedge6"}, 0, 0, false},
+      {"hertz3d.mesh", "octant", "octant: the graded octant balls built here (cells of hertz3d.cell); gmsh: the "
+       "sphere and the block as OpenCASCADE solids meshed by Gmsh with tetrahedra graded from the contact point "
+       "(hertz3d.cell tet10 or tet4; quarter model only)", Type::text, {"octant", "gmsh"}, 0, 0, false},
       {"hertz3d.block_young", "", "Young's modulus of the block (Pa), if it differs from the sphere's "
        "material.young (E* from both)", Type::number, {}, 0, inf, true},
       {"hertz3d.block_poisson", "", "Poisson's ratio of the block, if it differs from material.poisson",
@@ -113,6 +116,7 @@ Hertz3dParameters hertz3d_parameters(const io::Settings& s)
   for (const mesh::CellKind kind : mesh::all_cell_kinds)
     if (mesh::cell_type(kind).name == s.text("hertz3d.cell"))
       p.cell = kind;
+  p.gmsh_mesh = s.text("hertz3d.mesh") == "gmsh";
   return p;
 }
 

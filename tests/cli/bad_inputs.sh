@@ -287,6 +287,10 @@ expect "hertz3d cap beyond R/2" "cap_radius = 0.04 m must be in" -- \
 expect "hertz3d half-space smaller than its contact core" "cap_radius and block_radius must be at least 2.5 times" -- \
   --set problem=hertz3d --set hertz3d.block_radius=0.005
 expect "hertz3d core too fine" "core cells per edge" -- --set problem=hertz3d --set hertz3d.refinement=64
+expect "hertz3d Gmsh mesh of hexahedra" "mesh=gmsh meshes tetrahedra" -- --set problem=hertz3d --set hertz3d.mesh=gmsh
+expect "hertz3d Gmsh half model" "quarter model only" -- --set problem=hertz3d --set hertz3d.mesh=gmsh \
+  --set hertz3d.cell=tet10 --set hertz3d.tangential_load=3600 --set contact.friction.model=coulomb \
+  --set contact.friction.coefficient=0.3
 
 # Memory guard (issue 21): refused from the mesh size known before meshing (the settings, a
 # Gmsh header), within 5 s and under 200 MB (expect_small below).

@@ -11,4 +11,8 @@ QuadSection mesh_cross_section_with_gmsh(const CrossSection& section, const Size
 
 /// The hexahedra, bodies and sets of a .msh file (read_gmsh has checked the file first).
 Mesh read_model_with_gmsh(const std::filesystem::path& path, const std::string& where);
+/// The cells, bodies and sets of the model open in the current Gmsh session.
+Mesh read_open_model(const std::string& where);
+/// The hertz3d quarter model meshed with tetrahedra (mesh/gmsh_module.hpp).
+Mesh mesh_sphere_on_half_space_with_gmsh(const SphereOnHalfSpace& geometry);
 } // namespace feticon::mesh

@@ -377,6 +377,14 @@ void read_node_sets(const std::vector<PhysicalGroup>& groups, const std::string&
   }
 }
 
+/// Gmsh messages may span lines; feticon errors are one line.
+std::string one_line(std::string text)
+{
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text;
+}
+} // namespace
+
 Mesh read_open_model(const std::string& where)
 {
   const std::vector<PhysicalGroup> groups = read_groups(where);
@@ -387,14 +395,6 @@ Mesh read_open_model(const std::string& where)
   read_node_sets(groups, where, local_id, mesh);
   return mesh;
 }
-
-/// Gmsh messages may span lines; feticon errors are one line.
-std::string one_line(std::string text)
-{
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  return text;
-}
-} // namespace
 
 Mesh read_model_with_gmsh(const std::filesystem::path& path, const std::string& where)
 {

@@ -37,7 +37,12 @@ std::string read_model(const std::filesystem::path& path, const std::string& whe
   return error_of([&] { out = read_model_with_gmsh(path, where); });
 }
 
-const GmshModule module{gmsh_module_abi, &mesh_cross_section, &read_model};
+std::string mesh_sphere_on_half_space(const SphereOnHalfSpace& geometry, Mesh& out)
+{
+  return error_of([&] { out = mesh_sphere_on_half_space_with_gmsh(geometry); });
+}
+
+const GmshModule module{gmsh_module_abi, &mesh_cross_section, &read_model, &mesh_sphere_on_half_space};
 } // namespace
 } // namespace feticon::mesh
 
