@@ -38,6 +38,14 @@
 /// pressure (z_j = p, t = p because sum_j Phi_j = 1) gives the consistent nodal forces of p on
 /// both surfaces, which is what makes the contact patch test pass on non-matching meshes.
 ///
+/// Face types. Faces of every type (tri3, tri6, quad4, quad8) are integrated
+/// (mortar_face_integration.hpp; quad4 against quad4 by mortar_integration.hpp). On tri6 and
+/// quad8 slave faces D_j and M_ja are those of the transformed basis, and the row of an edge
+/// node m is that of its transformed value x~_m = (x_m - alpha (x_c1 + x_c2)) / (1 - 2 alpha):
+/// the master weights above times 1 - 2 alpha, plus alpha on each corner c1, c2 of its edge
+/// (master_share = 1 - 2 alpha), slave_area = D~_m / (1 - 2 alpha). On faces other than quad4
+/// n_j is the master's nodal normals interpolated at the closest point (row_normal in the .cpp).
+///
 /// Linearization. The row is -grad_u g_j with w_ja and n_j held fixed (their variations are
 /// dropped, as for the modified Newton method of ALGORITHMS.md section 8, which rebuilds the rows
 /// in the current configuration at every outer iteration); Popp et al. 2009 linearize them too.
