@@ -88,7 +88,7 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   const FetiChoice feti = choose_feti(file.settings, model_size(*problem), budget, ranks);
   const MemoryEstimate estimate =
       guard_memory(file.settings, feti, guard_nodes(problem->mesh), problem->eliminated[2], what);
-  nonlinear::SolverSettings solver = solver_settings(file.settings, *problem, feti);
+  nonlinear::SolverSettings solver = solver_settings(file.settings, feti);
   solver.explicit_block_budget = estimate.explicit_block_budget;
   const nonlinear::ContactSolution solution = nonlinear::solve_feti_contact(*problem, solver, timers);
   const long peak_contact = peak_memory_bytes();

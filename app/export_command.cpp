@@ -50,7 +50,7 @@ void export_model(const ExportOptions& options)
   const fem::Problem problem = build_problem(file);
   // Kinematics and load steps exactly as `feticon run` takes them.
   const nonlinear::SolverSettings solver = solver_settings(
-      file.settings, problem,
+      file.settings,
       choose_feti(file.settings, model_size(problem), memory_budget(file.settings), par::Communicator::world().size()));
   io::CalculixOptions deck;
   deck.nlgeom = solver.kinematics == fem::Kinematics::total_lagrangian;

@@ -29,9 +29,7 @@ problems::MeshPrediction predict_mesh(const io::ProblemFile& file);
 fem::Problem build_problem(const io::ProblemFile& file, io::DeckInfo* deck = nullptr);
 
 /// Solver settings of the method, QP, contact, Newton and decomposition settings, with the
-/// subdomain count and the preconditioner of `feti` (choose_feti on model_size(problem)), and
-/// node-to-segment rows for friction on quadratic faces unless contact.formulation is given.
-nonlinear::SolverSettings solver_settings(const io::Settings& settings, const fem::Problem& problem,
-                                          const FetiChoice& feti);
+/// subdomain count and the preconditioner of `feti` (choose_feti on the model size).
+nonlinear::SolverSettings solver_settings(const io::Settings& settings, const FetiChoice& feti);
 
 } // namespace feticon::app

@@ -144,7 +144,7 @@ void set_up(const RunOptions& options, RunContext& run)
   size.resident = run.comm.max(static_cast<double>(resident_memory_bytes()));
   run.feti = choose_feti(settings, size, memory_budget(settings), ranks);
   run.memory_estimate = guard_memory(settings, run.feti, size.nodes, size.plane_strain, what, size.resident);
-  run.solver = solver_settings(settings, problem, run.feti);
+  run.solver = solver_settings(settings, run.feti);
   // A restart must decompose and precondition as this run does, whatever memory the machine
   // has then: problem.yaml gets auto's choices.
   if (run.writer && !run.restart)

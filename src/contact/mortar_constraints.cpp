@@ -305,6 +305,8 @@ ContactConstraints build_mortar_constraints(const mesh::Mesh& mesh, const la::Ve
   out.n_slave_nodes = closest.n_slave_nodes;
   out.n_overhanging = closest.n_overhanging;
   out.formulation = ContactFormulation::mortar;
+  out.transformed_basis =
+      std::ranges::any_of(mesh.face_set(pair.slave), [](const mesh::Face& face) { return is_quadratic(face.kind); });
   const std::vector<mesh::Face>& master_faces = mesh.face_set(pair.master);
   const std::unordered_map<int32_t, Eigen::Vector3d> master_normals = master_nodal_normals(mesh, u, master_faces);
   const std::vector<std::array<int32_t, 2>> edge_ends = quadratic_edge_ends(mesh, pair.slave, coupling.slave);

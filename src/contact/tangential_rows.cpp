@@ -32,7 +32,8 @@ namespace
 {
 /// The axes e (bit e set) of symmetry planes through the contact at this row: supports hold
 /// its slave node along e, n is nearly normal to e (|n_e| < 0.05), and the row's weight on
-/// nodes not held along e is below 5 % of its norm. By symmetry the friction traction across
+/// nodes not held along e is below `spread` (5 %, 15 % for the transformed dual basis of
+/// quadratic faces) of its norm. By symmetry the friction traction across
 /// such a plane vanishes, whatever those remainders are; they are not zero because the dual
 /// mortar basis of a slave node on the plane reaches master nodes one cell row beside it (0.17 %
 /// of the row's norm on hertz3d's quarter model, and slivers of 1e-6), and because a plane
@@ -42,7 +43,7 @@ namespace
 /// (small displacements) and of 4e-16 (large) and its inverse, the preconditioner's scaling,
 /// stalled MPGP or was dropped (docs/friction.md).
 int supported_axes(const std::map<int64_t, double>& weight, int64_t slave, const Eigen::Vector3d& n,
-                   const std::vector<int64_t>& supported)
+                   const std::vector<int64_t>& supported, double spread)
 {
   int axes = 0;
   for (int e = 0; e < 3 && !supported.empty(); ++e)
@@ -56,7 +57,7 @@ int supported_axes(const std::map<int64_t, double>& weight, int64_t slave, const
       norm2 += w * w;
       unheld2 += held(node) ? 0.0 : w * w;
     }
-    if (unheld2 < 0.05 * 0.05 * norm2)
+    if (unheld2 < spread * spread * norm2)
       axes |= 1 << e;
   }
   return axes;
@@ -69,6 +70,11 @@ TangentialRows build_tangential_rows(const ContactConstraints& normal, const std
   TangentialRows out;
   std::vector<Eigen::Triplet<double>> triplets;
   const bool plane_strain = eliminated[0] || eliminated[1] || eliminated[2];
+  // The transformed basis of quadratic faces gives master nodes one cell row beside the plane
+  // up to 11.2 % of a plane node's row (hertz3d hex20's half model; bilinear faces 0.17 %):
+  // under 5 %, a third of those rows stayed in the QP, (B B')_CC had the eigenvalue 2.8e-5 and
+  // the solve stalled (docs/elements.md).
+  const double spread = normal.transformed_basis ? 0.15 : 0.05;
   for (int64_t i = 0; i < normal.n_rows(); ++i)
   {
     const Eigen::Vector3d& n = normal.normal[i];
@@ -79,7 +85,7 @@ TangentialRows build_tangential_rows(const ContactConstraints& normal, const std
     std::vector<Eigen::Vector3d> tangents = unit_tangents(n, eliminated);
     // Held tangents: t_2 along a supported axis; t_1 too where a second one holds it (the
     // line where two symmetry planes meet).
-    const int axes = plane_strain ? 0 : supported_axes(weight, normal.slave_node[i], n, supported);
+    const int axes = plane_strain ? 0 : supported_axes(weight, normal.slave_node[i], n, supported, spread);
     std::array<bool, 2> held{false, false};
     if (axes != 0)
     {

@@ -91,9 +91,8 @@ struct DeckOutline
   int64_t elements = 0;
   bool nlgeom = false; ///< some *STEP has NLGEOM
   int increments = 1;  ///< of the first *STATIC
-  /// node_to_segment when every *CONTACT PAIR is NODE TO SURFACE (CalculiX's default TYPE) or
-  /// the pair has friction on quadratic elements (C3D10, C3D20, C3D20R), else mortar (on the
-  /// faces of every element type): the setting contact.formulation.
+  /// node_to_segment when every *CONTACT PAIR is NODE TO SURFACE (CalculiX's default TYPE),
+  /// else mortar (on the faces of every element type): the setting contact.formulation.
   std::string contact_formulation = "mortar";
   /// Coulomb's mu of the *FRICTION under the interaction of the first *CONTACT PAIR (0: none or
   /// frictionless): the settings contact.friction.model = coulomb and .coefficient. Read as

@@ -597,7 +597,7 @@ DeckOutline deck_outline(const std::filesystem::path& path)
   DeckOutline out;
   DeckTokenizer tokens(path);
   DeckKeyword keyword;
-  bool first_step = true, node_to_surface = false, surface_to_surface = false, quadratic = false;
+  bool first_step = true, node_to_surface = false, surface_to_surface = false;
   std::string interaction, pair_interaction;
   std::map<std::string, double> friction; // mu by interaction
   while (tokens.next_keyword(keyword))
@@ -615,11 +615,7 @@ DeckOutline deck_outline(const std::filesystem::path& path)
     if (keyword.name == "NODE")
       out.nodes += tokens.count_data_lines();
     else if (keyword.name == "ELEMENT")
-    {
-      const std::string* type = keyword.value("TYPE");
-      quadratic = quadratic || (type && (type->starts_with("C3D10") || type->starts_with("C3D20")));
       out.elements += tokens.count_data_lines();
-    }
     else if (keyword.name == "STEP")
     {
       const std::string* nlgeom = keyword.value("NLGEOM");
@@ -635,10 +631,7 @@ DeckOutline deck_outline(const std::filesystem::path& path)
   }
   if (const auto it = friction.find(pair_interaction); it != friction.end())
     out.friction_coefficient = it->second;
-  // Friction on quadratic faces takes node-to-segment rows (app/problem_setup.cpp says why).
-  out.contact_formulation = (node_to_surface && !surface_to_surface) || (quadratic && out.friction_coefficient > 0)
-      ? "node_to_segment"
-      : "mortar";
+  out.contact_formulation = node_to_surface && !surface_to_surface ? "node_to_segment" : "mortar";
   return out;
 }
 } // namespace feticon::io

@@ -13,6 +13,7 @@
 #include <optional>
 #include <set>
 #include <tuple>
+#include <unordered_map>
 
 namespace feticon::nonlinear
 {
@@ -125,6 +126,27 @@ la::Vector slave_nodal_pressures(const fem::Problem& problem, const ContactSolut
   return pressure;
 }
 
+namespace
+{
+/// With mortar rows on quadratic faces the shear is the dual traction's nodal value as the
+/// pressure is (force / D~_j per row), not the nodal force over the lumped area: the nodal
+/// forces of a transformed basis are consistent loads, of either sign at the corners. The
+/// tangential rows are matched to the normal rows by slave node (a tangential row has its
+/// normal row's weights and norm |b|).
+std::unordered_map<int32_t, Eigen::Vector3d> dual_traction_shear(const ContactSolution& solution)
+{
+  const auto& rows = solution.constraints;
+  std::unordered_map<int32_t, double> norm_times_area;
+  for (size_t i = 0; i < rows.slave_node.size(); ++i)
+    norm_times_area[rows.slave_node[i]] = rows.row_norm[i] * rows.slave_area[i];
+  std::unordered_map<int32_t, Eigen::Vector3d> shear;
+  for (la::Index r = 0; r < solution.tangential_lambda.size(); ++r)
+    if (const auto it = norm_times_area.find(solution.tangential.slave_node[r]); it != norm_times_area.end())
+      shear[it->first] += solution.tangential_lambda(r) / it->second * solution.tangential.tangent[r];
+  return shear;
+}
+} // namespace
+
 std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, const ContactSolution& solution,
                                                 fem::Kinematics kinematics, const Friction& friction)
 {
@@ -191,6 +213,9 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
         return f.kind == mesh::FaceKind::tri6 || f.kind == mesh::FaceKind::quad8;
       }))
     quadratic_pressure = slave_nodal_pressures(problem, solution, kinematics);
+  std::unordered_map<int32_t, Eigen::Vector3d> dual_shear;
+  if (quadratic_pressure && rows.formulation == contact::ContactFormulation::mortar)
+    dual_shear = dual_traction_shear(solution);
   std::vector<PressureSample> out;
   for (auto& [key, s] : by_x)
   {
@@ -206,6 +231,14 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
         : friction.model == FrictionModel::coulomb               ? friction.coefficient * std::max(s.force, 0.0)
                                                                  : 0.0;
     s.slipping = bound > 0 && s.friction_force.norm() >= (1 - 1e-5) * bound;
+    if (const auto it = dual_shear.find(std::get<3>(key)); it != dual_shear.end())
+    {
+      s.shear = it->second;
+      const double traction_bound = friction.model == FrictionModel::tresca ? friction.slip_bound
+          : friction.model == FrictionModel::coulomb ? friction.coefficient * std::max(s.pressure, 0.0)
+                                                     : 0.0;
+      s.slipping = traction_bound > 0 && s.shear.norm() >= (1 - 1e-5) * traction_bound;
+    }
     out.push_back(s);
   }
   return out;

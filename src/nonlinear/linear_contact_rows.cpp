@@ -77,6 +77,7 @@ contact::ContactConstraints LinearContactRows::subset(const std::vector<char>& k
   out.n_slave_nodes = all.n_slave_nodes;
   out.n_overhanging = all.n_overhanging;
   out.formulation = all.formulation;
+  out.transformed_basis = all.transformed_basis;
   const la::Vector gap = linearized_gaps(all, u);
   contact::ContactRowBuilder rows;
   for (la::Index i = 0; i < all.n_rows(); ++i)

@@ -100,6 +100,16 @@ TEST(TangentialRows, MortarWeightsBesideTheSymmetryPlaneDoNotHideIt)
   // A master node off the plane with a weight of 10 % of the row: not a symmetry plane.
   const TangentialRows off = build_tangential_rows(one_row(n, 0.12), {false, false, false}, supported);
   EXPECT_FALSE(off.held[0] || off.held[1]);
+  // The same rows from the transformed dual basis of quadratic faces, which reaches up to
+  // 11.2 % of a plane node's row beside the plane (hertz3d hex20): held up to 15 %.
+  ContactConstraints spread = one_row(n, 0.12);
+  spread.transformed_basis = true;
+  const TangentialRows quadratic = build_tangential_rows(spread, {false, false, false}, supported);
+  EXPECT_FALSE(quadratic.held[0]);
+  EXPECT_TRUE(quadratic.held[1]);
+  ContactConstraints wider = one_row(n, 0.2);
+  wider.transformed_basis = true;
+  EXPECT_FALSE(build_tangential_rows(wider, {false, false, false}, supported).held[1]);
   // The slave node itself free along y: nothing held, whatever the masters.
   const TangentialRows slave_free = build_tangential_rows(one_row(n), {false, false, false}, {4, 7});
   EXPECT_FALSE(slave_free.held[0] || slave_free.held[1]);

@@ -332,15 +332,14 @@ TEST(DeckReader, ExportedFrictionReadsBackAsCoulombsMu)
   EXPECT_EQ(file.settings.text("contact.friction.model"), "coulomb");
   EXPECT_EQ(file.settings.number("contact.friction.coefficient"), 0.35);
   EXPECT_EQ(deck_outline(path).contact_formulation, "mortar");
-  // The same with tet10: friction on quadratic faces takes node-to-segment rows
-  // (app/problem_setup.cpp says why).
+  // The same with tet10: mortar rows with friction on quadratic faces too.
   fem::Problem tet10 = punch_problem();
   tet10.mesh = mesh::convert_hex8_mesh(tet10.mesh, mesh::CellKind::tet10);
   tet10.validate();
   std::ostringstream tet10_text;
   write_calculix_deck(tet10, options, tet10_text);
   const auto tet10_path = write(dir, "punch_tet10.inp", tet10_text.str());
-  EXPECT_EQ(deck_outline(tet10_path).contact_formulation, "node_to_segment");
+  EXPECT_EQ(deck_outline(tet10_path).contact_formulation, "mortar");
 }
 
 TEST(DeckReader, PlaneStrainDeckEliminatesUz)
