@@ -134,10 +134,16 @@ std::vector<int64_t> ascii_node_tags(LineReader& in, const std::vector<int64_t>&
   std::string line;
   std::vector<int64_t> tags;
   const int64_t declared = header[msh4 ? 1 : 0];
-  auto read_tag = [&](int64_t low, int64_t high) {
+  // `numbers`: the numbers a node line must hold: 4 in MSH 2 (libgmsh 4.8 reads `tag x y z` by
+  // scanning, so a fifth number became the next node's tag and a crash: "15 0.5 0. 5 0.5"
+  // from the fuzzer), 1 for MSH 4's tag lines.
+  auto read_tag = [&](int64_t low, int64_t high, size_t numbers) {
     FETICON_CHECK(in.next(line) && line != "$EndNodes",
                   where << ": line " << in.number() << ": $Nodes declares " << declared << " nodes but lists fewer");
-    const std::string first = tokens(line).empty() ? std::string() : tokens(line)[0];
+    FETICON_CHECK(tokens(line).size() == numbers,
+                  where << ": line " << in.number() << ": a node line holds " << tokens(line).size() << " numbers, not "
+                        << numbers << (msh4 ? " (the tag)" : " (tag x y z)"));
+    const std::string first = tokens(line)[0];
     const int64_t tag = parse_count(first, where, in.number(), "the node tag");
     FETICON_CHECK(tag >= low && tag <= high,
                   where << ": line " << in.number() << ": node tag " << tag << " is outside " << low << ".." << high);
@@ -145,7 +151,7 @@ std::vector<int64_t> ascii_node_tags(LineReader& in, const std::vector<int64_t>&
   };
   if (!msh4)
     for (int64_t k = 0; k < declared; ++k)
-      read_tag(1, INT32_MAX);
+      read_tag(1, INT32_MAX, 4);
   else
   {
     const int64_t low = std::max<int64_t>(1, header[2]), high = std::min<int64_t>(INT32_MAX, header[3]);
@@ -157,7 +163,7 @@ std::vector<int64_t> ascii_node_tags(LineReader& in, const std::vector<int64_t>&
                     where << ": line " << in.number() << ": node block '" << line << "' lists more nodes than the "
                           << declared << " declared (or is not 'dim entity parametric count')");
       for (int64_t k = 0; k < b[3]; ++k)
-        read_tag(low, high);
+        read_tag(low, high, 1);
       for (int64_t k = 0; k < b[3]; ++k)
         FETICON_CHECK(in.next(line) && line != "$EndNodes", where << ": ends inside a block of coordinates");
     }

@@ -357,6 +357,8 @@ expect "MSH 4 \$Elements count below its entries" "lists more elements than the 
   "$(msh_variant few_elements 's/^10 48 1 48$/10 47 1 48/')"
 expect "MSH 2 \$Nodes count below its entries" "declares 15 nodes but lists more" -- \
   "$(msh_variant few_nodes22 '/^\$Nodes/{n;s/^16$/15/}' punch22)"
+expect "MSH 2 node line with a fifth number" "a node line holds 5 numbers, not 4" -- \
+  "$(msh_variant node_line22 's/^15 0.5 0.5 0.5$/15 0.5 0. 5 0.5/' punch22)"
 expect "coincident nodes" "coincident nodes" -- "$(msh_variant coincident '208s/^0.5 0.5 -0.5/0 0.5 -0.5/')"
 
 # Explicit dual operators are formed on the Dirichlet preconditioner's boundary.
