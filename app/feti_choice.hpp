@@ -7,9 +7,11 @@
 /// docs/benchmarks.md, "subdomains = auto"):
 /// - plane strain: the Dirichlet preconditioner, whose boundary blocks are small there (the
 ///   explicit operators), took 1.3-4.6 times less dual-solve time than the lumped one at every
-///   count; 3D: the lumped one, whose cheaper steps beat the Dirichlet one's fewer ones on
-///   the 3D models swept, and which needs no second set of factors (K_ii), unless the
-///   subdomains are small (auto_dirichlet_subdomain_dofs_3d);
+///   count; 3D: the Dirichlet one on a band of one cell layer (qp.dirichlet_layers = 1), whose
+///   steps cost a little more than the lumped one's and are 25-38 % fewer, and whose shell
+///   factors add about a tenth to the memory where the whole interior's would double the
+///   factors; the whole interior where the subdomains are small
+///   (auto_dirichlet_subdomain_dofs_3d);
 /// - the steps grow with the subdomain count while a step's cost hardly falls (the dual grows
 ///   with the boundaries), so the count is the power of two nearest (geometrically) to the
 ///   count of subdomains of a target size, where the factorizations stop dominating; then it
@@ -43,9 +45,16 @@ struct FetiChoice
   dual::DualPreconditioner preconditioner = dual::DualPreconditioner::dirichlet;
   std::string preconditioner_name = "dirichlet";
   std::string preconditioner_reason;
+  /// qp.dirichlet_layers resolved: the band of the Dirichlet preconditioner's S_s (0: all of
+  /// the interior).
+  int dirichlet_layers = 0;
   /// The preconditioner keeps the K_ii factors (the implicit Dirichlet one): the memory
   /// guard counts them.
   bool dirichlet() const { return preconditioner == dual::DualPreconditioner::dirichlet; }
+  InteriorFactors interior_factors() const
+  {
+    return !dirichlet() ? InteriorFactors::none : dirichlet_layers > 0 ? InteriorFactors::band : InteriorFactors::whole;
+  }
 };
 
 /// The size of `problem`'s mesh as the choice sees it.

@@ -33,22 +33,25 @@ std::string gib(double bytes)
 
 /// Bytes per DOF of the data without explicit blocks (see estimate_run_memory) for subdomains
 /// of `per_subdomain` DOFs.
-double bytes_per_dof(double per_subdomain, bool plane_strain, bool interior_factors)
+double bytes_per_dof(double per_subdomain, bool plane_strain, InteriorFactors interior_factors)
 {
   // Fitted to the peaks of docs/benchmarks.md ("The memory guard's estimate", issue 36) less
   // what the process held once its mesh was built; the factor of a subdomain grows like
   // n log n (2D) and n^(4/3) (3D). Measured: plane strain 1.1-1.6 KB at 1.5k-3.8k DOFs per
   // subdomain (the most with large displacements); 3D with the K_ii factors 6.8 / 7.1 / 8.3 KB
   // at 4.2k / 4.9k / 12k. The 0.73 for the factor part without K_ii was fitted on hertz3d with
-  // the lumped preconditioner (97k and 924k DOFs, issue 21).
-  const double factors = interior_factors ? 1.0 : 0.73;
+  // the lumped preconditioner (97k and 924k DOFs, issue 21); the 0.83 with a one-layer band's
+  // factors on hertz3d (121k and 924k DOFs: peaks 9 % and 12 % above the lumped runs').
+  const double factors = interior_factors == InteriorFactors::whole ? 1.0
+      : interior_factors == InteriorFactors::band                   ? 0.83
+                                                                    : 0.73;
   return plane_strain ? 850 + 70 * std::log2(std::max(2.0, per_subdomain)) * factors
                       : 1100 + 315 * std::cbrt(per_subdomain) * factors;
 }
 } // namespace
 
 MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdomains, int ranks, bool explicit_blocks,
-                                   bool interior_factors, double process)
+                                   InteriorFactors interior_factors, double process)
 {
   if (process <= 0)
     process = process_bytes;
@@ -83,7 +86,7 @@ MemoryEstimate estimate_primal_penalty_memory(int64_t nodes, bool plane_strain, 
   // The undecomposed matrix in one factor: the model of one subdomain, counted with the
   // factor part of the K_ii factors' runs (the penalized and the reduced matrix beside K and
   // the factor; measured 2.6 KB per DOF on Hertz at 19k DOFs, 11.4 KB on hertz3d at 39k).
-  return estimate_run_memory(nodes, plane_strain, 1, 1, false, true, process);
+  return estimate_run_memory(nodes, plane_strain, 1, 1, false, InteriorFactors::whole, process);
 }
 
 MemoryEstimate estimate_mesh_memory(int64_t nodes)
@@ -166,15 +169,17 @@ MemoryEstimate guard_memory(const io::Settings& settings, const FetiChoice& feti
   const bool dirichlet = feti.dirichlet();
   const bool explicit_blocks = mode == "explicit";
   // auto is checked as implicit, with the K_ii factors: the run it can always fall back to.
-  MemoryEstimate estimate = estimate_run_memory(nodes, plane_strain, subdomains, ranks, explicit_blocks,
-                                                dirichlet && !explicit_blocks, resident);
+  MemoryEstimate estimate =
+      estimate_run_memory(nodes, plane_strain, subdomains, ranks, explicit_blocks,
+                          explicit_blocks ? InteriorFactors::none : feti.interior_factors(), resident);
   check_fits(estimate, budget, what);
   if (mode == "auto" && dirichlet)
   {
     estimate.per_rank_explicit =
-        estimate_run_memory(nodes, plane_strain, subdomains, ranks, true, false, resident).per_rank;
+        estimate_run_memory(nodes, plane_strain, subdomains, ranks, true, InteriorFactors::none, resident).per_rank;
     // The blocks get what the budget leaves beside an explicit run without them.
-    const MemoryEstimate rest = estimate_run_memory(nodes, plane_strain, subdomains, ranks, false, false, resident);
+    const MemoryEstimate rest =
+        estimate_run_memory(nodes, plane_strain, subdomains, ranks, false, InteriorFactors::none, resident);
     if (budget.per_rank >= 0)
       estimate.explicit_block_budget = std::max(0.0, budget.per_rank - rest.per_rank);
   }

@@ -48,13 +48,22 @@ struct MemoryBudget
   std::string source;   ///< "memory_limit", "MemAvailable" or "the cgroup limit <file>"
 };
 
+/// The K_ii factors of the implicit Dirichlet preconditioner (SchurComplements): none, those
+/// of a band of the interior (qp.dirichlet_layers > 0) or of the whole interior.
+enum class InteriorFactors
+{
+  none,
+  band,
+  whole
+};
+
 /// Peak memory of a solve of a mesh with `nodes` nodes (plane strain: one cell layer) in
 /// `subdomains` subdomains on `ranks` ranks; `explicit_blocks` adds the dense boundary blocks,
 /// `interior_factors` the K_ii factors of the implicit Dirichlet preconditioner.
 /// `process`: bytes a rank holds before the solve (0: the model's figure for a process that
 /// has loaded Gmsh, before any mesh).
 MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdomains, int ranks, bool explicit_blocks,
-                                   bool interior_factors, double process = 0);
+                                   InteriorFactors interior_factors, double process = 0);
 
 /// Peak memory of method = primal_penalty on one rank: the whole stiffness matrix, penalized,
 /// in one factorization; `process` as for estimate_run_memory.

@@ -36,6 +36,7 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const FetiChoic
   nonlinear::SolverSettings out(s);
   out.subdomains = feti.subdomains;
   out.dual.preconditioner = feti.preconditioner;
+  out.dirichlet_layers = feti.dirichlet_layers;
   return out;
 }
 

@@ -152,6 +152,7 @@ void set_up(const RunOptions& options, RunContext& run)
     io::ProblemFile resolved = run.file;
     resolved.settings.set("subdomains", std::to_string(run.feti.subdomains), "the auto choice");
     resolved.settings.set("qp.preconditioner", run.feti.preconditioner_name, "the auto choice");
+    resolved.settings.set("qp.dirichlet_layers", std::to_string(run.feti.dirichlet_layers), "the auto choice");
     feticon::write_file_atomically(run.out_dir / "problem.yaml", effective_problem(resolved));
   }
   run.solver.explicit_block_budget = run.memory_estimate.explicit_block_budget;
@@ -160,8 +161,11 @@ void set_up(const RunOptions& options, RunContext& run)
             settings.text("method") + ", " + settings.text("displacements") + " displacements" +
             (problem.mesh_from_cache ? "; mesh from the mesh cache (FETICON_MESH_CACHE=off remeshes)" : ""));
   if (run.solver.method != nonlinear::ContactMethod::primal_penalty)
-    log::info("subdomains: " + std::to_string(run.feti.subdomains) + " (" + run.feti.subdomains_reason +
-              "); preconditioner: " + run.feti.preconditioner_name + " (" + run.feti.preconditioner_reason + ")");
+    log::info(
+        "subdomains: " + std::to_string(run.feti.subdomains) + " (" + run.feti.subdomains_reason +
+        "); preconditioner: " + run.feti.preconditioner_name +
+        (run.feti.dirichlet_layers > 0 ? " on " + std::to_string(run.feti.dirichlet_layers) + " cell layers" : "") +
+        " (" + run.feti.preconditioner_reason + ")");
   if (!run.deck.path.empty() && run.writer) // rank 0 holds the gathered solution
     run.calculix.emplace(run.out_dir, problem, run.deck, run.solver.kinematics);
   if (run.writer)
@@ -254,7 +258,9 @@ void summarize_problem(const RunContext& run, const nonlinear::ContactSolution& 
   summary["mesh_from_cache"] = problem.mesh_from_cache;
   summary["subdomains"] = solution.n_subdomains;
   summary["subdomains_reason"] = run.feti.subdomains_reason;
-  summary["preconditioner"] = {{"choice", run.feti.preconditioner_name}, {"reason", run.feti.preconditioner_reason}};
+  summary["preconditioner"] = {{"choice", run.feti.preconditioner_name},
+                               {"dirichlet_layers", run.feti.dirichlet_layers},
+                               {"reason", run.feti.preconditioner_reason}};
   summary["dual_size"] = solution.n_dual;
   summary["coarse_size"] = solution.n_kernel;
   const mesh::MeshQuality quality = mesh::mesh_quality(problem.mesh, problem.eliminated[2]);

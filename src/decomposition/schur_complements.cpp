@@ -4,12 +4,46 @@
 #include "common/parallel.hpp"
 #include "la/submatrix.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <string>
 
 namespace feticon::decomposition
 {
+namespace
+{
+/// The interior DOFs of `sub` whose node is within `layers` cell layers of a node with a
+/// boundary DOF (layer 1: sharing a cell with one).
+std::vector<int32_t> band_of_interior(const Subdomain& sub, const std::vector<int32_t>& boundary,
+                                      const std::vector<int32_t>& interior, int layers)
+{
+  constexpr int far = std::numeric_limits<int>::max() / 2;
+  std::vector<int> layer(static_cast<size_t>(sub.domain.n_nodes()), far);
+  for (const int32_t dof : boundary)
+    layer[sub.full_of_active[dof] / 3] = 0;
+  for (int sweep = 0; sweep < layers; ++sweep)
+  {
+    std::vector<int> next = layer;
+    for (size_t c = 0; c < sub.domain.cell_nodes.size(); ++c)
+    {
+      int lowest = far;
+      for (const int32_t n : sub.domain.cell_nodes[c])
+        lowest = std::min(lowest, layer[n]);
+      for (const int32_t n : sub.domain.cell_nodes[c])
+        next[n] = std::min(next[n], lowest + 1);
+    }
+    layer = std::move(next);
+  }
+  std::vector<int32_t> band;
+  for (const int32_t dof : interior)
+    if (layer[sub.full_of_active[dof] / 3] <= layers)
+      band.push_back(dof);
+  return band;
+}
+} // namespace
+
 SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vector<char>& boundary_dof,
-                                   bool factorize_interior)
+                                   bool factorize_interior, int interior_layers)
     : _system(system)
 {
   const Decomposition& decomp = system.decomposition();
@@ -24,6 +58,8 @@ SchurComplements::SchurComplements(const SubdomainSystem& system, const std::vec
       const bool on_boundary = boundary_dof[3 * static_cast<size_t>(node) + full % 3] || decomp.copies(node).size() > 1;
       (on_boundary ? local.boundary : local.interior).push_back(dof);
     }
+    if (interior_layers > 0)
+      local.interior = band_of_interior(sub, local.boundary, local.interior, interior_layers);
   });
   if (factorize_interior)
     this->factorize_interior();

@@ -158,6 +158,11 @@ std::pair<bool, std::string> choose_explicit(const SolverSettings& settings,
     return {false, "no Dirichlet preconditioner, whose boundary the explicit blocks use"};
   if (settings.dual_operator == DualOperatorMode::explicit_)
     return {true, "dual.operator = explicit"};
+  if (settings.dirichlet_layers > 0) // the blocks would hold the whole S_s
+    return {false,
+            "the Dirichlet preconditioner on a band of " + std::to_string(settings.dirichlet_layers) +
+                (settings.dirichlet_layers == 1 ? " cell layer" : " cell layers") +
+                " is applied with its band's factors"};
   const auto& decomp = system.decomposition();
   double setup = 0, implicit_step = 0, explicit_step = 0;
   std::vector<double> boundary_sizes;
@@ -425,7 +430,8 @@ int FetiContactSolve::update_boundary_operators(bool same_K)
   if (!same_K)
     _explicit_operators.reset();
   if (!_schur_boundary.empty()) // the boundaries first: the choice below depends on their sizes
-    _schur = std::make_unique<decomposition::SchurComplements>(*_system, _schur_boundary, false);
+    _schur =
+        std::make_unique<decomposition::SchurComplements>(*_system, _schur_boundary, false, _settings.dirichlet_layers);
   int64_t held = 0; // the old blocks of the subdomains to be formed again
   if (_explicit_operators)
     for (int32_t s = _decomp->first_owned(); s < _decomp->end_owned(); ++s)

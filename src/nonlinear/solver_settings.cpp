@@ -31,6 +31,7 @@ SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
   dual_operator = operator_name == "implicit" ? DualOperatorMode::implicit
       : operator_name == "explicit"           ? DualOperatorMode::explicit_
                                               : DualOperatorMode::automatic;
+  dirichlet_layers = s.is_auto("qp.dirichlet_layers") ? 0 : s.integer("qp.dirichlet_layers");
   formulation = s.text("contact.formulation") == "mortar" ? contact::ContactFormulation::mortar
                                                           : contact::ContactFormulation::node_to_segment;
   eps_n_factor = s.number("eps_n");

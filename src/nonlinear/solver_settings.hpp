@@ -116,6 +116,10 @@ struct SolverSettings
   int subdomains;
   Partitioner partitioner;
   DualOperatorMode dual_operator;
+  /// qp.dirichlet_layers: the band of the Dirichlet preconditioner's S_s (0: the whole
+  /// interior; decomposition/schur_complements.hpp). auto is 0 here (app::solver_settings
+  /// resolves it).
+  int dirichlet_layers = 0;
   /// Bytes per rank that dual.operator = auto may give the explicit blocks with the arrays of
   /// forming them (the memory guard's budget less its estimate of the rest of the run:
   /// app/memory_guard.hpp); negative: a quarter of the rank's share of the node's available

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # CLI test of `subdomains = auto` and `qp.preconditioner = auto` (app/feti_choice.hpp, issue 40).
 # References: the rules of app/feti_choice.hpp (the power of two nearest DOFs / target, at least the
-# bodies; Dirichlet in plane strain, lumped in 3D), the memory guard's own estimate written to
+# bodies; Dirichlet in plane strain, in 3D on a one-layer band), the memory guard's own estimate written to
 # summary.json (it must fit in half of memory_limit when auto raised the count for it), and the
 # given values, which must pass through untouched.
 # Usage: auto_settings.sh FETICON SOURCE_DIR
@@ -26,10 +26,21 @@ expected=$(/usr/bin/python3 -c "import math,sys; print(max(2, 2 ** round(math.lo
 grep -qx "subdomains: $expected" "$work/hertz/problem.yaml" || fail "problem.yaml: $(grep '^subdomains' "$work/hertz/problem.yaml")"
 grep -qx "qp.preconditioner: dirichlet" "$work/hertz/problem.yaml" || fail "problem.yaml lacks the preconditioner"
 
-# 2. 3D (hertz3d): the lumped preconditioner.
+# 2. 3D (hertz3d): the Dirichlet preconditioner on a band of one cell layer.
 run --output "$work/h3" --set problem=hertz3d --set hertz3d.refinement=0.8 --set displacements=small
-[[ $(field "$work/h3" preconditioner.choice) == lumped ]] || fail "hertz3d: preconditioner $(field "$work/h3" preconditioner.choice)"
+[[ $(field "$work/h3" preconditioner.choice) == dirichlet ]] || fail "hertz3d: preconditioner $(field "$work/h3" preconditioner.choice)"
+[[ $(field "$work/h3" preconditioner.dirichlet_layers) == 1 ]] || fail "hertz3d: $(field "$work/h3" preconditioner.dirichlet_layers) layers"
+[[ $(field "$work/h3" dual_operator.mode) == implicit ]] || fail "hertz3d: the band's S_s must be applied implicitly"
+grep -qx "qp.dirichlet_layers: 1" "$work/h3/problem.yaml" || fail "problem.yaml lacks the band"
 [[ $(field "$work/h3" converged) == True ]] || fail "hertz3d did not converge"
+# The band is the user's to set, and a banded S_s cannot be explicit.
+run --output "$work/h3whole" --set problem=hertz3d --set hertz3d.refinement=0.8 --set displacements=small \
+  --set qp.dirichlet_layers=0
+[[ $(field "$work/h3whole" preconditioner.dirichlet_layers) == 0 ]] || fail "given qp.dirichlet_layers=0 not kept"
+if run --output "$work/bad" --set problem=hertz3d --set qp.dirichlet_layers=2 --set dual.operator=explicit 2> "$work/err"; then
+  fail "a band with dual.operator=explicit accepted"
+fi
+grep -q "qp.dirichlet_layers = 2 bands the implicit Schur complements" "$work/err" || fail "message: $(cat "$work/err")"
 
 # 2b. 3D in small subdomains (the sphere example's 4 given subdomains of 4 200 DOFs): Dirichlet.
 run "$2/examples/sphere_on_block/problem.yaml" --output "$work/sphere"
