@@ -10,8 +10,9 @@
 ///   count; 3D: the Dirichlet one on a band of one cell layer (qp.dirichlet_layers = 1), whose
 ///   steps cost a little more than the lumped one's and are 25-38 % fewer, and whose shell
 ///   factors add about a tenth to the memory where the whole interior's would double the
-///   factors; the whole interior where the subdomains are small
-///   (auto_dirichlet_subdomain_dofs_3d);
+///   factors (measured on hex8 meshes); the lumped one with quadratic cells, where a cell
+///   layer is two node layers and the band cost more than it saved; the whole interior
+///   where the subdomains are small (auto_dirichlet_subdomain_dofs_3d);
 /// - the steps grow with the subdomain count while a step's cost hardly falls (the dual grows
 ///   with the boundaries), so the count is the power of two nearest (geometrically) to the
 ///   count of subdomains of a target size, where the factorizations stop dominating; then it
@@ -34,7 +35,8 @@ struct ModelSize
   int64_t cells = 0; ///< 0: not known yet (before the mesh is made)
   int bodies = 1;    ///< a subdomain never spans two bodies
   bool plane_strain = false;
-  double resident = 0; ///< bytes a rank holds already (0: the guard's model of the process)
+  double resident = 0;    ///< bytes a rank holds already (0: the guard's model of the process)
+  bool quadratic = false; ///< some cells are quadratic (tet10, hex20)
 };
 
 /// The subdomain count and the preconditioner of a run, each with why.
@@ -51,6 +53,8 @@ struct FetiChoice
   /// The preconditioner keeps the K_ii factors (the implicit Dirichlet one): the memory
   /// guard counts them.
   bool dirichlet() const { return preconditioner == dual::DualPreconditioner::dirichlet; }
+  /// The name, and the band if there is one ("dirichlet on a band of 1 cell layer").
+  std::string preconditioner_label() const;
   InteriorFactors interior_factors() const
   {
     return !dirichlet() ? InteriorFactors::none : dirichlet_layers > 0 ? InteriorFactors::band : InteriorFactors::whole;

@@ -161,11 +161,8 @@ void set_up(const RunOptions& options, RunContext& run)
             settings.text("method") + ", " + settings.text("displacements") + " displacements" +
             (problem.mesh_from_cache ? "; mesh from the mesh cache (FETICON_MESH_CACHE=off remeshes)" : ""));
   if (run.solver.method != nonlinear::ContactMethod::primal_penalty)
-    log::info(
-        "subdomains: " + std::to_string(run.feti.subdomains) + " (" + run.feti.subdomains_reason +
-        "); preconditioner: " + run.feti.preconditioner_name +
-        (run.feti.dirichlet_layers > 0 ? " on " + std::to_string(run.feti.dirichlet_layers) + " cell layers" : "") +
-        " (" + run.feti.preconditioner_reason + ")");
+    log::info("subdomains: " + std::to_string(run.feti.subdomains) + " (" + run.feti.subdomains_reason +
+              "); preconditioner: " + run.feti.preconditioner_label() + " (" + run.feti.preconditioner_reason + ")");
   if (!run.deck.path.empty() && run.writer) // rank 0 holds the gathered solution
     run.calculix.emplace(run.out_dir, problem, run.deck, run.solver.kinematics);
   if (run.writer)

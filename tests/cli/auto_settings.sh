@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # CLI test of `subdomains = auto` and `qp.preconditioner = auto` (app/feti_choice.hpp, issue 40).
 # References: the rules of app/feti_choice.hpp (the power of two nearest DOFs / target, at least the
-# bodies; Dirichlet in plane strain, in 3D on a one-layer band), the memory guard's own estimate written to
+# bodies; Dirichlet in plane strain, in 3D on a one-layer band, lumped with quadratic cells), the memory guard's own estimate written to
 # summary.json (it must fit in half of memory_limit when auto raised the count for it), and the
 # given values, which must pass through untouched.
 # Usage: auto_settings.sh FETICON SOURCE_DIR
@@ -33,6 +33,11 @@ run --output "$work/h3" --set problem=hertz3d --set hertz3d.refinement=0.8 --set
 [[ $(field "$work/h3" dual_operator.mode) == implicit ]] || fail "hertz3d: the band's S_s must be applied implicitly"
 grep -qx "qp.dirichlet_layers: 1" "$work/h3/problem.yaml" || fail "problem.yaml lacks the band"
 [[ $(field "$work/h3" converged) == True ]] || fail "hertz3d did not converge"
+# Quadratic cells keep the lumped preconditioner (a cell layer is two node layers there).
+run --output "$work/h3q" --set problem=hertz3d --set hertz3d.cell=hex20 --set hertz3d.refinement=0.5 \
+  --set displacements=small
+[[ $(field "$work/h3q" preconditioner.choice) == lumped ]] || fail "hex20: preconditioner $(field "$work/h3q" preconditioner.choice)"
+[[ $(field "$work/h3q" preconditioner.reason) == *"quadratic cells"* ]] || fail "hex20: '$(field "$work/h3q" preconditioner.reason)'"
 # The band is the user's to set, and a banded S_s cannot be explicit.
 run --output "$work/h3whole" --set problem=hertz3d --set hertz3d.refinement=0.8 --set displacements=small \
   --set qp.dirichlet_layers=0
