@@ -75,8 +75,8 @@ void revise_preconditioner(const io::Settings& settings, const ModelSize& size, 
   if (settings.text("qp.preconditioner") == "auto" && !size.plane_strain &&
       per_subdomain <= auto_dirichlet_subdomain_dofs_3d && fits)
     set_preconditioner(out, "dirichlet",
-                       format("3D with small subdomains (%.0f DOFs each, at most %.0f): the whole interior's factors "
-                              "are cheap there, and it needs the fewest steps",
+                       format("3D with small subdomains (%.0f DOFs each, at most %.0f): its second factors are cheap "
+                              "there, and it needs the fewest steps",
                               per_subdomain, auto_dirichlet_subdomain_dofs_3d),
                        given_layers(settings));
 }
