@@ -44,14 +44,15 @@ void set_preconditioner(FetiChoice& out, const std::string& name, const std::str
 void choose_preconditioner(const io::Settings& settings, const ModelSize& size, FetiChoice& out)
 {
   const std::string& name = settings.text("qp.preconditioner");
+  const int layers = given_layers(settings);
   if (name != "auto")
-    set_preconditioner(out, name, "given", given_layers(settings));
+    set_preconditioner(out, name, "given", layers);
   else if (size.plane_strain)
     set_preconditioner(out, "dirichlet",
                        "plane strain: its small boundary blocks make its steps cheap, and it needs the fewest of them",
-                       given_layers(settings));
+                       layers);
   else if (settings.text("dual.operator") == "explicit") // whose blocks hold the whole S_s
-    set_preconditioner(out, "dirichlet", "dual.operator = explicit forms it", given_layers(settings));
+    set_preconditioner(out, "dirichlet", "dual.operator = explicit forms it", layers);
   else if (size.quadratic)
     set_preconditioner(out, "lumped",
                        "3D with quadratic cells: a band of one cell layer is two layers of nodes, and its factors "
@@ -61,7 +62,7 @@ void choose_preconditioner(const io::Settings& settings, const ModelSize& size, 
     set_preconditioner(out, "dirichlet",
                        "3D: on a band of one cell layer, 25-38 % fewer steps than the lumped preconditioner's at a "
                        "little more cost each, and shell factors where the whole interior's would double the memory",
-                       settings.is_auto("qp.dirichlet_layers") ? 1 : given_layers(settings));
+                       settings.is_auto("qp.dirichlet_layers") ? 1 : layers);
 }
 
 /// 3D with small subdomains: the Dirichlet preconditioner's second factors and boundary

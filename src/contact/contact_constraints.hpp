@@ -118,9 +118,6 @@ struct ContactOptions
   double rim_extension = 0.05;
   /// Row formulation; node_to_segment until the mortar rows are validated on the solvers.
   ContactFormulation formulation = ContactFormulation::node_to_segment;
-  /// Mortar rows on tri6 / quad8 slave faces, with the transformed dual basis
-  /// (mortar_face_integration.hpp), whose rows spread their weight wider than bilinear ones.
-  bool transformed_basis = false;
   /// Mortar only, in (0, 1]: a slave node j gets a row only if the part of its support that
   /// projects onto the master surface has the overlap o_j = sum_a M_ja / D_j >= this (1 for full
   /// overlap; about 0.5 for a node on a straight master rim, 0.25 on a master corner). The

@@ -140,11 +140,11 @@ std::vector<int64_t> ascii_node_tags(LineReader& in, const std::vector<int64_t>&
   auto read_tag = [&](int64_t low, int64_t high, size_t numbers) {
     FETICON_CHECK(in.next(line) && line != "$EndNodes",
                   where << ": line " << in.number() << ": $Nodes declares " << declared << " nodes but lists fewer");
-    FETICON_CHECK(tokens(line).size() == numbers,
-                  where << ": line " << in.number() << ": a node line holds " << tokens(line).size() << " numbers, not "
+    const std::vector<std::string> words = tokens(line);
+    FETICON_CHECK(words.size() == numbers,
+                  where << ": line " << in.number() << ": a node line holds " << words.size() << " numbers, not "
                         << numbers << (msh4 ? " (the tag)" : " (tag x y z)"));
-    const std::string first = tokens(line)[0];
-    const int64_t tag = parse_count(first, where, in.number(), "the node tag");
+    const int64_t tag = parse_count(words[0], where, in.number(), "the node tag");
     FETICON_CHECK(tag >= low && tag <= high,
                   where << ": line " << in.number() << ": node tag " << tag << " is outside " << low << ".." << high);
     tags.push_back(tag);

@@ -160,9 +160,8 @@ std::pair<bool, std::string> choose_explicit(const SolverSettings& settings,
     return {true, "dual.operator = explicit"};
   if (settings.dirichlet_layers > 0) // the blocks would hold the whole S_s
     return {false,
-            "the Dirichlet preconditioner on a band of " + std::to_string(settings.dirichlet_layers) +
-                (settings.dirichlet_layers == 1 ? " cell layer" : " cell layers") +
-                " is applied with its band's factors"};
+            "the Dirichlet preconditioner's band (qp.dirichlet_layers = " + std::to_string(settings.dirichlet_layers) +
+                ") is applied with its own factors"};
   const auto& decomp = system.decomposition();
   double setup = 0, implicit_step = 0, explicit_step = 0;
   std::vector<double> boundary_sizes;
