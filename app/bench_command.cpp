@@ -99,6 +99,7 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   out["method"] = file.settings.text("method");
   out["preconditioner"] = feti.preconditioner_name;
   out["dirichlet_layers"] = feti.dirichlet_layers;
+  out["factor_precision"] = feti.single_precision_factors ? "single" : "double";
   out["dual_operator"] = solution.dual_operator; // implicit or explicit, after dual.operator = auto
   out["explicit_operator_bytes"] = solution.explicit_operator_bytes;
   out["converged"] = solution.converged;

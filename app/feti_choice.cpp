@@ -19,9 +19,30 @@ std::string format(const char* pattern, double a, double b = 0, double c = 0)
 }
 
 /// The run's peak on the busiest rank with `subdomains`, as the memory guard will check it.
-double estimated_peak(const ModelSize& size, int subdomains, int ranks, InteriorFactors interior)
+double estimated_peak(const ModelSize& size, int subdomains, int ranks, FactorStorage factors)
 {
-  return estimate_run_memory(size.nodes, size.plane_strain, subdomains, ranks, false, interior, size.resident).per_rank;
+  return estimate_run_memory(size.nodes, size.plane_strain, subdomains, ranks, false, factors, size.resident).per_rank;
+}
+
+/// dual.factor_precision; before the count, whose memory check counts the factors.
+void choose_factor_precision(const io::Settings& settings, const ModelSize& size, FetiChoice& out)
+{
+  const std::string& name = settings.text("dual.factor_precision");
+  if (name != "auto")
+  {
+    out.single_precision_factors = name == "single";
+    out.factor_precision_reason = "given";
+  }
+  else if (size.plane_strain)
+    out.factor_precision_reason = "plane strain: small factors, most of them simplicial; the round-off a linear "
+                                  "run would correct costs more than the traffic saved";
+  else
+  {
+    out.single_precision_factors = true;
+    out.factor_precision_reason = "3D: the substitutions with the factors, most of a step, are bound by reading them; "
+                                  "single precision halves that and the factors' memory (applied in double "
+                                  "arithmetic; the outer iterations correct the round-off)";
+  }
 }
 
 /// qp.dirichlet_layers as given; auto: 0 (the whole interior).
@@ -72,7 +93,8 @@ void revise_preconditioner(const io::Settings& settings, const ModelSize& size, 
 {
   const double per_subdomain = 3.0 * static_cast<double>(size.nodes) / out.subdomains;
   const bool fits = budget.per_rank < 0 ||
-      estimated_peak(size, out.subdomains, ranks, InteriorFactors::whole) <= 0.5 * budget.per_rank;
+      estimated_peak(size, out.subdomains, ranks, {InteriorFactors::whole, out.single_precision_factors}) <=
+          0.5 * budget.per_rank;
   if (settings.text("qp.preconditioner") == "auto" && !size.plane_strain &&
       per_subdomain <= auto_dirichlet_subdomain_dofs_3d && fits)
     set_preconditioner(out, "dirichlet",
@@ -119,9 +141,9 @@ void choose_count(const io::Settings& settings, const ModelSize& size, const Mem
   const double room = 0.5 * budget.per_rank;
   const int first = n;
   const int smallest = clamp(std::floor(dofs / auto_min_subdomain_dofs));
-  while (budget.per_rank >= 0 && n < smallest && estimated_peak(size, n, ranks, out.interior_factors()) > room)
+  while (budget.per_rank >= 0 && n < smallest && estimated_peak(size, n, ranks, factor_storage(out)) > room)
     n = std::min(smallest, clamp(2.0 * n));
-  const double peak = estimated_peak(size, n, ranks, out.interior_factors());
+  const double peak = estimated_peak(size, n, ranks, factor_storage(out));
   if (n != first && peak <= room)
     out.subdomains_reason += format("; raised from %.0f so that the estimated peak, %.0f MiB a rank, fits in half "
                                     "the %.0f MiB available",
@@ -158,6 +180,7 @@ FetiChoice choose_feti(const io::Settings& settings, const ModelSize& size, cons
                                          << " bands the implicit Schur complements; dual.operator = explicit forms the "
                                             "whole ones: set one of them to auto");
   FetiChoice out;
+  choose_factor_precision(settings, size, out);
   choose_preconditioner(settings, size, out);
   choose_count(settings, size, budget, std::max(1, ranks), out);
   revise_preconditioner(settings, size, budget, std::max(1, ranks), out);

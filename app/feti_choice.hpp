@@ -13,6 +13,10 @@
 ///   factors (measured on hex8 meshes); the lumped one with quadratic cells, where a cell
 ///   layer is two node layers and the band cost more than it saved; the whole interior
 ///   where the subdomains are small (auto_dirichlet_subdomain_dofs_3d);
+/// - the factors in single precision in 3D: the substitutions, most of a step, are bound by
+///   reading them (hertz3d 924k: a step 0.49 -> 0.31 s, the peak 4.8 -> 3.2 GiB, the answer
+///   the same to 1e-7; docs/benchmarks.md "Single-precision factors"); in plane strain they
+///   are small and mostly simplicial, and a linear run would pay a refinement iteration;
 /// - the steps grow with the subdomain count while a step's cost hardly falls (the dual grows
 ///   with the boundaries), so the count is the power of two nearest (geometrically) to the
 ///   count of subdomains of a target size, where the factorizations stop dominating; then it
@@ -50,6 +54,9 @@ struct FetiChoice
   /// qp.dirichlet_layers resolved: the band of the Dirichlet preconditioner's S_s (0: all of
   /// the interior).
   int dirichlet_layers = 0;
+  /// dual.factor_precision resolved, and why.
+  bool single_precision_factors = false;
+  std::string factor_precision_reason;
   /// The preconditioner keeps the K_ii factors (the implicit Dirichlet one): the memory
   /// guard counts them.
   bool dirichlet() const { return preconditioner == dual::DualPreconditioner::dirichlet; }
@@ -60,6 +67,12 @@ struct FetiChoice
     return !dirichlet() ? InteriorFactors::none : dirichlet_layers > 0 ? InteriorFactors::band : InteriorFactors::whole;
   }
 };
+
+/// The memory guard's description of the factors the choice keeps.
+inline FactorStorage factor_storage(const FetiChoice& feti)
+{
+  return {feti.interior_factors(), feti.single_precision_factors};
+}
 
 /// The size of `problem`'s mesh as the choice sees it.
 ModelSize model_size(const fem::Problem& problem);

@@ -31,9 +31,15 @@ std::string gib(double bytes)
   return text;
 }
 
+/// The factor part of bytes_per_dof kept in single precision, for `owned` subdomains on a
+/// rank: the float entries, half the double ones, plus the double factor each thread holds
+/// while it copies it (a share threads / owned of the whole: hertz3d 924k in 128 subdomains
+/// peaked at 3.03 GiB against 4.84 in double; 22k in 2 subdomains at 194 MiB against 170).
+double single_factor_share(double owned) { return 0.5 + std::min(1.0, threads() / std::max(1.0, owned)); }
+
 /// Bytes per DOF of the data without explicit blocks (see estimate_run_memory) for subdomains
-/// of `per_subdomain` DOFs.
-double bytes_per_dof(double per_subdomain, bool plane_strain, InteriorFactors interior_factors)
+/// of `per_subdomain` DOFs, `owned` of them on a rank.
+double bytes_per_dof(double per_subdomain, double owned, bool plane_strain, FactorStorage storage)
 {
   // Fitted to the peaks of docs/benchmarks.md ("The memory guard's estimate", issue 36) less
   // what the process held once its mesh was built; the factor of a subdomain grows like
@@ -42,16 +48,18 @@ double bytes_per_dof(double per_subdomain, bool plane_strain, InteriorFactors in
   // at 4.2k / 4.9k / 12k. The 0.73 for the factor part without K_ii was fitted on hertz3d with
   // the lumped preconditioner (97k and 924k DOFs, issue 21); the 0.83 with a one-layer band's
   // factors on hertz3d (121k and 924k DOFs: peaks 9 % and 12 % above the lumped runs').
-  const double factors = interior_factors == InteriorFactors::whole ? 1.0
-      : interior_factors == InteriorFactors::band                   ? 0.83
-                                                                    : 0.73;
+  const double precision = storage.single_precision ? single_factor_share(owned) : 1.0;
+  const double factors = precision *
+      (storage.interior == InteriorFactors::whole      ? 1.0
+           : storage.interior == InteriorFactors::band ? 0.83
+                                                       : 0.73);
   return plane_strain ? 850 + 70 * std::log2(std::max(2.0, per_subdomain)) * factors
                       : 1100 + 315 * std::cbrt(per_subdomain) * factors;
 }
 } // namespace
 
 MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdomains, int ranks, bool explicit_blocks,
-                                   InteriorFactors interior_factors, double process)
+                                   FactorStorage factors, double process)
 {
   if (process <= 0)
     process = process_bytes;
@@ -61,7 +69,8 @@ MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdoma
   ranks = std::max(1, ranks);
   const double dofs = 3.0 * static_cast<double>(nodes);
   const double per_subdomain = dofs / out.subdomains;
-  double data = dofs * bytes_per_dof(per_subdomain, plane_strain, interior_factors);
+  const double owned_subdomains = std::ceil(static_cast<double>(out.subdomains) / ranks);
+  double data = dofs * bytes_per_dof(per_subdomain, owned_subdomains, plane_strain, factors);
   double rank_data = data / ranks;
   if (explicit_blocks)
   {
@@ -86,7 +95,7 @@ MemoryEstimate estimate_primal_penalty_memory(int64_t nodes, bool plane_strain, 
   // The undecomposed matrix in one factor: the model of one subdomain, counted with the
   // factor part of the K_ii factors' runs (the penalized and the reduced matrix beside K and
   // the factor; measured 2.6 KB per DOF on Hertz at 19k DOFs, 11.4 KB on hertz3d at 39k).
-  return estimate_run_memory(nodes, plane_strain, 1, 1, false, InteriorFactors::whole, process);
+  return estimate_run_memory(nodes, plane_strain, 1, 1, false, {InteriorFactors::whole, false}, process);
 }
 
 MemoryEstimate estimate_mesh_memory(int64_t nodes)
@@ -169,17 +178,18 @@ MemoryEstimate guard_memory(const io::Settings& settings, const FetiChoice& feti
   const bool dirichlet = feti.dirichlet();
   const bool explicit_blocks = mode == "explicit";
   // auto is checked as implicit, with the K_ii factors: the run it can always fall back to.
-  MemoryEstimate estimate =
-      estimate_run_memory(nodes, plane_strain, subdomains, ranks, explicit_blocks,
-                          explicit_blocks ? InteriorFactors::none : feti.interior_factors(), resident);
+  MemoryEstimate estimate = estimate_run_memory(
+      nodes, plane_strain, subdomains, ranks, explicit_blocks,
+      {explicit_blocks ? InteriorFactors::none : feti.interior_factors(), feti.single_precision_factors}, resident);
   check_fits(estimate, budget, what);
   if (mode == "auto" && dirichlet)
   {
-    estimate.per_rank_explicit =
-        estimate_run_memory(nodes, plane_strain, subdomains, ranks, true, InteriorFactors::none, resident).per_rank;
+    estimate.per_rank_explicit = estimate_run_memory(nodes, plane_strain, subdomains, ranks, true,
+                                                     {InteriorFactors::none, feti.single_precision_factors}, resident)
+                                     .per_rank;
     // The blocks get what the budget leaves beside an explicit run without them.
-    const MemoryEstimate rest =
-        estimate_run_memory(nodes, plane_strain, subdomains, ranks, false, InteriorFactors::none, resident);
+    const MemoryEstimate rest = estimate_run_memory(nodes, plane_strain, subdomains, ranks, false,
+                                                    {InteriorFactors::none, feti.single_precision_factors}, resident);
     if (budget.per_rank >= 0)
       estimate.explicit_block_budget = std::max(0.0, budget.per_rank - rest.per_rank);
   }

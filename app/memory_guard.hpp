@@ -57,13 +57,21 @@ enum class InteriorFactors
   whole
 };
 
+/// What the subdomain factors of a run are: those of K+ always, the K_ii factors of the
+/// implicit Dirichlet preconditioner as `interior`, in single or double precision.
+struct FactorStorage
+{
+  InteriorFactors interior = InteriorFactors::none;
+  bool single_precision = false;
+};
+
 /// Peak memory of a solve of a mesh with `nodes` nodes (plane strain: one cell layer) in
 /// `subdomains` subdomains on `ranks` ranks; `explicit_blocks` adds the dense boundary blocks,
-/// `interior_factors` the K_ii factors of the implicit Dirichlet preconditioner.
+/// `factors` the K_ii factors of the implicit Dirichlet preconditioner and the precision.
 /// `process`: bytes a rank holds before the solve (0: the model's figure for a process that
 /// has loaded Gmsh, before any mesh).
 MemoryEstimate estimate_run_memory(int64_t nodes, bool plane_strain, int subdomains, int ranks, bool explicit_blocks,
-                                   InteriorFactors interior_factors, double process = 0);
+                                   FactorStorage factors, double process = 0);
 
 /// Peak memory of method = primal_penalty on one rank: the whole stiffness matrix, penalized,
 /// in one factorization; `process` as for estimate_run_memory.

@@ -37,6 +37,8 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const FetiChoic
   out.subdomains = feti.subdomains;
   out.dual.preconditioner = feti.preconditioner;
   out.dirichlet_layers = feti.dirichlet_layers;
+  out.factor_precision =
+      feti.single_precision_factors ? la::FactorPrecision::single_precision : la::FactorPrecision::double_precision;
   return out;
 }
 

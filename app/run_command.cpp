@@ -153,6 +153,8 @@ void set_up(const RunOptions& options, RunContext& run)
     resolved.settings.set("subdomains", std::to_string(run.feti.subdomains), "the auto choice");
     resolved.settings.set("qp.preconditioner", run.feti.preconditioner_name, "the auto choice");
     resolved.settings.set("qp.dirichlet_layers", std::to_string(run.feti.dirichlet_layers), "the auto choice");
+    resolved.settings.set("dual.factor_precision", run.feti.single_precision_factors ? "single" : "double",
+                          "the auto choice");
     feticon::write_file_atomically(run.out_dir / "problem.yaml", effective_problem(resolved));
   }
   run.solver.explicit_block_budget = run.memory_estimate.explicit_block_budget;
@@ -258,6 +260,8 @@ void summarize_problem(const RunContext& run, const nonlinear::ContactSolution& 
   summary["preconditioner"] = {{"choice", run.feti.preconditioner_name},
                                {"dirichlet_layers", run.feti.dirichlet_layers},
                                {"reason", run.feti.preconditioner_reason}};
+  summary["factor_precision"] = {{"choice", run.feti.single_precision_factors ? "single" : "double"},
+                                 {"reason", run.feti.factor_precision_reason}};
   summary["dual_size"] = solution.n_dual;
   summary["coarse_size"] = solution.n_kernel;
   const mesh::MeshQuality quality = mesh::mesh_quality(problem.mesh, problem.eliminated[2]);

@@ -30,7 +30,7 @@ std::vector<int32_t> choose_fixing_nodes(const Eigen::Matrix<double, Eigen::Dyna
 
 void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
                                const std::vector<int32_t>& fixing_candidates, GeneralizedInverseMethod method,
-                               const std::string& what)
+                               const std::string& what, la::FactorPrecision precision)
 {
   _method = method;
   _n = K.rows();
@@ -73,7 +73,8 @@ void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
         position[i] = static_cast<int32_t>(_kept.size());
         _kept.push_back(static_cast<int32_t>(i));
       }
-    _factor.factorize(la::principal_submatrix(K, position, static_cast<int32_t>(_kept.size())), what.c_str());
+    _factor.factorize(la::principal_submatrix(K, position, static_cast<int32_t>(_kept.size())), what.c_str(),
+                      precision);
     return;
   }
 
@@ -90,7 +91,7 @@ void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
                             _regularization(static_cast<la::Index>(i), static_cast<la::Index>(j)));
   la::SparseMatrix C(_n, _n);
   C.setFromTriplets(triplets.begin(), triplets.end());
-  _factor.factorize(K + C, what.c_str());
+  _factor.factorize(K + C, what.c_str(), precision);
 }
 
 la::Vector GeneralizedInverse::apply(const la::Vector& b) const

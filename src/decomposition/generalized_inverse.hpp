@@ -35,8 +35,10 @@ public:
   /// @param R                 orthonormal kernel basis of K
   /// @param fixing_candidates active DOFs of the fixing nodes
   /// @param what              name used in error messages (e.g. "subdomain 3")
+  /// @param precision         what the factor is kept in (la/single_precision_factor.hpp)
   void setup(const la::SparseMatrix& K, const la::Matrix& R, const std::vector<int32_t>& fixing_candidates,
-             GeneralizedInverseMethod method, const std::string& what);
+             GeneralizedInverseMethod method, const std::string& what,
+             la::FactorPrecision precision = la::FactorPrecision::double_precision);
 
   /// K+ b.
   la::Vector apply(const la::Vector& b) const;

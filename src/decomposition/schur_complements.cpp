@@ -83,7 +83,7 @@ void SchurComplements::factorize_interior()
       const std::string what = "the interior stiffness K_ii of subdomain " + std::to_string(s);
       // Interior DOFs in increasing order: the lower triangle of K_ii, which CHOLMOD reads.
       local.K_ii.factorize(la::principal_submatrix(K, position, static_cast<int32_t>(local.interior.size())),
-                           what.c_str());
+                           what.c_str(), _system.factor_precision());
     }
   });
   _factorized = true;

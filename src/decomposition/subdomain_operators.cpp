@@ -9,8 +9,9 @@
 namespace feticon::decomposition
 {
 SubdomainSystem::SubdomainSystem(const Decomposition& decomposition, std::vector<fem::Material> materials,
-                                 fem::Kinematics kinematics, GeneralizedInverseMethod method)
-    : _decomposition(decomposition), _method(method), _assemblers(decomposition.n_subdomains()),
+                                 fem::Kinematics kinematics, GeneralizedInverseMethod method,
+                                 la::FactorPrecision precision)
+    : _decomposition(decomposition), _method(method), _precision(precision), _assemblers(decomposition.n_subdomains()),
       _operators(decomposition.n_subdomains())
 {
   parallel_for(decomposition.first_owned(), decomposition.end_owned(), setup_work, [&](int32_t s) {
@@ -65,7 +66,7 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
   std::vector<int64_t> owned_kernel_dims(_decomposition.end_owned() - first);
   parallel_for(first, _decomposition.end_owned(), setup_work, [&](int32_t s) {
     SubdomainOperators& op = _operators[s];
-    op.K_plus.setup(op.K, op.R, fixing_candidates[s - first], _method, "subdomain " + std::to_string(s));
+    op.K_plus.setup(op.K, op.R, fixing_candidates[s - first], _method, "subdomain " + std::to_string(s), _precision);
     owned_kernel_dims[s - first] = op.R.cols();
   });
   // Kernel blocks of all subdomains, in subdomain order (the coarse space is replicated).

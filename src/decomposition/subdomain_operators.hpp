@@ -26,8 +26,10 @@ class SubdomainSystem
 {
 public:
   /// @param kinematics linear: K_0; total_lagrangian: see update()
+  /// @param precision what the Cholesky factors (K+, and SchurComplements' K_ii) are kept in
   SubdomainSystem(const Decomposition& decomposition, std::vector<fem::Material> materials, fem::Kinematics kinematics,
-                  GeneralizedInverseMethod method);
+                  GeneralizedInverseMethod method,
+                  la::FactorPrecision precision = la::FactorPrecision::double_precision);
 
   /// Assembles K_s at the stacked displacement `u` (material part K_M(u) in TL, K_0 when
   /// u = 0 or linear), computes R_s from the coordinates X + u and factorizes; with
@@ -46,12 +48,14 @@ public:
   int64_t n_kernel() const { return _kernel_offsets.back(); }
   /// Sum of the nonzeros of the owned Cholesky factors.
   long factor_nonzeros() const;
+  la::FactorPrecision factor_precision() const { return _precision; }
 
 private:
   la::Vector full_local(int32_t s, const la::Vector& u_stacked) const;
 
   const Decomposition& _decomposition;
   GeneralizedInverseMethod _method;
+  la::FactorPrecision _precision;
   std::vector<std::unique_ptr<fem::Assembler>> _assemblers;
   std::vector<SubdomainOperators> _operators;
   std::vector<int64_t> _kernel_offsets;

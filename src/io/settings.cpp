@@ -70,6 +70,11 @@ std::vector<SettingSpec> make_specs()
                                 "factorization; needs qp.preconditioner=dirichlet) or auto (explicit where the "
                                 "blocks fit the memory and pay for their set-up)",
        Type::text, {"implicit", "explicit", "auto"}, 0, 0, false},
+      {"dual.factor_precision", "auto", "what the supernodal Cholesky factors of the subdomains (K+ and the "
+       "Dirichlet preconditioner's K_ii) are kept in: double, single (half the memory and traffic of the "
+       "substitutions, applied in double arithmetic; the outer iterations correct the round-off) or auto "
+       "(single in 3D, double in plane strain)",
+       Type::text, {"double", "single", "auto"}, 0, 0, false},
       {"qp.rtol", "1e-8", "QP stopping tolerance ||g_P|| <= rtol ||b||", Type::number, {}, 0, 1, true},
       {"qp.expansion", "std", "MPRGP expansion step: std (feasible half step and projected gradient step, "
        "ALGORITHMS.md 5) or projcg (the CG step projected, with std as fallback where it raises the cost)",

@@ -1,6 +1,7 @@
 #include "la/cholmod.hpp"
 
 #include "common/error.hpp"
+#include "la/single_precision_factor.hpp"
 
 #include <Eigen/CholmodSupport>
 
@@ -9,9 +10,21 @@
 
 namespace feticon::la
 {
+namespace
+{
+/// Eigen keeps CHOLMOD's factor to itself; the single-precision copy reads it.
+class Decomposition : public Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>
+{
+public:
+  const cholmod_factor& factor() const { return *m_cholmodFactor; }
+};
+} // namespace
+
 struct CholmodFactor::Impl
 {
-  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> solver;
+  std::unique_ptr<Decomposition> solver;         ///< null once copied to `single`
+  std::unique_ptr<SinglePrecisionFactor> single; ///< FactorPrecision::single_precision
+  long nonzeros = 0;
 };
 
 CholmodFactor::CholmodFactor() = default;
@@ -19,12 +32,14 @@ CholmodFactor::~CholmodFactor() = default;
 CholmodFactor::CholmodFactor(CholmodFactor&&) noexcept = default;
 CholmodFactor& CholmodFactor::operator=(CholmodFactor&&) noexcept = default;
 
-void CholmodFactor::factorize(const SparseMatrix& A, const char* what)
+void CholmodFactor::factorize(const SparseMatrix& A, const char* what, FactorPrecision precision)
 {
   FETICON_CHECK(A.rows() == A.cols(), what << " is not square (" << A.rows() << " x " << A.cols() << ")");
   _impl = std::make_unique<Impl>();
+  _impl->solver = std::make_unique<Decomposition>();
+  Decomposition& solver = *_impl->solver;
   // CHOLMOD picks simplicial (small subdomains: no BLAS call overhead) or supernodal.
-  _impl->solver.setMode(Eigen::CholmodAuto);
+  solver.setMode(Eigen::CholmodAuto);
   {
     // One analysis at a time: CHOLMOD's default ordering also tries METIS when AMD fills in
     // much (3D subdomains), and METIS keeps its random generator in a global; two threads
@@ -34,10 +49,10 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what)
     // factorization, most of the time, stays on the threads.
     static std::mutex analysis;
     const std::lock_guard lock(analysis);
-    _impl->solver.analyzePattern(A);
+    solver.analyzePattern(A);
   }
-  _impl->solver.factorize(A);
-  if (_impl->solver.info() != Eigen::Success)
+  solver.factorize(A);
+  if (solver.info() != Eigen::Success)
   {
     _impl.reset();
     FETICON_CHECK(false,
@@ -46,33 +61,38 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what)
                                                   "definite (a body or subdomain may be "
                                                   "unsupported)");
   }
+  // For a supernodal factor CHOLMOD's lnz counts the entries.
+  _impl->nonzeros = static_cast<long>(solver.cholmod().lnz);
+  if (precision == FactorPrecision::single_precision && solver.factor().is_super)
+  {
+    _impl->single = std::make_unique<SinglePrecisionFactor>(solver.factor());
+    _impl->solver.reset(); // the double factor is not needed any more
+  }
 }
+
+bool CholmodFactor::single_precision() const { return _impl && _impl->single; }
 
 Vector CholmodFactor::solve(const Vector& b) const
 {
   FETICON_ASSERT(_impl, "solve before factorize");
-  return _impl->solver.solve(b);
+  if (_impl->single)
+    return _impl->single->solve(b);
+  return _impl->solver->solve(b);
 }
 
 Matrix CholmodFactor::solve(const Matrix& B) const
 {
   FETICON_ASSERT(_impl, "solve before factorize");
+  if (_impl->single)
+    return _impl->single->solve(B);
   Matrix X(B.rows(), B.cols());
   for (Index j = 0; j < B.cols(); j += solve_block) // a block of right-hand sides in cache
   {
     const Index width = std::min(solve_block, B.cols() - j);
-    X.middleCols(j, width) = _impl->solver.solve(Matrix(B.middleCols(j, width)));
+    X.middleCols(j, width) = _impl->solver->solve(Matrix(B.middleCols(j, width)));
   }
   return X;
 }
 
-long CholmodFactor::factor_nonzeros() const
-{
-  if (!_impl)
-    return 0;
-  // Eigen exposes the cholmod_factor; for a supernodal factor xsize counts the entries.
-  auto& factor = const_cast<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>&>(_impl->solver);
-  cholmod_common& common = factor.cholmod();
-  return static_cast<long>(common.lnz);
-}
+long CholmodFactor::factor_nonzeros() const { return _impl ? _impl->nonzeros : 0; }
 } // namespace feticon::la

@@ -15,6 +15,13 @@ namespace feticon::la
 /// enough that the workspace stays in cache (docs/measurements.md).
 inline constexpr Index solve_block = 32;
 
+/// What a factor's entries are stored in once factorized (single_precision_factor.hpp).
+enum class FactorPrecision
+{
+  double_precision,
+  single_precision ///< supernodal factors only; simplicial ones (small) stay in double
+};
+
 class CholmodFactor
 {
 public:
@@ -25,11 +32,14 @@ public:
 
   /// Factorizes the SPD matrix `A` (full symmetric storage; the lower triangle is read).
   /// Throws feticon::Error if `A` is not positive definite, naming `what`.
-  void factorize(const SparseMatrix& A, const char* what = "matrix");
+  void factorize(const SparseMatrix& A, const char* what = "matrix",
+                 FactorPrecision precision = FactorPrecision::double_precision);
   /// x = A^{-1} b.
   Vector solve(const Vector& b) const;
   Matrix solve(const Matrix& B) const;
   bool factorized() const { return _impl != nullptr; }
+  /// True if the entries are kept in single precision.
+  bool single_precision() const;
   /// Nonzeros in the Cholesky factor (memory and cost indicator).
   long factor_nonzeros() const;
 

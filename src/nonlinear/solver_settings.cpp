@@ -32,6 +32,8 @@ SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
       : operator_name == "explicit"           ? DualOperatorMode::explicit_
                                               : DualOperatorMode::automatic;
   dirichlet_layers = s.is_auto("qp.dirichlet_layers") ? 0 : s.integer("qp.dirichlet_layers");
+  factor_precision = s.text("dual.factor_precision") == "single" ? la::FactorPrecision::single_precision
+                                                                 : la::FactorPrecision::double_precision;
   formulation = s.text("contact.formulation") == "mortar" ? contact::ContactFormulation::mortar
                                                           : contact::ContactFormulation::node_to_segment;
   eps_n_factor = s.number("eps_n");

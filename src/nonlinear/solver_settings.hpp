@@ -126,6 +126,8 @@ struct SolverSettings
   /// memory. At most 4 GiB either way.
   double explicit_block_budget = -1;
   decomposition::GeneralizedInverseMethod generalized_inverse = decomposition::GeneralizedInverseMethod::fixing_dofs;
+  /// dual.factor_precision resolved (app::solver_settings; auto is double here).
+  la::FactorPrecision factor_precision = la::FactorPrecision::double_precision;
   dual::DualPenaltyOptions dual;
   double search_distance = 0;        ///< 0: automatic (about one master element)
   double linear_contact_band = 0.25; ///< LinearContactRows' band (master face diagonals)

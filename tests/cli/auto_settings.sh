@@ -25,6 +25,8 @@ expected=$(/usr/bin/python3 -c "import math,sys; print(max(2, 2 ** round(math.lo
 # problem.yaml keeps the choices, so that a restart decomposes the same way on any machine.
 grep -qx "subdomains: $expected" "$work/hertz/problem.yaml" || fail "problem.yaml: $(grep '^subdomains' "$work/hertz/problem.yaml")"
 grep -qx "qp.preconditioner: dirichlet" "$work/hertz/problem.yaml" || fail "problem.yaml lacks the preconditioner"
+[[ $(field "$work/hertz" factor_precision.choice) == double ]] || fail "Hertz: $(field "$work/hertz" factor_precision.choice) factors"
+grep -qx "dual.factor_precision: double" "$work/hertz/problem.yaml" || fail "problem.yaml lacks the factor precision"
 
 # 2. 3D (hertz3d): the Dirichlet preconditioner on a band of one cell layer.
 run --output "$work/h3" --set problem=hertz3d --set hertz3d.refinement=0.8 --set displacements=small
@@ -33,6 +35,14 @@ run --output "$work/h3" --set problem=hertz3d --set hertz3d.refinement=0.8 --set
 [[ $(field "$work/h3" dual_operator.mode) == implicit ]] || fail "hertz3d: the band's S_s must be applied implicitly"
 grep -qx "qp.dirichlet_layers: 1" "$work/h3/problem.yaml" || fail "problem.yaml lacks the band"
 [[ $(field "$work/h3" converged) == True ]] || fail "hertz3d did not converge"
+# ... with single-precision factors, whose round-off a refinement iteration takes below
+# newton.residual_tolerance (1e-6) in a linear run.
+[[ $(field "$work/h3" factor_precision.choice) == single ]] || fail "hertz3d: $(field "$work/h3" factor_precision.choice) factors"
+/usr/bin/python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['steps'][0]['residual_norm']; sys.exit(0 if r <= 1e-6 else 1)" \
+  "$work/h3/summary.json" || fail "hertz3d: residual above 1e-6 with single-precision factors"
+run --output "$work/h3double" --set problem=hertz3d --set hertz3d.refinement=0.8 --set displacements=small \
+  --set dual.factor_precision=double
+[[ $(field "$work/h3double" factor_precision.reason) == given ]] || fail "given dual.factor_precision not kept"
 # Quadratic cells keep the lumped preconditioner (a cell layer is two node layers there).
 run --output "$work/h3q" --set problem=hertz3d --set hertz3d.cell=hex20 --set hertz3d.refinement=0.5 \
   --set displacements=small
@@ -71,7 +81,7 @@ run --output "$work/tight" --set problem=hertz3d --set hertz3d.refinement=0.8 --
 # 4b. Tighter: even subdomains of 1000 DOFs leave the estimate over half the budget; the run
 # takes them (the guard checks the whole budget) and says so.
 run --output "$work/tighter" --set problem=hertz3d --set hertz3d.refinement=0.8 --set displacements=small \
-  --set memory_limit=1.6e8
+  --set memory_limit=1.4e8
 [[ $(field "$work/tighter" subdomains_reason) == *"the smallest auto takes"* ]] \
   || fail "tighter budget: '$(field "$work/tighter" subdomains_reason)'"
 

@@ -1,0 +1,129 @@
+/// la::SinglePrecisionFactor through CholmodFactor with FactorPrecision::single_precision.
+/// References: the double factor of the same matrix (CHOLMOD), the normwise backward error a
+/// factor rounded to float allows (Higham, Accuracy and Stability of Numerical Algorithms,
+/// 2nd ed., thm. 10.4: |E| <= c eps |L||L'|, eps = 2^-24 here), and symmetry: the operator
+/// must be the exact inverse of one SPD matrix for the Krylov solvers around it.
+
+#include "la/cholmod.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace feticon::la
+{
+namespace
+{
+/// 3 unknowns per node of an m^3 grid coupled to the 26 neighbours, diagonally dominant: a
+/// 3D elasticity-like pattern that CHOLMOD factorizes supernodally.
+SparseMatrix grid_system(int m)
+{
+  std::vector<Triplet> t;
+  auto id = [m](int i, int j, int k) { return (i * m + j) * m + k; };
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j)
+      for (int k = 0; k < m; ++k)
+      {
+        const int a = id(i, j, k);
+        for (int c = 0; c < 3; ++c)
+          for (int d = 0; d < 3; ++d)
+            t.emplace_back(3 * a + c, 3 * a + d, c == d ? 27.0 : 2.7);
+        for (int di = -1; di <= 1; ++di)
+          for (int dj = -1; dj <= 1; ++dj)
+            for (int dk = -1; dk <= 1; ++dk)
+            {
+              const int ii = i + di, jj = j + dj, kk = k + dk;
+              if ((di == 0 && dj == 0 && dk == 0) || ii < 0 || jj < 0 || kk < 0 || ii >= m || jj >= m || kk >= m)
+                continue;
+              for (int c = 0; c < 3; ++c)
+                for (int d = 0; d < 3; ++d)
+                  t.emplace_back(3 * a + c, 3 * id(ii, jj, kk) + d, c == d ? -0.9 : -0.05);
+            }
+      }
+  SparseMatrix A(3 * m * m * m, 3 * m * m * m);
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+
+double backward_error(const SparseMatrix& A, const Vector& x, const Vector& b)
+{
+  const Vector r = b - A * x;
+  return r.norm() / (A.norm() * x.norm() + b.norm()); // Frobenius norm of A: an upper bound
+}
+} // namespace
+
+TEST(SinglePrecisionFactor, BackwardErrorOfAFloatFactor)
+{
+  const SparseMatrix A = grid_system(12); // 5 184 unknowns
+  const Vector b = Vector::LinSpaced(A.rows(), -1.0, 2.0);
+  CholmodFactor exact, single;
+  exact.factorize(A, "grid system");
+  single.factorize(A, "grid system", FactorPrecision::single_precision);
+  ASSERT_FALSE(exact.single_precision());
+  ASSERT_TRUE(single.single_precision()) << "a 3D grid of this size is factorized supernodally";
+  EXPECT_EQ(single.factor_nonzeros(), exact.factor_nonzeros());
+  const Vector x_exact = exact.solve(b);
+  const Vector x_single = single.solve(b);
+  EXPECT_LT(backward_error(A, x_exact, b), 1e-15);
+  // Float's round-off, and not more: below c eps with c = 8, above double's.
+  const double error = backward_error(A, x_single, b);
+  EXPECT_LT(error, 8 * 6e-8);
+  EXPECT_GT(error, 1e-12);
+  EXPECT_LT((x_single - x_exact).norm(), 1e-5 * x_exact.norm());
+}
+
+TEST(SinglePrecisionFactor, AppliesOneSymmetricOperator)
+{
+  // y' A~^-1 z = z' A~^-1 y to double round-off: the substitutions are done in double, so
+  // the float entries define one matrix and CG sees a symmetric operator, not noise.
+  const SparseMatrix A = grid_system(10);
+  CholmodFactor single;
+  single.factorize(A, "grid system", FactorPrecision::single_precision);
+  ASSERT_TRUE(single.single_precision());
+  const Vector y = Vector::LinSpaced(A.rows(), 0.5, 1.5).array().sin();
+  const Vector z = Vector::LinSpaced(A.rows(), -2.0, 3.0).array().cos();
+  const double yz = y.dot(single.solve(z));
+  const double zy = z.dot(single.solve(y));
+  EXPECT_NEAR(yz, zy, 1e-13 * std::abs(yz));
+  // Linear: A~^-1 (y + 2 z) = A~^-1 y + 2 A~^-1 z.
+  const Vector combined = single.solve(Vector(y + 2 * z));
+  EXPECT_LT((combined - single.solve(y) - 2 * single.solve(z)).norm(), 1e-13 * combined.norm());
+}
+
+TEST(SinglePrecisionFactor, ColumnsSolveAsVectors)
+{
+  const SparseMatrix A = grid_system(8);
+  CholmodFactor single;
+  single.factorize(A, "grid system", FactorPrecision::single_precision);
+  Matrix B(A.rows(), 3);
+  for (Index j = 0; j < 3; ++j)
+    B.col(j) = Vector::LinSpaced(A.rows(), -1.0 * j, 1.0 + j);
+  const Matrix X = single.solve(B);
+  for (Index j = 0; j < 3; ++j)
+    EXPECT_EQ((X.col(j) - single.solve(Vector(B.col(j)))).norm(), 0.0);
+}
+
+TEST(SinglePrecisionFactor, SimplicialFactorsStayDouble)
+{
+  // A tridiagonal matrix: CHOLMOD takes the simplicial factorization, which has no
+  // supernodes to copy; its solves stay exact.
+  const int n = 200;
+  std::vector<Triplet> t;
+  for (int i = 0; i < n; ++i)
+  {
+    t.emplace_back(i, i, 2.5);
+    if (i + 1 < n)
+    {
+      t.emplace_back(i, i + 1, -1.0);
+      t.emplace_back(i + 1, i, -1.0);
+    }
+  }
+  SparseMatrix A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  CholmodFactor factor;
+  factor.factorize(A, "tridiagonal", FactorPrecision::single_precision);
+  EXPECT_FALSE(factor.single_precision());
+  const Vector b = Vector::Ones(n);
+  EXPECT_LT(backward_error(A, factor.solve(b), b), 1e-15);
+}
+} // namespace feticon::la
