@@ -16,7 +16,8 @@
 /// - the factors in single precision in 3D: the substitutions, most of a step, are bound by
 ///   reading them (hertz3d 924k: a step 0.49 -> 0.31 s, the peak 4.8 -> 3.2 GiB, the answer
 ///   the same to 1e-7; docs/benchmarks.md "Single-precision factors"); in plane strain they
-///   are small and mostly simplicial, and a linear run would pay a refinement iteration;
+///   are small and mostly simplicial, and a linear run would pay a refinement iteration; nor
+///   with the whole interior's Dirichlet preconditioner, whose dual operators may be explicit;
 /// - the steps grow with the subdomain count while a step's cost hardly falls (the dual grows
 ///   with the boundaries), so the count is the power of two nearest (geometrically) to the
 ///   count of subdomains of a target size, where the factorizations stop dominating; then it

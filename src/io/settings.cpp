@@ -73,7 +73,8 @@ std::vector<SettingSpec> make_specs()
       {"dual.factor_precision", "auto", "what the supernodal Cholesky factors of the subdomains (K+ and the "
        "Dirichlet preconditioner's K_ii) are kept in: double, single (half the memory and traffic of the "
        "substitutions, applied in double arithmetic; the outer iterations correct the round-off) or auto "
-       "(single in 3D, double in plane strain)",
+       "(single in 3D unless the whole interior's Dirichlet preconditioner may make the dual operators explicit; "
+       "double in plane strain)",
        Type::text, {"double", "single", "auto"}, 0, 0, false},
       {"qp.rtol", "1e-8", "QP stopping tolerance ||g_P|| <= rtol ||b||", Type::number, {}, 0, 1, true},
       {"qp.expansion", "std", "MPRGP expansion step: std (feasible half step and projected gradient step, "

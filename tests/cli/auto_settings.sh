@@ -62,6 +62,8 @@ run "$2/examples/sphere_on_block/problem.yaml" --output "$work/sphere"
 [[ $(field "$work/sphere" preconditioner.choice) == dirichlet ]] \
   || fail "sphere: preconditioner $(field "$work/sphere" preconditioner.choice)"
 [[ $(field "$work/sphere" preconditioner.reason) == *"small subdomains"* ]] || fail "sphere: '$(field "$work/sphere" preconditioner.reason)'"
+# ... whose dual operators may be explicit: the factors stay double there.
+[[ $(field "$work/sphere" factor_precision.choice) == double ]] || fail "sphere: $(field "$work/sphere" factor_precision.choice) factors"
 
 # 3. Given values win, and say so.
 run --output "$work/given" --set hertz.refinement=0.5 --set subdomains=3 --set qp.preconditioner=lumped
