@@ -171,18 +171,9 @@ void set_up(const RunOptions& options, RunContext& run)
     run.pvd.emplace(run.out_dir / "solution.pvd");
 }
 
-/// The output of one accepted load step: CalculiX's files, the VTU (one piece per rank under
-/// MPI), the .pvd entry, and after them the checkpoint.
-void write_step(RunContext& run, int step, const nonlinear::ContactSolution& solution)
+/// The VTU of one accepted load step (one piece per rank under MPI) and its .pvd entry.
+void write_step_vtu_files(RunContext& run, int step, const nonlinear::ContactSolution& solution)
 {
-  if (run.calculix)
-  {
-    ScopedTimer t(run.timers, "output");
-    run.calculix->add_step(solution);
-  }
-  if (!run.settings().flag("output.vtu"))
-    return;
-  ScopedTimer t(run.timers, "output");
   const par::Communicator& comm = run.comm;
   const std::string name = step_file_name(step, comm.serial());
   if (comm.serial())
@@ -198,11 +189,21 @@ void write_step(RunContext& run, int step, const nonlinear::ContactSolution& sol
     if (run.writer)
       write_step_pvtu(run.out_dir / name, *run.problem, pieces);
   }
-  if (!run.writer)
-    return;
-  run.pvd->add(solution.steps.back().load_factor, name);
+  if (run.writer)
+    run.pvd->add(solution.steps.back().load_factor, name);
+}
+
+/// The output of one accepted load step: CalculiX's files, the VTU, and after them the
+/// checkpoint, also without VTU output (a restart needs it whatever was written beside it).
+void write_step(RunContext& run, int step, const nonlinear::ContactSolution& solution)
+{
+  ScopedTimer t(run.timers, "output");
+  if (run.calculix)
+    run.calculix->add_step(solution);
+  if (run.settings().flag("output.vtu"))
+    write_step_vtu_files(run, step, solution);
   // After the VTU: a checkpoint always names a step whose output is complete.
-  if (run.solver.method != nonlinear::ContactMethod::primal_penalty)
+  if (run.writer && run.solver.method != nonlinear::ContactMethod::primal_penalty)
     write_checkpoint(run.out_dir / "checkpoint.bin", solution);
 }
 

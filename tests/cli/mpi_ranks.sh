@@ -5,7 +5,8 @@
 # 1e-10 relative (tests/tools/compare_runs.py). Also: one VTU piece per rank joined by a
 # .pvtu that lists them all and covers every cell once (read with the independent reader
 # tests/tools/read_vtu.py), and an error on one rank ends all ranks with its message. The
-# same 1- against 2-rank comparison with partitioner=rcb.
+# same 1- against 2-rank comparison with partitioner=rcb, and on hertz3d with single-precision
+# factors.
 # Usage: mpi_ranks.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -31,6 +32,12 @@ for n in 2 4; do /usr/bin/python3 "$source_dir/tests/tools/compare_runs.py" 1e-1
 # Coordinate bisection: every rank computes the same partition.
 for n in 1 2; do run "$n" "rcb$n" --set partitioner=rcb; done
 /usr/bin/python3 "$source_dir/tests/tools/compare_runs.py" 1e-10 "$work/rcb1" "$work/rcb2"
+# Single-precision factors (3D default): every rank rounds its subdomains' factors alike.
+for n in 1 2; do
+  run "$n" "single$n" --set problem=hertz3d --set hertz3d.refinement=0.8 \
+    --set dual.factor_precision=single --set dual.operator=implicit --set output.vtu=false --set output.plots=false
+done
+/usr/bin/python3 "$source_dir/tests/tools/compare_runs.py" 1e-10 "$work/single1" "$work/single2"
 
 # Pieces: step_002.pvtu names 4 pieces; together they hold every cell of the 1-rank VTU once.
 [[ $(grep -c "<Piece Source=" "$work/np4/step_002.pvtu") -eq 4 ]]

@@ -51,4 +51,8 @@ if "$feticon" run -q --restart "$work/empty" 2> "$work/err"; then echo "restart 
 mkdir -p "$work/early" && cp "$work/killed/problem.yaml" "$work/early/"
 if "$feticon" run -q --restart "$work/early" 2> "$work/err"; then echo "restart without a checkpoint succeeded"; exit 1; fi
 [[ $(wc -l < "$work/err") -eq 1 ]] && grep -q "before its first load step converged" "$work/err" || { cat "$work/err"; exit 1; }
+# Without VTU output a run still keeps its checkpoint (a restart needs nothing else).
+"$feticon" run -q --output "$work/novtu" --set displacements=large --set load_steps=2 --set hertz.refinement=0.5 \
+  --set output.vtu=false --set output.plots=false
+[[ -f "$work/novtu/checkpoint.bin" ]] || { echo "no checkpoint with output.vtu=false"; exit 1; }
 echo "restart: all checks passed"
