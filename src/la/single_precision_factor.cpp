@@ -138,7 +138,15 @@ void subtract_transposed_product_scalar(double* x, const float* A, Index ld, Ind
     x[j] -= dot_scalar(A + j * ld, y, rows);
 }
 
-const bool has_avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+/// The CPU's features, read once; __builtin_cpu_init first because this initializer may run
+/// before libgcc's own constructor has filled them in.
+bool cpu_has_avx2()
+{
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+}
+
+bool has_avx2 = cpu_has_avx2(); // use_vector_kernels() may turn them off
 
 /// y -= A x (A: float, column-major, leading dimension ld).
 void subtract_product(double* y, const float* A, Index ld, Index rows, Index cols, const double* x)
@@ -158,6 +166,12 @@ void subtract_transposed_product(double* x, const float* A, Index ld, Index rows
     subtract_transposed_product_scalar(x, A, ld, rows, cols, y);
 }
 } // namespace
+
+bool use_vector_kernels(bool on)
+{
+  has_avx2 = on && cpu_has_avx2();
+  return has_avx2;
+}
 
 SinglePrecisionFactor::SinglePrecisionFactor(const cholmod_factor& L)
 {

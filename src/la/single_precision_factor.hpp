@@ -17,6 +17,11 @@
 
 namespace feticon::la
 {
+/// The AVX2/FMA kernels where the CPU has them (the default), or the portable ones (for the
+/// tests of the fallback); returns whether the vector kernels are in use. Not thread-safe:
+/// call it outside any solve.
+bool use_vector_kernels(bool on);
+
 class SinglePrecisionFactor
 {
 public:

@@ -5,6 +5,7 @@
 /// must be the exact inverse of one SPD matrix for the Krylov solvers around it.
 
 #include "la/cholmod.hpp"
+#include "la/single_precision_factor.hpp"
 
 #include <gtest/gtest.h>
 
@@ -70,6 +71,22 @@ TEST(SinglePrecisionFactor, BackwardErrorOfAFloatFactor)
   EXPECT_LT(error, 8 * 6e-8);
   EXPECT_GT(error, 1e-12);
   EXPECT_LT((x_single - x_exact).norm(), 1e-5 * x_exact.norm());
+}
+
+TEST(SinglePrecisionFactor, PortableKernelsAgreeWithTheVectorOnes)
+{
+  // The fallback for CPUs without AVX2/FMA computes the same substitutions: the same answer
+  // to double round-off (the sums are grouped differently).
+  const SparseMatrix A = grid_system(10);
+  const Vector b = Vector::LinSpaced(A.rows(), -1.0, 2.0);
+  CholmodFactor single;
+  single.factorize(A, "grid system", FactorPrecision::single_precision);
+  const Vector x_default = single.solve(b);
+  use_vector_kernels(false);
+  const Vector x_portable = single.solve(b);
+  use_vector_kernels(true);
+  EXPECT_LT((x_portable - x_default).norm(), 1e-13 * x_default.norm());
+  EXPECT_LT(backward_error(A, x_portable, b), 8 * 6e-8);
 }
 
 TEST(SinglePrecisionFactor, AppliesOneSymmetricOperator)
