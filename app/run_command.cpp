@@ -164,7 +164,8 @@ void set_up(const RunOptions& options, RunContext& run)
             (problem.mesh_from_cache ? "; mesh from the mesh cache (FETICON_MESH_CACHE=off remeshes)" : ""));
   if (run.solver.method != nonlinear::ContactMethod::primal_penalty)
     log::info("subdomains: " + std::to_string(run.feti.subdomains) + " (" + run.feti.subdomains_reason +
-              "); preconditioner: " + run.feti.preconditioner_label() + " (" + run.feti.preconditioner_reason + ")");
+              "); preconditioner: " + run.feti.preconditioner_label() + " (" + run.feti.preconditioner_reason +
+              "); factors: " + (run.feti.single_precision_factors ? "single" : "double") + " precision");
   if (!run.deck.path.empty() && run.writer) // rank 0 holds the gathered solution
     run.calculix.emplace(run.out_dir, problem, run.deck, run.solver.kinematics);
   if (run.writer)
