@@ -262,8 +262,12 @@ void summarize_problem(const RunContext& run, const nonlinear::ContactSolution& 
   summary["preconditioner"] = {{"choice", run.feti.preconditioner_name},
                                {"dirichlet_layers", run.feti.dirichlet_layers},
                                {"reason", run.feti.preconditioner_reason}};
-  summary["factor_precision"] = {{"choice", run.feti.single_precision_factors ? "single" : "double"},
-                                 {"reason", run.feti.factor_precision_reason}};
+  if (run.solver.method == nonlinear::ContactMethod::primal_penalty) // no subdomain factors
+    summary["factor_precision"] = {{"choice", "double"},
+                                   {"reason", "method primal_penalty: one direct factorization of the whole model"}};
+  else
+    summary["factor_precision"] = {{"choice", run.feti.single_precision_factors ? "single" : "double"},
+                                   {"reason", run.feti.factor_precision_reason}};
   summary["dual_size"] = solution.n_dual;
   summary["coarse_size"] = solution.n_kernel;
   const mesh::MeshQuality quality = mesh::mesh_quality(problem.mesh, problem.eliminated[2]);
