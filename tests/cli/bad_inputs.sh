@@ -365,6 +365,7 @@ expect "coincident nodes" "coincident nodes" -- "$(msh_variant coincident '208s/
 expect "explicit operators without the Dirichlet preconditioner" "qp.preconditioner" -- \
   --set dual.operator=explicit --set qp.preconditioner=none --set hertz.refinement=0.5 --set displacements=small
 expect "dual.operator unknown" "dual.operator" -- --set dual.operator=dense
+expect "dual.factor_precision unknown" "dual.factor_precision" -- --set dual.factor_precision=half
 # A band of the Dirichlet preconditioner is applied with its own factors, never as explicit blocks.
 expect "a band with explicit operators" "qp.dirichlet_layers = 1 bands the implicit Schur complements" -- \
   --set dual.operator=explicit --set qp.dirichlet_layers=1 --set hertz.refinement=0.5 --set displacements=small
