@@ -155,6 +155,9 @@ void set_up(const RunOptions& options, RunContext& run)
     resolved.settings.set("qp.dirichlet_layers", std::to_string(run.feti.dirichlet_layers), "the auto choice");
     resolved.settings.set("dual.factor_precision", run.feti.single_precision_factors ? "single" : "double",
                           "the auto choice");
+    char rho[32];
+    std::snprintf(rho, sizeof rho, "%.17g", run.solver.dual.rho); // the method's own where not given
+    resolved.settings.set("rho", rho, "the method's default");
     feticon::write_file_atomically(run.out_dir / "problem.yaml", effective_problem(resolved));
   }
   run.solver.explicit_block_budget = run.memory_estimate.explicit_block_budget;
@@ -275,7 +278,7 @@ void summarize_problem(const RunContext& run, const nonlinear::ContactSolution& 
                              {"min_angle_deg", quality.min_angle_deg},
                              {"max_angle_deg", quality.max_angle_deg},
                              {"measured", problem.eliminated[2] ? "in plane" : "all cell faces"}};
-  summary["rho"] = settings.number("rho");
+  summary["rho"] = run.solver.dual.rho;
   summary["dual_operator"] = {{"mode", solution.dual_operator},
                               {"reason", solution.dual_operator_reason},
                               {"bytes", solution.explicit_operator_bytes},
@@ -370,7 +373,7 @@ nlohmann::ordered_json run_warnings(const RunContext& run, const nonlinear::Cont
                   "the dual penalty with rho = %g leaves ||G lambda - e|| / ||e|| = %.2g above "
                   "contact.feasibility_tolerance = %g: the contact forces do not balance the load; raise rho "
                   "or use method=smalbe",
-                  settings.number("rho"), solution.feasibility_error, feasibility_tolerance);
+                  run.solver.dual.rho, solution.feasibility_error, feasibility_tolerance);
     warnings.push_back(line);
   }
   // Where a built-in problem says the whole load goes through the contact, the contact force must

@@ -24,7 +24,8 @@ std::vector<SettingSpec> make_specs()
       {"method", "smalbe", "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "
                            "(problem (9) of Vondrák et al.), primal_penalty (undecomposed, CHOLMOD)",
        Type::text, {"smalbe", "dual_penalty", "primal_penalty"}, 0, 0, false},
-      {"rho", "1", "dual penalty rho, dimensionless (F and d scaled by ||PFP||)", Type::number, {}, 0, inf, true},
+      {"rho", "1", "dual penalty rho, dimensionless (F and d scaled by ||PFP||); with method = dual_penalty "
+       "1000 unless given (its feasibility error falls like 1 / rho)", Type::number, {}, 0, inf, true},
       {"smalbe.M0", "1", "SMALBE-M initial M (scaled units: ||PFP|| = 1)", Type::number, {}, 0, 1e6, true},
       {"smalbe.beta", "2", "SMALBE-M: M <- M / beta when the Lagrangian increases too little", Type::number, {}, 1, 1e6, true},
       {"contact.formulation", "mortar", "contact rows: node_to_segment (slave node on master "

@@ -44,6 +44,21 @@ TEST(SettingsDefaults, SolverOptionsAreTheTables)
   EXPECT_EQ(s.steps(), table.integer("load_steps"));
 }
 
+// The dual penalty's rho unless given is 1e3, not SMALBE-M's 1: its feasibility error falls
+// like 1 / rho, 0.27 at rho = 1 on Hertz (docs/contact.md), and rho = 1e3 is the first decade
+// under contact.feasibility_tolerance. Reference: the measured 1 / rho law.
+TEST(SettingsDefaults, DualPenaltyTakesItsOwnRhoUnlessGiven)
+{
+  io::Settings settings = table;
+  settings.set("method", "dual_penalty", "test");
+  EXPECT_EQ(dual::DualPenaltyOptions(settings).rho, 1e3);
+  EXPECT_LT(0.27 / dual::DualPenaltyOptions(settings).rho, table.number("contact.feasibility_tolerance"));
+  settings.set("rho", "10", "test");
+  EXPECT_EQ(dual::DualPenaltyOptions(settings).rho, 10);
+  io::Settings smalbe = table;
+  EXPECT_EQ(dual::DualPenaltyOptions(smalbe).rho, 1);
+}
+
 TEST(SettingsDefaults, BuiltInProblemsAgreeWithTheTable)
 {
   const problems::HertzParameters hertz;
