@@ -298,7 +298,7 @@ void compare_with_theory(RunContext& run, const nonlinear::ContactSolution& solu
   surface.reserve(samples.size());
   for (const nonlinear::PressureSample& s : samples)
     surface.push_back({s.x, s.y, s.deformed_x, s.deformed_y, s.pressure, s.shear.x(), s.friction_force.x(), s.slipping,
-                       s.shear.y(), s.area});
+                       s.shear.y(), s.area, s.normal_force.x()});
   const bool large = run.solver.kinematics == fem::Kinematics::total_lagrangian;
   const std::optional<problems::TheoryComparison> theory =
       run.built_in->compare_with_theory(*run.problem, solution.u, surface, large);

@@ -191,8 +191,10 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
     const auto key = key_of(node);
     auto& s = by_x[key];
     ++rows_in_sample[key];
-    s.force += solution.contact_lambda(static_cast<la::Index>(i)) / rows.row_norm[i];
+    const double force = solution.contact_lambda(static_cast<la::Index>(i)) / rows.row_norm[i];
     const Eigen::Vector3d& n = rows.normal[i];
+    s.force += force;
+    s.normal_force += force * n;
     const auto& v = stresses[node];
     Eigen::Matrix3d sigma;
     sigma << v(0), v(3), v(5), v(3), v(1), v(4), v(5), v(4), v(2);

@@ -32,6 +32,10 @@ struct PressureSample
   /// whether it slides (|F_T| at the bound within 1e-5: Tresca's g area, Coulomb's mu force)
   /// and Cattaneo-Mindlin's shear traction along x (Pa), when compared.
   Eigen::Vector3d friction_force = Eigen::Vector3d::Zero();
+  /// The normal contact force on the node(s) as a vector (N): `force` along the rows' normals
+  /// (the master's outward ones). With large displacements the contact surface turns, and the
+  /// normal forces carry part of a tangential load.
+  Eigen::Vector3d normal_force = Eigen::Vector3d::Zero();
   Eigen::Vector3d shear = Eigen::Vector3d::Zero();
   bool slipping = false;
   double shear_analytic = 0;

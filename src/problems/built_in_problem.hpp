@@ -43,6 +43,7 @@ struct SurfaceSample
   bool slipping = false;                 ///< the friction force is at its bound
   double shear_y = 0;                    ///< friction traction along y (Pa)
   double area = 0;                       ///< the sample's tributary area (m^2)
+  double normal_force_x = 0;             ///< the normal contact force along x (N)
 };
 
 /// A completed run's figures against theory.

@@ -99,13 +99,15 @@ struct ShearErrors
 };
 
 /// The `friction` block's keys both geometries share.
-nlohmann::ordered_json figures(const CattaneoMindlin& theory, double force, double applied, double stick_computed,
-                               const ShearErrors& e, int sliding, int sticking)
+nlohmann::ordered_json figures(const CattaneoMindlin& theory, double force, double reaction, double applied,
+                               double stick_computed, const ShearErrors& e, int sliding, int sticking)
 {
   return {{"coefficient", theory.coefficient},
           {"tangential_force", force},
           {"applied_tangential_force", applied},
           {"tangential_force_error", std::abs(force + applied) / applied},
+          {"tangential_reaction", reaction},
+          {"tangential_reaction_error", std::abs(reaction + applied) / applied},
           {"stick_half_width_computed", stick_computed},
           {"stick_half_width_analytic", theory.stick_half_width},
           {"shear_rms_error_over_mu_p0", e.rms(e.sum_sq, theory)},
@@ -124,7 +126,7 @@ nlohmann::ordered_json cattaneo_mindlin_figures(const CattaneoMindlin& theory,
   for (const SurfaceSample& s : samples)
     peak = std::max(peak, s.pressure);
   std::vector<char> loaded(samples.size());
-  double force = 0;
+  double force = 0, reaction = 0;
   ShearErrors errors;
   int sliding = 0, sticking = 0;
   for (size_t i = 0; i < samples.size(); ++i)
@@ -132,13 +134,14 @@ nlohmann::ordered_json cattaneo_mindlin_figures(const CattaneoMindlin& theory,
     const SurfaceSample& s = samples[i];
     loaded[i] = s.pressure > loaded_fraction * peak;
     force += s.friction_force_x;
+    reaction += s.friction_force_x + s.normal_force_x;
     if (loaded[i])
       (s.slipping ? sliding : sticking) += 1;
     if (std::abs(x[i]) <= theory.half_width)
       errors.add(s.shear_x, mirrored_shear(samples, x, x[i]), theory.shear(x[i]));
   }
-  return figures(theory, force, applied_tangential_force, computed_stick_half_width(samples, x, loaded), errors,
-                 sliding, sticking);
+  return figures(theory, force, reaction, applied_tangential_force, computed_stick_half_width(samples, x, loaded),
+                 errors, sliding, sticking);
 }
 
 nlohmann::ordered_json cattaneo_mindlin_sphere_figures(const CattaneoMindlin& theory,
@@ -153,12 +156,13 @@ nlohmann::ordered_json cattaneo_mindlin_sphere_figures(const CattaneoMindlin& th
   std::map<std::pair<long long, long long>, size_t> by_position;
   for (size_t i = 0; i < samples.size(); ++i)
     by_position[key(samples[i].x, samples[i].y)] = i;
-  double force = 0, stick_area = 0, across_sq = 0;
+  double force = 0, reaction = 0, stick_area = 0, across_sq = 0;
   ShearErrors errors;
   int sliding = 0, sticking = 0;
   for (const SurfaceSample& s : samples)
   {
     force += s.friction_force_x;
+    reaction += s.friction_force_x + s.normal_force_x;
     if (s.pressure > loaded_fraction * peak)
     {
       (s.slipping ? sliding : sticking) += 1;
@@ -174,8 +178,8 @@ nlohmann::ordered_json cattaneo_mindlin_sphere_figures(const CattaneoMindlin& th
     errors.add(s.shear_x, samples[mirror->second].shear_x, theory.shear(r));
     across_sq += s.shear_y * s.shear_y;
   }
-  nlohmann::ordered_json out =
-      figures(theory, force, applied_tangential_force, std::sqrt(2 * stick_area / M_PI), errors, sliding, sticking);
+  nlohmann::ordered_json out = figures(theory, force, reaction, applied_tangential_force,
+                                       std::sqrt(2 * stick_area / M_PI), errors, sliding, sticking);
   out["shear_y_rms_over_mu_p0"] = errors.rms(across_sq, theory);
   return out;
 }
@@ -184,7 +188,7 @@ std::string cattaneo_mindlin_line(const nlohmann::ordered_json& f, const Cattane
                                   const std::string& zone)
 {
   const double c = f["stick_half_width_computed"].get<double>();
-  char line[256];
+  char line[320];
   if (theory.stick_half_width == 0) // Q >= mu P: nothing to compare c with
   {
     const int sliding = f["slipping_nodes"].get<int>();
@@ -197,9 +201,10 @@ std::string cattaneo_mindlin_line(const nlohmann::ordered_json& f, const Cattane
   }
   std::snprintf(line, sizeof line,
                 "\nCattaneo-Mindlin: stick %s c %.3f mm (analytic %.3f mm, %+.2f%%), shear RMS error %.2f%% of mu p0, "
-                "friction force %.6g N (applied %.6g N)",
+                "friction force %.6g N, tangential reaction %.9g N (applied %.6g N)",
                 zone.c_str(), 1e3 * c, 1e3 * theory.stick_half_width, 100 * (c / theory.stick_half_width - 1),
-                100 * f["shear_rms_error_over_mu_p0"].get<double>(), f["tangential_force"].get<double>(), applied);
+                100 * f["shear_rms_error_over_mu_p0"].get<double>(), f["tangential_force"].get<double>(),
+                f["tangential_reaction"].get<double>(), applied);
   return line;
 }
 } // namespace feticon::problems

@@ -44,7 +44,10 @@ CattaneoMindlin cattaneo_mindlin(double coefficient, double peak_pressure, doubl
 
 /// The figures of the samples (`x` in the frame of the comparison, ascending or not) against
 /// the theory: `coefficient`, `tangential_force` (N, the friction forces on the cylinder along
-/// x), `applied_tangential_force` (N) and their relative mismatch, the stick-zone half-widths
+/// x), `applied_tangential_force` (N) and their relative mismatch, `tangential_reaction` (N,
+/// the friction and the normal forces on the cylinder along x: with large displacements the
+/// contact surface turns and the normal forces carry part of Q) and its relative mismatch
+/// `tangential_reaction_error`, the stick-zone half-widths
 /// (computed: half the span between the midpoints from the outermost sticking loaded samples
 /// to their sliding neighbours), `shear_rms_error_over_mu_p0` (RMS of shear - theory over the
 /// samples within [-a, a]), the same for the symmetric part of the shear (q(x) + q(-x))/2 and

@@ -48,8 +48,8 @@ std::pair<std::vector<problems::SurfaceSample>, std::vector<double>> solve_and_s
     return {};
   for (const auto& p : nonlinear::slave_pressure_by_x(problem, solution, s.kinematics, s.friction))
   {
-    surface.push_back(
-        {p.x, p.y, p.deformed_x, p.deformed_y, p.pressure, p.shear.x(), p.friction_force.x(), p.slipping});
+    surface.push_back({p.x, p.y, p.deformed_x, p.deformed_y, p.pressure, p.shear.x(), p.friction_force.x(), p.slipping,
+                       p.shear.y(), p.area, p.normal_force.x()});
     x.push_back(p.x);
   }
   return {surface, x};
@@ -81,6 +81,7 @@ TEST(CattaneoMindlin, CylinderSticksInTheCentreAndSlidesAtTheEdges)
     EXPECT_NEAR(c, theory.stick_half_width, 0.03 * theory.stick_half_width);
     EXPECT_LT(f["shear_symmetric_rms_error_over_mu_p0"].get<double>(), 0.03);
     EXPECT_LT(f["tangential_force_error"].get<double>(), 1e-6);
+    EXPECT_LT(f["tangential_reaction_error"].get<double>(), 1e-6);
     EXPECT_GT(f["slipping_nodes"].get<int>(), 0);
     EXPECT_GT(f["sticking_nodes"].get<int>(), 0);
   }
