@@ -54,6 +54,22 @@ std::pair<std::vector<problems::SurfaceSample>, std::vector<double>> solve_and_s
   }
   return {surface, x};
 }
+
+/// Cattaneo-Mindlin's theory for `parameters` pulled by their tangential load, and the figures
+/// of the solve against it (empty if the solve did not converge).
+std::pair<problems::CattaneoMindlin, nlohmann::ordered_json> partial_slip(problems::HertzParameters& parameters,
+                                                                          double mu, double refinement = 2)
+{
+  const auto [surface, x] = solve_and_sample(parameters, mu, refinement);
+  const problems::HertzAnalytic hertz = problems::hertz_analytic(parameters);
+  const problems::CattaneoMindlin theory = problems::cattaneo_mindlin(mu, hertz.peak_pressure, hertz.half_width,
+                                                                      parameters.line_load, parameters.tangential_load);
+  if (surface.empty())
+    return {theory, {}};
+  return {
+      theory,
+      problems::cattaneo_mindlin_figures(theory, surface, x, parameters.tangential_load * parameters.mesh.thickness)};
+}
 } // namespace
 
 TEST(CattaneoMindlin, CylinderSticksInTheCentreAndSlidesAtTheEdges)
@@ -63,13 +79,8 @@ TEST(CattaneoMindlin, CylinderSticksInTheCentreAndSlidesAtTheEdges)
   {
     problems::HertzParameters parameters;
     parameters.tangential_load = ratio * mu * parameters.line_load;
-    const auto [surface, x] = solve_and_sample(parameters, mu);
-    ASSERT_FALSE(surface.empty());
-    const problems::HertzAnalytic hertz = problems::hertz_analytic(parameters);
-    const problems::CattaneoMindlin theory = problems::cattaneo_mindlin(
-        mu, hertz.peak_pressure, hertz.half_width, parameters.line_load, parameters.tangential_load);
-    const double Q = parameters.tangential_load * parameters.mesh.thickness;
-    const auto f = problems::cattaneo_mindlin_figures(theory, surface, x, Q);
+    const auto [theory, f] = partial_slip(parameters, mu);
+    ASSERT_FALSE(f.empty());
     const double c = f["stick_half_width_computed"].get<double>();
     std::printf("Q/(mu P) %.1f: c %.3f mm (analytic %.3f, %+.2f%%), shear RMS %.2f%% (symmetric part %.2f%%, "
                 "antisymmetric %.2f%%) of mu p0, friction force error %.1e, %d sliding, %d sticking\n",
@@ -104,17 +115,12 @@ TEST(CattaneoMindlin, ShearLeftOutByTheHalfSpaceTheoryIsOfOrderAOverR)
     problems::HertzParameters parameters;
     parameters.line_load /= quarter ? 4 : 1;
     parameters.tangential_load = 0.6 * mu * parameters.line_load;
-    const auto [surface, x] = solve_and_sample(parameters, mu, quarter ? 4 : 2);
-    ASSERT_FALSE(surface.empty());
-    const problems::HertzAnalytic hertz = problems::hertz_analytic(parameters);
-    const problems::CattaneoMindlin theory = problems::cattaneo_mindlin(
-        mu, hertz.peak_pressure, hertz.half_width, parameters.line_load, parameters.tangential_load);
-    const auto f =
-        problems::cattaneo_mindlin_figures(theory, surface, x, parameters.tangential_load * parameters.mesh.thickness);
+    const auto [theory, f] = partial_slip(parameters, mu, quarter ? 4 : 2);
+    ASSERT_FALSE(f.empty());
     antisymmetric[quarter] = f["shear_antisymmetric_rms_over_mu_p0"].get<double>();
     rms[quarter] = f["shear_rms_error_over_mu_p0"].get<double>();
     std::printf("line load %.0e N/m, a/R %.3f: shear RMS %.2f%% (antisymmetric %.2f%%) of mu p0, c %+.2f%%\n",
-                parameters.line_load, hertz.half_width / parameters.mesh.cylinder_radius, 100 * rms[quarter],
+                parameters.line_load, theory.half_width / parameters.mesh.cylinder_radius, 100 * rms[quarter],
                 100 * antisymmetric[quarter],
                 100 * (f["stick_half_width_computed"].get<double>() / theory.stick_half_width - 1));
     EXPECT_NEAR(f["stick_half_width_computed"].get<double>(), theory.stick_half_width, 0.03 * theory.stick_half_width);
