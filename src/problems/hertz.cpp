@@ -60,6 +60,10 @@ fem::Problem hertz_problem(const HertzParameters& parameters)
                 "hertz: tangential_displacement = " << parameters.tangential_displacement << " m must be >= 0");
   const bool pulled = parameters.tangential_load > 0, slid = parameters.tangential_displacement > 0;
   FETICON_CHECK(!(pulled && slid), "hertz: give a tangential load or a tangential displacement, not both");
+  FETICON_CHECK(std::isfinite(parameters.tangential_couple) && parameters.tangential_couple >= 0,
+                "hertz: tangential_couple = " << parameters.tangential_couple << " N/m must be >= 0");
+  FETICON_CHECK(parameters.tangential_couple == 0 || slid,
+                "hertz: tangential_couple balances a tangential displacement's force; give tangential_displacement");
   FETICON_CHECK(!slid || parameters.friction_coefficient > 0,
                 "hertz: a tangential displacement needs Coulomb friction (its couple balances the full "
                 "slide's force mu P)");
@@ -92,12 +96,11 @@ fem::Problem hertz_problem(const HertzParameters& parameters)
   {
     std::vector<fem::DirichletCondition> moved = p.dirichlet;
     moved.back() = {"load", {parameters.tangential_displacement, std::nullopt, std::nullopt}};
-    p.later_stages.push_back(
-        {{{"load", normal}},
-         {},
-         moment_free_couple(p.mesh, parameters.friction_coefficient * parameters.line_load * thickness, radius),
-         std::move(moved),
-         1});
+    p.later_stages.push_back({{{"load", normal}},
+                              {},
+                              moment_free_couple(p.mesh, parameters.compared_tangential_load() * thickness, radius),
+                              std::move(moved),
+                              1});
   }
   p.contacts = {{"cylinder_contact", "block_contact"}};
   p.validate();

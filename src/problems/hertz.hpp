@@ -27,19 +27,29 @@ struct HertzParameters
   /// stage: Cattaneo-Mindlin with friction. Non-zero: the full model (mesh.full).
   double tangential_load = 0;
   /// Instead of tangential_load: the load face moved along +x by this much (m) in the second
-  /// stage (held at u_x = 0 in the first), with the couple of the full slide's force mu P:
+  /// stage (held at u_x = 0 in the first), with the couple of the full slide's force mu P
+  /// (or of tangential_couple):
   /// Cattaneo-Mindlin's Q >= mu P, where force control has no unique answer. Needs
   /// friction_coefficient > 0 (Coulomb); non-zero: the full model (mesh.full).
   double tangential_displacement = 0;
+  /// With tangential_displacement: the tangential line load (N/m) whose moment about the
+  /// contact the load face's couple cancels, the force the moved face is expected to carry.
+  /// 0: mu P, the full slide. Non-zero: displacement-controlled partial slip, compared with
+  /// Cattaneo-Mindlin at the force the face carries (the tangential reaction): with large
+  /// displacements force control leaves the cylinder free to roll on its contact (neutral:
+  /// docs/friction.md), the moved face holds it.
+  double tangential_couple = 0;
   double friction_coefficient = 0;             ///< Coulomb's mu (contact.friction), for Cattaneo-Mindlin; 0: none
   fem::Material material{2.0e11, 0.3};         ///< the cylinder's, and the block's if not given
   std::optional<fem::Material> block_material; ///< the block's if it differs
   fem::Material block() const { return block_material.value_or(material); }
-  /// The Q (N/m) that Cattaneo-Mindlin is compared with: tangential_load, or mu P for the
-  /// full slide a tangential displacement drives; 0 without either.
+  /// The Q (N/m) applied, or expected of a tangential displacement: tangential_load, or
+  /// tangential_couple (mu P for the full slide if not given); 0 without either.
   double compared_tangential_load() const
   {
-    return tangential_displacement > 0 ? friction_coefficient * line_load : tangential_load;
+    if (tangential_displacement > 0)
+      return tangential_couple > 0 ? tangential_couple : friction_coefficient * line_load;
+    return tangential_load;
   }
 };
 

@@ -39,14 +39,28 @@ public:
   }
 
 private:
+  /// The Q that Cattaneo-Mindlin is evaluated at: the applied one, but under displacement
+  /// control with a couple given (partial slip) the force the moved face carries, the
+  /// tangential reaction of the contact (the friction and normal forces along x).
+  double theory_load(const std::vector<SurfaceSample>& samples, double applied) const
+  {
+    if (_parameters.tangential_displacement == 0 || _parameters.tangential_couple == 0)
+      return applied;
+    double reaction = 0;
+    for (const SurfaceSample& s : samples)
+      reaction += s.friction_force_x + s.normal_force_x;
+    return std::max(-reaction / _parameters.mesh.thickness, 0.0);
+  }
+
   /// The `friction` block against Cattaneo-Mindlin, its line and the analytic shear column;
-  /// a tangential displacement is compared with the full slide, Q = mu P.
+  /// a tangential displacement is compared with the full slide, Q = mu P, unless its couple is
+  /// given (theory_load).
   void add_cattaneo_mindlin(const HertzComparison& h, const std::vector<SurfaceSample>& samples, bool large,
                             TheoryComparison& out) const
   {
     const double Q = _parameters.compared_tangential_load();
-    const CattaneoMindlin theory =
-        cattaneo_mindlin(_parameters.friction_coefficient, h.p0_analytic, h.a_analytic, _parameters.line_load, Q);
+    const CattaneoMindlin theory = cattaneo_mindlin(_parameters.friction_coefficient, h.p0_analytic, h.a_analytic,
+                                                    _parameters.line_load, theory_load(samples, Q));
     std::vector<double> x;
     for (const ProfilePoint& p : pressure_profile(samples, false, large))
     {
@@ -75,6 +89,11 @@ std::vector<io::SettingSpec> hertz_setting_specs()
       {"hertz.tangential_displacement", "0", "instead of hertz.tangential_load: the load face held along x "
        "while pressed, then moved along +x by this much (m) in a second load stage, with the couple of the "
        "full slide's force mu P (Q >= mu P: every node slides; needs Coulomb friction)", Type::number, {}, 0, inf, false},
+      {"hertz.tangential_couple", "0", "with hertz.tangential_displacement: the tangential line load (N/m) "
+       "the moved face is expected to carry, whose moment about the contact its couple cancels; compared "
+       "with Cattaneo-Mindlin at the force the face carries (partial slip under displacement control, "
+       "which holds the cylinder from rolling with large displacements); 0: mu P, the full slide",
+       Type::number, {}, 0, inf, false},
       {"hertz.mesh", "graded", "graded (Gmsh quadrilaterals with a size field growing by growth_ratio "
                                "away from the contact, shape-regular) or tensor (mapped blocks with "
                                "tensor-product grading)", Type::text, {"graded", "tensor"}, 0, 0, false},
@@ -101,6 +120,7 @@ HertzParameters hertz_parameters(const io::Settings& s)
   p.line_load = s.number("hertz.line_load");
   p.tangential_load = s.number("hertz.tangential_load");
   p.tangential_displacement = s.number("hertz.tangential_displacement");
+  p.tangential_couple = s.number("hertz.tangential_couple");
   p.mesh.full = p.tangential_load > 0 || p.tangential_displacement > 0;
   p.friction_coefficient = p.tangential_displacement > 0
       ? cattaneo_mindlin_coefficient(s, "hertz.tangential_displacement", p.tangential_displacement, "m", "cylinder")
