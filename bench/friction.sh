@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Friction on the 2D Hertz cylinder (issue 39, docs/friction.md): Cattaneo-Mindlin's figures at
 # Q/(mu P) = 0.3, 0.6, 0.9 with Coulomb mu = 0.3, and the cost of Coulomb and Tresca against the
-# frictionless half model, medians of --reps runs one after the other. Prints markdown tables.
+# frictionless half model and, on the same full mesh, Coulomb against frictionless contact under
+# displacement control, medians of --reps runs one after the other. Prints markdown tables.
 #
 #   bench/friction.sh                        # 120 elements across 2a (refinement 4.4), 3 reps
 #   bench/friction.sh --refinement 2 --reps 1
@@ -40,6 +41,20 @@ print("| %s | %.2f / %.2f (%+.2f %%) | %.2f %% | %.2f %% | %.2f %% | %.0e | %d /
 PY
 done
 
+# One line of a cost table: the runs $work/run1..run$reps, their medians.
+cost_row() {
+  /usr/bin/python3 - "$1" "$work" "$reps" <<'PY'
+import json, statistics, sys
+name, work, reps = sys.argv[1], sys.argv[2], int(sys.argv[3])
+runs = [json.load(open("%s/run%d/summary.json" % (work, k))) for k in range(1, reps + 1)]
+s, t = runs[0], [r["timings_seconds"] for r in runs]
+print("| %s | %d | %d | %d | %d | %.3f | %.2f |" % (
+    name, s["degrees_of_freedom"], sum(st["outer_iterations"] for st in s["steps"]), s["qp"]["iterations"],
+    s["qp"]["hessian_multiplications"], statistics.median(x["dual solve (MPRGP)"] for x in t),
+    statistics.median(x["total solve"] for x in t)))
+PY
+}
+
 echo
 echo "| run | DOFs | QPs | MPRGP steps | products | dual solve (s) | total solve (s), median of $reps |"
 echo "|---|---|---|---|---|---|---|"
@@ -54,14 +69,47 @@ for run in "${runs[@]}"; do
   for ((k = 1; k <= reps; ++k)); do
     "$feticon" run --output "$work/run$k" --overwrite "${common[@]}" "${settings[@]}" > /dev/null 2>&1
   done
-  /usr/bin/python3 - "$name" "$work" "$reps" <<'PY'
-import json, statistics, sys
-name, work, reps = sys.argv[1], sys.argv[2], int(sys.argv[3])
-runs = [json.load(open("%s/run%d/summary.json" % (work, k))) for k in range(1, reps + 1)]
-s, t = runs[0], [r["timings_seconds"] for r in runs]
-print("| %s | %d | %d | %d | %d | %.3f | %.2f |" % (
-    name, s["degrees_of_freedom"], sum(st["outer_iterations"] for st in s["steps"]), s["qp"]["iterations"],
-    s["qp"]["hessian_multiplications"], statistics.median(x["dual solve (MPRGP)"] for x in t),
-    statistics.median(x["total solve"] for x in t)))
+  cost_row "$name"
+done
+
+# The same mesh with and without friction. The full model's cylinder is held along x only by
+# friction under a tangential load, so the frictionless run of the same mesh moves the load face
+# instead: the deck of the Coulomb run under displacement control (the face moved by what the
+# force-controlled small-displacement run at Q = 0.6 mu P gives it, 2.2573 mm at refinement 4.4,
+# with the couple of Q), and the same deck without *FRICTION and without the couple, which
+# frictionless contact cannot carry (the second step's loads are the first's).
+d=${FRICTION_FACE_DISPLACEMENT:-2.257313e-3}
+"$feticon" export --format calculix --output "$work/deck" "${common[@]}" "${coulomb[@]}" \
+  --set "hertz.tangential_displacement=$d" --set hertz.tangential_couple=7.2e7 > /dev/null
+/usr/bin/python3 - "$work/deck/feticon.inp" "$work/deck/frictionless.inp" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().split("\n")
+out, skip = [], 0
+for line in lines:  # without *FRICTION and its data line
+    if line.startswith("*FRICTION"):
+        skip = 2
+    if skip:
+        skip -= 1
+        continue
+    out.append(line)
+def block(at):  # the data lines of the keyword at line `at`, and the next keyword's line
+    end = at + 1
+    while not out[end].startswith("*"):
+        end += 1
+    return out[at + 1:end], end
+cloads = [i for i, line in enumerate(out) if line.startswith("*CLOAD")]
+first, _ = block(cloads[0])
+_, end = block(cloads[1])
+out = out[:cloads[1] + 1] + first + out[end:]
+open(sys.argv[2], "w").write("\n".join(out))
 PY
+echo
+echo "| run (same mesh, load face moved by $d m) | DOFs | QPs | MPRGP steps | products | dual solve (s) | total solve (s), median of $reps |"
+echo "|---|---|---|---|---|---|---|"
+for deck in frictionless feticon; do
+  for ((k = 1; k <= reps; ++k)); do
+    "$feticon" run "$work/deck/$deck.inp" --output "$work/run$k" --overwrite > /dev/null 2>&1
+  done
+  name=$([[ $deck == feticon ]] && echo "Coulomb mu = 0.3, Q = 0.6 mu P by displacement" || echo "frictionless")
+  cost_row "$name"
 done
