@@ -108,6 +108,8 @@ expect "tangential displacement without friction" "needs friction to hold the cy
   --set hertz.tangential_displacement=5e-3
 expect "tangential displacement with Tresca" "needs Coulomb friction" -- --set hertz.tangential_displacement=5e-3 \
   --set contact.friction.model=tresca --set contact.friction.slip_bound=1e8
+expect "tangential couple without displacement" "give tangential_displacement" -- \
+  --set hertz.tangential_couple=1e7 --set contact.friction.model=coulomb --set contact.friction.coefficient=0.3
 expect "tangential load and displacement" "not both" -- --set hertz.tangential_displacement=5e-3 \
   --set hertz.tangential_load=1e7 --set contact.friction.model=coulomb --set contact.friction.coefficient=0.3
 expect "3D tangential load without friction" "needs friction to hold the sphere" -- --set problem=hertz3d \
