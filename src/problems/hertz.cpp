@@ -123,14 +123,22 @@ double HertzAnalytic::pressure(double x) const
   return std::abs(r) < 1 ? peak_pressure * std::sqrt(1 - r * r) : 0.0;
 }
 
-double hertz_axis_approach(const fem::Problem& problem, const la::Vector& u)
+namespace
+{
+/// The mean of u's component `component` over the load face's nodes.
+double load_face_mean(const fem::Problem& problem, const la::Vector& u, int component)
 {
   const auto& nodes = problem.mesh.node_set("load");
   double sum = 0;
   for (int32_t n : nodes)
-    sum += u(3 * n + 1);
-  return -sum / static_cast<double>(nodes.size());
+    sum += u(3 * n + component);
+  return sum / static_cast<double>(nodes.size());
 }
+} // namespace
+
+double hertz_axis_approach(const fem::Problem& problem, const la::Vector& u) { return -load_face_mean(problem, u, 1); }
+
+double hertz_load_face_shift(const fem::Problem& problem, const la::Vector& u) { return load_face_mean(problem, u, 0); }
 
 HertzComparison compare_with_hertz(const HertzParameters& parameters, std::vector<ProfilePoint> samples)
 {

@@ -73,6 +73,10 @@ HertzAnalytic hertz_analytic(const HertzParameters& parameters);
 /// y = R1, which passes through the axis (m).
 double hertz_axis_approach(const fem::Problem& problem, const la::Vector& u);
 
+/// The load face's mean displacement along x (m): what a tangential load moves it by, the d
+/// that tangential_displacement needs to give the same force under displacement control.
+double hertz_load_face_shift(const fem::Problem& problem, const la::Vector& u);
+
 /// The figures against McEwen's profile, all in the frame of the samples: the deformed
 /// coordinate x + u_x for large displacements (the pressure is per deformed area and the slave
 /// nodes move by up to 0.45 mm at the contact edge) or the reference x.

@@ -29,6 +29,8 @@ public:
         large ? compare_with_hertz(_parameters, pressure_profile(samples, false, true)) : reference;
     TheoryComparison out = hertz_theory_comparison(h, reference, large, h.applied_load);
     out.figures["axis_approach"] = hertz_axis_approach(problem, u);
+    if (_parameters.mesh.full)
+      out.figures["load_face_shift"] = hertz_load_face_shift(problem, u);
     out.figures["contact_element_size"] = h.element_size;
     const HertzAnalytic analytic = hertz_analytic(_parameters);
     for (const ProfilePoint& p : pressure_profile(samples, false, large))
