@@ -2,6 +2,7 @@
 /// McEwen's profile.
 
 #include "common/error.hpp"
+#include "common/log.hpp"
 #include "problems/cattaneo_mindlin.hpp"
 #include "problems/hertz.hpp"
 #include "problems/hertz_figures.hpp"
@@ -15,10 +16,19 @@ using Type = io::SettingSpec::Type;
 class HertzProblem : public BuiltInProblem
 {
 public:
-  explicit HertzProblem(HertzParameters parameters) : _parameters(std::move(parameters)) {}
+  /// rolls: a tangential load with large displacements, which build() warns of.
+  HertzProblem(HertzParameters parameters, bool rolls) : _parameters(std::move(parameters)), _rolls(rolls) {}
 
   MeshPrediction predict_mesh() const override { return {hertz_node_estimate(_parameters.mesh), true}; }
-  fem::Problem build() const override { return hertz_problem(_parameters); }
+  fem::Problem build() const override
+  {
+    fem::Problem problem = hertz_problem(_parameters);
+    if (_rolls)
+      log::warning("hertz: with large displacements a tangential load leaves the cylinder free to roll on its "
+                   "contact (a neutral mode), and the outer loop drifts along it; hertz.tangential_displacement "
+                   "with hertz.tangential_couple holds it (docs/friction.md)");
+    return problem;
+  }
 
   std::optional<TheoryComparison> compare_with_theory(const fem::Problem& problem, const la::Vector& u,
                                                       const std::vector<SurfaceSample>& samples,
@@ -75,6 +85,7 @@ private:
   }
 
   HertzParameters _parameters;
+  bool _rolls;
 };
 } // namespace
 
@@ -142,6 +153,8 @@ HertzParameters hertz_parameters(const io::Settings& s)
 
 std::unique_ptr<BuiltInProblem> make_hertz_problem(const io::Settings& settings)
 {
-  return std::make_unique<HertzProblem>(hertz_parameters(settings));
+  HertzParameters parameters = hertz_parameters(settings);
+  const bool rolls = parameters.tangential_load > 0 && settings.text("displacements") == "large";
+  return std::make_unique<HertzProblem>(std::move(parameters), rolls);
 }
 } // namespace feticon::problems
