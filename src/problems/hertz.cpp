@@ -64,6 +64,10 @@ fem::Problem hertz_problem(const HertzParameters& parameters)
                 "hertz: tangential_couple = " << parameters.tangential_couple << " N/m must be >= 0");
   FETICON_CHECK(parameters.tangential_couple == 0 || slid,
                 "hertz: tangential_couple balances a tangential displacement's force; give tangential_displacement");
+  FETICON_CHECK(parameters.tangential_couple <= parameters.friction_coefficient * parameters.line_load,
+                "hertz: tangential_couple = " << parameters.tangential_couple
+                                              << " N/m exceeds what friction can carry, mu line_load = "
+                                              << parameters.friction_coefficient * parameters.line_load << " N/m");
   FETICON_CHECK(!slid || parameters.friction_coefficient > 0,
                 "hertz: a tangential displacement needs Coulomb friction (its couple balances the full "
                 "slide's force mu P)");

@@ -110,6 +110,9 @@ expect "tangential displacement with Tresca" "needs Coulomb friction" -- --set h
   --set contact.friction.model=tresca --set contact.friction.slip_bound=1e8
 expect "tangential couple without displacement" "give tangential_displacement" -- \
   --set hertz.tangential_couple=1e7 --set contact.friction.model=coulomb --set contact.friction.coefficient=0.3
+expect "tangential couple beyond friction" "exceeds what friction can carry" -- \
+  --set hertz.tangential_displacement=5e-3 --set hertz.tangential_couple=1.8e8 \
+  --set contact.friction.model=coulomb --set contact.friction.coefficient=0.3
 expect "tangential load and displacement" "not both" -- --set hertz.tangential_displacement=5e-3 \
   --set hertz.tangential_load=1e7 --set contact.friction.model=coulomb --set contact.friction.coefficient=0.3
 expect "3D tangential load without friction" "needs friction to hold the sphere" -- --set problem=hertz3d \
