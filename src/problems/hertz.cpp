@@ -1,6 +1,7 @@
 #include "problems/hertz.hpp"
 
 #include "common/error.hpp"
+#include "fem/assembler.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -143,6 +144,16 @@ double load_face_mean(const fem::Problem& problem, const la::Vector& u, int comp
 double hertz_axis_approach(const fem::Problem& problem, const la::Vector& u) { return -load_face_mean(problem, u, 1); }
 
 double hertz_load_face_shift(const fem::Problem& problem, const la::Vector& u) { return load_face_mean(problem, u, 0); }
+
+double hertz_load_face_support_force(const fem::Problem& problem, const la::Vector& u, fem::Kinematics kinematics)
+{
+  const fem::Assembler assembler(problem.mesh, fem::whole_mesh_domain(problem.mesh), problem.materials, kinematics);
+  const la::Vector f_int = assembler.internal_force(u);
+  double force = 0;
+  for (int32_t n : problem.mesh.node_set("load"))
+    force += f_int(3 * n);
+  return force;
+}
 
 HertzComparison compare_with_hertz(const HertzParameters& parameters, std::vector<ProfilePoint> samples)
 {

@@ -77,6 +77,11 @@ double hertz_axis_approach(const fem::Problem& problem, const la::Vector& u);
 /// that tangential_displacement needs to give the same force under displacement control.
 double hertz_load_face_shift(const fem::Problem& problem, const la::Vector& u);
 
+/// The force along x (N) that the load face's support exerts on the cylinder under a
+/// tangential displacement: the internal forces of the face's nodes, whose loads (the normal
+/// traction and the couple) have no x part. It balances the contact's tangential reaction.
+double hertz_load_face_support_force(const fem::Problem& problem, const la::Vector& u, fem::Kinematics kinematics);
+
 /// The figures against McEwen's profile, all in the frame of the samples: the deformed
 /// coordinate x + u_x for large displacements (the pressure is per deformed area and the slave
 /// nodes move by up to 0.45 mm at the contact edge) or the reference x.

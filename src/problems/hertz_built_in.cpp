@@ -46,7 +46,11 @@ public:
     for (const ProfilePoint& p : pressure_profile(samples, false, large))
       out.analytic.push_back(analytic.pressure(p.r));
     if (_parameters.compared_tangential_load() > 0 && _parameters.friction_coefficient > 0)
+    {
       add_cattaneo_mindlin(h, samples, large, out);
+      if (_parameters.tangential_displacement > 0)
+        add_support_force(problem, u, large, out.figures["friction"]);
+    }
     return out;
   }
 
@@ -82,6 +86,18 @@ private:
     const double applied = Q * _parameters.mesh.thickness;
     out.figures["friction"] = cattaneo_mindlin_figures(theory, samples, x, applied);
     out.summary_line += cattaneo_mindlin_line(out.figures["friction"], theory, applied, "half-width");
+  }
+
+  /// Under a tangential displacement: the support's force on the moved face (N) and how far
+  /// the contact's tangential reaction is from balancing it (equilibrium of the cylinder).
+  static void add_support_force(const fem::Problem& problem, const la::Vector& u, bool large,
+                                nlohmann::ordered_json& friction)
+  {
+    const double support =
+        hertz_load_face_support_force(problem, u, large ? fem::Kinematics::total_lagrangian : fem::Kinematics::linear);
+    friction["load_face_support_force"] = support;
+    friction["load_face_balance_error"] =
+        std::abs(support + friction["tangential_reaction"].get<double>()) / std::max(std::abs(support), 1e-300);
   }
 
   HertzParameters _parameters;
