@@ -118,6 +118,14 @@ nlohmann::ordered_json figures(const CattaneoMindlin& theory, double force, doub
 }
 } // namespace
 
+double tangential_reaction(const std::vector<SurfaceSample>& samples)
+{
+  double reaction = 0;
+  for (const SurfaceSample& s : samples)
+    reaction += s.friction_force_x + s.normal_force_x;
+  return reaction;
+}
+
 nlohmann::ordered_json cattaneo_mindlin_figures(const CattaneoMindlin& theory,
                                                 const std::vector<SurfaceSample>& samples, const std::vector<double>& x,
                                                 double applied_tangential_force)
@@ -126,7 +134,8 @@ nlohmann::ordered_json cattaneo_mindlin_figures(const CattaneoMindlin& theory,
   for (const SurfaceSample& s : samples)
     peak = std::max(peak, s.pressure);
   std::vector<char> loaded(samples.size());
-  double force = 0, reaction = 0;
+  double force = 0;
+  const double reaction = tangential_reaction(samples);
   ShearErrors errors;
   int sliding = 0, sticking = 0;
   for (size_t i = 0; i < samples.size(); ++i)
@@ -134,7 +143,6 @@ nlohmann::ordered_json cattaneo_mindlin_figures(const CattaneoMindlin& theory,
     const SurfaceSample& s = samples[i];
     loaded[i] = s.pressure > loaded_fraction * peak;
     force += s.friction_force_x;
-    reaction += s.friction_force_x + s.normal_force_x;
     if (loaded[i])
       (s.slipping ? sliding : sticking) += 1;
     if (std::abs(x[i]) <= theory.half_width)
@@ -156,13 +164,13 @@ nlohmann::ordered_json cattaneo_mindlin_sphere_figures(const CattaneoMindlin& th
   std::map<std::pair<long long, long long>, size_t> by_position;
   for (size_t i = 0; i < samples.size(); ++i)
     by_position[key(samples[i].x, samples[i].y)] = i;
-  double force = 0, reaction = 0, stick_area = 0, across_sq = 0;
+  double force = 0, stick_area = 0, across_sq = 0;
+  const double reaction = tangential_reaction(samples);
   ShearErrors errors;
   int sliding = 0, sticking = 0;
   for (const SurfaceSample& s : samples)
   {
     force += s.friction_force_x;
-    reaction += s.friction_force_x + s.normal_force_x;
     if (s.pressure > loaded_fraction * peak)
     {
       (s.slipping ? sliding : sticking) += 1;

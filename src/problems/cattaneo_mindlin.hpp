@@ -42,6 +42,11 @@ enum class HertzContact
 CattaneoMindlin cattaneo_mindlin(double coefficient, double peak_pressure, double half_width, double line_load,
                                  double tangential_load, HertzContact contact = HertzContact::cylinder);
 
+/// The friction and normal contact forces on the slave body along x, summed over the samples
+/// (N): the tangential reaction, which balances Q (with large displacements the contact
+/// surface turns and the normal forces carry part of it).
+double tangential_reaction(const std::vector<SurfaceSample>& samples);
+
 /// The figures of the samples (`x` in the frame of the comparison, ascending or not) against
 /// the theory: `coefficient`, `tangential_force` (N, the friction forces on the cylinder along
 /// x), `applied_tangential_force` (N) and their relative mismatch, `tangential_reaction` (N,

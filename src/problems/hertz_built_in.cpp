@@ -62,10 +62,7 @@ private:
   {
     if (_parameters.tangential_displacement == 0 || _parameters.tangential_couple == 0)
       return applied;
-    double reaction = 0;
-    for (const SurfaceSample& s : samples)
-      reaction += s.friction_force_x + s.normal_force_x;
-    return std::max(-reaction / _parameters.mesh.thickness, 0.0);
+    return std::max(-tangential_reaction(samples) / _parameters.mesh.thickness, 0.0);
   }
 
   /// The `friction` block against Cattaneo-Mindlin, its line and the analytic shear column;

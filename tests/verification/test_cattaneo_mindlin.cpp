@@ -168,9 +168,7 @@ TEST(CattaneoMindlin, LargeDisplacementsUnderDisplacementControl)
     double support = 0;
     const auto [surface, x] = solve_and_sample(moved, mu, 4, fem::Kinematics::total_lagrangian, nullptr, &support);
     ASSERT_FALSE(surface.empty());
-    double reaction = 0;
-    for (const auto& sample : surface)
-      reaction -= sample.friction_force_x + sample.normal_force_x;
+    const double reaction = -problems::tangential_reaction(surface);
     const double Q = reaction / parameters.mesh.thickness;
     const problems::HertzAnalytic hertz = problems::hertz_analytic(parameters);
     const problems::CattaneoMindlin theory =
