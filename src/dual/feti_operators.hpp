@@ -54,6 +54,12 @@ public:
   la::Vector apply_B(const la::Vector& u_stacked) const;
   la::Vector apply_Bt(const la::Vector& lambda) const;
   la::Vector apply_K_plus(const la::Vector& f_stacked) const;
+  /// K+ f with the subdomain equations K_s u_s = f_s solved to double precision where the
+  /// factors are single: one step of iterative refinement against K_s (in double) on the part
+  /// of f_s in the range of K_s. The primal displacement then leaves no float round-off in the
+  /// force residual, which would otherwise take a linear run a second QP to remove
+  /// (docs/benchmarks.md, "Refined primal recovery"). With double factors it is apply_K_plus.
+  la::Vector apply_K_plus_refined(const la::Vector& f_stacked) const;
   /// R alpha for the replicated coarse vector alpha (owned stacked result).
   la::Vector apply_R(const la::Vector& alpha) const;
   /// Per kernel row j of subdomain s, 1 / max_i |R_s(i, j)| (replicated): w_j (R_s' y)_j is

@@ -8,7 +8,7 @@ namespace feticon::dual
 PrimalSolution recover_primal(const FetiOperators& feti, const la::Vector& f, const la::Vector& c,
                               const la::Vector& lambda, const std::vector<char>& active, const std::string& unheld)
 {
-  const la::Vector K_plus_r = feti.apply_K_plus(f - feti.apply_Bt(lambda));
+  const la::Vector K_plus_r = feti.apply_K_plus_refined(f - feti.apply_Bt(lambda));
   // F lambda - d = B K+ (B' lambda - f) + c = c - B K+ (f - B' lambda).
   la::Vector residual = c - feti.apply_B(K_plus_r);
   for (la::Index i = 0; i < residual.size(); ++i)

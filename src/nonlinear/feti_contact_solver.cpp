@@ -807,13 +807,15 @@ bool FetiContactSolve::store_contact_result(const dual::DualSolution& solution,
   return more_rows;
 }
 
-/// A linear run solves again for rows it lacked, and for the round-off of single-precision
-/// factors: the operator is then the inverse of a stiffness perturbed by ~1e-7, which leaves a
-/// residual (computed with K in double) of a few 1e-6 (hertz3d at 924k: 4e-6); the next QP
-/// solves for the correction, as a modified Newton step does. It stops once the residual is
-/// below newton.residual_tolerance or no longer falls tenfold an iteration: a linear run's
-/// answer never waited for the residual test, and does not start to now (nor, with double
-/// factors, iterate for it).
+/// A linear run solves again for rows it lacked, and for what is left of the round-off of
+/// single-precision factors: the dual operator is the inverse of a stiffness perturbed by
+/// ~1e-7, and the primal recovery's refinement step against K in double
+/// (FetiOperators::apply_K_plus_refined) normally takes the force residual from a few 1e-6 to
+/// about 1e-10 (hertz3d at 924k); where a subdomain is so ill-conditioned that one step is not
+/// enough, the next QP solves for the correction, as a modified Newton step does. It stops
+/// once the residual is below newton.residual_tolerance or no longer falls tenfold an
+/// iteration: a linear run's answer never waited for the residual test, and does not start to
+/// now (nor, with double factors, iterate for it).
 OuterVerdict FetiContactSolve::linear_verdict(bool more_rows, double residual)
 {
   const double previous = std::exchange(_previous_residual, residual);

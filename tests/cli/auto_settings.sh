@@ -35,11 +35,13 @@ run --output "$work/h3" --set problem=hertz3d --set hertz3d.refinement=0.8 --set
 [[ $(field "$work/h3" dual_operator.mode) == implicit ]] || fail "hertz3d: the band's S_s must be applied implicitly"
 grep -qx "qp.dirichlet_layers: 1" "$work/h3/problem.yaml" || fail "problem.yaml lacks the band"
 [[ $(field "$work/h3" converged) == True ]] || fail "hertz3d did not converge"
-# ... with single-precision factors, whose round-off a refinement iteration takes below
-# newton.residual_tolerance (1e-6) in a linear run.
+# ... with single-precision factors, whose round-off the primal recovery's refinement step
+# takes below newton.residual_tolerance (1e-6) in a linear run.
 [[ $(field "$work/h3" factor_precision.choice) == single ]] || fail "hertz3d: $(field "$work/h3" factor_precision.choice) factors"
 /usr/bin/python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['steps'][0]['residual_norm']; sys.exit(0 if r <= 1e-6 else 1)" \
   "$work/h3/summary.json" || fail "hertz3d: residual above 1e-6 with single-precision factors"
+[[ $(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['steps'][0]['outer_iterations'])" \
+  "$work/h3/summary.json") == 1 ]] || fail "hertz3d: a second QP for the float factors' round-off"
 run --output "$work/h3double" --set problem=hertz3d --set hertz3d.refinement=0.8 --set displacements=small \
   --set dual.factor_precision=double
 [[ $(field "$work/h3double" factor_precision.reason) == given ]] || fail "given dual.factor_precision not kept"
