@@ -41,7 +41,7 @@ void choose_factor_precision(const io::Settings& settings, const ModelSize& size
     out.single_precision_factors = true;
     out.factor_precision_reason = "3D: the substitutions with the factors, most of a step, are bound by reading them; "
                                   "single precision halves that and the factors' memory (applied in double "
-                                  "arithmetic; the outer iterations correct the round-off)";
+                                  "arithmetic; the primal recovery refines against K in double)";
   }
 }
 

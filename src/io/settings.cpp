@@ -73,7 +73,7 @@ std::vector<SettingSpec> make_specs()
        Type::text, {"implicit", "explicit", "auto"}, 0, 0, false},
       {"dual.factor_precision", "auto", "what the supernodal Cholesky factors of the subdomains (K+ and the "
        "Dirichlet preconditioner's K_ii) are kept in: double, single (half the memory and traffic of the "
-       "substitutions, applied in double arithmetic; the outer iterations correct the round-off) or auto "
+       "substitutions, applied in double arithmetic; the primal recovery refines against K in double) or auto "
        "(single in 3D unless the whole interior's Dirichlet preconditioner may make the dual operators explicit; "
        "double in plane strain)",
        Type::text, {"double", "single", "auto"}, 0, 0, false},
