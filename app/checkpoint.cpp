@@ -61,7 +61,8 @@ nlohmann::json records(const nonlinear::ContactSolution& s)
                        it.qp.operator_seconds,
                        it.qp.preconditioner_applications,
                        it.qp.preconditioner_seconds,
-                       it.qp.seconds});
+                       it.qp.seconds,
+                       it.qp.feasibility_corrections});
   return {{"completed_steps", s.restart.completed_steps},
           {"steps", steps},
           {"history", history},
@@ -169,6 +170,8 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
         it.qp.preconditioner_seconds = h[22];
         it.qp.seconds = h[23];
       }
+      if (h.size() > 24) // written since SMALBE-M's feasibility correction exists
+        it.qp.feasibility_corrections = h[24];
       solution.history.push_back(it);
     }
   }

@@ -14,6 +14,7 @@ nlohmann::ordered_json qp_counters_json(const qp::QpCounters& c)
   {
     json["smalbe_outer_iterations"] = c.outer_iterations;
     json["rho_updates"] = c.rho_updates;
+    json["feasibility_corrections"] = c.feasibility_corrections;
   }
   if (c.operator_applications > 0)
     json["operator_applications"] = c.operator_applications;

@@ -44,6 +44,8 @@ struct QpCounters
   int outer_iterations = 0;
   /// SMALBE-M's raises of rho.
   int rho_updates = 0;
+  /// SMALBE-M's feasibility corrections on the face that ended the solve (Smalbe::solve).
+  int feasibility_corrections = 0;
   /// Applications of the (dual) operator and of the preconditioner, as counted and timed by
   /// their callers (0 where nobody times them), and their wall time (s).
   int64_t operator_applications = 0;
@@ -72,6 +74,7 @@ struct QpCounters
     hessian_multiplications += other.hessian_multiplications;
     outer_iterations += other.outer_iterations;
     rho_updates += other.rho_updates;
+    feasibility_corrections += other.feasibility_corrections;
     operator_applications += other.operator_applications;
     operator_seconds += other.operator_seconds;
     preconditioner_applications += other.preconditioner_applications;

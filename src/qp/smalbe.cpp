@@ -122,7 +122,9 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const SeparableConstraints& set,
     const double L = r.cost;
     if (_options.monitor)
       _options.monitor({k, &x, &s.omega, s.M, s.rho, L});
-    if (r.projected_gradient_norm <= s.tolerance && feasible(s, Cx))
+    if (r.projected_gradient_norm <= s.tolerance &&
+        (feasible(s, Cx) ||
+         (_options.feasibility_correction && correct_feasibility_on_face(s, space, rhs, set, Cx, x))))
     {
       report.converged = true;
       report.reason = _options.equality_error ? "||g_P||, ||Cx|| <= rtol ||b|| and the equality error <= its tolerance"
@@ -257,6 +259,78 @@ void Smalbe::raise_rho_if_stalled(SolveState& s, int k, double feasibility) cons
     s.reference_feasibility = feasibility;
     s.reference_iteration = k;
   }
+}
+
+bool Smalbe::correct_feasibility_on_face(SolveState& s, const la::VectorSpace& space, const la::Vector& rhs,
+                                         const SeparableConstraints& set, const la::Vector& Cx, la::Vector& x) const
+{
+  // (C D C') y = C x by CG on the coarse vector (replicated: every rank takes the same steps),
+  // D the orthogonal projector onto the face of x. C D C' = I - C (I - D) C' has its spectrum
+  // in [sigma_min(C_F)^2, 1]; a face that nearly loses the rank of C converges slowly, and the
+  // step limit then leaves the correction to SMALBE-M's updates.
+  // The set functions below read u; SMALBE-M's callers may leave it empty (no upper bounds).
+  SeparableConstraints bounded;
+  const SeparableConstraints& region = set.upper.size() == x.size()
+      ? set
+      : (bounded = {set.lower, la::Vector::Constant(x.size(), std::numeric_limits<double>::infinity()), set.discs});
+  const auto face_operator = [&](const la::Vector& y) {
+    la::Vector v = _C.apply_transpose(y);
+    project_onto_face(region, x, v);
+    return _C.apply(v);
+  };
+  la::Vector y = la::Vector::Zero(Cx.size());
+  la::Vector r = Cx;
+  la::Vector p = r;
+  double rr = r.squaredNorm();
+  const double target = 1e-8 * rr;
+  for (int k = 0; k < 100 && rr > target; ++k)
+  {
+    const la::Vector q = face_operator(p);
+    const double pq = p.dot(q);
+    if (!(pq > 0)) // C D C' is semidefinite: a direction in its kernel ends the iteration
+      break;
+    const double alpha = rr / pq;
+    y += alpha * p;
+    r -= alpha * q;
+    const double rr_next = r.squaredNorm();
+    p = r + (rr_next / rr) * p;
+    rr = rr_next;
+  }
+  la::Vector delta = _C.apply_transpose(y);
+  project_onto_face(region, x, delta);
+  // The free components stay off their bounds, or the correction is not taken.
+  la::Index blocking = -1;
+  const double bound_step = -space.max(-max_bound_step(region, x, delta, blocking));
+  const double disc_step = -space.max(-max_disc_step(region, x, delta, false, blocking));
+  if (std::min(bound_step, disc_step) < 1)
+    return false;
+  la::Vector corrected = x - delta;
+  project(region, corrected); // back onto active circles, which a tangential step leaves at second order
+  la::Vector g;
+  s.H.apply(corrected, g);
+  s.report.hessian_multiplications += 1;
+  // With the multiplier update omega + rho Cx taken with it, the penalty's response rho C'C delta
+  // = rho C'Cx cancels in the gradient, which changes by A delta only.
+  g -= rhs - s.rho * _C.apply_transpose(Cx);
+  la::Vector phi, beta;
+  free_gradient(region, corrected, g, phi);
+  chopped_gradient(region, corrected, g, beta);
+  const double gp = la::norm(space, phi + beta);
+  const la::Vector C_corrected = _C.apply(corrected);
+  const bool accepted = gp <= s.tolerance && feasible(s, C_corrected);
+  std::ostringstream line;
+  line << "    SMALBE-M feasibility correction on the face: ||Cx||/||b|| " << Cx.norm() / s.b_norm << " -> "
+       << C_corrected.norm() / s.b_norm << ", ||g_P||/||b|| " << gp / s.b_norm
+       << (accepted ? ": converged" : ": not taken");
+  log::iteration(line.str());
+  if (!accepted)
+    return false;
+  x = std::move(corrected);
+  s.omega += s.rho * Cx;
+  s.report.projected_gradient_norm = gp;
+  s.report.equality_residual = C_corrected.norm() / s.b_norm;
+  ++s.report.feasibility_corrections;
+  return true;
 }
 
 double Smalbe::cost_at_initial_rho(SolveState& s, const la::VectorSpace& space, const la::Vector& b,

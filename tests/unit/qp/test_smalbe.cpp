@@ -290,6 +290,41 @@ TEST(Smalbe, MeetsTheCallersEqualityToleranceBeyondRtol)
   EXPECT_LT((x - reference.x).norm(), (x_loose - reference.x).norm());
 }
 
+// The feasibility correction on the face (SmalbeOptions::feasibility_correction): with the
+// caller's equality tolerance far below rtol ||b|| (as FETI's force-unit test), the outer
+// iterations after the gradient test holds only reduce Cx; the correction removes it within
+// the face in one step. Reference: the independent solve; the corrected solve must be as close
+// to it as the uncorrected one (both stop at the same rtol), feasible for the bounds, meet the
+// caller's tolerance, and take fewer outer iterations.
+TEST(Smalbe, FeasibilityCorrectionOnTheFaceEndsTheSolveEarlier)
+{
+  const Augmented p(make_qp(24, 4, 2));
+  const Reference reference = reference_solve(p.qp);
+  const la::Vector weights = la::Vector::LinSpaced(4, 1.0, 4.0);
+  auto weighted = [&](const la::Vector& Cx) { return Cx.cwiseProduct(weights).norm(); };
+  SmalbeOptions base = options(p.rho);
+  base.rtol = 1e-6;
+  base.equality_error = weighted;
+  base.equality_tolerance = 1e-12 * p.qp.b.norm();
+  SmalbeOptions uncorrected = base;
+  uncorrected.feasibility_correction = false;
+
+  la::Vector x_plain = la::Vector::Zero(24);
+  const SmalbeReport r_plain = Smalbe(p.Aop, p.C, uncorrected).solve(p.qp.b, {p.qp.lower, {}, {}}, x_plain);
+  ASSERT_TRUE(r_plain.converged) << r_plain.reason;
+  EXPECT_EQ(r_plain.feasibility_corrections, 0);
+  la::Vector x = la::Vector::Zero(24);
+  const SmalbeReport r = Smalbe(p.Aop, p.C, base).solve(p.qp.b, {p.qp.lower, {}, {}}, x);
+  ASSERT_TRUE(r.converged) << r.reason;
+  EXPECT_EQ(r.feasibility_corrections, 1);
+  EXPECT_LT(r.outer_iterations, r_plain.outer_iterations);
+  EXPECT_LE(weighted(p.qp.C * x), base.equality_tolerance);
+  EXPECT_TRUE(((x - p.qp.lower).array() >= 0).all());
+  const double error = (x - reference.x).norm() / reference.x.norm();
+  EXPECT_LT(error, 1e-5);
+  EXPECT_LT(error, 10 * std::max((x_plain - reference.x).norm() / reference.x.norm(), 1e-7));
+}
+
 TEST(Smalbe, UpdatesOmegaAndMAsInAlgorithmsSection1)
 {
   const Augmented p(make_qp(24, 4, 7));
