@@ -14,6 +14,7 @@ DualPenaltyOptions::DualPenaltyOptions(const io::Settings& s)
   smalbe_M0 = s.number("smalbe.M0");
   smalbe_beta = s.number("smalbe.beta");
   rtol = s.number("qp.rtol");
+  force_rtol = s.number("qp.force_rtol");
   max_iterations = s.integer("qp.max_iterations");
   expansion = qp::expansion_from_name(s.text("qp.expansion"));
   const std::string& name = s.text("qp.preconditioner");

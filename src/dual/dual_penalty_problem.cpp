@@ -97,6 +97,7 @@ qp::SmalbeOptions smalbe_options(const FetiOperators& feti, const CoarseProjecto
 {
   qp::SmalbeOptions smalbe;
   smalbe.rtol = options.rtol;
+  smalbe.absolute_tolerance = options.force_tolerance;
   smalbe.rho = options.rho;
   smalbe.M0 = options.smalbe_M0;
   smalbe.beta = options.smalbe_beta;

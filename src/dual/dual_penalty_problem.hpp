@@ -38,7 +38,7 @@ enum class DualPreconditioner
 struct DualPenaltyOptions
 {
   DualPenaltyOptions();
-  /// From `method`, `rho`, `smalbe.M0`, `smalbe.beta`, `qp.rtol`, `qp.max_iterations`,
+  /// From `method`, `rho`, `smalbe.M0`, `smalbe.beta`, `qp.rtol`, `qp.force_rtol`, `qp.max_iterations`,
   /// `qp.preconditioner`, `qp.constraint_scaling`, `qp.expansion` and `qp.spectrum_steps`.
   explicit DualPenaltyOptions(const io::Settings& settings);
 
@@ -50,6 +50,12 @@ struct DualPenaltyOptions
   /// ||W (G lambda - e)|| <= feasibility_tolerance (N; W = FetiOperators::net_force_weights),
   /// which the outer loop derives from its residual tolerance (qp::SmalbeOptions::equality_error).
   double feasibility_tolerance = 0;
+  /// qp.force_rtol: the outer loop's force_tolerance relative to its force scale.
+  double force_rtol = 0;
+  /// If > 0 (SMALBE-M): the final test also holds when ||g_P|| and ||G~ mu|| are at most this
+  /// (force units of the scaled dual; qp::SmalbeOptions::absolute_tolerance), which the outer
+  /// loop sets to force_rtol times its force scale.
+  double force_tolerance = 0;
   int power_iterations = 30; ///< for ||PFP||
   DualPreconditioner preconditioner;
   /// Schur complements of the Dirichlet preconditioner (not owned; required for it).

@@ -154,7 +154,7 @@ void Smalbe::set_initial_state(SolveState& s, const la::VectorSpace& space, cons
   // reduced over the space.
   const double b_raw_norm = la::norm(space, b);
   s.b_norm = b_raw_norm > 0 ? b_raw_norm : 1.0;
-  s.tolerance = _options.rtol * s.b_norm;
+  s.tolerance = std::max(_options.rtol * s.b_norm, _options.absolute_tolerance);
   s.eta = _options.eta_factor * s.b_norm;
   s.omega = _C.apply(la::Vector::Zero(b.size()));
   s.omega.setZero();

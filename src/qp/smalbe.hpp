@@ -64,7 +64,10 @@ using InnerSolverFactory = std::function<std::unique_ptr<QpSolver>(const la::Lin
 
 struct SmalbeOptions
 {
-  double rtol = 1e-6;      ///< final test on ||g_P|| and ||Cx||, relative to ||b||
+  double rtol = 1e-6; ///< final test on ||g_P|| and ||Cx||, relative to ||b||
+  /// The final test's bound on ||g_P|| and ||Cx|| is max(rtol ||b||, absolute_tolerance): a
+  /// caller that knows the accuracy it needs in b's units (FETI: force) states it here.
+  double absolute_tolerance = 0;
   double rho = 1.0;        ///< the augmentation in H (multiplier update step)
   double M0 = 1.0;         ///< initial M (in units where ||H|| ~ max(1, rho))
   double beta = 2.0;       ///< M <- M / beta when L does not increase enough

@@ -43,6 +43,7 @@ std::pair<std::vector<problems::SurfaceSample>, std::vector<double>> solve_and_s
   s.subdomains = 8;
   s.formulation = contact::ContactFormulation::mortar;
   s.dual.rtol = 1e-8;
+  s.dual.force_rtol = 0; // qp.rtol alone
   s.friction = {nonlinear::FrictionModel::coulomb, mu, 0};
   const fem::Problem problem = problems::hertz_problem(parameters);
   TimerTable timers;

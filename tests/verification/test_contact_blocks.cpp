@@ -27,6 +27,7 @@ nonlinear::SolverSettings settings(dual::DualMethod method, int subdomains)
       method == dual::DualMethod::smalbe ? nonlinear::ContactMethod::smalbe : nonlinear::ContactMethod::dual_penalty;
   s.dual.method = method;
   s.dual.rtol = 1e-10;
+  s.dual.force_rtol = 0; // qp.rtol alone: uniform pressure to round-off
   s.subdomains = subdomains;
   return s;
 }
