@@ -10,8 +10,11 @@
 /// which measured fewer steps than following rho; smalbe.cpp). Outer loop:
 ///   x <- inner solver (MPRGP for bounds) on (H, b - C'omega, Omega), warm-started, stopped when
 ///        ||g_P|| <= min(M ||Cx||, eta)   or the final test holds;
-///   final test: ||g_P|| <= rtol ||b|| and ||Cx|| <= rtol ||b|| (and, if the caller asks,
-///        its own measure of Cx below its own tolerance: SmalbeOptions::equality_error);
+///   final test: ||g_P|| <= tol and ||Cx|| <= tol, tol = max(rtol ||b||, absolute_tolerance)
+///        (and, if the caller asks, its own measure of Cx below its own tolerance:
+///        SmalbeOptions::equality_error);
+///   if only the feasibility half fails: the feasibility correction on the face (below),
+///        which ends the solve if the final test holds after it;
 ///   omega <- omega + rho C x;
 ///   M <- M / beta if L(x, omega) did not increase by at least rho/2 ||Cx||^2;
 ///   if ||Cx|| has not dropped below feasibility_reduction times its reference value within
@@ -151,8 +154,8 @@ private:
   /// half: x <- x - D C'(C D C')^{-1} C x, D the projector onto the face of x, which removes Cx
   /// without leaving the face; taken (and true returned) only when the bounds hold and the
   /// whole final test holds after it (one more product with H). Why: on a settled face the
-  /// last outer iterations only divide ||Cx|| by 7-10 each at 11-15 MPRGP steps, and FETI's
-  /// force-unit equality test asks ||Cx|| for two decades below rtol ||b||.
+  /// last outer iterations only divide ||Cx|| by 7-10 each at 11-15 MPRGP steps, while the
+  /// gradient half may already hold (FETI: the equality test in force units asks more of Cx).
   bool correct_feasibility_on_face(SolveState& s, const la::VectorSpace& space, const la::Vector& rhs,
                                    const SeparableConstraints& set, const la::Vector& Cx, la::Vector& x) const;
   /// 1/2 x'Hx - b'x with H at the initial rho (one more product with H).
