@@ -1,6 +1,7 @@
 #include "la/cholmod.hpp"
 
 #include "common/error.hpp"
+#include "la/metis_random.hpp"
 #include "la/single_precision_factor.hpp"
 
 #include <Eigen/CholmodSupport>
@@ -41,14 +42,17 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what, FactorPre
   // CHOLMOD picks simplicial (small subdomains: no BLAS call overhead) or supernodal.
   solver.setMode(Eigen::CholmodAuto);
   {
-    // One analysis at a time: CHOLMOD's default ordering also tries METIS when AMD fills in
-    // much (3D subdomains), and METIS keeps its random generator in a global; two threads
-    // ordering at once drew from it in a timing-dependent order, so the orderings, and with
-    // them the round-off of every later step, changed from run to run (hertz3d at 97k DOFs:
-    // three runs, three peak pressures differing in the 7th digit). The numeric
-    // factorization, most of the time, stays on the threads.
+    // CHOLMOD's default ordering also tries METIS when AMD fills in much (3D subdomains),
+    // and METIS draws from the C library's one random generator: with the draws private to
+    // each thread the analyses run in parallel and order as in a serial run; where they
+    // cannot be (metis_random.hpp) they run one at a time, since interleaved draws changed
+    // the orderings, and with them the round-off of every later step, from run to run
+    // (hertz3d at 97k DOFs: three runs, three peak pressures differing in the 7th digit).
+    const ThreadPrivateRandom private_draws;
     static std::mutex analysis;
-    const std::lock_guard lock(analysis);
+    std::unique_lock lock(analysis, std::defer_lock);
+    if (!thread_private_random_available())
+      lock.lock();
     solver.analyzePattern(A);
   }
   solver.factorize(A);
