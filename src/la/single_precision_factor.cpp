@@ -41,15 +41,18 @@ __attribute__((target("avx2,fma"))) void subtract_scaled_avx2(double* y, const f
     y[i] -= static_cast<double>(a[i]) * alpha;
 }
 
-/// y -= A x for a column-major float block A (rows x cols, leading dimension ld): four
-/// columns a pass, so that y is read and written once per four columns, not per column.
-__attribute__((target("avx2,fma"))) void subtract_product_avx2(double* y, const float* A, Index ld, Index rows,
+/// y -= A x for a block A (rows x cols) of a packed lower trapezoid: column j + 1 starts
+/// `step - j` entries after column j (a packed column is one entry shorter than the one
+/// before it). Four columns a pass, so that y is read and written once per four columns.
+__attribute__((target("avx2,fma"))) void subtract_product_avx2(double* y, const float* A, Index step, Index rows,
                                                                Index cols, const double* x)
 {
   Index j = 0;
   for (; j + 4 <= cols; j += 4)
   {
-    const float *a0 = A + j * ld, *a1 = a0 + ld, *a2 = a1 + ld, *a3 = a2 + ld;
+    const float *a0 = A, *a1 = a0 + step, *a2 = a1 + step - 1, *a3 = a2 + step - 2;
+    A = a3 + step - 3;
+    step -= 4;
     const __m256d x0 = _mm256_set1_pd(x[j]), x1 = _mm256_set1_pd(x[j + 1]);
     const __m256d x2 = _mm256_set1_pd(x[j + 2]), x3 = _mm256_set1_pd(x[j + 3]);
     Index i = 0;
@@ -65,18 +68,20 @@ __attribute__((target("avx2,fma"))) void subtract_product_avx2(double* y, const 
       y[i] -= static_cast<double>(a0[i]) * x[j] + static_cast<double>(a1[i]) * x[j + 1] +
           static_cast<double>(a2[i]) * x[j + 2] + static_cast<double>(a3[i]) * x[j + 3];
   }
-  for (; j < cols; ++j)
-    subtract_scaled_avx2(y, A + j * ld, x[j], rows);
+  for (; j < cols; ++j, A += step--)
+    subtract_scaled_avx2(y, A, x[j], rows);
 }
 
-/// x -= A' y for the same block: four dot products a pass, sharing the loads of y.
-__attribute__((target("avx2,fma"))) void subtract_transposed_product_avx2(double* x, const float* A, Index ld,
+/// x -= A' y for the same packed block: four dot products a pass, sharing the loads of y.
+__attribute__((target("avx2,fma"))) void subtract_transposed_product_avx2(double* x, const float* A, Index step,
                                                                           Index rows, Index cols, const double* y)
 {
   Index j = 0;
   for (; j + 4 <= cols; j += 4)
   {
-    const float *a0 = A + j * ld, *a1 = a0 + ld, *a2 = a1 + ld, *a3 = a2 + ld;
+    const float *a0 = A, *a1 = a0 + step, *a2 = a1 + step - 1, *a3 = a2 + step - 2;
+    A = a3 + step - 3;
+    step -= 4;
     __m256d s0 = _mm256_setzero_pd(), s1 = _mm256_setzero_pd(), s2 = _mm256_setzero_pd(), s3 = _mm256_setzero_pd();
     Index i = 0;
     for (; i + 4 <= rows; i += 4)
@@ -102,8 +107,8 @@ __attribute__((target("avx2,fma"))) void subtract_transposed_product_avx2(double
     for (int c = 0; c < 4; ++c)
       x[j + c] -= lanes[c];
   }
-  for (; j < cols; ++j)
-    x[j] -= dot_avx2(A + j * ld, y, rows);
+  for (; j < cols; ++j, A += step--)
+    x[j] -= dot_avx2(A, y, rows);
 }
 
 double dot_scalar(const float* a, const double* b, Index n)
@@ -126,16 +131,16 @@ void subtract_scaled_scalar(double* y, const float* a, double alpha, Index n)
     y[i] -= static_cast<double>(a[i]) * alpha;
 }
 
-void subtract_product_scalar(double* y, const float* A, Index ld, Index rows, Index cols, const double* x)
+void subtract_product_scalar(double* y, const float* A, Index step, Index rows, Index cols, const double* x)
 {
-  for (Index j = 0; j < cols; ++j)
-    subtract_scaled_scalar(y, A + j * ld, x[j], rows);
+  for (Index j = 0; j < cols; ++j, A += step--)
+    subtract_scaled_scalar(y, A, x[j], rows);
 }
 
-void subtract_transposed_product_scalar(double* x, const float* A, Index ld, Index rows, Index cols, const double* y)
+void subtract_transposed_product_scalar(double* x, const float* A, Index step, Index rows, Index cols, const double* y)
 {
-  for (Index j = 0; j < cols; ++j)
-    x[j] -= dot_scalar(A + j * ld, y, rows);
+  for (Index j = 0; j < cols; ++j, A += step--)
+    x[j] -= dot_scalar(A, y, rows);
 }
 
 /// The CPU's features, read once; __builtin_cpu_init first because this initializer may run
@@ -148,22 +153,22 @@ bool cpu_has_avx2()
 
 bool has_avx2 = cpu_has_avx2(); // use_vector_kernels() may turn them off
 
-/// y -= A x (A: float, column-major, leading dimension ld).
-void subtract_product(double* y, const float* A, Index ld, Index rows, Index cols, const double* x)
+/// y -= A x (A: float, packed columns, the first `step` entries apart).
+void subtract_product(double* y, const float* A, Index step, Index rows, Index cols, const double* x)
 {
   if (has_avx2)
-    subtract_product_avx2(y, A, ld, rows, cols, x);
+    subtract_product_avx2(y, A, step, rows, cols, x);
   else
-    subtract_product_scalar(y, A, ld, rows, cols, x);
+    subtract_product_scalar(y, A, step, rows, cols, x);
 }
 
 /// x -= A' y.
-void subtract_transposed_product(double* x, const float* A, Index ld, Index rows, Index cols, const double* y)
+void subtract_transposed_product(double* x, const float* A, Index step, Index rows, Index cols, const double* y)
 {
   if (has_avx2)
-    subtract_transposed_product_avx2(x, A, ld, rows, cols, y);
+    subtract_transposed_product_avx2(x, A, step, rows, cols, y);
   else
-    subtract_transposed_product_scalar(x, A, ld, rows, cols, y);
+    subtract_transposed_product_scalar(x, A, step, rows, cols, y);
 }
 } // namespace
 
@@ -186,16 +191,27 @@ SinglePrecisionFactor::SinglePrecisionFactor(const cholmod_factor& L)
   const int* px = static_cast<const int*>(L.px);
   _first_column.assign(super, super + nsuper + 1);
   _row_start.assign(pi, pi + nsuper + 1);
+  _rows.assign(static_cast<const int*>(L.s), static_cast<const int*>(L.s) + pi[nsuper]);
+  // Only the lower trapezoid of each supernode's dense block is read: packed, column j from
+  // its diagonal down (CHOLMOD's upper triangles were 18 % of the entries on hertz3d).
   _value_start.resize(nsuper + 1);
-  for (size_t k = 0; k <= nsuper; ++k)
-    _value_start[k] = px[k];
-  const int* s = static_cast<const int*>(L.s);
-  _rows.assign(s, s + pi[nsuper]);
-  const double* x = static_cast<const double*>(L.x);
-  _values.resize(static_cast<size_t>(px[nsuper]));
-  std::transform(x, x + px[nsuper], _values.begin(), [](double v) { return static_cast<float>(v); });
+  _value_start[0] = 0;
   for (size_t k = 0; k < nsuper; ++k)
-    _max_rows = std::max<Index>(_max_rows, pi[k + 1] - pi[k]);
+  {
+    const long ncol = super[k + 1] - super[k], nrow = pi[k + 1] - pi[k];
+    _value_start[k + 1] = _value_start[k] + ncol * nrow - ncol * (ncol - 1) / 2;
+    _max_rows = std::max<Index>(_max_rows, nrow);
+  }
+  const double* x = static_cast<const double*>(L.x);
+  _values.resize(static_cast<size_t>(_value_start[nsuper]));
+  float* packed = _values.data();
+  for (size_t k = 0; k < nsuper; ++k)
+  {
+    const long ncol = super[k + 1] - super[k], nrow = pi[k + 1] - pi[k];
+    for (long j = 0; j < ncol; ++j)
+      packed = std::transform(x + px[k] + j * nrow + j, x + px[k] + (j + 1) * nrow, packed,
+                              [](double v) { return static_cast<float>(v); });
+  }
 }
 
 /// Columns of a supernode's triangle taken at once: the width of the product kernels.
@@ -217,7 +233,8 @@ void SinglePrecisionFactor::forward(double* y, double* work) const
 {
   for (size_t k = 0; k + 1 < _first_column.size(); ++k)
   {
-    const auto [k1, ncol, nrow, below, block, rows] = supernode(k);
+    const Supernode node = supernode(k);
+    const auto [k1, ncol, nrow, below, block, rows] = node;
     double* yk = y + k1;
     // The diagonal triangle in panels of `panel` columns, then the rows below into a dense
     // workspace: one pass over each for every four columns.
@@ -226,16 +243,16 @@ void SinglePrecisionFactor::forward(double* y, double* work) const
       const Index width = std::min(panel, ncol - j0);
       for (Index j = j0; j < j0 + width; ++j)
       {
-        const float* column = block + j * nrow;
-        yk[j] /= static_cast<double>(column[j]);
+        const float* column = node.diagonal(j);
+        yk[j] /= static_cast<double>(column[0]);
         for (Index i = j + 1; i < j0 + width; ++i)
-          yk[i] -= static_cast<double>(column[i]) * yk[j];
+          yk[i] -= static_cast<double>(column[i - j]) * yk[j];
       }
       const Index rest = ncol - j0 - width;
-      subtract_product(yk + j0 + width, block + j0 * nrow + j0 + width, nrow, rest, width, yk + j0);
+      subtract_product(yk + j0 + width, node.diagonal(j0) + width, node.step(j0), rest, width, yk + j0);
     }
     std::fill(work, work + below, 0.0);
-    subtract_product(work, block + ncol, nrow, below, ncol, yk);
+    subtract_product(work, node.diagonal(0) + ncol, node.step(0), below, ncol, yk);
     for (Index i = 0; i < below; ++i)
       y[rows[i]] += work[i];
   }
@@ -245,23 +262,24 @@ void SinglePrecisionFactor::backward(double* y, double* work) const
 {
   for (size_t k = _first_column.size() - 1; k-- > 0;)
   {
-    const auto [k1, ncol, nrow, below, block, rows] = supernode(k);
+    const Supernode node = supernode(k);
+    const auto [k1, ncol, nrow, below, block, rows] = node;
     double* yk = y + k1;
     for (Index i = 0; i < below; ++i)
       work[i] = y[rows[i]];
-    subtract_transposed_product(yk, block + ncol, nrow, below, ncol, work);
+    subtract_transposed_product(yk, node.diagonal(0) + ncol, node.step(0), below, ncol, work);
     for (Index j0 = (ncol - 1) / panel * panel; j0 >= 0; j0 -= panel)
     {
       const Index width = std::min(panel, ncol - j0);
       const Index rest = ncol - j0 - width;
-      subtract_transposed_product(yk + j0, block + j0 * nrow + j0 + width, nrow, rest, width, yk + j0 + width);
+      subtract_transposed_product(yk + j0, node.diagonal(j0) + width, node.step(j0), rest, width, yk + j0 + width);
       for (Index j = j0 + width - 1; j >= j0; --j)
       {
-        const float* column = block + j * nrow;
+        const float* column = node.diagonal(j);
         double sum = 0;
         for (Index i = j + 1; i < j0 + width; ++i)
-          sum += static_cast<double>(column[i]) * yk[i];
-        yk[j] = (yk[j] - sum) / static_cast<double>(column[j]);
+          sum += static_cast<double>(column[i - j]) * yk[i];
+        yk[j] = (yk[j] - sum) / static_cast<double>(column[0]);
       }
     }
   }

@@ -36,13 +36,18 @@ public:
   long nonzeros() const { return static_cast<long>(_values.size()); }
 
 private:
-  /// Supernode k: columns [first, first + ncol), a dense column-major block of nrow rows (the
-  /// first ncol its triangle) whose last `below` rows are below_rows of the factor.
+  /// Supernode k: columns [first, first + ncol) of nrow rows (the first ncol its triangle),
+  /// whose last `below` rows are below_rows of the factor; `block` holds its lower trapezoid
+  /// packed by columns, column j from its diagonal entry down (nrow - j entries).
   struct Supernode
   {
     Index first, ncol, nrow, below;
     const float* block;
     const int* below_rows;
+    /// Column j's diagonal entry; the entry in row i >= j is diagonal(j)[i - j].
+    const float* diagonal(Index j) const { return block + j * nrow - j * (j - 1) / 2; }
+    /// Entries from a row of column j to the same row of column j + 1.
+    Index step(Index j) const { return nrow - j - 1; }
   };
   Supernode supernode(size_t k) const;
   /// y = L^{-1} y, then y = L'^{-1} y, in the factor's (permuted) order.
@@ -52,7 +57,7 @@ private:
   std::vector<int> _permutation;  ///< row k of the factor is row _permutation[k] of A
   std::vector<int> _first_column; ///< supernode k: columns [_first_column[k], _first_column[k+1])
   std::vector<int> _row_start;    ///< supernode k: rows _rows[_row_start[k] ...]
-  std::vector<long> _value_start; ///< supernode k: its dense column-major block in _values
+  std::vector<long> _value_start; ///< supernode k: its packed lower trapezoid in _values
   std::vector<int> _rows;         ///< the first rows of a supernode are its own columns
   std::vector<float> _values;
   Index _max_rows = 0; ///< the largest supernode's row count (workspace size)

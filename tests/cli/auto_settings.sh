@@ -85,7 +85,7 @@ run --output "$work/tight" --set problem=hertz3d --set hertz3d.refinement=0.8 --
 # 4b. Tighter: even subdomains of 1000 DOFs leave the estimate over half the budget; the run
 # takes them (the guard checks the whole budget) and says so.
 run --output "$work/tighter" --set problem=hertz3d --set hertz3d.refinement=0.8 --set displacements=small \
-  --set memory_limit=1.4e8
+  --set memory_limit=1.3e8
 [[ $(field "$work/tighter" subdomains_reason) == *"the smallest auto takes"* ]] \
   || fail "tighter budget: '$(field "$work/tighter" subdomains_reason)'"
 
