@@ -22,6 +22,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "common/timer.hpp"
+#include "la/blas_core.hpp"
 #include "nonlinear/bonded_direct_solve.hpp"
 #include "nonlinear/contact_pressure.hpp"
 #include "nonlinear/feti_contact_solver.hpp"
@@ -100,6 +101,7 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   out["preconditioner"] = feti.preconditioner_name;
   out["dirichlet_layers"] = feti.dirichlet_layers;
   out["factor_precision"] = feti.single_precision_factors ? "single" : "double";
+  out["blas_core"] = la::blas_core();
   out["dual_operator"] = solution.dual_operator; // implicit or explicit, after dual.operator = auto
   out["explicit_operator_bytes"] = solution.explicit_operator_bytes;
   out["converged"] = solution.converged;

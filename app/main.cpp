@@ -5,6 +5,7 @@
 #include "app/commands.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
+#include "la/blas_core.hpp"
 #include "par/communicator.hpp"
 
 #include <cstdio>
@@ -73,6 +74,7 @@ void keep_freed_memory()
 
 int main(int argc, char** argv)
 {
+  feticon::la::rerun_with_better_blas_core(argv); // before any thread, MPI or output
   keep_freed_memory();
   feticon::par::Environment mpi(argc, argv);
   feticon::log::set_rank(feticon::par::Communicator::world().rank());

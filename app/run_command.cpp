@@ -14,6 +14,7 @@
 #include "common/available_memory.hpp"
 #include "io/problem_file.hpp"
 #include "io/settings.hpp"
+#include "la/blas_core.hpp"
 #include "mesh/mesh_quality.hpp"
 #include "nonlinear/feti_contact_solver.hpp"
 #include "nonlinear/primal_penalty_solver.hpp"
@@ -415,6 +416,7 @@ void write_results(RunContext& run, const nonlinear::ContactSolution& solution, 
     timing[phase] = seconds;
   summary["timings_seconds"] = timing;
   summary["ranks"] = run.comm.size();
+  summary["blas_core"] = la::blas_core(); // OpenBLAS's kernels (la/blas_core.hpp); "" for another BLAS
   const std::vector<int64_t> memory =
       run.comm.all_gather(std::vector<int64_t>{static_cast<int64_t>(peak_memory_bytes())});
   summary["peak_memory_bytes"] = *std::max_element(memory.begin(), memory.end());
