@@ -20,8 +20,8 @@ namespace feticon::la
 std::string blas_core();
 
 /// The OPENBLAS_CORETYPE to run with, or "" to run as loaded: OpenBLAS fell back to
-/// Prescott, OPENBLAS_CORETYPE is not set, and the CPU (and operating system) has AVX-512
-/// (then "SkylakeX") or AVX2 with FMA ("Haswell").
+/// Prescott, OPENBLAS_CORETYPE is not set, the process is not under Valgrind, and the CPU
+/// (and operating system) has AVX-512 (then "SkylakeX") or AVX2 with FMA ("Haswell").
 std::string better_blas_core();
 
 /// If better_blas_core() names kernels: sets OPENBLAS_CORETYPE and replaces the process by a
