@@ -234,8 +234,9 @@ void SinglePrecisionFactor::forward(double* y, double* work) const
   for (size_t k = 0; k + 1 < _first_column.size(); ++k)
   {
     const Supernode node = supernode(k);
-    const auto [k1, ncol, nrow, below, block, rows] = node;
-    double* yk = y + k1;
+    const Index ncol = node.ncol, below = node.below;
+    const int* rows = node.below_rows;
+    double* yk = y + node.first;
     // The diagonal triangle in panels of `panel` columns, then the rows below into a dense
     // workspace: one pass over each for every four columns.
     for (Index j0 = 0; j0 < ncol; j0 += panel)
@@ -263,8 +264,9 @@ void SinglePrecisionFactor::backward(double* y, double* work) const
   for (size_t k = _first_column.size() - 1; k-- > 0;)
   {
     const Supernode node = supernode(k);
-    const auto [k1, ncol, nrow, below, block, rows] = node;
-    double* yk = y + k1;
+    const Index ncol = node.ncol, below = node.below;
+    const int* rows = node.below_rows;
+    double* yk = y + node.first;
     for (Index i = 0; i < below; ++i)
       work[i] = y[rows[i]];
     subtract_transposed_product(yk, node.diagonal(0) + ncol, node.step(0), below, ncol, work);
