@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "la/metis_random.hpp"
+#include "la/nodal_ordering.hpp"
 #include "la/single_precision_factor.hpp"
 
 #include <Eigen/CholmodSupport>
@@ -13,11 +14,32 @@ namespace feticon::la
 {
 namespace
 {
+/// Matrices from this size on are ordered by their node graph (nodal_ordering.hpp).
+constexpr Index nodal_ordering_dofs = 3000;
+
 /// Eigen keeps CHOLMOD's factor to itself; the single-precision copy reads it.
 class Decomposition : public Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>
 {
 public:
   const cholmod_factor& factor() const { return *m_cholmodFactor; }
+
+  /// analyzePattern with the ordering `perm` (CHOLMOD's Perm), postordered by CHOLMOD.
+  void analyze_given(const SparseMatrix& A, std::vector<int>& perm)
+  {
+    if (m_cholmodFactor)
+      cholmod_free_factor(&m_cholmodFactor, &cholmod());
+    cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
+    const int methods = cholmod().nmethods, ordering = cholmod().method[0].ordering;
+    cholmod().nmethods = 1;
+    cholmod().method[0].ordering = CHOLMOD_GIVEN;
+    m_cholmodFactor = cholmod_analyze_p(&view, perm.data(), nullptr, 0, &cholmod());
+    cholmod().nmethods = methods;
+    cholmod().method[0].ordering = ordering;
+    m_isInitialized = true;
+    m_info = m_cholmodFactor ? Eigen::Success : Eigen::NumericalIssue;
+    m_analysisIsOk = m_cholmodFactor != nullptr;
+    m_factorizationIsOk = false;
+  }
 };
 } // namespace
 
@@ -42,8 +64,8 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what, FactorPre
   // CHOLMOD picks simplicial (small subdomains: no BLAS call overhead) or supernodal.
   solver.setMode(Eigen::CholmodAuto);
   {
-    // CHOLMOD's default ordering also tries METIS when AMD fills in much (3D subdomains),
-    // and METIS draws from the C library's one random generator: with the draws private to
+    // The ordering is METIS's (nodal_ordering.hpp; CHOLMOD's default also tries METIS when
+    // AMD fills in much, as on 3D subdomains), and METIS draws from the C library's one random generator: with the draws private to
     // each thread the analyses run in parallel and order as in a serial run; where they
     // cannot be (metis_random.hpp) they run one at a time, since interleaved draws changed
     // the orderings, and with them the round-off of every later step, from run to run
@@ -53,7 +75,11 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what, FactorPre
     std::unique_lock lock(analysis, std::defer_lock);
     if (!thread_private_random_available())
       lock.lock();
-    solver.analyzePattern(A);
+    std::optional<std::vector<int>> nodal = nodal_nested_dissection(A, nodal_ordering_dofs);
+    if (nodal)
+      solver.analyze_given(A, *nodal);
+    else
+      solver.analyzePattern(A);
   }
   solver.factorize(A);
   if (solver.info() != Eigen::Success)

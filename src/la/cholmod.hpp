@@ -1,8 +1,9 @@
 #pragma once
 /// @file The one wrapper around SuiteSparse CHOLMOD (via Eigen's CholmodSupport).
 ///
-/// Sparse Cholesky of a symmetric positive definite matrix with a fill-reducing ordering
-/// chosen by CHOLMOD (AMD/METIS). Used for the regularized subdomain stiffnesses of the
+/// Sparse Cholesky of a symmetric positive definite matrix with a fill-reducing ordering:
+/// METIS's nested dissection of the node graph for 3D matrices from 3 000 DOFs
+/// (nodal_ordering.hpp), CHOLMOD's choice (AMD/METIS) otherwise. Used for the regularized subdomain stiffnesses of the
 /// generalized inverse and for direct reference solves of undecomposed problems.
 
 #include "la/types.hpp"
