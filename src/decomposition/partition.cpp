@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <utility>
 #include <numeric>
 #include <tuple>
 
@@ -31,28 +32,41 @@ bool face_graph_connected(const std::vector<idx_t>& xadj, const std::vector<idx_
   return queue.size() == n;
 }
 
-/// Cells sharing a face (its corners) with each cell: CSR adjacency.
-void cell_face_graph(const mesh::Mesh& mesh, std::vector<idx_t>& xadj, std::vector<idx_t>& adjncy)
+/// The cell face graph (CSR): each cell's neighbours through a face, in the order of the
+/// faces' sorted corners. Sorting (face corners, cell) pairs and pairing equal neighbours
+/// replaced a map of 1.8 M faces at hertz3d 924k (about 5 % of the set-up's samples).
+struct CellFaceGraph
 {
-  std::map<std::array<int32_t, 4>, std::vector<int32_t>> face_cells;
+  std::vector<idx_t> xadj, adjncy;
+};
+
+CellFaceGraph cell_face_graph(const mesh::Mesh& mesh)
+{
+  std::vector<std::pair<std::array<int32_t, 4>, int32_t>> faces;
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
     for (size_t k = 0; k < mesh::cell_type(mesh.cells.kind(c)).faces.size(); ++k)
-      face_cells[mesh::sorted_corners(mesh::cell_face(mesh.cells.kind(c), mesh.cells[c], static_cast<int>(k)))]
-          .push_back(c);
+      faces.emplace_back(mesh::sorted_corners(mesh::cell_face(mesh.cells.kind(c), mesh.cells[c], static_cast<int>(k))),
+                         c);
+  std::sort(faces.begin(), faces.end());
   std::vector<std::vector<int32_t>> neighbours(mesh.n_cells());
-  for (const auto& [key, cells] : face_cells)
-    if (cells.size() == 2)
+  for (size_t first = 0, last = 0; first < faces.size(); first = last)
+  {
+    for (last = first + 1; last < faces.size() && faces[last].first == faces[first].first;)
+      ++last;
+    if (last - first == 2) // a face of two cells (three or more: a non-manifold face, no neighbours)
     {
-      neighbours[cells[0]].push_back(cells[1]);
-      neighbours[cells[1]].push_back(cells[0]);
+      neighbours[faces[first].second].push_back(faces[first + 1].second);
+      neighbours[faces[first + 1].second].push_back(faces[first].second);
     }
-  xadj.assign(1, 0);
-  adjncy.clear();
+  }
+  CellFaceGraph graph;
+  graph.xadj.assign(1, 0);
   for (const auto& list : neighbours)
   {
-    adjncy.insert(adjncy.end(), list.begin(), list.end());
-    xadj.push_back(static_cast<idx_t>(adjncy.size()));
+    graph.adjncy.insert(graph.adjncy.end(), list.begin(), list.end());
+    graph.xadj.push_back(static_cast<idx_t>(graph.adjncy.size()));
   }
+  return graph;
 }
 
 /// Parts per body in proportion to its cells (largest remainder), at least one each.
@@ -98,6 +112,40 @@ Partition compact(std::vector<int32_t> ids)
     id = it->second;
   }
   return {std::move(ids), static_cast<int32_t>(renumber.size())};
+}
+
+/// split_disconnected on the graph of the partition's mesh.
+Partition split_disconnected(const CellFaceGraph& graph, const Partition& partition)
+{
+  const std::vector<idx_t>& xadj = graph.xadj;
+  const std::vector<idx_t>& adjncy = graph.adjncy;
+  const auto n_cells = static_cast<int32_t>(xadj.size() - 1);
+  std::vector<int32_t> component(n_cells, -1);
+  int32_t next = 0;
+  std::vector<int32_t> stack;
+  for (int32_t seed = 0; seed < n_cells; ++seed)
+  {
+    if (component[seed] >= 0)
+      continue;
+    component[seed] = next;
+    stack.assign(1, seed);
+    while (!stack.empty())
+    {
+      const int32_t c = stack.back();
+      stack.pop_back();
+      for (idx_t k = xadj[c]; k < xadj[c + 1]; ++k)
+      {
+        const int32_t nb = adjncy[k];
+        if (component[nb] < 0 && partition.cell_subdomain[nb] == partition.cell_subdomain[c])
+        {
+          component[nb] = next;
+          stack.push_back(nb);
+        }
+      }
+    }
+    ++next;
+  }
+  return compact(std::move(component));
 }
 
 /// Recursive coordinate bisection of `cells` (indices into centroid/size) into n parts.
@@ -207,8 +255,9 @@ Partition partition_structured(const mesh::Mesh& mesh, std::array<int, 3> parts)
 
 Partition partition_metis(const mesh::Mesh& mesh, int n_subdomains)
 {
-  std::vector<idx_t> xadj, adjncy;
-  cell_face_graph(mesh, xadj, adjncy);
+  const CellFaceGraph graph = cell_face_graph(mesh);
+  const std::vector<idx_t>& xadj = graph.xadj;
+  const std::vector<idx_t>& adjncy = graph.adjncy;
 
   const std::vector<int> body_parts = parts_per_body(mesh, n_subdomains);
 
@@ -259,7 +308,7 @@ Partition partition_metis(const mesh::Mesh& mesh, int n_subdomains)
       ids[cells[k]] = offset + static_cast<int32_t>(part[k]);
     offset += static_cast<int>(nparts);
   }
-  return split_disconnected(mesh, compact(std::move(ids)));
+  return split_disconnected(graph, compact(std::move(ids)));
 }
 
 Partition partition_rcb(const mesh::Mesh& mesh, int n_subdomains)
@@ -293,33 +342,6 @@ Partition partition_rcb(const mesh::Mesh& mesh, int n_subdomains)
 
 Partition split_disconnected(const mesh::Mesh& mesh, const Partition& partition)
 {
-  std::vector<idx_t> xadj, adjncy;
-  cell_face_graph(mesh, xadj, adjncy);
-  std::vector<int32_t> component(mesh.n_cells(), -1);
-  int32_t next = 0;
-  std::vector<int32_t> stack;
-  for (int32_t seed = 0; seed < mesh.n_cells(); ++seed)
-  {
-    if (component[seed] >= 0)
-      continue;
-    component[seed] = next;
-    stack.assign(1, seed);
-    while (!stack.empty())
-    {
-      const int32_t c = stack.back();
-      stack.pop_back();
-      for (idx_t k = xadj[c]; k < xadj[c + 1]; ++k)
-      {
-        const int32_t nb = adjncy[k];
-        if (component[nb] < 0 && partition.cell_subdomain[nb] == partition.cell_subdomain[c])
-        {
-          component[nb] = next;
-          stack.push_back(nb);
-        }
-      }
-    }
-    ++next;
-  }
-  return compact(std::move(component));
+  return split_disconnected(cell_face_graph(mesh), partition);
 }
 } // namespace feticon::decomposition
