@@ -147,7 +147,10 @@ void choose_count(const io::Settings& settings, const ModelSize& size, const Mem
   // 188 MPRGP steps in 5 subdomains, 142 in 4, 168 in 8; hertz3d at 121k: 181 in 13, 147 in
   // 8, 153 in 16).
   int n = clamp(std::exp2(std::round(std::log2(std::max(1.0, dofs / target)))));
-  out.subdomains_reason = format("%.0f DOFs at about %.0f DOFs a subdomain", dofs, target);
+  out.subdomains_reason = size.mesh_nodes > 0
+      ? format("%.0f DOFs, counted as %.0f for hex20's denser factors, at about %.0f DOFs a subdomain",
+               3.0 * static_cast<double>(size.mesh_nodes), dofs, target)
+      : format("%.0f DOFs at about %.0f DOFs a subdomain", dofs, target);
   if (n == cap && n < dofs / target)
     out.subdomains_reason += ": one subdomain per cell";
   // Half the budget: the estimate is within about 10 % of the measured peaks, and the machine
@@ -183,8 +186,14 @@ ModelSize model_size(const fem::Problem& problem)
   bool quadratic = false;
   for (size_t c = 0; c < problem.mesh.cells.size() && !quadratic; ++c)
     quadratic = mesh::cell_type(problem.mesh.cells.kind(c)).order > 1;
-  return {
-      guard_nodes(problem.mesh), problem.mesh.n_cells(), problem.mesh.n_bodies(), problem.eliminated[2], 0, quadratic};
+  const int64_t counted = guard_nodes(problem.mesh);
+  return {counted,
+          problem.mesh.n_cells(),
+          problem.mesh.n_bodies(),
+          problem.eliminated[2],
+          0,
+          quadratic,
+          counted != problem.mesh.n_nodes() ? problem.mesh.n_nodes() : 0};
 }
 
 FetiChoice choose_feti(const io::Settings& settings, const ModelSize& size, const MemoryBudget& budget, int ranks)

@@ -42,6 +42,7 @@ struct ModelSize
   bool plane_strain = false;
   double resident = 0;    ///< bytes a rank holds already (0: the guard's model of the process)
   bool quadratic = false; ///< some cells are quadratic (tet10, hex20)
+  int64_t mesh_nodes = 0; ///< the mesh's own node count where it differs from `nodes` (hex20)
 };
 
 /// The subdomain count and the preconditioner of a run, each with why.

@@ -50,6 +50,9 @@ run --output "$work/h3q" --set problem=hertz3d --set hertz3d.cell=hex20 --set he
   --set displacements=small
 [[ $(field "$work/h3q" preconditioner.choice) == lumped ]] || fail "hex20: preconditioner $(field "$work/h3q" preconditioner.choice)"
 [[ $(field "$work/h3q" preconditioner.reason) == *"quadratic cells"* ]] || fail "hex20: '$(field "$work/h3q" preconditioner.reason)'"
+# The reason names the model's DOFs, and the larger count hex20's factors are sized by.
+h3q_reason=$(field "$work/h3q" subdomains_reason)
+[[ $h3q_reason == "$(field "$work/h3q" degrees_of_freedom) DOFs, counted as "* ]] || fail "hex20: count reason '$h3q_reason'"
 # The band is the user's to set, and a banded S_s cannot be explicit.
 run --output "$work/h3whole" --set problem=hertz3d --set hertz3d.refinement=0.8 --set displacements=small \
   --set qp.dirichlet_layers=0
