@@ -207,6 +207,13 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, 
   if (!smalbe_method)
   {
     mprgp.preconditioner = qp.preconditioner();
+    // The looser of rtol ||b|| and the outer loop's force tolerance, as SMALBE-M's final test
+    // (qp::SmalbeOptions::absolute_tolerance); the penalty's G lambda - e is rho's to bound.
+    if (options.force_tolerance > 0)
+      mprgp.stop = [tol = std::max(options.rtol * la::norm(feti.space(), qp.rhs()), options.force_tolerance)](
+                       const la::Vector&, const la::Vector&, double projected_gradient_norm) {
+        return projected_gradient_norm <= tol;
+      };
     out.report = inner_solver(qp.hessian(), mprgp)->solve(qp.rhs(), qp.constraints(), mu);
     out.report.outer_iterations = 1;
   }

@@ -52,7 +52,7 @@ struct DualPenaltyOptions
   double feasibility_tolerance = 0;
   /// qp.force_rtol: the outer loop's force_tolerance relative to its force scale.
   double force_rtol = 0;
-  /// If > 0 (SMALBE-M): the final test also holds when ||g_P|| and ||G~ mu|| are at most this
+  /// If > 0: the final test also holds when ||g_P|| (SMALBE-M: and ||G~ mu||) is at most this
   /// (force units of the scaled dual; qp::SmalbeOptions::absolute_tolerance), which the outer
   /// loop sets to force_rtol times its force scale.
   double force_tolerance = 0;

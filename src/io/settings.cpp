@@ -80,8 +80,8 @@ std::vector<SettingSpec> make_specs()
       {"qp.rtol", "1e-8", "QP stopping tolerance ||g_P|| <= rtol ||b||", Type::number, {}, 0, 1, true},
       {"qp.force_rtol", "1e-7", "SMALBE-M also stops when ||g_P|| and ||G lambda - e|| (force units of the "
        "scaled dual) are at most force_rtol max(||f_ext||, ||f_int||) and the subdomains' net forces at most a "
-       "quarter of newton.residual_tolerance times that force: the QP to the accuracy the outer loop asks, "
-       "where ||b|| is of the order of the load; 0: qp.rtol alone", Type::number, {}, 0, 1, false},
+       "quarter of newton.residual_tolerance times that force (method dual_penalty: when ||g_P|| is): the QP to "
+       "the accuracy the outer loop asks, where ||b|| is of the order of the load; 0: qp.rtol alone", Type::number, {}, 0, 1, false},
       {"qp.expansion", "std", "MPRGP expansion step: std (feasible half step and projected gradient step, "
        "ALGORITHMS.md 5) or projcg (the CG step projected, with std as fallback where it raises the cost)",
        Type::text, {"std", "projcg"}, 0, 0, false},

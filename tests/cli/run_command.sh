@@ -79,6 +79,21 @@ grep -q "warning: the dual penalty with rho = 1" "$work/dp.err" || { echo "no du
 $py -c "import json; s=json.load(open('$work/dp/summary.json')); w = s['warnings']; assert len(w) == 2 and 'method=smalbe' in w[0] and 'do not carry the load' in w[1], w"
 $py -c "import json; s=json.load(open('$work/hertz/summary.json')); assert s['warnings'] == [], s['warnings']"
 
+# The dual penalty's MPRGP stops at the outer loop's force tolerance too (qp.force_rtol), as
+# SMALBE-M does: fewer steps on Hertz small (12 against 14), and the answer within a decade
+# above that tolerance of the solve to qp.rtol alone (reference: qp.force_rtol=0).
+for fr in 1e-7 0; do
+  "$feticon" run -q --output "$work/dpf$fr" --set displacements=small --set method=dual_penalty \
+    --set qp.force_rtol=$fr --set output.plots=false --set output.vtu=false 2> /dev/null
+done
+$py -c "
+import json
+a, b = (json.load(open('$work/dpf' + f + '/summary.json')) for f in ('1e-7', '0'))
+sa, sb = a['qp']['iterations'], b['qp']['iterations']
+pa, pb = a['contact']['peak_pressure'], b['contact']['peak_pressure']
+assert sa < sb, (sa, sb)
+assert abs(pa - pb) <= 1e-6 * pb, (pa, pb)"
+
 # An output folder holding another run's results is refused; --overwrite removes feticon's
 # files first (a stale step of the earlier run does not survive), and only those.
 if "$feticon" run -q --output "$work/hertz" --set hertz.refinement=0.5 2> "$work/err"; then
