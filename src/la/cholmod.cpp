@@ -65,11 +65,12 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what, FactorPre
   solver.setMode(Eigen::CholmodAuto);
   {
     // The ordering is METIS's (nodal_ordering.hpp; CHOLMOD's default also tries METIS when
-    // AMD fills in much, as on 3D subdomains), and METIS draws from the C library's one random generator: with the draws private to
-    // each thread the analyses run in parallel and order as in a serial run; where they
-    // cannot be (metis_random.hpp) they run one at a time, since interleaved draws changed
-    // the orderings, and with them the round-off of every later step, from run to run
-    // (hertz3d at 97k DOFs: three runs, three peak pressures differing in the 7th digit).
+    // AMD fills in much, as on 3D subdomains), and METIS draws from the C library's one
+    // random generator: with the draws private to each thread the analyses run in parallel
+    // and order as in a serial run; where they cannot be (metis_random.hpp) they run one at
+    // a time, since interleaved draws changed the orderings, and with them the round-off of
+    // every later step, from run to run (hertz3d at 97k DOFs: three runs, three peak
+    // pressures differing in the 7th digit).
     const ThreadPrivateRandom private_draws;
     static std::mutex analysis;
     std::unique_lock lock(analysis, std::defer_lock);
@@ -80,6 +81,12 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what, FactorPre
       solver.analyze_given(A, *nodal);
     else
       solver.analyzePattern(A);
+  }
+  if (solver.info() != Eigen::Success)
+  {
+    const int status = solver.cholmod().status;
+    _impl.reset();
+    FETICON_CHECK(false, "CHOLMOD could not analyze " << what << " (status " << status << ")");
   }
   solver.factorize(A);
   if (solver.info() != Eigen::Success)
