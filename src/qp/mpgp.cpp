@@ -125,7 +125,7 @@ struct Mpgp::SolveState
   MprgpStep step = MprgpStep::start;
 };
 
-QpReport Mpgp::solve(const Vector& b, const SeparableConstraints& set, Vector& x)
+QpReport Mpgp::solve(const Vector& b, const SeparableConstraints& set, Vector& x, Vector* gradient)
 {
   const auto start_time = std::chrono::steady_clock::now();
   check_input(_A, b, set, x);
@@ -133,6 +133,8 @@ QpReport Mpgp::solve(const Vector& b, const SeparableConstraints& set, Vector& x
   const la::VectorSpace& space = _A.space() ? *_A.space() : *(serial = std::make_unique<la::SerialSpace>(_A.size()));
   SolveState s(space, b, set, x);
   auto finish = [&](bool converged, std::string reason) {
+    if (gradient)
+      *gradient = s.g;
     s.report.ritz = s.ritz.longest_run();
     s.report.converged = converged;
     s.report.reason = std::move(reason);
@@ -145,8 +147,13 @@ QpReport Mpgp::solve(const Vector& b, const SeparableConstraints& set, Vector& x
     if (std::optional<std::string> failure = estimate_alpha_bar(_A, _options.power_iterations, s.report, _alpha_bar))
       return finish(false, std::move(*failure));
 
+  const bool given_gradient = gradient && gradient->size() == x.size();
+  const Vector x_given = given_gradient ? x : Vector();
   project(set, x);
-  refresh_gradient(s);
+  if (given_gradient && x == x_given)
+    s.g = *gradient;
+  else
+    refresh_gradient(s);
   const double b_norm = la::norm(space, b);
   const double tolerance = _options.rtol * (b_norm > 0.0 ? b_norm : 1.0);
   direction(s, s.p);

@@ -101,7 +101,9 @@ public:
   /// @return counters and state; converged = false with a reason on max_iterations, a
   ///         non-finite gradient norm or a non-positive curvature p'Ap.
   /// Throws feticon::Error for invalid input, one line naming the component or disc.
-  QpReport solve(const la::Vector& b, const SeparableConstraints& set, la::Vector& x) override;
+  /// `gradient` as in QpSolver::solve.
+  QpReport solve(const la::Vector& b, const SeparableConstraints& set, la::Vector& x, la::Vector* gradient) override;
+  using QpSolver::solve;
 
   /// The current expansion step length (0 before the first solve when it is estimated).
   double alpha_bar() const override { return _alpha_bar; }

@@ -233,15 +233,15 @@ QpReport Mprgp::solve(const Vector& b, const Vector& lower, const Vector& upper,
   return solve_box(b, lower, &upper, x);
 }
 
-QpReport Mprgp::solve(const Vector& b, const SeparableConstraints& set, Vector& x)
+QpReport Mprgp::solve(const Vector& b, const SeparableConstraints& set, Vector& x, Vector* gradient)
 {
   FETICON_CHECK(set.discs.empty(),
                 "Mprgp::solve: MPRGP takes bounds only, not the " << set.discs.size()
                                                                   << " discs of this QP (use MPGP)");
-  return solve_box(b, set.lower, set.upper.size() > 0 ? &set.upper : nullptr, x);
+  return solve_box(b, set.lower, set.upper.size() > 0 ? &set.upper : nullptr, x, gradient);
 }
 
-QpReport Mprgp::solve_box(const Vector& b, const Vector& lower, const Vector* upper, Vector& x)
+QpReport Mprgp::solve_box(const Vector& b, const Vector& lower, const Vector* upper, Vector& x, Vector* gradient)
 {
   const auto start_time = std::chrono::steady_clock::now();
   check_input(_A, b, lower, upper, x);
@@ -250,6 +250,8 @@ QpReport Mprgp::solve_box(const Vector& b, const Vector& lower, const Vector* up
   const Box box{lower, upper};
   SolveState s(space, b, box, x);
   auto finish = [&](bool converged, std::string reason) {
+    if (gradient)
+      *gradient = s.g;
     s.report.ritz = s.ritz.longest_run();
     s.report.converged = converged;
     s.report.reason = std::move(reason);
@@ -263,8 +265,13 @@ QpReport Mprgp::solve_box(const Vector& b, const Vector& lower, const Vector* up
     if (std::optional<std::string> failure = estimate_alpha_bar(_A, _options.power_iterations, s.report, _alpha_bar))
       return finish(false, std::move(*failure));
 
+  const bool given_gradient = gradient && gradient->size() == x.size();
+  const Vector x_given = given_gradient ? x : Vector();
   box.project(x);
-  refresh_gradient(s);
+  if (given_gradient && x == x_given)
+    s.g = *gradient;
+  else
+    refresh_gradient(s);
 
   const double b_norm = la::norm(space, b);
   const double tolerance = _options.rtol * (b_norm > 0.0 ? b_norm : 1.0);

@@ -169,7 +169,8 @@ public:
 
   /// The QpSolver interface: the lower-bound solve when `set.upper` is empty, else the box
   /// solve; MPRGP takes no discs (throws feticon::Error if `set` has any).
-  QpReport solve(const la::Vector& b, const SeparableConstraints& set, la::Vector& x) override;
+  QpReport solve(const la::Vector& b, const SeparableConstraints& set, la::Vector& x, la::Vector* gradient) override;
+  using QpSolver::solve;
 
   /// The current expansion step length (0 before the first solve when it is estimated).
   double alpha_bar() const override { return _alpha_bar; }
@@ -179,8 +180,9 @@ private:
   struct SolveState;
 
   /// Both solve overloads: `upper` null means no upper bound (u = +infinity, the arithmetic
-  /// of the lower-bound algorithm).
-  QpReport solve_box(const la::Vector& b, const la::Vector& lower, const la::Vector* upper, la::Vector& x);
+  /// of the lower-bound algorithm); `gradient` as in QpSolver::solve.
+  QpReport solve_box(const la::Vector& b, const la::Vector& lower, const la::Vector* upper, la::Vector& x,
+                     la::Vector* gradient = nullptr);
 
   /// g = Ax - b recomputed: the initial gradient, and every gradient_refresh steps against the
   /// drift of the recursive update.

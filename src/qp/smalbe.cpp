@@ -94,6 +94,12 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const SeparableConstraints& set,
   set_initial_state(s, space, b, start);
   make_inner_solver(s);
   SmalbeReport& report = s.report;
+  // g = H x - rhs at x, carried from one inner solve to the next: an update of omega changes
+  // rhs by -C' (omega - omega_old) and leaves x, so g follows without a product with H. It is
+  // recomputed after a rho update (H changed) and once the steps on the carried gradient
+  // reach MPRGP's own refresh period (the recursive update's drift).
+  la::Vector g;
+  int carried_steps = 0;
   for (int k = 0; k < _options.max_outer_iterations; ++k)
   {
     const int remaining = _options.max_inner_iterations - report.iterations;
@@ -104,7 +110,9 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const SeparableConstraints& set,
     }
     s.final_test = false;
     const la::Vector rhs = b - _C.apply_transpose(s.omega);
-    const QpReport r = s.inner_solver->solve(rhs, set, x);
+    const QpReport r = s.inner_solver->solve(rhs, set, x, &g);
+    carried_steps = r.iterations >= s.inner.gradient_refresh ? r.iterations % s.inner.gradient_refresh
+                                                             : carried_steps + r.iterations;
     report += r; // counters; the seconds are the whole solve's, set at the end
     report.projected_gradient_norm = r.projected_gradient_norm;
     report.outer_iterations = k + 1;
@@ -132,10 +140,23 @@ SmalbeReport Smalbe::solve(const la::Vector& b, const SeparableConstraints& set,
       break;
     }
     s.omega += s.rho * Cx;
+    if (g.size() == x.size() && carried_steps < s.inner.gradient_refresh)
+      g += _C.apply_transpose(s.rho * Cx);
+    else
+    {
+      g.resize(0);
+      carried_steps = 0;
+    }
     if (k > 0 && L < s.previous_L + 0.5 * s.rho * Cx.squaredNorm())
       s.M /= _options.beta;
     s.previous_L = L;
+    const double rho = s.rho;
     raise_rho_if_stalled(s, k, feasibility);
+    if (s.rho != rho)
+    {
+      g.resize(0);
+      carried_steps = 0;
+    }
   }
   if (!report.converged && report.reason.empty())
     report.reason = "SMALBE-M: outer iteration limit reached";

@@ -224,3 +224,41 @@ TEST(Mprgp, InitialGuessIsProjectedAndWarmStartStopsAtOnce)
   EXPECT_EQ(report.hessian_multiplications, 1);
   EXPECT_EQ(warm, x);
 }
+
+// QpSolver::solve's gradient: the solve hands back g = Ax - b at its last iterate, and a solve
+// given that gradient (for a changed b, as SMALBE-M's next inner solve) starts without the
+// product. Reference: the true gradient A x - b, and the same solve started from x alone.
+TEST(Mprgp, StartsFromTheCallersGradient)
+{
+  const test::BoundQp qp = test::random_bound_qp(40, 3);
+  test::CountingOperator A(qp.A);
+  const qp::SeparableConstraints set{qp.lower, {}, {}};
+  qp::Mprgp mprgp(A, {.rtol = 1e-6, .alpha_bar = 1.8 / largest_eigenvalue(qp.A)});
+  la::Vector x = la::Vector::Zero(40), g;
+  ASSERT_TRUE(mprgp.solve(qp.b, set, x, &g).converged);
+  ASSERT_EQ(g.size(), 40);
+  EXPECT_LT((g - (qp.A * x - qp.b)).norm(), 1e-12 * qp.b.norm());
+
+  // b shifted along a vector d: the gradient at the same x shifts by -d.
+  const la::Vector d = la::Vector::LinSpaced(40, -0.3, 0.2) * qp.b.norm() / 40;
+  const la::Vector b2 = qp.b + d;
+  la::Vector x_given = x, g_given = g - d, x_fresh = x;
+  const int before = A.applications;
+  const qp::QpReport given = mprgp.solve(b2, set, x_given, &g_given);
+  const int given_products = A.applications - before;
+  const qp::QpReport fresh = mprgp.solve(b2, set, x_fresh);
+  ASSERT_TRUE(given.converged && fresh.converged);
+  EXPECT_EQ(given_products, given.hessian_multiplications);
+  EXPECT_EQ(given.hessian_multiplications + 1, fresh.hessian_multiplications);
+  EXPECT_EQ(given.iterations, fresh.iterations);
+  EXPECT_LT((x_given - x_fresh).norm(), 1e-10 * x_fresh.norm());
+
+  // A start the set moves (x outside Omega) ignores the given gradient.
+  la::Vector outside = x;
+  outside[0] = qp.lower[0] - 1;
+  la::Vector g_stale = g;
+  const int before_outside = A.applications;
+  const qp::QpReport projected = mprgp.solve(qp.b, set, outside, &g_stale);
+  EXPECT_EQ(A.applications - before_outside, projected.hessian_multiplications);
+  EXPECT_EQ(projected.hessian_multiplications, predicted_products(projected, 0));
+}

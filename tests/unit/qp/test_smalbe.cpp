@@ -236,10 +236,10 @@ TEST(Smalbe, TakesTheCallersInnerSolver)
         : Mprgp(H, options), _solves(solves)
     {
     }
-    QpReport solve(const la::Vector& b, const SeparableConstraints& set, la::Vector& x) override
+    QpReport solve(const la::Vector& b, const SeparableConstraints& set, la::Vector& x, la::Vector* gradient) override
     {
       ++_solves;
-      return Mprgp::solve(b, set, x);
+      return Mprgp::solve(b, set, x, gradient);
     }
 
   private:
