@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <utility>
 #include <numeric>
 #include <tuple>
+#include <utility>
 
 namespace feticon::decomposition
 {

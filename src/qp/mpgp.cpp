@@ -147,12 +147,9 @@ QpReport Mpgp::solve(const Vector& b, const SeparableConstraints& set, Vector& x
     if (std::optional<std::string> failure = estimate_alpha_bar(_A, _options.power_iterations, s.report, _alpha_bar))
       return finish(false, std::move(*failure));
 
-  // The given gradient holds where it was given for every rank's x: the choice is collective,
-  // since the product it replaces is.
-  const bool given_gradient = gradient && gradient->size() == x.size();
-  const Vector x_given = given_gradient ? x : Vector();
+  const Vector x_given = gradient ? x : Vector();
   project(set, x);
-  if (gradient && space.max(given_gradient && x == x_given ? 0.0 : 1.0) == 0.0)
+  if (given_gradient_holds(space, gradient, x_given, x))
     s.g = *gradient;
   else
     refresh_gradient(s);

@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "common/log.hpp"
+#include "la/vector_space.hpp"
 #include "qp/norm_estimate.hpp"
 
 #include <cmath>
@@ -82,5 +83,10 @@ void log_iterate(const char* solver, const MprgpIterate& it, double tolerance, b
                   it.iteration, to_string(it.step), it.projected_gradient_norm, it.free_gradient_norm,
                   it.chopped_gradient_norm, tolerance, it.cost);
   log::iteration(line);
+}
+bool given_gradient_holds(const la::VectorSpace& space, const la::Vector* gradient, const la::Vector& x_given,
+                          const la::Vector& x)
+{
+  return gradient && space.max(gradient->size() == x.size() && x == x_given ? 0.0 : 1.0) == 0.0;
 }
 } // namespace feticon::qp

@@ -1,6 +1,7 @@
 #pragma once
 /// @file What MPRGP and MPGP share around their steps: the stopping test, the expansion step
-/// length alpha_bar from the norm estimate, the log line of an iterate, numbers in messages.
+/// length alpha_bar from the norm estimate, the start from a given gradient, the log line of an
+/// iterate, numbers in messages.
 
 #include "la/operator.hpp"
 #include "qp/mprgp.hpp"
@@ -32,6 +33,12 @@ std::string format_number(double value);
 std::optional<SolveStop> stopping_test(const StopTest& stop, int max_iterations, const QpReport& report,
                                        const la::Vector& x, const la::Vector& g, double gp_norm, double tolerance,
                                        double b_norm);
+
+/// Whether a solve starts from the caller's gradient (QpSolver::solve): given, of x's size,
+/// and x the same as given (`x_given`, before the projection onto the set) on every rank,
+/// since the product it replaces is collective.
+bool given_gradient_holds(const la::VectorSpace& space, const la::Vector* gradient, const la::Vector& x_given,
+                          const la::Vector& x);
 
 /// @brief alpha_bar = 1.8 / nu with nu from estimate_norm(A, power_iterations), its products
 ///        added to report.hessian_multiplications; a reason when nu is not finite or not
