@@ -31,7 +31,8 @@ nlohmann::ordered_json qp_counters_json(const qp::QpCounters& c)
                                       {"ritz_max", c.solution_face.max},
                                       {"condition_estimate", c.solution_face.max / c.solution_face.min},
                                       {"cg_steps", c.solution_face.cg_steps},
-                                      {"steps_to_qp_rtol", c.solution_face_steps_to_rtol}};
+                                      {"steps_to_qp_rtol", c.solution_face_steps_to_rtol},
+                                      {"ritz_values", c.solution_face.distinct}};
   return json;
 }
 

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace feticon::qp
 {
@@ -21,6 +22,12 @@ struct RitzValues
   double max = 0.0;
   /// CG steps of that run.
   int cg_steps = 0;
+  /// All its Ritz values (at most 500 steps' worth), ascending, copies merged (a value within
+  /// a relative 1e-3 of the last one kept: finite-precision Lanczos repeats a converged
+  /// eigenvalue, a "ghost"). The extremes converge first; a value inside the spectrum need
+  /// not be an eigenvalue. The outliers above the bulk are what a richer coarse space or
+  /// preconditioner would have to take out.
+  std::vector<double> distinct;
 };
 
 /// The work of QP solves: of one solve, or summed (+=) over SMALBE-M's inner solves, over

@@ -31,6 +31,7 @@ RitzValues RitzEstimate::longest_run()
   // its Ritz values are exact for it, and the dense solver below stays small and fast whatever
   // the run's length (a stalled QP of 20 000 steps: docs/measurements.md).
   constexpr Eigen::Index max_steps = 500;
+  constexpr double ghost_tolerance = 1e-3;
   const Eigen::Index k = std::min(static_cast<Eigen::Index>(_best_alpha.size()), max_steps);
   if (k < 2)
     return {};
@@ -55,6 +56,11 @@ RitzValues RitzEstimate::longest_run()
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(T, Eigen::EigenvaluesOnly);
   if (eigen.info() != Eigen::Success)
     return {};
-  return {eigen.eigenvalues().minCoeff(), eigen.eigenvalues().maxCoeff(), static_cast<int>(k)};
+  const Eigen::VectorXd& values = eigen.eigenvalues(); // ascending
+  std::vector<double> distinct;
+  for (const double value : values)
+    if (distinct.empty() || value > distinct.back() * (1 + ghost_tolerance))
+      distinct.push_back(value);
+  return {values[0], values[k - 1], static_cast<int>(k), std::move(distinct)};
 }
 } // namespace feticon::qp
