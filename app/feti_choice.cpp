@@ -86,23 +86,6 @@ void choose_preconditioner(const io::Settings& settings, const ModelSize& size, 
                        settings.is_auto("qp.dirichlet_layers") ? 1 : layers);
 }
 
-/// 3D with small subdomains: the Dirichlet preconditioner's second factors and boundary
-/// blocks are cheap there, and its fewer steps win; only where they fit in the count's room.
-void revise_preconditioner(const io::Settings& settings, const ModelSize& size, const MemoryBudget& budget, int ranks,
-                           FetiChoice& out)
-{
-  const double per_subdomain = 3.0 * static_cast<double>(size.nodes) / out.subdomains;
-  const bool fits = budget.per_rank < 0 ||
-      estimated_peak(size, out.subdomains, ranks, {InteriorFactors::whole, false}) <= 0.5 * budget.per_rank;
-  if (settings.text("qp.preconditioner") == "auto" && !size.plane_strain &&
-      per_subdomain <= auto_dirichlet_subdomain_dofs_3d && fits)
-    set_preconditioner(out, "dirichlet",
-                       format("3D with small subdomains (%.0f DOFs each, at most %.0f): its second factors are cheap "
-                              "there, and it needs the fewest steps",
-                              per_subdomain, auto_dirichlet_subdomain_dofs_3d),
-                       given_layers(settings));
-}
-
 /// auto's single precision needs implicit dual operators to pay: with the whole interior's
 /// Dirichlet preconditioner dual.operator = auto may form explicit blocks, whose steps do not
 /// read the factors, and a linear run would pay a refinement iteration for nothing (the hex8
@@ -206,7 +189,6 @@ FetiChoice choose_feti(const io::Settings& settings, const ModelSize& size, cons
   choose_factor_precision(settings, size, out);
   choose_preconditioner(settings, size, out);
   choose_count(settings, size, budget, std::max(1, ranks), out);
-  revise_preconditioner(settings, size, budget, std::max(1, ranks), out);
   revise_factor_precision(settings, out);
   return out;
 }

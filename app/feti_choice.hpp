@@ -11,8 +11,10 @@
 ///   steps cost a little more than the lumped one's and are 25-38 % fewer, and whose shell
 ///   factors add about a tenth to the memory where the whole interior's would double the
 ///   factors (measured on hex8 meshes); the lumped one with quadratic cells, where a cell
-///   layer is two node layers and the band cost more than it saved; the whole interior
-///   where the subdomains are small (auto_dirichlet_subdomain_dofs_3d);
+///   layer is two node layers and the band cost more than it saved, also in small
+///   subdomains, where the whole interior's second factors took 1.4-1.8 times the band's
+///   or the lumped one's time (docs/benchmarks.md, "The whole interior in small 3D
+///   subdomains");
 /// - the factors in single precision in 3D: the substitutions, most of a step, are bound by
 ///   reading them (hertz3d 924k: a step 0.49 -> 0.31 s, the peak 4.8 -> 3.2 GiB, the answer
 ///   the same to 1e-7; docs/benchmarks.md "Single-precision factors"); in plane strain they
@@ -82,10 +84,6 @@ ModelSize model_size(const fem::Problem& problem);
 /// DOFs per subdomain that `subdomains = auto` aims at (plane strain, 3D).
 constexpr double auto_subdomain_dofs_plane_strain = 3000;
 constexpr double auto_subdomain_dofs_3d = 10000;
-/// In 3D, subdomains of at most this many DOFs get the Dirichlet preconditioner (the sphere
-/// on a block in 4 subdomains of 4 200 DOFs: 66 MPRGP steps against the lumped one's 158,
-/// 1.13 s against 1.37 s; at 8 500 DOFs the lumped one won, 1.23 s against 1.53 s).
-constexpr double auto_dirichlet_subdomain_dofs_3d = 5000;
 /// The smallest subdomains auto raises the count to for memory: below them a subdomain's
 /// factor hardly shrinks (the fixed bytes per DOF dominate) while the steps keep growing.
 constexpr double auto_min_subdomain_dofs = 1000;

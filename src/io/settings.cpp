@@ -87,13 +87,12 @@ std::vector<SettingSpec> make_specs()
        Type::text, {"std", "projcg"}, 0, 0, false},
       {"qp.preconditioner", "auto", "MPRGP preconditioning in the face: none, lumped (P B K B' P), "
        "dirichlet (P B S B' P, S the subdomain Schur complements on their boundary) or auto (dirichlet in plane "
-       "strain; in 3D dirichlet on a band of one cell layer (qp.dirichlet_layers), lumped with quadratic cells, and "
-       "dirichlet on the whole interior for subdomains of at most 5000 DOFs; summary.json preconditioner.reason)",
+       "strain; in 3D dirichlet on a band of one cell layer (qp.dirichlet_layers), lumped with quadratic cells; "
+       "summary.json preconditioner.reason)",
        Type::text, {"none", "lumped", "dirichlet", "auto"}, 0, 0, false},
       {"qp.dirichlet_layers", "auto", "cell layers of each subdomain's interior that the Dirichlet preconditioner's "
        "Schur complement eliminates, the rest held fixed: a cheaper, weaker S applied implicitly; 0: the whole interior; "
-       "auto: 1 where qp.preconditioner = auto picks the band (3D, linear cells, subdomains of more than 5000 DOFs), "
-       "else 0", Type::integer, {}, 0, 1000, false, false, true},
+       "auto: 1 where qp.preconditioner = auto picks the band (3D, linear cells), else 0", Type::integer, {}, 0, 1000, false, false, true},
       {"qp.constraint_scaling", "true", "scale the preconditioner by (B B')^-1 on both sides "
        "(mortar FETI): needed when contact rows are not orthogonal to each other and to the gluing rows",
        Type::boolean, {}, 0, 0, false},
