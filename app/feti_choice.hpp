@@ -11,10 +11,9 @@
 ///   steps cost a little more than the lumped one's and are 25-38 % fewer, and whose shell
 ///   factors add about a tenth to the memory where the whole interior's would double the
 ///   factors (measured on hex8 meshes); the lumped one with quadratic cells, where a cell
-///   layer is two node layers and the band cost more than it saved, also in small
-///   subdomains, where the whole interior's second factors took 1.4-1.8 times the band's
-///   or the lumped one's time (docs/benchmarks.md, "The whole interior in small 3D
-///   subdomains");
+///   layer is two node layers and the band cost more than it saved; the whole interior at
+///   no 3D subdomain size measured (2 200-4 900 DOFs: 1.1-1.7 times the band's or the
+///   lumped one's time; docs/benchmarks.md, "The whole interior in small 3D subdomains");
 /// - the factors in single precision in 3D: the substitutions, most of a step, are bound by
 ///   reading them (hertz3d 924k: a step 0.49 -> 0.31 s, the peak 4.8 -> 3.2 GiB, the answer
 ///   the same to 1e-7; docs/benchmarks.md "Single-precision factors"); in plane strain they
