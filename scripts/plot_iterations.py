@@ -60,7 +60,7 @@ def main():
         steps = [int(h["mprgp_iterations"]) for h in history]
         ax.plot(range(1, len(steps) + 1), steps, style,
                 label=("SMALBE-M" if prefix == "large_smalbe" else "dual penalty") + ", rho = 1")
-    ax.set_xlabel("outer iteration (both load steps)")
+    ax.set_xlabel("outer iteration (all load steps)")
     ax.set_ylabel("MPRGP steps")
     ax.set_title("Inner iterations per outer cycle (seed Fig. 3a)")
     ax.grid(True, alpha=0.3)
@@ -78,7 +78,7 @@ def main():
                 ys.append(run[0]["qp"]["iterations"])
         ax.semilogx(xs, ys, style, label=label)
     ax.set_xlabel("rho (dimensionless, F scaled by ||PFP||)")
-    ax.set_ylabel("total MPRGP steps (both load steps)")
+    ax.set_ylabel("total MPRGP steps (all load steps)")
     ax.set_title("Iterations against the dual penalty (seed Fig. 3b)")
     ax.grid(True, alpha=0.3)
     ax.legend()

@@ -20,9 +20,11 @@ small=(--set displacements=small)
 for eps in 0.0001 0.001 0.01 0.1 1; do run "primal_$eps" "${small[@]}" --set method=primal_penalty --set eps_n=$eps "$@"; done
 for rho in 1 10 100 1000 10000; do run "dual_$rho" "${small[@]}" --set method=dual_penalty --set rho=$rho "$@"; done
 for rho in 1 10 100 1000 10000; do run "smalbe_$rho" "${small[@]}" --set method=smalbe --set rho=$rho "$@"; done
+# The seed's large-displacement runs: its load in two steps (feticon's default is one).
+large=(--set displacements=large --set load_steps=2)
 for rho in 1 10 100 1000 10000; do
-  run "large_dual_$rho" --set displacements=large --set method=dual_penalty --set rho=$rho "$@"
-  run "large_smalbe_$rho" --set displacements=large --set method=smalbe --set rho=$rho "$@"
+  run "large_dual_$rho" "${large[@]}" --set method=dual_penalty --set rho=$rho "$@"
+  run "large_smalbe_$rho" "${large[@]}" --set method=smalbe --set rho=$rho "$@"
 done
 /usr/bin/python3 "$root/scripts/plot_hertz.py" --figure "$out/fig2a_primal_penalty.png" \
   --title "Primal penalty (seed Fig. 2a)" "$out"/primal_*

@@ -164,6 +164,10 @@ LoadHistory::LoadHistory(std::vector<int64_t> dofs, std::vector<StageEnd> stages
                       << " prescribed values, expected " << _stages[0].force.size() << " and " << _dofs.size());
     _last_step.push_back((s == 0 ? 0 : _last_step.back()) + end.steps);
     _force_norm.push_back(end.force.norm());
+    // As a one-stage run's t = n / N, so that stage 1 reproduces its numbers exactly.
+    std::vector<double>& fractions = _fractions.emplace_back();
+    for (int j = 1; j <= end.steps; ++j)
+      fractions.push_back(static_cast<double>(j) / end.steps);
   }
 }
 
@@ -179,9 +183,19 @@ LoadPoint LoadHistory::point(int step) const
   const auto stage =
       static_cast<int>(std::lower_bound(_last_step.begin(), _last_step.end(), step) - _last_step.begin());
   const int j = step - (stage == 0 ? 0 : _last_step[stage - 1]);
-  // As a one-stage run's t = n / N, so that stage 1 reproduces its numbers exactly.
-  const double fraction = static_cast<double>(j) / _stages[stage].steps;
+  const double fraction = _fractions[stage][j - 1];
   return {stage + 1, fraction, stage == 0 ? fraction : stage + fraction};
+}
+
+void LoadHistory::split(int step)
+{
+  const LoadPoint p = point(step);
+  std::vector<double>& fractions = _fractions[p.stage - 1];
+  const int j = step - last_step(p.stage - 1) - 1;
+  const double before = j == 0 ? 0.0 : fractions[j - 1];
+  fractions.insert(fractions.begin() + j, 0.5 * (before + fractions[j]));
+  for (size_t s = p.stage - 1; s < _last_step.size(); ++s)
+    ++_last_step[s];
 }
 
 const StageEnd& LoadHistory::stage_end(int stage) const

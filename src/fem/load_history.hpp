@@ -8,6 +8,8 @@
 /// stage k to its own loads and prescribed values in its load steps, ending at load factor
 /// k + 1 (CalculiX's total time). At load step n, in stage s at its j-th of N_s steps,
 ///   t_n = (s - 1) + j / N_s,
+/// (a step cut back after a failed outer loop, split(), halves its increment: its stage then
+/// has a step at the midpoint of the fractions before and at it),
 ///   f(t_n) = (j / N_s) f_1                              (s = 1: t f of a one-stage run),
 ///   f(t_n) = (1 - j / N_s) f_{s-1} + (j / N_s) f_s      (s > 1),
 /// and likewise for the prescribed values u_D. For s = 1 the numbers are those of t * f and
@@ -87,6 +89,11 @@ public:
   /// dofs() with u_D(t_n): what a one-stage solver built as `constrained.values *= t`.
   ConstrainedDofs prescribed(int step) const;
 
+  /// @brief Halves load step `step`'s increment (a cutback after its outer loop failed): a
+  /// step at the midpoint of t_{step-1} and t_step (in the fractions of its stage) comes in
+  /// as load step `step`, the old one follows as step + 1, and n_steps() grows by one.
+  void split(int step);
+
   /// @brief The value at load step `step` of a quantity given at the stage ends, by the rule of
   /// the file comment (for the solvers' own layouts, e.g. forces split over subdomains).
   /// @param[in] ends the quantity at the end of stages 1 .. n_stages()
@@ -95,7 +102,9 @@ public:
 private:
   std::vector<int64_t> _dofs;
   std::vector<StageEnd> _stages;
-  std::vector<int> _last_step;     ///< cumulative: last load step of stage s at s - 1
+  std::vector<int> _last_step; ///< cumulative: last load step of stage s at s - 1
+  /// j / N_s of each load step of stage s at s - 1, with the midpoints of split steps.
+  std::vector<std::vector<double>> _fractions;
   std::vector<double> _force_norm; ///< ||f_s||
 };
 } // namespace feticon::fem

@@ -51,13 +51,18 @@ std::vector<SettingSpec> make_specs()
                                       "modified Newton), step or iteration (K_M(u) refreshed)",
        Type::text, {"initial", "step", "iteration"}, 0, 0, false},
       {"newton.max_iterations", "15", "outer iterations per load step", Type::integer, {}, 1, 10000, false},
+      {"newton.cutbacks", "5", "a load step whose outer loop diverges or does not converge is solved again from "
+       "its start with half the increment, up to this many times in a row (CalculiX's and Abaqus's cutbacks); "
+       "0 stops the run", Type::integer, {}, 0, 50, false},
       {"newton.tolerance", "1e-6", "load step converged when ||du|| <= tolerance ||u||, the residual "
        "test holds and the active set did not change", Type::number, {}, 0, 1, true},
       {"newton.residual_tolerance", "1e-6", "and ||t f_ext - f_int - B'lambda|| <= residual_tolerance "
        "max(||t f_ext||, ||f_int||) (FETI solvers)", Type::number, {}, 0, 1, true},
       {"newton.forcing", "0.001", "inexact outer iterations: the QP of outer iteration k stops at "
        "max(qp.rtol, min(1e-4, forcing * |du_(k-1)|/|u|)); 0 solves every QP to qp.rtol", Type::number, {}, 0, 1, false},
-      {"load_steps", "2", "load steps for large displacements", Type::integer, {}, 1, 1000, false},
+      {"load_steps", "auto", "load steps for large displacements, equal increments (a failing one is cut back, "
+       "newton.cutbacks); auto: 1 without friction, whose answer does not depend on the path, 2 with friction",
+       Type::integer, {}, 1, 1000, false, false, true},
       {"subdomains", "auto", "number of FETI subdomains, or auto: chosen from the mesh size and the memory "
        "budget (summary.json subdomains_reason; docs/usage.md)", Type::integer, {}, 1, 1e6, false, false, true},
       {"subdomain_cells", "0", "cells per subdomain, (H/h)^3 in 3D or (H/h)^2 for one layer; if > 0 "

@@ -229,6 +229,7 @@ public:
   IterationOutcome outer_iteration(int k, OuterIteration& it) override;
   void end_load_step(const LoadStep& record) override;
   std::string format(const OuterIteration& it) const override { return format_iteration(it); }
+  bool cut_back(int step) override;
   const fem::LoadHistory& history() const { return _history; }
 
 private:
@@ -241,6 +242,10 @@ private:
   int update_boundary_operators(bool same_K);
   /// f_int and its assembled norm at the current u.
   void update_internal_force();
+  /// The same where u is an outer iteration's result: an element inverted at u (on any rank)
+  /// is the outer loop diverging, which a cutback may cure, not an error of the run; its
+  /// message, the same on every rank, is returned and f_int is left as it was.
+  std::optional<std::string> update_internal_force_at_iterate();
   /// max(||f(t_n)||, ||f_int(u)||): the scale of the relative residual (OuterConvergence).
   double force_scale() const { return std::max({_f_step_norm, _f_int_norm, _force_floor}); }
   /// The QP tolerance of outer iteration k (SolverSettings::forcing).
@@ -265,6 +270,7 @@ private:
     double du_norm;
     double u_norm;
     double du_max;
+    std::optional<std::string> inverted; ///< an element inverted at the new u (f_int not updated)
   };
   /// The contact rows at u (global): a linear run's rows near contact, otherwise a new search.
   contact::ContactConstraints search_contact(const la::Vector& u_global) const;
@@ -305,7 +311,7 @@ private:
   TimerTable& _timers;
   ContactSolution& _out;
   const bool _linear;
-  const fem::LoadHistory _history;
+  fem::LoadHistory _history; ///< split where a load step is cut back
   std::unique_ptr<decomposition::Decomposition> _decomp;
   par::BlockSpace _primal_space;
   std::unique_ptr<decomposition::SubdomainSystem> _system;
@@ -345,6 +351,17 @@ private:
   bool _diverged = false;
   la::Vector _equality_by_id; ///< for the checkpoint of a converged step
   la::Vector _u_step_start;   ///< global u at the start of the load step (the slip's origin)
+  /// What the load step started from, for a cutback (cut_back): u, the multipliers that
+  /// warm-started its first QP and the active set they had.
+  struct StepStart
+  {
+    la::Vector u;
+    dual::MultiplierMemory multipliers;
+    std::set<int32_t> active;
+  } _step_start;
+  /// A cutback restored u after K_M(u) was refreshed at a later u (newton.stiffness =
+  /// iteration): the next outer iteration refreshes it at the restored u.
+  bool _stiffness_stale = false;
 };
 
 FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSettings& settings, TimerTable& timers,
@@ -473,6 +490,12 @@ int FetiContactSolve::restore(const ContactSolution& previous)
   FETICON_CHECK(r.u_stacked.size() == _decomp->n_primal_global(),
                 "restart: the checkpoint has " << r.u_stacked.size() << " unknowns, this problem "
                                                << _decomp->n_primal_global() << " (different mesh or subdomains?)");
+  // A run that cut steps back split them at midpoints: the same splits give the same numbers.
+  for (int i = 1; i <= r.completed_steps && i <= static_cast<int>(previous.steps.size()); ++i)
+    for (int cuts = 0; cuts < 64 && i <= _history.n_steps() &&
+         _history.load_factor(i) > previous.steps[i - 1].load_factor + 1e-12 * i;
+         ++cuts)
+      _history.split(i);
   FETICON_CHECK(r.completed_steps < _history.n_steps(),
                 "restart: all " << _history.n_steps() << " load steps are already done");
   // The step numbers name points of the load history: a checkpoint of other load_steps or
@@ -521,12 +544,56 @@ void FetiContactSolve::begin_load_step(int step, double)
   _previous_residual = std::numeric_limits<double>::infinity();
   _equality_by_id.resize(0);
   _u_step_start = _decomp->gather_mean(_decomp->gather_stacked(_u));
+  _step_start = {_u, _multipliers, _previous_active};
+}
+
+bool FetiContactSolve::cut_back(int step)
+{
+  if (_linear)
+    return false; // one load step, whose outer loop is the contact set's: a smaller one is no easier
+  _u = _step_start.u;
+  _multipliers = _step_start.multipliers;
+  _previous_active = _step_start.active;
+  _diverged = false;
+  _stiffness_stale = _settings.stiffness == StiffnessUpdate::iteration;
+  _history.split(step);
+  ScopedTimer t(_timers, "internal forces");
+  update_internal_force();
+  return true;
 }
 
 void FetiContactSolve::update_internal_force()
 {
   _f_int = _system->internal_force(_u);
   _f_int_norm = _decomp->gather_sum(_decomp->gather_stacked(_f_int)).norm();
+}
+
+std::optional<std::string> FetiContactSolve::update_internal_force_at_iterate()
+{
+  std::string inverted;
+  la::Vector f_int;
+  try
+  {
+    f_int = _system->internal_force(_u);
+  }
+  catch (const Error& e)
+  {
+    inverted = e.what();
+  }
+  // Every rank learns of the lowest rank's inverted element, and stops with it.
+  const par::Communicator& comm = _decomp->comm();
+  const double first = comm.min(inverted.empty() ? comm.size() : comm.rank());
+  if (first < comm.size())
+  {
+    std::vector<int64_t> text;
+    if (comm.rank() == static_cast<int>(first))
+      text.assign(inverted.begin(), inverted.end());
+    const std::vector<int64_t> gathered = comm.all_gather(text); // that rank's message alone
+    return std::string(gathered.begin(), gathered.end());
+  }
+  _f_int = std::move(f_int);
+  _f_int_norm = _decomp->gather_sum(_decomp->gather_stacked(_f_int)).norm();
+  return std::nullopt;
 }
 
 double FetiContactSolve::qp_rtol(int k)
@@ -549,9 +616,10 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   const std::string where = "load step " + std::to_string(_step) + ", outer iteration " + std::to_string(k) + ": ";
   const bool refresh = !_linear &&
       ((_settings.stiffness == StiffnessUpdate::load_step && k == 1 && _step > 1) ||
-       (_settings.stiffness == StiffnessUpdate::iteration && (_step > 1 || k > 1)));
+       (_settings.stiffness == StiffnessUpdate::iteration && (_step > 1 || k > 1)) || _stiffness_stale);
   if (refresh)
   {
+    _stiffness_stale = false;
     update_stiffness(); // K_M(u) and R(X + u)
     _multipliers.forget_operator_norm();
   }
@@ -586,13 +654,17 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   const Correction correction = measure_iteration(*feti, solution, it);
   // A diverging outer loop shows as a non-finite residual before anything else fails; the
   // iteration is no result, so it stays out of the history (no NaN in history.csv).
+  if (correction.inverted)
+  {
+    _diverged = true;
+    return IterationOutcome::diverged(where + "the outer loop diverged: " + *correction.inverted);
+  }
   if (!std::isfinite(it.residual_norm) || !std::isfinite(it.displacement_change))
   {
     _diverged = true;
-    return IterationOutcome::stop(where +
+    return IterationOutcome::diverged(where +
                                       "the outer loop diverged (non-finite residual): use more "
-                                      "load_steps or newton.stiffness=iteration",
-                                  false);
+                                      "load_steps or newton.stiffness=iteration");
   }
   const bool more_rows = store_contact_result(solution, std::move(contact_rows), contact_lambda, where);
   _out.n_dual = feti->n_dual_global();
@@ -781,11 +853,16 @@ FetiContactSolve::Correction FetiContactSolve::measure_iteration(const dual::Fet
   it.displacement_change = du_norm / std::max(u_norm, 1e-300);
   {
     ScopedTimer t(_timers, "internal forces");
-    update_internal_force(); // also the next iteration's, at the same u
+    // also the next iteration's, at the same u
+    if (std::optional<std::string> inverted = update_internal_force_at_iterate())
+    {
+      it.residual_norm = std::numeric_limits<double>::quiet_NaN();
+      return {du_norm, u_norm, du_max, std::move(inverted)};
+    }
     const la::Vector r_new = _f_step - _f_int - feti.apply_Bt(solution.state.x);
     it.residual_norm = _decomp->gather_sum(_decomp->gather_stacked(r_new)).norm() / std::max(force_scale(), 1e-300);
   }
-  return {du_norm, u_norm, du_max};
+  return {du_norm, u_norm, du_max, std::nullopt};
 }
 
 bool FetiContactSolve::store_contact_result(const dual::DualSolution& solution,
@@ -907,7 +984,8 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
   ContactSolution out;
   FetiContactSolve solve(problem, settings, timers, comm, out);
   const int first_step = previous ? solve.restore(*previous) : 1;
-  run_load_steps(solve, solve.history(), first_step, settings.max_outer_iterations, out, on_step);
+  run_load_steps(solve, solve.history(), first_step, settings.max_outer_iterations, settings.max_cutbacks, out,
+                 on_step);
   if (out.completed)
     timers.add("total solve", seconds_since(run_start));
   return out;

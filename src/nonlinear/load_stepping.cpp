@@ -10,8 +10,9 @@
 namespace feticon::nonlinear
 {
 void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int first_step, int max_outer_iterations,
-                    ContactSolution& out, const StepCallback& on_step)
+                    int max_cutbacks, ContactSolution& out, const StepCallback& on_step)
 {
+  int cutbacks_in_a_row = 0;
   for (int step = first_step; step <= history.n_steps(); ++step)
   {
     const double t = history.load_factor(step);
@@ -19,6 +20,7 @@ void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int
     LoadStep record;
     record.load_factor = t;
     std::string failure;
+    bool retry = false;
     for (int k = 1; k <= max_outer_iterations && !record.converged && record.floor.empty() && failure.empty(); ++k)
     {
       const auto start = std::chrono::steady_clock::now();
@@ -39,7 +41,24 @@ void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int
       record.converged = outcome.converged;
       record.floor = std::move(outcome.floor);
       failure = std::move(outcome.failure);
+      retry = outcome.retry;
     }
+    const bool unconverged = !record.converged && record.floor.empty() && failure.empty();
+    if ((unconverged || retry) && cutbacks_in_a_row < max_cutbacks && phases.cut_back(step))
+    {
+      ++cutbacks_in_a_row;
+      const std::string why =
+          unconverged ? "not converged in " + std::to_string(max_outer_iterations) + " outer iterations" : failure;
+      char warning[400];
+      std::snprintf(warning, sizeof warning,
+                    "load step %d at load factor %g cut back to %g: %s (its outer iterations stay in history.csv)",
+                    step, t, history.load_factor(step), why.c_str());
+      log::warning(warning);
+      out.warnings.emplace_back(warning);
+      --step; // the same step number, now at the midpoint
+      continue;
+    }
+    cutbacks_in_a_row = 0;
     out.steps.push_back(record);
     phases.end_load_step(record);
     if (!failure.empty())

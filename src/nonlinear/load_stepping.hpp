@@ -30,6 +30,9 @@ struct IterationOutcome
   /// Not empty: the load step ends short of the stopping test, at a floor the loop cannot go
   /// below (OuterVerdict::floor); this says which. The run goes on and reports it.
   std::string floor;
+  /// With `failure`: a smaller load increment may succeed (the outer loop diverged), so the
+  /// driver cuts the step back where it can instead of stopping.
+  bool retry = false;
 
   /// The next iteration follows.
   static IterationOutcome next() { return {}; }
@@ -39,6 +42,9 @@ struct IterationOutcome
   static IterationOutcome stop(std::string why, bool recorded = true) { return {recorded, false, std::move(why), {}}; }
   /// The load step ends at a floor, for `why`.
   static IterationOutcome step_at_floor(std::string why) { return {true, false, {}, std::move(why)}; }
+  /// The outer loop diverged for `why` (the iteration is no result): the step is cut back, or
+  /// the run stops.
+  static IterationOutcome diverged(std::string why) { return {false, false, std::move(why), {}, true}; }
 };
 
 class LoadStepPhases
@@ -54,13 +60,25 @@ public:
   virtual void end_load_step(const LoadStep& record) = 0;
   /// The progress line of an iteration.
   virtual std::string format(const OuterIteration& it) const = 0;
+  /// Load step `step` failed (diverged, or not converged in its outer iterations): back to
+  /// the state at its start, and its increment halved (fem::LoadHistory::split), so that
+  /// `step` is next solved at the midpoint. False: this solver cannot, and the run stops.
+  virtual bool cut_back(int step)
+  {
+    (void)step;
+    return false;
+  }
 };
 
 /// Runs load steps first_step, ..., history.n_steps() of `phases` at the history's load
 /// factors (LoadStep::load_factor) with at most max_outer_iterations outer iterations each,
 /// appending to out.history and out.steps; `on_step` after every converged step (or one ended
-/// at a floor, which goes into out.warnings). Ends with out.completed (and out.converged if
-/// every step met the stopping test), or out.reason saying where and why it stopped.
+/// at a floor, which goes into out.warnings). A step whose outer loop diverges or does not
+/// converge is cut back (LoadStepPhases::cut_back, which splits it in the history that
+/// `phases` owns) up to max_cutbacks times in a row, as CalculiX and Abaqus cut an increment
+/// back; each cutback goes into out.warnings, and the failed attempt's iterations stay in
+/// out.history (work done). Ends with out.completed (and out.converged if every step met the
+/// stopping test), or out.reason saying where and why it stopped.
 void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int first_step, int max_outer_iterations,
-                    ContactSolution& out, const StepCallback& on_step = {});
+                    int max_cutbacks, ContactSolution& out, const StepCallback& on_step = {});
 } // namespace feticon::nonlinear

@@ -28,6 +28,7 @@ public:
   IterationOutcome outer_iteration(int k, OuterIteration& it) override;
   void end_load_step(const LoadStep&) override { _out.u = _u; }
   std::string format(const OuterIteration& it) const override;
+  bool cut_back(int step) override;
   const fem::LoadHistory& history() const { return _history; }
 
 private:
@@ -44,10 +45,11 @@ private:
   const bool _linear;
   const int64_t _n;
   fem::Assembler _assembler;
-  const fem::LoadHistory _history;
+  fem::LoadHistory _history; ///< split where a load step is cut back
   contact::ContactPair _pair;
   contact::ContactOptions _contact_options;
   la::Vector _u;
+  la::Vector _u_step_start; ///< u at the start of the load step (a cutback's)
   la::SparseMatrix _K;
   la::SparseMatrix _K_pen;
   la::Vector _f_pen;
@@ -92,6 +94,16 @@ void PrimalPenaltySolve::begin_load_step(int step, double)
   _f_step = _history.external_force(step);
   _target = _history.prescribed(step);
   _active.clear();
+  _u_step_start = _u;
+}
+
+bool PrimalPenaltySolve::cut_back(int step)
+{
+  if (_linear)
+    return false;
+  _u = _u_step_start;
+  _history.split(step);
+  return true;
 }
 
 IterationOutcome PrimalPenaltySolve::outer_iteration(int k, OuterIteration& it)
@@ -199,7 +211,7 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
   const auto run_start = std::chrono::steady_clock::now();
   ContactSolution out;
   PrimalPenaltySolve solve(problem, settings, timers, out);
-  run_load_steps(solve, solve.history(), 1, settings.max_outer_iterations, out, on_step);
+  run_load_steps(solve, solve.history(), 1, settings.max_outer_iterations, settings.max_cutbacks, out, on_step);
   if (out.completed)
     timers.add("total solve", seconds_since(run_start));
   return out;

@@ -13,8 +13,8 @@ SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
       : method_name == "dual_penalty" ? ContactMethod::dual_penalty
                                       : ContactMethod::primal_penalty;
   kinematics = s.text("displacements") == "large" ? fem::Kinematics::total_lagrangian : fem::Kinematics::linear;
-  load_steps = s.integer("load_steps");
   max_outer_iterations = s.integer("newton.max_iterations");
+  max_cutbacks = s.integer("newton.cutbacks");
   displacement_tolerance = s.number("newton.tolerance");
   residual_tolerance = s.number("newton.residual_tolerance");
   forcing = s.number("newton.forcing");
@@ -43,6 +43,12 @@ SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
                                               : FrictionModel::none;
   friction.coefficient = s.number("contact.friction.coefficient");
   friction.slip_bound = s.number("contact.friction.slip_bound");
+  // Frictionless contact of elastic bodies: the answer is the same along any load path, and
+  // one increment (cut back where it fails) took 13-43 % fewer MPRGP steps than two on Hertz
+  // and hertz3d. Friction follows the path in its steps: two, as before auto.
+  load_steps = !s.is_auto("load_steps")       ? static_cast<int>(s.integer("load_steps"))
+      : friction.model == FrictionModel::none ? 1
+                                              : 2;
   FETICON_CHECK(friction.model == FrictionModel::none || method != ContactMethod::primal_penalty,
                 "contact.friction.model = " << friction_model
                                             << " needs the FETI solver (method smalbe or dual_penalty): the primal "

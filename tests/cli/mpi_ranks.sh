@@ -39,9 +39,9 @@ for n in 1 2; do
 done
 /usr/bin/python3 "$source_dir/tests/tools/compare_runs.py" 1e-10 "$work/single1" "$work/single2"
 
-# Pieces: step_002.pvtu names 4 pieces; together they hold every cell of the 1-rank VTU once.
-[[ $(grep -c "<Piece Source=" "$work/np4/step_002.pvtu") -eq 4 ]]
-grep -q 'file="step_002.pvtu"' "$work/np4/solution.pvd"
+# Pieces: step_001.pvtu (the default's one load step) names 4 pieces; together they hold every cell of the 1-rank VTU once.
+[[ $(grep -c "<Piece Source=" "$work/np4/step_001.pvtu") -eq 4 ]]
+grep -q 'file="step_001.pvtu"' "$work/np4/solution.pvd"
 /usr/bin/python3 - "$source_dir/tests/tools" "$work" <<'PY'
 import json, subprocess, sys
 tools, work = sys.argv[1:]
@@ -49,8 +49,8 @@ def cells(path):
     out = subprocess.run(["/usr/bin/python3", tools + "/read_vtu.py", path], check=True,
                          capture_output=True, text=True).stdout
     return json.loads(out)["NumberOfCells"]
-whole = cells(work + "/np1/step_002.vtu")
-pieces = sum(cells(f"{work}/np4/step_002_rank{r:03d}.vtu") for r in range(4))
+whole = cells(work + "/np1/step_001.vtu")
+pieces = sum(cells(f"{work}/np4/step_001_rank{r:03d}.vtu") for r in range(4))
 assert pieces == whole, (pieces, whole)
 PY
 

@@ -239,3 +239,30 @@ TEST(LoadHistory, InterpolatesAnyQuantityGivenAtTheStageEnds)
     EXPECT_LE((history.interpolate(n, ends) - 2 * history.external_force(n)).norm(), 1e-15 * ends[1].norm());
   EXPECT_THROW(history.interpolate(1, {ends[0]}), Error);
 }
+
+// Reference: the rule of the file comment with a step split at the midpoint of the fractions
+// before and at it: stage 1 in 2 steps (0.5, 1), step 2 split gives 0.75; stage 2 in 4
+// (1.25, ...), its first step split gives 1.125; the forces follow the same rule (t f_1 in
+// stage 1, the blend of the stage ends in stage 2), and a split steps the later steps on.
+TEST(LoadHistory, SplitHalvesAStepsIncrement)
+{
+  fem::Problem problem = box_problem(1e6, 1e-3);
+  problem.later_stages = {box_stage(3e6, -1e-3, 4)};
+  fem::LoadHistory history(problem, 2);
+  const fem::LoadHistory unsplit = history;
+  history.split(2);
+  history.split(4);
+  ASSERT_EQ(history.n_steps(), 8);
+  EXPECT_EQ(history.last_step(1), 3);
+  const std::vector<double> t = {0.5, 0.75, 1.0, 1.125, 1.25, 1.5, 1.75, 2.0};
+  for (int n = 1; n <= history.n_steps(); ++n)
+    EXPECT_DOUBLE_EQ(history.load_factor(n), t[n - 1]) << "step " << n;
+  const la::Vector& f1 = history.stage_end(1).force;
+  const la::Vector& f2 = history.stage_end(2).force;
+  EXPECT_TRUE(identical(history.external_force(2), 0.75 * f1));
+  EXPECT_LE((history.external_force(4) - (0.875 * f1 + 0.125 * f2)).norm(), 1e-15 * f2.norm());
+  EXPECT_DOUBLE_EQ(history.prescribed(4).values.maxCoeff(), 0.875e-3 - 0.125e-3);
+  // The steps not split keep their numbers, bit for bit.
+  EXPECT_TRUE(identical(history.external_force(1), unsplit.external_force(1)));
+  EXPECT_TRUE(identical(history.external_force(8), unsplit.external_force(6)));
+}

@@ -25,7 +25,13 @@ TEST(SettingsDefaults, SolverOptionsAreTheTables)
   // The three that once had a second, different default in the structs.
   EXPECT_EQ(table.text("displacements"), "large");
   EXPECT_EQ(s.kinematics, fem::Kinematics::total_lagrangian);
-  EXPECT_EQ(s.load_steps, table.integer("load_steps"));
+  EXPECT_TRUE(table.is_auto("load_steps"));
+  EXPECT_EQ(s.load_steps, 1); // without friction
+  io::Settings coulomb = table;
+  coulomb.set("contact.friction.model", "coulomb", "test");
+  EXPECT_EQ(nonlinear::SolverSettings(coulomb).load_steps, 2);
+  coulomb.set("load_steps", "3", "test");
+  EXPECT_EQ(nonlinear::SolverSettings(coulomb).load_steps, 3);
   // auto is resolved by the app (app/feti_choice); the library takes the Dirichlet one and 8.
   EXPECT_EQ(table.text("qp.preconditioner"), "auto");
   EXPECT_EQ(s.dual.preconditioner, dual::DualPreconditioner::dirichlet);
@@ -41,7 +47,7 @@ TEST(SettingsDefaults, SolverOptionsAreTheTables)
   nonlinear::SolverSettings small = s;
   small.kinematics = fem::Kinematics::linear;
   EXPECT_EQ(small.steps(), 1);
-  EXPECT_EQ(s.steps(), table.integer("load_steps"));
+  EXPECT_EQ(s.steps(), 1);
 }
 
 // The dual penalty's rho unless given is 1e3, not SMALBE-M's 1: its feasibility error falls
