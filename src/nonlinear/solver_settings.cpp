@@ -44,7 +44,7 @@ SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
   friction.coefficient = s.number("contact.friction.coefficient");
   friction.slip_bound = s.number("contact.friction.slip_bound");
   // Frictionless contact of elastic bodies: the answer is the same along any load path, and
-  // one increment (cut back where it fails) took 13-43 % fewer MPRGP steps than two on Hertz
+  // one increment (cut back where it fails) took 13-47 % fewer MPRGP steps than two on Hertz
   // and hertz3d. Friction follows the path in its steps: two, as before auto.
   load_steps = !s.is_auto("load_steps")       ? static_cast<int>(s.integer("load_steps"))
       : friction.model == FrictionModel::none ? 1

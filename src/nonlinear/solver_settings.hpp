@@ -94,7 +94,7 @@ struct SolverSettings
   int load_steps;           ///< equal load increments (large displacements; auto resolved)
   int max_outer_iterations; ///< outer (Newton) iterations per load step
   /// Cutbacks of a load step in a row (nonlinear/load_stepping.hpp): one increment of the
-  /// whole load, halved where it fails, took 26-43 % fewer MPRGP steps than two on Hertz and
+  /// whole load, halved where it fails, took 13-47 % fewer MPRGP steps than two on Hertz and
   /// hertz3d (docs/contact.md, "One load increment, cut back where it fails").
   int max_cutbacks;
   /// eps_u and eps_r of OuterConvergence (eps_r: FETI solver). 1e-4 saved 3-21 % of the
