@@ -68,7 +68,50 @@ nlohmann::json records(const nonlinear::ContactSolution& s)
           {"history", history},
           {"smalbe_M", s.restart.dual.M},
           {"smalbe_rho", s.restart.dual.rho},
-          {"pfp_norm", s.restart.dual.operator_norm}};
+          {"pfp_norm", s.restart.dual.operator_norm},
+          {"warnings", s.warnings}};
+}
+/// One outer iteration of the records' history, as records() wrote it (rows of older
+/// checkpoints are shorter: what they lack stays 0).
+nonlinear::OuterIteration outer_iteration_record(const nlohmann::json& h)
+{
+  nonlinear::OuterIteration it;
+  it.load_step = h[0];
+  it.iteration = h[1];
+  it.qp.iterations = h[2];
+  it.qp.cg_steps = h[3];
+  it.qp.expansion_steps = h[4];
+  it.qp.proportioning_steps = h[5];
+  it.qp.hessian_multiplications = h[6];
+  it.qp.outer_iterations = h[7];
+  it.residual_norm = h[8];
+  it.displacement_change = h[9];
+  it.active_contacts = h[10];
+  it.feasibility_error = h[11];
+  it.seconds = h[12];
+  if (h.size() > 15) // written since the spectrum estimate exists
+  {
+    it.qp.ritz.min = h[13];
+    it.qp.ritz.max = h[14];
+    it.qp.ritz.cg_steps = h[15];
+  }
+  if (h.size() > 17) // written since SMALBE-M reports its rho
+  {
+    it.qp.rho_updates = h[16];
+    it.final_rho = h[17];
+  }
+  if (h.size() > 23) // written since the counters are one type (all of them restored)
+  {
+    it.qp.expansion_fallbacks = h[18];
+    it.qp.operator_applications = h[19];
+    it.qp.operator_seconds = h[20];
+    it.qp.preconditioner_applications = h[21];
+    it.qp.preconditioner_seconds = h[22];
+    it.qp.seconds = h[23];
+  }
+  if (h.size() > 24) // written since SMALBE-M's feasibility correction exists
+    it.qp.feasibility_corrections = h[24];
+  return it;
 }
 } // namespace
 
@@ -135,45 +178,11 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
     }
     solution.history.clear();
     for (const auto& h : json.at("history"))
-    {
-      nonlinear::OuterIteration it;
-      it.load_step = h[0];
-      it.iteration = h[1];
-      it.qp.iterations = h[2];
-      it.qp.cg_steps = h[3];
-      it.qp.expansion_steps = h[4];
-      it.qp.proportioning_steps = h[5];
-      it.qp.hessian_multiplications = h[6];
-      it.qp.outer_iterations = h[7];
-      it.residual_norm = h[8];
-      it.displacement_change = h[9];
-      it.active_contacts = h[10];
-      it.feasibility_error = h[11];
-      it.seconds = h[12];
-      if (h.size() > 15) // written since the spectrum estimate exists
-      {
-        it.qp.ritz.min = h[13];
-        it.qp.ritz.max = h[14];
-        it.qp.ritz.cg_steps = h[15];
-      }
-      if (h.size() > 17) // written since SMALBE-M reports its rho
-      {
-        it.qp.rho_updates = h[16];
-        it.final_rho = h[17];
-      }
-      if (h.size() > 23) // written since the counters are one type (all of them restored)
-      {
-        it.qp.expansion_fallbacks = h[18];
-        it.qp.operator_applications = h[19];
-        it.qp.operator_seconds = h[20];
-        it.qp.preconditioner_applications = h[21];
-        it.qp.preconditioner_seconds = h[22];
-        it.qp.seconds = h[23];
-      }
-      if (h.size() > 24) // written since SMALBE-M's feasibility correction exists
-        it.qp.feasibility_corrections = h[24];
-      solution.history.push_back(it);
-    }
+      solution.history.push_back(outer_iteration_record(h));
+    // The run's warnings as they were (cutbacks among them); before they were written, the
+    // floors' alone, made from the steps above.
+    if (json.contains("warnings"))
+      solution.warnings = json.at("warnings").get<std::vector<std::string>>();
   }
   catch (const nlohmann::json::exception& e)
   {
