@@ -187,6 +187,13 @@ LoadPoint LoadHistory::point(int step) const
   return {stage + 1, fraction, stage == 0 ? fraction : stage + fraction};
 }
 
+void LoadHistory::follow(const std::vector<double>& load_factors)
+{
+  for (int i = 1; i <= static_cast<int>(load_factors.size()); ++i)
+    for (int cuts = 0; cuts < 64 && i <= n_steps() && load_factor(i) > load_factors[i - 1] + 1e-12 * i; ++cuts)
+      split(i);
+}
+
 void LoadHistory::split(int step)
 {
   const LoadPoint p = point(step);

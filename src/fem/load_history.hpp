@@ -94,6 +94,11 @@ public:
   /// as load step `step`, the old one follows as step + 1, and n_steps() grows by one.
   void split(int step);
 
+  /// @brief Splits steps as a run that cut back did (a restart of it): step i is halved while
+  /// its load factor is above load_factors[i - 1], so that the midpoints give the same numbers.
+  /// A factor that no halving reaches (another load_steps) is left for the caller's check.
+  void follow(const std::vector<double>& load_factors);
+
   /// @brief The value at load step `step` of a quantity given at the stage ends, by the rule of
   /// the file comment (for the solvers' own layouts, e.g. forces split over subdomains).
   /// @param[in] ends the quantity at the end of stages 1 .. n_stages()

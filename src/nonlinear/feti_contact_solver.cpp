@@ -490,12 +490,10 @@ int FetiContactSolve::restore(const ContactSolution& previous)
   FETICON_CHECK(r.u_stacked.size() == _decomp->n_primal_global(),
                 "restart: the checkpoint has " << r.u_stacked.size() << " unknowns, this problem "
                                                << _decomp->n_primal_global() << " (different mesh or subdomains?)");
-  // A run that cut steps back split them at midpoints: the same splits give the same numbers.
-  for (int i = 1; i <= r.completed_steps && i <= static_cast<int>(previous.steps.size()); ++i)
-    for (int cuts = 0; cuts < 64 && i <= _history.n_steps() &&
-         _history.load_factor(i) > previous.steps[i - 1].load_factor + 1e-12 * i;
-         ++cuts)
-      _history.split(i);
+  std::vector<double> completed_factors; // of a run that cut steps back: the same splits
+  for (int i = 0; i < r.completed_steps && i < static_cast<int>(previous.steps.size()); ++i)
+    completed_factors.push_back(previous.steps[i].load_factor);
+  _history.follow(completed_factors);
   FETICON_CHECK(r.completed_steps < _history.n_steps(),
                 "restart: all " << _history.n_steps() << " load steps are already done");
   // The step numbers name points of the load history: a checkpoint of other load_steps or

@@ -266,3 +266,21 @@ TEST(LoadHistory, SplitHalvesAStepsIncrement)
   EXPECT_TRUE(identical(history.external_force(1), unsplit.external_force(1)));
   EXPECT_TRUE(identical(history.external_force(8), unsplit.external_force(6)));
 }
+
+// Reference: the halving rule again. A run of one increment cut back to 0.25, whose next
+// step went to 0.5 and was cut to 0.375: its load factors 0.25, 0.375, 0.5 are reproduced by
+// halving the fresh history's steps while they lie above them; 1/3 (another load_steps) is
+// not, and is left for the restart's check.
+TEST(LoadHistory, FollowReproducesTheSplitsOfACutBackRun)
+{
+  fem::Problem problem = box_problem(1e6, 1e-3);
+  fem::LoadHistory history(problem, 1);
+  history.follow({0.25, 0.375, 0.5});
+  const std::vector<double> t = {0.25, 0.375, 0.5, 1.0};
+  ASSERT_EQ(history.n_steps(), 4);
+  for (int n = 1; n <= 4; ++n)
+    EXPECT_EQ(history.load_factor(n), t[n - 1]) << "step " << n;
+  fem::LoadHistory other(problem, 1);
+  other.follow({1.0 / 3});
+  EXPECT_NE(other.load_factor(1), 1.0 / 3);
+}
