@@ -240,7 +240,8 @@ private:
   /// formed. `same_K`: K did not change since the last call, so the explicit blocks of a
   /// subdomain whose boundary did not change either are kept.
   int update_boundary_operators(bool same_K);
-  /// f_int and its assembled norm at the current u.
+  /// f_int and its assembled norm at the current u; throws (on every rank) where an element
+  /// is inverted at u.
   void update_internal_force();
   /// The same where u is an outer iteration's result: an element inverted at u (on any rank)
   /// is the outer loop diverging, which a cutback may cure, not an error of the run; its
@@ -562,8 +563,8 @@ bool FetiContactSolve::cut_back(int step)
 
 void FetiContactSolve::update_internal_force()
 {
-  _f_int = _system->internal_force(_u);
-  _f_int_norm = _decomp->gather_sum(_decomp->gather_stacked(_f_int)).norm();
+  if (const std::optional<std::string> inverted = update_internal_force_at_iterate())
+    throw Error(*inverted);
 }
 
 std::optional<std::string> FetiContactSolve::update_internal_force_at_iterate()
@@ -853,10 +854,7 @@ FetiContactSolve::Correction FetiContactSolve::measure_iteration(const dual::Fet
     ScopedTimer t(_timers, "internal forces");
     // also the next iteration's, at the same u
     if (std::optional<std::string> inverted = update_internal_force_at_iterate())
-    {
-      it.residual_norm = std::numeric_limits<double>::quiet_NaN();
-      return {du_norm, u_norm, du_max, std::move(inverted)};
-    }
+      return {du_norm, u_norm, du_max, std::move(inverted)}; // no residual: outer_iteration stops
     const la::Vector r_new = _f_step - _f_int - feti.apply_Bt(solution.state.x);
     it.residual_norm = _decomp->gather_sum(_decomp->gather_stacked(r_new)).norm() / std::max(force_scale(), 1e-300);
   }
