@@ -13,21 +13,12 @@ namespace
 {
 using Type = SettingSpec::Type;
 
-std::vector<SettingSpec> make_specs()
+/// The contact pair's keys (contact.*).
+std::vector<SettingSpec> contact_specs()
 {
   const double inf = 1e300;
-  // One key per entry, as the help lists them.
   // clang-format off
   return {
-      {"problem", "custom", "custom (mesh, bodies, supports, loads, contact sections of the problem file, "
-                            "or an input deck)", Type::text, {"custom"}, 0, 0, false},
-      {"method", "smalbe", "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "
-                           "(problem (9) of Vondrák et al.), primal_penalty (undecomposed, CHOLMOD)",
-       Type::text, {"smalbe", "dual_penalty", "primal_penalty"}, 0, 0, false},
-      {"rho", "1", "dual penalty rho, dimensionless (F and d scaled by ||PFP||); with method = dual_penalty "
-       "1000 unless given (its feasibility error falls like 1 / rho)", Type::number, {}, 0, inf, true},
-      {"smalbe.M0", "1", "SMALBE-M initial M (scaled units: ||PFP|| = 1)", Type::number, {}, 0, 1e6, true},
-      {"smalbe.beta", "2", "SMALBE-M: M <- M / beta when the Lagrangian increases too little", Type::number, {}, 1, 1e6, true},
       {"contact.formulation", "mortar", "contact rows: node_to_segment (slave node on master "
                                                  "face) or mortar (dual mortar, segment-to-segment)",
        Type::text, {"node_to_segment", "mortar"}, 0, 0, false},
@@ -43,8 +34,31 @@ std::vector<SettingSpec> make_specs()
        "below the smallest plus this many master face diagonals, and another QP follows with the "
        "rows near contact if the answer penetrates a row left out (a large value: every row within "
        "the search distance)", Type::number, {}, 0, inf, true},
+      {"contact.first_rows", "reached", "large displacements, the first outer iteration from rest: reached (the "
+       "rows near contact and those the answer of a rough QP on them, at rtol 0.1, comes within the band of; "
+       "the QP then starts from zero on them) or near (the rows near contact alone)",
+       Type::text, {"reached", "near"}, 0, 0, false},
       {"contact.feasibility_tolerance", "1e-3", "warn (summary.json warnings, stderr) when the dual "
        "penalty leaves ||G lambda - e|| / ||e|| above this", Type::number, {}, 0, 1, true},
+  };
+  // clang-format on
+}
+
+std::vector<SettingSpec> make_specs()
+{
+  const double inf = 1e300;
+  // One key per entry, as the help lists them.
+  // clang-format off
+  std::vector<SettingSpec> specs = {
+      {"problem", "custom", "custom (mesh, bodies, supports, loads, contact sections of the problem file, "
+                            "or an input deck)", Type::text, {"custom"}, 0, 0, false},
+      {"method", "smalbe", "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "
+                           "(problem (9) of Vondrák et al.), primal_penalty (undecomposed, CHOLMOD)",
+       Type::text, {"smalbe", "dual_penalty", "primal_penalty"}, 0, 0, false},
+      {"rho", "1", "dual penalty rho, dimensionless (F and d scaled by ||PFP||); with method = dual_penalty "
+       "1000 unless given (its feasibility error falls like 1 / rho)", Type::number, {}, 0, inf, true},
+      {"smalbe.M0", "1", "SMALBE-M initial M (scaled units: ||PFP|| = 1)", Type::number, {}, 0, 1e6, true},
+      {"smalbe.beta", "2", "SMALBE-M: M <- M / beta when the Lagrangian increases too little", Type::number, {}, 1, 1e6, true},
       {"eps_n", "100", "primal penalty eps_n as a multiple of max diag K", Type::number, {}, 0, inf, true},
       {"displacements", "large", "large (total Lagrangian, Vondrák et al.'s benchmark) or small (linear elasticity)", Type::text, {"small", "large"}, 0, 0, false},
       {"newton.stiffness", "initial", "FETI outer-loop stiffness: initial (K_0 kept, Vondrák et al.'s "
@@ -113,6 +127,10 @@ std::vector<SettingSpec> make_specs()
        Type::boolean, {}, 0, 0, false},
   };
   // clang-format on
+  const std::vector<SettingSpec> contact = contact_specs(); // listed before eps_n
+  specs.insert(std::find_if(specs.begin(), specs.end(), [](const SettingSpec& s) { return s.key == "eps_n"; }),
+               contact.begin(), contact.end());
+  return specs;
 }
 
 std::string trim(const std::string& s)

@@ -263,6 +263,20 @@ private:
   static constexpr double reach_fraction = 0.25;
   /// The rows of the Schur boundary's reach at u (global), for the large-displacement loop.
   contact::ContactConstraints reach_rows(const la::Vector& u_global) const;
+  /// From rest (u = 0), the first outer iteration's rows: `near` and the rows of the reach that
+  /// the answer of a rough QP on `near` (rtol rough_rtol) comes within the band of at rest
+  /// (LinearContactRows::expand). The rows near a first touch are a vanishing share of the
+  /// contact zone as the mesh is refined (0.05 master diagonals held 100 of hertz3d 924k's 472
+  /// rows in contact): the first QP then put the whole load on them, and the outer iterations
+  /// after it took most of the run to spread it (docs/contact.md, "The first QP's rows"). Its
+  /// MPRGP steps and products are added to `counters`, and its ||PFP|| estimate is kept in
+  /// `operator_norm` for the iteration's QP (the rows differ as from one outer iteration to the
+  /// next, where the estimate is kept too).
+  contact::ContactConstraints rows_reached_from_rest(contact::ContactConstraints near, const la::Vector& u_global,
+                                                     qp::QpCounters& counters, double& operator_norm);
+  /// The rough QP's tolerance: a few MPRGP steps (3-14 on Hertz and hertz3d), enough to show
+  /// how far the contact spreads.
+  static constexpr double rough_rtol = 0.1;
 
   // The parts of one outer iteration (ALGORITHMS.md section 8).
   /// Norms of the correction du and of u after it, and ||du||_inf (assembled).
@@ -441,6 +455,33 @@ contact::ContactConstraints FetiContactSolve::reach_rows(const la::Vector& u_glo
   contact::ContactOptions options = _contact_options;
   options.near_contact_fraction = reach_fraction;
   return contact::build_contact_constraints(_problem.mesh, u_global, _pair, options);
+}
+
+contact::ContactConstraints FetiContactSolve::rows_reached_from_rest(contact::ContactConstraints near,
+                                                                     const la::Vector& u_global,
+                                                                     qp::QpCounters& counters, double& operator_norm)
+{
+  decomposition::ConstraintRows rows = _equality->rows;
+  rows.append(decomposition::rows_from_global(*_decomp, near.B, near.c), _n_equality);
+  const std::unique_ptr<dual::FetiOperators> feti = coarse_problem(rows);
+  const la::Vector c = constraint_values(*feti, rows);
+  const qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, near.slave_node, 0);
+  dual::DualPenaltyOptions options = qp_options(1);
+  options.rtol = std::max(options.rtol, rough_rtol);
+  dual::DualSolution rough;
+  {
+    ScopedTimer t(_timers, "dual solve (MPRGP)");
+    rough = dual::solve_contact_dual(*feti, c, _f_step - _f_int, _n_equality, options, warm, nullptr);
+  }
+  counters += rough.report;
+  operator_norm = rough.state.operator_norm;
+  // The reach is where the Schur boundary was made for; the answer's multipliers are not kept,
+  // so the iteration's QP starts from zero on the rows (a start from the rough answer, its load
+  // on the few rows near contact, took as many steps as the rows near contact alone).
+  LinearContactRows reached(_problem.mesh, _pair.master, reach_rows(u_global), near_contact_fraction);
+  if (!rough.report.converged || !reached.expand(_decomp->gather_mean(_decomp->gather_stacked(rough.u))))
+    return near;
+  return reached.selected_rows(la::Vector());
 }
 
 int FetiContactSolve::update_boundary_operators(bool same_K)
@@ -624,6 +665,10 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   }
   const la::Vector u_global = _decomp->gather_mean(_decomp->gather_stacked(_u));
   contact::ContactConstraints contact_rows = search_contact(u_global);
+  qp::QpCounters rough_counters;
+  double rough_operator_norm = 0;
+  if (_settings.first_rows_reached && !_linear && k == 1 && u_global.isZero(0.0))
+    contact_rows = rows_reached_from_rest(std::move(contact_rows), u_global, rough_counters, rough_operator_norm);
   if (_schur && !covers(_problem, _schur_boundary, contact_rows))
     grow_schur_boundary(u_global, where);
   const la::Vector residual = _f_step - _f_int;
@@ -634,7 +679,9 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   const std::unique_ptr<dual::FetiOperators> feti = coarse_problem(rows);
   const la::Vector c = constraint_values(*feti, rows);
   const std::optional<dual::FrictionRows> friction = slip_bounds(*feti, contact_rows, tangential);
-  const qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, contact_rows.slave_node, tangential.n_tangents);
+  qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, contact_rows.slave_node, tangential.n_tangents);
+  if (warm.operator_norm == 0)
+    warm.operator_norm = rough_operator_norm;
   const dual::DualPenaltyOptions dual_options = qp_options(k);
   const std::map<int32_t, double> normal_before = _multipliers.contact();
   dual::DualSolution solution;
@@ -651,6 +698,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   std::set<int32_t> active = _multipliers.active_slave_nodes(_force_floor);
 
   const Correction correction = measure_iteration(*feti, solution, it);
+  it.qp += rough_counters;
   // A diverging outer loop shows as a non-finite residual before anything else fails; the
   // iteration is no result, so it stays out of the history (no NaN in history.csv).
   if (correction.inverted)

@@ -54,5 +54,6 @@ SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
                                             << " needs the FETI solver (method smalbe or dual_penalty): the primal "
                                                "penalty has no friction");
   linear_contact_band = s.number("contact.linear_band");
+  first_rows_reached = s.text("contact.first_rows") == "reached";
 }
 } // namespace feticon::nonlinear

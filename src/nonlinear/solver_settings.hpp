@@ -135,6 +135,9 @@ struct SolverSettings
   dual::DualPenaltyOptions dual;
   double search_distance = 0;        ///< 0: automatic (about one master element)
   double linear_contact_band = 0.25; ///< LinearContactRows' band (master face diagonals)
+  /// contact.first_rows = reached: from rest, the first outer iteration's rows are those a
+  /// rough QP on the rows near contact reaches (FetiContactSolve::rows_reached_from_rest).
+  bool first_rows_reached = true;
   contact::ContactFormulation formulation;
   double eps_n_factor; ///< primal penalty eps_n = factor * max diag K
   Friction friction;   ///< contact.friction.*

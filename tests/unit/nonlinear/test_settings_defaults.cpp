@@ -40,6 +40,8 @@ TEST(SettingsDefaults, SolverOptionsAreTheTables)
   EXPECT_EQ(s.dual.max_iterations, table.integer("qp.max_iterations"));
   EXPECT_EQ(s.max_outer_iterations, table.integer("newton.max_iterations"));
   EXPECT_EQ(s.forcing, table.number("newton.forcing"));
+  EXPECT_EQ(table.text("contact.first_rows"), "reached");
+  EXPECT_TRUE(s.first_rows_reached);
   EXPECT_TRUE(table.is_auto("subdomains"));
   EXPECT_EQ(s.subdomains, 8);
   EXPECT_EQ(s.eps_n_factor, table.number("eps_n"));
