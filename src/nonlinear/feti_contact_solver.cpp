@@ -269,12 +269,12 @@ private:
   /// contact zone as the mesh is refined (0.05 master diagonals held 100 of hertz3d 924k's 472
   /// rows in contact): the first QP then put the whole load on them, and the outer iterations
   /// after it took most of the run to spread it (docs/contact.md, "The first QP's rows"). Its
-  /// MPRGP steps and products are added to `counters`, and its ||PFP|| estimate is kept in
-  /// `operator_norm` for the iteration's QP (the rows differ as from one outer iteration to the
-  /// next, where the estimate is kept too).
+  /// MPRGP steps and products are added to `counters`; its multipliers, SMALBE-M state and
+  /// ||PFP|| estimate are remembered, so the iteration's QP starts from them (0 on the rows
+  /// added), as one outer iteration's QP starts from the last one's.
   contact::ContactConstraints rows_reached_from_rest(contact::ContactConstraints near, const la::Vector& u_global,
-                                                     qp::QpCounters& counters, double& operator_norm);
-  /// The rough QP's tolerance: a few MPRGP steps (3-14 on Hertz and hertz3d), enough to show
+                                                     qp::QpCounters& counters);
+  /// The rough QP's tolerance: a few MPRGP steps (3-14 on Hertz, hertz3d and the spheres), enough to show
   /// how far the contact spreads.
   static constexpr double rough_rtol = 0.1;
 
@@ -459,7 +459,7 @@ contact::ContactConstraints FetiContactSolve::reach_rows(const la::Vector& u_glo
 
 contact::ContactConstraints FetiContactSolve::rows_reached_from_rest(contact::ContactConstraints near,
                                                                      const la::Vector& u_global,
-                                                                     qp::QpCounters& counters, double& operator_norm)
+                                                                     qp::QpCounters& counters)
 {
   decomposition::ConstraintRows rows = _equality->rows;
   rows.append(decomposition::rows_from_global(*_decomp, near.B, near.c), _n_equality);
@@ -474,10 +474,8 @@ contact::ContactConstraints FetiContactSolve::rows_reached_from_rest(contact::Co
     rough = dual::solve_contact_dual(*feti, c, _f_step - _f_int, _n_equality, options, warm, nullptr);
   }
   counters += rough.report;
-  operator_norm = rough.state.operator_norm;
-  // The reach is where the Schur boundary was made for; the answer's multipliers are not kept,
-  // so the iteration's QP starts from zero on the rows (a start from the rough answer, its load
-  // on the few rows near contact, took as many steps as the rows near contact alone).
+  _multipliers.remember(*feti, rough, _n_equality, near.slave_node);
+  // Candidates: the reach, the rows the Schur boundary was made for.
   LinearContactRows reached(_problem.mesh, _pair.master, reach_rows(u_global), near_contact_fraction);
   if (!rough.report.converged || !reached.expand(_decomp->gather_mean(_decomp->gather_stacked(rough.u))))
     return near;
@@ -666,9 +664,8 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   const la::Vector u_global = _decomp->gather_mean(_decomp->gather_stacked(_u));
   contact::ContactConstraints contact_rows = search_contact(u_global);
   qp::QpCounters rough_counters;
-  double rough_operator_norm = 0;
   if (_settings.first_rows_reached && !_linear && k == 1 && u_global.isZero(0.0))
-    contact_rows = rows_reached_from_rest(std::move(contact_rows), u_global, rough_counters, rough_operator_norm);
+    contact_rows = rows_reached_from_rest(std::move(contact_rows), u_global, rough_counters);
   if (_schur && !covers(_problem, _schur_boundary, contact_rows))
     grow_schur_boundary(u_global, where);
   const la::Vector residual = _f_step - _f_int;
@@ -679,9 +676,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   const std::unique_ptr<dual::FetiOperators> feti = coarse_problem(rows);
   const la::Vector c = constraint_values(*feti, rows);
   const std::optional<dual::FrictionRows> friction = slip_bounds(*feti, contact_rows, tangential);
-  qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, contact_rows.slave_node, tangential.n_tangents);
-  if (warm.operator_norm == 0)
-    warm.operator_norm = rough_operator_norm;
+  const qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, contact_rows.slave_node, tangential.n_tangents);
   const dual::DualPenaltyOptions dual_options = qp_options(k);
   const std::map<int32_t, double> normal_before = _multipliers.contact();
   dual::DualSolution solution;
