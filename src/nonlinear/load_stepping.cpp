@@ -47,8 +47,12 @@ void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int
     if ((unconverged || retry) && cutbacks_in_a_row < max_cutbacks && phases.cut_back(step))
     {
       ++cutbacks_in_a_row;
-      const std::string why =
+      std::string why =
           unconverged ? "not converged in " + std::to_string(max_outer_iterations) + " outer iterations" : failure;
+      // The solvers word a failure "load step N, outer iteration k: ..."; the warning names the step.
+      const std::string own_step = "load step " + std::to_string(step) + ", ";
+      if (why.rfind(own_step, 0) == 0)
+        why.erase(0, own_step.size());
       char warning[400];
       std::snprintf(warning, sizeof warning,
                     "load step %d at load factor %g cut back to %g: %s (its outer iterations stay in history.csv)",

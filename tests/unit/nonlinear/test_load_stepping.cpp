@@ -57,12 +57,15 @@ public:
   {
     _increment = t - _converged_t;
     _t = t;
+    _step = step;
     calls.push_back("begin " + std::to_string(step) + " " + std::to_string(t).substr(0, 5));
   }
   IterationOutcome outer_iteration(int k, OuterIteration&) override
   {
     if (_increment > _largest + 1e-12)
-      return _diverge && k == 2 ? IterationOutcome::diverged("diverged") : IterationOutcome::next();
+      return _diverge && k == 2 // worded as the solvers word it
+          ? IterationOutcome::diverged("load step " + std::to_string(_step) + ", outer iteration 2: diverged")
+          : IterationOutcome::next();
     return k == 2 ? IterationOutcome::step_converged() : IterationOutcome::next();
   }
   void end_load_step(const LoadStep& record) override
@@ -84,6 +87,7 @@ private:
   double _largest;
   bool _diverge;
   double _t = 0, _converged_t = 0, _increment = 0;
+  int _step = 0;
 };
 } // namespace
 
@@ -210,7 +214,10 @@ TEST(LoadStepping, CutsADivergedStepBackButStopsForOtherFailures)
   run_load_steps(diverging_whole, diverging_whole.history, 1, 10, 5, cut);
   EXPECT_TRUE(cut.converged) << cut.reason;
   ASSERT_EQ(cut.warnings.size(), 1u);
-  EXPECT_NE(cut.warnings[0].find("cut back to 0.5: diverged"), std::string::npos) << cut.warnings[0];
+  // The failure's own "load step 1, " is not repeated after the warning's "load step 1 at ...".
+  EXPECT_NE(cut.warnings[0].find("load step 1 at load factor 1 cut back to 0.5: outer iteration 2: diverged"),
+            std::string::npos)
+      << cut.warnings[0];
   EXPECT_EQ(cut.history.size(), 1u + 2 + 2); // the diverged iteration is no result
 
   // A QP that fails is no matter of the increment: the run stops.
