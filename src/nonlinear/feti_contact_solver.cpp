@@ -268,7 +268,8 @@ private:
   /// (LinearContactRows::expand). The rows near a first touch are a vanishing share of the
   /// contact zone as the mesh is refined (0.05 master diagonals held 100 of hertz3d 924k's 472
   /// rows in contact): the first QP then put the whole load on them, and the outer iterations
-  /// after it took most of the run to spread it (docs/contact.md, "The first QP's rows"). Its
+  /// after it took most of the run to spread it (docs/contact.md, "The first QP's rows from
+  /// rest"). Its
   /// MPRGP steps and products are added to `counters`; its multipliers, SMALBE-M state and
   /// ||PFP|| estimate are remembered, so the iteration's QP starts from them (0 on the rows
   /// added), as one outer iteration's QP starts from the last one's.
@@ -277,6 +278,8 @@ private:
   /// The rough QP's tolerance: a few MPRGP steps (3-14 on Hertz, hertz3d and the spheres), enough to show
   /// how far the contact spreads.
   static constexpr double rough_rtol = 0.1;
+  /// The dual's rows: the equality rows, then `contact`'s (ids from _n_equality on).
+  decomposition::ConstraintRows dual_rows(const contact::ContactConstraints& contact) const;
 
   // The parts of one outer iteration (ALGORITHMS.md section 8).
   /// Norms of the correction du and of u after it, and ||du||_inf (assembled).
@@ -461,8 +464,7 @@ contact::ContactConstraints FetiContactSolve::rows_reached_from_rest(contact::Co
                                                                      const la::Vector& u_global,
                                                                      qp::QpCounters& counters)
 {
-  decomposition::ConstraintRows rows = _equality->rows;
-  rows.append(decomposition::rows_from_global(*_decomp, near.B, near.c), _n_equality);
+  const decomposition::ConstraintRows rows = dual_rows(near);
   const std::unique_ptr<dual::FetiOperators> feti = coarse_problem(rows);
   const la::Vector c = constraint_values(*feti, rows);
   const qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, near.slave_node, 0);
@@ -474,12 +476,21 @@ contact::ContactConstraints FetiContactSolve::rows_reached_from_rest(contact::Co
     rough = dual::solve_contact_dual(*feti, c, _f_step - _f_int, _n_equality, options, warm, nullptr);
   }
   counters += rough.report;
+  if (!rough.report.converged)
+    return near;
   _multipliers.remember(*feti, rough, _n_equality, near.slave_node);
   // Candidates: the reach, the rows the Schur boundary was made for.
   LinearContactRows reached(_problem.mesh, _pair.master, reach_rows(u_global), near_contact_fraction);
-  if (!rough.report.converged || !reached.expand(_decomp->gather_mean(_decomp->gather_stacked(rough.u))))
+  if (!reached.expand(_decomp->gather_mean(_decomp->gather_stacked(rough.u))))
     return near;
   return reached.selected_rows(la::Vector());
+}
+
+decomposition::ConstraintRows FetiContactSolve::dual_rows(const contact::ContactConstraints& contact) const
+{
+  decomposition::ConstraintRows rows = _equality->rows;
+  rows.append(decomposition::rows_from_global(*_decomp, contact.B, contact.c), _n_equality);
+  return rows;
 }
 
 int FetiContactSolve::update_boundary_operators(bool same_K)
@@ -669,8 +680,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   if (_schur && !covers(_problem, _schur_boundary, contact_rows))
     grow_schur_boundary(u_global, where);
   const la::Vector residual = _f_step - _f_int;
-  decomposition::ConstraintRows rows = _equality->rows;
-  rows.append(decomposition::rows_from_global(*_decomp, contact_rows.B, contact_rows.c), _n_equality);
+  decomposition::ConstraintRows rows = dual_rows(contact_rows);
   contact::TangentialRows tangential = friction_rows(contact_rows, u_global, rows);
 
   const std::unique_ptr<dual::FetiOperators> feti = coarse_problem(rows);

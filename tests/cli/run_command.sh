@@ -43,6 +43,7 @@ check_error() {
 check_error "material.young" --set material.young=-1
 check_error "material.poisson" --set material.poisson=0.5
 check_error "contact.linear_band" --set contact.linear_band=0
+check_error "contact.first_rows" --set contact.first_rows=wide
 check_error "no_such_key" --set no_such_key=3
 check_error "method" --set method=magic
 check_error "KEY=VALUE" --set rho
