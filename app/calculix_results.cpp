@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace feticon::app
 {
@@ -135,11 +136,11 @@ CalculixResults::CalculixResults(const std::filesystem::path& out_dir, const fem
   model.element_labels = deck.element_labels;
   model.node_sets = problem.mesh.node_sets;
   model.element_sets = deck.element_sets;
-  if (!problem.contacts.empty())
-  {
-    const fem::ContactPairNames& pair = problem.contacts[0];
-    model.contact_slave_nodes = contact::slave_nodes(problem.mesh, {pair.slave, pair.master, pair.slave_nodes});
-  }
+  std::set<int32_t> slaves; // of every pair, as CalculiX prints the slave nodes of all its pairs
+  for (const fem::ContactPairNames& pair : problem.contacts)
+    for (int32_t node : contact::slave_nodes(problem.mesh, {pair.slave, pair.master, pair.slave_nodes}))
+      slaves.insert(node);
+  model.contact_slave_nodes.assign(slaves.begin(), slaves.end());
   _dat = std::make_unique<io::DatWriter>(out_dir / (stem + ".dat"), std::move(model));
 }
 
@@ -156,12 +157,14 @@ void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
   std::vector<double> pressure(n, 0.0), gap(n, 0.0);
   if (!p.contacts.empty() && rows.n_rows() > 0)
   {
-    const la::Vector nodal_pressure = nonlinear::slave_nodal_pressures(p, solution, _kinematics);
+    std::vector<la::Vector> nodal_pressure;
+    for (int32_t pair = 0; pair < static_cast<int32_t>(p.contacts.size()); ++pair)
+      nodal_pressure.push_back(nonlinear::slave_nodal_pressures(p, solution, _kinematics, pair));
     const la::Vector Bu = rows.B * solution.u;
     for (int64_t i = 0; i < rows.n_rows(); ++i)
     {
       const int32_t node = rows.slave_node[i];
-      pressure[node] = nodal_pressure(node);
+      pressure[node] = nodal_pressure[rows.pair[i]](node);
       gap[node] = (rows.c(i) - Bu(i)) * rows.row_norm[i];
     }
   }

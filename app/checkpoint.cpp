@@ -131,6 +131,7 @@ void write_checkpoint(const std::filesystem::path& path, const nonlinear::Contac
     write_block(os, r.dual.omega.data(), r.dual.omega.size());
     write_block(os, r.schur_boundary.data(), static_cast<int64_t>(r.schur_boundary.size()));         // likewise
     write_block(os, r.contact_tangential.data(), static_cast<int64_t>(r.contact_tangential.size())); // likewise
+    write_block(os, r.contact_pair.data(), static_cast<int64_t>(r.contact_pair.size()));             // likewise
   });
 }
 
@@ -197,6 +198,11 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
     r.schur_boundary = read_block<int32_t>(is, path);
   if (is.peek() != std::char_traits<char>::eof())
     r.contact_tangential = read_block<double>(is, path);
+  if (is.peek() != std::char_traits<char>::eof())
+    r.contact_pair = read_block<int32_t>(is, path);
+  FETICON_CHECK(r.contact_pair.empty() || r.contact_pair.size() == r.contact_slave.size(),
+                path.string() << ": the checkpoint has " << r.contact_pair.size() << " contact pairs for "
+                              << r.contact_slave.size() << " contact multipliers");
   FETICON_CHECK(r.completed_steps >= 1 && r.u_stacked.allFinite(),
                 path.string() << ": the checkpoint holds no converged step");
 }

@@ -38,11 +38,6 @@ void export_model(const ExportOptions& options)
   FETICON_CHECK(options.format == "calculix",
                 "export: --format " << options.format << " is not known; the one format is calculix");
   const io::ProblemFile file = load_problem(options.problem_file, options.overrides);
-  // CalculiX's *FRICTION is Coulomb's law; a slip bound independent of the pressure has no
-  // keyword there, and writing Coulomb instead would compare two different models.
-  FETICON_CHECK(file.settings.text("contact.friction.model") != "tresca",
-                "export: Tresca friction (contact.friction.model=tresca) has no CalculiX equivalent: ccx's "
-                "*FRICTION is Coulomb's law (mu times the pressure); export with coulomb or none");
   // The mesh and the deck only: no solve, so the guard counts the mesh alone.
   const problems::MeshPrediction predicted = predict_mesh(file);
   check_fits(estimate_mesh_memory(predicted.nodes), memory_budget(file.settings),
@@ -54,11 +49,26 @@ void export_model(const ExportOptions& options)
       choose_feti(file.settings, model_size(problem), memory_budget(file.settings), par::Communicator::world().size()));
   io::CalculixOptions deck;
   deck.nlgeom = solver.kinematics == fem::Kinematics::total_lagrangian;
-  deck.increments = solver.steps();
+  deck.increments = solver.steps_of(problem);
   deck.contact_stiffness_factor = options.contact_stiffness_factor;
   deck.overclosure = options.overclosure;
-  if (solver.friction.model == nonlinear::FrictionModel::coulomb)
-    deck.friction_coefficient = solver.friction.coefficient;
+  for (size_t p = 0; p < problem.contacts.size(); ++p)
+  {
+    // CalculiX's *FRICTION is Coulomb's law; a slip bound independent of the pressure has no
+    // keyword there, and writing Coulomb instead would compare two different models.
+    const nonlinear::Friction friction = solver.interaction(problem.contacts[p]).friction;
+    FETICON_CHECK(friction.model != nonlinear::FrictionModel::tresca,
+                  "export: Tresca friction (contact pair " << p
+                                                           << ") has no CalculiX equivalent: ccx's *FRICTION is "
+                                                              "Coulomb's law (mu times the pressure); export with "
+                                                              "coulomb or none");
+    const double mu = friction.model == nonlinear::FrictionModel::coulomb ? friction.coefficient : 0.0;
+    FETICON_CHECK(p == 0 || mu == deck.friction_coefficient,
+                  "export: contact pair " << p << " has friction coefficient " << mu << ", pair 0 "
+                                          << deck.friction_coefficient
+                                          << "; the export writes one interaction for every pair");
+    deck.friction_coefficient = mu;
+  }
 
   std::ostringstream text;
   const io::CalculixDeckSummary s = io::write_calculix_deck(problem, deck, text);

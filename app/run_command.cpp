@@ -322,25 +322,62 @@ void summarize_contact(RunContext& run, const nonlinear::ContactSolution& soluti
   if (!solution.completed || solution.contact_lambda.size() == 0)
     return;
   ScopedTimer t(run.timers, "post-processing");
-  // Pressure along the slave surface; the analytic column is filled where theory is known.
-  auto samples = nonlinear::slave_pressure_by_x(*run.problem, solution, run.solver.kinematics, run.solver.friction);
+  const fem::Problem& problem = *run.problem;
+  // Pressure along each pair's slave surface; the analytic column is filled where theory is known.
+  std::vector<nonlinear::PressureSample> samples;
+  nlohmann::ordered_json pairs = nlohmann::ordered_json::array();
   int64_t active = 0;
-  for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)
-    active += solution.contact_lambda(i) > 0;
   double peak = 0, area = 0;
-  for (const auto& sample : samples)
-    peak = std::max(peak, sample.pressure);
-  for (const auto& sample : samples)
-    area += sample.pressure > problems::loaded_fraction * peak ? sample.area : 0.0;
+  for (int32_t p = 0; p < static_cast<int32_t>(problem.contacts.size()); ++p)
+  {
+    const fem::ContactInteraction interaction = run.solver.interaction(problem.contacts[p]);
+    const auto mine = nonlinear::slave_pressure_by_x(problem, solution, run.solver.kinematics, interaction.friction, p);
+    int64_t pair_active = 0;
+    for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)
+      pair_active += solution.constraints.pair[i] == p && solution.contact_lambda(i) > 0;
+    double pair_peak = 0, pair_area = 0, friction_force = 0;
+    int64_t slipping = 0;
+    for (const auto& sample : mine)
+      pair_peak = std::max(pair_peak, sample.pressure);
+    for (const auto& sample : mine)
+    {
+      pair_area += sample.pressure > problems::loaded_fraction * pair_peak ? sample.area : 0.0;
+      friction_force += sample.friction_force.norm();
+      slipping += sample.slipping;
+    }
+    nlohmann::ordered_json figures = {{"slave", problem.contacts[p].slave},
+                                      {"master", problem.contacts[p].master},
+                                      {"interaction", interaction.name},
+                                      {"formulation", fem::formulation_name(interaction.formulation)},
+                                      {"friction",
+                                       {{"model", fem::friction_model_name(interaction.friction.model)},
+                                        {"coefficient", interaction.friction.coefficient},
+                                        {"slip_bound", interaction.friction.slip_bound}}},
+                                      {"total_normal_force", nonlinear::total_normal_force(solution, p)},
+                                      {"peak_pressure", pair_peak},
+                                      {"contact_area", pair_area},
+                                      {"active_constraints", pair_active}};
+    if (interaction.friction.model != nonlinear::FrictionModel::none)
+    {
+      figures["friction_force_magnitudes"] = friction_force; // sum over the slave nodes of |F_T| (N)
+      figures["slipping_nodes"] = slipping;
+    }
+    pairs.push_back(std::move(figures));
+    active += pair_active;
+    peak = std::max(peak, pair_peak);
+    area += pair_area;
+    samples.insert(samples.end(), mine.begin(), mine.end());
+  }
   summary["contact"] = {{"total_normal_force", nonlinear::total_normal_force(solution)},
                         {"peak_pressure", peak},
                         {"contact_area", area},
                         {"active_constraints", active},
-                        {"feasibility_error", solution.feasibility_error}};
-  compare_with_theory(run, solution, samples, summary);
+                        {"feasibility_error", solution.feasibility_error},
+                        {"pairs", std::move(pairs)}};
+  if (problem.contacts.size() == 1) // the built-in problems' theories are of one pair
+    compare_with_theory(run, solution, samples, summary);
   if (run.writer)
-    write_pressure_csv(run.out_dir / "contact_pressure.csv", samples,
-                       run.solver.friction.model != nonlinear::FrictionModel::none);
+    write_pressure_csv(run.out_dir / "contact_pressure.csv", samples, run.solver.has_friction(problem));
 }
 
 /// No silent wrong answers: the deck's and the solver's warnings, and a completed result that
@@ -360,7 +397,7 @@ nlohmann::ordered_json run_warnings(const RunContext& run, const nonlinear::Cont
   if (run.calculix)
     for (const std::string& w : run.calculix->warnings())
       warnings.push_back("deck output: " + w);
-  if (run.calculix && run.solver.friction.model != nonlinear::FrictionModel::none)
+  if (run.calculix && run.solver.has_friction(*run.problem))
     warnings.push_back("deck output: the .frd and .dat hold the normal contact only: slip and shear (CSLIP, "
                        "CSHEAR, the tangential CSTR) are written as 0, and RF subtracts only the normal "
                        "contact force");

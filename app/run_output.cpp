@@ -1,5 +1,6 @@
 #include "app/run_output.hpp"
 
+#include "contact/contact_constraints.hpp"
 #include "fem/stress.hpp"
 #include "fem/hex8_element.hpp"
 #include "common/error.hpp"
@@ -26,6 +27,9 @@ namespace
 struct StepFields
 {
   io::VtuField displacement{"displacement", 3, {}}, pressure{"contact_pressure", 1, {}};
+  /// The contact pair whose slave surface holds the node (its index in fem::Problem::contacts);
+  /// -1 on no slave surface.
+  io::VtuField contact_pair{"contact_pair", 1, {}};
   io::VtuField cauchy{"cauchy_stress", 6, {}}, mises{"von_mises", 1, {}};
 };
 } // namespace
@@ -68,37 +72,45 @@ void write_step_vtu(const std::filesystem::path& path, const fem::Problem& probl
         f.pressure.values[local_of_node[rows.slave_node[i]]] +=
             solution.contact_lambda(static_cast<la::Index>(i)) / rows.row_norm[i] / rows.slave_area[i];
   }
+  f.contact_pair.values.assign(mesh.n_nodes(), -1.0);
+  for (size_t p = 0; p < problem.contacts.size(); ++p)
+  {
+    const fem::ContactPairNames& pair = problem.contacts[p];
+    for (int32_t node : contact::slave_nodes(problem.mesh, {pair.slave, pair.master, pair.slave_nodes}))
+      if (local_of_node[node] >= 0)
+        f.contact_pair.values[local_of_node[node]] = static_cast<double>(p);
+  }
   if (kinematics == fem::Kinematics::total_lagrangian)
   {
     io::PointMatrix x = mesh.nodes;
     for (int32_t n = 0; n < mesh.n_nodes(); ++n)
       x.row(n) += u.segment<3>(3 * n).transpose();
     const Eigen::Ref<const io::PointMatrix> ref(x);
-    io::write_vtu(path, mesh, &ref, {f.displacement, f.pressure}, {f.cauchy, f.mises});
+    io::write_vtu(path, mesh, &ref, {f.displacement, f.pressure, f.contact_pair}, {f.cauchy, f.mises});
   }
   else
-    io::write_vtu(path, mesh, nullptr, {f.displacement, f.pressure}, {f.cauchy, f.mises});
+    io::write_vtu(path, mesh, nullptr, {f.displacement, f.pressure, f.contact_pair}, {f.cauchy, f.mises});
 }
 
 void write_step_pvtu(const std::filesystem::path& path, const fem::Problem& problem,
                      const std::vector<std::string>& pieces)
 {
   const StepFields f;
-  io::write_pvtu(path, pieces, problem.mesh, {f.displacement, f.pressure}, {f.cauchy, f.mises});
+  io::write_pvtu(path, pieces, problem.mesh, {f.displacement, f.pressure, f.contact_pair}, {f.cauchy, f.mises});
 }
 
 void write_pressure_csv(const std::filesystem::path& path, const std::vector<nonlinear::PressureSample>& samples,
                         bool friction)
 {
   std::ostringstream os;
-  os << "x_m,y_m,z_m,force_N,area_m2,pressure_multipliers_Pa,pressure_stress_Pa,pressure_analytic_Pa,"
+  os << "pair,x_m,y_m,z_m,force_N,area_m2,pressure_multipliers_Pa,pressure_stress_Pa,pressure_analytic_Pa,"
         "x_deformed_m,y_deformed_m";
   os << (friction ? ",shear_x_Pa,shear_y_Pa,shear_z_Pa,shear_analytic_x_Pa,slip\n" : "\n");
   char line[480];
   for (const auto& s : samples)
   {
-    std::snprintf(line, sizeof line, "%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e", s.x, s.y, s.z, s.force,
-                  s.area, s.pressure, s.stress_pressure, s.analytic, s.deformed_x, s.deformed_y);
+    std::snprintf(line, sizeof line, "%d,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e", s.pair, s.x, s.y, s.z,
+                  s.force, s.area, s.pressure, s.stress_pressure, s.analytic, s.deformed_x, s.deformed_y);
     os << line;
     if (friction)
     {

@@ -216,6 +216,51 @@ std::vector<int32_t> slave_nodes(const mesh::Mesh& mesh, const ContactPair& pair
   return out;
 }
 
+std::vector<int64_t> ContactConstraints::keys() const
+{
+  std::vector<int64_t> out(slave_node.size());
+  for (size_t i = 0; i < out.size(); ++i)
+    out[i] = key(static_cast<int64_t>(i));
+  return out;
+}
+
+ContactConstraints concatenate_pairs(std::vector<ContactConstraints> parts, la::Index n_global_dofs)
+{
+  if (parts.size() == 1) // one pair: its rows as built, pair 0 already
+    return std::move(parts.front());
+  ContactRowBuilder builder;
+  ContactConstraints out;
+  for (size_t p = 0; p < parts.size(); ++p)
+  {
+    const ContactConstraints& part = parts[p];
+    FETICON_ASSERT(part.B.cols() == n_global_dofs, "contact rows of pair " << p << " over other DOFs");
+    for (la::Index i = 0; i < part.n_rows(); ++i)
+      builder.copy(part, i, part.gap[i], static_cast<int32_t>(p));
+    out.search_distance = std::max(out.search_distance, part.search_distance);
+    out.n_slave_nodes += part.n_slave_nodes;
+    out.n_overhanging += part.n_overhanging;
+    out.transformed_basis = out.transformed_basis || part.transformed_basis;
+  }
+  if (!parts.empty())
+    out.formulation = parts.front().formulation;
+  builder.finish(n_global_dofs, out);
+  return out;
+}
+
+ContactConstraints pair_rows(const ContactConstraints& rows, int32_t p)
+{
+  ContactRowBuilder builder;
+  ContactConstraints out;
+  for (la::Index i = 0; i < rows.n_rows(); ++i)
+    if (rows.pair[i] == p)
+      builder.copy(rows, i, rows.gap[i], p);
+  out.formulation = rows.formulation;
+  out.transformed_basis = rows.transformed_basis;
+  out.search_distance = rows.search_distance;
+  builder.finish(rows.B.cols(), out);
+  return out;
+}
+
 ContactConstraints build_contact_constraints(const mesh::Mesh& mesh, const la::Vector& u, const ContactPair& pair,
                                              const ContactOptions& options)
 {

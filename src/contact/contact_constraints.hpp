@@ -76,6 +76,7 @@
 #include "contact/face_geometry.hpp"
 #include "contact/surface_search.hpp"
 
+#include "fem/contact_interaction.hpp"
 #include "la/types.hpp"
 #include "mesh/mesh.hpp"
 
@@ -98,14 +99,9 @@ struct ContactPair
 /// The slave nodes of a pair, sorted: the slave faces' nodes, restricted to pair.slave_nodes.
 std::vector<int32_t> slave_nodes(const mesh::Mesh& mesh, const ContactPair& pair);
 
-/// How the rows are built: one closest point per slave node (node_to_segment, this file) or
-/// integrated dual mortar weights (mortar, mortar_constraints.hpp). Both give rows of the same
-/// form -n' on the slave node and +w_a n' on master nodes a with sum_a w_a = 1.
-enum class ContactFormulation : uint8_t
-{
-  node_to_segment = 0, ///< w_a = N_a(xi_bar) at the closest point (ALGORITHMS.md section 4)
-  mortar = 1,          ///< w_a = M_ja / D_j, segment-to-segment dual mortar integrals
-};
+/// How the rows are built (fem/contact_interaction.hpp): node_to_segment (this file) or mortar
+/// (mortar_constraints.hpp).
+using ContactFormulation = fem::ContactFormulation;
 
 struct ContactOptions
 {
@@ -136,7 +132,19 @@ enum class ProjectionKind : uint8_t
   rim = 2,  ///< just beyond the boundary of the master surface: projection on the extended face
 };
 
-/// Contact rows B_I u <= c_I, normalized (see file comment). Row i belongs to slave_node[i].
+/// What identifies a contact row from one outer iteration to the next: its pair and its slave
+/// node, (pair << 32) | node. For pair 0 the key is the node.
+inline int64_t contact_key(int32_t pair, int32_t slave_node)
+{
+  return (static_cast<int64_t>(pair) << 32) | static_cast<uint32_t>(slave_node);
+}
+/// The slave node of a key.
+inline int32_t key_node(int64_t key) { return static_cast<int32_t>(key & 0xffffffff); }
+/// The pair of a key.
+inline int32_t key_pair(int64_t key) { return static_cast<int32_t>(key >> 32); }
+
+/// Contact rows B_I u <= c_I, normalized (see file comment). Row i belongs to slave_node[i] of
+/// pair pair[i]; the rows of several pairs come pair after pair (concatenate_pairs).
 struct ContactConstraints
 {
   /// Normalized rows b_i / |b_i| over the global DOFs 3 * node + component: rows x 3 n_nodes.
@@ -145,6 +153,8 @@ struct ContactConstraints
   la::Vector c;
   /// Slave node of each row.
   std::vector<int32_t> slave_node;
+  /// Contact pair of each row (its index in fem::Problem::contacts; 0 for a single pair's rows).
+  std::vector<int32_t> pair;
   /// Unit normal of each row, outward of the master body (points towards the slave).
   std::vector<Eigen::Vector3d> normal;
   /// Unnormalized geometric gap g_i (m): >= 0 open, < 0 penetration.
@@ -179,6 +189,10 @@ struct ContactConstraints
   int32_t n_overhanging = 0;
 
   int64_t n_rows() const { return static_cast<int64_t>(slave_node.size()); }
+  /// contact_key of row i.
+  int64_t key(int64_t i) const { return contact_key(pair[i], slave_node[i]); }
+  /// contact_key of every row.
+  std::vector<int64_t> keys() const;
 };
 
 /// @brief Current corner coordinates x = X + u of a face (m).
@@ -200,6 +214,15 @@ double largest_face_diagonal(const mesh::Mesh& mesh, const la::Vector& u, const 
 ///         negative search distance or rim extension, or mortar_min_overlap outside (0, 1].
 ContactConstraints build_contact_constraints(const mesh::Mesh& mesh, const la::Vector& u, const ContactPair& pair,
                                              const ContactOptions& options = {});
+
+/// @brief The rows of several pairs as one block, pair after pair: `parts[p]`'s rows get
+/// pair p. The per-pair figures (search distance, slave counts) are the largest and the sums;
+/// `formulation` and `transformed_basis` are part 0's and any part's. No parts: no rows over
+/// n_global_dofs DOFs.
+ContactConstraints concatenate_pairs(std::vector<ContactConstraints> parts, la::Index n_global_dofs);
+
+/// @brief The rows of pair p alone (in their order), for the outputs of one pair.
+ContactConstraints pair_rows(const ContactConstraints& rows, int32_t p);
 
 /// @brief Node-to-segment rows of `pair` (see file comment); options.formulation is ignored.
 /// Arguments, result and errors as build_contact_constraints.

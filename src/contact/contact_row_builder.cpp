@@ -15,6 +15,7 @@ void ContactRowBuilder::append_fields(const ContactRowFields& fields, double nor
   _out.xi.push_back(fields.xi);
   _out.kind.push_back(fields.kind);
   _out.master_share.push_back(fields.master_share);
+  _out.pair.push_back(fields.pair);
 }
 
 void ContactRowBuilder::add(const ContactRowFields& fields,
@@ -38,13 +39,13 @@ void ContactRowBuilder::add(const ContactRowFields& fields,
   append_fields(fields, norm);
 }
 
-void ContactRowBuilder::copy(const ContactConstraints& from, la::Index i, double gap)
+void ContactRowBuilder::copy(const ContactConstraints& from, la::Index i, double gap, int32_t pair)
 {
   const auto row = static_cast<int>(n_rows());
   for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(from.B, i); it; ++it)
     _triplets.emplace_back(row, static_cast<int>(it.col()), it.value());
   append_fields({from.slave_node[i], from.normal[i], gap, from.slave_area[i], from.master_face[i], from.xi[i],
-                 from.kind[i], from.master_share[i]},
+                 from.kind[i], from.master_share[i], pair},
                 from.row_norm[i]);
 }
 
@@ -67,6 +68,7 @@ void ContactRowBuilder::finish(la::Index n_dofs, ContactConstraints& into)
   into.xi = std::move(_out.xi);
   into.kind = std::move(_out.kind);
   into.master_share = std::move(_out.master_share);
+  into.pair = std::move(_out.pair);
   _out = {};
   _triplets.clear();
 }

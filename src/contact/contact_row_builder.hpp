@@ -25,6 +25,7 @@ struct ContactRowFields
   Eigen::Vector2d xi = Eigen::Vector2d::Zero();
   ProjectionKind kind = ProjectionKind::face;
   double master_share = 1; ///< ContactConstraints::master_share
+  int32_t pair = 0;        ///< ContactConstraints::pair
 };
 
 class ContactRowBuilder
@@ -32,8 +33,8 @@ class ContactRowBuilder
 public:
   /// Appends the row of `fields` with master nodes and weights (w_a; zero weights are skipped).
   void add(const ContactRowFields& fields, const std::vector<std::pair<int32_t, double>>& master_weights);
-  /// Appends row i of `from` unchanged but for its gap.
-  void copy(const ContactConstraints& from, la::Index i, double gap);
+  /// Appends row i of `from` unchanged but for its gap and its pair.
+  void copy(const ContactConstraints& from, la::Index i, double gap, int32_t pair);
   int64_t n_rows() const { return static_cast<int64_t>(_out.slave_node.size()); }
   /// The rows over n_dofs DOFs, with B and c formed; `into` keeps its other fields (search
   /// distance, slave counts) and gets the rows.

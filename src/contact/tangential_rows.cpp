@@ -107,6 +107,7 @@ TangentialRows build_tangential_rows(const ContactConstraints& normal, const std
             triplets.emplace_back(row, 3 * node + c, w * t(c));
       out.tangent.push_back(t);
       out.slave_node.push_back(normal.slave_node[i]);
+      out.pair.push_back(normal.pair[i]);
       out.held.push_back(axes != 0 && held[k]);
     }
   }

@@ -38,10 +38,13 @@ struct TangentialRows
   Eigen::SparseMatrix<double, Eigen::RowMajor> B;
   std::vector<Eigen::Vector3d> tangent; ///< unit tangent of each row
   std::vector<int32_t> slave_node;      ///< slave node of each row
+  std::vector<int32_t> pair;            ///< contact pair of each row (its normal row's)
   std::vector<char> held;               ///< the row's tangent is held by supports (file comment)
   int n_tangents = 0;                   ///< 1 in plane strain, 2 in 3D
 
   int64_t n_rows() const { return static_cast<int64_t>(tangent.size()); }
+  /// contact_key of row r (its normal row's).
+  int64_t key(int64_t r) const { return contact_key(pair[r], slave_node[r]); }
 };
 
 /// The unit tangents of the unit normal n: one in the plane normal to the eliminated axis

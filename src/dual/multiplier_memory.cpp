@@ -8,7 +8,7 @@
 namespace feticon::dual
 {
 qp::QpState MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_equality,
-                                         const std::vector<int32_t>& contact_slave, int n_tangents) const
+                                         const std::vector<int64_t>& contact_key, int n_tangents) const
 {
   qp::QpState warm = _state;
   if (_owned.size() == 0 && _restart_equality.size() == 0)
@@ -18,7 +18,7 @@ qp::QpState MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_eq
                                                  << " equality multipliers, this problem has " << n_equality
                                                  << " equality rows (other supports or linear equations?)");
   const la::Index m = feti.n_dual();
-  const int64_t n_contact = static_cast<int64_t>(contact_slave.size());
+  const int64_t n_contact = static_cast<int64_t>(contact_key.size());
   warm.x = la::Vector::Zero(m);
   for (la::Index i = 0; i < m; ++i)
   {
@@ -27,13 +27,13 @@ qp::QpState MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_eq
       warm.x(i) = _restart_equality.size() > 0 ? _restart_equality(id) : _owned(i);
     else if (id < n_equality + n_contact)
     {
-      if (const auto it = _contact.find(contact_slave[id - n_equality]); it != _contact.end())
+      if (const auto it = _contact.find(contact_key[id - n_equality]); it != _contact.end())
         warm.x(i) = it->second;
     }
     else if (n_tangents > 0)
     {
       const int64_t j = id - n_equality - n_contact;
-      if (const auto it = _tangential.find(contact_slave[j / n_tangents]); it != _tangential.end())
+      if (const auto it = _tangential.find(contact_key[j / n_tangents]); it != _tangential.end())
         warm.x(i) = it->second[j % n_tangents];
     }
   }
@@ -41,17 +41,17 @@ qp::QpState MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_eq
 }
 
 la::Vector MultiplierMemory::remember(const FetiOperators& feti, const DualSolution& solution, int64_t n_equality,
-                                      const std::vector<int32_t>& contact_slave, int n_tangents, la::Vector* tangential)
+                                      const std::vector<int64_t>& contact_key, int n_tangents, la::Vector* tangential)
 {
   _owned = solution.state.x;
   _restart_equality.resize(0);
   _state = solution.state;
   _state.x.resize(0);
-  const int64_t n_contact = static_cast<int64_t>(contact_slave.size());
+  const int64_t n_contact = static_cast<int64_t>(contact_key.size());
   la::Vector contact_lambda = multipliers_by_id(feti, solution.state.x, n_equality, n_equality + n_contact);
   _contact.clear();
   for (int64_t j = 0; j < n_contact; ++j)
-    _contact[contact_slave[j]] = contact_lambda(j);
+    _contact[contact_key[j]] = contact_lambda(j);
   _tangential.clear();
   if (tangential)
     tangential->resize(0);
@@ -61,40 +61,40 @@ la::Vector MultiplierMemory::remember(const FetiOperators& feti, const DualSolut
     la::Vector t = multipliers_by_id(feti, solution.state.x, begin, begin + n_tangents * n_contact);
     for (int64_t j = 0; j < n_contact; ++j)
       for (int k = 0; k < n_tangents; ++k)
-        _tangential[contact_slave[j]][k] = t(n_tangents * j + k);
+        _tangential[contact_key[j]][k] = t(n_tangents * j + k);
     if (tangential)
       *tangential = std::move(t);
   }
   return contact_lambda;
 }
 
-void MultiplierMemory::restore(qp::QpState state, const std::vector<int32_t>& contact_slave,
+void MultiplierMemory::restore(qp::QpState state, const std::vector<int64_t>& contact_key,
                                const std::vector<double>& contact_lambda, const std::vector<double>& tangential)
 {
   _owned.resize(0);
   _restart_equality = std::move(state.x);
   _contact.clear();
   _tangential.clear();
-  FETICON_CHECK(tangential.empty() || tangential.size() == 2 * contact_slave.size(),
+  FETICON_CHECK(tangential.empty() || tangential.size() == 2 * contact_key.size(),
                 "restart: the checkpoint holds " << tangential.size() << " tangential multipliers for "
-                                                 << contact_slave.size() << " contact nodes");
-  for (size_t j = 0; j < contact_slave.size() && !tangential.empty(); ++j)
-    _tangential[contact_slave[j]] = {tangential[2 * j], tangential[2 * j + 1]};
-  for (size_t j = 0; j < contact_slave.size(); ++j)
-    _contact[contact_slave[j]] = contact_lambda[j];
+                                                 << contact_key.size() << " contact rows");
+  for (size_t j = 0; j < contact_key.size() && !tangential.empty(); ++j)
+    _tangential[contact_key[j]] = {tangential[2 * j], tangential[2 * j + 1]};
+  for (size_t j = 0; j < contact_key.size(); ++j)
+    _contact[contact_key[j]] = contact_lambda[j];
   _state = std::move(state);
   _state.x.resize(0);
 }
 
-std::set<int32_t> MultiplierMemory::positive_nodes(const std::map<int32_t, double>& contact, double floor)
+std::set<int64_t> MultiplierMemory::positive_keys(const std::map<int64_t, double>& contact, double floor)
 {
   double largest = 0;
-  for (const auto& [node, value] : contact)
+  for (const auto& [key, value] : contact)
     largest = std::max(largest, value);
-  std::set<int32_t> active;
-  for (const auto& [node, value] : contact)
+  std::set<int64_t> active;
+  for (const auto& [key, value] : contact)
     if (value > std::max(1e-12 * largest, floor))
-      active.insert(node);
+      active.insert(key);
   return active;
 }
 

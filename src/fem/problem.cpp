@@ -100,6 +100,11 @@ void Problem::validate() const
       FETICON_CHECK(!mesh.node_set(c.slave_nodes).empty(), "contact slave node set '" << c.slave_nodes << "' is empty");
     FETICON_CHECK(!mesh.face_set(c.slave).empty(), "contact slave surface '" << c.slave << "' is empty");
     FETICON_CHECK(!mesh.face_set(c.master).empty(), "contact master surface '" << c.master << "' is empty");
+    const Friction& f = c.interaction.friction;
+    FETICON_CHECK(std::isfinite(f.coefficient) && f.coefficient >= 0 && std::isfinite(f.slip_bound) &&
+                      f.slip_bound >= 0,
+                  "contact pair " << c.slave << " / " << c.master << ": friction coefficient " << f.coefficient
+                                  << " and slip bound " << f.slip_bound << " must be finite and >= 0");
   }
 }
 } // namespace feticon::fem

@@ -1,6 +1,7 @@
 #pragma once
 /// @file A contact problem as the solvers see it: mesh, materials, supports, loads, pairs.
 
+#include "fem/contact_interaction.hpp"
 #include "fem/dirichlet.hpp"
 #include "fem/material.hpp"
 #include "la/types.hpp"
@@ -49,7 +50,8 @@ struct LinearEquation
 };
 
 /// Slave and master face sets of one contact pair (node-to-segment: slave nodes against
-/// master faces).
+/// master faces) and the interaction between them. A body may be slave in one pair and
+/// master in another; the solver builds every pair's rows and keys them by (pair, slave node).
 struct ContactPairNames
 {
   std::string slave;
@@ -58,6 +60,7 @@ struct ContactPairNames
   /// deck's node-based slave surface, whose faces give the nodes' tributary areas).
   /// Node-to-segment only: mortar integrates whole slave faces.
   std::string slave_nodes = {};
+  ContactInteraction interaction = {};
 };
 
 /// The loads and prescribed displacements one later stage of the load history reaches at its
@@ -87,6 +90,7 @@ struct Problem
   /// Stages after the first (Problem's own loads and supports, reached at load factor 1):
   /// stage k ends at load factor 1 + k. Empty for every problem but multi-step decks.
   std::vector<LoadStage> later_stages;
+  /// Any number of pairs, none included (a model held by supports, glued or tied only).
   std::vector<ContactPairNames> contacts;
   /// Components fixed to zero on every node and eliminated (plane strain: {0,0,1}).
   std::array<bool, 3> eliminated{false, false, false};

@@ -64,9 +64,6 @@ struct DeckInfo
   Labels element_labels; ///< deck number of every mesh cell
   /// Element sets by deck name (mesh cell indices, sorted).
   std::map<std::string, std::vector<int32_t>> element_sets;
-  /// Coulomb's friction coefficient mu of the contact pair's interaction (*FRICTION); 0:
-  /// frictionless. The settings take it from the outline (DeckOutline::friction_coefficient).
-  double friction_coefficient = 0;
   /// What the deck says that feticon reads but does not honour exactly, one line each.
   std::vector<std::string> warnings;
   std::filesystem::path path;
@@ -91,13 +88,6 @@ struct DeckOutline
   int64_t elements = 0;
   bool nlgeom = false; ///< some *STEP has NLGEOM
   int increments = 1;  ///< of the first *STATIC
-  /// node_to_segment when every *CONTACT PAIR is NODE TO SURFACE (CalculiX's default TYPE),
-  /// else mortar (on the faces of every element type): the setting contact.formulation.
-  std::string contact_formulation = "mortar";
-  /// Coulomb's mu of the *FRICTION under the interaction of the first *CONTACT PAIR (0: none or
-  /// frictionless): the settings contact.friction.model = coulomb and .coefficient. Read as
-  /// the reader reads it; a value the reader refuses leaves 0 here (the reader says why).
-  double friction_coefficient = 0;
 };
 DeckOutline deck_outline(const std::filesystem::path& path);
 

@@ -370,9 +370,12 @@ private:
     return faces;
   }
 
+  /// Every *CONTACT PAIR with its interaction: Coulomb's mu of the interaction's *FRICTION
+  /// (mu = 0: frictionless) and the pair's formulation (NODE TO SURFACE, CalculiX's default
+  /// TYPE: node-to-segment; SURFACE TO SURFACE: mortar).
   void contact_pairs()
   {
-    bool any_node_to_surface = false, any_surface_to_surface = false;
+    std::set<std::string> used;
     for (const DeckContactPair& pair : _d.pairs)
     {
       const std::string at = pair.where.str() + ": *CONTACT PAIR";
@@ -381,22 +384,23 @@ private:
       for (const std::string& s : {pair.slave, pair.master})
         FETICON_CHECK(_d.surfaces.count(s), at << ": no *SURFACE '" << s << "' is defined");
       FETICON_CHECK(pair.slave != pair.master, at << ": slave and master are the same surface '" << pair.slave << "'");
-      FETICON_CHECK(_p.contacts.empty(), at << ": a second contact pair; feticon's solvers take one pair per model");
       FETICON_CHECK(!_d.surfaces.at(pair.master).node_based,
                     at << ": master surface '" << pair.master << "' must be made of element faces (TYPE=ELEMENT)");
-      _p.contacts.push_back(
-          {pair.slave, pair.master, _restricted_surfaces.count(pair.slave) ? "slave_nodes_" + pair.slave : ""});
-      if (const auto it = _d.frictions.find(pair.interaction); it != _d.frictions.end())
-        _deck.friction_coefficient = it->second.coefficient;
-      (pair.node_to_surface ? any_node_to_surface : any_surface_to_surface) = true;
+      fem::ContactInteraction interaction{pair.interaction,
+                                          {},
+                                          pair.node_to_surface ? fem::ContactFormulation::node_to_segment
+                                                               : fem::ContactFormulation::mortar};
+      if (const auto it = _d.frictions.find(pair.interaction); it != _d.frictions.end() && it->second.coefficient > 0)
+        interaction.friction = {fem::FrictionModel::coulomb, it->second.coefficient, 0};
+      used.insert(pair.interaction);
+      _p.contacts.push_back({pair.slave, pair.master,
+                             _restricted_surfaces.count(pair.slave) ? "slave_nodes_" + pair.slave : "",
+                             std::move(interaction)});
     }
     for (const auto& [interaction, friction] : _d.frictions)
-      if (_d.pairs.empty() || _d.pairs.front().interaction != interaction)
+      if (!used.count(interaction))
         _d.warn("*FRICTION of interaction " + interaction + " (" + friction.where.str() +
                 ") is not used: no *CONTACT PAIR takes that interaction");
-    if (any_node_to_surface && any_surface_to_surface)
-      _d.warn("the deck has NODE TO SURFACE and SURFACE TO SURFACE pairs; feticon takes one formulation for "
-              "all (mortar, the surface-to-surface one)");
   }
 
   /// Supports as node sets grouped by their prescribed components and values.
@@ -551,32 +555,12 @@ Deck read_deck(const std::filesystem::path& path, const DeckOutline& outline)
   if (steps.back().nlgeom && !steps.front().nlgeom)
     data.warn("NLGEOM is set from a later step on; feticon takes one kinematics for the run, large displacements");
   deck.info.warnings = std::move(data.warnings);
-  // The settings took mu from the outline; a reader that read another would solve another law.
-  FETICON_CHECK(deck.info.friction_coefficient == outline.friction_coefficient,
-                path.string() << ": internal: the deck's friction coefficient " << deck.info.friction_coefficient
-                              << " is not the outline's " << outline.friction_coefficient);
   deck.problem.validate();
   return deck;
 }
 
 namespace
 {
-/// The outline's reading of a *FRICTION data line: mu where the reader would take it, else 0.
-double outline_friction(DeckTokenizer& tokens)
-{
-  DeckDataLine line;
-  if (!tokens.next_data(line) || line.fields.empty() || line.fields.size() > 2)
-    return 0;
-  const std::optional<double> mu = parse_deck_real(line.fields[0]);
-  if (line.fields.size() == 2 && !line.fields[1].empty())
-  {
-    const std::optional<double> slope = parse_deck_real(line.fields[1]);
-    if (!slope || !(*slope > 0))
-      return 0;
-  }
-  return mu && *mu >= 0 && *mu <= largest_friction_coefficient ? *mu : 0.0;
-}
-
 /// The number of load steps of the first *STATIC's data line (1 if it has none).
 int outline_increments(DeckTokenizer& tokens)
 {
@@ -597,21 +581,9 @@ DeckOutline deck_outline(const std::filesystem::path& path)
   DeckOutline out;
   DeckTokenizer tokens(path);
   DeckKeyword keyword;
-  bool first_step = true, node_to_surface = false, surface_to_surface = false;
-  std::string interaction, pair_interaction;
-  std::map<std::string, double> friction; // mu by interaction
+  bool first_step = true;
   while (tokens.next_keyword(keyword))
   {
-    // An interaction's block: its *SURFACE BEHAVIOR and *FRICTION (as the reader takes it).
-    if (keyword.name != "SURFACE BEHAVIOR" && keyword.name != "FRICTION")
-      interaction = keyword.name == "SURFACE INTERACTION" && keyword.value("NAME") ? *keyword.value("NAME") : "";
-    if (keyword.name == "CONTACT PAIR")
-    {
-      const std::string* type = keyword.value("TYPE");
-      (!type || *type == "NODE TO SURFACE" ? node_to_surface : surface_to_surface) = true;
-      if (pair_interaction.empty() && keyword.value("INTERACTION"))
-        pair_interaction = *keyword.value("INTERACTION");
-    }
     if (keyword.name == "NODE")
       out.nodes += tokens.count_data_lines();
     else if (keyword.name == "ELEMENT")
@@ -626,12 +598,7 @@ DeckOutline deck_outline(const std::filesystem::path& path)
       first_step = false;
       out.increments = outline_increments(tokens);
     }
-    else if (keyword.name == "FRICTION" && !interaction.empty())
-      friction.emplace(interaction, outline_friction(tokens));
   }
-  if (const auto it = friction.find(pair_interaction); it != friction.end())
-    out.friction_coefficient = it->second;
-  out.contact_formulation = node_to_surface && !surface_to_surface ? "node_to_segment" : "mortar";
   return out;
 }
 } // namespace feticon::io

@@ -5,7 +5,6 @@
 #include "mesh/gmsh_precheck.hpp"
 #include "mesh/gmsh_reader.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <map>
 #include <algorithm>
@@ -219,28 +218,6 @@ bool is_deck_file(const std::filesystem::path& path)
 
 namespace
 {
-/// A number as settings text: the shortest that reads back as the same double (0.3, not
-/// 0.29999999999999999).
-std::string setting_text(double value)
-{
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
-
-/// The deck's *FRICTION (Coulomb's mu of the contact pair's interaction) as the friction
-/// settings, for each key that no problem file or --set gave: mu = 0 is frictionless, the
-/// default.
-void settings_of_deck_friction(Settings& settings, const DeckOutline& outline, const std::string& source)
-{
-  if (outline.friction_coefficient <= 0)
-    return;
-  if (!settings.given("contact.friction.model"))
-    settings.set("contact.friction.model", "coulomb", source + ": *FRICTION");
-  if (!settings.given("contact.friction.coefficient"))
-    settings.set("contact.friction.coefficient", setting_text(outline.friction_coefficient), source + ": *FRICTION");
-}
-
 /// The settings a deck implies, below the overrides: `feticon run model.inp`.
 void settings_of_deck(ProblemFile& file, const std::filesystem::path& path)
 {
@@ -253,20 +230,20 @@ void settings_of_deck(ProblemFile& file, const std::filesystem::path& path)
   const std::string source = path.string();
   file.settings.set("displacements", outline.nlgeom ? "large" : "small", source);
   file.settings.set("load_steps", std::to_string(outline.increments), source);
-  file.settings.set("contact.formulation", outline.contact_formulation, source);
-  settings_of_deck_friction(file.settings, outline, source);
 }
 
 /// The friction of a contact pair of the problem file, `friction: {model: coulomb, coefficient:
-/// 0.3}` (or tresca with slip_bound, or none), as setting key -> value; empty if it has none.
-std::map<std::string, std::string> pair_friction(const YAML::Node& pair, const std::string& key, const Reader& r)
+/// 0.3}` (or tresca with slip_bound, or none); none if it has none.
+fem::Friction pair_friction(const YAML::Node& pair, const std::string& key, const Reader& r)
 {
-  std::map<std::string, std::string> out;
+  fem::Friction out;
   if (!pair.IsMap() || !pair["friction"])
     return out;
   const YAML::Node friction = pair["friction"];
   r.only_keys(friction, key, {"model", "coefficient", "slip_bound"});
   const std::string model = r.text(friction["model"], key + ".model");
+  FETICON_CHECK(model == "none" || model == "coulomb" || model == "tresca",
+                r.source << ": " << key << ".model = '" << model << "' must be one of: none, tresca, coulomb");
   const std::map<std::string, std::string> needs = {{"coulomb", "coefficient"}, {"tresca", "slip_bound"}};
   for (const char* number : {"coefficient", "slip_bound"})
   {
@@ -276,40 +253,50 @@ std::map<std::string, std::string> pair_friction(const YAML::Node& pair, const s
                   r.source << ": " << key << "." << number << " does not belong to model " << model
                            << " (coulomb takes coefficient, tresca slip_bound, none neither)");
     FETICON_CHECK(friction[number] || !wanted, r.source << ": " << key << " (model " << model << ") needs " << number);
-    if (friction[number])
-      out["contact.friction." + std::string(number)] = r.text(friction[number], key + "." + number);
   }
-  out["contact.friction.model"] = model;
+  out.model = model == "coulomb" ? fem::FrictionModel::coulomb
+      : model == "tresca"        ? fem::FrictionModel::tresca
+                                 : fem::FrictionModel::none;
+  if (friction["coefficient"])
+    out.coefficient = r.number(friction["coefficient"], key + ".coefficient");
+  if (friction["slip_bound"])
+    out.slip_bound = r.number(friction["slip_bound"], key + ".slip_bound");
+  FETICON_CHECK(out.coefficient >= 0 && out.coefficient <= 100 && out.slip_bound >= 0 && std::isfinite(out.slip_bound),
+                r.source << ": " << key << ": coefficient must be in [0, 100] and slip_bound a finite value >= 0");
   return out;
 }
 
-/// The contact pairs' friction as the settings contact.friction.*, for each key that no setting
-/// of the file gave (--set comes after and wins). The solver takes one friction law for every
-/// pair, so the pairs must give the same one, or none at all.
-void settings_of_pair_friction(ProblemFile& file)
+/// The problem file's `contact` list: each pair's face sets, friction and formulation.
+std::vector<fem::ContactPairNames> contact_pairs(const YAML::Node& contact, const mesh::Mesh& mesh, const Reader& r)
 {
-  const YAML::Node contact = file.root["contact"];
-  if (!contact || !contact.IsSequence())
-    return; // build_custom_problem says what is wrong
-  const Reader r{file.source};
-  std::map<std::string, std::string> law;
+  FETICON_CHECK(contact.IsSequence(), r.source << ": contact must be a list of pairs");
+  std::vector<fem::ContactPairNames> out;
   for (size_t i = 0; i < contact.size(); ++i)
   {
-    const std::string key = "contact." + std::to_string(i) + ".friction";
-    const std::map<std::string, std::string> mine = pair_friction(contact[i], key, r);
-    const char* what = mine == law ? nullptr
-        : mine.empty()             ? " is not given, but contact.0.friction is"
-        : law.empty()              ? " is given, but contact.0.friction is not"
-                                   : " differs from contact.0.friction";
-    FETICON_CHECK(i == 0 || !what,
-                  file.source << ": " << key << what
-                              << "; feticon's friction law holds for every contact pair: give the "
-                                 "same friction on each");
-    law = mine;
+    const YAML::Node c = contact[i];
+    const std::string key = "contact." + std::to_string(i);
+    r.only_keys(c, key, {"slave", "master", "friction", "formulation"});
+    fem::ContactPairNames pair{r.text(c["slave"], key + ".slave"), r.text(c["master"], key + ".master")};
+    pair.interaction.friction = pair_friction(c, key + ".friction", r);
+    if (c["formulation"])
+    {
+      const std::string formulation = r.text(c["formulation"], key + ".formulation");
+      FETICON_CHECK(formulation == "mortar" || formulation == "node_to_segment",
+                    r.source << ": " << key << ".formulation = '" << formulation
+                             << "' must be one of: node_to_segment, mortar");
+      pair.interaction.formulation =
+          formulation == "mortar" ? fem::ContactFormulation::mortar : fem::ContactFormulation::node_to_segment;
+    }
+    for (const std::string& s : {pair.slave, pair.master})
+      FETICON_CHECK(mesh.face_sets.count(s),
+                    r.source << ": " << key << ": no face set '" << s
+                             << "' in the mesh; it has: " << names_of(mesh.face_sets));
+    FETICON_CHECK(pair.slave != pair.master,
+                  r.source << ": " << key << ": slave and master are the same face set '" << pair.slave
+                           << "'; a contact pair needs two surfaces");
+    out.push_back(pair);
   }
-  for (const auto& [k, v] : law)
-    if (!file.settings.given(k))
-      file.settings.set(k, v, file.source + ": contact.0.friction");
+  return out;
 }
 
 /// The tree of a YAML problem file, checked: a regular file of settings size, valid YAML, a
@@ -415,7 +402,6 @@ ProblemFile load_problem_file(const std::filesystem::path& path, const std::vect
     for (const auto& [k, v] : scalars)
       file.settings.set(k, v, overridden.count(k) ? std::string("--set") : file.source);
   }
-  settings_of_pair_friction(file);
   for (const auto& [k, v] : section_settings)
     file.settings.set(k, v, "--set");
   // mesh.file naming a deck: the deck gives the whole model.
@@ -428,7 +414,6 @@ ProblemFile load_problem_file(const std::filesystem::path& path, const std::vect
       FETICON_CHECK(!file.root[section],
                     file.source << ": section '" << section << "' is not read when mesh.file is "
                                 << "an input deck: the deck gives the whole model");
-    settings_of_deck_friction(file.settings, file.deck_outline, file.deck.string());
   }
   // The structured sections describe a custom problem; a built-in one would ignore them.
   if (file.settings.text("problem") != "custom")
@@ -563,24 +548,7 @@ fem::Problem build_custom_problem(const ProblemFile& file)
     }
   }
   if (root["contact"])
-  {
-    FETICON_CHECK(root["contact"].IsSequence(), file.source << ": contact must be a list of pairs");
-    for (size_t i = 0; i < root["contact"].size(); ++i)
-    {
-      const YAML::Node c = root["contact"][i];
-      const std::string key = "contact." + std::to_string(i);
-      r.only_keys(c, key, {"slave", "master", "friction"}); // friction: settings_of_pair_friction
-      fem::ContactPairNames pair{r.text(c["slave"], key + ".slave"), r.text(c["master"], key + ".master")};
-      for (const std::string& s : {pair.slave, pair.master})
-        FETICON_CHECK(p.mesh.face_sets.count(s),
-                      file.source << ": " << key << ": no face set '" << s
-                                  << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
-      FETICON_CHECK(pair.slave != pair.master,
-                    file.source << ": " << key << ": slave and master are the same face set '" << pair.slave
-                                << "'; a contact pair needs two surfaces");
-      p.contacts.push_back(pair);
-    }
-  }
+    p.contacts = contact_pairs(root["contact"], p.mesh, r);
   p.validate();
   return p;
 }

@@ -20,12 +20,15 @@ std::vector<SettingSpec> contact_specs()
   // clang-format off
   return {
       {"contact.formulation", "mortar", "contact rows: node_to_segment (slave node on master "
-                                                 "face) or mortar (dual mortar, segment-to-segment)",
+                                                 "face) or mortar (dual mortar, segment-to-segment); where "
+                                                 "given, for every pair, else each pair's own (a deck's "
+                                                 "pair TYPE, a problem file pair's formulation; mortar)",
        Type::text, {"node_to_segment", "mortar"}, 0, 0, false},
       {"contact.friction.model", "none", "friction on the contact pair (FETI solver): none, tresca (the "
        "tangential traction bounded by contact.friction.slip_bound) or coulomb (bounded by "
-       "contact.friction.coefficient times the contact pressure); an input deck's *FRICTION or a problem "
-       "file's contact pair (friction: {model: coulomb, coefficient: 0.3}) sets the keys not given otherwise",
+       "contact.friction.coefficient times the contact pressure); where given, for every pair, else each "
+       "pair's own (an input deck's *FRICTION, a problem file pair's friction: {model: coulomb, coefficient: "
+       "0.3}); likewise each of the two numbers below",
        Type::text, {"none", "tresca", "coulomb"}, 0, 0, false},
       {"contact.friction.coefficient", "0", "Coulomb's friction coefficient mu", Type::number, {}, 0, 100, false},
       {"contact.friction.slip_bound", "0", "Tresca's slip bound g, the largest tangential traction (Pa)",
@@ -42,6 +45,15 @@ std::vector<SettingSpec> contact_specs()
        "penalty leaves ||G lambda - e|| / ||e|| above this", Type::number, {}, 0, 1, true},
   };
   // clang-format on
+}
+
+/// contact_specs with the keys that override the contact pairs' own interactions marked.
+std::vector<SettingSpec> contact_specs_marked()
+{
+  std::vector<SettingSpec> specs = contact_specs();
+  for (SettingSpec& spec : specs)
+    spec.overrides_model = spec.key == "contact.formulation" || spec.key.starts_with("contact.friction.");
+  return specs;
 }
 
 std::vector<SettingSpec> make_specs()
@@ -127,7 +139,7 @@ std::vector<SettingSpec> make_specs()
        Type::boolean, {}, 0, 0, false},
   };
   // clang-format on
-  const std::vector<SettingSpec> contact = contact_specs(); // listed before eps_n
+  const std::vector<SettingSpec> contact = contact_specs_marked(); // listed before eps_n
   specs.insert(std::find_if(specs.begin(), specs.end(), [](const SettingSpec& s) { return s.key == "eps_n"; }),
                contact.begin(), contact.end());
   return specs;
@@ -259,7 +271,9 @@ std::string Settings::to_yaml() const
   os << "# effective settings of this run (defaults, problem file, --set overrides)\n";
   for (const auto& s : specs())
     if (_values.at(s.key).empty())
-      os << "# " << s.key << ": not given\n"; // an optional key; `key:` would read back as null
+      os << "# " << s.key << ": not given\n";    // an optional key; `key:` would read back as null
+    else if (s.overrides_model && !given(s.key)) // given, it would override the model's own
+      os << "# " << s.key << ": " << _values.at(s.key) << " (not given: each contact pair's own)\n";
     else
       os << s.key << ": " << _values.at(s.key) << '\n';
   return os.str();

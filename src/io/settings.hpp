@@ -34,6 +34,9 @@ struct SettingSpec
   bool max_exclusive = false;
   /// For an integer: "auto" is also a value (the run chooses; Settings::is_auto).
   bool or_auto = false;
+  /// The key overrides the model's own value (each contact pair's interaction) only where it
+  /// is given; to_yaml writes it commented out otherwise, so that a rerun keeps the model's.
+  bool overrides_model = false;
 };
 
 /// The keys of a run at their values. The table is the solver's and the outputs' keys

@@ -49,7 +49,7 @@ ReducedBondedSystem reduce_bonded(const fem::Problem& problem, const SolverSetti
 
   contact::ContactOptions options;
   options.search_distance = settings.search_distance;
-  options.formulation = settings.formulation;
+  options.formulation = settings.interaction(problem.contacts[0]).formulation;
   out.constraints = contact::build_contact_constraints(
       problem.mesh, zero, {problem.contacts[0].slave, problem.contacts[0].master, problem.contacts[0].slave_nodes},
       options);

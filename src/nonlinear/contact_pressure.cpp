@@ -17,12 +17,45 @@
 
 namespace feticon::nonlinear
 {
-double total_normal_force(const ContactSolution& solution)
+double total_normal_force(const ContactSolution& solution, int32_t pair)
 {
   double total = 0;
   for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)
-    total += solution.contact_lambda(i) / solution.constraints.row_norm[i] * solution.constraints.master_share[i];
+    if (pair < 0 || solution.constraints.pair[i] == pair)
+      total += solution.contact_lambda(i) / solution.constraints.row_norm[i] * solution.constraints.master_share[i];
   return total;
+}
+
+ContactSolution pair_solution(const ContactSolution& solution, int32_t p)
+{
+  ContactSolution out;
+  out.u = solution.u;
+  const contact::ContactConstraints& rows = solution.constraints;
+  out.constraints = contact::pair_rows(rows, p);
+  out.contact_lambda.resize(out.constraints.n_rows());
+  for (la::Index i = 0, k = 0; i < rows.n_rows(); ++i)
+    if (rows.pair[i] == p)
+      out.contact_lambda(k++) = solution.contact_lambda(i);
+  const contact::TangentialRows& t = solution.tangential;
+  out.tangential.n_tangents = t.n_tangents;
+  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<double> lambda;
+  for (int64_t r = 0; r < t.n_rows(); ++r)
+    if (t.pair[r] == p)
+    {
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(t.B, r); it; ++it)
+        triplets.emplace_back(static_cast<int>(out.tangential.n_rows()), static_cast<int>(it.col()), it.value());
+      out.tangential.tangent.push_back(t.tangent[r]);
+      out.tangential.slave_node.push_back(t.slave_node[r]);
+      out.tangential.pair.push_back(p);
+      out.tangential.held.push_back(t.held[r]);
+      if (r < solution.tangential_lambda.size())
+        lambda.push_back(solution.tangential_lambda(r));
+    }
+  out.tangential.B.resize(out.tangential.n_rows(), t.B.cols());
+  out.tangential.B.setFromTriplets(triplets.begin(), triplets.end());
+  out.tangential_lambda = Eigen::Map<const la::Vector>(lambda.data(), static_cast<la::Index>(lambda.size()));
+  return out;
 }
 
 namespace
@@ -39,7 +72,8 @@ mesh::Mesh pressure_surface(const fem::Problem& problem, const la::Vector& u, fe
 
 } // namespace
 
-la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& u, fem::Kinematics kinematics)
+la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& u, fem::Kinematics kinematics,
+                                 int32_t pair)
 {
   // The x-component of the consistent load of a unit x-traction, on the surface the kinematics
   // has: the small-strain model has no deformed surface (dividing by it put the surface strain,
@@ -48,7 +82,7 @@ la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& 
   // Quadratic faces' consistent loads vanish at corners (tri6): theirs are lumped from linear
   // sub-facets (contact/face_geometry.hpp), so that every slave node has a positive area.
   std::vector<mesh::Face> quad4, others;
-  for (const mesh::Face& face : surface.face_set(problem.contacts[0].slave))
+  for (const mesh::Face& face : surface.face_set(problem.contacts[pair].slave))
     (face.kind == mesh::FaceKind::quad4 ? quad4 : others).push_back(face);
   la::Vector load = la::Vector::Zero(3 * surface.n_nodes());
   fem::add_face_traction(surface, quad4, Eigen::Vector3d(1, 0, 0), load);
@@ -98,19 +132,22 @@ void average_quadratic_face_pressures(const mesh::Mesh& surface, const std::vect
 }
 } // namespace
 
-la::Vector slave_nodal_pressures(const fem::Problem& problem, const ContactSolution& solution,
-                                 fem::Kinematics kinematics)
+la::Vector slave_nodal_pressures(const fem::Problem& problem, const ContactSolution& all_pairs,
+                                 fem::Kinematics kinematics, int32_t pair)
 {
+  const std::optional<ContactSolution> one =
+      problem.contacts.size() > 1 ? std::optional(pair_solution(all_pairs, pair)) : std::nullopt;
+  const ContactSolution& solution = one ? *one : all_pairs;
   const auto& rows = solution.constraints;
   la::Vector force = la::Vector::Zero(problem.mesh.n_nodes());
   for (size_t i = 0; i < rows.slave_node.size(); ++i)
     force(rows.slave_node[i]) += solution.contact_lambda(static_cast<la::Index>(i)) / rows.row_norm[i];
-  const la::Vector areas = slave_tributary_areas(problem, solution.u, kinematics);
+  const la::Vector areas = slave_tributary_areas(problem, solution.u, kinematics, pair);
   la::Vector pressure = la::Vector::Zero(problem.mesh.n_nodes());
   for (int32_t n = 0; n < problem.mesh.n_nodes(); ++n)
     pressure(n) = areas(n) > 0 ? force(n) / areas(n) : 0.0;
   std::vector<mesh::Face> quadratic;
-  for (const mesh::Face& face : problem.mesh.face_set(problem.contacts[0].slave))
+  for (const mesh::Face& face : problem.mesh.face_set(problem.contacts[pair].slave))
     if (face.kind == mesh::FaceKind::tri6 || face.kind == mesh::FaceKind::quad8)
       quadratic.push_back(face);
   if (!quadratic.empty() && rows.formulation == contact::ContactFormulation::mortar)
@@ -147,13 +184,17 @@ std::unordered_map<int32_t, Eigen::Vector3d> dual_traction_shear(const ContactSo
 }
 } // namespace
 
-std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, const ContactSolution& solution,
-                                                fem::Kinematics kinematics, const Friction& friction)
+std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, const ContactSolution& all_pairs,
+                                                fem::Kinematics kinematics, const Friction& friction,
+                                                int32_t pair_index)
 {
+  const std::optional<ContactSolution> one =
+      problem.contacts.size() > 1 ? std::optional(pair_solution(all_pairs, pair_index)) : std::nullopt;
+  const ContactSolution& solution = one ? *one : all_pairs;
   const auto& rows = solution.constraints;
   FETICON_CHECK(static_cast<la::Index>(rows.slave_node.size()) == solution.contact_lambda.size(),
                 "contact multipliers do not match the contact rows");
-  const la::Vector tributary = slave_tributary_areas(problem, solution.u, kinematics);
+  const la::Vector tributary = slave_tributary_areas(problem, solution.u, kinematics, pair_index);
 
   const auto stresses = fem::nodal_average(
       problem.mesh, fem::cell_cauchy_stresses(problem.mesh, solution.u, problem.materials, kinematics));
@@ -170,7 +211,7 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
   };
   std::map<std::tuple<long, long, long, int32_t>, PressureSample> by_x;
   std::map<std::tuple<long, long, long, int32_t>, int> nodes_in_sample, rows_in_sample;
-  const fem::ContactPairNames& pair = problem.contacts[0];
+  const fem::ContactPairNames& pair = problem.contacts[pair_index];
   for (int32_t node : contact::slave_nodes(problem.mesh, {pair.slave, pair.master, pair.slave_nodes}))
   {
     const auto key = key_of(node);
@@ -214,13 +255,14 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
   if (!plane_strain && std::ranges::any_of(problem.mesh.face_set(pair.slave), [](const mesh::Face& f) {
         return f.kind == mesh::FaceKind::tri6 || f.kind == mesh::FaceKind::quad8;
       }))
-    quadratic_pressure = slave_nodal_pressures(problem, solution, kinematics);
+    quadratic_pressure = slave_nodal_pressures(problem, solution, kinematics, pair_index);
   std::unordered_map<int32_t, Eigen::Vector3d> dual_shear;
   if (quadratic_pressure && rows.formulation == contact::ContactFormulation::mortar)
     dual_shear = dual_traction_shear(solution);
   std::vector<PressureSample> out;
   for (auto& [key, s] : by_x)
   {
+    s.pair = pair_index;
     s.deformed_x /= nodes_in_sample[key];
     s.deformed_y /= nodes_in_sample[key];
     if (rows_in_sample[key] > 0)

@@ -18,8 +18,9 @@ namespace feticon::nonlinear
 {
 struct PressureSample
 {
-  double x = 0; ///< reference coordinates of the node (of the node line in
-  double y = 0; ///< plane strain, where y and z are those of its first node) (m)
+  int32_t pair = 0; ///< the contact pair (index into fem::Problem::contacts)
+  double x = 0;     ///< reference coordinates of the node (of the node line in
+  double y = 0;     ///< plane strain, where y and z are those of its first node) (m)
   double z = 0;
   double deformed_x = 0;      ///< x + u_x, averaged over the node line in plane strain (m)
   double deformed_y = 0;      ///< y + u_y, likewise (m)
@@ -41,18 +42,20 @@ struct PressureSample
   double shear_analytic = 0;
 };
 
-/// Pressure on the slave surface of pair 0. Plane strain (u_z eliminated): one sample per
-/// node line through the thickness (same reference x), sorted by x. Otherwise one sample
-/// per slave node, sorted by x, then y, then z.
-/// `friction`: the model whose bound tells sliding from sticking samples.
+/// Pressure on the slave surface of pair `pair` (an index into problem.contacts). Plane
+/// strain (u_z eliminated): one sample per node line through the thickness (same reference
+/// x), sorted by x. Otherwise one sample per slave node, sorted by x, then y, then z.
+/// `friction`: the pair's law, whose bound tells sliding from sticking samples.
 std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, const ContactSolution& solution,
-                                                fem::Kinematics kinematics, const Friction& friction = {});
+                                                fem::Kinematics kinematics, const Friction& friction = {},
+                                                int32_t pair = 0);
 
-/// Tributary area integral(N_a dA) of every mesh node on the slave surface of pair 0 (m^2;
+/// Tributary area integral(N_a dA) of every mesh node on the slave surface of pair `pair` (m^2;
 /// 0 off it): reference surface with linear kinematics, current one (X + u) otherwise.
-la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& u, fem::Kinematics kinematics);
+la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& u, fem::Kinematics kinematics,
+                                 int32_t pair = 0);
 
-/// Contact pressure at every mesh node of the slave surface of pair 0 (Pa; 0 off it), on the
+/// Contact pressure at every mesh node of the slave surface of pair `pair` (Pa; 0 off it), on the
 /// surface of slave_tributary_areas. Nodes of linear faces: normal force over tributary area.
 /// Nodes of quadratic faces (tri6, quad8), whose forces are near consistent nodal loads (a
 /// uniform pressure's are zero at a tri6's corners, A/3 at its midsides), which force over area
@@ -62,9 +65,14 @@ la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& 
 /// exactly; the L2 projection M p = f, tried first, blew the corners' small forces up to 2.5 p0
 /// on the tet10 sphere (docs/elements.md).
 la::Vector slave_nodal_pressures(const fem::Problem& problem, const ContactSolution& solution,
-                                 fem::Kinematics kinematics);
+                                 fem::Kinematics kinematics, int32_t pair = 0);
 
-/// Total normal contact force (N): sum of lambda_i / ||b_i||.
-double total_normal_force(const ContactSolution& solution);
+/// Total normal contact force (N): sum of lambda_i / ||b_i||, over every pair or (pair >= 0)
+/// over the rows of that pair.
+double total_normal_force(const ContactSolution& solution, int32_t pair = -1);
+
+/// The contact rows, multipliers and tangential rows of `solution` that belong to pair p, with
+/// its displacement: what the outputs of one pair read.
+ContactSolution pair_solution(const ContactSolution& solution, int32_t p);
 
 } // namespace feticon::nonlinear

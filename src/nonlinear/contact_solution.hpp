@@ -57,7 +57,9 @@ struct RestartState
   /// row id; SMALBE-M's coarse multiplier, M and rho (empty/0 for other methods); ||PFP||.
   qp::QpState dual;
   std::vector<int32_t> contact_slave; ///< slave node of each contact multiplier
-  std::vector<double> contact_lambda; ///< contact multiplier by slave node
+  /// Contact pair of each contact multiplier; empty: all pair 0 (a checkpoint of one pair).
+  std::vector<int32_t> contact_pair;
+  std::vector<double> contact_lambda; ///< contact multiplier by (pair, slave node)
   /// With friction: two tangential multipliers per contact_slave entry; empty without.
   std::vector<double> contact_tangential;
   /// The Dirichlet preconditioner's boundary DOFs (3 node + component) once contact rows made

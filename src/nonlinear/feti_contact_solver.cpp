@@ -24,6 +24,7 @@
 #include <map>
 #include <optional>
 #include <functional>
+#include <iterator>
 #include <set>
 #include <utility>
 #include <cstdio>
@@ -263,6 +264,10 @@ private:
   static constexpr double reach_fraction = 0.25;
   /// The rows of the Schur boundary's reach at u (global), for the large-displacement loop.
   contact::ContactConstraints reach_rows(const la::Vector& u_global) const;
+  /// Every pair's rows at u (global) with `options` and the pair's formulation, pair after pair.
+  contact::ContactConstraints pair_rows_at(const la::Vector& u_global, contact::ContactOptions options) const;
+  /// The master face set of each pair, for LinearContactRows.
+  std::vector<std::string> master_sets() const;
   /// From rest (u = 0), the first outer iteration's rows: `near` and the rows of the reach that
   /// the answer of a rough QP on `near` (rtol rough_rtol) comes within the band of at rest
   /// (LinearContactRows::expand). The rows near a first touch are a vanishing share of the
@@ -318,7 +323,7 @@ private:
                                                 const contact::TangentialRows& tangential) const;
   /// Coulomb: whether the normal forces, and so the slip bounds, changed by at most the
   /// displacement tolerance in the last QP (always true otherwise).
-  bool friction_settled(const std::map<int32_t, double>& normal_before,
+  bool friction_settled(const std::map<int64_t, double>& normal_before,
                         const contact::TangentialRows& tangential) const;
   /// The warning of a step that ends at the floor of the QP's equilibrium error.
   std::string floor_message(const OuterIteration& it, double du_max, double feasibility_error) const;
@@ -343,7 +348,10 @@ private:
   /// K_0. The residual's scale and the contact set's threshold do not go below it, so that an
   /// unloaded model, whose loads, forces and multipliers are all round-off, converges.
   double _force_floor = 0;
-  contact::ContactPair _pair;
+  /// Every contact pair, and the interaction each is solved with (SolverSettings::interaction).
+  std::vector<contact::ContactPair> _pairs;
+  std::vector<fem::ContactInteraction> _interactions;
+  bool _friction = false; ///< some pair has friction: every contact row gets its tangential rows
   contact::ContactOptions _contact_options;
   /// A linear run's rows: the candidates at the reference configuration (found at set-up,
   /// also for the Schur boundary) and the subset near contact that its QPs get.
@@ -356,7 +364,7 @@ private:
   /// with the full gradient of the bound multipliers' coarse part and rebuilds it over ~10
   /// outer iterations (docs/measurements.md: it halves the MPRGP steps of large Hertz).
   dual::MultiplierMemory _multipliers;
-  std::set<int32_t> _previous_active; ///< slave nodes of the active rows, last iteration
+  std::set<int64_t> _previous_active; ///< keys (pair, slave node) of the active rows, last iteration
   double _previous_residual = 0;      ///< the relative residual of the last outer iteration
 
   // The current load step.
@@ -375,7 +383,7 @@ private:
   {
     la::Vector u;
     dual::MultiplierMemory multipliers;
-    std::set<int32_t> active;
+    std::set<int64_t> active;
   } _step_start;
   /// A cutback restored u after K_M(u) was refreshed at a later u (newton.stiffness =
   /// iteration): the next outer iteration refreshes it at the restored u.
@@ -406,9 +414,13 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
     std::sort(_out.owned_cells.begin(), _out.owned_cells.end());
   }
   _u = la::Vector::Zero(_decomp->n_primal());
-  _pair = {problem.contacts[0].slave, problem.contacts[0].master, problem.contacts[0].slave_nodes};
+  for (const fem::ContactPairNames& pair : problem.contacts)
+  {
+    _pairs.push_back({pair.slave, pair.master, pair.slave_nodes});
+    _interactions.push_back(settings.interaction(pair));
+    _friction = _friction || _interactions.back().friction.model != FrictionModel::none;
+  }
   _contact_options.search_distance = settings.search_distance;
-  _contact_options.formulation = settings.formulation;
   const bool dirichlet = settings.dual.preconditioner == dual::DualPreconditioner::dirichlet;
   if (dirichlet || _linear)
   {
@@ -418,13 +430,11 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
     // (outer_iteration).
     ScopedTimer t(timers, "contact search");
     const la::Vector zero = la::Vector::Zero(3 * problem.mesh.n_nodes());
-    contact::ContactConstraints reach =
-        _linear ? contact::build_contact_constraints(problem.mesh, zero, _pair, _contact_options) : reach_rows(zero);
+    contact::ContactConstraints reach = _linear ? pair_rows_at(zero, _contact_options) : reach_rows(zero);
     if (dirichlet)
-      _schur_boundary =
-          schur_boundary_dofs(problem, _dirichlet, &reach, !_linear || settings.friction.model != FrictionModel::none);
+      _schur_boundary = schur_boundary_dofs(problem, _dirichlet, &reach, !_linear || _friction);
     if (_linear)
-      _linear_rows.emplace(problem.mesh, _pair.master, std::move(reach), settings.linear_contact_band);
+      _linear_rows.emplace(problem.mesh, master_sets(), std::move(reach), settings.linear_contact_band);
   }
   update_stiffness(); // K_0 and R(X), kept for the whole run (modified Newton)
   for (int stage = 1; stage <= _history.n_stages(); ++stage)
@@ -457,7 +467,27 @@ contact::ContactConstraints FetiContactSolve::reach_rows(const la::Vector& u_glo
 {
   contact::ContactOptions options = _contact_options;
   options.near_contact_fraction = reach_fraction;
-  return contact::build_contact_constraints(_problem.mesh, u_global, _pair, options);
+  return pair_rows_at(u_global, options);
+}
+
+contact::ContactConstraints FetiContactSolve::pair_rows_at(const la::Vector& u_global,
+                                                           contact::ContactOptions options) const
+{
+  std::vector<contact::ContactConstraints> parts;
+  for (size_t p = 0; p < _pairs.size(); ++p)
+  {
+    options.formulation = _interactions[p].formulation;
+    parts.push_back(contact::build_contact_constraints(_problem.mesh, u_global, _pairs[p], options));
+  }
+  return contact::concatenate_pairs(std::move(parts), 3 * static_cast<la::Index>(_problem.mesh.n_nodes()));
+}
+
+std::vector<std::string> FetiContactSolve::master_sets() const
+{
+  std::vector<std::string> out;
+  for (const contact::ContactPair& pair : _pairs)
+    out.push_back(pair.master);
+  return out;
 }
 
 contact::ContactConstraints FetiContactSolve::rows_reached_from_rest(contact::ContactConstraints near,
@@ -467,7 +497,7 @@ contact::ContactConstraints FetiContactSolve::rows_reached_from_rest(contact::Co
   const decomposition::ConstraintRows rows = dual_rows(near);
   const std::unique_ptr<dual::FetiOperators> feti = coarse_problem(rows);
   const la::Vector c = constraint_values(*feti, rows);
-  const qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, near.slave_node, 0);
+  const qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, near.keys(), 0);
   dual::DualPenaltyOptions options = qp_options(1);
   options.rtol = std::max(options.rtol, rough_rtol);
   dual::DualSolution rough;
@@ -478,9 +508,9 @@ contact::ContactConstraints FetiContactSolve::rows_reached_from_rest(contact::Co
   counters += rough.report;
   if (!rough.report.converged)
     return near;
-  _multipliers.remember(*feti, rough, _n_equality, near.slave_node);
+  _multipliers.remember(*feti, rough, _n_equality, near.keys());
   // Candidates: the reach, the rows the Schur boundary was made for.
-  LinearContactRows reached(_problem.mesh, _pair.master, reach_rows(u_global), near_contact_fraction);
+  LinearContactRows reached(_problem.mesh, master_sets(), reach_rows(u_global), near_contact_fraction);
   if (!reached.expand(_decomp->gather_mean(_decomp->gather_stacked(rough.u))))
     return near;
   return reached.selected_rows(la::Vector());
@@ -557,8 +587,16 @@ int FetiContactSolve::restore(const ContactSolution& previous)
                                                        << ", this run's at " << _history.load_factor(r.completed_steps)
                                                        << " (different load_steps or load stages?)");
   _u = _decomp->owned_slice(r.u_stacked);
-  _multipliers.restore(r.dual, r.contact_slave, r.contact_lambda, r.contact_tangential);
-  _previous_active = _multipliers.active_slave_nodes(_force_floor);
+  std::vector<int64_t> keys;
+  for (size_t j = 0; j < r.contact_slave.size(); ++j)
+  {
+    FETICON_CHECK(r.contact_pair.empty() || (r.contact_pair[j] >= 0 && r.contact_pair[j] < std::ssize(_pairs)),
+                  "restart: the checkpoint names contact pair " << r.contact_pair[j] << ", this problem has "
+                                                                << _pairs.size() << " (another model?)");
+    keys.push_back(contact::contact_key(r.contact_pair.empty() ? 0 : r.contact_pair[j], r.contact_slave[j]));
+  }
+  _multipliers.restore(r.dual, keys, r.contact_lambda, r.contact_tangential);
+  _previous_active = _multipliers.active_keys(_force_floor);
   if (!r.schur_boundary.empty() && _schur) // the boundary had grown: its operators as they were
   {
     for (const int32_t dof : r.schur_boundary)
@@ -675,7 +713,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   const la::Vector u_global = _decomp->gather_mean(_decomp->gather_stacked(_u));
   contact::ContactConstraints contact_rows = search_contact(u_global);
   qp::QpCounters rough_counters;
-  if (_settings.first_rows_reached && !_linear && k == 1 && u_global.isZero(0.0))
+  if (_settings.first_rows_reached && !_linear && k == 1 && u_global.isZero(0.0) && contact_rows.n_rows() > 0)
     contact_rows = rows_reached_from_rest(std::move(contact_rows), u_global, rough_counters);
   if (_schur && !covers(_problem, _schur_boundary, contact_rows))
     grow_schur_boundary(u_global, where);
@@ -686,9 +724,10 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   const std::unique_ptr<dual::FetiOperators> feti = coarse_problem(rows);
   const la::Vector c = constraint_values(*feti, rows);
   const std::optional<dual::FrictionRows> friction = slip_bounds(*feti, contact_rows, tangential);
-  const qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, contact_rows.slave_node, tangential.n_tangents);
+  const std::vector<int64_t> keys = contact_rows.keys();
+  const qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, keys, tangential.n_tangents);
   const dual::DualPenaltyOptions dual_options = qp_options(k);
-  const std::map<int32_t, double> normal_before = _multipliers.contact();
+  const std::map<int64_t, double> normal_before = _multipliers.contact();
   dual::DualSolution solution;
   {
     ScopedTimer t(_timers, "dual solve (MPRGP)");
@@ -696,11 +735,11 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
         dual::solve_contact_dual(*feti, c, residual, _n_equality, dual_options, warm, friction ? &*friction : nullptr);
   }
   _u += solution.u;
-  const la::Vector contact_lambda = _multipliers.remember(*feti, solution, _n_equality, contact_rows.slave_node,
-                                                          tangential.n_tangents, &_out.tangential_lambda);
+  const la::Vector contact_lambda =
+      _multipliers.remember(*feti, solution, _n_equality, keys, tangential.n_tangents, &_out.tangential_lambda);
   const bool slip_bound_settled = friction_settled(normal_before, tangential);
   _out.tangential = std::move(tangential);
-  std::set<int32_t> active = _multipliers.active_slave_nodes(_force_floor);
+  std::set<int64_t> active = _multipliers.active_keys(_force_floor);
 
   const Correction correction = measure_iteration(*feti, solution, it);
   it.qp += rough_counters;
@@ -751,7 +790,7 @@ contact::TangentialRows FetiContactSolve::friction_rows(const contact::ContactCo
                                                         const la::Vector& u_global,
                                                         decomposition::ConstraintRows& rows) const
 {
-  if (_settings.friction.model == FrictionModel::none)
+  if (!_friction)
     return {};
   contact::TangentialRows tangential =
       contact::build_tangential_rows(contact_rows, _problem.eliminated, _dirichlet.dofs);
@@ -772,10 +811,11 @@ std::optional<dual::FrictionRows> FetiContactSolve::slip_bounds(const dual::Feti
   // Coulomb's bound is mu times the normal force of the last QP; the first QP of a run has
   // none and sticks everywhere (infinite bound): without friction, or with bound 0, a body
   // that only friction holds along the interface would be free. Tresca's g acts where the last
-  // QP had contact (everywhere in the first), not on rows whose bodies are apart.
-  const Friction& friction = _settings.friction;
+  // QP had contact (everywhere in the first), not on rows whose bodies are apart. A pair
+  // without friction has the bound 0 (where another pair has friction, its rows have
+  // tangential rows too).
   const bool first_qp = _multipliers.contact().empty();
-  const std::set<int32_t> touching = _multipliers.active_slave_nodes(_force_floor);
+  const std::set<int64_t> touching = _multipliers.active_keys(_force_floor);
   const int64_t n_contact = contact_rows.n_rows();
   dual::FrictionRows out{n_contact, la::Vector::Zero(feti.n_dual()), tangential.n_tangents,
                          std::vector<char>(feti.n_dual(), 0)};
@@ -786,35 +826,47 @@ std::optional<dual::FrictionRows> FetiContactSolve::slip_bounds(const dual::Feti
       continue;
     out.held[i] = tangential.held[j];
     const int64_t row = j / tangential.n_tangents;
+    const Friction& friction = _interactions[contact_rows.pair[row]].friction;
     if (friction.model == FrictionModel::tresca)
-      out.slip_bound(i) = first_qp || touching.count(contact_rows.slave_node[row])
+      out.slip_bound(i) = first_qp || touching.count(contact_rows.key(row))
           ? friction.slip_bound * contact_rows.slave_area[row] * contact_rows.row_norm[row]
           : 0.0;
+    else if (friction.model == FrictionModel::none)
+      out.slip_bound(i) = 0;
     else if (first_qp)
       out.slip_bound(i) = std::numeric_limits<double>::infinity();
-    else if (const auto it = _multipliers.contact().find(contact_rows.slave_node[row]);
-             it != _multipliers.contact().end())
+    else if (const auto it = _multipliers.contact().find(contact_rows.key(row)); it != _multipliers.contact().end())
       out.slip_bound(i) = friction.coefficient * std::max(it->second, 0.0);
   }
   return out;
 }
 
-bool FetiContactSolve::friction_settled(const std::map<int32_t, double>& normal_before,
+bool FetiContactSolve::friction_settled(const std::map<int64_t, double>& normal_before,
                                         const contact::TangentialRows& tangential) const
 {
   // Coulomb's fixed point: the bounds mu lambda_N of this QP against those of the next, to the
-  // displacement tolerance (relative); Tresca's: the nodes in contact, which carry its bound.
-  if (_settings.friction.model == FrictionModel::none || tangential.n_tangents == 0)
+  // displacement tolerance (relative); Tresca's: the rows in contact, which carry its bound.
+  // Each over the rows of the pairs with that law.
+  if (!_friction || tangential.n_tangents == 0)
     return true;
   if (normal_before.empty())
     return false; // the QP that starts a run, its bounds on every row
-  if (_settings.friction.model == FrictionModel::tresca)
-    return dual::MultiplierMemory::positive_nodes(normal_before, _force_floor) ==
-        _multipliers.active_slave_nodes(_force_floor);
+  const auto model_of = [&](int64_t key) { return _interactions[contact::key_pair(key)].friction.model; };
+  const auto tresca_only = [&](const std::set<int64_t>& keys) {
+    std::set<int64_t> out;
+    std::ranges::copy_if(keys, std::inserter(out, out.end()),
+                         [&](int64_t key) { return model_of(key) == FrictionModel::tresca; });
+    return out;
+  };
+  if (tresca_only(dual::MultiplierMemory::positive_keys(normal_before, _force_floor)) !=
+      tresca_only(_multipliers.active_keys(_force_floor)))
+    return false;
   double change = 0, size = 0;
-  for (const auto& [node, value] : _multipliers.contact())
+  for (const auto& [key, value] : _multipliers.contact())
   {
-    const auto before = normal_before.find(node);
+    if (model_of(key) != FrictionModel::coulomb)
+      continue;
+    const auto before = normal_before.find(key);
     const double old_value = before == normal_before.end() ? 0.0 : std::max(before->second, 0.0);
     change += std::pow(std::max(value, 0.0) - old_value, 2);
     size += std::pow(std::max(value, 0.0), 2);
@@ -827,7 +879,7 @@ contact::ContactConstraints FetiContactSolve::search_contact(const la::Vector& u
   ScopedTimer t(_timers, "contact search");
   if (_linear_rows)
     return _linear_rows->selected_rows(u_global);
-  return contact::build_contact_constraints(_problem.mesh, u_global, _pair, _contact_options);
+  return pair_rows_at(u_global, _contact_options);
 }
 
 void FetiContactSolve::grow_schur_boundary(const la::Vector& u_global, const std::string& where)
@@ -990,16 +1042,18 @@ void FetiContactSolve::end_load_step(const LoadStep& record)
   r.dual = _multipliers.state();
   r.dual.x = _equality_by_id;
   r.contact_slave.clear();
+  r.contact_pair.clear();
   r.contact_lambda.clear();
   r.contact_tangential.clear();
   const auto& tangential = _multipliers.tangential();
-  for (const auto& [node, value] : _multipliers.contact())
+  for (const auto& [key, value] : _multipliers.contact())
   {
-    r.contact_slave.push_back(node);
+    r.contact_slave.push_back(contact::key_node(key));
+    r.contact_pair.push_back(contact::key_pair(key));
     r.contact_lambda.push_back(value);
     if (!tangential.empty())
     {
-      const auto t = tangential.find(node);
+      const auto t = tangential.find(key);
       r.contact_tangential.push_back(t == tangential.end() ? 0.0 : t->second[0]);
       r.contact_tangential.push_back(t == tangential.end() ? 0.0 : t->second[1]);
     }
@@ -1025,10 +1079,6 @@ ContactSolution solve_feti_contact(const fem::Problem& problem, const SolverSett
                                    const StepCallback& on_step, const ContactSolution* previous, par::Communicator comm)
 {
   problem.validate();
-  FETICON_CHECK(problem.contacts.size() == 1,
-                "the FETI contact solver handles exactly one contact "
-                "pair; the problem has "
-                    << problem.contacts.size());
   const auto run_start = std::chrono::steady_clock::now();
   ContactSolution out;
   FetiContactSolve solve(problem, settings, timers, comm, out);

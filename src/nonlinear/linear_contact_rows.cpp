@@ -21,24 +21,25 @@ la::Vector linearized_gaps(const contact::ContactConstraints& rows, const la::Ve
 }
 } // namespace
 
-LinearContactRows::LinearContactRows(const mesh::Mesh& mesh, const std::string& master,
+LinearContactRows::LinearContactRows(const mesh::Mesh& mesh, const std::vector<std::string>& masters,
                                      contact::ContactConstraints candidates, double band)
     : _candidates(std::move(candidates))
 {
-  const std::vector<mesh::Face>& faces = mesh.face_set(master);
   const auto n = static_cast<size_t>(_candidates.n_rows());
   _band_gap.resize(n);
-  double smallest = std::numeric_limits<double>::infinity();
+  // Each pair's contact level is its own: bodies apart in one pair do not hide another's rows.
+  std::vector<double> smallest(masters.size(), std::numeric_limits<double>::infinity());
   for (size_t i = 0; i < n; ++i)
   {
+    const int32_t p = _candidates.pair[i];
+    const std::vector<mesh::Face>& faces = mesh.face_set(masters[p]);
     _band_gap[i] =
         band * contact::face_size(contact::current_face_geometry(mesh, {}, faces[_candidates.master_face[i]]));
-    smallest = std::min(smallest, _candidates.gap[i]);
+    smallest[p] = std::min(smallest[p], _candidates.gap[i]);
   }
-  const double contact_level = std::max(smallest, 0.0);
   _selected.resize(n);
   for (size_t i = 0; i < n; ++i)
-    _selected[i] = _candidates.gap[i] < contact_level + _band_gap[i];
+    _selected[i] = _candidates.gap[i] < std::max(smallest[_candidates.pair[i]], 0.0) + _band_gap[i];
 }
 
 contact::ContactConstraints LinearContactRows::selected_rows(const la::Vector& u) const { return subset(_selected, u); }
@@ -62,7 +63,7 @@ la::Vector LinearContactRows::all_multipliers(const contact::ContactConstraints&
   la::Vector all = la::Vector::Zero(_candidates.n_rows());
   la::Index k = 0;
   for (la::Index i = 0; i < all.size() && k < lambda.size(); ++i)
-    if (_candidates.slave_node[i] == selected.slave_node[k])
+    if (_candidates.key(i) == selected.key(k))
       all(i) = lambda(k++);
   return all;
 }
@@ -82,7 +83,7 @@ contact::ContactConstraints LinearContactRows::subset(const std::vector<char>& k
   contact::ContactRowBuilder rows;
   for (la::Index i = 0; i < all.n_rows(); ++i)
     if (keep[i])
-      rows.copy(all, i, gap(i));
+      rows.copy(all, i, gap(i), all.pair[i]);
   rows.finish(all.B.cols(), out);
   return out;
 }

@@ -12,7 +12,7 @@
 /// contact rows of a linear run").
 ///
 /// So the QP gets only the rows near contact, g_i < max(g_min, 0) + band d_i (d_i the
-/// longer diagonal of the row's master face), with the linearized gaps c_i - B_i u of the
+/// longer diagonal of the row's master face, g_min the smallest gap of the row's pair), with the linearized gaps c_i - B_i u of the
 /// current u. After each QP, expand(u) checks the other candidates' linearized gaps: if one
 /// is negative (a node would penetrate), every candidate within the band of contact at u is
 /// added and another QP follows; if none is, the answer satisfies every candidate row with a
@@ -29,18 +29,19 @@ namespace feticon::nonlinear
 class LinearContactRows
 {
 public:
-  /// @param candidates rows at the reference configuration (u = 0)
+  /// @param masters    the master face set of each pair (candidates.pair indexes it)
+  /// @param candidates rows at the reference configuration (u = 0), pair after pair
   /// @param band       the near-contact band in master face diagonals
-  LinearContactRows(const mesh::Mesh& mesh, const std::string& master, contact::ContactConstraints candidates,
-                    double band);
+  LinearContactRows(const mesh::Mesh& mesh, const std::vector<std::string>& masters,
+                    contact::ContactConstraints candidates, double band);
 
   /// The selected rows with c = c_ref - B u (u global, 3 per node).
   contact::ContactConstraints selected_rows(const la::Vector& u) const;
   /// Adds the candidates within the band of contact at u if one of the left-out ones has a
   /// negative linearized gap there; returns whether it added any (another QP is needed).
   bool expand(const la::Vector& u);
-  /// Every candidate row (reference gaps), and the multipliers of `selected` (by slave node)
-  /// spread over them, zero on the left-out ones: the output of a converged run.
+  /// Every candidate row (reference gaps), and the multipliers of `selected` (by key)
+  /// spread over them (matched by key), zero on the left-out ones: the output of a converged run.
   const contact::ContactConstraints& candidates() const { return _candidates; }
   la::Vector all_multipliers(const contact::ContactConstraints& selected, const la::Vector& lambda) const;
 

@@ -41,8 +41,8 @@ struct OuterConvergence
   /// @param du_norm, u_norm   ||du||, ||u|| (2-norms of the same distributed vectors)
   /// @param du_max            ||du||_inf
   /// @param residual          the relative residual above
-  OuterVerdict verdict(double du_norm, double u_norm, double du_max, double residual, const std::set<int32_t>& active,
-                       const std::set<int32_t>& previous_active) const
+  OuterVerdict verdict(double du_norm, double u_norm, double du_max, double residual, const std::set<int64_t>& active,
+                       const std::set<int64_t>& previous_active) const
   {
     const bool roundoff = du_max <= roundoff_displacement();
     const bool small_change = du_norm <= displacement_tolerance * u_norm || roundoff;

@@ -70,7 +70,7 @@ PrimalPenaltySolve::PrimalPenaltySolve(const fem::Problem& problem, const Solver
       _u(la::Vector::Zero(_n))
 {
   _contact_options.search_distance = settings.search_distance;
-  _contact_options.formulation = settings.formulation;
+  _contact_options.formulation = settings.interaction(problem.contacts[0]).formulation;
   _out.n_subdomains = 1;
   if (_linear)
   {
@@ -207,7 +207,12 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
   // One undecomposed factorization: BLAS is the parallelism (common/parallel.hpp).
   const ScopedBlasThreads blas(threads());
   problem.validate();
-  FETICON_CHECK(problem.contacts.size() == 1, "the primal penalty solver handles one contact pair");
+  FETICON_CHECK(problem.contacts.size() == 1,
+                "method = primal_penalty handles one contact pair, the problem has "
+                    << problem.contacts.size() << ": use method smalbe or dual_penalty");
+  FETICON_CHECK(!settings.has_friction(problem),
+                "the contact pair has friction, which method = primal_penalty does "
+                "not model: use method smalbe or dual_penalty");
   const auto run_start = std::chrono::steady_clock::now();
   ContactSolution out;
   PrimalPenaltySolve solve(problem, settings, timers, out);

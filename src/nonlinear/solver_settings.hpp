@@ -6,8 +6,10 @@
 #include "dual/dual_penalty_problem.hpp"
 #include "fem/load_history.hpp"
 #include "fem/material.hpp"
+#include "fem/problem.hpp"
 #include "io/settings.hpp"
 
+#include <optional>
 #include <string>
 
 namespace feticon::nonlinear
@@ -47,19 +49,16 @@ enum class DualOperatorMode
 /// The settings of a contact solve. The values a user sets come from the settings table
 /// (io/settings.cpp), where each default is declared once: a default-built SolverSettings
 /// holds those defaults; the fields without a setting have theirs here.
-/// Friction on the contact pair (FETI solver; tangential rows, contact/tangential_rows.hpp).
-enum class FrictionModel : uint8_t
-{
-  none,
-  tresca, ///< |t_T| <= slip_bound (a traction, Pa), independent of the pressure
-  coulomb ///< |t_T| <= coefficient p, by the fixed point on the slip bound in the outer loop
-};
+using FrictionModel = fem::FrictionModel;
+using Friction = fem::Friction;
 
-struct Friction
+/// The settings contact.friction.* that were given (a problem file's settings or --set): each
+/// replaces that field of every pair's friction; an empty one leaves the pair's own.
+struct FrictionOverride
 {
-  FrictionModel model = FrictionModel::none;
-  double coefficient = 0; ///< Coulomb's mu
-  double slip_bound = 0;  ///< Tresca's g (Pa)
+  std::optional<FrictionModel> model;
+  std::optional<double> coefficient;
+  std::optional<double> slip_bound;
 };
 
 struct SolverSettings
@@ -78,20 +77,30 @@ struct SolverSettings
   /// displacements, one with small ones (linear elasticity takes the whole load in one step;
   /// contact's own nonlinearity is the outer loop's).
   int steps() const { return kinematics == fem::Kinematics::linear ? 1 : load_steps; }
+  /// The same for `problem`: load_steps = auto is two where a pair has friction (which follows
+  /// the path in its steps), else one.
+  int steps_of(const fem::Problem& problem) const
+  {
+    if (kinematics == fem::Kinematics::linear)
+      return 1;
+    return auto_load_steps && has_friction(problem) ? 2 : load_steps;
+  }
   /// The load history of `problem` under these settings: steps() for stage 1; each later stage
   /// in its increments with large displacements, in one load step with small ones
   /// (frictionless contact of linear elastic bodies: the answer at a stage's end does not
   /// depend on the path, so one QP per stage gives CalculiX's per-step results).
   fem::LoadHistory load_history(const fem::Problem& problem) const
   {
-    return fem::LoadHistory(problem, steps(), kinematics == fem::Kinematics::linear);
+    return fem::LoadHistory(problem, steps_of(problem), kinematics == fem::Kinematics::linear);
   }
   /// Load steps of the whole run on `problem` (load_history(problem).n_steps()).
   int steps(const fem::Problem& problem) const { return load_history(problem).n_steps(); }
 
   ContactMethod method;
   fem::Kinematics kinematics;
-  int load_steps;           ///< equal load increments (large displacements; auto resolved)
+  int load_steps; ///< equal load increments (large displacements; auto resolved)
+  /// load_steps was auto: 1, or 2 on a problem with friction (steps_of).
+  bool auto_load_steps = false;
   int max_outer_iterations; ///< outer (Newton) iterations per load step
   /// Cutbacks of a load step in a row (nonlinear/load_stepping.hpp): one increment of the
   /// whole load, halved where it fails, took 13-47 % fewer MPRGP steps than two on Hertz and
@@ -138,8 +147,14 @@ struct SolverSettings
   /// contact.first_rows = reached: from rest, the first outer iteration's rows are those a
   /// rough QP on the rows near contact reaches (FetiContactSolve::rows_reached_from_rest).
   bool first_rows_reached = true;
-  contact::ContactFormulation formulation;
-  double eps_n_factor; ///< primal penalty eps_n = factor * max diag K
-  Friction friction;   ///< contact.friction.*
+  /// contact.formulation where given: every pair's formulation; empty: each pair's own.
+  std::optional<contact::ContactFormulation> formulation;
+  double eps_n_factor;       ///< primal penalty eps_n = factor * max diag K
+  FrictionOverride friction; ///< contact.friction.* where given
+
+  /// The interaction `pair` is solved with: its own, with the given settings in its place.
+  fem::ContactInteraction interaction(const fem::ContactPairNames& pair) const;
+  /// Whether a pair of `problem` is solved with friction.
+  bool has_friction(const fem::Problem& problem) const;
 };
 } // namespace feticon::nonlinear

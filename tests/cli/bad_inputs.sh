@@ -145,7 +145,7 @@ expect "traction with two components" "loads.0.traction" -- "$(variant 's/tracti
 expect "traction not a number" "loads.0.traction" -- "$(variant 's/traction: \[0, -1e8, 0\]/traction: [0, heavy, 0]/' texttraction)"
 expect "contact on an unknown set" "contact.0" -- "$(variant 's/slave: punch_ymin/slave: punch_bottom/' unknowncontact)"
 expect "contact pair without master" "contact.0.master" -- "$(variant 's/, master: base_ymax//' nomaster)"
-expect "contact friction negative" "contact.friction.coefficient = -0.3 is out of range" -- \
+expect "contact friction negative" "contact.0.friction: coefficient must be in" -- \
   "$(variant 's/master: base_ymax}/master: base_ymax, friction: {model: coulomb, coefficient: -0.3}}/' frictionneg)"
 expect "contact friction without coefficient" "contact.0.friction (model coulomb) needs coefficient" -- \
   "$(variant 's/master: base_ymax}/master: base_ymax, friction: {model: coulomb}}/' frictionnomu)"

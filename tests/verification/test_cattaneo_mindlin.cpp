@@ -57,7 +57,8 @@ std::pair<std::vector<problems::SurfaceSample>, std::vector<double>> solve_and_s
     *load_face_ux = problems::hertz_load_face_shift(problem, solution.u);
   if (support_force)
     *support_force = problems::hertz_load_face_support_force(problem, solution.u, kinematics);
-  for (const auto& p : nonlinear::slave_pressure_by_x(problem, solution, s.kinematics, s.friction))
+  for (const auto& p :
+       nonlinear::slave_pressure_by_x(problem, solution, s.kinematics, s.interaction(problem.contacts[0]).friction))
   {
     surface.push_back({p.x, p.y, p.deformed_x, p.deformed_y, p.pressure, p.shear.x(), p.friction_force.x(), p.slipping,
                        p.shear.y(), p.area, p.normal_force.x()});

@@ -127,7 +127,7 @@ TEST(FrictionBlocks, TrescaHoldsTheShearBelowTheBoundAndSlidesAtIt)
     TimerTable timers;
     const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
     ASSERT_TRUE(solution.converged) << solution.reason;
-    const FrictionFigures r = friction_figures(problem, solution, s.friction);
+    const FrictionFigures r = friction_figures(problem, solution, s.interaction(problem.contacts[0]).friction);
     std::printf("Tresca stick: friction force %.9e (applied %.9e), max |t|/g %.6f, %d of %d nodes at g\n", r.force_x,
                 -0.3 * pressure, r.worst_ratio, r.sliding, r.nodes);
     EXPECT_NEAR(r.force_x, -0.3 * pressure, 1e-6 * 0.3 * pressure);
@@ -140,7 +140,7 @@ TEST(FrictionBlocks, TrescaHoldsTheShearBelowTheBoundAndSlidesAtIt)
     TimerTable timers;
     const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
     ASSERT_TRUE(solution.converged) << solution.reason;
-    const FrictionFigures r = friction_figures(problem, solution, s.friction);
+    const FrictionFigures r = friction_figures(problem, solution, s.interaction(problem.contacts[0]).friction);
     std::printf("Tresca slide: friction force %.9e (g A %.9e), %d of %d nodes at g\n", r.force_x, -g, r.sliding,
                 r.nodes);
     EXPECT_EQ(r.sliding, r.nodes);
@@ -159,7 +159,7 @@ TEST(FrictionBlocks, CoulombHoldsTheShearBelowMuPAndSlidesAtIt)
     TimerTable timers;
     const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
     ASSERT_TRUE(solution.converged) << solution.reason;
-    const FrictionFigures r = friction_figures(problem, solution, s.friction);
+    const FrictionFigures r = friction_figures(problem, solution, s.interaction(problem.contacts[0]).friction);
     std::printf("Coulomb stick: friction force %.9e (applied %.9e), max |t|/(mu t_N) %.6f, %d of %d nodes at the "
                 "bound, %zu QPs\n",
                 r.force_x, -0.2 * pressure, r.worst_ratio, r.sliding, r.nodes, solution.history.size());
@@ -171,7 +171,7 @@ TEST(FrictionBlocks, CoulombHoldsTheShearBelowMuPAndSlidesAtIt)
     TimerTable timers;
     const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
     ASSERT_TRUE(solution.converged) << solution.reason;
-    const FrictionFigures r = friction_figures(problem, solution, s.friction);
+    const FrictionFigures r = friction_figures(problem, solution, s.interaction(problem.contacts[0]).friction);
     const double normal = nonlinear::total_normal_force(solution);
     std::printf("Coulomb slide: friction force %.9e (mu N %.9e), %d of %d nodes at the bound, %zu QPs\n", r.force_x,
                 -mu * normal, r.sliding, r.nodes, solution.history.size());
@@ -195,7 +195,7 @@ TEST(FrictionBlocks, DiscsHoldAndSlideIn3D)
       TimerTable timers;
       const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
       ASSERT_TRUE(solution.converged) << solution.reason;
-      const FrictionFigures r = friction_figures(problem, solution, s.friction);
+      const FrictionFigures r = friction_figures(problem, solution, s.interaction(problem.contacts[0]).friction);
       std::printf("3D %s stick: friction force (%.9e, %.2e) (applied %.9e), max |t|/bound %.6f, %d of %d nodes at "
                   "the bound, %zu QPs\n",
                   tresca ? "Tresca" : "Coulomb", r.force_x, r.force_y, -0.2 * pressure, r.worst_ratio, r.sliding,
@@ -210,7 +210,7 @@ TEST(FrictionBlocks, DiscsHoldAndSlideIn3D)
       TimerTable timers;
       const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
       ASSERT_TRUE(solution.converged) << solution.reason;
-      const FrictionFigures r = friction_figures(problem, solution, s.friction);
+      const FrictionFigures r = friction_figures(problem, solution, s.interaction(problem.contacts[0]).friction);
       const double expected = tresca ? 0.4 * pressure : 0.3 * nonlinear::total_normal_force(solution);
       std::printf("3D %s slide: sum |t_T| %.9e, friction force (%.9e, %.2e) (bound %.9e), %d of %d nodes at the "
                   "bound, %zu QPs\n",

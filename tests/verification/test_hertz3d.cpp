@@ -364,7 +364,8 @@ TEST(Hertz3d, CoulombFrictionAcrossSymmetryPlanesConverges)
     EXPECT_LE(solution.history.size(), 4u); // measured 3 QPs: stick, Coulomb, settled
     EXPECT_LE(steps, 500);                  // measured 169 (4 subdomains) and 292 (8)
     std::vector<problems::ProfilePoint> radial;
-    for (const auto& p : nonlinear::slave_pressure_by_x(problem, solution, s.kinematics, s.friction))
+    for (const auto& p :
+         nonlinear::slave_pressure_by_x(problem, solution, s.kinematics, s.interaction(problem.contacts[0]).friction))
       radial.push_back({std::hypot(p.x, p.y), p.pressure});
     const problems::Hertz3dComparison h = problems::compare_with_hertz3d({}, radial);
     EXPECT_LT(std::abs(h.p_peak_computed / h.p0_analytic - 1), 0.02);
@@ -411,7 +412,8 @@ TEST(Hertz3d, SphereMovedFarEnoughSlidesEverywhere)
   ASSERT_TRUE(solution.converged) << solution.reason;
   double normal = 0, magnitude = 0, along_x = 0;
   int loaded = 0, sliding = 0;
-  for (const auto& p : nonlinear::slave_pressure_by_x(problem, solution, s.kinematics, s.friction))
+  for (const auto& p :
+       nonlinear::slave_pressure_by_x(problem, solution, s.kinematics, s.interaction(problem.contacts[0]).friction))
   {
     if (p.force <= 0)
       continue;

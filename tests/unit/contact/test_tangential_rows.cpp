@@ -31,6 +31,7 @@ ContactConstraints one_row(const Eigen::Vector3d& n, double fourth = 0)
   rows.B.resize(1, fourth != 0 ? 12 : 9);
   rows.B.setFromTriplets(t.begin(), t.end());
   rows.slave_node = {0};
+  rows.pair = {0};
   rows.normal = {n};
   rows.row_norm = {norm};
   return rows;

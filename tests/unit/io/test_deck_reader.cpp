@@ -190,7 +190,8 @@ TEST_P(DeckCellTypes, ExportedDeckReadsBackWithItsCellTypes)
   const Deck deck = read_deck(path);
   const fem::Problem& q = deck.problem;
   // Its surface-to-surface pair gets mortar rows, whatever the faces' type.
-  EXPECT_EQ(deck_outline(path).contact_formulation, "mortar");
+  ASSERT_EQ(q.contacts.size(), 1u);
+  EXPECT_EQ(q.contacts[0].interaction.formulation, fem::ContactFormulation::mortar);
   ASSERT_EQ(q.mesh.n_nodes(), p.mesh.n_nodes());
   ASSERT_EQ(q.mesh.n_cells(), p.mesh.n_cells());
   EXPECT_TRUE(q.mesh.cells.all_of_kind(GetParam()));
@@ -316,8 +317,9 @@ TEST(DeckReader, ExportedDeckReadsBackAsTheProblem)
   EXPECT_EQ(deck.info.node_labels.back(), p.mesh.n_nodes());
 }
 
-// Round trip of the friction: the exported *FRICTION reads back as mu, in the deck and in the
-// settings of a run of it.
+// Round trip of the friction: the exported *FRICTION reads back as mu of the pair's
+// interaction; the settings of a run of it do not take it (they override the pair's law only
+// where given).
 TEST(DeckReader, ExportedFrictionReadsBackAsCoulombsMu)
 {
   CalculixOptions options;
@@ -327,11 +329,11 @@ TEST(DeckReader, ExportedFrictionReadsBackAsCoulombsMu)
   std::ostringstream text;
   write_calculix_deck(punch_problem(), options, text);
   const auto path = write(dir, "punch.inp", text.str());
-  EXPECT_EQ(read_deck(path).info.friction_coefficient, 0.35);
-  const ProblemFile file = load_problem_file(path, {}, {});
-  EXPECT_EQ(file.settings.text("contact.friction.model"), "coulomb");
-  EXPECT_EQ(file.settings.number("contact.friction.coefficient"), 0.35);
-  EXPECT_EQ(deck_outline(path).contact_formulation, "mortar");
+  const fem::ContactInteraction read = read_deck(path).problem.contacts.at(0).interaction;
+  EXPECT_EQ(read.friction.model, fem::FrictionModel::coulomb);
+  EXPECT_EQ(read.friction.coefficient, 0.35);
+  EXPECT_EQ(read.formulation, fem::ContactFormulation::mortar);
+  EXPECT_FALSE(load_problem_file(path, {}, {}).settings.given("contact.friction.model"));
   // The same with tet10: mortar rows with friction on quadratic faces too.
   fem::Problem tet10 = punch_problem();
   tet10.mesh = mesh::convert_hex8_mesh(tet10.mesh, mesh::CellKind::tet10);
@@ -339,7 +341,7 @@ TEST(DeckReader, ExportedFrictionReadsBackAsCoulombsMu)
   std::ostringstream tet10_text;
   write_calculix_deck(tet10, options, tet10_text);
   const auto tet10_path = write(dir, "punch_tet10.inp", tet10_text.str());
-  EXPECT_EQ(deck_outline(tet10_path).contact_formulation, "mortar");
+  EXPECT_EQ(read_deck(tet10_path).problem.contacts.at(0).interaction.formulation, fem::ContactFormulation::mortar);
 }
 
 TEST(DeckReader, PlaneStrainDeckEliminatesUz)
@@ -510,7 +512,6 @@ TEST(DeckReader, OutlineCountsWithoutReading)
   EXPECT_EQ(outline.elements, 3); // the continued element line counts as two lines: an upper bound
   EXPECT_TRUE(outline.nlgeom);
   EXPECT_EQ(outline.increments, 4);
-  EXPECT_EQ(outline.contact_formulation, "mortar");
 }
 
 TEST(DeckReader, ProblemFileOfADeckTakesItsSettings)
@@ -533,75 +534,76 @@ std::string two_cubes_with_friction(const std::string& friction)
   return text;
 }
 
-// *FRICTION (CalculiX's "mu, stick slope") is Coulomb's law with that mu, in the deck and in
-// the settings a run takes from it; mu = 0 is frictionless.
-TEST(DeckReader, FrictionIsCoulombsLawInTheSettings)
+// *FRICTION (CalculiX's "mu, stick slope") is Coulomb's law with that mu, the law of the pair
+// whose interaction it is; mu = 0 is frictionless. The settings stay at their defaults, not
+// given: contact.friction.* override the pair's law only where given (SolverSettings, in
+// tests/unit/nonlinear/test_settings_defaults.cpp).
+TEST(DeckReader, FrictionIsCoulombsLawOfThePairsInteraction)
 {
   const auto dir = test::fresh_directory("deck_friction");
   const auto path = write(dir, "friction.inp", two_cubes_with_friction("*FRICTION\n0.3, 5000.\n"));
   const Deck deck = read_deck(path);
-  EXPECT_EQ(deck.info.friction_coefficient, 0.3);
-  EXPECT_EQ(deck_outline(path).friction_coefficient, 0.3);
+  const fem::ContactInteraction& interaction = deck.problem.contacts.at(0).interaction;
+  EXPECT_EQ(interaction.name, "SI");
+  EXPECT_EQ(interaction.friction.model, fem::FrictionModel::coulomb);
+  EXPECT_EQ(interaction.friction.coefficient, 0.3);
   EXPECT_TRUE(std::any_of(deck.info.warnings.begin(), deck.info.warnings.end(), [](const std::string& w) {
     return w.find("stick slope 5000. of *FRICTION") != std::string::npos;
   }));
   const ProblemFile file = load_problem_file(path, {}, {});
-  EXPECT_EQ(file.settings.text("contact.friction.model"), "coulomb");
-  EXPECT_EQ(file.settings.number("contact.friction.coefficient"), 0.3);
-
-  // --set wins, key by key.
-  EXPECT_EQ(load_problem_file(path, {"contact.friction.model=none"}, {}).settings.text("contact.friction.model"),
-            "none");
-  const ProblemFile other = load_problem_file(path, {"contact.friction.coefficient=0.5"}, {});
-  EXPECT_EQ(other.settings.text("contact.friction.model"), "coulomb");
-  EXPECT_EQ(other.settings.number("contact.friction.coefficient"), 0.5);
-
-  // A problem file naming the deck: the deck's friction, below the file's own keys.
-  write(dir, "deck.yaml", "problem: custom\nmesh: {file: friction.inp}\n");
-  EXPECT_EQ(load_problem_file(dir / "deck.yaml", {}, {}).settings.text("contact.friction.model"), "coulomb");
-  write(dir, "frictionless.yaml", "problem: custom\nmesh: {file: friction.inp}\ncontact.friction.model: none\n");
-  EXPECT_EQ(load_problem_file(dir / "frictionless.yaml", {}, {}).settings.text("contact.friction.model"), "none");
+  EXPECT_FALSE(file.settings.given("contact.friction.model"));
+  EXPECT_FALSE(file.settings.given("contact.friction.coefficient"));
+  EXPECT_FALSE(file.settings.given("contact.formulation"));
+  EXPECT_TRUE(
+      load_problem_file(path, {"contact.friction.coefficient=0.5"}, {}).settings.given("contact.friction.coefficient"));
 
   // mu = 0, Fortran's exponent, and an interaction no pair uses.
+  const auto friction_of = [](const std::filesystem::path& deck_path) {
+    return read_deck(deck_path).problem.contacts.at(0).interaction.friction;
+  };
   const auto zero = write(dir, "zero.inp", two_cubes_with_friction("*FRICTION\n0.\n"));
-  EXPECT_EQ(read_deck(zero).info.friction_coefficient, 0.0);
-  EXPECT_EQ(load_problem_file(zero, {}, {}).settings.text("contact.friction.model"), "none");
+  EXPECT_EQ(friction_of(zero).model, fem::FrictionModel::none);
   const auto fortran = write(dir, "fortran.inp", two_cubes_with_friction("*FRICTION\n2.5D-1\n"));
-  EXPECT_EQ(read_deck(fortran).info.friction_coefficient, 0.25);
-  EXPECT_EQ(load_problem_file(fortran, {}, {}).settings.number("contact.friction.coefficient"), 0.25);
+  EXPECT_EQ(friction_of(fortran).model, fem::FrictionModel::coulomb);
+  EXPECT_EQ(friction_of(fortran).coefficient, 0.25);
   std::string unused = two_cubes;
   unused.insert(unused.find("*CONTACT PAIR"), "*SURFACE INTERACTION, NAME=spare\n*FRICTION\n0.4\n");
   const Deck spare = read_deck(write(dir, "unused.inp", unused));
-  EXPECT_EQ(spare.info.friction_coefficient, 0.0);
+  EXPECT_EQ(spare.problem.contacts.at(0).interaction.friction.model, fem::FrictionModel::none);
   EXPECT_TRUE(std::any_of(spare.info.warnings.begin(), spare.info.warnings.end(), [](const std::string& w) {
     return w.find("*FRICTION of interaction SPARE") != std::string::npos;
   }));
-  EXPECT_EQ(load_problem_file(dir / "unused.inp", {}, {}).settings.text("contact.friction.model"), "none");
 }
 
 // A problem file's contact pair carries the friction law: the same settings as the keys.
 TEST(DeckReader, ProblemFileContactPairCarriesFriction)
 {
   const auto dir = test::fresh_directory("pair_friction");
-  const std::string head = "problem: custom\nmesh: {boxes: [{name: a, lengths: [1, 1, 1], cells: [1, 1, 1]}]}\n";
-  const auto load = [&](const std::string& name, const std::string& contact, std::vector<std::string> sets = {}) {
-    return load_problem_file(write(dir, name, head + contact), sets, {});
+  const std::string head = "problem: custom\nmesh: {boxes: [{name: a, lengths: [1, 1, 1], cells: [1, 1, 1]}]}\n"
+                           "bodies: {a: {young: 2e11, poisson: 0.3}}\n";
+  const auto build = [&](const std::string& name, const std::string& contact) {
+    return build_custom_problem(load_problem_file(write(dir, name, head + contact), {}, {}));
   };
-  const ProblemFile coulomb = load(
+  const fem::Problem coulomb = build(
       "coulomb.yaml", "contact:\n  - {slave: a_zmin, master: a_zmax, friction: {model: coulomb, coefficient: 0.3}}\n");
-  EXPECT_EQ(coulomb.settings.text("contact.friction.model"), "coulomb");
-  EXPECT_EQ(coulomb.settings.number("contact.friction.coefficient"), 0.3);
-  const ProblemFile tresca = load("tresca.yaml",
-                                  "contact:\n  - {slave: a_zmin, master: a_zmax, friction: {model: "
-                                  "tresca, slip_bound: 2e7}}\n",
-                                  {"contact.friction.slip_bound=3e7"});
-  EXPECT_EQ(tresca.settings.text("contact.friction.model"), "tresca");
-  EXPECT_EQ(tresca.settings.number("contact.friction.slip_bound"), 3e7); // --set wins
+  EXPECT_EQ(coulomb.contacts.at(0).interaction.friction.model, fem::FrictionModel::coulomb);
+  EXPECT_EQ(coulomb.contacts.at(0).interaction.friction.coefficient, 0.3);
+  EXPECT_EQ(coulomb.contacts.at(0).interaction.formulation, fem::ContactFormulation::mortar);
+  // Each pair its own law and formulation.
+  const fem::Problem two = build("two.yaml",
+                                 "contact:\n  - {slave: a_zmin, master: a_zmax, friction: {model: tresca, "
+                                 "slip_bound: 2e7}}\n  - {slave: a_xmin, master: a_xmax, formulation: "
+                                 "node_to_segment}\n");
+  ASSERT_EQ(two.contacts.size(), 2u);
+  EXPECT_EQ(two.contacts[0].interaction.friction.model, fem::FrictionModel::tresca);
+  EXPECT_EQ(two.contacts[0].interaction.friction.slip_bound, 2e7);
+  EXPECT_EQ(two.contacts[1].interaction.friction.model, fem::FrictionModel::none);
+  EXPECT_EQ(two.contacts[1].interaction.formulation, fem::ContactFormulation::node_to_segment);
 
   const auto error = [&](const std::string& contact) {
     try
     {
-      load("bad.yaml", contact);
+      build("bad.yaml", contact);
     }
     catch (const Error& e)
     {
@@ -613,11 +615,10 @@ TEST(DeckReader, ProblemFileContactPairCarriesFriction)
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"{model: coulomb}}\n", "bad.yaml: contact.0.friction (model coulomb) needs coefficient"},
       {"{model: tresca, coefficient: 0.3}}\n", "contact.0.friction.coefficient does not belong"},
-      {"{model: coulomb, coefficient: -0.3}}\n", "contact.friction.coefficient = -0.3 is out of range"},
-      {"{model: sticky}}\n", "contact.friction.model = 'sticky' must be one of"},
+      {"{model: coulomb, coefficient: -0.3}}\n", "contact.0.friction: coefficient must be in [0, 100]"},
+      {"{model: sticky}}\n", "contact.0.friction.model = 'sticky' must be one of"},
       {"{model: coulomb, mu: 0.3}}\n", "unknown key 'mu' in contact.0.friction"},
-      {"{model: coulomb, coefficient: 0.3}}\n  - {slave: a_xmin, master: a_xmax}\n",
-       "contact.1.friction is not given, but contact.0.friction is"},
+      {"{model: none}, formulation: nts}\n", "contact.0.formulation = 'nts' must be one of"},
   };
   for (const auto& [friction, expected] : cases)
   {

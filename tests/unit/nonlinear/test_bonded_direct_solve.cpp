@@ -75,7 +75,7 @@ TEST(BondedDirectSolve, BondingEverySlaveNodeStillCarriesTheLoad)
   const fem::Problem problem = coarse_hertz();
   const nonlinear::SolverSettings settings = small_displacements();
   contact::ContactOptions options;
-  options.formulation = settings.formulation;
+  options.formulation = settings.interaction(problem.contacts[0]).formulation;
   const contact::ContactConstraints rows = contact::build_contact_constraints(
       problem.mesh, {}, {problem.contacts[0].slave, problem.contacts[0].master}, options);
   const nonlinear::BondedSolve bonded = nonlinear::bonded_direct_solve(problem, settings, rows.slave_node);

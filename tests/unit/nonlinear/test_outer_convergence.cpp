@@ -13,7 +13,7 @@ namespace
 TEST(OuterConvergence, NeedsDisplacementResidualAndAnUnchangedActiveSet)
 {
   const OuterConvergence test{1e-4, 1e-4, 2.0};
-  const std::set<int32_t> active{1, 2, 3}, grown{1, 2, 3, 4};
+  const std::set<int64_t> active{1, 2, 3}, grown{1, 2, 3, 4};
   // ||du|| = 1e-6, ||u|| = 1: the displacement clause holds; ||du||_inf 1e-7 is above the floor 2e-9.
   EXPECT_EQ(test.verdict(1e-6, 1.0, 1e-7, 1e-5, active, active), OuterVerdict::converged);
   EXPECT_EQ(test.verdict(1e-3, 1.0, 1e-4, 1e-5, active, active), OuterVerdict::iterate) << "displacement";
@@ -25,7 +25,7 @@ TEST(OuterConvergence, RoundOffCorrectionIsNoShortcutPastTheResidual)
 {
   const OuterConvergence test{1e-4, 1e-4, 2.0};
   EXPECT_DOUBLE_EQ(test.roundoff_displacement(), 2e-9);
-  const std::set<int32_t> active{1, 2, 3}, grown{1, 2, 3, 4};
+  const std::set<int64_t> active{1, 2, 3}, grown{1, 2, 3, 4};
   // u near 0: ||du|| / ||u|| = 1 is noise, the round-off correction meets the displacement clause.
   EXPECT_EQ(test.verdict(1e-12, 1e-12, 1e-12, 1e-5, active, active), OuterVerdict::converged);
   // Round-off correction, residual 0.9: not converged. The contact set changed: iterate on.

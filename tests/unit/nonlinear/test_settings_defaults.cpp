@@ -32,6 +32,12 @@ TEST(SettingsDefaults, SolverOptionsAreTheTables)
   EXPECT_EQ(nonlinear::SolverSettings(coulomb).load_steps, 2);
   coulomb.set("load_steps", "3", "test");
   EXPECT_EQ(nonlinear::SolverSettings(coulomb).load_steps, 3);
+  // A pair's own friction makes auto two steps on its problem (SolverSettings::steps_of).
+  fem::Problem with_friction;
+  with_friction.contacts.push_back({"s", "m"});
+  EXPECT_EQ(s.steps_of(with_friction), 1);
+  with_friction.contacts[0].interaction.friction = {fem::FrictionModel::coulomb, 0.3, 0};
+  EXPECT_EQ(s.steps_of(with_friction), 2);
   // auto is resolved by the app (app/feti_choice); the library takes the Dirichlet one and 8.
   EXPECT_EQ(table.text("qp.preconditioner"), "auto");
   EXPECT_EQ(s.dual.preconditioner, dual::DualPreconditioner::dirichlet);
@@ -50,6 +56,35 @@ TEST(SettingsDefaults, SolverOptionsAreTheTables)
   small.kinematics = fem::Kinematics::linear;
   EXPECT_EQ(small.steps(), 1);
   EXPECT_EQ(s.steps(), 1);
+}
+
+// Each pair carries its interaction (a deck's *FRICTION and pair TYPE, a problem file's pair);
+// the settings contact.friction.* and contact.formulation replace it for every pair where
+// given, key by key, and leave it where not. Reference: the rule of SolverSettings::interaction.
+TEST(SettingsDefaults, GivenContactKeysOverrideEveryPairsInteractionKeyByKey)
+{
+  fem::ContactPairNames pair{"s", "m"};
+  pair.interaction.friction = {fem::FrictionModel::coulomb, 0.3, 0};
+  pair.interaction.formulation = fem::ContactFormulation::node_to_segment;
+  const fem::ContactInteraction own = nonlinear::SolverSettings(table).interaction(pair);
+  EXPECT_EQ(own.friction.model, fem::FrictionModel::coulomb);
+  EXPECT_EQ(own.friction.coefficient, 0.3);
+  EXPECT_EQ(own.formulation, fem::ContactFormulation::node_to_segment);
+  io::Settings coefficient = table;
+  coefficient.set("contact.friction.coefficient", "0.5", "--set");
+  EXPECT_EQ(nonlinear::SolverSettings(coefficient).interaction(pair).friction.model, fem::FrictionModel::coulomb);
+  EXPECT_EQ(nonlinear::SolverSettings(coefficient).interaction(pair).friction.coefficient, 0.5);
+  io::Settings none = table;
+  none.set("contact.friction.model", "none", "--set");
+  EXPECT_EQ(nonlinear::SolverSettings(none).interaction(pair).friction.model, fem::FrictionModel::none);
+  io::Settings mortar = table;
+  mortar.set("contact.formulation", "mortar", "--set");
+  EXPECT_EQ(nonlinear::SolverSettings(mortar).interaction(pair).formulation, fem::ContactFormulation::mortar);
+  // A rerun of problem.yaml keeps the pair's own: the keys not given are written commented out.
+  const std::string yaml = table.to_yaml();
+  EXPECT_NE(yaml.find("# contact.formulation: mortar (not given: each contact pair's own)"), std::string::npos);
+  EXPECT_EQ(yaml.find("\ncontact.friction.model:"), std::string::npos);
+  EXPECT_NE(mortar.to_yaml().find("\ncontact.formulation: mortar\n"), std::string::npos);
 }
 
 // The dual penalty's rho unless given is 1e3, not SMALBE-M's 1: its feasibility error falls
