@@ -3,8 +3,8 @@
 # stacked boxes of 100 x 100 x 50 nodes, C3D8, sets, a surface-to-surface contact pair,
 # *BOUNDARY and *DLOAD (bench/make_big_deck.py), written in a temporary folder.
 #
-# feticon has no switch to stop after reading, so the deck names its contact pair twice
-# (--stop-after-reading): the reader refuses the second pair once nodes, cells, bodies, sets and
+# feticon has no switch to stop after reading, so the deck has a second pair whose master is its
+# slave (--stop-after-reading): the reader refuses it once nodes, cells, bodies, sets and
 # surfaces are built, before the solver allocates anything. Two runs under /usr/bin/time -v:
 #   outline: --set memory_limit=1, refused by the memory guard after the deck outlines
 #            (the line counts run before the output folder is made);

@@ -5,9 +5,9 @@ and element sets, a surface-to-surface contact pair (upper box's bottom on the l
 top), *BOUNDARY on the lower box's bottom (fixed) and the upper box's top (pressed down by
 0.01 with x and y held), and a *DLOAD pressure on the upper box's top.
 
-With --stop-after-reading the contact pair line is given twice: feticon refuses the second
-pair (one pair per model) once the mesh, sets and surfaces are built, so that a run of the
-deck measures reading alone, before the solver allocates anything.
+With --stop-after-reading a second pair line names the slave surface as its own master:
+feticon refuses it once the mesh, sets and surfaces are built, so that a run of the deck
+measures reading alone, before the solver allocates anything.
 
 Usage: make_big_deck.py OUT.inp [--cells NX NY NZ] [--stop-after-reading]
        (default cells 99 99 49: 2 x 100x100x50 = 1 000 000 nodes)
@@ -89,7 +89,7 @@ def main():
         out.write("*SURFACE INTERACTION, NAME=SI1\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n")
         out.write("*CONTACT PAIR, INTERACTION=SI1, TYPE=SURFACE TO SURFACE\nSLAVE, MASTER\n")
         if args.stop_after_reading:
-            out.write("SLAVE, MASTER\n")
+            out.write("SLAVE, SLAVE\n")
         out.write("*BOUNDARY\nFIXED, 1, 3\nPRESSED, 1, 2\nPRESSED, 3, 3, -0.01\n")
         out.write("*STEP\n*STATIC\n*DLOAD\nUPPER_TOP, P2, 10.\n*END STEP\n")
     print("%s: %d nodes, %d C3D8 cells" % (args.out, n_lower + n_upper, c_lower + c_upper),

@@ -94,6 +94,12 @@ void Problem::validate() const
                     "a linear equation names node " << t.node << ", component " << t.component
                                                     << " out of range or a coefficient that is not finite");
   }
+  for (size_t k = 0; k < contacts.size(); ++k)
+    for (size_t j = 0; j < k; ++j)
+      FETICON_CHECK(contacts[j].slave != contacts[k].slave || contacts[j].master != contacts[k].master,
+                    "contact pairs " << j << " and " << k << " both have slave '" << contacts[k].slave
+                                     << "' and master '" << contacts[k].master
+                                     << "': their rows would be the same constraints twice");
   for (const auto& c : contacts)
   {
     if (!c.slave_nodes.empty())

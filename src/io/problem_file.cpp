@@ -415,6 +415,13 @@ ProblemFile load_problem_file(const std::filesystem::path& path, const std::vect
                     file.source << ": section '" << section << "' is not read when mesh.file is "
                                 << "an input deck: the deck gives the whole model");
   }
+  // A deck run has no sections: a --set under one (contact.frction.model, a misspelt setting)
+  // would be dropped silently.
+  if (!file.deck.empty())
+    for (const std::string& key : overridden)
+      FETICON_CHECK(!is_structured_key(key.substr(0, key.find('.'))),
+                    "--set " << key << ": no such setting (`feticon run --help` lists them); the input deck "
+                             << file.deck.filename().string() << " gives the whole model");
   // The structured sections describe a custom problem; a built-in one would ignore them.
   if (file.settings.text("problem") != "custom")
     for (const auto& kv : file.root)

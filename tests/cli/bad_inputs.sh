@@ -158,6 +158,12 @@ expect "negative QP force tolerance" "qp.force_rtol = -1 is out of range" -- --s
 # Input decks (CalculiX's contactenergy.inp mutated): each a line naming file, line and keyword.
 deck_variant() { sed "$1" "$src_dir/tests/data/calculix/contactenergy.inp" > "$work/$2.inp"; echo "$work/$2.inp"; }
 expect "deck missing" "does not exist" -- "$work/absent.inp"
+expect "deck misspelt contact key" "--set contact.frction.model: no such setting" -- \
+  "$src_dir/tests/data/calculix/contactenergy.inp" --set contact.frction.model=coulomb
+expect "deck body section" "--set bodies.a.young: no such setting" -- \
+  "$src_dir/tests/data/calculix/contactenergy.inp" --set bodies.a.young=1e9
+# Two pairs with the same surfaces: the same constraints twice.
+expect "deck pair twice" "both have slave" -- "$(deck_variant '/^\*CONTACT PAIR/{n;p}' pair_twice)"
 # *FRICTION after the interaction's *SURFACE BEHAVIOR and its data line (1.E7).
 friction_variant() { deck_variant "/^\*SURFACE BEHAVIOR/{n;s/\$/\n$1/}" "$2"; }
 expect "deck friction negative" "friction coefficient -0.3 is outside 0 to 100" -- "$(friction_variant '*FRICTION\n-0.3' friction_negative)"

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Every deck of Debian's calculix-ccx-test with a *CONTACT PAIR through `feticon run`: whether
+# it runs (exit 0; converged or not, from summary.json) or is refused, and the one line that
+# says why. Writes a markdown table (deck | verdict | line) to stdout; the tally at the end.
+#
+#   bench/ccx_contact_decks.sh                         # build/feticon
+#   bench/ccx_contact_decks.sh --feticon build-tests/feticon --timeout 300
+# Needs the package calculix-ccx-test (apt-get install calculix-ccx-test).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+feticon=$root/build/feticon
+timeout_s=600
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --feticon) feticon=$2; shift 2 ;;
+    --timeout) timeout_s=$2; shift 2 ;;
+    *) echo "bench/ccx_contact_decks.sh: unknown argument $1" >&2; exit 2 ;;
+  esac
+done
+examples=/usr/share/doc/calculix-ccx-test/examples/test
+[[ -d $examples ]] || { echo "bench/ccx_contact_decks.sh: install calculix-ccx-test" >&2; exit 2; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+runs=0 refused=0 total=0
+echo "| deck | verdict | feticon's line |"
+echo "|---|---|---|"
+for path in "$examples"/*.inp "$examples"/*.inp.gz; do
+  name=$(basename "$path" .gz)
+  if [[ $path == *.gz ]]; then zcat "$path" > "$work/$name"; else cp "$path" "$work/$name"; fi
+  grep -qi '^\*CONTACT PAIR' "$work/$name" || continue
+  total=$((total + 1))
+  out="$work/${name%.inp}"
+  if timeout "$timeout_s" "$feticon" run -q "$work/$name" -o "$out" --set output.plots=false --set output.vtu=false \
+    > /dev/null 2> "$work/err"; then
+    runs=$((runs + 1))
+    verdict=$(/usr/bin/python3 -c "import json; s = json.load(open('$out/summary.json'))
+print('runs, converged' if s['converged'] else 'runs, not converged')")
+    line="$(grep -c . "$work/err" || true) warning line(s)"
+  else
+    rc=$?
+    refused=$((refused + 1))
+    verdict=$([[ $rc -ge 124 ]] && echo "timeout/signal $rc" || echo refused)
+    line=$(grep -m1 'error' "$work/err" | sed "s|$work/||g; s/|/\\\\|/g" | cut -c1-220)
+  fi
+  echo "| $name | $verdict | $line |"
+done
+echo
+echo "$runs of $total run, $refused refused"
