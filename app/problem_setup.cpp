@@ -1,5 +1,8 @@
 #include "app/problem_setup.hpp"
 
+#include "common/log.hpp"
+#include "contact/adjust.hpp"
+
 #include <string>
 
 namespace feticon::app
@@ -17,6 +20,18 @@ problems::MeshPrediction predict_mesh(const io::ProblemFile& file)
   return {size.nodes, size.plane_strain};
 }
 
+namespace
+{
+/// The pairs' ADJUST applied (contact/adjust.hpp): the model CalculiX starts its first
+/// increment from.
+fem::Problem adjusted(fem::Problem problem)
+{
+  if (const int64_t moved = contact::adjust_slave_nodes(problem))
+    log::info("contact ADJUST: " + std::to_string(moved) + " slave nodes moved onto their master surfaces");
+  return problem;
+}
+} // namespace
+
 fem::Problem build_problem(const io::ProblemFile& file, io::DeckInfo* deck)
 {
   if (!file.deck.empty())
@@ -24,11 +39,11 @@ fem::Problem build_problem(const io::ProblemFile& file, io::DeckInfo* deck)
     io::Deck read = io::read_deck(file.deck, file.deck_outline);
     if (deck)
       *deck = std::move(read.info);
-    return std::move(read.problem);
+    return adjusted(std::move(read.problem));
   }
   if (const auto built_in = problems::make_built_in_problem(file.settings))
     return built_in->build();
-  return io::build_custom_problem(file);
+  return adjusted(io::build_custom_problem(file));
 }
 
 nonlinear::SolverSettings solver_settings(const io::Settings& s, const FetiChoice& feti)

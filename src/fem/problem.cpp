@@ -106,6 +106,12 @@ void Problem::validate() const
       FETICON_CHECK(!mesh.node_set(c.slave_nodes).empty(), "contact slave node set '" << c.slave_nodes << "' is empty");
     FETICON_CHECK(!mesh.face_set(c.slave).empty(), "contact slave surface '" << c.slave << "' is empty");
     FETICON_CHECK(!mesh.face_set(c.master).empty(), "contact master surface '" << c.master << "' is empty");
+    FETICON_CHECK(std::isfinite(c.adjust) && c.adjust >= 0,
+                  "contact pair " << c.slave << " / " << c.master << ": adjust = " << c.adjust << " m must be >= 0");
+    if (!c.adjust_nodes.empty())
+      FETICON_CHECK(mesh.node_sets.count(c.adjust_nodes),
+                    "contact pair " << c.slave << " / " << c.master << ": adjust node set '" << c.adjust_nodes
+                                    << "' is not defined");
     const Friction& f = c.interaction.friction;
     FETICON_CHECK(std::isfinite(f.coefficient) && f.coefficient >= 0 && std::isfinite(f.slip_bound) &&
                       f.slip_bound >= 0,

@@ -61,6 +61,12 @@ struct ContactPairNames
   /// Node-to-segment only: mortar integrates whole slave faces.
   std::string slave_nodes = {};
   ContactInteraction interaction = {};
+  /// ADJUST (CalculiX, Abaqus): before the first increment the slave nodes whose gap is at most
+  /// this (m; penetrating ones included) are moved onto the master surface
+  /// (contact::adjust_slave_nodes). 0: the mesh as it is.
+  double adjust = 0;
+  /// ADJUST by node set: these slave nodes are moved onto the master surface. Empty: none.
+  std::string adjust_nodes = {};
 };
 
 /// The loads and prescribed displacements one later stage of the load history reaches at its

@@ -136,6 +136,8 @@ struct DeckContactPair
 {
   std::string interaction, slave, master;
   bool node_to_surface = true; ///< CalculiX's default TYPE
+  double adjust = 0;           ///< ADJUST=distance (m); 0: none
+  std::string adjust_set;      ///< ADJUST=node set
   DeckPosition where;
 };
 

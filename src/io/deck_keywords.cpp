@@ -777,8 +777,19 @@ private:
                     " is not implemented by feticon (SURFACE TO SURFACE, NODE TO SURFACE)");
       pair.node_to_surface = *type == "NODE TO SURFACE";
     }
-    if (_keyword.has("ADJUST"))
-      _data.warn(where() + ": ADJUST= is not used; feticon takes the gap as meshed");
+    if (const std::string* adjust = _keyword.value("ADJUST"))
+    {
+      // A number is a distance (CalculiX: the slave nodes with a clearance up to it), anything
+      // else the name of the node set to move.
+      if (const std::optional<double> distance = parse_deck_real(*adjust))
+      {
+        if (!std::isfinite(*distance) || *distance < 0)
+          throw Error(where() + ": ADJUST=" + *adjust + " must be a distance >= 0 or a node set");
+        pair.adjust = *distance;
+      }
+      else
+        pair.adjust_set = name_of(*adjust);
+    }
     if (_keyword.has("SMALL SLIDING"))
       _data.warn(where() + ": SMALL SLIDING is not used; feticon searches the contact in every outer iteration");
     DeckDataLine line;

@@ -393,9 +393,11 @@ private:
       if (const auto it = _d.frictions.find(pair.interaction); it != _d.frictions.end() && it->second.coefficient > 0)
         interaction.friction = {fem::FrictionModel::coulomb, it->second.coefficient, 0};
       used.insert(pair.interaction);
+      FETICON_CHECK(pair.adjust_set.empty() || _p.mesh.node_sets.count(pair.adjust_set),
+                    at << ": ADJUST=" << pair.adjust_set << " names no node set (nor a distance)");
       _p.contacts.push_back({pair.slave, pair.master,
                              _restricted_surfaces.count(pair.slave) ? "slave_nodes_" + pair.slave : "",
-                             std::move(interaction)});
+                             std::move(interaction), pair.adjust, pair.adjust_set});
     }
     for (const auto& [interaction, friction] : _d.frictions)
       if (!used.count(interaction))

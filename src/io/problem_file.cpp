@@ -275,9 +275,15 @@ std::vector<fem::ContactPairNames> contact_pairs(const YAML::Node& contact, cons
   {
     const YAML::Node c = contact[i];
     const std::string key = "contact." + std::to_string(i);
-    r.only_keys(c, key, {"slave", "master", "friction", "formulation"});
+    r.only_keys(c, key, {"slave", "master", "friction", "formulation", "adjust"});
     fem::ContactPairNames pair{r.text(c["slave"], key + ".slave"), r.text(c["master"], key + ".master")};
     pair.interaction.friction = pair_friction(c, key + ".friction", r);
+    if (c["adjust"])
+    {
+      pair.adjust = r.number(c["adjust"], key + ".adjust");
+      FETICON_CHECK(std::isfinite(pair.adjust) && pair.adjust >= 0,
+                    r.source << ": " << key << ".adjust = " << pair.adjust << " m must be >= 0");
+    }
     if (c["formulation"])
     {
       const std::string formulation = r.text(c["formulation"], key + ".formulation");

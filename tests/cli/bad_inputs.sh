@@ -164,6 +164,10 @@ expect "deck body section" "--set bodies.a.young: no such setting" -- \
   "$src_dir/tests/data/calculix/contactenergy.inp" --set bodies.a.young=1e9
 # Two pairs with the same surfaces: the same constraints twice.
 expect "deck pair twice" "both have slave" -- "$(deck_variant '/^\*CONTACT PAIR/{n;p}' pair_twice)"
+expect "deck adjust unknown set" "ADJUST=NOWHERE names no node set" -- \
+  "$(deck_variant 's/^\*CONTACT PAIR,INTERACTION=SI1,/&ADJUST=NOWHERE,/' adjust_set)"
+expect "deck adjust negative" "ADJUST=-1. must be a distance" -- \
+  "$(deck_variant 's/^\*CONTACT PAIR,INTERACTION=SI1,/&ADJUST=-1.,/' adjust_negative)"
 # *FRICTION after the interaction's *SURFACE BEHAVIOR and its data line (1.E7).
 friction_variant() { deck_variant "/^\*SURFACE BEHAVIOR/{n;s/\$/\n$1/}" "$2"; }
 expect "deck friction negative" "friction coefficient -0.3 is outside 0 to 100" -- "$(friction_variant '*FRICTION\n-0.3' friction_negative)"

@@ -525,6 +525,35 @@ TEST(DeckReader, ProblemFileOfADeckTakesItsSettings)
   EXPECT_EQ(file.deck, std::filesystem::absolute(path));
   EXPECT_EQ(custom_mesh_size(file).nodes, 16);
 }
+// ADJUST of a *CONTACT PAIR: a distance, or a node set (CalculiX's two forms); moved by
+// contact::adjust_slave_nodes when the run builds the problem.
+TEST(DeckReader, ContactPairAdjustIsADistanceOrANodeSet)
+{
+  const auto dir = test::fresh_directory("deck_adjust");
+  const auto adjusted = [&](const std::string& name, const std::string& adjust) {
+    std::string text = two_cubes;
+    const std::string at = "INTERACTION=SI,";
+    text.insert(text.find(at) + at.size(), "ADJUST=" + adjust + ",");
+    return read_deck(write(dir, name, text)).problem.contacts.at(0);
+  };
+  EXPECT_EQ(adjusted("distance.inp", "0.005").adjust, 0.005);
+  EXPECT_EQ(adjusted("fortran.inp", "5.D-3").adjust, 0.005);
+  EXPECT_EQ(adjusted("set.inp", "top").adjust_nodes, "TOP"); // names are the deck's, upper case
+  const auto error = [&](const std::string& adjust) {
+    try
+    {
+      adjusted("bad.inp", adjust);
+    }
+    catch (const Error& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error("-1.").find("ADJUST=-1. must be a distance >= 0 or a node set"), std::string::npos);
+  EXPECT_NE(error("NOWHERE").find("ADJUST=NOWHERE names no node set"), std::string::npos);
+}
+
 /// two_cubes with `friction` (a *FRICTION keyword and its data) in the interaction's block.
 std::string two_cubes_with_friction(const std::string& friction)
 {
