@@ -20,9 +20,8 @@ int64_t adjust_slave_nodes(fem::Problem& problem)
     // Candidates within one master element (the automatic distance: penetrations too, whose
     // nodes lie inside the master body) or the distance if farther; rows only for g < d_s,
     // so d_s is just above the distance and g = adjust is moved too.
-    options.search_distance =
-        std::max(largest_face_diagonal(problem.mesh, {}, problem.mesh.face_set(pair.master)),
-                 std::nextafter(pair.adjust, std::numeric_limits<double>::infinity()));
+    options.search_distance = std::max(largest_face_diagonal(problem.mesh, {}, problem.mesh.face_set(pair.master)),
+                                       std::nextafter(pair.adjust, std::numeric_limits<double>::infinity()));
     const ContactConstraints rows =
         build_node_to_segment_constraints(problem.mesh, {}, {pair.slave, pair.master, pair.slave_nodes}, options);
     const std::vector<int32_t>* set = pair.adjust_nodes.empty() ? nullptr : &problem.mesh.node_set(pair.adjust_nodes);
