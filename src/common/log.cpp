@@ -1,6 +1,7 @@
 #include "common/log.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <iostream>
 #include <mutex>
 
@@ -11,8 +12,22 @@ namespace
 Level current_level = Level::summary;
 int current_rank = 0;
 std::mutex pending_mutex;
-std::vector<std::string> pending; ///< warnings not yet taken, each once
+/// A warning not yet taken: how often it was logged, and where first and last.
+struct Pending
+{
+  std::string line;
+  int64_t count = 0;
+  std::string first, last;
+};
+std::vector<Pending> pending; ///< in the order first logged
+std::string current_context;
 } // namespace
+
+void set_context(const std::string& context)
+{
+  const std::lock_guard lock(pending_mutex);
+  current_context = context;
+}
 
 void set_level(Level l) { current_level = l; }
 Level level() { return current_level; }
@@ -31,17 +46,37 @@ void warning(const std::string& line)
 {
   {
     const std::lock_guard lock(pending_mutex);
-    if (std::ranges::find(pending, line) == pending.end())
-      pending.push_back(line);
+    const auto it = std::ranges::find(pending, line, &Pending::line);
+    if (it != pending.end())
+    {
+      ++it->count;
+      it->last = current_context;
+      return;
+    }
+    pending.push_back({line, 1, current_context, current_context});
   }
   write(Level::warning, "warning: " + line);
 }
 
 std::vector<std::string> take_warnings()
 {
-  const std::lock_guard lock(pending_mutex);
+  std::vector<Pending> taken;
+  {
+    const std::lock_guard lock(pending_mutex);
+    taken.swap(pending);
+  }
   std::vector<std::string> out;
-  out.swap(pending);
+  for (const Pending& p : taken)
+  {
+    if (p.count == 1)
+    {
+      out.push_back(p.line);
+      continue;
+    }
+    out.push_back(p.line + " (" + std::to_string(p.count) + " times, first at " +
+                  (p.first.empty() ? "set-up" : p.first) + ", last at " + (p.last.empty() ? "set-up" : p.last) + ")");
+    write(Level::warning, "warning: " + out.back());
+  }
   return out;
 }
 } // namespace feticon::log

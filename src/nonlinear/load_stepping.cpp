@@ -12,6 +12,11 @@ namespace feticon::nonlinear
 void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int first_step, int max_outer_iterations,
                     int max_cutbacks, ContactSolution& out, const StepCallback& on_step)
 {
+  // Warnings after the loop (post-processing) are not the last iteration's.
+  struct ContextReset
+  {
+    ~ContextReset() { log::set_context(""); }
+  } reset_context;
   int cutbacks_in_a_row = 0;
   for (int step = first_step; step <= history.n_steps(); ++step)
   {
@@ -27,6 +32,7 @@ void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int
       OuterIteration it;
       it.load_step = step;
       it.iteration = k;
+      log::set_context("load step " + std::to_string(step) + ", outer iteration " + std::to_string(k));
       IterationOutcome outcome = phases.outer_iteration(k, it);
       if (outcome.recorded)
       {

@@ -1,9 +1,13 @@
 /// log::warning keeps its lines for take_warnings() (common/log.hpp), which run summaries list.
-/// Reference: the definition: each line once, in the order first logged, then cleared.
+/// Reference: the definition: each line once, in the order first logged, a repeated one with
+/// its count and the contexts of its first and last occurrence, then cleared.
 
 #include "common/log.hpp"
 
 #include <gtest/gtest.h>
+
+#include <iostream>
+#include <sstream>
 
 using namespace feticon;
 
@@ -12,10 +16,40 @@ TEST(Log, WarningsAreKeptOnceUntilTaken)
   log::take_warnings(); // whatever earlier tests logged
   const log::Level level = log::level();
   log::set_level(log::Level::quiet); // kept even when not printed
+  log::set_context("");
   log::warning("first");
   log::warning("second");
+  log::set_context("load step 2, outer iteration 5");
   log::warning("first");
   log::set_level(level);
-  EXPECT_EQ(log::take_warnings(), (std::vector<std::string>{"first", "second"}));
+  EXPECT_EQ(
+      log::take_warnings(),
+      (std::vector<std::string>{"first (2 times, first at set-up, last at load step 2, outer iteration 5)", "second"}));
   EXPECT_TRUE(log::take_warnings().empty());
+  log::set_context("");
+}
+
+// A warning met at every outer iteration (fricloop: 1 294 times in 310 load steps) is written
+// to stderr once when first met and once with its count when the run's warnings are taken.
+TEST(Log, ARepeatedWarningIsWrittenOnceAndCountedOnce)
+{
+  log::take_warnings();
+  const log::Level level = log::level();
+  log::set_level(log::Level::warning);
+  std::ostringstream captured;
+  std::streambuf* saved = std::cerr.rdbuf(captured.rdbuf());
+  for (int k = 1; k <= 100; ++k)
+  {
+    log::set_context("load step " + std::to_string(k) + ", outer iteration 1");
+    log::warning("rows are dependent");
+  }
+  const std::vector<std::string> taken = log::take_warnings();
+  std::cerr.rdbuf(saved);
+  log::set_level(level);
+  log::set_context("");
+  EXPECT_EQ(captured.str(),
+            "warning: rows are dependent\n"
+            "warning: rows are dependent (100 times, first at load step 1, outer iteration 1, "
+            "last at load step 100, outer iteration 1)\n");
+  ASSERT_EQ(taken.size(), 1u);
 }
