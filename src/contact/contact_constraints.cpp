@@ -240,6 +240,7 @@ ContactConstraints concatenate_pairs(std::vector<ContactConstraints> parts, la::
     out.n_slave_nodes += part.n_slave_nodes;
     out.n_overhanging += part.n_overhanging;
     out.transformed_basis = out.transformed_basis || part.transformed_basis;
+    out.pair_formulation.push_back(part.formulation);
   }
   if (!parts.empty())
     out.formulation = parts.front().formulation;
@@ -247,16 +248,28 @@ ContactConstraints concatenate_pairs(std::vector<ContactConstraints> parts, la::
   return out;
 }
 
+ContactConstraints without_rows(const ContactConstraints& rows)
+{
+  ContactConstraints out;
+  out.formulation = rows.formulation;
+  out.pair_formulation = rows.pair_formulation;
+  out.transformed_basis = rows.transformed_basis;
+  out.search_distance = rows.search_distance;
+  out.n_slave_nodes = rows.n_slave_nodes;
+  out.n_overhanging = rows.n_overhanging;
+  return out;
+}
+
 ContactConstraints pair_rows(const ContactConstraints& rows, int32_t p)
 {
   ContactRowBuilder builder;
-  ContactConstraints out;
+  ContactConstraints out = without_rows(rows);
+  if (!rows.pair_formulation.empty())
+    out.formulation = rows.pair_formulation[p];
+  out.pair_formulation.clear();
   for (la::Index i = 0; i < rows.n_rows(); ++i)
     if (rows.pair[i] == p)
       builder.copy(rows, i, rows.gap[i], p);
-  out.formulation = rows.formulation;
-  out.transformed_basis = rows.transformed_basis;
-  out.search_distance = rows.search_distance;
   builder.finish(rows.B.cols(), out);
   return out;
 }

@@ -179,6 +179,9 @@ struct ContactConstraints
   /// How the rows were made: mortar rows' force over slave_area is the nodal pressure of the
   /// dual traction at every node, quadratic faces included.
   ContactFormulation formulation = ContactFormulation::node_to_segment;
+  /// Rows of several pairs (concatenate_pairs): each pair's formulation, by pair, which
+  /// pair_rows gives back to the rows of one pair; empty for one pair's rows (`formulation`).
+  std::vector<ContactFormulation> pair_formulation;
   /// Mortar rows on tri6 / quad8 slave faces, with the transformed dual basis
   /// (mortar_face_integration.hpp), whose rows spread their weight wider than bilinear ones.
   bool transformed_basis = false;
@@ -217,12 +220,17 @@ ContactConstraints build_contact_constraints(const mesh::Mesh& mesh, const la::V
 
 /// @brief The rows of several pairs as one block, pair after pair: `parts[p]`'s rows get
 /// pair p. The per-pair figures (search distance, slave counts) are the largest and the sums;
-/// `formulation` and `transformed_basis` are part 0's and any part's. No parts: no rows over
-/// n_global_dofs DOFs.
+/// `formulation` is part 0's, `pair_formulation` every part's, `transformed_basis` any part's.
+/// No parts: no rows over n_global_dofs DOFs.
 ContactConstraints concatenate_pairs(std::vector<ContactConstraints> parts, la::Index n_global_dofs);
 
-/// @brief The rows of pair p alone (in their order), for the outputs of one pair.
+/// @brief The rows of pair p alone (in their order, with that pair's formulation), for the
+/// outputs of one pair.
 ContactConstraints pair_rows(const ContactConstraints& rows, int32_t p);
+
+/// @brief `rows` without its rows: the figures of the search (formulation, search distance,
+/// slave counts), for a subset of its rows to be built into (ContactRowBuilder::finish).
+ContactConstraints without_rows(const ContactConstraints& rows);
 
 /// @brief Node-to-segment rows of `pair` (see file comment); options.formulation is ignored.
 /// Arguments, result and errors as build_contact_constraints.

@@ -118,6 +118,30 @@ TangentialRows build_tangential_rows(const ContactConstraints& normal, const std
   return out;
 }
 
+TangentialRows pair_rows(const TangentialRows& rows, int32_t p, const la::Vector& lambda, la::Vector& lambda_p)
+{
+  TangentialRows out;
+  out.n_tangents = rows.n_tangents;
+  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<double> values;
+  for (int64_t r = 0; r < rows.n_rows(); ++r)
+    if (rows.pair[r] == p)
+    {
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(rows.B, r); it; ++it)
+        triplets.emplace_back(static_cast<int>(out.n_rows()), static_cast<int>(it.col()), it.value());
+      out.tangent.push_back(rows.tangent[r]);
+      out.slave_node.push_back(rows.slave_node[r]);
+      out.pair.push_back(p);
+      out.held.push_back(rows.held[r]);
+      if (r < lambda.size())
+        values.push_back(lambda(r));
+    }
+  out.B.resize(out.n_rows(), rows.B.cols());
+  out.B.setFromTriplets(triplets.begin(), triplets.end());
+  lambda_p = Eigen::Map<const la::Vector>(values.data(), static_cast<la::Index>(values.size()));
+  return out;
+}
+
 la::Vector tangential_forces(const TangentialRows& rows, const la::Vector& lambda_hat, la::Index n_dofs)
 {
   FETICON_CHECK(lambda_hat.size() == rows.n_rows() && rows.B.cols() == n_dofs,

@@ -57,6 +57,10 @@ std::vector<Eigen::Vector3d> unit_tangents(const Eigen::Vector3d& n, const std::
 TangentialRows build_tangential_rows(const ContactConstraints& normal, const std::array<bool, 3>& eliminated,
                                      const std::vector<int64_t>& supported = {});
 
+/// The rows of pair p alone (in their order) and, if `lambda` is not empty, their entries of
+/// `lambda` in `lambda_p`.
+TangentialRows pair_rows(const TangentialRows& rows, int32_t p, const la::Vector& lambda, la::Vector& lambda_p);
+
 /// Tangential forces on the structure (N, per global DOF): -B_T' lambda_hat_T.
 la::Vector tangential_forces(const TangentialRows& rows, const la::Vector& lambda_hat, la::Index n_dofs);
 } // namespace feticon::contact

@@ -36,27 +36,21 @@ ContactSolution pair_solution(const ContactSolution& solution, int32_t p)
   for (la::Index i = 0, k = 0; i < rows.n_rows(); ++i)
     if (rows.pair[i] == p)
       out.contact_lambda(k++) = solution.contact_lambda(i);
-  const contact::TangentialRows& t = solution.tangential;
-  out.tangential.n_tangents = t.n_tangents;
-  std::vector<Eigen::Triplet<double>> triplets;
-  std::vector<double> lambda;
-  for (int64_t r = 0; r < t.n_rows(); ++r)
-    if (t.pair[r] == p)
-    {
-      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(t.B, r); it; ++it)
-        triplets.emplace_back(static_cast<int>(out.tangential.n_rows()), static_cast<int>(it.col()), it.value());
-      out.tangential.tangent.push_back(t.tangent[r]);
-      out.tangential.slave_node.push_back(t.slave_node[r]);
-      out.tangential.pair.push_back(p);
-      out.tangential.held.push_back(t.held[r]);
-      if (r < solution.tangential_lambda.size())
-        lambda.push_back(solution.tangential_lambda(r));
-    }
-  out.tangential.B.resize(out.tangential.n_rows(), t.B.cols());
-  out.tangential.B.setFromTriplets(triplets.begin(), triplets.end());
-  out.tangential_lambda = Eigen::Map<const la::Vector>(lambda.data(), static_cast<la::Index>(lambda.size()));
+  out.tangential = contact::pair_rows(solution.tangential, p, solution.tangential_lambda, out.tangential_lambda);
   return out;
 }
+
+namespace
+{
+/// `solution` if all its rows are pair p's (one pair, or a solution pair_solution made), else
+/// pair_solution of it in `storage`.
+const ContactSolution& rows_of_pair(const ContactSolution& solution, int32_t p, std::optional<ContactSolution>& storage)
+{
+  if (std::ranges::all_of(solution.constraints.pair, [p](int32_t q) { return q == p; }))
+    return solution;
+  return storage.emplace(pair_solution(solution, p));
+}
+} // namespace
 
 namespace
 {
@@ -135,9 +129,8 @@ void average_quadratic_face_pressures(const mesh::Mesh& surface, const std::vect
 la::Vector slave_nodal_pressures(const fem::Problem& problem, const ContactSolution& all_pairs,
                                  fem::Kinematics kinematics, int32_t pair)
 {
-  const std::optional<ContactSolution> one =
-      problem.contacts.size() > 1 ? std::optional(pair_solution(all_pairs, pair)) : std::nullopt;
-  const ContactSolution& solution = one ? *one : all_pairs;
+  std::optional<ContactSolution> storage;
+  const ContactSolution& solution = rows_of_pair(all_pairs, pair, storage);
   const auto& rows = solution.constraints;
   la::Vector force = la::Vector::Zero(problem.mesh.n_nodes());
   for (size_t i = 0; i < rows.slave_node.size(); ++i)
@@ -188,9 +181,8 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
                                                 fem::Kinematics kinematics, const Friction& friction,
                                                 int32_t pair_index)
 {
-  const std::optional<ContactSolution> one =
-      problem.contacts.size() > 1 ? std::optional(pair_solution(all_pairs, pair_index)) : std::nullopt;
-  const ContactSolution& solution = one ? *one : all_pairs;
+  std::optional<ContactSolution> storage;
+  const ContactSolution& solution = rows_of_pair(all_pairs, pair_index, storage);
   const auto& rows = solution.constraints;
   FETICON_CHECK(static_cast<la::Index>(rows.slave_node.size()) == solution.contact_lambda.size(),
                 "contact multipliers do not match the contact rows");

@@ -73,12 +73,7 @@ int64_t LinearContactRows::n_selected() const { return std::count(_selected.begi
 contact::ContactConstraints LinearContactRows::subset(const std::vector<char>& keep, const la::Vector& u) const
 {
   const contact::ContactConstraints& all = _candidates;
-  contact::ContactConstraints out;
-  out.search_distance = all.search_distance;
-  out.n_slave_nodes = all.n_slave_nodes;
-  out.n_overhanging = all.n_overhanging;
-  out.formulation = all.formulation;
-  out.transformed_basis = all.transformed_basis;
+  contact::ContactConstraints out = contact::without_rows(all);
   const la::Vector gap = linearized_gaps(all, u);
   contact::ContactRowBuilder rows;
   for (la::Index i = 0; i < all.n_rows(); ++i)
