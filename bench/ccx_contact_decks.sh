@@ -4,7 +4,7 @@
 # says why. Writes a markdown table (deck | verdict | line) to stdout; the tally at the end.
 #
 #   bench/ccx_contact_decks.sh                         # build/feticon
-#   bench/ccx_contact_decks.sh --feticon build-tests/feticon --timeout 300
+#   bench/ccx_contact_decks.sh --feticon build/feticon --timeout 300
 # Needs the package calculix-ccx-test (apt-get install calculix-ccx-test).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

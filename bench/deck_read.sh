@@ -15,7 +15,7 @@
 # nodes * 24 + cells * (32 + 4) bytes (coordinates, hex8 cells, body ids).
 #
 #   bench/deck_read.sh                                  # build/feticon, 99 x 99 x 49 cells per box
-#   bench/deck_read.sh --feticon build-tests/feticon --cells 49 49 24 --repeat 5
+#   bench/deck_read.sh --feticon build/feticon --cells 49 49 24 --repeat 5
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)

@@ -6,7 +6,7 @@
 #
 #   bench/friction.sh                        # 120 elements across 2a (refinement 4.4), 3 reps
 #   bench/friction.sh --refinement 2 --reps 1
-#   FETICON=build-tests/feticon bench/friction.sh
+#   FETICON=build/feticon bench/friction.sh
 #   bench/friction.sh --large --line-load 1e8   # large displacements under displacement control
 #
 # --large: the first table with large displacements (deformed frame), the load face moved by

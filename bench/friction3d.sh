@@ -7,7 +7,7 @@
 #
 #   bench/friction3d.sh
 #   bench/friction3d.sh --radius 0.1 --cap 0.025 --block 0.04 --refinement 0.794   # a/R 0.024
-#   FETICON=build-tests/feticon bench/friction3d.sh --refinement 0.3 --load-steps 2  # a quick look
+#   FETICON=build/feticon bench/friction3d.sh --refinement 0.3 --load-steps 2  # a quick look
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 feticon=${FETICON:-$root/build/feticon}

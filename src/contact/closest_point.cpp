@@ -30,9 +30,6 @@ QuadDerivatives quad_derivatives(const QuadCoordinates& quad, const Eigen::Vecto
   return d;
 }
 
-/// A Newton step is capped at the width of the reference square so that a point far outside the
-/// quad cannot throw the iterate to infinity; accepted projections never reach the cap.
-constexpr double max_step = 2.0;
 } // namespace
 
 Eigen::Vector4d quad_shape_functions(const Eigen::Vector2d& xi)
@@ -85,9 +82,9 @@ QuadProjection project_to_quad(const QuadCoordinates& quad, const Eigen::Vector3
     const double step_size = step.lpNorm<Eigen::Infinity>();
     if (!std::isfinite(step_size))
       break;
-    if (step_size > max_step)
+    if (step_size > max_projection_step)
     {
-      step *= max_step / step_size;
+      step *= max_projection_step / step_size;
       full_newton = false;
     }
     xi += step;

@@ -39,6 +39,10 @@ inline constexpr std::array<std::array<double, 2>, 4> quad_corners = {{
     {-1, 1},
 }};
 
+/// A Newton step of a projection is capped at the width of the reference face so that a point far
+/// outside the face cannot throw the iterate to infinity; accepted projections never reach the cap.
+inline constexpr double max_projection_step = 2.0;
+
 /// Reference coordinates of corner a as a vector.
 inline Eigen::Vector2d quad_corner(int a) { return {quad_corners[a][0], quad_corners[a][1]}; }
 

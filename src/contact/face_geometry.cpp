@@ -1,5 +1,6 @@
 #include "contact/face_geometry.hpp"
 
+#include "contact/closest_point.hpp"
 #include "contact/mortar_integration.hpp"
 #include "fem/reference_face.hpp"
 
@@ -19,8 +20,6 @@ Eigen::Matrix<double, 3, 2> tangents(const FaceGeometry& face, const Eigen::Vect
   return face.x.transpose() * fem::face_shape_gradients(face.kind, xi);
 }
 
-/// A Newton step is capped at the reference face's width, as in project_to_quad.
-constexpr double max_step = 2.0;
 /// Step of the central differences of the tangents that give the curvature term.
 constexpr double difference_step = 1e-5;
 
@@ -163,8 +162,8 @@ QuadProjection project_to_face(const FaceGeometry& face, const Eigen::Vector3d& 
       break; // degenerate face
     Eigen::Vector2d step = -J.inverse() * r;
     ++p.iterations;
-    if (step.norm() > max_step)
-      step *= max_step / step.norm();
+    if (step.norm() > max_projection_step)
+      step *= max_projection_step / step.norm();
     p.xi += step;
     if (step.norm() < options.step_tolerance)
     {

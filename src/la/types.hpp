@@ -4,11 +4,14 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <cstdint>
+#include <limits>
 
 namespace feticon::la
 {
 using Index = Eigen::Index;
 using Vector = Eigen::VectorXd;
+/// An absent bound (+infinity) and the start of a minimum search.
+inline constexpr double infinity = std::numeric_limits<double>::infinity();
 using Matrix = Eigen::MatrixXd;
 /// Column-major with 32-bit indices: what Eigen's CHOLMOD wrapper and METIS expect.
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;

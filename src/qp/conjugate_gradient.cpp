@@ -6,6 +6,7 @@
 #include "common/log.hpp"
 #include "common/timer.hpp"
 #include "qp/ritz_estimate.hpp"
+#include "qp/solve_stop.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -36,13 +37,6 @@ void check_input(const la::LinearOperator& A, const Vector& b, const Vector& x, 
   FETICON_CHECK(x.allFinite(),
                 "conjugate_gradient: the initial guess has a NaN or infinite "
                 "entry");
-}
-
-std::string format_number(double value)
-{
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3e", value);
-  return text;
 }
 } // namespace
 

@@ -4,6 +4,7 @@
 #include "common/log.hpp"
 #include "common/timer.hpp"
 #include "la/vector_space.hpp"
+#include "qp/gradient_split.hpp"
 #include "qp/ritz_estimate.hpp"
 #include "qp/solve_stop.hpp"
 
@@ -24,12 +25,6 @@ using la::Vector;
 double bound_reached(const SeparableConstraints& set, Index i, double p_i)
 {
   return p_i > 0.0 ? set.lower[i] : set.upper[i];
-}
-
-/// f(x) = 1/2 x'(g - b).
-double cost_of(const la::VectorSpace& space, const Vector& x, const Vector& g, const Vector& b)
-{
-  return 0.5 * la::reduce_sum<1>(space, [&](Index i, double* sum) { sum[0] += x[i] * (g[i] - b[i]); })[0];
 }
 
 /// Largest step along -p that stays in Omega over all ranks (active discs skipped unless
@@ -57,16 +52,6 @@ bool moves_along_circles(const la::VectorSpace& space, const SeparableConstraint
 {
   return space.max(moves_along_a_circle(set, x, p) ? 1.0 : 0.0) > 0.0;
 }
-
-/// Squared norms of phi and beta, phi~'phi and the cost, in one reduction (the order of
-/// Mprgp's, so that the sums agree bitwise without discs).
-struct GradientSplit
-{
-  double free_norm2 = 0.0;
-  double chopped_norm2 = 0.0;
-  double reduced_free_dot_free = 0.0;
-  double cost = 0.0;
-};
 
 void check_input(const la::LinearOperator& A, const Vector& b, const SeparableConstraints& set, const Vector& x)
 {
@@ -252,7 +237,7 @@ void Mpgp::cg_step(SolveState& s, double alpha_cg, double pq, bool on_circles, d
   else
   {
     refresh_gradient(s);
-    if (cost_of(s.space, s.x, s.g, s.b) > cost + 1e-12 * std::abs(cost))
+    if (quadratic_cost(s.space, s.x, s.g, s.b) > cost + 1e-12 * std::abs(cost))
     {
       s.x.swap(s.x_old);
       s.g.swap(s.g_old);
@@ -298,7 +283,7 @@ void Mpgp::expansion_step(SolveState& s, double alpha_f, Index blocking, bool on
   s.g = s.g_old + s.q;
   // f is monotone only for alpha_bar <= 2/||A||, and the power estimate is from below; the
   // step along circles is monotone only to second order: replaced if f increased.
-  if (cost_of(s.space, s.x, s.g, s.b) > cost + 1e-12 * std::abs(cost))
+  if (quadratic_cost(s.space, s.x, s.g, s.b) > cost + 1e-12 * std::abs(cost))
   {
     if (on_circles)
     {
@@ -360,7 +345,7 @@ void Mpgp::gradient_projection_step(SolveState& s, double cost)
   _A.apply(s.y, s.q);
   ++s.report.hessian_multiplications;
   s.g += s.q;
-  if (cost_of(s.space, s.x, s.g, s.b) > cost + 1e-12 * std::abs(cost))
+  if (quadratic_cost(s.space, s.x, s.g, s.b) > cost + 1e-12 * std::abs(cost))
     _alpha_bar *= 0.5;
   direction(s, s.p);
   s.ritz.end_run();

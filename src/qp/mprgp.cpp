@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "common/timer.hpp"
+#include "qp/gradient_split.hpp"
 #include "qp/ritz_estimate.hpp"
 #include "qp/solve_stop.hpp"
 
@@ -23,7 +24,7 @@ namespace
 using la::Index;
 using la::Vector;
 
-constexpr double infinity = std::numeric_limits<double>::infinity();
+using la::infinity;
 
 /// The feasible set l <= x <= u. A null `upper` means u = +infinity everywhere; the
 /// lower-bound-only solve then runs the arithmetic of the original algorithm (the vector
@@ -59,16 +60,6 @@ struct Box
   }
 };
 
-/// Squared norms of phi and beta, the product phi~'phi and the cost at a feasible x, in
-/// one reduction.
-struct GradientSplit
-{
-  double free_norm2 = 0.0;
-  double chopped_norm2 = 0.0;
-  double reduced_free_dot_free = 0.0;
-  double cost = 0.0; ///< 1/2 x'(g - b)
-};
-
 GradientSplit split_gradient(const la::VectorSpace& space, const Vector& x, const Vector& g, const Vector& b,
                              const Box& box, double alpha_bar)
 {
@@ -87,11 +78,6 @@ GradientSplit split_gradient(const la::VectorSpace& space, const Vector& x, cons
     sum[3] += x[i] * (g[i] - b[i]);
   });
   return {s[0], s[1], s[2], 0.5 * s[3]};
-}
-
-double cost_of(const la::VectorSpace& space, const Vector& x, const Vector& g, const Vector& b)
-{
-  return 0.5 * la::reduce_sum<1>(space, [&](Index i, double* sum) { sum[0] += x[i] * (g[i] - b[i]); })[0];
 }
 
 /// phi: g on the free set, 0 on the active set.
@@ -393,7 +379,7 @@ bool Mprgp::projected_cg_expansion(SolveState& s, double alpha_cg, double cost) 
   _A.apply(s.x, s.g);
   s.g -= s.b;
   ++s.report.hessian_multiplications;
-  const bool done = cost_of(s.space, s.x, s.g, s.b) <= cost + 1e-12 * std::abs(cost);
+  const bool done = quadratic_cost(s.space, s.x, s.g, s.b) <= cost + 1e-12 * std::abs(cost);
   if (!done) // back to x and the standard step from there (q = A p still holds)
   {
     s.x.swap(s.x_old);
@@ -432,7 +418,7 @@ void Mprgp::standard_expansion(SolveState& s, double alpha_f, Index blocking, do
   g += s.q;
   // f is monotone only for alpha_bar <= 2/||A||, and the power estimate of ||A|| is
   // from below; the margin ignores round-off of the cost evaluation.
-  if (cost_of(s.space, x, g, s.b) > cost + 1e-12 * std::abs(cost))
+  if (quadratic_cost(s.space, x, g, s.b) > cost + 1e-12 * std::abs(cost))
     _alpha_bar *= 0.5;
 }
 

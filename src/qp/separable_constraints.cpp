@@ -13,7 +13,7 @@ namespace
 using la::Index;
 using la::Vector;
 
-constexpr double infinity = std::numeric_limits<double>::infinity();
+using la::infinity;
 
 void check_bounds(const SeparableConstraints& set, Index n, const char* who)
 {

@@ -18,6 +18,7 @@
 /// a / (h/n) = 1 that is 1 / (2 n^2): 12 % for n = 2, 3 % for n = 4, 0.8 % for n = 8. Elongated
 /// cells make it worse in proportion to the aspect ratio squared, hence cubes and n >= 6.
 
+#include "common/timer.hpp"
 #include "fem/assembler.hpp"
 #include "fem/dirichlet.hpp"
 #include "fem/loads.hpp"
@@ -108,10 +109,6 @@ struct Cantilever
   }
 };
 
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 } // namespace
 
 // Reference: Timoshenko beam theory for a cantilever with a tip load P (Gere & Timoshenko,

@@ -94,4 +94,6 @@ inline mesh::Mesh roof_and_block()
       "upper_");
   return mesh;
 }
+/// The contact pair of stacked_boxes: the upper box's bottom on the lower box's top.
+inline const ContactPair upper_on_lower{.slave = "upper_zmin", .master = "lower_zmax"};
 } // namespace feticon::contact::test

@@ -19,7 +19,7 @@ namespace feticon::contact
 {
 namespace
 {
-const ContactPair upper_on_lower{.slave = "upper_zmin", .master = "lower_zmax"};
+using test::upper_on_lower;
 
 /// Row of `constraints` for slave node `node`, or -1.
 la::Index row_of(const ContactConstraints& constraints, int32_t node)

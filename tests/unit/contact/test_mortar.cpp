@@ -24,7 +24,7 @@ namespace
 using row_checks::expect_rows_annihilate_translations;
 using row_checks::weight_sum;
 
-const ContactPair upper_on_lower{.slave = "upper_zmin", .master = "lower_zmax"};
+using test::upper_on_lower;
 
 ContactOptions mortar_options()
 {

@@ -11,15 +11,15 @@ using namespace feticon;
 
 namespace
 {
-struct Setup
+struct ProjectorSetup
 {
   std::unique_ptr<test::ClampedBox> box;
   std::unique_ptr<dual::FetiOperators> feti;
 };
 
-std::unique_ptr<Setup> make_setup()
+std::unique_ptr<ProjectorSetup> make_setup()
 {
-  auto s = std::make_unique<Setup>();
+  auto s = std::make_unique<ProjectorSetup>();
   s->box = test::make_clamped_box();
   s->feti = std::make_unique<dual::FetiOperators>(*s->box->system, s->box->equality.rows);
   return s;

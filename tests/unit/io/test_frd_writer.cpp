@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 
 using test::fresh_directory;
 
-const fs::path reference_dir = fs::path(FETICON_SOURCE_DIR) / "tests" / "data" / "calculix_results";
+const fs::path frd_reference_dir = fs::path(FETICON_SOURCE_DIR) / "tests" / "data" / "calculix_results";
 
 std::vector<std::string> read_lines(const fs::path& path)
 {
@@ -169,7 +169,7 @@ Frd parse_frd(const std::vector<std::string>& lines)
 /// estimator, not written by feticon) and hence the block counter of 1PSTEP.
 TEST(FrdWriter, ReproducesWhatCcxWrites)
 {
-  const std::vector<std::string> reference_lines = read_lines(reference_dir / "two_blocks_frd.frd");
+  const std::vector<std::string> reference_lines = read_lines(frd_reference_dir / "two_blocks_frd.frd");
   const Frd reference = parse_frd(reference_lines);
   ASSERT_TRUE(reference.closed);
 

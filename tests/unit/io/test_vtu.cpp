@@ -78,7 +78,7 @@ int count(const std::string& text, const std::string& pattern)
   return n;
 }
 
-std::string read(const fs::path& path)
+std::string read_vtu_file(const fs::path& path)
 {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream content;
@@ -193,20 +193,20 @@ TEST(Pvd, ListsExactlyTheStepsAddedAndLeavesNoTemporary)
   const fs::path directory = fresh_directory("pvd");
   const mesh::Mesh mesh = small_box();
   PvdWriter series(directory / "series.pvd");
-  EXPECT_EQ(count(read(directory / "series.pvd"), "<DataSet "), 0);
+  EXPECT_EQ(count(read_vtu_file(directory / "series.pvd"), "<DataSet "), 0);
   const std::vector<double> times = {0.1, 0.5, 1.0};
   for (std::size_t step = 0; step < times.size(); ++step)
   {
     const std::string name = "step_" + std::to_string(step) + ".vtu";
     write_vtu(directory / name, mesh, nullptr, {}, {});
     series.add(times[step], name);
-    const std::string pvd = read(directory / "series.pvd");
+    const std::string pvd = read_vtu_file(directory / "series.pvd");
     EXPECT_EQ(count(pvd, "<DataSet "), static_cast<int>(step) + 1);
     EXPECT_NE(pvd.find("file=\"" + name + "\""), std::string::npos);
   }
   EXPECT_EQ(series.n_steps(), 3);
   // 17 significant digits: the times read back exactly.
-  EXPECT_NE(read(directory / "series.pvd").find("timestep=\"0.10000000000000001\""), std::string::npos);
+  EXPECT_NE(read_vtu_file(directory / "series.pvd").find("timestep=\"0.10000000000000001\""), std::string::npos);
 
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(directory))

@@ -2,11 +2,15 @@
 /// Small hand-built operators and bound-constrained QPs for the qp unit tests.
 
 #include "la/operator.hpp"
+#include "qp/mprgp.hpp"
+
+#include <Eigen/Eigenvalues>
 
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <random>
+#include <string>
 
 namespace feticon::test
 {
@@ -177,5 +181,17 @@ inline double projected_gradient_norm(const la::Vector& x, const la::Vector& g, 
     sum += gp * gp;
   }
   return std::sqrt(sum);
+}
+/// Sizes and seeds of the random bound-constrained QPs of the MPRGP tests.
+inline constexpr int sizes[] = {5, 12, 25, 40, 60};
+inline constexpr unsigned seeds[] = {1, 2, 3, 4, 5, 6};
+/// Every MPRGP test runs with each expansion step (qp/mprgp.hpp).
+inline constexpr qp::MprgpExpansion expansions[] = {qp::MprgpExpansion::standard, qp::MprgpExpansion::projected_cg};
+inline std::string expansion_name(qp::MprgpExpansion e) { return e == qp::MprgpExpansion::standard ? "std" : "projcg"; }
+
+/// The largest eigenvalue of a dense symmetric matrix.
+inline double largest_eigenvalue(const la::Matrix& A)
+{
+  return Eigen::SelfAdjointEigenSolver<la::Matrix>(A).eigenvalues().maxCoeff();
 }
 } // namespace feticon::test

@@ -16,7 +16,7 @@ using namespace feticon;
 
 namespace
 {
-constexpr double infinity = std::numeric_limits<double>::infinity();
+using la::infinity;
 
 /// A fresh directory per test, removed at the end.
 class MatrixMarket : public testing::Test

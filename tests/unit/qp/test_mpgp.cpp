@@ -24,7 +24,7 @@ using namespace feticon;
 
 namespace
 {
-constexpr double infinity = std::numeric_limits<double>::infinity();
+using la::infinity;
 
 /// min 1/2 x'Ax - b'x subject to x in `set`.
 struct DiscQp
@@ -198,8 +198,8 @@ test::Trace traced_mpgp(const la::Matrix& matrix, const la::Vector& b, const qp:
   return trace;
 }
 
-const int sizes[] = {20, 60, 200};
-const unsigned seeds[] = {1, 2, 3, 4, 5, 6};
+const int disc_sizes[] = {20, 60, 200};
+using test::seeds;
 } // namespace
 
 // Reference: hand computation. With A = I the minimizer of 1/2||x||^2 - b'x over Omega is
@@ -233,7 +233,7 @@ TEST(Mpgp, IdentityHessianGivesTheProjectionOfB)
 TEST(Mpgp, RandomDiscProblemsSatisfyKkt)
 {
   DiscCounts total;
-  for (const int n : sizes)
+  for (const int n : disc_sizes)
     for (const unsigned seed : seeds)
     {
       SCOPED_TRACE("n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
@@ -274,7 +274,7 @@ TEST(Mpgp, RandomDiscProblemsSatisfyKkt)
 TEST(Mpgp, RandomDiscProblemsMatchAcceleratedProjectedGradient)
 {
   for (const bool preconditioned : {false, true})
-    for (const int n : sizes)
+    for (const int n : disc_sizes)
       for (const unsigned seed : seeds)
       {
         SCOPED_TRACE(std::string(preconditioned ? "jacobi, " : "") + "n = " + std::to_string(n) +
@@ -335,7 +335,7 @@ TEST(Mpgp, CostDecreasesMonotonically)
   int fallbacks = 0;
   for (const double small : {0.4, 0.01})
     for (const double condition : {1e2, 1e4})
-      for (const int n : sizes)
+      for (const int n : disc_sizes)
         for (const unsigned seed : seeds)
         {
           SCOPED_TRACE("small discs " + std::to_string(small) + ", condition " + std::to_string(condition) +

@@ -22,10 +22,7 @@ int predicted_products(const qp::QpReport& report, int power_iterations, int ref
       report.proportioning_steps + report.iterations / refresh;
 }
 
-double largest_eigenvalue(const la::Matrix& A)
-{
-  return Eigen::SelfAdjointEigenSolver<la::Matrix>(A).eigenvalues().maxCoeff();
-}
+using test::largest_eigenvalue;
 
 /// KKT conditions at tolerance `tol` with the true gradient g = Ax - b: x >= l exactly,
 /// g_i >= -tol where x_i = l_i, and |g_i| <= tol where x_i > l_i (complementarity: a
@@ -43,11 +40,10 @@ void expect_kkt(const test::BoundQp& qp, const la::Vector& x, double tol)
   }
 }
 
-const int sizes[] = {5, 12, 25, 40, 60};
-const unsigned seeds[] = {1, 2, 3, 4, 5, 6};
+using test::seeds;
+using test::sizes;
 /// Every test below runs with each expansion step (qp/mprgp.hpp).
-const qp::MprgpExpansion expansions[] = {qp::MprgpExpansion::standard, qp::MprgpExpansion::projected_cg};
-std::string name(qp::MprgpExpansion e) { return e == qp::MprgpExpansion::standard ? "std" : "projcg"; }
+using test::expansions;
 } // namespace
 
 // Reference: the stopping test ||g_P|| <= rtol ||b|| of ALGORITHMS.md section 5 bounds every
@@ -60,7 +56,8 @@ TEST(Mprgp, RandomProblemsSatisfyKktAtRequestedTolerance)
     for (const int n : sizes)
       for (const unsigned seed : seeds)
       {
-        SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
+        SCOPED_TRACE(test::expansion_name(expansion) + ", n = " + std::to_string(n) +
+                     ", seed = " + std::to_string(seed));
         const test::BoundQp qp = test::random_bound_qp(n, seed);
         test::CountingOperator A(qp.A);
         const double rtol = 1e-5;
@@ -89,7 +86,8 @@ TEST(Mprgp, RandomProblemsMatchActiveSetReference)
     for (const int n : sizes)
       for (const unsigned seed : seeds)
       {
-        SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
+        SCOPED_TRACE(test::expansion_name(expansion) + ", n = " + std::to_string(n) +
+                     ", seed = " + std::to_string(seed));
         const test::BoundQp qp = test::random_bound_qp(n, seed + 100);
         const la::Vector reference = test::reference_bound_qp(qp.A, qp.b, qp.lower);
         ASSERT_LE(test::projected_gradient_norm(reference, qp.A * reference - qp.b, qp.lower), 1e-12 * qp.b.norm());
@@ -115,8 +113,8 @@ TEST(Mprgp, CostDecreasesMonotonically)
       for (const int n : sizes)
         for (const unsigned seed : seeds)
         {
-          SCOPED_TRACE(name(expansion) + ", condition " + std::to_string(condition) + ", n = " + std::to_string(n) +
-                       ", seed = " + std::to_string(seed));
+          SCOPED_TRACE(test::expansion_name(expansion) + ", condition " + std::to_string(condition) +
+                       ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
           const test::BoundQp qp = test::random_bound_qp(n, seed + 200, condition);
           test::CountingOperator A(qp.A);
           std::vector<double> costs;

@@ -19,12 +19,9 @@ using namespace feticon;
 
 namespace
 {
-constexpr double infinity = std::numeric_limits<double>::infinity();
+using la::infinity;
 
-double largest_eigenvalue(const la::Matrix& A)
-{
-  return Eigen::SelfAdjointEigenSolver<la::Matrix>(A).eigenvalues().maxCoeff();
-}
+using test::largest_eigenvalue;
 
 /// Components of x at their lower (l_i < u_i) and at their upper bound (l_i < u_i).
 struct ActiveCounts
@@ -62,10 +59,9 @@ ActiveCounts expect_box_kkt(const test::BoxQp& qp, const la::Vector& x, double t
   return counts;
 }
 
-const int sizes[] = {5, 12, 25, 40, 60};
-const unsigned seeds[] = {1, 2, 3, 4, 5, 6};
-const qp::MprgpExpansion expansions[] = {qp::MprgpExpansion::standard, qp::MprgpExpansion::projected_cg};
-std::string name(qp::MprgpExpansion e) { return e == qp::MprgpExpansion::standard ? "std" : "projcg"; }
+using test::expansions;
+using test::seeds;
+using test::sizes;
 
 /// One solve of `qp` from x0 = 0, with u = `upper` (the lower-bound overload if null).
 test::Trace traced_solve(const la::Matrix& matrix, const la::Vector& b, const la::Vector& lower,
@@ -150,7 +146,8 @@ TEST(MprgpBox, RandomBoxProblemsSatisfyKktAtRequestedTolerance)
     for (const int n : sizes)
       for (const unsigned seed : seeds)
       {
-        SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
+        SCOPED_TRACE(test::expansion_name(expansion) + ", n = " + std::to_string(n) +
+                     ", seed = " + std::to_string(seed));
         const test::BoxQp qp = test::random_box_qp(n, seed);
         test::CountingOperator A(qp.A);
         const double rtol = 1e-5;
@@ -182,8 +179,8 @@ TEST(MprgpBox, RandomBoxProblemsMatchActiveSetReference)
       for (const int n : sizes)
         for (const unsigned seed : seeds)
         {
-          SCOPED_TRACE(name(expansion) + (preconditioned ? " jacobi" : "") + ", n = " + std::to_string(n) +
-                       ", seed = " + std::to_string(seed));
+          SCOPED_TRACE(test::expansion_name(expansion) + (preconditioned ? " jacobi" : "") +
+                       ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
           const test::BoxQp qp = test::random_box_qp(n, seed + 100);
           const la::Vector reference = test::reference_box_qp(qp.A, qp.b, qp.lower, qp.upper);
           ASSERT_LE(test::projected_gradient_norm(reference, qp.A * reference - qp.b, qp.lower, qp.upper),
@@ -211,8 +208,8 @@ TEST(MprgpBox, CostDecreasesMonotonically)
       for (const int n : sizes)
         for (const unsigned seed : seeds)
         {
-          SCOPED_TRACE(name(expansion) + ", condition " + std::to_string(condition) + ", n = " + std::to_string(n) +
-                       ", seed = " + std::to_string(seed));
+          SCOPED_TRACE(test::expansion_name(expansion) + ", condition " + std::to_string(condition) +
+                       ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
           const test::BoxQp qp = test::random_box_qp(n, seed + 200, condition);
           const test::Trace trace =
               traced_solve(qp.A, qp.b, qp.lower, &qp.upper,
@@ -241,8 +238,8 @@ TEST(MprgpBox, InfiniteUpperBoundReproducesTheLowerBoundSolveBitwise)
       for (const int n : {5, 25, 60})
         for (const unsigned seed : {1u, 2u, 3u})
         {
-          SCOPED_TRACE(name(expansion) + (preconditioned ? " jacobi" : "") + ", n = " + std::to_string(n) +
-                       ", seed = " + std::to_string(seed));
+          SCOPED_TRACE(test::expansion_name(expansion) + (preconditioned ? " jacobi" : "") +
+                       ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
           const test::BoundQp qp = test::random_bound_qp(n, seed + 300, 1e3);
           const la::Vector upper = la::Vector::Constant(n, infinity);
           const test::JacobiOperator jacobi(qp.A);
@@ -266,7 +263,8 @@ TEST(MprgpBox, UpperBoundsMirrorLowerBoundsExactly)
     for (const int n : {5, 25, 60})
       for (const unsigned seed : {1u, 2u, 3u})
       {
-        SCOPED_TRACE(name(expansion) + ", n = " + std::to_string(n) + ", seed = " + std::to_string(seed));
+        SCOPED_TRACE(test::expansion_name(expansion) + ", n = " + std::to_string(n) +
+                     ", seed = " + std::to_string(seed));
         const test::BoundQp qp = test::random_bound_qp(n, seed + 400);
         const la::Vector no_lower = la::Vector::Constant(n, -infinity);
         const la::Vector upper = -qp.lower;

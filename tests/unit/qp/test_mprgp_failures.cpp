@@ -11,7 +11,7 @@ using namespace feticon;
 
 namespace
 {
-constexpr double infinity = std::numeric_limits<double>::infinity();
+using la::infinity;
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 
 la::Vector pair(double first, double second)

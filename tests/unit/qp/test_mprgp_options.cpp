@@ -11,10 +11,7 @@ using namespace feticon;
 
 namespace
 {
-double largest_eigenvalue(const la::Matrix& A)
-{
-  return Eigen::SelfAdjointEigenSolver<la::Matrix>(A).eigenvalues().maxCoeff();
-}
+using test::largest_eigenvalue;
 } // namespace
 
 // Reference: MprgpOptions::stop replaces ||g_P|| <= rtol ||b|| (qp/mprgp.hpp), as SMALBE-M
