@@ -183,30 +183,39 @@ std::string format_summary(const nlohmann::ordered_json& s, const std::string& t
   return os.str();
 }
 
-void plot_results(const std::filesystem::path& out_dir)
+void run_plot_script(const std::string& name, const std::vector<std::string>& arguments)
 {
-  const std::filesystem::path script = std::filesystem::path(FETICON_SOURCE_DIR) / "scripts" / "plot_hertz.py";
+  // The source tree's scripts (a build tree's runs), else the installed ones.
+  std::filesystem::path script = std::filesystem::path(FETICON_SOURCE_DIR) / "scripts" / name;
+  if (!std::filesystem::exists(script))
+    script = std::filesystem::path(FETICON_SCRIPTS_INSTALL_DIR) / name;
   std::string python = "/usr/bin/python3";
   if (!std::filesystem::exists(python) || !std::filesystem::exists(script))
   {
     log::warning("no PNG plots: " + python + " or " + script.string() + " is missing");
     return;
   }
-  // An argument vector, no shell: the folder name reaches the script as it is, whatever
-  // quotes or semicolons it holds.
-  std::string script_arg = script.string(), folder_arg = out_dir.string();
-  char* argv[] = {python.data(), script_arg.data(), folder_arg.data(), nullptr};
+  // An argument vector, no shell: a folder name reaches the script as it is, whatever quotes
+  // or semicolons it holds.
+  std::vector<std::string> words = {python, script.string()};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& word : words)
+    argv.push_back(word.data());
+  argv.push_back(nullptr);
   posix_spawn_file_actions_t quiet;
   posix_spawn_file_actions_init(&quiet);
   posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
   pid_t pid = 0;
   int status = 0;
-  const bool started = posix_spawn(&pid, python.c_str(), &quiet, nullptr, argv, environ) == 0;
+  const bool started = posix_spawn(&pid, python.c_str(), &quiet, nullptr, argv.data(), environ) == 0;
   posix_spawn_file_actions_destroy(&quiet);
   if (!started || waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
     log::warning("no PNG plots: " + script.string() + " failed (python3-matplotlib installed?)");
 }
+
+void plot_results(const std::filesystem::path& out_dir) { run_plot_script("plot_hertz.py", {out_dir.string()}); }
 
 namespace
 {
@@ -216,8 +225,9 @@ bool is_result_file(std::string name)
 {
   if (const auto tmp = name.find(".tmp."); tmp != std::string::npos)
     name.resize(tmp);
-  for (const char* fixed : {"summary.json", "problem.yaml", "history.csv", "contact_pressure.csv", "solution.pvd",
-                            "checkpoint.bin", "contact_pressure.png", "iterations.png", "shear_traction.png"})
+  for (const char* fixed :
+       {"summary.json", "problem.yaml", "history.csv", "contact_pressure.csv", "solution.pvd", "checkpoint.bin",
+        "contact_pressure.png", "iterations.png", "shear_traction.png", "model.png", "contact.png"})
     if (name == fixed)
       return true;
   // step_NNN.vtu, step_NNN.pvtu, step_NNN_rankNNN.vtu

@@ -44,6 +44,10 @@ std::string format_summary(const nlohmann::ordered_json& summary, const std::str
 /// is not possible.
 void plot_results(const std::filesystem::path& out_dir);
 
+/// Runs scripts/`name` with `arguments` under /usr/bin/python3 (the source tree's scripts, else
+/// the installed ones), its output discarded; a warning if it cannot run or fails.
+void run_plot_script(const std::string& name, const std::vector<std::string>& arguments);
+
 /// Makes `out_dir` ready for a new run. A folder holding another run's results (any file
 /// feticon writes: summary.json, problem.yaml, step_*.vtu, ...) is refused with a one-line
 /// error unless `overwrite`, which first removes those files (and only those), so no stale

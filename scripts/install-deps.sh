@@ -18,6 +18,7 @@ packages=(
   libgtest-dev           # tests
   gmsh libgmsh-dev       # mesh::read_gmsh (Gmsh C++ API) and examples/*/make_mesh.*
   python3-matplotlib python3-numpy  # plots (used through /usr/bin/python3)
+  pybind11-dev python3-dev          # the Python module (python/)
   time                   # /usr/bin/time: the time and memory limits of the bad-input tests
   clang-format-14        # tests/cli/code_style.sh: the format of .clang-format
 )

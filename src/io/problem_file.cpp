@@ -307,6 +307,33 @@ std::vector<fem::ContactPairNames> contact_pairs(const YAML::Node& contact, cons
 
 /// The tree of a YAML problem file, checked: a regular file of settings size, valid YAML, a
 /// map at the top, no key twice.
+/// The tree `load` parses, checked: a map of keys without duplicates; `name` for messages.
+template <typename Load>
+void parse_problem_tree(ProblemFile& file, const std::string& name, const Load& load)
+{
+  try
+  {
+    file.root = load();
+  }
+  catch (const YAML::DeepRecursion& e)
+  {
+    FETICON_CHECK(false,
+                  name << ": YAML nested deeper than the reader's limit at line " << e.mark.line + 1
+                       << "; a problem file nests a few levels (sections, lists of maps)");
+  }
+  catch (const YAML::Exception& e)
+  {
+    FETICON_CHECK(false,
+                  name << ": invalid YAML at line " << e.mark.line + 1 << ", column " << e.mark.column + 1 << ": "
+                       << e.msg);
+  }
+  FETICON_CHECK(!file.root.IsNull(),
+                name << ": the file holds no settings (empty or comments "
+                        "only); write at least 'problem: hertz'");
+  FETICON_CHECK(file.root.IsMap(), name << ": the top level must be a map of keys");
+  reject_duplicate_keys(file.root, "", name);
+}
+
 void read_problem_tree(ProblemFile& file, const std::filesystem::path& path)
 {
   FETICON_CHECK(std::filesystem::exists(path), "problem file " << path.string() << " does not exist");
@@ -323,27 +350,7 @@ void read_problem_tree(ProblemFile& file, const std::filesystem::path& path)
                                 << " bytes; a problem file holds settings "
                                    "(at most "
                                 << max_problem_file_bytes << " bytes), a mesh goes in mesh.file");
-  try
-  {
-    file.root = YAML::LoadFile(path.string());
-  }
-  catch (const YAML::DeepRecursion& e)
-  {
-    FETICON_CHECK(false,
-                  path.string() << ": YAML nested deeper than the reader's limit at line " << e.mark.line + 1
-                                << "; a problem file nests a few levels (sections, lists of maps)");
-  }
-  catch (const YAML::Exception& e)
-  {
-    FETICON_CHECK(false,
-                  path.string() << ": invalid YAML at line " << e.mark.line + 1 << ", column " << e.mark.column + 1
-                                << ": " << e.msg);
-  }
-  FETICON_CHECK(!file.root.IsNull(),
-                path.string() << ": the file holds no settings (empty or comments "
-                                 "only); write at least 'problem: hertz'");
-  FETICON_CHECK(file.root.IsMap(), path.string() << ": the top level must be a map of keys");
-  reject_duplicate_keys(file.root, "", path.string());
+  parse_problem_tree(file, path.string(), [&] { return YAML::LoadFile(path.string()); });
 }
 
 /// The --set KEY=VALUE overrides: into the tree (their keys into `overridden`), or, for the
@@ -377,6 +384,8 @@ void apply_overrides(const std::vector<std::string>& overrides, ProblemFile& fil
     overridden.insert(key);
   }
 }
+/// `file` as read with the overrides applied and every key validated: the problem as run.
+ProblemFile with_overrides(ProblemFile file, const std::vector<std::string>& overrides);
 } // namespace
 
 ProblemFile load_problem_file(const std::filesystem::path& path, const std::vector<std::string>& overrides,
@@ -391,6 +400,24 @@ ProblemFile load_problem_file(const std::filesystem::path& path, const std::vect
     settings_of_deck(file, path);
   else if (!path.empty())
     read_problem_tree(file, path);
+  return with_overrides(std::move(file), overrides);
+}
+
+ProblemFile load_problem_text(const std::string& text, const std::string& source, const std::filesystem::path& folder,
+                              const std::vector<std::string>& overrides, const std::vector<SettingSpec>& declared)
+{
+  ProblemFile file;
+  file.settings = Settings(declared);
+  file.source = source;
+  file.folder = folder;
+  parse_problem_tree(file, source, [&] { return YAML::Load(text); });
+  return with_overrides(std::move(file), overrides);
+}
+
+namespace
+{
+ProblemFile with_overrides(ProblemFile file, const std::vector<std::string>& overrides)
+{
   // Overrides act on the tree; the settings below remember which keys came from --set.
   // Settings under the name of a structured section (contact.formulation beside a custom
   // problem's list of contact pairs) go straight to the settings: in the tree they would
@@ -440,6 +467,7 @@ ProblemFile load_problem_file(const std::filesystem::path& path, const std::vect
     }
   return file;
 }
+} // namespace
 
 CustomMeshSize custom_mesh_size(const ProblemFile& file)
 {

@@ -52,6 +52,11 @@ bool is_deck_file(const std::filesystem::path& path);
 ProblemFile load_problem_file(const std::filesystem::path& path, const std::vector<std::string>& overrides,
                               const std::vector<SettingSpec>& declared);
 
+/// As load_problem_file for a problem given as YAML text (JSON is YAML too), not a file:
+/// `source` names it in messages, relative paths in it start at `folder`.
+ProblemFile load_problem_text(const std::string& text, const std::string& source, const std::filesystem::path& folder,
+                              const std::vector<std::string>& overrides, const std::vector<SettingSpec>& declared);
+
 /// The size of a `problem: custom` file's mesh before it is built or read: nodes of the
 /// boxes, or as declared in the Gmsh file's header (memory guard).
 struct CustomMeshSize

@@ -17,7 +17,8 @@ const GmshModule* load_gmsh_module()
   const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
   if (!error)
     candidates.push_back(executable.parent_path() / "libfeticon_gmsh.so");
-  candidates.emplace_back(FETICON_GMSH_MODULE_PATH); // the build tree's (tests, bench)
+  candidates.emplace_back(FETICON_GMSH_MODULE_PATH);         // the build tree's (tests, bench)
+  candidates.emplace_back(FETICON_GMSH_MODULE_INSTALL_PATH); // the installed one (cmake --install)
   std::string tried;
   for (const std::filesystem::path& path : candidates)
   {
