@@ -134,7 +134,11 @@ def contact_picture(data, meta, out_dir):
             frame = surface_frame(reference[nodes][:, :2])
             s = reference[nodes][:, :2] @ frame[0]
             order = np.argsort(s)
-            ax.plot(length_scale * s[order], stress_scale * pressure[nodes][order], ".-", ms=3)
+            ax.plot(length_scale * s[order], stress_scale * pressure[nodes][order], ".-", ms=3, label="pressure")
+            if len(slip):
+                ax.plot(length_scale * (slip[:, :2] @ frame[0]), np.zeros(len(slip)), "c|", ms=8,
+                        label="sliding nodes")
+                ax.legend(loc="upper right", fontsize=8)
             ax.set_xlabel(f"position along the slave surface ({length_unit})")
             ax.set_ylabel(f"contact pressure ({stress_unit})")
         else:  # the slave surface flattened onto its best-fit plane, seen from its normal

@@ -135,7 +135,7 @@ std::vector<SettingSpec> make_specs()
        "exceeds it is refused before it allocates; 0: /proc/meminfo's MemAvailable or, if smaller, the room "
        "under the cgroup's memory limit, shared by the ranks of a node", Type::number, {}, 0, inf, false},
       {"output.vtu", "true", "write VTU/PVD files", Type::boolean, {}, 0, 0, false},
-      {"output.plots", "true", "draw contact_pressure.png and iterations.png (Debian's python3-matplotlib)",
+      {"output.plots", "true", "draw model.png, contact.png, contact_pressure.png and iterations.png (Debian's python3-matplotlib)",
        Type::boolean, {}, 0, 0, false},
   };
   // clang-format on
