@@ -95,10 +95,9 @@ struct RunContext
 /// output folder, the problem and the solver's settings.
 void set_up(const RunOptions& options, RunContext& run)
 {
-  if (options.quiet)
-    log::set_level(log::Level::warning);
-  if (options.verbose)
-    log::set_level(log::Level::iterations);
+  // Set for every run: a library caller's quiet run must not silence its next one.
+  log::set_level(options.verbose ? log::Level::iterations
+                                 : (options.quiet ? log::Level::warning : log::Level::summary));
   run.restart = !options.restart.empty();
   if (run.restart)
     FETICON_CHECK(options.problem_file.empty() && options.overrides.empty(),
