@@ -28,17 +28,21 @@ void register_run_command(CLI::App& app)
                 "removed first; without this flag such a folder is refused)");
   cmd->add_flag("--quiet,-q", options->quiet, "only warnings and errors");
   cmd->add_flag("--verbose,-v", options->verbose, "also one line per QP iteration");
-  cmd->footer("Settings (KEY for --set or the problem file; nested YAML maps give dotted keys):\n" +
-              io::Settings(problems::setting_specs()).help() +
-              "Sections of a custom problem (problem: custom), overridable as --set path.to.key=VALUE\n"
-              "(list items by index, e.g. loads.0.traction=[0,0,-2e8]):\n"
-              "  mesh: {file: MESH.msh} or {boxes: [{name, origin: [x,y,z], lengths: [..], cells: [nx,ny,nz]}]}\n"
-              "  bodies: {NAME: {young: PA, poisson: NU}}    one entry per body\n"
-              "  plane_strain: true|false                    u_z = 0 everywhere, eliminated\n"
-              "  supports: [{set: NODESET, x: M, y: M, z: M}] prescribed components (m)\n"
-              "  loads: [{set: FACESET, traction: [tx, ty, tz]}] dead traction (Pa)\n"
-              "  contact: [{slave: FACESET, master: FACESET}]\n"
-              "See examples/ for complete files.");
+  cmd->footer(
+      "Settings (KEY for --set or the problem file; nested YAML maps give dotted keys):\n" +
+      io::Settings(problems::setting_specs()).help() +
+      "Sections of a custom problem (problem: custom), overridable as --set path.to.key=VALUE\n"
+      "(list items by index, e.g. loads.0.traction=[0,0,-2e8]):\n"
+      "  mesh: {file: MESH.msh} or {boxes: [{name, origin: [x,y,z], lengths: [..], cells: [nx,ny,nz]}]}\n"
+      "  bodies: {NAME: {young: PA, poisson: NU, density: KG_M3}}  one entry per body (density for body loads)\n"
+      "  plane_strain: true|false                    u_z = 0 everywhere, eliminated\n"
+      "  supports: [{set: NODESET, x: M, y: M, z: M}] prescribed components (m)\n"
+      "  loads: [{set: FACESET, traction: [tx, ty, tz]}] dead traction (Pa), or a body load:\n"
+      "         {gravity: [gx, gy, gz], body: NAME} (m/s^2; body optional: all) or\n"
+      "         {centrifugal: {omega: RAD_S, point: [x,y,z], axis: [ax,ay,az]}, body: NAME}\n"
+      "         (both need density: KG_M3 in bodies.NAME)\n"
+      "  contact: [{slave: FACESET, master: FACESET}]\n"
+      "See examples/ for complete files.");
   cmd->callback([options] { run_problem(*options); });
 }
 } // namespace feticon::app

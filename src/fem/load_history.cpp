@@ -51,6 +51,8 @@ la::Vector stage_force(const Problem& problem, const LoadStage& stage, int numbe
           "the nodal force on node " << n.node << ", component " << n.component << " is out of range or not finite");
       f(3 * static_cast<la::Index>(n.node) + n.component) += n.value;
     }
+    for (const BodyLoad& b : stage.body_loads)
+      add_body_load(mesh, problem.materials, b, f);
   });
   for (int i = 0; i < 3; ++i)
     if (problem.eliminated[i])

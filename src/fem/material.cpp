@@ -21,5 +21,7 @@ void Material::check(const std::string& where) const
   FETICON_CHECK(std::isfinite(young) && young > 0, where << ": Young's modulus E = " << young << " must be positive");
   FETICON_CHECK(std::isfinite(poisson) && poisson > -1 && poisson < 0.5,
                 where << ": Poisson's ratio nu = " << poisson << " must lie in (-1, 0.5)");
+  FETICON_CHECK(std::isfinite(density) && density >= 0,
+                where << ": the density rho = " << density << " must be finite and not negative");
 }
 } // namespace feticon::fem

@@ -12,6 +12,7 @@ struct Material
 {
   double young = 2.0e11; ///< Young's modulus E_Y (Pa)
   double poisson = 0.3;  ///< Poisson's ratio nu, in (-1, 0.5)
+  double density = 0;    ///< rho (kg/m^3): only body loads (fem/body_loads.hpp) use it; 0: none given
 
   double lame_lambda() const { return young * poisson / ((1 + poisson) * (1 - 2 * poisson)); }
   double lame_mu() const { return young / (2 * (1 + poisson)); }

@@ -19,6 +19,8 @@ la::Vector Problem::external_force() const
     add_face_pressure(mesh, mesh.face_set(p.set), p.pressure, f);
   for (const NodalForce& n : nodal_forces)
     f(3 * static_cast<la::Index>(n.node) + n.component) += n.value;
+  for (const BodyLoad& b : body_loads)
+    add_body_load(mesh, materials, b, f);
   for (int i = 0; i < 3; ++i)
     if (eliminated[i])
       for (int32_t n = 0; n < mesh.n_nodes(); ++n)

@@ -1,6 +1,7 @@
 #pragma once
 /// @file A contact problem as the solvers see it: mesh, materials, supports, loads, pairs.
 
+#include "fem/body_loads.hpp"
 #include "fem/contact_interaction.hpp"
 #include "fem/dirichlet.hpp"
 #include "fem/material.hpp"
@@ -80,6 +81,7 @@ struct LoadStage
   std::vector<NodalForce> nodal_forces;
   std::vector<DirichletCondition> dirichlet;
   int increments = 1;
+  std::vector<BodyLoad> body_loads = {};
 };
 
 struct Problem
@@ -92,6 +94,7 @@ struct Problem
   std::vector<FaceTraction> tractions;
   std::vector<FacePressure> pressures;
   std::vector<NodalForce> nodal_forces;
+  std::vector<BodyLoad> body_loads; ///< gravity and centrifugal loads (fem/body_loads.hpp)
   std::vector<LinearEquation> equations;
   /// Stages after the first (Problem's own loads and supports, reached at load factor 1):
   /// stage k ends at load factor 1 + k. Empty for every problem but multi-step decks.

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <deque>
+#include <array>
 #include <map>
 #include <optional>
 #include <set>
@@ -148,6 +149,9 @@ struct DeckLoadState
   std::map<int64_t, double> boundary;
   std::map<int64_t, double> cload;
   std::map<std::pair<int32_t, int>, double> dload;
+  /// *DLOAD GRAV and CENTRIF: (cell, 0 GRAV / 1 CENTRIF) -> g x, y, z, or omega^2, the
+  /// axis's point and direction; with the deck line that gave it.
+  std::map<std::pair<int32_t, int>, std::pair<std::array<double, 7>, std::string>> body;
 };
 
 struct DeckData

@@ -22,7 +22,6 @@ constexpr int64_t largest_label = std::numeric_limits<int32_t>::max();
 
 /// Keywords that change nothing a static elastic contact run computes: read, reported.
 const std::map<std::string, std::string> inert_keywords = {
-    {"DENSITY", "a static run has no inertia or gravity load"},
     {"EXPANSION", "the run has no temperature field"},
     {"CONDUCTIVITY", "the run is mechanical only"},
     {"SPECIFIC HEAT", "the run is mechanical only"},
@@ -246,6 +245,7 @@ private:
         {"SURFACE", &KeywordReader::surface},
         {"MATERIAL", &KeywordReader::material},
         {"ELASTIC", &KeywordReader::elastic},
+        {"DENSITY", &KeywordReader::density},
         {"SOLID SECTION", &KeywordReader::solid_section},
         {"BOUNDARY", &KeywordReader::boundary},
         {"CLOAD", &KeywordReader::cload},
@@ -492,6 +492,23 @@ private:
       fail_at(line.where, "temperature-dependent elastic constants are not implemented by feticon (one data line)");
   }
 
+  /// rho (mass per volume, in the deck's units): used by *DLOAD GRAV and CENTRIF only.
+  void density()
+  {
+    known_parameters({});
+    if (_material.empty())
+      throw Error(where() + " comes before any *MATERIAL");
+    DeckDataLine line;
+    if (!_tokens.next_data(line))
+      throw Error(where() + " needs a data line: the density");
+    const double rho = real(line, 0, "density");
+    if (!(rho > 0) || !std::isfinite(rho))
+      fail_at(line.at(0), "the density must be positive and finite");
+    _data.materials[_material].density = rho;
+    if (_tokens.next_data(line))
+      fail_at(line.where, "temperature-dependent densities are not implemented by feticon (one data line)");
+  }
+
   void solid_section()
   {
     known_parameters({"ELSET", "MATERIAL", "ORIENTATION"});
@@ -608,16 +625,50 @@ private:
       _data.state.dload[{c, kind[1] - '0'}] = value;
   }
 
+  /// GRAV (magnitude, direction) or CENTRIF (omega^2, a point of the axis, its direction) on
+  /// the cells of field 0, as CalculiX reads them.
+  void body_load_on(const DeckDataLine& line, const std::vector<int32_t>& cells, int kind)
+  {
+    std::array<double, 7> values{};
+    const size_t needed = kind == 0 ? 6 : 9;
+    if (line.fields.size() < needed)
+      fail_at(line.where,
+              kind == 0 ? "a *DLOAD GRAV line is: element or set, GRAV, magnitude, direction x, y, z"
+                        : "a *DLOAD CENTRIF line is: element or set, CENTRIF, omega^2, a point of the "
+                          "axis x, y, z, the axis's direction x, y, z");
+    for (size_t k = 2; k < needed; ++k)
+      values[k - 2] = real(line, k, "value");
+    const Eigen::Vector3d direction =
+        kind == 0 ? Eigen::Vector3d(values[1], values[2], values[3]) : Eigen::Vector3d(values[4], values[5], values[6]);
+    if (!(direction.norm() > 0))
+      fail_at(line.at(kind == 0 ? 3 : 6), kind == 0 ? "the gravity direction is zero" : "the rotation axis is zero");
+    if (kind == 1 && values[0] < 0)
+      fail_at(line.at(2), "omega^2 must not be negative");
+    if (kind == 0) // the acceleration vector: CalculiX scales the normalized direction
+    {
+      const Eigen::Vector3d g = values[0] * direction.normalized();
+      values = {g.x(), g.y(), g.z(), 0, 0, 0, 0};
+    }
+    for (int32_t c : cells)
+      _data.state.body[{c, kind}] = {values, line.where.str() + ": *DLOAD " + (kind == 0 ? "GRAV" : "CENTRIF")};
+  }
+
   void dload()
   {
     begin_load(_data.state.dload);
+    if (op_new())
+      _data.state.body.clear();
     DeckDataLine line;
     while (_tokens.next_data(line))
     {
       const std::vector<int32_t> cells = elements(line, 0);
       if (line.fields.size() < 3)
-        fail_at(line.where, "a *DLOAD line is: element or set, P1 to P6, pressure");
-      pressure_on(line, cells, 1, real(line, 2, "pressure"));
+        fail_at(line.where, "a *DLOAD line is: element or set, P1 to P6, pressure (or GRAV, CENTRIF)");
+      const std::string kind = name_of(line.fields[1]);
+      if (kind == "GRAV" || kind == "CENTRIF")
+        body_load_on(line, cells, kind == "GRAV" ? 0 : 1);
+      else
+        pressure_on(line, cells, 1, real(line, 2, "pressure"));
     }
   }
 

@@ -459,6 +459,37 @@ private:
     return out;
   }
 
+  /// GRAV and CENTRIF loads, one per distinct load (its cells gathered).
+  static std::vector<fem::BodyLoad> body_loads(
+      const std::map<std::pair<int32_t, int>, std::pair<std::array<double, 7>, std::string>>& body)
+  {
+    std::map<std::pair<int, std::array<double, 7>>, fem::BodyLoad> groups;
+    for (const auto& [key, load] : body)
+    {
+      const auto& [cell, kind] = key;
+      fem::BodyLoad& b = groups[{kind, load.first}];
+      const std::array<double, 7>& v = load.first;
+      if (b.cells.empty())
+      {
+        b.where = load.second;
+        b.kind = kind == 0 ? fem::BodyLoad::Kind::gravity : fem::BodyLoad::Kind::centrifugal;
+        if (kind == 0)
+          b.gravity = Eigen::Vector3d(v[0], v[1], v[2]);
+        else
+        {
+          b.omega2 = v[0];
+          b.point = Eigen::Vector3d(v[1], v[2], v[3]);
+          b.axis = Eigen::Vector3d(v[4], v[5], v[6]);
+        }
+      }
+      b.cells.push_back(cell);
+    }
+    std::vector<fem::BodyLoad> out;
+    for (auto& [key, b] : groups)
+      out.push_back(std::move(b));
+    return out;
+  }
+
   /// Plane strain as CalculiX decks state it (feticon export writes it so): u_z = 0 on every
   /// node in every step is the eliminated component, not a support.
   bool every_node_fixes_z() const
@@ -512,12 +543,14 @@ private:
         _p.dirichlet = supports(state.boundary, prefix + "support_");
         _p.nodal_forces = nodal_forces(state.cload, name);
         _p.pressures = pressures(state.dload, prefix + "pressure_");
+        _p.body_loads = body_loads(state.body);
         continue;
       }
       fem::LoadStage stage;
       stage.dirichlet = supports(state.boundary, prefix + "support_");
       stage.nodal_forces = nodal_forces(state.cload, name);
       stage.pressures = pressures(state.dload, prefix + "pressure_");
+      stage.body_loads = body_loads(state.body);
       stage.increments = _deck.steps[k].increments;
       _p.later_stages.push_back(std::move(stage));
     }

@@ -266,6 +266,41 @@ fem::Friction pair_friction(const YAML::Node& pair, const std::string& key, cons
   return out;
 }
 
+/// A body load of the `loads` list: {gravity: [gx, gy, gz]} or {centrifugal: {omega, point,
+/// axis}}, on one body (`body: NAME`) or on all.
+fem::BodyLoad body_load(const YAML::Node& load, const std::string& key, const mesh::Mesh& mesh, const Reader& r)
+{
+  r.only_keys(load, key, {"gravity", "centrifugal", "body"});
+  FETICON_CHECK(!(load["gravity"] && load["centrifugal"]),
+                r.source << ": " << key << ": gravity or centrifugal, not both");
+  fem::BodyLoad out;
+  out.where = r.source + ": " + key;
+  if (load["gravity"])
+    out.gravity = r.vector3(load["gravity"], key + ".gravity");
+  else
+  {
+    const YAML::Node c = load["centrifugal"];
+    r.only_keys(c, key + ".centrifugal", {"omega", "point", "axis"});
+    out.kind = fem::BodyLoad::Kind::centrifugal;
+    const double omega = r.number(c["omega"], key + ".centrifugal.omega");
+    out.omega2 = omega * omega;
+    out.point = r.vector3(c["point"], key + ".centrifugal.point");
+    out.axis = r.vector3(c["axis"], key + ".centrifugal.axis");
+  }
+  if (load["body"])
+  {
+    const std::string body = r.text(load["body"], key + ".body");
+    const auto it = std::find(mesh.body_names.begin(), mesh.body_names.end(), body);
+    FETICON_CHECK(it != mesh.body_names.end(),
+                  r.source << ": " << key << ".body: the mesh has no body '" << body << "'");
+    const auto index = static_cast<int32_t>(it - mesh.body_names.begin());
+    for (size_t c = 0; c < mesh.cells.size(); ++c)
+      if (mesh.cell_body[c] == index)
+        out.cells.push_back(static_cast<int32_t>(c));
+  }
+  return out;
+}
+
 /// The problem file's `contact` list: each pair's face sets, friction and formulation.
 std::vector<fem::ContactPairNames> contact_pairs(const YAML::Node& contact, const mesh::Mesh& mesh, const Reader& r)
 {
@@ -540,9 +575,11 @@ fem::Problem build_custom_problem(const ProblemFile& file)
   {
     const YAML::Node body = root["bodies"][name];
     FETICON_CHECK(body, file.source << ": bodies." << name << " is missing (young, poisson)");
-    r.only_keys(body, "bodies." + name, {"young", "poisson"});
+    r.only_keys(body, "bodies." + name, {"young", "poisson", "density"});
     fem::Material m{r.number(body["young"], "bodies." + name + ".young"),
                     r.number(body["poisson"], "bodies." + name + ".poisson")};
+    if (body["density"])
+      m.density = r.number(body["density"], "bodies." + name + ".density");
     m.check(file.source + ": bodies." + name);
     p.materials.push_back(m);
   }
@@ -580,6 +617,11 @@ fem::Problem build_custom_problem(const ProblemFile& file)
     {
       const YAML::Node l = root["loads"][i];
       const std::string key = "loads." + std::to_string(i);
+      if (l.IsMap() && (l["gravity"] || l["centrifugal"]))
+      {
+        p.body_loads.push_back(body_load(l, key, p.mesh, r));
+        continue;
+      }
       r.only_keys(l, key, {"set", "traction"});
       const std::string set = r.text(l["set"], key + ".set");
       FETICON_CHECK(p.mesh.face_sets.count(set),
