@@ -122,13 +122,7 @@ void write_picture_data(const std::filesystem::path& dir, const fem::Problem& pr
       add_triangles(face, surface_of, surface_nodes, contact_triangles);
       contact_pair.insert(contact_pair.end(), (contact_triangles.size() - before) / 3, static_cast<int32_t>(p));
     }
-  // Per node, as in the VTU: each row's normal force over its node's tributary area.
-  std::vector<double> node_pressure(mesh.n_nodes(), 0.0);
-  const auto& rows = solution.constraints;
-  for (size_t i = 0; i < rows.slave_node.size() && static_cast<la::Index>(i) < solution.contact_lambda.size(); ++i)
-    if (rows.slave_area[i] > 0)
-      node_pressure[rows.slave_node[i]] +=
-          solution.contact_lambda(static_cast<la::Index>(i)) / rows.row_norm[i] / rows.slave_area[i];
+  const std::vector<double> node_pressure = nonlinear::row_pressure_per_node(solution, mesh.n_nodes());
   std::vector<double> reference, displacement, pressure, slip;
   for (const int32_t node : surface_nodes)
   {

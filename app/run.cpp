@@ -71,7 +71,6 @@ struct RunContext
 {
   io::ProblemFile file;
   par::Communicator comm = par::Communicator::world();
-  bool files = false;  ///< a results folder is written
   bool writer = false; ///< rank 0 of a run with files: writes the folder's shared files
   bool restart = false;
   std::filesystem::path out_dir;
@@ -88,6 +87,7 @@ struct RunContext
   std::vector<nonlinear::PressureSample> pressures; ///< of every pair, as in contact_pressure.csv
 
   const io::Settings& settings() const { return file.settings; }
+  bool files() const { return !out_dir.empty(); } ///< a results folder is written
 };
 
 /// Set-up: the settings, the memory guard (before anything large is allocated and before an
@@ -126,8 +126,7 @@ void set_up(const RunOptions& options, RunContext& run)
   // Under MPI every rank runs this function; rank 0 writes the folder's shared files, every
   // rank its piece of each step's VTU.
   run.out_dir = run.restart ? options.restart : options.output;
-  run.files = !run.out_dir.empty();
-  run.writer = run.files && run.comm.rank() == 0;
+  run.writer = run.files() && run.comm.rank() == 0;
   if (run.writer && !run.restart)
   {
     prepare_output_folder(run.out_dir, options.overwrite);
@@ -206,7 +205,7 @@ void write_step(RunContext& run, int step, const nonlinear::ContactSolution& sol
   ScopedTimer t(run.timers, "output");
   if (run.calculix)
     run.calculix->add_step(solution);
-  if (run.files && run.settings().flag("output.vtu"))
+  if (run.files() && run.settings().flag("output.vtu"))
     write_step_vtu_files(run, step, solution);
   // After the VTU: a checkpoint always names a step whose output is complete.
   if (run.writer && run.solver.method != nonlinear::ContactMethod::primal_penalty)
@@ -478,7 +477,7 @@ void write_results(RunContext& run, const nonlinear::ContactSolution& solution, 
                   seconds_since(start));
     log::info(line);
   }
-  if (run.files)
+  if (run.files())
     log::info("results written to " + run.out_dir.string());
 }
 
@@ -502,7 +501,8 @@ RunResult run_problem(const RunOptions& options)
   write_results(run, solution, summary);
   FETICON_CHECK(solution.completed,
                 "the solve did not converge: "
-                    << solution.reason << (run.files ? " (converged steps are in " + run.out_dir.string() + ")" : ""));
+                    << solution.reason
+                    << (run.files() ? " (converged steps are in " + run.out_dir.string() + ")" : ""));
   return {std::move(summary), run.problem, std::move(solution), std::move(run.pressures), run.solver.kinematics};
 }
 

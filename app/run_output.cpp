@@ -62,16 +62,9 @@ void write_step_vtu(const std::filesystem::path& path, const fem::Problem& probl
       f.cauchy.values.push_back(s(k));
     f.mises.values.push_back(fem::von_mises(s));
   }
-  f.pressure.values.assign(mesh.n_nodes(), 0.0);
-  if (!problem.contacts.empty() && solution.contact_lambda.size() > 0)
-  {
-    // Per node: the row's normal force over the node's tributary area (not grouped by x).
-    const auto& rows = solution.constraints;
-    for (size_t i = 0; i < rows.slave_node.size(); ++i)
-      if (rows.slave_area[i] > 0 && local_of_node[rows.slave_node[i]] >= 0)
-        f.pressure.values[local_of_node[rows.slave_node[i]]] +=
-            solution.contact_lambda(static_cast<la::Index>(i)) / rows.row_norm[i] / rows.slave_area[i];
-  }
+  const std::vector<double> pressure = nonlinear::row_pressure_per_node(solution, problem.mesh.n_nodes());
+  for (const int32_t node : node_of_local)
+    f.pressure.values.push_back(pressure[node]);
   f.contact_pair.values.assign(mesh.n_nodes(), -1.0);
   for (size_t p = 0; p < problem.contacts.size(); ++p)
   {

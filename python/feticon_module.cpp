@@ -4,6 +4,7 @@
 
 #include "app/run.hpp"
 #include "common/error.hpp"
+#include "fem/hex8_element.hpp"
 #include "fem/stress.hpp"
 
 #include <pybind11/numpy.h>
@@ -90,6 +91,7 @@ py::dict run(const std::string& problem_file, const std::optional<std::string>& 
   out["coordinates"] = table(n_nodes, 3, [&](py::ssize_t n, py::ssize_t c) { return mesh.nodes(n, c); });
   out["displacements"] = table(n_nodes, 3, [&](py::ssize_t n, py::ssize_t c) { return u[3 * n + c]; });
   out["cell_stress"] = table(n_cells, 6, [&](py::ssize_t e, py::ssize_t c) { return stresses[e][c]; });
+  out["von_mises"] = table(n_cells, 1, [&](py::ssize_t e, py::ssize_t) { return fem::von_mises(stresses[e]); });
   out["contact"] = contact_columns(result.pressures);
   return out;
 }

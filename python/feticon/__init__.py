@@ -40,9 +40,7 @@ class Result:
         self.displacements = raw["displacements"]
         self.cell_stress = raw["cell_stress"]
         self.contact = raw["contact"]
-        s = self.cell_stress
-        self.von_mises = (0.5 * ((s[:, 0] - s[:, 1]) ** 2 + (s[:, 1] - s[:, 2]) ** 2 + (s[:, 2] - s[:, 0]) ** 2)
-                          + 3.0 * (s[:, 3] ** 2 + s[:, 4] ** 2 + s[:, 5] ** 2)) ** 0.5
+        self.von_mises = raw["von_mises"][:, 0]
 
     def pair_pressure(self, pair=0):
         """The contact columns of one contact pair (index into summary['contact']['pairs'])."""

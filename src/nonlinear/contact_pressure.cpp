@@ -17,6 +17,16 @@
 
 namespace feticon::nonlinear
 {
+std::vector<double> row_pressure_per_node(const ContactSolution& solution, int32_t n_nodes)
+{
+  std::vector<double> pressure(n_nodes, 0.0);
+  const auto& rows = solution.constraints;
+  for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)
+    if (rows.slave_area[i] > 0)
+      pressure[rows.slave_node[i]] += solution.contact_lambda(i) / rows.row_norm[i] / rows.slave_area[i];
+  return pressure;
+}
+
 double total_normal_force(const ContactSolution& solution, int32_t pair)
 {
   double total = 0;

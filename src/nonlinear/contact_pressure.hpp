@@ -67,6 +67,11 @@ la::Vector slave_tributary_areas(const fem::Problem& problem, const la::Vector& 
 la::Vector slave_nodal_pressures(const fem::Problem& problem, const ContactSolution& solution,
                                  fem::Kinematics kinematics, int32_t pair = 0);
 
+/// Per node of the mesh (n_nodes values; 0 off the slave surfaces): each contact row's normal
+/// force lambda_i / ||b_i|| over its node's tributary area, summed over the pairs; what the VTU's
+/// contact_pressure field and contact.png show.
+std::vector<double> row_pressure_per_node(const ContactSolution& solution, int32_t n_nodes);
+
 /// Total normal contact force (N): sum of lambda_i / ||b_i||, over every pair or (pair >= 0)
 /// over the rows of that pair.
 double total_normal_force(const ContactSolution& solution, int32_t pair = -1);

@@ -79,6 +79,10 @@ PY
 # file edits: write base with a sed expression applied
 variant() { base | sed "$1" > "$work/$2.yaml"; echo "$work/$2.yaml"; }
 
+expect "gravity without density" "loads.0: body base has no density" -- \
+  "$(variant 's/^loads:/loads:\n  - {gravity: [0, -9.81, 0]}/' gravity_no_density)"
+expect "centrifugal zero axis" "non-zero direction" -- \
+  "$(variant 's/^loads:/loads:\n  - {centrifugal: {omega: 10, point: [0, 0, 0], axis: [0, 0, 0]}}/;s/poisson: 0.3}/poisson: 0.3, density: 7850}/' centrifugal_zero)"
 printf 'rho: [1, 2\n' > "$work/syntax.yaml"
 expect "bad YAML syntax" "syntax.yaml" -- "$work/syntax.yaml"
 printf -- '- 1\n- 2\n' > "$work/list.yaml"
@@ -180,6 +184,17 @@ expect "deck friction rough" "ROUGH (rough friction" -- "$(friction_variant '*FR
 expect "deck friction table" "takes one data line" -- "$(friction_variant '*FRICTION\n0.3\n0.2' friction_table)"
 expect "deck friction negative stick slope" "stick slope -1e6 must be positive" -- \
   "$(friction_variant '*FRICTION\n0.3, -1e6' friction_slope)"
+# Body loads (issue 65, item 5): *DLOAD GRAV / CENTRIF and *DENSITY.
+grav_variant() { deck_variant "s/^\*CLOAD/*DLOAD\n$1\n*CLOAD/;$2" "$3"; }
+expect "deck gravity without density" "GRAV: body .* has no density" -- \
+  "$(grav_variant 'Eall, GRAV, 9.81, 0., 0., -1.' '' grav_no_density)"
+expect "deck density negative" "density must be positive" -- \
+  "$(deck_variant '/^\*ELASTIC/{n;s/$/\n*DENSITY\n-7850./}' density_negative)"
+expect "deck gravity zero direction" "gravity direction is zero" -- \
+  "$(grav_variant 'Eall, GRAV, 9.81, 0., 0., 0.' '' grav_zero)"
+expect "deck gravity short line" "a \*DLOAD GRAV line is" -- "$(grav_variant 'Eall, GRAV, 9.81' '' grav_short)"
+expect "deck centrif zero axis" "rotation axis is zero" -- \
+  "$(grav_variant 'Eall, CENTRIF, 1e4, 0., 0., 0., 0., 0., 0.' '' centrif_zero)"
 expect "deck element type" "C3D15" -- "$(deck_variant 's/TYPE=C3D8/TYPE=C3D15/I' c3d15)"
 # Lengths of 1e-30 m (a fuzz mutant): stresses of 5e44 Pa, beyond the .frd's single precision,
 # were written as INF; now one line.

@@ -391,13 +391,16 @@ MM_MUTATORS = [number_replacer(EXTREMES), mm_header, mm_size]
 # the magnitudes a valid deck may carry (1e-30 to 1e30 moduli, loads and coordinates).
 
 DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_friction.inp", "punch_tet10.inp",
-              "punch_c3d20r.inp"]
+              "punch_c3d20r.inp", "contactenergy_density.inp"]
 # Seeds of our own (tests/data/fuzz/): a C3D10 deck, feticon's export of gmsh_tet10.yaml, and
 # a C3D20 / C3D20R one (reduced integration per cell), the same punch meshed with hex20.
 FUZZ_FOLDER_DECKS = {"punch_tet10.inp", "punch_c3d20r.inp"}
 # Seeds made from another by an edit: contact1 with Coulomb friction (*FRICTION after the
 # pressure-overclosure law, as tests/cli/deck_friction.sh adds it to CalculiX's decks).
-DECK_DERIVED = {"contact1_friction.inp": ("contact1.inp", "*SURFACE BEHAVIOR", "*FRICTION\n0.3, 1e6\n")}
+# contactenergy with a density, for the body loads among the keyword mutations (*DLOAD GRAV,
+# CENTRIF).
+DECK_DERIVED = {"contact1_friction.inp": ("contact1.inp", "*SURFACE BEHAVIOR", "*FRICTION\n0.3, 1e6\n"),
+                "contactenergy_density.inp": ("contactenergy.inp", "*ELASTIC", "*DENSITY\n7850.\n")}
 DECK_EXTREMES = EXTREMES + ["1e400", "-1e400", "NaN", "-nan", "Infinity", "1.5D3", "1d999",
                             "9223372036854775807", "9223372036854775808",
                             "-9223372036854775809", "-0", "1e-30", "1e30", "-1e30"]
@@ -415,7 +418,9 @@ DECK_KEYWORDS = [
     "*SURFACE, NAME=@, TYPE=NODE", "*SURFACE, NAME=SMAST\n1,S1",
     "*CONTACT PAIR, INTERACTION=SI1", "*CONTACT PAIR, INTERACTION=SI1, TYPE=SURFACE TO SURFACE\nSSLAV,SMAST",
     "*BOUNDARY\n1,1,3,1e30", "*BOUNDARY\nNALL,1,3", "*BOUNDARY\nNALL,ENCASTRE", "*CLOAD\n1,3,-1e30",
-    "*DLOAD\nEALL,P1,1e30", "*DSLOAD\nSMAST,P,1", "*NSET, NSET=@, GENERATE\n1,1000000000",
+    "*DLOAD\nEALL,P1,1e30", "*DSLOAD\nSMAST,P,1", "*DLOAD\nEALL,GRAV,9.81,0,0,-1",
+    "*DLOAD\nEALL,GRAV,1e30,1,0,0", "*DLOAD\nEALL,CENTRIF,1e4,0,0,0,0,0,1", "*DLOAD\nEALL,CENTRIF,1e4,0,0,0",
+    "*DENSITY\n0", "*DENSITY\n-1", "*NSET, NSET=@, GENERATE\n1,1000000000",
     "*NSET, NSET=@, GENERATE\n1,9223372036854775807,9223372036854775807",
     "*ELSET, ELSET=@, GENERATE\n1,2,0", "*ELSET, ELSET=@\n@", "*NSET, NSET=NALL\nNALL",
     "*EQUATION\n2\n1,1,1.", "*EQUATION\n1000\n1,1,1.", "*EQUATION\n2\n1,1,0.,2,1,1.",
