@@ -33,6 +33,7 @@ struct BodyLoad
   Eigen::Vector3d point = Eigen::Vector3d::Zero();   ///< a point of the axis (m)
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();   ///< the axis's direction (normalized on use)
   std::string where = "body load";                   ///< for messages (the deck line, the file key)
+  std::string amplitude = {};                        ///< fem::Problem::amplitudes name; empty: the step's ramp
 };
 
 /// Adds the consistent nodal forces of `load` to f (3 per node). Throws feticon::Error naming

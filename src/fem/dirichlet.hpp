@@ -18,6 +18,7 @@ struct DirichletCondition
 {
   std::string set;
   std::array<std::optional<double>, 3> value;
+  std::string amplitude = {}; ///< fem::Problem::amplitudes name; empty: the step's ramp
 };
 
 /// Constrained global DOFs (3*node + component), sorted, with their prescribed values.

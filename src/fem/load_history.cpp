@@ -6,86 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 
 namespace feticon::fem
 {
 namespace
 {
-/// Runs `check`, prefixing the message of a feticon::Error it throws with the stage.
-template <class F>
-auto in_stage(int stage, F&& check)
-{
-  try
-  {
-    return check();
-  }
-  catch (const Error& e)
-  {
-    throw Error("load stage " + std::to_string(stage) + ": " + e.what());
-  }
-}
-
-/// The consistent nodal forces of a later stage, as Problem::external_force() makes stage 1's.
-la::Vector stage_force(const Problem& problem, const LoadStage& stage, int number)
-{
-  const mesh::Mesh& mesh = problem.mesh;
-  la::Vector f = la::Vector::Zero(3 * static_cast<la::Index>(mesh.n_nodes()));
-  in_stage(number, [&] {
-    for (const FaceTraction& t : stage.tractions)
-    {
-      FETICON_CHECK(!mesh.face_set(t.set).empty() && t.traction.allFinite(),
-                    "the traction on '" << t.set << "' is on an empty set or not finite");
-      add_face_traction(mesh, mesh.face_set(t.set), t.traction, f);
-    }
-    for (const FacePressure& p : stage.pressures)
-    {
-      FETICON_CHECK(!mesh.face_set(p.set).empty() && std::isfinite(p.pressure),
-                    "the pressure on '" << p.set << "' is on an empty set or not finite");
-      add_face_pressure(mesh, mesh.face_set(p.set), p.pressure, f);
-    }
-    for (const NodalForce& n : stage.nodal_forces)
-    {
-      FETICON_CHECK(
-          n.node >= 0 && n.node < mesh.n_nodes() && n.component >= 0 && n.component < 3 && std::isfinite(n.value),
-          "the nodal force on node " << n.node << ", component " << n.component << " is out of range or not finite");
-      f(3 * static_cast<la::Index>(n.node) + n.component) += n.value;
-    }
-    for (const BodyLoad& b : stage.body_loads)
-      add_body_load(mesh, problem.materials, b, f);
-  });
-  for (int i = 0; i < 3; ++i)
-    if (problem.eliminated[i])
-      for (int32_t n = 0; n < mesh.n_nodes(); ++n)
-        f(3 * static_cast<la::Index>(n) + i) = 0;
-  return f;
-}
-
-/// A later stage's prescribed DOFs with the eliminated components, as
-/// Problem::all_constrained_dofs() makes stage 1's.
-ConstrainedDofs stage_dirichlet(const Problem& problem, const LoadStage& stage, int number)
-{
-  return in_stage(number, [&] {
-    for (const DirichletCondition& d : stage.dirichlet)
-      for (const std::optional<double>& v : d.value)
-        FETICON_CHECK(!v || std::isfinite(*v), "a prescribed value on '" << d.set << "' is not finite");
-    const ConstrainedDofs prescribed = collect_dirichlet(problem.mesh, stage.dirichlet);
-    std::map<int64_t, double> merged;
-    for (size_t k = 0; k < prescribed.dofs.size(); ++k)
-      merged[prescribed.dofs[k]] = prescribed.values(static_cast<la::Index>(k));
-    for (int i = 0; i < 3; ++i)
-      if (problem.eliminated[i])
-        for (int32_t n = 0; n < problem.mesh.n_nodes(); ++n)
-        {
-          auto [it, inserted] = merged.emplace(3 * static_cast<int64_t>(n) + i, 0.0);
-          FETICON_CHECK(it->second == 0.0,
-                        "node " << n << " prescribes " << it->second << " for component " << i
-                                << ", which plane strain fixes to zero");
-        }
-    return to_constrained_dofs(merged);
-  });
-}
-
 /// "u_y of node 17 (set 'FIX')": the first of `conditions` that prescribes `dof`.
 std::string describe(const mesh::Mesh& mesh, const std::vector<DirichletCondition>& conditions, int64_t dof)
 {
@@ -104,9 +31,8 @@ std::string describe(const mesh::Mesh& mesh, const std::vector<DirichletConditio
   return std::string("u_") + "xyz"[component] + " of node " + std::to_string(node) + " (set '" + set + "')";
 }
 
-/// Throws unless a later stage prescribes exactly stage 1's DOFs, naming the first that differs.
-void check_same_dofs(const Problem& problem, const ConstrainedDofs& first, const ConstrainedDofs& later,
-                     const LoadStage& stage, int number)
+/// Throws unless step `number` prescribes exactly step 1's DOFs, naming the first that differs.
+void check_same_dofs(const Problem& problem, const ConstrainedDofs& first, const ConstrainedDofs& later, size_t number)
 {
   std::vector<int64_t> added, omitted;
   std::set_difference(later.dofs.begin(), later.dofs.end(), first.dofs.begin(), first.dofs.end(),
@@ -114,63 +40,111 @@ void check_same_dofs(const Problem& problem, const ConstrainedDofs& first, const
   std::set_difference(first.dofs.begin(), first.dofs.end(), later.dofs.begin(), later.dofs.end(),
                       std::back_inserter(omitted));
   FETICON_CHECK(added.empty(),
-                "load stage " << number << " prescribes " << describe(problem.mesh, stage.dirichlet, added.front())
-                              << ", which stage 1 leaves free: a later stage may change the "
-                                 "values of stage 1's prescribed components only");
+                "step " << number + 1 << " prescribes "
+                        << describe(problem.mesh, problem.steps[number].dirichlet, added.front())
+                        << ", which step 1 leaves free: a later step may change the "
+                           "values of step 1's prescribed components only");
   FETICON_CHECK(omitted.empty(),
-                "load stage " << number << " leaves " << describe(problem.mesh, problem.dirichlet, omitted.front())
-                              << " free, which stage 1 prescribes: a later stage may change "
-                                 "the values of stage 1's prescribed components only");
+                "step " << number + 1 << " leaves "
+                        << describe(problem.mesh, problem.steps[0].dirichlet, omitted.front())
+                        << " free, which step 1 prescribes: a later step may change "
+                           "the values of step 1's prescribed components only");
 }
 
-/// The rule of the file comment at `p`: start null in stage 1 (the unloaded start).
-la::Vector blend(const LoadPoint& p, const la::Vector* start, const la::Vector& end)
+/// The amplitude names the loads and supports of `step` give, each once, sorted.
+std::set<std::string> amplitudes_of(const Step& step)
 {
-  if (!start)
-    return p.fraction * end; // t f, rounded as a one-stage solver rounds it
-  // At fraction 1 this is the stage's end exactly (0 * start + 1 * end).
-  return (1 - p.fraction) * *start + p.fraction * end;
+  std::set<std::string> names;
+  const auto add = [&](const auto& loads) {
+    for (const auto& load : loads)
+      if (!load.amplitude.empty())
+        names.insert(load.amplitude);
+  };
+  add(step.dirichlet);
+  add(step.tractions);
+  add(step.pressures);
+  add(step.nodal_forces);
+  add(step.body_loads);
+  return names;
+}
+
+/// sum_k c_k term(k) over the (term, coefficient) pairs `c`, term by term, so that t f and
+/// (1 - t) f_0 + t f_1 round as one-stage and two-stage runs did before amplitudes (c f in one
+/// product; each element a x + b y).
+template <class Term>
+la::Vector linear_combination(const std::vector<std::pair<int, double>>& c, Term term)
+{
+  la::Vector out = c.front().second * term(c.front().first);
+  for (size_t k = 1; k < c.size(); ++k)
+    out += c[k].second * term(c[k].first);
+  return out;
 }
 } // namespace
 
-LoadHistory::LoadHistory(const Problem& problem, int first_stage_steps, bool one_step_per_stage)
+LoadHistory::LoadHistory(const Problem& problem, int default_steps, bool one_step_per_stage)
 {
-  FETICON_CHECK(first_stage_steps >= 1, "load steps of stage 1: " << first_stage_steps << ", must be >= 1");
-  ConstrainedDofs first = problem.all_constrained_dofs();
-  std::vector<StageEnd> stages;
-  stages.push_back({problem.external_force(), first.values, first_stage_steps});
-  for (size_t k = 0; k < problem.later_stages.size(); ++k)
+  FETICON_CHECK(default_steps >= 1, "load steps: " << default_steps << ", must be >= 1");
+  problem.validate();
+  const ConstrainedDofs first = problem.all_constrained_dofs(0);
+  _dofs = first.dofs;
+  double start_time = 0;
+  for (size_t k = 0; k < problem.steps.size(); ++k)
   {
-    const LoadStage& stage = problem.later_stages[k];
-    const int number = static_cast<int>(k) + 2;
-    FETICON_CHECK(stage.increments >= 1,
-                  "load stage " << number << " has " << stage.increments << " increments, must be >= 1");
-    const ConstrainedDofs later = stage_dirichlet(problem, stage, number);
-    check_same_dofs(problem, first, later, stage, number);
-    stages.push_back({stage_force(problem, stage, number), later.values, one_step_per_stage ? 1 : stage.increments});
+    const Step& step = problem.steps[k];
+    const ConstrainedDofs held = k == 0 ? first : problem.all_constrained_dofs(k);
+    if (k > 0)
+      check_same_dofs(problem, first, held, k);
+    Stage stage;
+    stage.period = step.time;
+    stage.start_time = start_time;
+    stage.ramp = step.ramp;
+    stage.ramp_start = k == 0 ? -1 : _stages.back().ramp_end;
+    stage.ramp_end = static_cast<int>(_terms.size());
+    _terms.push_back({problem.external_force(k), held.values});
+    for (const std::string& name : amplitudes_of(step))
+    {
+      stage.amplitudes.emplace_back(static_cast<int>(_terms.size()), problem.amplitudes.at(name));
+      _terms.push_back({problem.external_force(k, name), problem.all_constrained_dofs(k, name).values});
+    }
+    stage.steps = one_step_per_stage && stage.amplitudes.empty() ? 1 : step.increments.value_or(default_steps);
+    add_stage(std::move(stage));
+    start_time += step.time;
   }
-  *this = LoadHistory(std::move(first.dofs), std::move(stages));
 }
 
-LoadHistory::LoadHistory(std::vector<int64_t> dofs, std::vector<StageEnd> stages)
-    : _dofs(std::move(dofs)), _stages(std::move(stages))
+LoadHistory::LoadHistory(std::vector<int64_t> dofs, const std::vector<StageEnd>& stages) : _dofs(std::move(dofs))
 {
-  FETICON_CHECK(!_stages.empty(), "a load history needs at least one stage");
-  for (size_t s = 0; s < _stages.size(); ++s)
+  FETICON_CHECK(!stages.empty(), "a load history needs at least one stage");
+  for (size_t s = 0; s < stages.size(); ++s)
   {
-    const StageEnd& end = _stages[s];
-    FETICON_CHECK(end.steps >= 1, "load stage " << s + 1 << " has " << end.steps << " load steps, must be >= 1");
+    const StageEnd& end = stages[s];
     FETICON_CHECK(
-        end.force.size() == _stages[0].force.size() && end.values.size() == static_cast<la::Index>(_dofs.size()),
+        end.force.size() == stages[0].force.size() && end.values.size() == static_cast<la::Index>(_dofs.size()),
         "load stage " << s + 1 << ": " << end.force.size() << " forces and " << end.values.size()
-                      << " prescribed values, expected " << _stages[0].force.size() << " and " << _dofs.size());
-    _last_step.push_back((s == 0 ? 0 : _last_step.back()) + end.steps);
-    _force_norm.push_back(end.force.norm());
-    // As a one-stage run's t = n / N, so that stage 1 reproduces its numbers exactly.
-    std::vector<double>& fractions = _fractions.emplace_back();
-    for (int j = 1; j <= end.steps; ++j)
-      fractions.push_back(static_cast<double>(j) / end.steps);
+                      << " prescribed values, expected " << stages[0].force.size() << " and " << _dofs.size());
+    Stage stage;
+    stage.start_time = static_cast<double>(s);
+    stage.steps = end.steps;
+    stage.ramp_start = s == 0 ? -1 : _stages.back().ramp_end;
+    stage.ramp_end = static_cast<int>(_terms.size());
+    _terms.push_back({end.force, end.values});
+    add_stage(std::move(stage));
   }
+}
+
+void LoadHistory::add_stage(Stage stage)
+{
+  const int number = n_stages() + 1;
+  FETICON_CHECK(stage.steps >= 1, "load stage " << number << " has " << stage.steps << " load steps, must be >= 1");
+  FETICON_CHECK(stage.steps <= 100000,
+                "load stage " << number << " has " << stage.steps << " load steps, at most " << 100000 << " are taken");
+  _last_step.push_back((_last_step.empty() ? 0 : _last_step.back()) + stage.steps);
+  // As a one-stage run's t = n / N, so that stage 1 reproduces its numbers exactly.
+  std::vector<double>& fractions = _fractions.emplace_back();
+  for (int j = 1; j <= stage.steps; ++j)
+    fractions.push_back(static_cast<double>(j) / stage.steps);
+  _has_amplitudes = _has_amplitudes || !stage.amplitudes.empty();
+  _stages.push_back(std::move(stage));
 }
 
 int LoadHistory::last_step(int stage) const
@@ -186,7 +160,8 @@ LoadPoint LoadHistory::point(int step) const
       static_cast<int>(std::lower_bound(_last_step.begin(), _last_step.end(), step) - _last_step.begin());
   const int j = step - (stage == 0 ? 0 : _last_step[stage - 1]);
   const double fraction = _fractions[stage][j - 1];
-  return {stage + 1, fraction, stage == 0 ? fraction : stage + fraction};
+  const Stage& s = _stages[stage];
+  return {stage + 1, fraction, stage == 0 ? fraction : stage + fraction, s.start_time + fraction * s.period};
 }
 
 void LoadHistory::follow(const std::vector<double>& load_factors)
@@ -207,38 +182,48 @@ void LoadHistory::split(int step)
     ++_last_step[s];
 }
 
-const StageEnd& LoadHistory::stage_end(int stage) const
+std::vector<std::pair<int, double>> LoadHistory::coefficients(int step) const
 {
-  FETICON_CHECK(stage >= 1 && stage <= n_stages(), "load stage " << stage << " of " << n_stages());
-  return _stages[stage - 1];
+  const LoadPoint p = point(step);
+  const Stage& stage = _stages[p.stage - 1];
+  std::vector<std::pair<int, double>> out;
+  if (!stage.ramp)
+    out.emplace_back(stage.ramp_end, 1.0);
+  else
+  {
+    if (stage.ramp_start >= 0)
+      out.emplace_back(stage.ramp_start, 1 - p.fraction);
+    out.emplace_back(stage.ramp_end, p.fraction);
+  }
+  for (const auto& [term, amplitude] : stage.amplitudes)
+    out.emplace_back(term, amplitude.value(amplitude.total_time ? p.time : p.fraction * stage.period));
+  return out;
 }
 
-la::Vector LoadHistory::interpolate(int step, const std::vector<la::Vector>& ends) const
+la::Vector LoadHistory::combine(int step, const std::vector<la::Vector>& terms) const
 {
-  FETICON_CHECK(static_cast<int>(ends.size()) == n_stages(),
-                "a quantity at " << ends.size() << " stage ends for a history of " << n_stages() << " stages");
-  const LoadPoint p = point(step);
-  return blend(p, p.stage == 1 ? nullptr : &ends[p.stage - 2], ends[p.stage - 1]);
+  FETICON_CHECK(terms.size() == _terms.size(),
+                "a quantity of " << terms.size() << " terms for a history of " << _terms.size());
+  return linear_combination(coefficients(step), [&](int k) -> const la::Vector& { return terms[k]; });
 }
 
 la::Vector LoadHistory::external_force(int step) const
 {
-  const LoadPoint p = point(step);
-  return blend(p, p.stage == 1 ? nullptr : &_stages[p.stage - 2].force, _stages[p.stage - 1].force);
+  return linear_combination(coefficients(step), [&](int k) -> const la::Vector& { return _terms[k].force; });
 }
 
 double LoadHistory::external_force_norm(int step) const
 {
   const LoadPoint p = point(step);
-  if (p.stage == 1)
-    return p.fraction * _force_norm[0]; // as a one-stage solver scales ||f||
+  const Stage& stage = _stages[p.stage - 1];
+  if (p.stage == 1 && stage.amplitudes.empty())
+    return (stage.ramp ? p.fraction : 1.0) * _terms[stage.ramp_end].force.norm(); // as a one-stage solver scales ||f||
   return external_force(step).norm();
 }
 
 la::Vector LoadHistory::prescribed_values(int step) const
 {
-  const LoadPoint p = point(step);
-  return blend(p, p.stage == 1 ? nullptr : &_stages[p.stage - 2].values, _stages[p.stage - 1].values);
+  return linear_combination(coefficients(step), [&](int k) -> const la::Vector& { return _terms[k].values; });
 }
 
 ConstrainedDofs LoadHistory::prescribed(int step) const { return {_dofs, prescribed_values(step)}; }

@@ -1,26 +1,32 @@
 #pragma once
 /// @file The load history of a problem: external forces and prescribed displacements at every
-/// load step of a run over several stages (a CalculiX deck's *STEPs).
+/// load step of a run over its steps (fem::Problem::steps, a CalculiX deck's *STEPs).
 ///
-/// Stage 1 is the problem's own tractions, pressures, nodal forces and Dirichlet values
-/// (Problem::external_force(), Problem::all_constrained_dofs()), reached at load factor 1 in
-/// its load steps; stage k + 1 (Problem::later_stages[k - 1]) runs linearly from the end of
-/// stage k to its own loads and prescribed values in its load steps, ending at load factor
-/// k + 1 (CalculiX's total time). At load step n, in stage s at its j-th of N_s steps,
-///   t_n = (s - 1) + j / N_s,
+/// Step s (1-based here, a "stage" of the history) runs in N_s load steps; at its j-th,
+///   fraction = j / N_s,  load factor t_n = (s - 1) + fraction,
+///   time = T_1 + ... + T_{s-1} + fraction T_s   (the total time, T_s the step's period)
 /// (a step cut back after a failed outer loop, split(), halves its increment: its stage then
-/// has a step at the midpoint of the fractions before and at it),
-///   f(t_n) = (j / N_s) f_1                              (s = 1: t f of a one-stage run),
-///   f(t_n) = (1 - j / N_s) f_{s-1} + (j / N_s) f_s      (s > 1),
-/// and likewise for the prescribed values u_D. For s = 1 the numbers are those of t * f and
-/// t * u_D bit for bit, so a one-stage problem runs as it did before stages existed. The
-/// prescribed DOF set is stage 1's for the whole history: a stage changes values only.
+/// has a step at the midpoint of the fractions before and at it). The forces are
+///   f(t_n) = (1 - fraction) R_{s-1} + fraction R_s + sum_a a(time_a) V_{s,a},
+/// R_s the loads of step s without amplitude (R_0 = 0; with `ramp = false` the first two terms
+/// are R_s alone), V_{s,a} its loads with amplitude a, evaluated at the step time
+/// (fraction T_s) or the total time (TIME=TOTAL TIME). The prescribed values u_D follow the
+/// same rule. Each (R_s, V_{s,a}) is a term: a force vector and a vector of prescribed values,
+/// and f(t_n) a linear combination of terms, so that a solver may combine its own layouts of
+/// them (combine()). For a step 1 without amplitudes the numbers are those of t * f and
+/// t * u_D bit for bit, so a one-step problem runs as it did before steps existed.
+///
+/// A load without amplitude starts a step from the value of the loads without amplitude at the
+/// end of the step before: CalculiX's rule, as long as no load trades a ramp for an amplitude
+/// between steps (the deck reader refuses that). The prescribed DOF set is step 1's for the
+/// whole history: a step changes values only.
 ///
 /// Usage:
 ///   const LoadHistory history(problem, settings.steps(), linear);
 ///   for (int n = 1; n <= history.n_steps(); ++n)
 ///     solve(history.load_factor(n), history.external_force(n), history.prescribed(n));
 
+#include "fem/amplitude.hpp"
 #include "fem/dirichlet.hpp"
 #include "fem/problem.hpp"
 #include "la/types.hpp"
@@ -33,12 +39,13 @@ namespace feticon::fem
 /// Where a load step stands in the history.
 struct LoadPoint
 {
-  int stage = 1;          ///< 1-based; 1 is the problem's own loads
+  int stage = 1;          ///< 1-based: the problem's step
   double fraction = 0;    ///< j / N_s in (0, 1]: how far into its stage
   double load_factor = 0; ///< t_n = (stage - 1) + fraction
+  double time = 0;        ///< the total time
 };
 
-/// What a stage reaches at its end, and in how many load steps.
+/// What a stage without amplitudes reaches at its end, and in how many load steps.
 struct StageEnd
 {
   la::Vector force;  ///< external forces at the end of the stage (N), 3 per mesh node
@@ -46,43 +53,55 @@ struct StageEnd
   int steps = 1;     ///< load steps of the stage (>= 1)
 };
 
+/// One term of the history: a force vector and prescribed values, scaled together.
+struct LoadTerm
+{
+  la::Vector force;  ///< 3 per mesh node
+  la::Vector values; ///< in the order of LoadHistory::dofs()
+};
+
 class LoadHistory
 {
 public:
   /// @brief The history of `problem`.
-  /// @param[in] problem           stage 1 and problem.later_stages
-  /// @param[in] first_stage_steps load steps of stage 1 (the solver's load_steps; 1 with small
-  ///                              displacements)
-  /// @param[in] one_step_per_stage every later stage in one load step whatever its increments:
-  ///                              small displacements, where frictionless contact makes the
-  ///                              answer at a stage's end independent of the path
-  /// @throws feticon::Error naming the stage and the set for a later stage that prescribes a
-  ///         component stage 1 leaves free or leaves free one stage 1 prescribes, and for a
-  ///         stage's unknown or empty set, non-finite value, out-of-range node or increments < 1
-  LoadHistory(const Problem& problem, int first_stage_steps, bool one_step_per_stage = false);
+  /// @param[in] problem            its steps and amplitudes
+  /// @param[in] default_steps      load steps of a step that does not give its increments (the
+  ///                               solver's load_steps; 1 with small displacements)
+  /// @param[in] one_step_per_stage every stage without amplitudes in one load step whatever
+  ///                               its increments: small displacements, where frictionless
+  ///                               contact makes the answer at a stage's end independent of
+  ///                               the path (a stage with amplitudes keeps its increments:
+  ///                               their values in between are asked for)
+  /// @throws feticon::Error naming the step and the set for a step that prescribes a
+  ///         component step 1 leaves free or leaves free one step 1 prescribes, and for a
+  ///         step's unknown or empty set, non-finite value, out-of-range node or increments < 1
+  LoadHistory(const Problem& problem, int default_steps, bool one_step_per_stage = false);
 
-  /// @brief A history from its stage ends (tests, the direct Newton reference).
+  /// @brief A history from its stage ends, all ramped (tests, the direct Newton reference).
   /// @param[in] dofs   the prescribed DOFs (sorted, as ConstrainedDofs::dofs)
   /// @param[in] stages the ends of stages 1, 2, ...: equal vector sizes, steps >= 1
-  LoadHistory(std::vector<int64_t> dofs, std::vector<StageEnd> stages);
+  LoadHistory(std::vector<int64_t> dofs, const std::vector<StageEnd>& stages);
 
   int n_stages() const { return static_cast<int>(_stages.size()); }
   /// Load steps of the whole history.
   int n_steps() const { return _last_step.back(); }
   /// Last load step of `stage` (1-based); 0 for stage 0 (the unloaded start).
   int last_step(int stage) const;
-  /// Stage, fraction and load factor of load step `step` (1 .. n_steps()).
+  /// Stage, fraction, load factor and time of load step `step` (1 .. n_steps()).
   LoadPoint point(int step) const;
   double load_factor(int step) const { return point(step).load_factor; }
 
-  /// The prescribed DOFs (Problem::all_constrained_dofs()'s, every stage).
+  /// The prescribed DOFs (every stage's).
   const std::vector<int64_t>& dofs() const { return _dofs; }
-  /// The end of `stage` (1 .. n_stages()).
-  const StageEnd& stage_end(int stage) const;
+  /// The terms f(t_n) and u_D(t_n) combine (the file comment).
+  const std::vector<LoadTerm>& terms() const { return _terms; }
+  /// True if some stage has a load or support with an amplitude.
+  bool has_amplitudes() const { return _has_amplitudes; }
 
   /// f(t_n) of the file comment, 3 per mesh node.
   la::Vector external_force(int step) const;
-  /// ||f(t_n)||: t ||f_1|| in stage 1 (as a one-stage run scales it), the norm of f(t_n) after.
+  /// ||f(t_n)||: t ||f_1|| in a stage 1 without amplitudes (as a one-stage run scales it),
+  /// the norm of f(t_n) otherwise.
   double external_force_norm(int step) const;
   /// u_D(t_n) in the order of dofs().
   la::Vector prescribed_values(int step) const;
@@ -99,17 +118,33 @@ public:
   /// A factor that no halving reaches (another load_steps) is left for the caller's check.
   void follow(const std::vector<double>& load_factors);
 
-  /// @brief The value at load step `step` of a quantity given at the stage ends, by the rule of
-  /// the file comment (for the solvers' own layouts, e.g. forces split over subdomains).
-  /// @param[in] ends the quantity at the end of stages 1 .. n_stages()
-  la::Vector interpolate(int step, const std::vector<la::Vector>& ends) const;
+  /// @brief The value at load step `step` of a quantity given per term, by the rule of the file
+  /// comment (for the solvers' own layouts, e.g. forces split over subdomains).
+  /// @param[in] terms the quantity of each of terms(), in its order
+  la::Vector combine(int step, const std::vector<la::Vector>& terms) const;
 
 private:
+  /// How a stage's terms are scaled: the ramp from the last stage's ramp term to its own, and
+  /// its amplitude terms.
+  struct Stage
+  {
+    int steps = 1;
+    double period = 1, start_time = 0;
+    bool ramp = true;
+    int ramp_start = -1; ///< the term of R_{s-1}; -1 in stage 1
+    int ramp_end = 0;    ///< the term of R_s
+    std::vector<std::pair<int, Amplitude>> amplitudes;
+  };
+  /// (term, coefficient) of load step `step`, in a fixed order.
+  std::vector<std::pair<int, double>> coefficients(int step) const;
+  void add_stage(Stage stage);
+
   std::vector<int64_t> _dofs;
-  std::vector<StageEnd> _stages;
+  std::vector<LoadTerm> _terms;
+  std::vector<Stage> _stages;
   std::vector<int> _last_step; ///< cumulative: last load step of stage s at s - 1
   /// j / N_s of each load step of stage s at s - 1, with the midpoints of split steps.
   std::vector<std::vector<double>> _fractions;
-  std::vector<double> _force_norm; ///< ||f_s||
+  bool _has_amplitudes = false;
 };
 } // namespace feticon::fem

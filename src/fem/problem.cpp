@@ -10,17 +10,42 @@
 
 namespace feticon::fem
 {
-la::Vector Problem::external_force() const
+namespace
 {
+/// Runs `check`, prefixing the message of a feticon::Error it throws with the step.
+template <class F>
+void in_step(size_t step, size_t n_steps, F&& check)
+{
+  try
+  {
+    check();
+  }
+  catch (const Error& e)
+  {
+    if (n_steps == 1)
+      throw;
+    throw Error("step " + std::to_string(step + 1) + ": " + e.what());
+  }
+}
+} // namespace
+
+la::Vector Problem::external_force(size_t step, const std::string& amplitude) const
+{
+  FETICON_CHECK(step < steps.size(), "step " << step + 1 << " of " << steps.size());
+  const Step& s = steps[step];
   la::Vector f = la::Vector::Zero(3 * mesh.n_nodes());
-  for (const FaceTraction& t : tractions)
-    add_face_traction(mesh, mesh.face_set(t.set), t.traction, f);
-  for (const FacePressure& p : pressures)
-    add_face_pressure(mesh, mesh.face_set(p.set), p.pressure, f);
-  for (const NodalForce& n : nodal_forces)
-    f(3 * static_cast<la::Index>(n.node) + n.component) += n.value;
-  for (const BodyLoad& b : body_loads)
-    add_body_load(mesh, materials, b, f);
+  for (const FaceTraction& t : s.tractions)
+    if (t.amplitude == amplitude)
+      add_face_traction(mesh, mesh.face_set(t.set), t.traction, f);
+  for (const FacePressure& p : s.pressures)
+    if (p.amplitude == amplitude)
+      add_face_pressure(mesh, mesh.face_set(p.set), p.pressure, f);
+  for (const NodalForce& n : s.nodal_forces)
+    if (n.amplitude == amplitude)
+      f(3 * static_cast<la::Index>(n.node) + n.component) += n.value;
+  for (const BodyLoad& b : s.body_loads)
+    if (b.amplitude == amplitude)
+      add_body_load(mesh, materials, b, f);
   for (int i = 0; i < 3; ++i)
     if (eliminated[i])
       for (int32_t n = 0; n < mesh.n_nodes(); ++n)
@@ -28,9 +53,10 @@ la::Vector Problem::external_force() const
   return f;
 }
 
-ConstrainedDofs Problem::all_constrained_dofs() const
+ConstrainedDofs Problem::all_constrained_dofs(size_t step, const std::string& amplitude) const
 {
-  const ConstrainedDofs prescribed = collect_dirichlet(mesh, dirichlet);
+  FETICON_CHECK(step < steps.size(), "step " << step + 1 << " of " << steps.size());
+  const ConstrainedDofs prescribed = collect_dirichlet(mesh, steps[step].dirichlet);
   std::map<int64_t, double> merged;
   for (size_t k = 0; k < prescribed.dofs.size(); ++k)
     merged[prescribed.dofs[k]] = prescribed.values(static_cast<la::Index>(k));
@@ -43,6 +69,13 @@ ConstrainedDofs Problem::all_constrained_dofs() const
                       "node " << n << " prescribes " << it->second << " for component " << i
                               << ", which plane strain fixes to zero");
       }
+  // The values of the supports of other amplitudes are 0 here (the DOFs stay held).
+  for (const DirichletCondition& d : steps[step].dirichlet)
+    if (d.amplitude != amplitude)
+      for (const int32_t n : mesh.node_set(d.set))
+        for (int i = 0; i < 3; ++i)
+          if (d.value[i])
+            merged[3 * static_cast<int64_t>(n) + i] = 0.0;
   return to_constrained_dofs(merged);
 }
 
@@ -71,22 +104,11 @@ void Problem::validate() const
                               << "' (" << stiffest->young << " Pa) and body '"
                               << mesh.body_names[softest - materials.begin()] << "' (" << softest->young
                               << " Pa) differ by more than 1e15, beyond double precision");
-  for (const auto& d : dirichlet)
-    FETICON_CHECK(!mesh.node_set(d.set).empty(), "Dirichlet set '" << d.set << "' is empty");
-  for (const auto& t : tractions)
-  {
-    FETICON_CHECK(!mesh.face_set(t.set).empty(), "traction face set '" << t.set << "' is empty");
-    FETICON_CHECK(t.traction.allFinite(), "traction on '" << t.set << "' is not finite");
-  }
-  for (const auto& p : pressures)
-  {
-    FETICON_CHECK(!mesh.face_set(p.set).empty(), "pressure face set '" << p.set << "' is empty");
-    FETICON_CHECK(std::isfinite(p.pressure), "pressure on '" << p.set << "' is not finite");
-  }
-  for (const auto& n : nodal_forces)
-    FETICON_CHECK(
-        n.node >= 0 && n.node < mesh.n_nodes() && n.component >= 0 && n.component < 3 && std::isfinite(n.value),
-        "nodal force on node " << n.node << ", component " << n.component << " is out of range or not finite");
+  FETICON_CHECK(!steps.empty(), "problem '" << name << "' has no step");
+  for (const auto& [amplitude_name, amplitude] : amplitudes)
+    amplitude.check();
+  for (size_t k = 0; k < steps.size(); ++k)
+    validate_step(k);
   for (const auto& e : equations)
   {
     FETICON_CHECK(!e.terms.empty(), "a linear equation has no terms");
@@ -120,5 +142,46 @@ void Problem::validate() const
                   "contact pair " << c.slave << " / " << c.master << ": friction coefficient " << f.coefficient
                                   << " and slip bound " << f.slip_bound << " must be finite and >= 0");
   }
+}
+
+void Problem::validate_step(size_t step) const
+{
+  const Step& s = steps[step];
+  in_step(step, steps.size(), [&] {
+    FETICON_CHECK(!s.increments || *s.increments >= 1, "the step has " << *s.increments << " increments, must be >= 1");
+    FETICON_CHECK(std::isfinite(s.time) && s.time > 0, "the step's time " << s.time << " must be positive");
+    const auto amplitude_known = [&](const std::string& a, const std::string& what) {
+      FETICON_CHECK(a.empty() || amplitudes.count(a), what << " names amplitude '" << a << "', which is not defined");
+    };
+    for (const auto& d : s.dirichlet)
+    {
+      FETICON_CHECK(!mesh.node_set(d.set).empty(), "Dirichlet set '" << d.set << "' is empty");
+      for (const std::optional<double>& v : d.value)
+        FETICON_CHECK(!v || std::isfinite(*v), "a prescribed value on '" << d.set << "' is not finite");
+      amplitude_known(d.amplitude, "the support on '" + d.set + "'");
+    }
+    for (const auto& t : s.tractions)
+    {
+      FETICON_CHECK(!mesh.face_set(t.set).empty(), "traction face set '" << t.set << "' is empty");
+      FETICON_CHECK(t.traction.allFinite(), "traction on '" << t.set << "' is not finite");
+      amplitude_known(t.amplitude, "the traction on '" + t.set + "'");
+    }
+    for (const auto& p : s.pressures)
+    {
+      FETICON_CHECK(!mesh.face_set(p.set).empty(), "pressure face set '" << p.set << "' is empty");
+      FETICON_CHECK(std::isfinite(p.pressure), "pressure on '" << p.set << "' is not finite");
+      amplitude_known(p.amplitude, "the pressure on '" + p.set + "'");
+    }
+    for (const auto& n : s.nodal_forces)
+    {
+      FETICON_CHECK(
+          n.node >= 0 && n.node < mesh.n_nodes() && n.component >= 0 && n.component < 3 && std::isfinite(n.value),
+          "nodal force on node " << n.node << ", component " << n.component << " is out of range or not finite");
+      amplitude_known(n.amplitude, "the nodal force on node " + std::to_string(n.node));
+    }
+    for (const auto& b : s.body_loads)
+      amplitude_known(b.amplitude, b.where);
+    (void)collect_dirichlet(mesh, s.dirichlet); // two values for one DOF
+  });
 }
 } // namespace feticon::fem

@@ -1,42 +1,20 @@
 #pragma once
 /// @file A contact problem as the solvers see it: mesh, materials, supports, loads, pairs.
 
-#include "fem/body_loads.hpp"
+#include "fem/amplitude.hpp"
 #include "fem/contact_interaction.hpp"
-#include "fem/dirichlet.hpp"
 #include "fem/material.hpp"
+#include "fem/step.hpp"
 #include "la/types.hpp"
 #include "mesh/mesh.hpp"
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace feticon::fem
 {
-/// Uniform dead traction (Pa, force per reference area) on a named face set.
-struct FaceTraction
-{
-  std::string set;
-  Eigen::Vector3d traction;
-};
-
-/// Uniform dead pressure (Pa, positive pushes into the body, on the reference normals) on a
-/// named face set (deck *DLOAD Pn).
-struct FacePressure
-{
-  std::string set;
-  double pressure;
-};
-
-/// A concentrated dead force (N) on one component of one node (deck *CLOAD).
-struct NodalForce
-{
-  int32_t node;
-  int component; ///< 0, 1, 2
-  double value;
-};
-
 /// Linear multi-point constraint sum_k a_k u(node_k, component_k) = 0 (deck *EQUATION):
 /// FETI takes it as an equality row beside the gluing rows.
 struct LinearEquation
@@ -70,45 +48,31 @@ struct ContactPairNames
   std::string adjust_nodes = {};
 };
 
-/// The loads and prescribed displacements one later stage of the load history reaches at its
-/// end (a deck's second and later *STEPs): the history runs linearly from the end of one stage
-/// to the end of the next in `increments` load steps. The prescribed components are those of
-/// the first stage (Problem::dirichlet); a stage changes their values only.
-struct LoadStage
-{
-  std::vector<FaceTraction> tractions;
-  std::vector<FacePressure> pressures;
-  std::vector<NodalForce> nodal_forces;
-  std::vector<DirichletCondition> dirichlet;
-  int increments = 1;
-  std::vector<BodyLoad> body_loads = {};
-};
-
 struct Problem
 {
   std::string name;
   mesh::Mesh mesh;
   bool mesh_from_cache = false;    ///< the mesh came from the mesh cache (mesh/mesh_cache.hpp)
   std::vector<Material> materials; ///< one per body
-  std::vector<DirichletCondition> dirichlet;
-  std::vector<FaceTraction> tractions;
-  std::vector<FacePressure> pressures;
-  std::vector<NodalForce> nodal_forces;
-  std::vector<BodyLoad> body_loads; ///< gravity and centrifugal loads (fem/body_loads.hpp)
   std::vector<LinearEquation> equations;
-  /// Stages after the first (Problem's own loads and supports, reached at load factor 1):
-  /// stage k ends at load factor 1 + k. Empty for every problem but multi-step decks.
-  std::vector<LoadStage> later_stages;
+  /// The history, one record a step (fem/step.hpp); at least one.
+  std::vector<Step> steps = std::vector<Step>(1);
+  std::map<std::string, Amplitude> amplitudes; ///< by the name loads and supports give
   /// Any number of pairs, none included (a model held by supports, glued or tied only).
   std::vector<ContactPairNames> contacts;
   /// Components fixed to zero on every node and eliminated (plane strain: {0,0,1}).
   std::array<bool, 3> eliminated{false, false, false};
 
-  /// Consistent nodal forces of all tractions, pressures and nodal forces at load factor 1 (3 DOFs per node).
-  la::Vector external_force() const;
-  /// Dirichlet DOFs including the eliminated components (for undecomposed solves).
-  ConstrainedDofs all_constrained_dofs() const;
+  /// Consistent nodal forces (3 per node) of the loads of step `step` (0-based) whose
+  /// amplitude is `amplitude` (empty: those without one), at their full values.
+  la::Vector external_force(size_t step = 0, const std::string& amplitude = {}) const;
+  /// The DOFs step `step` prescribes, with the eliminated components, and the values of the
+  /// supports whose amplitude is `amplitude` (0 for the others).
+  ConstrainedDofs all_constrained_dofs(size_t step = 0, const std::string& amplitude = {}) const;
   /// Checks materials, set names and sizes; throws feticon::Error naming what is wrong.
   void validate() const;
+
+private:
+  void validate_step(size_t step) const;
 };
 } // namespace feticon::fem

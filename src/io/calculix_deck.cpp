@@ -102,7 +102,7 @@ bool floats_along(const fem::Problem& problem, int32_t body, const Eigen::Vector
     if (problem.mesh.cell_body[c] == body)
       for (int32_t n : problem.mesh.cells[c])
         in_body[n] = 1;
-  for (const fem::DirichletCondition& d : problem.dirichlet)
+  for (const fem::DirichletCondition& d : problem.steps.front().dirichlet)
     for (int i = 0; i < 3; ++i)
       if (d.value[i] && std::abs(normal(i)) >= 1e-3)
         for (int32_t n : problem.mesh.node_set(d.set))
@@ -274,7 +274,7 @@ void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOp
   out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "") << ", INC=10000\n*STATIC\n"
       << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
   out << "*BOUNDARY\n";
-  for (const fem::DirichletCondition& d : problem.dirichlet)
+  for (const fem::DirichletCondition& d : problem.steps.front().dirichlet)
     for (int i = 0; i < 3; ++i)
       if (d.value[i])
         out << deck_name("N_", d.set) << ", " << i + 1 << ", " << i + 1 << ", " << number(*d.value[i]) << '\n';
@@ -305,22 +305,23 @@ void write_later_step(std::ostream& out, const fem::LoadHistory& history, int st
   const double increment = 1.0 / increments;
   out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "") << ", INC=10000\n*STATIC\n"
       << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
-  const fem::StageEnd& now = history.stage_end(stage);
-  const fem::StageEnd& before = history.stage_end(stage - 1);
+  const int end = history.last_step(stage), before = history.last_step(stage - 1);
+  const la::Vector values = history.prescribed_values(end), values_before = history.prescribed_values(before);
   out << "*BOUNDARY\n";
   for (size_t k = 0; k < history.dofs().size(); ++k)
-    if (now.values(k) != before.values(k))
+    if (values(k) != values_before(k))
     {
       const int64_t dof = history.dofs()[k];
-      out << dof / 3 + 1 << ", " << dof % 3 + 1 << ", " << dof % 3 + 1 << ", " << number(now.values(k)) << '\n';
+      out << dof / 3 + 1 << ", " << dof % 3 + 1 << ", " << dof % 3 + 1 << ", " << number(values(k)) << '\n';
     }
+  const la::Vector force = history.external_force(end);
   out << "*CLOAD, OP=NEW\n";
   std::fill(std::begin(summary.total_load), std::end(summary.total_load), 0.0);
-  for (la::Index i = 0; i < now.force.size(); ++i)
-    if (now.force(i) != 0)
+  for (la::Index i = 0; i < force.size(); ++i)
+    if (force(i) != 0)
     {
-      out << i / 3 + 1 << ", " << i % 3 + 1 << ", " << number(now.force(i)) << '\n';
-      summary.total_load[i % 3] += now.force(i);
+      out << i / 3 + 1 << ", " << i % 3 + 1 << ", " << number(force(i)) << '\n';
+      summary.total_load[i % 3] += force(i);
       ++summary.n_cloads;
     }
 }
@@ -346,9 +347,11 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   const std::vector<ContactPairFaces> pairs = contact_pairs(problem, options, x, summary);
 
   write_mesh(out, problem, x, summary);
+  FETICON_CHECK(problem.amplitudes.empty(), "calculix export: amplitudes are not written by feticon export");
   std::set<std::string> node_sets;
-  for (const fem::DirichletCondition& d : problem.dirichlet)
-    node_sets.insert(d.set);
+  for (const fem::Step& step : problem.steps)
+    for (const fem::DirichletCondition& d : step.dirichlet)
+      node_sets.insert(d.set);
   write_node_sets(out, mesh, node_sets);
   write_materials(out, problem);
   write_contact(out, problem, options, pairs);
@@ -362,12 +365,13 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   };
   write_step(out, problem, options, summary);
   output_requests();
-  if (!problem.later_stages.empty())
+  if (problem.steps.size() > 1)
   {
     const fem::LoadHistory history(problem, options.increments);
     for (int stage = 2; stage <= history.n_stages(); ++stage)
     {
-      write_later_step(out, history, stage, problem.later_stages[stage - 2].increments, options, summary);
+      write_later_step(out, history, stage, problem.steps[stage - 1].increments.value_or(options.increments), options,
+                       summary);
       output_requests();
     }
   }

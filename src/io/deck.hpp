@@ -52,6 +52,7 @@ struct DeckStep
   bool nlgeom = false;
   int increments = 1; ///< load steps: total time / initial increment of *STATIC (rounded up)
   double time = 1.0;  ///< the step's time (*STATIC), for CalculiX's total time in the outputs
+  bool ramp = true;   ///< *STEP, AMPLITUDE=RAMP (the default) or STEP
   std::vector<DeckOutputRequest> outputs;
   std::string where;
 };

@@ -3,6 +3,7 @@
 /// deck's terms, before deck_model.cpp makes a fem::Problem of it. Nodes and elements are
 /// stored once, as mesh arrays indexed in reading order, with their deck labels beside.
 
+#include "fem/amplitude.hpp"
 #include "fem/material.hpp"
 #include "io/deck.hpp"
 #include "io/deck_tokenizer.hpp"
@@ -142,16 +143,33 @@ struct DeckContactPair
   DeckPosition where;
 };
 
+/// A load or prescribed value with the amplitude its keyword names (AMPLITUDE=; empty: the
+/// step's ramp).
+struct DeckValue
+{
+  double value = 0;
+  std::string amplitude;
+  bool operator==(const DeckValue&) const = default;
+  auto operator<=>(const DeckValue&) const = default;
+};
+
+/// *DLOAD GRAV (g x, y, z) or CENTRIF (omega^2, the axis's point and direction) on a cell.
+struct DeckBodyLoad
+{
+  std::array<double, 7> values{};
+  std::string where; ///< the deck line that gave it
+  std::string amplitude;
+};
+
 /// The loads and supports in force at the end of a step (CalculiX's OP=MOD and OP=NEW
 /// applied): DOF 3*node+component -> value, (cell, face 1..6) -> pressure.
 struct DeckLoadState
 {
-  std::map<int64_t, double> boundary;
-  std::map<int64_t, double> cload;
-  std::map<std::pair<int32_t, int>, double> dload;
-  /// *DLOAD GRAV and CENTRIF: (cell, 0 GRAV / 1 CENTRIF) -> g x, y, z, or omega^2, the
-  /// axis's point and direction; with the deck line that gave it.
-  std::map<std::pair<int32_t, int>, std::pair<std::array<double, 7>, std::string>> body;
+  std::map<int64_t, DeckValue> boundary;
+  std::map<int64_t, DeckValue> cload;
+  std::map<std::pair<int32_t, int>, DeckValue> dload;
+  /// (cell, 0 GRAV / 1 CENTRIF) -> the load.
+  std::map<std::pair<int32_t, int>, DeckBodyLoad> body;
 };
 
 struct DeckData
@@ -177,8 +195,10 @@ struct DeckData
   std::vector<fem::LinearEquation> equations;
 
   /// Supports given before the first *STEP (model data): in force in every step.
-  std::map<int64_t, double> model_boundary;
-  DeckLoadState state; ///< the current step's
+  std::map<int64_t, DeckValue> model_boundary;
+  std::map<std::string, fem::Amplitude> amplitudes;  ///< *AMPLITUDE by name
+  std::map<std::string, std::string> amplitude_uses; ///< AMPLITUDE= name -> where first named
+  DeckLoadState state;                               ///< the current step's
   std::vector<DeckStep> steps;
   std::vector<DeckLoadState> step_states; ///< at the end of every step
 

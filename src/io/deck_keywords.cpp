@@ -35,7 +35,6 @@ const std::map<std::string, std::string> inert_keywords = {
     {"RESTART", "feticon restarts from its own checkpoint (feticon run --restart)"},
     {"CONTROLS", "feticon's solver settings are its own (feticon run --help)"},
     {"ORIENTATION", "the materials are isotropic, so an orientation changes nothing"},
-    {"AMPLITUDE", "loads are ramped linearly over a step; an amplitude used by a load is an error"},
     {"PREPRINT", "not written"},
 };
 
@@ -252,6 +251,7 @@ private:
         {"DLOAD", &KeywordReader::dload},
         {"DSLOAD", &KeywordReader::dsload},
         {"EQUATION", &KeywordReader::equation},
+        {"AMPLITUDE", &KeywordReader::amplitude},
         {"SURFACE INTERACTION", &KeywordReader::surface_interaction},
         {"SURFACE BEHAVIOR", &KeywordReader::surface_behavior},
         {"FRICTION", &KeywordReader::friction},
@@ -528,16 +528,23 @@ private:
     return op && *op == "NEW";
   }
 
-  void no_amplitude() const
+  /// The AMPLITUDE= of a load keyword (empty: none), remembered for the check that an
+  /// *AMPLITUDE defines it (which may come later in the deck, as CalculiX allows).
+  std::string amplitude_of()
   {
-    if (_keyword.has("AMPLITUDE"))
-      throw Error(where() + ": AMPLITUDE= is not implemented by feticon (loads ramp linearly over the step)");
+    const std::string* name = _keyword.value("AMPLITUDE");
+    if (!name)
+      return {};
+    if (name->empty())
+      throw Error(where() + ": AMPLITUDE= needs the name of an *AMPLITUDE");
+    _data.amplitude_uses.emplace(*name, where());
+    return *name;
   }
 
   void boundary()
   {
     known_parameters({"OP", "AMPLITUDE", "TYPE", "FIXED", "USER", "LOAD CASE"});
-    no_amplitude();
+    const std::string amplitude = amplitude_of();
     for (const char* p : {"FIXED", "USER", "LOAD CASE"})
       if (_keyword.has(p))
         throw Error(where() + ": " + p + " is not implemented by feticon");
@@ -583,23 +590,24 @@ private:
                    "have none, so they are not used");
       for (int64_t dof = first; dof <= std::min<int64_t>(last, 3); ++dof)
         for (int32_t n : targets)
-          target[3 * int64_t{n} + dof - 1] = value;
+          target[3 * int64_t{n} + dof - 1] = {value, amplitude};
     }
   }
 
-  /// The parameters of a load keyword: OP=NEW clears the loads of its kind set so far.
+  /// The parameters of a load keyword: OP=NEW clears the loads of its kind set so far; the
+  /// AMPLITUDE= of the keyword's loads.
   template <class Loads>
-  void begin_load(Loads& loads)
+  std::string begin_load(Loads& loads)
   {
     known_parameters({"OP", "AMPLITUDE"});
-    no_amplitude();
     if (op_new())
       loads.clear();
+    return amplitude_of();
   }
 
   void cload()
   {
-    begin_load(_data.state.cload);
+    const std::string amplitude = begin_load(_data.state.cload);
     DeckDataLine line;
     while (_tokens.next_data(line))
     {
@@ -610,12 +618,13 @@ private:
                 "degree of freedom " + std::to_string(dof) + ": forces act on 1 to 3 (solid nodes have no moments)");
       const double value = real(line, 2, "force");
       for (int32_t n : targets)
-        _data.state.cload[3 * int64_t{n} + dof - 1] = value;
+        _data.state.cload[3 * int64_t{n} + dof - 1] = {value, amplitude};
     }
   }
 
   /// Pressure `value` on face `face_field` (P1..P6) of the cells of field 0.
-  void pressure_on(const DeckDataLine& line, const std::vector<int32_t>& cells, size_t face_field, double value)
+  void pressure_on(const DeckDataLine& line, const std::vector<int32_t>& cells, size_t face_field,
+                   const DeckValue& value)
   {
     const std::string kind = name_of(line.fields[face_field]);
     if (kind.size() != 2 || kind[0] != 'P' || kind[1] < '1' || kind[1] > '6')
@@ -627,7 +636,7 @@ private:
 
   /// GRAV (magnitude, direction) or CENTRIF (omega^2, a point of the axis, its direction) on
   /// the cells of field 0, as CalculiX reads them.
-  void body_load_on(const DeckDataLine& line, const std::vector<int32_t>& cells, int kind)
+  void body_load_on(const DeckDataLine& line, const std::vector<int32_t>& cells, int kind, const std::string& amplitude)
   {
     std::array<double, 7> values{};
     const size_t needed = kind == 0 ? 6 : 9;
@@ -650,12 +659,13 @@ private:
       values = {g.x(), g.y(), g.z(), 0, 0, 0, 0};
     }
     for (int32_t c : cells)
-      _data.state.body[{c, kind}] = {values, line.where.str() + ": *DLOAD " + (kind == 0 ? "GRAV" : "CENTRIF")};
+      _data.state.body[{c, kind}] = {values, line.where.str() + ": *DLOAD " + (kind == 0 ? "GRAV" : "CENTRIF"),
+                                     amplitude};
   }
 
   void dload()
   {
-    begin_load(_data.state.dload);
+    const std::string amplitude = begin_load(_data.state.dload);
     if (op_new())
       _data.state.body.clear();
     DeckDataLine line;
@@ -666,15 +676,15 @@ private:
         fail_at(line.where, "a *DLOAD line is: element or set, P1 to P6, pressure (or GRAV, CENTRIF)");
       const std::string kind = name_of(line.fields[1]);
       if (kind == "GRAV" || kind == "CENTRIF")
-        body_load_on(line, cells, kind == "GRAV" ? 0 : 1);
+        body_load_on(line, cells, kind == "GRAV" ? 0 : 1, amplitude);
       else
-        pressure_on(line, cells, 1, real(line, 2, "pressure"));
+        pressure_on(line, cells, 1, {real(line, 2, "pressure"), amplitude});
     }
   }
 
   void dsload()
   {
-    begin_load(_data.state.dload);
+    const std::string amplitude = begin_load(_data.state.dload);
     DeckDataLine line;
     while (_tokens.next_data(line))
     {
@@ -686,8 +696,60 @@ private:
         fail_at(line.where, "a *DSLOAD line is: surface, P, pressure");
       const double value = real(line, 2, "pressure");
       for (const DeckFace& f : it->second.faces)
-        _data.state.dload[{f.cell, f.face}] = value;
+        _data.state.dload[{f.cell, f.face}] = {value, amplitude};
     }
+  }
+
+  /// A real parameter value (SHIFTX=...), or `otherwise` without it.
+  double real_parameter(const char* key, double otherwise) const
+  {
+    const std::string* v = _keyword.value(key);
+    if (!v)
+      return otherwise;
+    const std::optional<double> x = parse_deck_real(*v);
+    if (!x)
+      throw Error(where() + ": " + key + "=" + *v + " is not a number");
+    return *x;
+  }
+
+  /// A tabular amplitude: (time, value) pairs, four to a line as CalculiX writes them.
+  void amplitude()
+  {
+    known_parameters({"NAME", "TIME", "SHIFTX", "SHIFTY", "VALUE", "DEFINITION", "USER"});
+    const std::string name = required("NAME");
+    if (_keyword.has("USER"))
+      throw Error(where() + ": USER amplitudes are not implemented by feticon (tabular ones are)");
+    if (const std::string* d = _keyword.value("DEFINITION"); d && *d != "TABULAR")
+      throw Error(where() + ": DEFINITION=" + *d + " is not implemented by feticon (TABULAR)");
+    if (const std::string* v = _keyword.value("VALUE"); v && *v != "RELATIVE")
+      throw Error(where() + ": VALUE=" + *v + " is not implemented by feticon (RELATIVE: a factor on the load)");
+    fem::Amplitude a;
+    if (const std::string* t = _keyword.value("TIME"))
+    {
+      if (*t != "TOTAL TIME" && *t != "STEP TIME")
+        throw Error(where() + ": TIME=" + *t + " must be TOTAL TIME or STEP TIME");
+      a.total_time = *t == "TOTAL TIME";
+    }
+    a.shift_x = real_parameter("SHIFTX", 0);
+    a.shift_y = real_parameter("SHIFTY", 0);
+    a.where = where() + " " + name;
+    std::vector<double> numbers;
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+    {
+      size_t n = line.fields.size();
+      while (n > 0 && line.fields[n - 1].empty())
+        --n; // a line that ends with a comma
+      for (size_t k = 0; k < n; ++k)
+        numbers.push_back(real(line, k, k % 2 == 0 ? "time" : "amplitude value"));
+      if (numbers.size() % 2 != 0 && !line.continues)
+        fail_at(line.where, "an *AMPLITUDE line holds (time, value) pairs: an odd number of values");
+    }
+    for (size_t k = 0; k + 1 < numbers.size(); k += 2)
+      a.points.emplace_back(numbers[k], numbers[k + 1]);
+    a.check();
+    if (!_data.amplitudes.emplace(name, std::move(a)).second)
+      throw Error(where() + ": amplitude " + name + " is defined twice");
   }
 
   void equation()
@@ -871,6 +933,12 @@ private:
     _step_where = _keyword.where;
     _step = DeckStep{};
     _step.where = _keyword.where.str();
+    if (const std::string* a = _keyword.value("AMPLITUDE"))
+    {
+      if (*a != "RAMP" && *a != "STEP")
+        throw Error(where() + ": AMPLITUDE=" + *a + " must be RAMP or STEP");
+      _step.ramp = *a == "RAMP";
+    }
     const std::string* nlgeom = _keyword.value("NLGEOM");
     // NLGEOM stays on once a step has set it (CalculiX: "it remains active in all steps").
     _step.nlgeom =

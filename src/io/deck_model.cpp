@@ -114,6 +114,7 @@ public:
     sets_and_surfaces();
     contact_pairs();
     load_stages();
+    amplitudes();
     equations();
   }
 
@@ -406,42 +407,45 @@ private:
   }
 
   /// Supports as node sets grouped by their prescribed components and values.
-  std::vector<fem::DirichletCondition> supports(const std::map<int64_t, double>& boundary, const std::string& prefix)
+  /// Supports as node sets grouped by their amplitude and their prescribed components and values.
+  std::vector<fem::DirichletCondition> supports(const std::map<int64_t, DeckValue>& boundary, const std::string& prefix)
   {
-    std::map<int32_t, std::array<std::optional<double>, 3>> by_node;
+    using Values = std::array<std::optional<double>, 3>;
+    std::map<std::pair<std::string, int32_t>, Values> by_node;
     for (const auto& [dof, value] : boundary)
     {
       const int32_t m = mesh_of(dof / 3);
       if (m < 0 || _p.eliminated[dof % 3])
         continue;
-      by_node[m][dof % 3] = value;
+      by_node[{value.amplitude, m}][dof % 3] = value.value;
     }
-    std::map<std::array<std::optional<double>, 3>, std::vector<int32_t>> groups;
-    for (const auto& [node, values] : by_node)
-      groups[values].push_back(node);
+    std::map<std::pair<std::string, Values>, std::vector<int32_t>> groups;
+    for (const auto& [key, values] : by_node)
+      groups[{key.first, values}].push_back(key.second);
     std::vector<fem::DirichletCondition> out;
-    for (auto& [values, nodes] : groups)
+    for (auto& [key, nodes] : groups)
     {
       const std::string name = prefix + std::to_string(out.size() + 1);
       _p.mesh.node_sets[name] = std::move(nodes);
-      out.push_back({name, values});
+      out.push_back({name, key.second, key.first});
     }
     return out;
   }
 
-  std::vector<fem::NodalForce> nodal_forces(const std::map<int64_t, double>& cload, const std::string& what)
+  std::vector<fem::NodalForce> nodal_forces(const std::map<int64_t, DeckValue>& cload, const std::string& what)
   {
     std::vector<fem::NodalForce> out;
     for (const auto& [dof, value] : cload)
-      out.push_back({mesh_node(static_cast<int32_t>(dof / 3), what + ": *CLOAD"), static_cast<int>(dof % 3), value});
+      out.push_back({mesh_node(static_cast<int32_t>(dof / 3), what + ": *CLOAD"), static_cast<int>(dof % 3),
+                     value.value, value.amplitude});
     return out;
   }
 
-  /// Pressures as face sets grouped by value.
-  std::vector<fem::FacePressure> pressures(const std::map<std::pair<int32_t, int>, double>& dload,
+  /// Pressures as face sets grouped by value and amplitude.
+  std::vector<fem::FacePressure> pressures(const std::map<std::pair<int32_t, int>, DeckValue>& dload,
                                            const std::string& prefix)
   {
-    std::map<double, std::vector<mesh::Face>> groups;
+    std::map<DeckValue, std::vector<mesh::Face>> groups;
     for (const auto& [face, value] : dload)
     {
       FETICON_CHECK(face.second <= n_cell_faces(_p.mesh, face.first),
@@ -454,24 +458,24 @@ private:
     {
       const std::string name = prefix + std::to_string(out.size() + 1);
       _p.mesh.face_sets[name] = std::move(faces);
-      out.push_back({name, value});
+      out.push_back({name, value.value, value.amplitude});
     }
     return out;
   }
 
   /// GRAV and CENTRIF loads, one per distinct load (its cells gathered).
-  static std::vector<fem::BodyLoad> body_loads(
-      const std::map<std::pair<int32_t, int>, std::pair<std::array<double, 7>, std::string>>& body)
+  static std::vector<fem::BodyLoad> body_loads(const std::map<std::pair<int32_t, int>, DeckBodyLoad>& body)
   {
-    std::map<std::pair<int, std::array<double, 7>>, fem::BodyLoad> groups;
+    std::map<std::tuple<int, std::array<double, 7>, std::string>, fem::BodyLoad> groups;
     for (const auto& [key, load] : body)
     {
       const auto& [cell, kind] = key;
-      fem::BodyLoad& b = groups[{kind, load.first}];
-      const std::array<double, 7>& v = load.first;
+      fem::BodyLoad& b = groups[{kind, load.values, load.amplitude}];
+      const std::array<double, 7>& v = load.values;
       if (b.cells.empty())
       {
-        b.where = load.second;
+        b.where = load.where;
+        b.amplitude = load.amplitude;
         b.kind = kind == 0 ? fem::BodyLoad::Kind::gravity : fem::BodyLoad::Kind::centrifugal;
         if (kind == 0)
           b.gravity = Eigen::Vector3d(v[0], v[1], v[2]);
@@ -499,7 +503,8 @@ private:
       int32_t fixed = 0;
       std::vector<char> seen(_p.mesh.n_nodes(), 0);
       for (const auto& [dof, value] : state.boundary)
-        if (dof % 3 == 2 && value == 0 && mesh_of(dof / 3) >= 0 && !seen[mesh_of(dof / 3)])
+        if (dof % 3 == 2 && value.value == 0 && value.amplitude.empty() && mesh_of(dof / 3) >= 0 &&
+            !seen[mesh_of(dof / 3)])
         {
           seen[mesh_of(dof / 3)] = 1;
           ++fixed;
@@ -538,21 +543,61 @@ private:
                            << "their values only");
       }
       const std::string prefix = "step" + std::to_string(k + 1) + "_";
-      if (k == 0)
-      {
-        _p.dirichlet = supports(state.boundary, prefix + "support_");
-        _p.nodal_forces = nodal_forces(state.cload, name);
-        _p.pressures = pressures(state.dload, prefix + "pressure_");
-        _p.body_loads = body_loads(state.body);
-        continue;
-      }
-      fem::LoadStage stage;
-      stage.dirichlet = supports(state.boundary, prefix + "support_");
-      stage.nodal_forces = nodal_forces(state.cload, name);
-      stage.pressures = pressures(state.dload, prefix + "pressure_");
-      stage.body_loads = body_loads(state.body);
-      stage.increments = _deck.steps[k].increments;
-      _p.later_stages.push_back(std::move(stage));
+      fem::Step& step = k == 0 ? _p.steps.front() : _p.steps.emplace_back();
+      step.dirichlet = supports(state.boundary, prefix + "support_");
+      step.nodal_forces = nodal_forces(state.cload, name);
+      step.pressures = pressures(state.dload, prefix + "pressure_");
+      step.body_loads = body_loads(state.body);
+      step.time = _deck.steps[k].time;
+      step.ramp = _deck.steps[k].ramp;
+      // Step 1 takes the solver's load_steps, which the first *STATIC sets (--set may change it).
+      if (k > 0)
+        step.increments = _deck.steps[k].increments;
+    }
+  }
+
+  static bool is_zero(const DeckValue& v) { return v.value == 0; }
+  static bool is_zero(const DeckBodyLoad& b) { return b.values[0] == 0 && b.values[1] == 0 && b.values[2] == 0; }
+
+  /// The *AMPLITUDEs the loads name; refuses a load that trades its ramp for an amplitude (or
+  /// the reverse) from one step to the next, whose start CalculiX takes from the old value (a
+  /// support held at 0 may take an amplitude).
+  void amplitudes()
+  {
+    for (const auto& [name, where] : _d.amplitude_uses)
+      FETICON_CHECK(_d.amplitudes.count(name), where << ": AMPLITUDE=" << name << " is not defined by any *AMPLITUDE");
+    _p.amplitudes = _d.amplitudes;
+    for (size_t k = 1; k < _d.step_states.size(); ++k)
+    {
+      const DeckLoadState &before = _d.step_states[k - 1], &now = _d.step_states[k];
+      const auto check = [&](const auto& old_loads, const auto& new_loads, const char* keyword, auto describe) {
+        for (const auto& [key, value] : new_loads)
+        {
+          const auto it = old_loads.find(key);
+          FETICON_CHECK(it == old_loads.end() || it->second.amplitude.empty() == value.amplitude.empty() ||
+                            is_zero(it->second),
+                        step_name(_deck.steps[k], k)
+                            << ": the " << keyword << " on " << describe(key) << " has "
+                            << (value.amplitude.empty() ? "no amplitude" : "AMPLITUDE=" + value.amplitude)
+                            << ", in the step before "
+                            << (it->second.amplitude.empty() ? "none" : "AMPLITUDE=" + it->second.amplitude)
+                            << ": feticon ramps a load without amplitude from the loads without amplitude "
+                               "before it, so a load may not switch between the two");
+        }
+      };
+      const auto dof = [&](int64_t d) {
+        return "node " + std::to_string(read_label(static_cast<int32_t>(d / 3))) + ", degree of freedom " +
+            std::to_string(d % 3 + 1);
+      };
+      const auto face = [&](const std::pair<int32_t, int>& f) {
+        return "element " + std::to_string(_deck.element_labels[f.first]) + ", face " + std::to_string(f.second);
+      };
+      check(before.boundary, now.boundary, "*BOUNDARY", dof);
+      check(before.cload, now.cload, "*CLOAD", dof);
+      check(before.dload, now.dload, "*DLOAD", face);
+      check(before.body, now.body, "*DLOAD", [&](const std::pair<int32_t, int>& b) {
+        return "element " + std::to_string(_deck.element_labels[b.first]) + (b.second == 0 ? " (GRAV)" : " (CENTRIF)");
+      });
     }
   }
 

@@ -607,7 +607,7 @@ fem::Problem build_custom_problem(const ProblemFile& file)
       FETICON_CHECK(p.mesh.node_sets.count(c.set),
                     file.source << ": " << key << ".set: no node set '" << c.set
                                 << "' in the mesh; it has: " << names_of(p.mesh.node_sets));
-      p.dirichlet.push_back(c);
+      p.steps.front().dirichlet.push_back(c);
     }
   }
   if (root["loads"])
@@ -619,7 +619,7 @@ fem::Problem build_custom_problem(const ProblemFile& file)
       const std::string key = "loads." + std::to_string(i);
       if (l.IsMap() && (l["gravity"] || l["centrifugal"]))
       {
-        p.body_loads.push_back(body_load(l, key, p.mesh, r));
+        p.steps.front().body_loads.push_back(body_load(l, key, p.mesh, r));
         continue;
       }
       r.only_keys(l, key, {"set", "traction"});
@@ -627,7 +627,7 @@ fem::Problem build_custom_problem(const ProblemFile& file)
       FETICON_CHECK(p.mesh.face_sets.count(set),
                     file.source << ": " << key << ".set: no face set '" << set
                                 << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
-      p.tractions.push_back({set, r.vector3(l["traction"], key + ".traction")});
+      p.steps.front().tractions.push_back({set, r.vector3(l["traction"], key + ".traction")});
     }
   }
   if (root["contact"])

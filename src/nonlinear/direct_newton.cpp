@@ -23,7 +23,7 @@ DirectNewtonReport solve_direct_newton(const fem::Assembler& assembler, const fe
   // One undecomposed factorization: BLAS is the parallelism (common/parallel.hpp).
   const ScopedBlasThreads blas(threads());
   const int64_t n = assembler.domain().n_dofs();
-  FETICON_CHECK(history.stage_end(1).force.size() == n && u.size() == n,
+  FETICON_CHECK(history.terms().front().force.size() == n && u.size() == n,
                 "direct Newton: vector sizes do not match the mesh (" << n << " DOFs)");
   const bool linear = assembler.kinematics() == fem::Kinematics::linear;
   DirectNewtonReport report;

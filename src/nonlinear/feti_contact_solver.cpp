@@ -342,7 +342,7 @@ private:
   std::vector<char> _schur_boundary; ///< empty without the Dirichlet preconditioner
   std::unique_ptr<decomposition::SchurComplements> _schur;
   std::unique_ptr<decomposition::ExplicitBoundaryOperators> _explicit_operators;
-  std::vector<la::Vector> _f_stages_stacked; ///< the external forces at the stages' ends, stacked
+  std::vector<la::Vector> _f_terms_stacked; ///< the forces of the history's terms, stacked
   OuterConvergence _convergence;
   /// A force at round-off: what a round-off displacement (1e-9 L) costs at the stiffest DOF of
   /// K_0. The residual's scale and the contact set's threshold do not go below it, so that an
@@ -437,8 +437,8 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
       _linear_rows.emplace(problem.mesh, master_sets(), std::move(reach), settings.linear_contact_band);
   }
   update_stiffness(); // K_0 and R(X), kept for the whole run (modified Newton)
-  for (int stage = 1; stage <= _history.n_stages(); ++stage)
-    _f_stages_stacked.push_back(_decomp->scatter_split(_history.stage_end(stage).force));
+  for (const fem::LoadTerm& term : _history.terms())
+    _f_terms_stacked.push_back(_decomp->scatter_split(term.force));
   const Eigen::Vector3d extent = problem.mesh.nodes.colwise().maxCoeff() - problem.mesh.nodes.colwise().minCoeff();
   _convergence = {settings.displacement_tolerance, settings.residual_tolerance, extent.norm()};
   double stiffest = 0;
@@ -622,7 +622,7 @@ void FetiContactSolve::begin_load_step(int step, double)
 {
   _step = step;
   fem::ConstrainedDofs target = _history.prescribed(step);
-  _f_step = _history.interpolate(step, _f_stages_stacked);
+  _f_step = _history.combine(step, _f_terms_stacked);
   _f_step_norm = _history.external_force_norm(step);
   _equality = std::make_unique<decomposition::EqualityRows>(
       decomposition::build_equality_rows(*_decomp, target, _problem.equations));

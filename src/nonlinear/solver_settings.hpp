@@ -85,13 +85,15 @@ struct SolverSettings
       return 1;
     return auto_load_steps && has_friction(problem) ? 2 : load_steps;
   }
-  /// The load history of `problem` under these settings: steps() for stage 1; each later stage
-  /// in its increments with large displacements, in one load step with small ones
-  /// (frictionless contact of linear elastic bodies: the answer at a stage's end does not
-  /// depend on the path, so one QP per stage gives CalculiX's per-step results).
+  /// The load history of `problem` under these settings: steps_of(problem) load steps where a
+  /// step does not give its increments; with small displacements each step without
+  /// amplitudes in one load step (frictionless contact of linear elastic bodies: the answer
+  /// at a step's end does not depend on the path, so one QP per step gives CalculiX's per-step
+  /// results), a step with amplitudes in its increments (load_steps where it gives none).
   fem::LoadHistory load_history(const fem::Problem& problem) const
   {
-    return fem::LoadHistory(problem, steps_of(problem), kinematics == fem::Kinematics::linear);
+    const bool linear = kinematics == fem::Kinematics::linear;
+    return fem::LoadHistory(problem, linear ? load_steps : steps_of(problem), linear);
   }
   /// Load steps of the whole run on `problem` (load_history(problem).n_steps()).
   int steps(const fem::Problem& problem) const { return load_history(problem).n_steps(); }

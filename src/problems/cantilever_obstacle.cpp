@@ -55,9 +55,9 @@ fem::Problem cantilever_obstacle_problem(const CantileverObstacleParameters& p)
   mesh::append_mesh(problem.mesh, mesh::generate_box(beam), "beam_");
   problem.materials.assign(2, p.material);
   problem.eliminated = {false, false, true};
-  problem.dirichlet = {{"beam_xmin", {0.0, 0.0, std::nullopt}}, {"ymin", {0.0, 0.0, std::nullopt}}};
+  problem.steps.front().dirichlet = {{"beam_xmin", {0.0, 0.0, std::nullopt}}, {"ymin", {0.0, 0.0, std::nullopt}}};
   const double area = p.depth * p.depth;
-  problem.tractions = {{"beam_xmax", Eigen::Vector3d(0, -cantilever_tip_load(p) / area, 0)}};
+  problem.steps.front().tractions = {{"beam_xmax", Eigen::Vector3d(0, -cantilever_tip_load(p) / area, 0)}};
   problem.contacts = {{"beam_ymin", "ymax"}};
   problem.validate();
   return problem;

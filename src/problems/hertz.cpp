@@ -80,32 +80,36 @@ fem::Problem hertz_problem(const HertzParameters& parameters)
   p.mesh = generate_hertz(mesh, &p.mesh_from_cache);
   p.materials = {parameters.material, parameters.block()}; // bodies "cylinder", "block"
   p.eliminated = {false, false, true};
-  p.dirichlet = {{"support", {0.0, 0.0, std::nullopt}}};
+  fem::Step& pressed = p.steps.front();
+  pressed.dirichlet = {{"support", {0.0, 0.0, std::nullopt}}};
   if (!mesh.full)
-    p.dirichlet.insert(p.dirichlet.begin(), {"symmetry", {0.0, std::nullopt, std::nullopt}});
+    pressed.dirichlet.insert(pressed.dirichlet.begin(), {"symmetry", {0.0, std::nullopt, std::nullopt}});
   if (slid) // held along x while pressed, then moved
-    p.dirichlet.push_back({"load", {0.0, std::nullopt, std::nullopt}});
+    pressed.dirichlet.push_back({"load", {0.0, std::nullopt, std::nullopt}});
   // The load face spans x in [0, Xc] (half model, which carries Q/2) or [-Xc, Xc].
   const double width = (mesh.full ? 2 : 1) * parameters.mesh.cylinder_width;
   const double modelled = mesh.full ? 1.0 : 0.5;
   const Eigen::Vector3d normal(0, -modelled * parameters.line_load / width, 0);
-  p.tractions = {{"load", normal}};
+  pressed.tractions = {{"load", normal}};
   const double thickness = parameters.mesh.thickness, radius = parameters.mesh.cylinder_radius;
-  if (pulled) // a second stage: the normal load held, the tangential one added
-    p.later_stages.push_back({{{"load", normal + Eigen::Vector3d(parameters.tangential_load / width, 0, 0)}},
-                              {},
-                              moment_free_couple(p.mesh, parameters.tangential_load * thickness, radius),
-                              p.dirichlet,
-                              1});
+  if (pulled) // a second step: the normal load held, the tangential one added
+  {
+    fem::Step pulling;
+    pulling.dirichlet = pressed.dirichlet;
+    pulling.tractions = {{"load", normal + Eigen::Vector3d(parameters.tangential_load / width, 0, 0)}};
+    pulling.nodal_forces = moment_free_couple(p.mesh, parameters.tangential_load * thickness, radius);
+    pulling.increments = 1;
+    p.steps.push_back(std::move(pulling));
+  }
   if (slid)
   {
-    std::vector<fem::DirichletCondition> moved = p.dirichlet;
-    moved.back() = {"load", {parameters.tangential_displacement, std::nullopt, std::nullopt}};
-    p.later_stages.push_back({{{"load", normal}},
-                              {},
-                              moment_free_couple(p.mesh, parameters.compared_tangential_load() * thickness, radius),
-                              std::move(moved),
-                              1});
+    fem::Step sliding;
+    sliding.dirichlet = pressed.dirichlet;
+    sliding.dirichlet.back() = {"load", {parameters.tangential_displacement, std::nullopt, std::nullopt}};
+    sliding.tractions = {{"load", normal}};
+    sliding.nodal_forces = moment_free_couple(p.mesh, parameters.compared_tangential_load() * thickness, radius);
+    sliding.increments = 1;
+    p.steps.push_back(std::move(sliding));
   }
   p.contacts = {{"cylinder_contact", "block_contact"}};
   p.validate();

@@ -272,14 +272,15 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
     p.mesh.add_node_set_from_faces(name, name);
 
   p.materials = {parameters.material, parameters.block()}; // bodies "sphere", "block"
-  p.dirichlet = {
+  fem::Step& pressed = p.steps.front();
+  pressed.dirichlet = {
       {"symmetry_y", {std::nullopt, 0.0, std::nullopt}},
       {"block_support", {0.0, 0.0, 0.0}},
   };
   if (!parameters.half_model())
-    p.dirichlet.insert(p.dirichlet.begin(), {"symmetry_x", {0.0, std::nullopt, std::nullopt}});
+    pressed.dirichlet.insert(pressed.dirichlet.begin(), {"symmetry_x", {0.0, std::nullopt, std::nullopt}});
   if (slid) // held along x while pressed, then moved
-    p.dirichlet.push_back({"sphere_load", {0.0, std::nullopt, std::nullopt}});
+    pressed.dirichlet.push_back({"sphere_load", {0.0, std::nullopt, std::nullopt}});
   // A downward traction on the sphere's far face with resultant F / 4 (F / 2): its area from
   // the consistent load of a unit traction, so the resultant is exact for the discrete face.
   const la::Vector weights = load_face_weights(p.mesh);
@@ -287,26 +288,29 @@ fem::Problem hertz3d_problem(const Hertz3dParameters& parameters)
   for (int32_t n = 0; n < p.mesh.n_nodes(); ++n)
     area += weights(3 * n + 2);
   const double normal = parameters.modelled() * parameters.load / area;
-  p.tractions = {{"sphere_load", Eigen::Vector3d(0, 0, -normal)}};
+  pressed.tractions = {{"sphere_load", Eigen::Vector3d(0, 0, -normal)}};
   if (slid)
   {
-    std::vector<fem::DirichletCondition> moved = p.dirichlet;
-    moved.back() = {"sphere_load", {parameters.tangential_displacement, std::nullopt, std::nullopt}};
-    p.later_stages.push_back(
-        {{{"sphere_load", Eigen::Vector3d(0, 0, -normal)}},
-         {},
-         moment_free_couple(p.mesh, weights,
-                            parameters.modelled() * parameters.friction_coefficient * parameters.load / area),
-         std::move(moved),
-         1});
+    fem::Step sliding;
+    sliding.dirichlet = pressed.dirichlet;
+    sliding.dirichlet.back() = {"sphere_load", {parameters.tangential_displacement, std::nullopt, std::nullopt}};
+    sliding.tractions = {{"sphere_load", Eigen::Vector3d(0, 0, -normal)}};
+    sliding.nodal_forces = moment_free_couple(
+        p.mesh, weights, parameters.modelled() * parameters.friction_coefficient * parameters.load / area);
+    sliding.increments = 1;
+    p.steps.push_back(std::move(sliding));
   }
-  else if (parameters.half_model()) // a second stage: the normal load held, the tangential one added
-    p.later_stages.push_back(
-        {{{"sphere_load", Eigen::Vector3d(parameters.modelled() * parameters.tangential_load / area, 0, -normal)}},
-         {},
-         moment_free_couple(p.mesh, weights, parameters.modelled() * parameters.tangential_load / area),
-         p.dirichlet,
-         1});
+  else if (parameters.half_model()) // a second step: the normal load held, the tangential one added
+  {
+    fem::Step pulling;
+    pulling.dirichlet = pressed.dirichlet;
+    pulling.tractions = {
+        {"sphere_load", Eigen::Vector3d(parameters.modelled() * parameters.tangential_load / area, 0, -normal)}};
+    pulling.nodal_forces =
+        moment_free_couple(p.mesh, weights, parameters.modelled() * parameters.tangential_load / area);
+    pulling.increments = 1;
+    p.steps.push_back(std::move(pulling));
+  }
   p.contacts = {{"sphere_contact", "block_contact"}};
   p.validate();
   return p;

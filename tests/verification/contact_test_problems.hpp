@@ -25,12 +25,12 @@ inline fem::Problem pressed_blocks(int n_lower, int n_upper, double gap, double 
   p.mesh = mesh::generate_box(lower);
   mesh::append_mesh(p.mesh, mesh::generate_box(upper), "upper_");
   p.materials.assign(2, fem::Material{2e11, 0.3});
-  p.dirichlet = {{"xmin", {0.0, std::nullopt, std::nullopt}},
-                 {"upper_xmin", {0.0, std::nullopt, std::nullopt}},
-                 {"ymin", {std::nullopt, 0.0, std::nullopt}},
-                 {"upper_ymin", {std::nullopt, 0.0, std::nullopt}},
-                 {"zmin", {std::nullopt, std::nullopt, 0.0}}};
-  p.tractions = {{"upper_zmax", Eigen::Vector3d(0, 0, -pressure)}};
+  p.steps.front().dirichlet = {{"xmin", {0.0, std::nullopt, std::nullopt}},
+                               {"upper_xmin", {0.0, std::nullopt, std::nullopt}},
+                               {"ymin", {std::nullopt, 0.0, std::nullopt}},
+                               {"upper_ymin", {std::nullopt, 0.0, std::nullopt}},
+                               {"zmin", {std::nullopt, std::nullopt, 0.0}}};
+  p.steps.front().tractions = {{"upper_zmax", Eigen::Vector3d(0, 0, -pressure)}};
   p.contacts = {{"upper_zmin", "zmax"}};
   p.validate();
   return p;

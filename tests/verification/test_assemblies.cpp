@@ -38,14 +38,14 @@ fem::Problem stacked_cubes(const std::vector<int>& cells, double pressure)
       p.mesh = mesh::generate_box(box);
     else
       mesh::append_mesh(p.mesh, mesh::generate_box(box), prefix);
-    p.dirichlet.push_back({prefix + "xmin", {0.0, std::nullopt, std::nullopt}});
-    p.dirichlet.push_back({prefix + "ymin", {std::nullopt, 0.0, std::nullopt}});
+    p.steps.front().dirichlet.push_back({prefix + "xmin", {0.0, std::nullopt, std::nullopt}});
+    p.steps.front().dirichlet.push_back({prefix + "ymin", {std::nullopt, 0.0, std::nullopt}});
     if (k > 0)
       p.contacts.push_back({prefix + "zmin", (k == 1 ? std::string() : "body" + std::to_string(k - 1) + "_") + "zmax"});
   }
-  p.dirichlet.push_back({"zmin", {std::nullopt, std::nullopt, 0.0}});
+  p.steps.front().dirichlet.push_back({"zmin", {std::nullopt, std::nullopt, 0.0}});
   const std::string top = cells.size() == 1 ? "zmax" : "body" + std::to_string(cells.size() - 1) + "_zmax";
-  p.tractions = {{top, Eigen::Vector3d(0, 0, -pressure)}};
+  p.steps.front().tractions = {{top, Eigen::Vector3d(0, 0, -pressure)}};
   p.materials.assign(cells.size(), fem::Material{young, 0.3});
   p.validate();
   return p;

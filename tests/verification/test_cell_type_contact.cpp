@@ -50,12 +50,12 @@ fem::Problem pressed_blocks(const PatchCase& c)
   p.name = "pressed blocks";
   p.mesh = c.kind == CellKind::hex8 ? hex : mesh::convert_hex8_mesh(hex, c.kind);
   p.materials.assign(2, fem::Material{2e11, 0.3});
-  p.dirichlet = {{"zmin", {std::nullopt, std::nullopt, 0.0}},
-                 {"xmin", {0.0, std::nullopt, std::nullopt}},
-                 {"ymin", {std::nullopt, 0.0, std::nullopt}},
-                 {"upper_xmin", {0.0, std::nullopt, std::nullopt}},
-                 {"upper_ymin", {std::nullopt, 0.0, std::nullopt}}};
-  p.tractions = {{"upper_zmax", Eigen::Vector3d(0, 0, -pressure)}};
+  p.steps.front().dirichlet = {{"zmin", {std::nullopt, std::nullopt, 0.0}},
+                               {"xmin", {0.0, std::nullopt, std::nullopt}},
+                               {"ymin", {std::nullopt, 0.0, std::nullopt}},
+                               {"upper_xmin", {0.0, std::nullopt, std::nullopt}},
+                               {"upper_ymin", {std::nullopt, 0.0, std::nullopt}}};
+  p.steps.front().tractions = {{"upper_zmax", Eigen::Vector3d(0, 0, -pressure)}};
   p.contacts = {{"upper_zmin", "zmax"}};
   p.validate();
   return p;

@@ -159,8 +159,8 @@ TEST(ContactBlocks, DualSolutionSatisfiesKktConditions)
 TEST(ContactBlocks, SeparatedBodiesCarryNoContactForce)
 {
   fem::Problem problem = test::pressed_blocks(2, 3, 1e-3, 0.0);
-  problem.dirichlet = {{"zmin", {0.0, 0.0, 0.0}}, {"upper_zmax", {0.0, 0.0, 0.0}}};
-  problem.tractions = {{"upper_xmax", Eigen::Vector3d(0, 0, -1e6)}};
+  problem.steps.front().dirichlet = {{"zmin", {0.0, 0.0, 0.0}}, {"upper_zmax", {0.0, 0.0, 0.0}}};
+  problem.steps.front().tractions = {{"upper_xmax", Eigen::Vector3d(0, 0, -1e6)}};
   TimerTable timers;
   const auto solution = nonlinear::solve_feti_contact(problem, settings(dual::DualMethod::smalbe, 4), timers);
   ASSERT_TRUE(solution.converged) << solution.reason;

@@ -47,14 +47,14 @@ fem::Problem sheared_blocks(double q, double drag, bool plane_strain = true)
   mesh::append_mesh(p.mesh, mesh::generate_box(upper), "upper_");
   p.materials.assign(2, fem::Material{2e11, 0.3});
   p.eliminated = {false, plane_strain, false};
-  p.dirichlet = {{"zmin", {0.0, plane_strain ? std::nullopt : std::optional<double>(0.0), 0.0}}};
+  p.steps.front().dirichlet = {{"zmin", {0.0, plane_strain ? std::nullopt : std::optional<double>(0.0), 0.0}}};
   // Dragged in 3D, the top face is held in y too: a block sliding at every node is held across
   // the slip by no row that primal recovery sees (the slip's component normal to the friction
   // force vanishes, a constraint the disc rows do not state; docs/friction.md).
   if (drag > 0)
-    p.dirichlet.push_back(
+    p.steps.front().dirichlet.push_back(
         {"upper_zmax", {drag, plane_strain ? std::nullopt : std::optional<double>(0.0), std::nullopt}});
-  p.tractions = {{"upper_zmax", Eigen::Vector3d(drag > 0 ? 0.0 : q, 0, -pressure)}};
+  p.steps.front().tractions = {{"upper_zmax", Eigen::Vector3d(drag > 0 ? 0.0 : q, 0, -pressure)}};
   p.contacts = {{"upper_zmin", "zmax"}};
   p.validate();
   return p;
@@ -241,7 +241,7 @@ TEST(FrictionBlocks, BlockOnAnInclinedPlaneSticksOrSlidesByMuAgainstTanAlpha)
     const Eigen::Matrix3d R = Eigen::AngleAxisd(alpha, Eigen::Vector3d::UnitY()).toRotationMatrix();
     for (la::Index n = 0; n < problem.mesh.nodes.rows(); ++n)
       problem.mesh.nodes.row(n) = (R * problem.mesh.nodes.row(n).transpose()).transpose();
-    problem.tractions = {{"upper_zmax", Eigen::Vector3d(0, 0, -pressure)}};
+    problem.steps.front().tractions = {{"upper_zmax", Eigen::Vector3d(0, 0, -pressure)}};
     const auto s = settings(nonlinear::FrictionModel::coulomb, mu);
     TimerTable timers;
     if (std::tan(alpha) < mu)

@@ -47,10 +47,10 @@ fem::Problem tied_blocks(double traction)
 {
   fem::Problem p = test::pressed_blocks(4, 4, gap, 0.0);
   p.name = "tied blocks";
-  p.dirichlet = {{"zmin", {0.0, 0.0, 0.0}},
-                 {"upper_ymin", {std::nullopt, 0.0, std::nullopt}},
-                 {"upper_zmax", {std::nullopt, std::nullopt, 0.0}}};
-  p.tractions = {{"upper_xmax", Eigen::Vector3d(traction, 0, 0)}};
+  p.steps.front().dirichlet = {{"zmin", {0.0, 0.0, 0.0}},
+                               {"upper_ymin", {std::nullopt, 0.0, std::nullopt}},
+                               {"upper_zmax", {std::nullopt, std::nullopt, 0.0}}};
+  p.steps.front().tractions = {{"upper_xmax", Eigen::Vector3d(traction, 0, 0)}};
   return p;
 }
 
@@ -270,7 +270,7 @@ TEST(LinearEquations, ThreeTermsWithCoefficientsMatchElimination)
 TEST(LinearEquations, LargeDisplacementsAndRestartKeepTheRows)
 {
   fem::Problem problem = three_terms();
-  problem.tractions[0].traction *= 20; // strains of about 1e-3 at the ties
+  problem.steps.front().tractions[0].traction *= 20; // strains of about 1e-3 at the ties
   nonlinear::SolverSettings s = feti_settings(4, nonlinear::Partitioner::structured);
   s.kinematics = fem::Kinematics::total_lagrangian;
   s.load_steps = 2;

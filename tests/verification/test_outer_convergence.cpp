@@ -34,8 +34,8 @@ nonlinear::SolverSettings large_displacements()
 TEST(OuterConvergence, UnloadedBodiesStayPutAndConverge)
 {
   fem::Problem problem = test::pressed_blocks(2, 3, 0.0, 0.0);
-  problem.tractions.clear();
-  problem.dirichlet.push_back({"upper_zmax", {std::nullopt, std::nullopt, 0.0}});
+  problem.steps.front().tractions.clear();
+  problem.steps.front().dirichlet.push_back({"upper_zmax", {std::nullopt, std::nullopt, 0.0}});
   TimerTable timers;
   const nonlinear::ContactSolution solution = nonlinear::solve_feti_contact(problem, large_displacements(), timers);
   ASSERT_TRUE(solution.converged) << solution.reason;

@@ -17,6 +17,16 @@ using namespace feticon;
 
 namespace
 {
+/// A later stage with traction (p, 0, 0) on xmax and the supports of box_problem with u_z = d.
+fem::Step box_stage(double p, double d, int increments)
+{
+  fem::Step stage;
+  stage.tractions = {{"xmax", Eigen::Vector3d(p, 0, 0)}};
+  stage.dirichlet = {{"xmin", {0.0, std::nullopt, std::nullopt}}, {"zmax", {std::nullopt, std::nullopt, d}}};
+  stage.increments = increments;
+  return stage;
+}
+
 /// The unit cube in 2x2x2 cells, u_x = 0 on xmin, u_z = d on zmax, traction (p, 0, 0) on xmax.
 fem::Problem box_problem(double p, double d)
 {
@@ -26,20 +36,17 @@ fem::Problem box_problem(double p, double d)
   box.nx = box.ny = box.nz = 2;
   problem.mesh = mesh::generate_box(box);
   problem.materials = {fem::Material{2e11, 0.3}};
-  problem.dirichlet = {{"xmin", {0.0, std::nullopt, std::nullopt}}, {"zmax", {std::nullopt, std::nullopt, d}}};
-  problem.tractions = {{"xmax", Eigen::Vector3d(p, 0, 0)}};
+  problem.steps.front() = box_stage(p, d, 0);
+  problem.steps.front().increments.reset(); // the history's default steps
   problem.validate();
   return problem;
 }
 
-/// A later stage with traction (p, 0, 0) on xmax and the supports of box_problem with u_z = d.
-fem::LoadStage box_stage(double p, double d, int increments)
+/// The problem's first step followed by `later`.
+void set_later(fem::Problem& problem, std::vector<fem::Step> later)
 {
-  fem::LoadStage stage;
-  stage.tractions = {{"xmax", Eigen::Vector3d(p, 0, 0)}};
-  stage.dirichlet = {{"xmin", {0.0, std::nullopt, std::nullopt}}, {"zmax", {std::nullopt, std::nullopt, d}}};
-  stage.increments = increments;
-  return stage;
+  problem.steps.resize(1);
+  problem.steps.insert(problem.steps.end(), later.begin(), later.end());
 }
 
 double total_x(const la::Vector& f) { return f(Eigen::seq(0, Eigen::last, 3)).sum(); }
@@ -86,7 +93,7 @@ TEST(LoadHistory, OneStageIsTTimesTheLoadBitForBit)
     fem::ConstrainedDofs target = constrained;
     target.values *= t;
     EXPECT_TRUE(identical(history.prescribed_values(n), target.values)) << "step " << n;
-    EXPECT_TRUE(identical(history.interpolate(n, {2 * f}), t * (2 * f)));
+    EXPECT_TRUE(identical(history.combine(n, {2 * f}), t * (2 * f)));
   }
   EXPECT_THROW(history.point(0), Error);
   EXPECT_THROW(history.point(N + 1), Error);
@@ -99,7 +106,7 @@ TEST(LoadHistory, OneStageIsTTimesTheLoadBitForBit)
 TEST(LoadHistory, PiecewiseLinearThroughTheStageEnds)
 {
   fem::Problem problem = box_problem(1e6, 1e-3);
-  problem.later_stages = {box_stage(3e6, -1e-3, 4), box_stage(0, 0, 1)};
+  set_later(problem, {box_stage(3e6, -1e-3, 4), box_stage(0, 0, 1)});
   const fem::LoadHistory history(problem, 2);
   ASSERT_EQ(history.n_stages(), 3);
   ASSERT_EQ(history.n_steps(), 7);
@@ -129,11 +136,10 @@ TEST(LoadHistory, PiecewiseLinearThroughTheStageEnds)
   // Exactly the stage ends at the last step of each stage.
   for (int s = 1; s <= 3; ++s)
   {
-    EXPECT_TRUE(identical(history.external_force(history.last_step(s)), history.stage_end(s).force));
-    EXPECT_TRUE(identical(history.prescribed_values(history.last_step(s)), history.stage_end(s).values));
+    EXPECT_TRUE(identical(history.external_force(history.last_step(s)), problem.external_force(s - 1)));
+    EXPECT_TRUE(identical(history.prescribed_values(history.last_step(s)), problem.all_constrained_dofs(s - 1).values));
   }
-  EXPECT_TRUE(identical(history.stage_end(1).force, problem.external_force()));
-  EXPECT_NEAR(total_x(history.stage_end(2).force), 3e6, 1e-9 * 3e6);
+  EXPECT_NEAR(total_x(problem.external_force(1)), 3e6, 1e-9 * 3e6);
 }
 
 // Reference: SolverSettings::load_history with small displacements: one load step per stage,
@@ -141,13 +147,13 @@ TEST(LoadHistory, PiecewiseLinearThroughTheStageEnds)
 TEST(LoadHistory, OneStepPerStage)
 {
   fem::Problem problem = box_problem(1e6, 1e-3);
-  problem.later_stages = {box_stage(3e6, -1e-3, 4), box_stage(0, 0, 5)};
+  set_later(problem, {box_stage(3e6, -1e-3, 4), box_stage(0, 0, 5)});
   const fem::LoadHistory history(problem, 1, true);
   ASSERT_EQ(history.n_steps(), 3);
   for (int n = 1; n <= 3; ++n)
   {
     EXPECT_EQ(history.load_factor(n), n);
-    EXPECT_TRUE(identical(history.external_force(n), history.stage_end(n).force));
+    EXPECT_TRUE(identical(history.external_force(n), problem.external_force(n - 1)));
   }
 }
 
@@ -156,17 +162,17 @@ TEST(LoadHistory, OneStepPerStage)
 TEST(LoadHistory, EliminatedComponentsBelongToEveryStage)
 {
   fem::Problem problem = box_problem(1e6, 0.0);
-  problem.dirichlet = {{"xmin", {0.0, std::nullopt, std::nullopt}}};
+  problem.steps.front().dirichlet = {{"xmin", {0.0, std::nullopt, std::nullopt}}};
   problem.eliminated = {false, false, true};
-  fem::LoadStage stage = box_stage(2e6, 0, 1);
+  fem::Step stage = box_stage(2e6, 0, 1);
   stage.dirichlet = {{"xmin", {-1e-3, std::nullopt, std::nullopt}}};
-  problem.later_stages = {stage};
+  set_later(problem, {stage});
   const fem::LoadHistory history(problem, 1);
   EXPECT_EQ(history.dofs(), problem.all_constrained_dofs().dofs);
   const la::Vector values = history.prescribed_values(2);
   for (size_t k = 0; k < history.dofs().size(); ++k)
     EXPECT_EQ(values(static_cast<la::Index>(k)), history.dofs()[k] % 3 == 0 ? -1e-3 : 0.0);
-  EXPECT_EQ(history.stage_end(2).force(3 * 26 + 2), 0.0); // eliminated components carry no force
+  EXPECT_EQ(history.external_force(2)(3 * 26 + 2), 0.0); // eliminated components carry no force
 }
 
 // Reference: the brief's rule: the DOF set is stage 1's; a later stage that adds or drops a
@@ -174,28 +180,28 @@ TEST(LoadHistory, EliminatedComponentsBelongToEveryStage)
 TEST(LoadHistory, ALaterStageMayNotChangeThePrescribedSet)
 {
   fem::Problem problem = box_problem(1e6, 1e-3);
-  fem::LoadStage added = box_stage(1e6, 1e-3, 1);
+  fem::Step added = box_stage(1e6, 1e-3, 1);
   added.dirichlet.push_back({"ymin", {std::nullopt, 0.0, std::nullopt}});
-  problem.later_stages = {box_stage(2e6, 0, 1), added};
+  set_later(problem, {box_stage(2e6, 0, 1), added});
   std::string message = error_of(problem);
   std::printf("%s\n", message.c_str());
-  EXPECT_NE(message.find("load stage 3 prescribes u_y"), std::string::npos) << message;
+  EXPECT_NE(message.find("step 3 prescribes u_y"), std::string::npos) << message;
   EXPECT_NE(message.find("'ymin'"), std::string::npos) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 
-  fem::LoadStage omitted = box_stage(1e6, 1e-3, 1);
+  fem::Step omitted = box_stage(1e6, 1e-3, 1);
   omitted.dirichlet.pop_back(); // drops zmax's u_z
-  problem.later_stages = {omitted};
+  set_later(problem, {omitted});
   message = error_of(problem);
   std::printf("%s\n", message.c_str());
-  EXPECT_NE(message.find("load stage 2 leaves u_z"), std::string::npos) << message;
+  EXPECT_NE(message.find("step 2 leaves u_z"), std::string::npos) << message;
   EXPECT_NE(message.find("'zmax'"), std::string::npos) << message;
 
-  fem::LoadStage other_component = box_stage(1e6, 1e-3, 1);
+  fem::Step other_component = box_stage(1e6, 1e-3, 1);
   other_component.dirichlet[1].value = {std::nullopt, 1e-3, std::nullopt}; // u_y on zmax instead of u_z
-  problem.later_stages = {other_component};
+  set_later(problem, {other_component});
   message = error_of(problem);
-  EXPECT_NE(message.find("load stage 2 prescribes u_y"), std::string::npos) << message;
+  EXPECT_NE(message.find("step 2 prescribes u_y"), std::string::npos) << message;
   EXPECT_NE(message.find("'zmax'"), std::string::npos) << message;
 }
 
@@ -203,41 +209,40 @@ TEST(LoadHistory, ALaterStageMayNotChangeThePrescribedSet)
 TEST(LoadHistory, BadStagesAreErrorsNamingTheStage)
 {
   fem::Problem problem = box_problem(1e6, 1e-3);
-  fem::LoadStage stage = box_stage(1e6, 1e-3, 0);
-  problem.later_stages = {stage};
-  EXPECT_NE(error_of(problem).find("load stage 2 has 0 increments"), std::string::npos) << error_of(problem);
+  fem::Step stage = box_stage(1e6, 1e-3, 0);
+  set_later(problem, {stage});
+  EXPECT_NE(error_of(problem).find("step 2: the step has 0 increments"), std::string::npos) << error_of(problem);
 
   stage = box_stage(1e6, 1e-3, 1);
   stage.tractions[0].set = "no_such_set";
-  problem.later_stages = {stage};
-  EXPECT_NE(error_of(problem).find("load stage 2: "), std::string::npos) << error_of(problem);
+  set_later(problem, {stage});
+  EXPECT_NE(error_of(problem).find("step 2: "), std::string::npos) << error_of(problem);
   EXPECT_NE(error_of(problem).find("no_such_set"), std::string::npos) << error_of(problem);
 
   stage = box_stage(1e6, 1e-3, 1);
   stage.nodal_forces = {{1000, 0, 1.0}};
-  problem.later_stages = {stage};
-  EXPECT_NE(error_of(problem).find("load stage 2: the nodal force on node 1000"), std::string::npos)
-      << error_of(problem);
+  set_later(problem, {stage});
+  EXPECT_NE(error_of(problem).find("step 2: nodal force on node 1000"), std::string::npos) << error_of(problem);
 
   stage = box_stage(1e6, 1e-3, 1);
   stage.dirichlet.push_back({"zmax", {std::nullopt, std::nullopt, 2e-3}}); // two values for one DOF
-  problem.later_stages = {stage};
-  EXPECT_NE(error_of(problem).find("load stage 2: "), std::string::npos) << error_of(problem);
+  set_later(problem, {stage});
+  EXPECT_NE(error_of(problem).find("step 2: "), std::string::npos) << error_of(problem);
 
   EXPECT_THROW(fem::LoadHistory(problem.all_constrained_dofs().dofs, {}), Error);
   EXPECT_THROW(fem::LoadHistory({}, {{la::Vector::Zero(3), la::Vector::Zero(1), 1}}), Error);
 }
 
 // Reference: a quantity in another layout (here scaled by 2) follows the same rule.
-TEST(LoadHistory, InterpolatesAnyQuantityGivenAtTheStageEnds)
+TEST(LoadHistory, CombinesAnyQuantityGivenPerTerm)
 {
   fem::Problem problem = box_problem(1e6, 1e-3);
-  problem.later_stages = {box_stage(3e6, -1e-3, 4)};
+  set_later(problem, {box_stage(3e6, -1e-3, 4)});
   const fem::LoadHistory history(problem, 2);
-  const std::vector<la::Vector> ends = {2 * history.stage_end(1).force, 2 * history.stage_end(2).force};
+  const std::vector<la::Vector> terms = {2 * history.terms()[0].force, 2 * history.terms()[1].force};
   for (int n = 1; n <= history.n_steps(); ++n)
-    EXPECT_LE((history.interpolate(n, ends) - 2 * history.external_force(n)).norm(), 1e-15 * ends[1].norm());
-  EXPECT_THROW(history.interpolate(1, {ends[0]}), Error);
+    EXPECT_LE((history.combine(n, terms) - 2 * history.external_force(n)).norm(), 1e-15 * terms[1].norm());
+  EXPECT_THROW(history.combine(1, {terms[0]}), Error);
 }
 
 // Reference: the rule of the file comment with a step split at the midpoint of the fractions
@@ -247,7 +252,7 @@ TEST(LoadHistory, InterpolatesAnyQuantityGivenAtTheStageEnds)
 TEST(LoadHistory, SplitHalvesAStepsIncrement)
 {
   fem::Problem problem = box_problem(1e6, 1e-3);
-  problem.later_stages = {box_stage(3e6, -1e-3, 4)};
+  set_later(problem, {box_stage(3e6, -1e-3, 4)});
   fem::LoadHistory history(problem, 2);
   const fem::LoadHistory unsplit = history;
   history.split(2);
@@ -257,8 +262,8 @@ TEST(LoadHistory, SplitHalvesAStepsIncrement)
   const std::vector<double> t = {0.5, 0.75, 1.0, 1.125, 1.25, 1.5, 1.75, 2.0};
   for (int n = 1; n <= history.n_steps(); ++n)
     EXPECT_DOUBLE_EQ(history.load_factor(n), t[n - 1]) << "step " << n;
-  const la::Vector& f1 = history.stage_end(1).force;
-  const la::Vector& f2 = history.stage_end(2).force;
+  const la::Vector f1 = problem.external_force(0);
+  const la::Vector f2 = problem.external_force(1);
   EXPECT_TRUE(identical(history.external_force(2), 0.75 * f1));
   EXPECT_LE((history.external_force(4) - (0.875 * f1 + 0.125 * f2)).norm(), 1e-15 * f2.norm());
   EXPECT_DOUBLE_EQ(history.prescribed(4).values.maxCoeff(), 0.875e-3 - 0.125e-3);
@@ -283,4 +288,83 @@ TEST(LoadHistory, FollowReproducesTheSplitsOfACutBackRun)
   fem::LoadHistory other(problem, 1);
   other.follow({1.0 / 3});
   EXPECT_NE(other.load_factor(1), 1.0 / 3);
+}
+
+// Reference: the rule of the file comment by hand. Step 1 (time 2, 4 increments): the traction
+// follows amplitude A at the step time, a = (0, 0), (1, 1), (2, -1) at 0.5, 1, 1.5, 2 gives
+// 0.5, 1, 0, -1 (unloading and reversal); u_z on zmax ramps to 1e-3. Step 2 (time 1, 2
+// increments): amplitude B at the total time, (2, 0), (3, 3) at 2.5 and 3 gives 1.5 and 3;
+// u_z ramps from 1e-3 to -1e-3. Step 3 (AMPLITUDE=STEP, 2 increments): 2e6 Pa and u_z = 5e-4
+// from its first increment on.
+TEST(LoadHistory, AmplitudesAndStepLoadsByHand)
+{
+  fem::Problem problem = box_problem(1e6, 1e-3);
+  problem.amplitudes["A"] = {{{0.0, 0.0}, {1.0, 1.0}, {2.0, -1.0}}};
+  problem.amplitudes["B"] = {{{2.0, 0.0}, {3.0, 3.0}}, true};
+  problem.steps.front().tractions[0].amplitude = "A";
+  problem.steps.front().time = 2;
+  problem.steps.front().increments = 4;
+  fem::Step second = box_stage(1e6, -1e-3, 2);
+  second.tractions[0].amplitude = "B";
+  fem::Step third = box_stage(2e6, 5e-4, 2);
+  third.ramp = false;
+  set_later(problem, {second, third});
+  const fem::LoadHistory history(problem, 1, true); // amplitudes keep their increments
+  ASSERT_EQ(history.n_steps(), 4 + 2 + 1);          // step 3 has none: one load step
+  EXPECT_TRUE(history.has_amplitudes());
+  const std::vector<double> time = {0.5, 1, 1.5, 2, 2.5, 3, 4};
+  const std::vector<double> p = {0.5e6, 1e6, 0, -1e6, 1.5e6, 3e6, 2e6};
+  const std::vector<double> d = {0.25e-3, 0.5e-3, 0.75e-3, 1e-3, 0, -1e-3, 5e-4};
+  for (int n = 1; n <= history.n_steps(); ++n)
+  {
+    SCOPED_TRACE("load step " + std::to_string(n));
+    EXPECT_DOUBLE_EQ(history.point(n).time, time[n - 1]);
+    EXPECT_NEAR(total_x(history.external_force(n)), p[n - 1], 1e-9 * 3e6);
+    EXPECT_NEAR(history.external_force_norm(n), history.external_force(n).norm(), 1e-15 * 3e6);
+    const la::Vector values = history.prescribed_values(n);
+    for (size_t k = 0; k < history.dofs().size(); ++k)
+      EXPECT_NEAR(values(static_cast<la::Index>(k)), history.dofs()[k] % 3 == 2 ? d[n - 1] : 0.0, 1e-18);
+  }
+  // Without one_step_per_stage the STEP stage takes its 2 increments, both at its values.
+  const fem::LoadHistory every(problem, 1);
+  ASSERT_EQ(every.n_steps(), 8);
+  EXPECT_NEAR(total_x(every.external_force(7)), 2e6, 1e-9 * 2e6);
+  EXPECT_TRUE(identical(every.external_force(7), every.external_force(8)));
+}
+
+// Reference: an amplitude table by hand (CalculiX: linear between points, the end values
+// beyond them; SHIFTX moves the table in time, SHIFTY adds to the values), and the bad
+// tables of issue 65 item 8.
+TEST(LoadHistory, AmplitudeTableAndItsErrors)
+{
+  fem::Amplitude a{{{1.0, 2.0}, {3.0, 6.0}, {3.0, 0.0}, {4.0, 1.0}}};
+  EXPECT_EQ(a.value(0.0), 2.0);
+  EXPECT_EQ(a.value(2.0), 4.0);
+  EXPECT_EQ(a.value(3.5), 0.5); // after the jump at t = 3
+  EXPECT_EQ(a.value(9.0), 1.0);
+  a.shift_x = 1;
+  a.shift_y = 10;
+  EXPECT_EQ(a.value(3.0), 14.0);
+  EXPECT_NO_THROW(a.check());
+  a.where = "deck.inp:7: *AMPLITUDE R";
+  fem::Amplitude one = a;
+  one.points.resize(1);
+  EXPECT_THROW(one.check(), Error);
+  fem::Amplitude decreasing = a;
+  decreasing.points[2].first = 2.0;
+  try
+  {
+    decreasing.check();
+    ADD_FAILURE() << "decreasing times accepted";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("deck.inp:7: *AMPLITUDE R: the amplitude's times decrease at point 3"),
+              std::string::npos)
+        << e.what();
+  }
+  fem::Problem problem = box_problem(1e6, 1e-3);
+  problem.steps.front().tractions[0].amplitude = "NONE";
+  EXPECT_NE(error_of(problem).find("names amplitude 'NONE', which is not defined"), std::string::npos)
+      << error_of(problem);
 }

@@ -39,11 +39,12 @@ fem::Problem punch_problem(bool punch_supported_in_y)
   mesh::append_mesh(p.mesh, mesh::generate_box(punch), "punch_");
   p.materials = {{2e11, 0.3}, {1e11, 0.25}};
   p.eliminated = {false, false, true};
-  p.dirichlet = {{"base_ymin", {0.0, 0.0, std::nullopt}}, {"punch_xmin", {0.0, std::nullopt, std::nullopt}}};
+  p.steps.front().dirichlet = {{"base_ymin", {0.0, 0.0, std::nullopt}},
+                               {"punch_xmin", {0.0, std::nullopt, std::nullopt}}};
   if (punch_supported_in_y)
-    p.dirichlet.push_back({"punch_ymax", {std::nullopt, -1e-4, std::nullopt}});
+    p.steps.front().dirichlet.push_back({"punch_ymax", {std::nullopt, -1e-4, std::nullopt}});
   else
-    p.tractions = {{"punch_ymax", Eigen::Vector3d(0, -1e8, 0)}};
+    p.steps.front().tractions = {{"punch_ymax", Eigen::Vector3d(0, -1e8, 0)}};
   p.contacts = {{"punch_ymin", "base_ymax"}};
   p.validate();
   return p;

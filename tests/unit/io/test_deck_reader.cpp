@@ -48,10 +48,10 @@ fem::Problem punch_problem()
           {.origin = {0, 0, 0}, .lengths = {0.5, 0.5, 0.4}, .nx = 3, .ny = 3, .nz = 2, .body_name = "punch"}),
       "punch_");
   p.materials = {{2e11, 0.3}, {1e11, 0.25}};
-  p.dirichlet = {{"base_ymin", {0.0, 0.0, 0.0}},
-                 {"punch_xmin", {0.0, std::nullopt, std::nullopt}},
-                 {"punch_ymax", {std::nullopt, -1e-4, std::nullopt}}};
-  p.tractions = {{"punch_ymax", {0.0, -1e7, 0.0}}};
+  p.steps.front().dirichlet = {{"base_ymin", {0.0, 0.0, 0.0}},
+                               {"punch_xmin", {0.0, std::nullopt, std::nullopt}},
+                               {"punch_ymax", {std::nullopt, -1e-4, std::nullopt}}};
+  p.steps.front().tractions = {{"punch_ymax", {0.0, -1e7, 0.0}}};
   p.contacts = {{"punch_ymin", "base_ymax"}};
   return p;
 }
@@ -348,7 +348,8 @@ TEST(DeckReader, PlaneStrainDeckEliminatesUz)
 {
   fem::Problem p = punch_problem();
   p.eliminated = {false, false, true};
-  p.dirichlet = {{"base_ymin", {0.0, 0.0, std::nullopt}}, {"punch_xmin", {0.0, std::nullopt, std::nullopt}}};
+  p.steps.front().dirichlet = {{"base_ymin", {0.0, 0.0, std::nullopt}},
+                               {"punch_xmin", {0.0, std::nullopt, std::nullopt}}};
   CalculixOptions options;
   options.overclosure = 0;
   const auto dir = test::fresh_directory("deck_plane_strain");
@@ -400,8 +401,8 @@ TEST(DeckReader, KeywordsSetsSurfacesAndSteps)
   EXPECT_NEAR(f(3 * 14 + 2), -10.0 - 0.25e6, 1e-6); // node 17: its force and a quarter of the pressure
   EXPECT_NEAR(f.sum(), -10.0 - 1e6, 1e-6);
   // Step 2: OP=NEW replaced the force, the pressure doubled, the top moved 1 mm.
-  ASSERT_EQ(p.later_stages.size(), 1u);
-  const fem::LoadStage& s = p.later_stages[0];
+  ASSERT_EQ(p.steps.size(), 2u);
+  const fem::Step& s = p.steps[1];
   ASSERT_EQ(s.nodal_forces.size(), 1u);
   EXPECT_EQ(s.nodal_forces[0].node, 15);
   EXPECT_EQ(s.nodal_forces[0].value, -20.0);
@@ -411,6 +412,47 @@ TEST(DeckReader, KeywordsSetsSurfacesAndSteps)
   for (const fem::DirichletCondition& d : s.dirichlet)
     moved += d.value[0] && *d.value[0] == 1e-3 ? static_cast<int>(p.mesh.node_set(d.set).size()) : 0;
   EXPECT_EQ(moved, 4);
+}
+
+// Amplitudes (issue 65, item 2): the *AMPLITUDE table with its parameters, AMPLITUDE= on the
+// loads and supports of a step, and *STEP, AMPLITUDE=STEP. Reference: the deck's own numbers.
+TEST(DeckReader, AmplitudesOnLoadsAndSteps)
+{
+  const auto dir = test::fresh_directory("deck_amplitudes");
+  std::string text = two_cubes;
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  replace("*STEP, NLGEOM",
+          "*AMPLITUDE, NAME=updown, TIME=TOTAL TIME, SHIFTX=0.5\n0, 0, 0.5, 1,\n1, 0.4\n"
+          "*STEP, NLGEOM");
+  replace("*DLOAD\n2, P2, 1e6", "*DLOAD, AMPLITUDE=updown\n2, P2, 1e6");
+  replace("*DLOAD\n2, P2, 2e6", "*DLOAD, AMPLITUDE=UPDOWN\n2, P2, 2e6");
+  replace("*STEP\n*STATIC\n*CLOAD", "*STEP, AMPLITUDE=STEP\n*STATIC\n*CLOAD");
+  replace("top, 1, 2, 1e-3", "*BOUNDARY, AMPLITUDE=UPDOWN\ntop, 1, 1, 1e-3");
+  const fem::Problem p = read_deck(write(dir, "two_cubes.inp", text)).problem;
+  ASSERT_EQ(p.amplitudes.count("UPDOWN"), 1u);
+  const fem::Amplitude& a = p.amplitudes.at("UPDOWN");
+  EXPECT_EQ(a.points, (std::vector<std::pair<double, double>>{{0, 0}, {0.5, 1}, {1, 0.4}}));
+  EXPECT_TRUE(a.total_time);
+  EXPECT_EQ(a.shift_x, 0.5);
+  ASSERT_EQ(p.steps.size(), 2u);
+  EXPECT_TRUE(p.steps[0].ramp);
+  EXPECT_FALSE(p.steps[1].ramp);
+  for (const fem::Step& step : p.steps)
+  {
+    ASSERT_EQ(step.pressures.size(), 1u);
+    EXPECT_EQ(step.pressures[0].amplitude, "UPDOWN");
+    EXPECT_EQ(step.nodal_forces[0].amplitude, "");
+  }
+  int with_amplitude = 0;
+  for (const fem::DirichletCondition& d : p.steps[1].dirichlet)
+    if (d.amplitude == "UPDOWN")
+      with_amplitude += static_cast<int>(p.mesh.node_set(d.set).size());
+  EXPECT_EQ(with_amplitude, 4); // u_x of the four top nodes; their u_y keeps no amplitude
+  EXPECT_EQ(p.steps[1].time, 1.0);
 }
 
 TEST(DeckReader, IncludeContinuationAndNodeSurface)
@@ -483,6 +525,22 @@ TEST(DeckReader, MalformedDecksEndInOneLineNamingFileAndLine)
       {"*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL", "*SOLID SECTION, ELSET=EALL, MATERIAL=IRON",
        "*SOLID SECTION: no material 'IRON'"},
       {"bottom, 1, 3", "bottom, 1, 9", "are not within 1 to 6"},
+      {"*STEP, NLGEOM", "*AMPLITUDE, NAME=A\n0, 0\n*STEP, NLGEOM",
+       "two_cubes.inp:52: *AMPLITUDE A: an amplitude needs at least two (time, value) points, it has 1"},
+      {"*STEP, NLGEOM", "*AMPLITUDE, NAME=A\n1, 0, 0.5, 1\n*STEP, NLGEOM",
+       "two_cubes.inp:52: *AMPLITUDE A: the amplitude's times decrease at point 2 (0.5 after 1)"},
+      {"*STEP, NLGEOM", "*AMPLITUDE, NAME=A\n0, 0, 1\n*STEP, NLGEOM",
+       "two_cubes.inp:53: *AMPLITUDE: an *AMPLITUDE line holds (time, value) pairs"},
+      {"*STEP, NLGEOM", "*AMPLITUDE, NAME=A, TIME=WALL\n0, 0, 1, 1\n*STEP, NLGEOM",
+       "TIME=WALL must be TOTAL TIME or STEP TIME"},
+      {"*STEP, NLGEOM", "*AMPLITUDE, NAME=A, DEFINITION=SMOOTH STEP\n0, 0, 1, 1\n*STEP, NLGEOM",
+       "DEFINITION=SMOOTH STEP is not implemented by feticon (TABULAR)"},
+      {"*CLOAD\n17, 3, -10.0", "*CLOAD, AMPLITUDE=NOPE\n17, 3, -10.0",
+       "two_cubes.inp:59: *CLOAD: AMPLITUDE=NOPE is not defined by any *AMPLITUDE"},
+      {"*STEP, NLGEOM", "*STEP, NLGEOM, AMPLITUDE=SINE",
+       "two_cubes.inp:52: *STEP: AMPLITUDE=SINE must be RAMP or STEP"},
+      {"*DLOAD\n2, P2, 1e6", "*DLOAD, AMPLITUDE=A\n2, P2, 1e6\n*AMPLITUDE, NAME=A\n0, 0, 1, 1",
+       "the *DLOAD on element 2, face 2 has no amplitude, in the step before AMPLITUDE=A"},
   };
   for (const Case& c : cases)
   {

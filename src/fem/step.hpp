@@ -1,0 +1,59 @@
+#pragma once
+/// @file One step of a problem's history (a deck's *STEP, a problem file's `steps:` entry):
+/// the loads and supports in force in it, how they get there and in how many increments.
+///
+/// Every step, the first included, holds the whole set of its loads and supports (what a deck
+/// carries over from the step before is resolved by its reader). A load or support without an
+/// amplitude goes linearly over the step from its value at the end of the step before (0 in
+/// the first) to its own (ramp), or takes its own at once (`ramp = false`: *STEP,
+/// AMPLITUDE=STEP); one with an amplitude is its value times a(t). fem::LoadHistory evaluates
+/// them at every increment.
+
+#include "fem/body_loads.hpp"
+#include "fem/dirichlet.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace feticon::fem
+{
+/// Uniform dead traction (Pa, force per reference area) on a named face set.
+struct FaceTraction
+{
+  std::string set;
+  Eigen::Vector3d traction;
+  std::string amplitude = {}; ///< Problem::amplitudes name; empty: the step's ramp
+};
+
+/// Uniform dead pressure (Pa, positive pushes into the body, on the reference normals) on a
+/// named face set (deck *DLOAD Pn).
+struct FacePressure
+{
+  std::string set;
+  double pressure;
+  std::string amplitude = {};
+};
+
+/// A concentrated dead force (N) on one component of one node (deck *CLOAD).
+struct NodalForce
+{
+  int32_t node;
+  int component; ///< 0, 1, 2
+  double value;
+  std::string amplitude = {};
+};
+
+struct Step
+{
+  std::vector<DirichletCondition> dirichlet;
+  std::vector<FaceTraction> tractions;
+  std::vector<FacePressure> pressures;
+  std::vector<NodalForce> nodal_forces;
+  std::vector<BodyLoad> body_loads; ///< gravity and centrifugal loads (fem/body_loads.hpp)
+  /// Load steps of the step; unset: the solver's (settings load_steps).
+  std::optional<int> increments = {};
+  double time = 1;  ///< the step's time period (*STATIC's), for amplitudes and the outputs
+  bool ramp = true; ///< loads without amplitude ramp over the step (false: applied at once)
+};
+} // namespace feticon::fem
