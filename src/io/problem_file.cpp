@@ -1,6 +1,8 @@
 #include "io/problem_file.hpp"
 
 #include "common/error.hpp"
+#include "io/problem_reader.hpp"
+#include "io/problem_steps.hpp"
 #include "mesh/box.hpp"
 #include "mesh/gmsh_precheck.hpp"
 #include "mesh/gmsh_reader.hpp"
@@ -17,7 +19,8 @@ namespace feticon::io
 {
 namespace
 {
-const std::set<std::string> structured_keys = {"mesh", "bodies", "plane_strain", "supports", "loads", "contact"};
+const std::set<std::string> structured_keys = {"mesh",  "bodies", "plane_strain", "supports",
+                                               "loads", "steps",  "amplitudes",   "contact"};
 
 std::vector<std::string> split_path(const std::string& path)
 {
@@ -27,15 +30,6 @@ std::vector<std::string> split_path(const std::string& path)
   while (std::getline(ss, part, '.'))
     parts.push_back(part);
   return parts;
-}
-
-template <class Map>
-std::string names_of(const Map& map)
-{
-  std::string list;
-  for (const auto& [name, value] : map)
-    list += (list.empty() ? "" : ", ") + name;
-  return list;
 }
 
 bool is_index(const std::string& s) { return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos; }
@@ -117,50 +111,8 @@ void flatten(const YAML::Node& node, const std::string& prefix, const Settings& 
   out.emplace_back(prefix, node.as<std::string>());
 }
 
-// ---- typed access to the structured sections, errors naming file and key ------------------
-struct Reader
-{
-  const std::string& source;
-
-  double number(const YAML::Node& node, const std::string& key) const
-  {
-    FETICON_CHECK(node && node.IsScalar(), source << ": " << key << " must be a number");
-    const std::string text = node.as<std::string>();
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    FETICON_CHECK(end && *end == '\0' && !text.empty() && std::isfinite(v),
-                  source << ": " << key << " = '" << text << "' is not a finite number");
-    return v;
-  }
-  Eigen::Vector3d vector3(const YAML::Node& node, const std::string& key) const
-  {
-    FETICON_CHECK(node && node.IsSequence() && node.size() == 3,
-                  source << ": " << key << " must be a list of three numbers, e.g. [0, 0, -1e8]");
-    return {number(node[0], key + "[0]"), number(node[1], key + "[1]"), number(node[2], key + "[2]")};
-  }
-  std::string text(const YAML::Node& node, const std::string& key) const
-  {
-    FETICON_CHECK(node && node.IsScalar(), source << ": " << key << " must be a name");
-    return node.as<std::string>();
-  }
-  void only_keys(const YAML::Node& node, const std::string& where, const std::set<std::string>& allowed) const
-  {
-    FETICON_CHECK(node.IsMap(), source << ": " << where << " must be a map of keys");
-    for (const auto& kv : node)
-    {
-      const std::string k = kv.first.as<std::string>();
-      if (allowed.count(k))
-        continue;
-      std::string list;
-      for (const auto& a : allowed)
-        list += (list.empty() ? "" : ", ") + a;
-      FETICON_CHECK(false, source << ": unknown key '" << k << "' in " << where << "; allowed: " << list);
-    }
-  }
-};
-
 /// A box's `cells`: three integers in 1..10000 (read before meshing by the memory guard too).
-std::array<int, 3> box_cells(const YAML::Node& box, const std::string& key, const Reader& r)
+std::array<int, 3> box_cells(const YAML::Node& box, const std::string& key, const ProblemReader& r)
 {
   const Eigen::Vector3d cells = r.vector3(box["cells"], key + ".cells");
   for (int d = 0; d < 3; ++d)
@@ -169,7 +121,7 @@ std::array<int, 3> box_cells(const YAML::Node& box, const std::string& key, cons
   return {static_cast<int>(cells(0)), static_cast<int>(cells(1)), static_cast<int>(cells(2))};
 }
 
-mesh::Mesh boxes_mesh(const YAML::Node& boxes, const Reader& r)
+mesh::Mesh boxes_mesh(const YAML::Node& boxes, const ProblemReader& r)
 {
   FETICON_CHECK(boxes.IsSequence() && boxes.size() > 0, r.source << ": mesh.boxes must be a non-empty list of boxes");
   mesh::Mesh out;
@@ -234,7 +186,7 @@ void settings_of_deck(ProblemFile& file, const std::filesystem::path& path)
 
 /// The friction of a contact pair of the problem file, `friction: {model: coulomb, coefficient:
 /// 0.3}` (or tresca with slip_bound, or none); none if it has none.
-fem::Friction pair_friction(const YAML::Node& pair, const std::string& key, const Reader& r)
+fem::Friction pair_friction(const YAML::Node& pair, const std::string& key, const ProblemReader& r)
 {
   fem::Friction out;
   if (!pair.IsMap() || !pair["friction"])
@@ -268,41 +220,8 @@ fem::Friction pair_friction(const YAML::Node& pair, const std::string& key, cons
 
 /// A body load of the `loads` list: {gravity: [gx, gy, gz]} or {centrifugal: {omega, point,
 /// axis}}, on one body (`body: NAME`) or on all.
-fem::BodyLoad body_load(const YAML::Node& load, const std::string& key, const mesh::Mesh& mesh, const Reader& r)
-{
-  r.only_keys(load, key, {"gravity", "centrifugal", "body"});
-  FETICON_CHECK(!(load["gravity"] && load["centrifugal"]),
-                r.source << ": " << key << ": gravity or centrifugal, not both");
-  fem::BodyLoad out;
-  out.where = r.source + ": " + key;
-  if (load["gravity"])
-    out.gravity = r.vector3(load["gravity"], key + ".gravity");
-  else
-  {
-    const YAML::Node c = load["centrifugal"];
-    r.only_keys(c, key + ".centrifugal", {"omega", "point", "axis"});
-    out.kind = fem::BodyLoad::Kind::centrifugal;
-    const double omega = r.number(c["omega"], key + ".centrifugal.omega");
-    out.omega2 = omega * omega;
-    out.point = r.vector3(c["point"], key + ".centrifugal.point");
-    out.axis = r.vector3(c["axis"], key + ".centrifugal.axis");
-  }
-  if (load["body"])
-  {
-    const std::string body = r.text(load["body"], key + ".body");
-    const auto it = std::find(mesh.body_names.begin(), mesh.body_names.end(), body);
-    FETICON_CHECK(it != mesh.body_names.end(),
-                  r.source << ": " << key << ".body: the mesh has no body '" << body << "'");
-    const auto index = static_cast<int32_t>(it - mesh.body_names.begin());
-    for (size_t c = 0; c < mesh.cells.size(); ++c)
-      if (mesh.cell_body[c] == index)
-        out.cells.push_back(static_cast<int32_t>(c));
-  }
-  return out;
-}
-
-/// The problem file's `contact` list: each pair's face sets, friction and formulation.
-std::vector<fem::ContactPairNames> contact_pairs(const YAML::Node& contact, const mesh::Mesh& mesh, const Reader& r)
+std::vector<fem::ContactPairNames> contact_pairs(const YAML::Node& contact, const mesh::Mesh& mesh,
+                                                 const ProblemReader& r)
 {
   FETICON_CHECK(contact.IsSequence(), r.source << ": contact must be a list of pairs");
   std::vector<fem::ContactPairNames> out;
@@ -478,7 +397,7 @@ ProblemFile with_overrides(ProblemFile file, const std::vector<std::string>& ove
   {
     file.deck = std::filesystem::absolute(file.folder / file.root["mesh"]["file"].Scalar());
     file.deck_outline = deck_outline(file.deck);
-    for (const char* section : {"bodies", "plane_strain", "supports", "loads", "contact"})
+    for (const char* section : {"bodies", "plane_strain", "supports", "loads", "steps", "amplitudes", "contact"})
       FETICON_CHECK(!file.root[section],
                     file.source << ": section '" << section << "' is not read when mesh.file is "
                                 << "an input deck: the deck gives the whole model");
@@ -506,7 +425,7 @@ ProblemFile with_overrides(ProblemFile file, const std::vector<std::string>& ove
 
 CustomMeshSize custom_mesh_size(const ProblemFile& file)
 {
-  const Reader r{file.source};
+  const ProblemReader r{file.source};
   const YAML::Node& root = file.root;
   FETICON_CHECK(root["mesh"], file.source << ": problem: custom needs a 'mesh' section (file: or boxes:)");
   r.only_keys(root["mesh"], "mesh", {"file", "boxes"});
@@ -544,7 +463,7 @@ CustomMeshSize custom_mesh_size(const ProblemFile& file)
 
 fem::Problem build_custom_problem(const ProblemFile& file)
 {
-  const Reader r{file.source};
+  const ProblemReader r{file.source};
   const YAML::Node& root = file.root;
   FETICON_CHECK(root["mesh"], file.source << ": problem: custom needs a 'mesh' section (file: or boxes:)");
   r.only_keys(root["mesh"], "mesh", {"file", "boxes"});
@@ -589,47 +508,7 @@ fem::Problem build_custom_problem(const ProblemFile& file)
     FETICON_CHECK(v == "true" || v == "false", file.source << ": plane_strain must be true or false");
     p.eliminated = {false, false, v == "true"};
   }
-  if (root["supports"])
-  {
-    FETICON_CHECK(root["supports"].IsSequence(), file.source << ": supports must be a list");
-    for (size_t i = 0; i < root["supports"].size(); ++i)
-    {
-      const YAML::Node s = root["supports"][i];
-      const std::string key = "supports." + std::to_string(i);
-      r.only_keys(s, key, {"set", "x", "y", "z"});
-      fem::DirichletCondition c{r.text(s["set"], key + ".set"), {}};
-      const char* names[3] = {"x", "y", "z"};
-      for (int d = 0; d < 3; ++d)
-        if (s[names[d]])
-          c.value[d] = r.number(s[names[d]], key + "." + names[d]);
-      FETICON_CHECK(c.value[0] || c.value[1] || c.value[2],
-                    file.source << ": " << key << " prescribes no component (x, y or z)");
-      FETICON_CHECK(p.mesh.node_sets.count(c.set),
-                    file.source << ": " << key << ".set: no node set '" << c.set
-                                << "' in the mesh; it has: " << names_of(p.mesh.node_sets));
-      p.steps.front().dirichlet.push_back(c);
-    }
-  }
-  if (root["loads"])
-  {
-    FETICON_CHECK(root["loads"].IsSequence(), file.source << ": loads must be a list");
-    for (size_t i = 0; i < root["loads"].size(); ++i)
-    {
-      const YAML::Node l = root["loads"][i];
-      const std::string key = "loads." + std::to_string(i);
-      if (l.IsMap() && (l["gravity"] || l["centrifugal"]))
-      {
-        p.steps.front().body_loads.push_back(body_load(l, key, p.mesh, r));
-        continue;
-      }
-      r.only_keys(l, key, {"set", "traction"});
-      const std::string set = r.text(l["set"], key + ".set");
-      FETICON_CHECK(p.mesh.face_sets.count(set),
-                    file.source << ": " << key << ".set: no face set '" << set
-                                << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
-      p.steps.front().tractions.push_back({set, r.vector3(l["traction"], key + ".traction")});
-    }
-  }
+  read_steps(root, r, p);
   if (root["contact"])
     p.contacts = contact_pairs(root["contact"], p.mesh, r);
   p.validate();

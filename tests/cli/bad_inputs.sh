@@ -195,6 +195,17 @@ expect "deck gravity zero direction" "gravity direction is zero" -- \
 expect "deck gravity short line" "a \*DLOAD GRAV line is" -- "$(grav_variant 'Eall, GRAV, 9.81' '' grav_short)"
 expect "deck centrif zero axis" "rotation axis is zero" -- \
   "$(grav_variant 'Eall, CENTRIF, 1e4, 0., 0., 0., 0., 0., 0.' '' centrif_zero)"
+# Amplitudes (issue 65, item 2).
+expect "deck amplitude undefined" "AMPLITUDE=NOPE is not defined by any \*AMPLITUDE" -- \
+  "$(deck_variant 's/^\*CLOAD/*CLOAD, AMPLITUDE=NOPE/' amplitude_undefined)"
+expect "deck amplitude one point" "needs at least two (time, value) points" -- \
+  "$(deck_variant 's/^\*STEP/*AMPLITUDE, NAME=A\n0., 1.\n*STEP/' amplitude_one_point)"
+expect "deck amplitude decreasing" "the amplitude's times decrease at point 2" -- \
+  "$(deck_variant 's/^\*STEP/*AMPLITUDE, NAME=A\n1., 0., 0., 1.\n*STEP/' amplitude_decreasing)"
+expect "deck amplitude not finite" "is not a finite number" -- \
+  "$(deck_variant 's/^\*STEP/*AMPLITUDE, NAME=A\n0., 0., 1., NaN\n*STEP/' amplitude_nan)"
+expect "deck step amplitude" "AMPLITUDE=SMOOTH must be RAMP or STEP" -- \
+  "$(deck_variant 's/^\*STEP/*STEP, AMPLITUDE=SMOOTH/' step_amplitude)"
 expect "deck element type" "C3D15" -- "$(deck_variant 's/TYPE=C3D8/TYPE=C3D15/I' c3d15)"
 # Lengths of 1e-30 m (a fuzz mutant): stresses of 5e44 Pa, beyond the .frd's single precision,
 # were written as INF; now one line.

@@ -1,0 +1,212 @@
+#include "io/problem_steps.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace feticon::io
+{
+namespace
+{
+/// An amplitude: a table [[t, a], ...] or {points: [[t, a], ...], time: step | total,
+/// shift_x, shift_y}.
+fem::Amplitude amplitude(const YAML::Node& node, const std::string& key, const ProblemReader& r)
+{
+  fem::Amplitude a;
+  a.where = r.source + ": " + key;
+  YAML::Node table = node;
+  if (node.IsMap())
+  {
+    r.only_keys(node, key, {"points", "time", "shift_x", "shift_y"});
+    table = node["points"];
+    if (node["time"])
+    {
+      const std::string time = r.text(node["time"], key + ".time");
+      FETICON_CHECK(time == "step" || time == "total", r.source << ": " << key << ".time must be step or total");
+      a.total_time = time == "total";
+    }
+    if (node["shift_x"])
+      a.shift_x = r.number(node["shift_x"], key + ".shift_x");
+    if (node["shift_y"])
+      a.shift_y = r.number(node["shift_y"], key + ".shift_y");
+  }
+  FETICON_CHECK(table && table.IsSequence(),
+                r.source << ": " << key << " must be a list of [time, value] pairs, e.g. [[0, 0], [1, 1]]");
+  for (size_t i = 0; i < table.size(); ++i)
+  {
+    const std::string at = key + "[" + std::to_string(i) + "]";
+    FETICON_CHECK(table[i].IsSequence() && table[i].size() == 2, r.source << ": " << at << " must be [time, value]");
+    a.points.emplace_back(r.number(table[i][0], at + "[0]"), r.number(table[i][1], at + "[1]"));
+  }
+  a.check();
+  return a;
+}
+
+/// The amplitude a load or support names (`amplitude: NAME`) or gives as its own table (then
+/// kept under the entry's key); empty without one.
+std::string amplitude_of(const YAML::Node& entry, const std::string& key, const ProblemReader& r, fem::Problem& p)
+{
+  const YAML::Node a = entry["amplitude"];
+  if (!a)
+    return {};
+  if (a.IsScalar())
+  {
+    const std::string name = a.as<std::string>();
+    FETICON_CHECK(p.amplitudes.count(name),
+                  r.source << ": " << key << ".amplitude: no amplitude '" << name
+                           << "' in amplitudes; it has: " << names_of(p.amplitudes));
+    return name;
+  }
+  p.amplitudes[key] = amplitude(a, key + ".amplitude", r);
+  return key;
+}
+
+fem::BodyLoad body_load(const YAML::Node& load, const std::string& key, const mesh::Mesh& mesh, const ProblemReader& r)
+{
+  r.only_keys(load, key, {"gravity", "centrifugal", "body"});
+  FETICON_CHECK(!(load["gravity"] && load["centrifugal"]),
+                r.source << ": " << key << ": gravity or centrifugal, not both");
+  fem::BodyLoad out;
+  out.where = r.source + ": " + key;
+  if (load["gravity"])
+    out.gravity = r.vector3(load["gravity"], key + ".gravity");
+  else
+  {
+    const YAML::Node c = load["centrifugal"];
+    r.only_keys(c, key + ".centrifugal", {"omega", "point", "axis"});
+    out.kind = fem::BodyLoad::Kind::centrifugal;
+    const double omega = r.number(c["omega"], key + ".centrifugal.omega");
+    out.omega2 = omega * omega;
+    out.point = r.vector3(c["point"], key + ".centrifugal.point");
+    out.axis = r.vector3(c["axis"], key + ".centrifugal.axis");
+  }
+  if (load["body"])
+  {
+    const std::string body = r.text(load["body"], key + ".body");
+    const auto it = std::find(mesh.body_names.begin(), mesh.body_names.end(), body);
+    FETICON_CHECK(it != mesh.body_names.end(),
+                  r.source << ": " << key << ".body: the mesh has no body '" << body << "'");
+    const auto index = static_cast<int32_t>(it - mesh.body_names.begin());
+    for (size_t c = 0; c < mesh.cells.size(); ++c)
+      if (mesh.cell_body[c] == index)
+        out.cells.push_back(static_cast<int32_t>(c));
+  }
+  return out;
+}
+
+/// The problem file's `contact` list: each pair's face sets, friction and formulation.
+std::vector<fem::DirichletCondition> supports(const YAML::Node& list, const std::string& where, const ProblemReader& r,
+                                              fem::Problem& p)
+{
+  FETICON_CHECK(list.IsSequence(), r.source << ": " << where << " must be a list");
+  std::vector<fem::DirichletCondition> out;
+  for (size_t i = 0; i < list.size(); ++i)
+  {
+    const YAML::Node s = list[i];
+    const std::string key = where + "." + std::to_string(i);
+    r.only_keys(s, key, {"set", "x", "y", "z", "amplitude"});
+    fem::DirichletCondition c{r.text(s["set"], key + ".set"), {}};
+    const char* names[3] = {"x", "y", "z"};
+    for (int d = 0; d < 3; ++d)
+      if (s[names[d]])
+        c.value[d] = r.number(s[names[d]], key + "." + names[d]);
+    FETICON_CHECK(c.value[0] || c.value[1] || c.value[2],
+                  r.source << ": " << key << " prescribes no component (x, y or z)");
+    FETICON_CHECK(p.mesh.node_sets.count(c.set),
+                  r.source << ": " << key << ".set: no node set '" << c.set
+                           << "' in the mesh; it has: " << names_of(p.mesh.node_sets));
+    c.amplitude = amplitude_of(s, key, r, p);
+    out.push_back(c);
+  }
+  return out;
+}
+
+/// A step's loads: tractions and body loads (its other load kinds are cleared).
+void loads(const YAML::Node& list, const std::string& where, const ProblemReader& r, fem::Problem& p, fem::Step& step)
+{
+  FETICON_CHECK(list.IsSequence(), r.source << ": " << where << " must be a list");
+  step.tractions.clear();
+  step.pressures.clear();
+  step.nodal_forces.clear();
+  step.body_loads.clear();
+  for (size_t i = 0; i < list.size(); ++i)
+  {
+    const YAML::Node l = list[i];
+    const std::string key = where + "." + std::to_string(i);
+    if (l.IsMap() && (l["gravity"] || l["centrifugal"]))
+    {
+      YAML::Node body = YAML::Clone(l);
+      body.remove("amplitude");
+      step.body_loads.push_back(body_load(body, key, p.mesh, r));
+      step.body_loads.back().amplitude = amplitude_of(l, key, r, p);
+      continue;
+    }
+    r.only_keys(l, key, {"set", "traction", "amplitude"});
+    const std::string set = r.text(l["set"], key + ".set");
+    FETICON_CHECK(p.mesh.face_sets.count(set),
+                  r.source << ": " << key << ".set: no face set '" << set
+                           << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
+    step.tractions.push_back({set, r.vector3(l["traction"], key + ".traction"), amplitude_of(l, key, r, p)});
+  }
+}
+
+/// One entry of `steps:` over `step`, which holds the step before (what the entry does not give
+/// carries over, as in CalculiX's steps).
+void step_entry(const YAML::Node& entry, const std::string& key, const ProblemReader& r, fem::Problem& p,
+                fem::Step& step)
+{
+  r.only_keys(entry, key, {"supports", "loads", "increments", "time", "ramp"});
+  if (entry["supports"])
+    step.dirichlet = supports(entry["supports"], key + ".supports", r, p);
+  if (entry["loads"])
+    loads(entry["loads"], key + ".loads", r, p, step);
+  step.increments.reset();
+  if (entry["increments"])
+  {
+    const double n = r.number(entry["increments"], key + ".increments");
+    FETICON_CHECK(n >= 1 && n <= 100000 && n == std::floor(n),
+                  r.source << ": " << key << ".increments = " << n << " must be an integer in 1 .. 100000");
+    step.increments = static_cast<int>(n);
+  }
+  step.time = entry["time"] ? r.number(entry["time"], key + ".time") : 1.0;
+  FETICON_CHECK(step.time > 0, r.source << ": " << key << ".time = " << step.time << " must be positive");
+  step.ramp = true;
+  if (entry["ramp"])
+  {
+    const std::string ramp = r.text(entry["ramp"], key + ".ramp");
+    FETICON_CHECK(ramp == "true" || ramp == "false", r.source << ": " << key << ".ramp must be true or false");
+    step.ramp = ramp == "true";
+  }
+}
+} // namespace
+
+void read_steps(const YAML::Node& root, const ProblemReader& r, fem::Problem& p)
+{
+  if (const YAML::Node amplitudes = root["amplitudes"])
+  {
+    FETICON_CHECK(amplitudes.IsMap(), r.source << ": amplitudes must be a map of names to [[t, a], ...] tables");
+    for (const auto& kv : amplitudes)
+    {
+      const std::string name = kv.first.as<std::string>();
+      p.amplitudes[name] = amplitude(kv.second, "amplitudes." + name, r);
+    }
+  }
+  fem::Step first;
+  if (root["supports"])
+    first.dirichlet = supports(root["supports"], "supports", r, p);
+  if (root["loads"])
+    loads(root["loads"], "loads", r, p, first);
+  p.steps = {first};
+  const YAML::Node steps = root["steps"];
+  if (!steps)
+    return;
+  FETICON_CHECK(steps.IsSequence() && steps.size() > 0, r.source << ": steps must be a non-empty list");
+  FETICON_CHECK(steps.size() <= 10000, r.source << ": steps has " << steps.size() << " entries, at most 10000");
+  p.steps.clear();
+  for (size_t i = 0; i < steps.size(); ++i)
+  {
+    fem::Step step = i == 0 ? first : p.steps.back();
+    step_entry(steps[i], "steps." + std::to_string(i), r, p, step);
+    p.steps.push_back(std::move(step));
+  }
+}
+} // namespace feticon::io

@@ -1,0 +1,16 @@
+#pragma once
+/// @file The steps of a custom problem file: `supports:` and `loads:` (the first step),
+/// `steps:` (every step, the first included, each carrying over what it does not give) and
+/// `amplitudes:` (docs/usage.md, "Steps and amplitudes").
+
+#include "fem/problem.hpp"
+#include "io/problem_reader.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+namespace feticon::io
+{
+/// Fills p.steps and p.amplitudes from `root` (p.mesh read already).
+/// @throws feticon::Error naming the file and key of what is wrong
+void read_steps(const YAML::Node& root, const ProblemReader& r, fem::Problem& p);
+} // namespace feticon::io
