@@ -1,11 +1,8 @@
 #include "fem/load_history.hpp"
 
 #include "common/error.hpp"
-#include "fem/loads.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <map>
 #include <set>
 #include <string>
 
@@ -143,8 +140,12 @@ void LoadHistory::add_stage(Stage stage)
   std::vector<double>& fractions = _fractions.emplace_back();
   for (int j = 1; j <= stage.steps; ++j)
     fractions.push_back(static_cast<double>(j) / stage.steps);
-  _has_amplitudes = _has_amplitudes || !stage.amplitudes.empty();
   _stages.push_back(std::move(stage));
+}
+
+bool LoadHistory::has_amplitudes() const
+{
+  return std::ranges::any_of(_stages, [](const Stage& s) { return !s.amplitudes.empty(); });
 }
 
 int LoadHistory::last_step(int stage) const

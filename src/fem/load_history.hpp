@@ -96,7 +96,7 @@ public:
   /// The terms f(t_n) and u_D(t_n) combine (the file comment).
   const std::vector<LoadTerm>& terms() const { return _terms; }
   /// True if some stage has a load or support with an amplitude.
-  bool has_amplitudes() const { return _has_amplitudes; }
+  bool has_amplitudes() const;
 
   /// f(t_n) of the file comment, 3 per mesh node.
   la::Vector external_force(int step) const;
@@ -145,6 +145,5 @@ private:
   std::vector<int> _last_step; ///< cumulative: last load step of stage s at s - 1
   /// j / N_s of each load step of stage s at s - 1, with the midpoints of split steps.
   std::vector<std::vector<double>> _fractions;
-  bool _has_amplitudes = false;
 };
 } // namespace feticon::fem
