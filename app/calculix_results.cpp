@@ -54,8 +54,10 @@ struct PointResults
   std::vector<Eigen::Matrix<double, 6, 1>> cell_stress, cell_strain;
 };
 
-PointResults point_results(const fem::Problem& p, const la::Vector& u, fem::Kinematics kinematics)
+PointResults point_results(const fem::Problem& p, const la::Vector& u, const la::Vector& temperature_change,
+                           fem::Kinematics kinematics)
 {
+  const bool thermal = temperature_change.size() > 0;
   const mesh::Mesh& mesh = p.mesh;
   PointResults out;
   const bool dat_points = mesh.cells.all_of_kind(mesh::CellKind::hex8);
@@ -68,7 +70,9 @@ PointResults point_results(const fem::Problem& p, const la::Vector& u, fem::Kine
   cell_stress.resize(mesh.n_cells());
   cell_strain.resize(mesh.n_cells());
   fem::NodeCoords X, ue;
+  fem::NodeTemperatures dT = fem::NodeTemperatures::Zero();
   Eigen::MatrixX3d X_any, u_any;
+  Eigen::VectorXd dT_any;
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
   {
     const std::span<const int32_t> cell = mesh.cells[c];
@@ -80,8 +84,10 @@ PointResults point_results(const fem::Problem& p, const la::Vector& u, fem::Kine
       {
         X.row(a) = mesh.nodes.row(cell[a]);
         ue.row(a) = u.segment<3>(3 * cell[a]).transpose();
+        if (thermal)
+          dT(a) = temperature_change(cell[a]);
       }
-      const fem::Hex8PointResults h = fem::hex8_point_results(X, ue, material, kinematics, c);
+      const fem::Hex8PointResults h = fem::hex8_point_results(X, ue, material, kinematics, c, thermal ? &dT : nullptr);
       r.stress.assign(h.stress.begin(), h.stress.end());
       r.strain.assign(h.strain.begin(), h.strain.end());
       r.weight.assign(h.weight.begin(), h.weight.end());
@@ -90,12 +96,16 @@ PointResults point_results(const fem::Problem& p, const la::Vector& u, fem::Kine
     {
       X_any.resize(static_cast<Eigen::Index>(cell.size()), 3);
       u_any.resize(X_any.rows(), 3);
+      dT_any.setZero(X_any.rows());
       for (size_t a = 0; a < cell.size(); ++a)
       {
         X_any.row(a) = mesh.nodes.row(cell[a]);
         u_any.row(a) = u.segment<3>(3 * cell[a]).transpose();
+        if (thermal)
+          dT_any(a) = temperature_change(cell[a]);
       }
-      r = fem::cell_point_results(mesh.cells.kind(c), X_any, u_any, material, kinematics, fem::Integration::full, c);
+      r = fem::cell_point_results(mesh.cells.kind(c), X_any, u_any, material, kinematics, fem::Integration::full, c,
+                                  thermal ? &dT_any : nullptr);
     }
     Eigen::Matrix<double, 6, 1> s = Eigen::Matrix<double, 6, 1>::Zero(), e = s;
     double volume = 0;
@@ -175,7 +185,7 @@ void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
   if (rows.n_rows() > 0)
     reaction += rows.B.transpose() * solution.contact_lambda;
 
-  const PointResults points = point_results(p, solution.u, _kinematics);
+  const PointResults points = point_results(p, solution.u, solution.temperature_change, _kinematics);
   const std::vector<double>& point_stress = points.stress;
   const std::vector<double>& point_strain = points.strain;
   const auto& cell_stress = points.cell_stress;

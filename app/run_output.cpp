@@ -31,6 +31,15 @@ struct StepFields
   /// -1 on no slave surface.
   io::VtuField contact_pair{"contact_pair", 1, {}};
   io::VtuField cauchy{"cauchy_stress", 6, {}}, mises{"von_mises", 1, {}};
+  io::VtuField temperature_change{"temperature_change", 1, {}}; ///< T - T_0 (K), written when the problem has one
+
+  std::vector<io::VtuField> point_fields(bool thermal) const
+  {
+    std::vector<io::VtuField> fields{displacement, pressure, contact_pair};
+    if (thermal)
+      fields.push_back(temperature_change);
+    return fields;
+  }
 };
 } // namespace
 
@@ -53,9 +62,17 @@ void write_step_vtu(const std::filesystem::path& path, const fem::Problem& probl
     local_of_node[node_of_local[k]] = static_cast<int32_t>(k);
     u.segment<3>(3 * static_cast<la::Index>(k)) = solution.u.segment<3>(3 * node_of_local[k]);
   }
+  la::Vector dT;
+  if (solution.temperature_change.size() > 0)
+  {
+    dT.resize(static_cast<la::Index>(node_of_local.size()));
+    for (size_t k = 0; k < node_of_local.size(); ++k)
+      dT(static_cast<la::Index>(k)) = solution.temperature_change(node_of_local[k]);
+  }
   StepFields f;
   f.displacement.values.assign(u.data(), u.data() + u.size());
-  for (const auto& s : fem::cell_cauchy_stresses(mesh, u, problem.materials, kinematics))
+  f.temperature_change.values.assign(dT.data(), dT.data() + dT.size());
+  for (const auto& s : fem::cell_cauchy_stresses(mesh, u, problem.materials, kinematics, dT))
   {
     // VTK's symmetric tensor order: xx, yy, zz, xy, yz, xz (feticon Voigt: 11,22,33,12,23,31).
     for (int k = 0; k < 6; ++k)
@@ -79,17 +96,17 @@ void write_step_vtu(const std::filesystem::path& path, const fem::Problem& probl
     for (int32_t n = 0; n < mesh.n_nodes(); ++n)
       x.row(n) += u.segment<3>(3 * n).transpose();
     const Eigen::Ref<const io::PointMatrix> ref(x);
-    io::write_vtu(path, mesh, &ref, {f.displacement, f.pressure, f.contact_pair}, {f.cauchy, f.mises});
+    io::write_vtu(path, mesh, &ref, f.point_fields(dT.size() > 0), {f.cauchy, f.mises});
   }
   else
-    io::write_vtu(path, mesh, nullptr, {f.displacement, f.pressure, f.contact_pair}, {f.cauchy, f.mises});
+    io::write_vtu(path, mesh, nullptr, f.point_fields(dT.size() > 0), {f.cauchy, f.mises});
 }
 
 void write_step_pvtu(const std::filesystem::path& path, const fem::Problem& problem,
                      const std::vector<std::string>& pieces)
 {
   const StepFields f;
-  io::write_pvtu(path, pieces, problem.mesh, {f.displacement, f.pressure, f.contact_pair}, {f.cauchy, f.mises});
+  io::write_pvtu(path, pieces, problem.mesh, f.point_fields(problem.has_temperatures()), {f.cauchy, f.mises});
 }
 
 void write_pressure_csv(const std::filesystem::path& path, const std::vector<nonlinear::PressureSample>& samples,

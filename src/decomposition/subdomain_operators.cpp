@@ -78,6 +78,21 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
     timers->add("factorization", seconds_since(start));
 }
 
+void SubdomainSystem::set_temperature_change(const la::Vector& mesh_temperature_change)
+{
+  parallel_for(_decomposition.first_owned(), _decomposition.end_owned(), setup_work, [&](int32_t s) {
+    const std::vector<int32_t>& nodes = _decomposition.subdomain(s).domain.local_to_global;
+    la::Vector local;
+    if (mesh_temperature_change.size() > 0)
+    {
+      local.resize(static_cast<la::Index>(nodes.size()));
+      for (size_t a = 0; a < nodes.size(); ++a)
+        local(static_cast<la::Index>(a)) = mesh_temperature_change(nodes[a]);
+    }
+    _assemblers[s]->set_temperature_change(std::move(local));
+  });
+}
+
 la::Vector SubdomainSystem::internal_force(const la::Vector& u_stacked) const
 {
   la::Vector f(_decomposition.n_primal());

@@ -36,6 +36,10 @@ public:
   /// `timers`, adds the wall time of the two to its "assembly" and "factorization".
   void update(const la::Vector& u_stacked, TimerTable* timers = nullptr);
 
+  /// @brief The temperature change T - T_0 (K) of every mesh node for the internal forces and
+  /// stiffnesses that follow (fem::Assembler::set_temperature_change); empty: none.
+  void set_temperature_change(const la::Vector& mesh_temperature_change);
+
   /// Internal force of every subdomain at stacked displacement `u` (stacked).
   la::Vector internal_force(const la::Vector& u_stacked) const;
 

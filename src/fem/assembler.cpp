@@ -176,6 +176,9 @@ void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatr
   Eigen::MatrixX3d X_any, u_any;
   Eigen::VectorXd fe_any;
   Eigen::MatrixXd Ke_any;
+  const bool thermal = _temperature_change.size() > 0;
+  NodeTemperatures dT;
+  Eigen::VectorXd dT_any;
   for (size_t k = 0; k < _domain.cells.size(); ++k)
   {
     const int32_t c = _domain.cells[k];
@@ -189,23 +192,36 @@ void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatr
       {
         X.row(a) = _mesh.nodes.row(cell[a]);
         ue.row(a) = u.segment<3>(3 * local[a]).transpose();
+        if (thermal)
+          dT(a) = _temperature_change(local[a]);
       }
-      hex8_element(X, ue, material, _kinematics, element_kind, fe, &Ke, c);
+      hex8_element(X, ue, material, _kinematics, element_kind, fe, &Ke, c, thermal ? &dT : nullptr);
       add_cell(local, fe, Ke, f_int, K);
       continue;
     }
     const auto n = static_cast<Eigen::Index>(cell.size());
     X_any.resize(n, 3);
     u_any.resize(n, 3);
+    dT_any.resize(n);
     for (Eigen::Index a = 0; a < n; ++a)
     {
       X_any.row(a) = _mesh.nodes.row(cell[a]);
       u_any.row(a) = u.segment<3>(3 * local[a]).transpose();
+      dT_any(a) = thermal ? _temperature_change(local[a]) : 0.0;
     }
     const Integration integration = _mesh.reduced(c) ? Integration::reduced : Integration::full;
-    cell_element(type, X_any, u_any, material, _kinematics, element_kind, integration, fe_any, &Ke_any, c);
+    cell_element(type, X_any, u_any, material, _kinematics, element_kind, integration, fe_any, &Ke_any, c,
+                 thermal ? &dT_any : nullptr);
     add_cell(local, fe_any, Ke_any, f_int, K);
   }
+}
+
+void Assembler::set_temperature_change(la::Vector temperature_change)
+{
+  FETICON_CHECK(temperature_change.size() == 0 || temperature_change.size() == _domain.n_nodes(),
+                "temperature change of " << temperature_change.size() << " nodes, the domain has "
+                                         << _domain.n_nodes());
+  _temperature_change = std::move(temperature_change);
 }
 
 la::SparseMatrix Assembler::stiffness(const la::Vector& u, StiffnessKind kind) const

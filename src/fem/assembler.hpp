@@ -61,6 +61,11 @@ public:
   /// Both in one pass over the cells (either output may be null).
   void assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatrix* K, la::Vector* f_int) const;
 
+  /// @brief The temperature change T - T_0 (K) of each local node for the assemblies that follow
+  /// (thermal strain, fem/hex8_element.hpp); empty: none. The load history sets it at every
+  /// load step (fem/temperature_history.hpp).
+  void set_temperature_change(la::Vector temperature_change);
+
   /// Reference coordinates of the domain's nodes, one row per local node.
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> local_coordinates() const;
 
@@ -69,6 +74,7 @@ private:
   AssemblyDomain _domain;
   std::vector<Material> _materials;
   Kinematics _kinematics;
+  la::Vector _temperature_change; ///< per local node; empty: none
   /// The sparsity pattern of K, kept per node (a ninth of K's indices, none of its values):
   /// a zero-valued copy of K held as much memory as K for the whole run.
   NodeAdjacency _adjacency;

@@ -67,11 +67,19 @@ std::pair<Eigen::Matrix3d, Voigt> deformation(const Eigen::MatrixX3d& dN, const 
   strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(1, 2), 2 * E(2, 0);
   return {Fd, strain};
 }
+/// alpha E / (1 - 2 nu) Delta T at reference point xi (0 without a temperature change).
+double thermal_stress_at(mesh::CellKind type, const Material& material, const Eigen::VectorXd* temperature_change,
+                         const Eigen::Vector3d& xi)
+{
+  if (!temperature_change || material.expansion == 0)
+    return 0;
+  return material.thermal_stress() * shape_values(type, xi).dot(*temperature_change);
+}
 } // namespace
 
 void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, const Material& material,
                   Kinematics kinematics, StiffnessKind kind, Integration integration, Eigen::VectorXd& f,
-                  Eigen::MatrixXd* K, int64_t cell)
+                  Eigen::MatrixXd* K, int64_t cell, const Eigen::VectorXd* temperature_change)
 {
   const Eigen::Index n = 3 * X.rows();
   const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
@@ -83,8 +91,10 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
   {
     const PointGeometry geo = point_geometry(type, X, rule.points[q], rule.weights[q], cell);
     const auto [Fd, strain] = deformation(geo.dN_dX, u, kinematics, cell);
-    // S = D E is St Venant-Kirchhoff's S = lambda tr(E) I + 2 mu E in Voigt form (engineering shears).
-    const Voigt S = D * strain;
+    // S = D E is St Venant-Kirchhoff's S = lambda tr(E) I + 2 mu E in Voigt form (engineering
+    // shears), of the strain less the thermal strain.
+    Voigt S = D * strain;
+    S.head<3>().array() -= thermal_stress_at(type, material, temperature_change, rule.points[q]);
     const auto B = strain_displacement(geo.dN_dX, Fd);
     f.noalias() += B.transpose() * S * geo.weight_det_j;
     if (kind == StiffnessKind::none)
@@ -105,7 +115,7 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
 
 CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
                                     const Material& material, Kinematics kinematics, Integration integration,
-                                    int64_t cell)
+                                    int64_t cell, const Eigen::VectorXd* temperature_change)
 {
   const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
   const QuadratureRule& rule = quadrature(type, integration);
@@ -115,6 +125,7 @@ CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d&
     const PointGeometry geo = point_geometry(type, X, rule.points[q], rule.weights[q], cell);
     const auto [Fd, strain] = deformation(geo.dN_dX, u, kinematics, cell);
     Voigt stress = D * strain;
+    stress.head<3>().array() -= thermal_stress_at(type, material, temperature_change, rule.points[q]);
     if (kinematics == Kinematics::total_lagrangian)
     {
       // sigma = F S F' / det F (det F > 0, checked in deformation).
@@ -131,9 +142,11 @@ CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d&
 }
 
 Voigt cell_cauchy_stress(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
-                         const Material& material, Kinematics kinematics, int64_t cell, Integration integration)
+                         const Material& material, Kinematics kinematics, int64_t cell, Integration integration,
+                         const Eigen::VectorXd* temperature_change)
 {
-  const CellPointResults points = cell_point_results(type, X, u, material, kinematics, integration, cell);
+  const CellPointResults points =
+      cell_point_results(type, X, u, material, kinematics, integration, cell, temperature_change);
   Voigt sum = Voigt::Zero();
   double volume = 0;
   for (size_t q = 0; q < points.weight.size(); ++q)

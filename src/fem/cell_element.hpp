@@ -6,7 +6,8 @@
 ///   f_int = sum_gp B_NL' S_v w detJ,  K_M = sum_gp B_NL' D B_NL w detJ,
 ///   K_G(a,b) = (grad N_a' S grad N_b) I_3 w detJ;
 /// the linear element is the same with Fdef = I in B and S = D eps(u). Element DOFs are
-/// node-major: dof 3a + i is component i of node a.
+/// node-major: dof 3a + i is component i of node a. A temperature change subtracts the
+/// thermal strain as hex8_element.hpp says.
 
 #include "fem/hex8_element.hpp"
 #include "fem/material.hpp"
@@ -22,9 +23,10 @@ namespace feticon::fem
 /// @param[in] X  reference node coordinates, one row per local node (m)
 /// @param[in] u  node displacements, likewise (m)
 /// @param[in] cell  cell id for error messages (an inverted cell names it)
+/// @param[in] temperature_change  T - T_0 per node (K); null: none
 void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, const Material& material,
                   Kinematics kinematics, StiffnessKind kind, Integration integration, Eigen::VectorXd& f,
-                  Eigen::MatrixXd* K, int64_t cell);
+                  Eigen::MatrixXd* K, int64_t cell, const Eigen::VectorXd* temperature_change = nullptr);
 
 /// Cauchy stress (Pa) and strain (small strain, or Green-Lagrange E; engineering shears) at the
 /// quadrature points of the cell, Voigt [11,22,33,12,23,31], and each point's weight times
@@ -36,14 +38,15 @@ struct CellPointResults
 };
 CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
                                     const Material& material, Kinematics kinematics, Integration integration,
-                                    int64_t cell);
+                                    int64_t cell, const Eigen::VectorXd* temperature_change = nullptr);
 
 /// Volume-averaged Cauchy stress of one cell (Pa), Voigt [11,22,33,12,23,31]: the weighted mean
 /// of cell_point_results' stresses (at the points of `integration`), as hex8_cauchy_stress.
 Eigen::Matrix<double, 6, 1> cell_cauchy_stress(mesh::CellKind type, const Eigen::MatrixX3d& X,
                                                const Eigen::MatrixX3d& u, const Material& material,
                                                Kinematics kinematics, int64_t cell,
-                                               Integration integration = Integration::full);
+                                               Integration integration = Integration::full,
+                                               const Eigen::VectorXd* temperature_change = nullptr);
 
 /// Small strain (linear) or Green-Lagrange strain (total Lagrangian), Voigt
 /// [11,22,33,12,23,31] with engineering shears, at each quadrature point of the cell.

@@ -55,8 +55,18 @@ struct PointState
   Voigt strain; ///< small strain or Green-Lagrange E, engineering shears
 };
 
+/// The thermal normal stress alpha E / (1 - 2 nu) Delta T at Gauss point xi (0 without a
+/// temperature change).
+double thermal_stress_at(const Material& material, const NodeTemperatures* temperature_change,
+                         const Eigen::Vector3d& xi)
+{
+  if (!temperature_change || material.expansion == 0)
+    return 0;
+  return material.thermal_stress() * hex8_shape(xi).dot(*temperature_change);
+}
+
 PointState point_state(const ShapeGradients& dN, const NodeCoords& u, const Eigen::Matrix<double, 6, 6>& D,
-                       const Material& material, Kinematics kinematics, int64_t cell)
+                       const Material& material, Kinematics kinematics, int64_t cell, double thermal_stress)
 {
   const Eigen::Matrix3d grad_u = u.transpose() * dN; // du_i/dX_j
   PointState state;
@@ -67,6 +77,7 @@ PointState point_state(const ShapeGradients& dN, const NodeCoords& u, const Eige
     eps << grad_u(0, 0), grad_u(1, 1), grad_u(2, 2), grad_u(0, 1) + grad_u(1, 0), grad_u(1, 2) + grad_u(2, 1),
         grad_u(2, 0) + grad_u(0, 2);
     state.S = D * eps;
+    state.S.head<3>().array() -= thermal_stress;
     state.strain = eps;
     return state;
   }
@@ -81,13 +92,15 @@ PointState point_state(const ShapeGradients& dN, const NodeCoords& u, const Eige
   const Eigen::Matrix3d S =
       material.lame_lambda() * E.trace() * Eigen::Matrix3d::Identity() + 2 * material.lame_mu() * E;
   state.S = tensor_to_voigt(S);
+  state.S.head<3>().array() -= thermal_stress;
   state.strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(1, 2), 2 * E(2, 0);
   return state;
 }
 } // namespace
 
 void hex8_element(const NodeCoords& X, const NodeCoords& u, const Material& material, Kinematics kinematics,
-                  StiffnessKind kind, ElementVector& f, ElementMatrix* K, int64_t cell)
+                  StiffnessKind kind, ElementVector& f, ElementMatrix* K, int64_t cell,
+                  const NodeTemperatures* temperature_change)
 {
   const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
   f.setZero();
@@ -96,7 +109,8 @@ void hex8_element(const NodeCoords& X, const NodeCoords& u, const Material& mate
   for (const Eigen::Vector3d& xi : hex8_gauss_points())
   {
     const GaussGeometry geo = hex8_gauss_geometry(X, xi, cell);
-    const PointState state = point_state(geo.dN_dX, u, D, material, kinematics, cell);
+    const PointState state =
+        point_state(geo.dN_dX, u, D, material, kinematics, cell, thermal_stress_at(material, temperature_change, xi));
     const StrainDisplacement B = strain_displacement(geo.dN_dX, state.Fd);
     f.noalias() += B.transpose() * state.S * geo.weight_det_j;
     if (kind == StiffnessKind::none)
@@ -123,14 +137,16 @@ void hex8_element(const NodeCoords& X, const NodeCoords& u, const Material& mate
 }
 
 Hex8PointResults hex8_point_results(const NodeCoords& X, const NodeCoords& u, const Material& material,
-                                    Kinematics kinematics, int64_t cell)
+                                    Kinematics kinematics, int64_t cell, const NodeTemperatures* temperature_change)
 {
   const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
   Hex8PointResults out;
   for (size_t g = 0; g < 8; ++g)
   {
-    const GaussGeometry geo = hex8_gauss_geometry(X, hex8_gauss_points()[g], cell);
-    const PointState state = point_state(geo.dN_dX, u, D, material, kinematics, cell);
+    const Eigen::Vector3d& xi = hex8_gauss_points()[g];
+    const GaussGeometry geo = hex8_gauss_geometry(X, xi, cell);
+    const PointState state =
+        point_state(geo.dN_dX, u, D, material, kinematics, cell, thermal_stress_at(material, temperature_change, xi));
     out.stress[g] = state.S;
     if (kinematics == Kinematics::total_lagrangian)
     {
@@ -144,9 +160,10 @@ Hex8PointResults hex8_point_results(const NodeCoords& X, const NodeCoords& u, co
 }
 
 Eigen::Matrix<double, 6, 1> hex8_cauchy_stress(const NodeCoords& X, const NodeCoords& u, const Material& material,
-                                               Kinematics kinematics, int64_t cell)
+                                               Kinematics kinematics, int64_t cell,
+                                               const NodeTemperatures* temperature_change)
 {
-  const Hex8PointResults points = hex8_point_results(X, u, material, kinematics, cell);
+  const Hex8PointResults points = hex8_point_results(X, u, material, kinematics, cell, temperature_change);
   Voigt sum = Voigt::Zero();
   double volume = 0;
   for (size_t g = 0; g < 8; ++g)

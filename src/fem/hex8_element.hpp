@@ -7,6 +7,9 @@
 ///   K_G(a,b) = (grad N_a' S grad N_b) I_3 detJ,  K_T = K_M + K_G.
 /// Voigt order [11,22,33,12,23,31], engineering shears in E, plain shears in S.
 /// The linear element is the same code with Fdef = I in B and S = D eps(u); then K_G = 0.
+/// A temperature change Delta T (interpolated from the nodes) subtracts the thermal strain
+/// alpha Delta T I from eps or from E (CalculiX's additive split on the Green-Lagrange strain,
+/// fem/temperature_history.hpp): S -= alpha E / (1 - 2 nu) Delta T on the normal components.
 /// Element DOFs are node-major: dof 3a + i is component i of node a.
 
 #include "fem/hex8.hpp"
@@ -18,6 +21,7 @@ namespace feticon::fem
 {
 using ElementVector = Eigen::Matrix<double, 24, 1>;
 using ElementMatrix = Eigen::Matrix<double, 24, 24>;
+using NodeTemperatures = Eigen::Matrix<double, 8, 1>; ///< T - T_0 per node (K)
 
 /// Which element matrices to compute.
 enum class StiffnessKind
@@ -33,8 +37,10 @@ enum class StiffnessKind
 /// @param[out] f    internal force (N)
 /// @param[out] K    stiffness (N/m); untouched when kind == none
 /// @param[in] cell  cell id, for error messages
+/// @param[in] temperature_change  T - T_0 per node; null: none
 void hex8_element(const NodeCoords& X, const NodeCoords& u, const Material& material, Kinematics kinematics,
-                  StiffnessKind kind, ElementVector& f, ElementMatrix* K, int64_t cell);
+                  StiffnessKind kind, ElementVector& f, ElementMatrix* K, int64_t cell,
+                  const NodeTemperatures* temperature_change = nullptr);
 
 /// Cauchy stress (Pa) and strain (small strain, or Green-Lagrange E with large displacements;
 /// engineering shears) at the Gauss points of hex8_gauss_points(), Voigt [11,22,33,12,23,31],
@@ -45,12 +51,14 @@ struct Hex8PointResults
   std::array<double, 8> weight;
 };
 Hex8PointResults hex8_point_results(const NodeCoords& X, const NodeCoords& u, const Material& material,
-                                    Kinematics kinematics, int64_t cell);
+                                    Kinematics kinematics, int64_t cell,
+                                    const NodeTemperatures* temperature_change = nullptr);
 
 /// Volume-averaged Cauchy stress of one cell (Pa), Voigt [11,22,33,12,23,31].
 /// Linear: sigma = D eps. TL: sigma = Fdef S Fdef' / det Fdef.
 Eigen::Matrix<double, 6, 1> hex8_cauchy_stress(const NodeCoords& X, const NodeCoords& u, const Material& material,
-                                               Kinematics kinematics, int64_t cell);
+                                               Kinematics kinematics, int64_t cell,
+                                               const NodeTemperatures* temperature_change = nullptr);
 
 /// von Mises equivalent stress of a Voigt stress vector (Pa).
 double von_mises(const Eigen::Matrix<double, 6, 1>& sigma);

@@ -62,6 +62,7 @@ std::set<std::string> amplitudes_of(const Step& step)
   add(step.pressures);
   add(step.nodal_forces);
   add(step.body_loads);
+  add(step.temperatures); // no force, but the stage keeps its increments (fem/temperature_history.hpp)
   return names;
 }
 

@@ -23,5 +23,8 @@ void Material::check(const std::string& where) const
                 where << ": Poisson's ratio nu = " << poisson << " must lie in (-1, 0.5)");
   FETICON_CHECK(std::isfinite(density) && density >= 0,
                 where << ": the density rho = " << density << " must be finite and not negative");
+  // Negative alpha is physical (zirconium tungstate, some composites' fibre direction).
+  FETICON_CHECK(std::isfinite(expansion),
+                where << ": the expansion coefficient alpha = " << expansion << " is not finite");
 }
 } // namespace feticon::fem

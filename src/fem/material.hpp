@@ -1,5 +1,6 @@
 #pragma once
-/// @file Isotropic St Venant–Kirchhoff material (linear elasticity at small strain).
+/// @file Isotropic St Venant–Kirchhoff material (linear elasticity at small strain), with its
+/// thermal expansion.
 
 #include <Eigen/Dense>
 #include <string>
@@ -13,12 +14,19 @@ struct Material
   double young = 2.0e11; ///< Young's modulus E_Y (Pa)
   double poisson = 0.3;  ///< Poisson's ratio nu, in (-1, 0.5)
   double density = 0;    ///< rho (kg/m^3): only body loads (fem/body_loads.hpp) use it; 0: none given
+  /// alpha (1/K): the thermal strain alpha (T - T_0) I of a temperature change from the
+  /// initial temperature T_0 (fem/temperature_history.hpp); 0: none
+  double expansion = 0;
 
   double lame_lambda() const { return young * poisson / ((1 + poisson) * (1 - 2 * poisson)); }
   double lame_mu() const { return young / (2 * (1 + poisson)); }
+  /// The normal stress of a unit temperature change with the strain held, alpha E / (1 - 2 nu)
+  /// (Pa/K): D applied to alpha (1, 1, 1, 0, 0, 0).
+  double thermal_stress() const { return expansion * young / (1 - 2 * poisson); }
   /// 6x6 elasticity matrix in Voigt order [11,22,33,12,23,31] with engineering shears.
   Eigen::Matrix<double, 6, 6> elasticity_matrix() const;
-  /// Throws feticon::Error naming `where` if E <= 0 or nu is outside (-1, 0.5).
+  /// Throws feticon::Error naming `where` if E <= 0, nu is outside (-1, 0.5), rho is negative or not
+  /// finite, or alpha is not finite.
   void check(const std::string& where) const;
 };
 

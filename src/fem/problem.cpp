@@ -29,6 +29,13 @@ void in_step(size_t step, size_t n_steps, F&& check)
 }
 } // namespace
 
+void check_temperature(double value, const std::string& what)
+{
+  FETICON_CHECK(std::isfinite(value) && value >= absolute_zero_celsius,
+                what << " is " << value << ": not finite or below absolute zero (" << absolute_zero_celsius
+                     << " degrees Celsius)");
+}
+
 la::Vector Problem::external_force(size_t step, const std::string& amplitude) const
 {
   FETICON_CHECK(step < steps.size(), "step " << step + 1 << " of " << steps.size());
@@ -79,6 +86,11 @@ ConstrainedDofs Problem::all_constrained_dofs(size_t step, const std::string& am
   return to_constrained_dofs(merged);
 }
 
+bool Problem::has_temperatures() const
+{
+  return std::ranges::any_of(steps, [](const Step& s) { return !s.temperatures.empty(); });
+}
+
 void Problem::validate() const
 {
   FETICON_CHECK(mesh.n_cells() > 0, "problem '" << name << "': the mesh has no cells");
@@ -105,6 +117,11 @@ void Problem::validate() const
                               << mesh.body_names[softest - materials.begin()] << "' (" << softest->young
                               << " Pa) differ by more than 1e15, beyond double precision");
   FETICON_CHECK(!steps.empty(), "problem '" << name << "' has no step");
+  FETICON_CHECK(initial_temperatures.empty() || std::ssize(initial_temperatures) == mesh.n_nodes(),
+                "problem '" << name << "': initial temperatures of " << initial_temperatures.size()
+                            << " nodes, the mesh has " << mesh.n_nodes());
+  for (size_t n = 0; n < initial_temperatures.size(); ++n)
+    check_temperature(initial_temperatures[n], "the initial temperature of node " + std::to_string(n));
   for (const auto& [amplitude_name, amplitude] : amplitudes)
     amplitude.check();
   for (size_t k = 0; k < steps.size(); ++k)
@@ -181,6 +198,12 @@ void Problem::validate_step(size_t step) const
     }
     for (const auto& b : s.body_loads)
       amplitude_known(b.amplitude, b.where);
+    for (const auto& t : s.temperatures)
+    {
+      FETICON_CHECK(t.node >= 0 && t.node < mesh.n_nodes(), "a temperature names node " << t.node << ", out of range");
+      check_temperature(t.value, "the temperature of node " + std::to_string(t.node));
+      amplitude_known(t.amplitude, "the temperature of node " + std::to_string(t.node));
+    }
     (void)collect_dirichlet(mesh, s.dirichlet); // two values for one DOF
   });
 }

@@ -58,6 +58,9 @@ struct Problem
   /// The history, one record a step (fem/step.hpp); at least one.
   std::vector<Step> steps = std::vector<Step>(1);
   std::map<std::string, Amplitude> amplitudes; ///< by the name loads and supports give
+  /// T_0 per mesh node (deck *INITIAL CONDITIONS, TYPE=TEMPERATURE): the temperature of the
+  /// unstrained state, from which the thermal strain counts. Empty: 0 everywhere.
+  std::vector<double> initial_temperatures;
   /// Any number of pairs, none included (a model held by supports, glued or tied only).
   std::vector<ContactPairNames> contacts;
   /// Components fixed to zero on every node and eliminated (plane strain: {0,0,1}).
@@ -69,6 +72,8 @@ struct Problem
   /// The DOFs step `step` prescribes, with the eliminated components, and the values of the
   /// supports whose amplitude is `amplitude` (0 for the others).
   ConstrainedDofs all_constrained_dofs(size_t step = 0, const std::string& amplitude = {}) const;
+  /// Some step gives temperatures (the thermal strain then enters the elements).
+  bool has_temperatures() const;
   /// Checks materials, set names and sizes; throws feticon::Error naming what is wrong.
   void validate() const;
 

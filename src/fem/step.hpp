@@ -44,6 +44,24 @@ struct NodalForce
   std::string amplitude = {};
 };
 
+/// The temperature of one node at the end of a step (deck *TEMPERATURE, a problem file's
+/// `temperature:` load), as CalculiX applies it: without amplitude it goes linearly over the
+/// step from the node's temperature at the end of the step before (the initial temperature in
+/// the first; at once with `ramp = false`); with one it is value a(t).
+struct NodalTemperature
+{
+  int32_t node;
+  double value;
+  std::string amplitude = {};
+};
+
+/// The lowest temperature a problem may give: absolute zero in degrees Celsius. The unit is
+/// the user's (Celsius or kelvin, as in CalculiX); in kelvin every valid value is above it too.
+inline constexpr double absolute_zero_celsius = -273.15;
+/// Throws feticon::Error naming `what` for a temperature that is not finite or below absolute
+/// zero (absolute_zero_celsius).
+void check_temperature(double value, const std::string& what);
+
 struct Step
 {
   std::vector<DirichletCondition> dirichlet;
@@ -51,6 +69,9 @@ struct Step
   std::vector<FacePressure> pressures;
   std::vector<NodalForce> nodal_forces;
   std::vector<BodyLoad> body_loads; ///< gravity and centrifugal loads (fem/body_loads.hpp)
+  /// Temperatures in force in the step; a node not named goes to (or stays at) its initial
+  /// temperature (fem/temperature_history.hpp).
+  std::vector<NodalTemperature> temperatures;
   /// Load steps of the step; unset: the solver's (settings load_steps).
   std::optional<int> increments = {};
   double time = 1;  ///< the step's time period (*STATIC's), for amplitudes and the outputs

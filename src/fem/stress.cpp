@@ -7,11 +7,15 @@ namespace feticon::fem
 {
 std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& mesh, const la::Vector& u,
                                                               const std::vector<Material>& body_materials,
-                                                              Kinematics kinematics)
+                                                              Kinematics kinematics,
+                                                              const la::Vector& temperature_change)
 {
   std::vector<Eigen::Matrix<double, 6, 1>> stresses(mesh.n_cells());
+  const bool thermal = temperature_change.size() > 0;
   NodeCoords X, ue;
+  NodeTemperatures dT = NodeTemperatures::Zero();
   Eigen::MatrixX3d X_any, u_any;
+  Eigen::VectorXd dT_any;
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
   {
     const mesh::CellKind type = mesh.cells.kind(c);
@@ -20,21 +24,27 @@ std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& 
       const std::span<const int32_t> cell = mesh.cells[c];
       X_any.resize(static_cast<Eigen::Index>(cell.size()), 3);
       u_any.resize(X_any.rows(), 3);
+      dT_any.setZero(X_any.rows());
       for (size_t a = 0; a < cell.size(); ++a)
       {
         X_any.row(a) = mesh.nodes.row(cell[a]);
         u_any.row(a) = u.segment<3>(3 * cell[a]).transpose();
+        if (thermal)
+          dT_any(a) = temperature_change(cell[a]);
       }
-      stresses[c] = cell_cauchy_stress(type, X_any, u_any, body_materials[mesh.cell_body[c]], kinematics, c,
-                                       mesh.reduced(c) ? Integration::reduced : Integration::full);
+      stresses[c] =
+          cell_cauchy_stress(type, X_any, u_any, body_materials[mesh.cell_body[c]], kinematics, c,
+                             mesh.reduced(c) ? Integration::reduced : Integration::full, thermal ? &dT_any : nullptr);
       continue;
     }
     for (int a = 0; a < 8; ++a)
     {
       X.row(a) = mesh.nodes.row(mesh.cells[c][a]);
       ue.row(a) = u.segment<3>(3 * mesh.cells[c][a]).transpose();
+      if (thermal)
+        dT(a) = temperature_change(mesh.cells[c][a]);
     }
-    stresses[c] = hex8_cauchy_stress(X, ue, body_materials[mesh.cell_body[c]], kinematics, c);
+    stresses[c] = hex8_cauchy_stress(X, ue, body_materials[mesh.cell_body[c]], kinematics, c, thermal ? &dT : nullptr);
   }
   return stresses;
 }

@@ -11,9 +11,11 @@ namespace feticon::fem
 {
 /// Volume-averaged Cauchy stress of every cell (Pa), Voigt [11,22,33,12,23,31].
 /// @param u global displacement (3 DOFs per mesh node)
+/// @param temperature_change T - T_0 per mesh node (K); empty: none
 std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& mesh, const la::Vector& u,
                                                               const std::vector<Material>& body_materials,
-                                                              Kinematics kinematics);
+                                                              Kinematics kinematics,
+                                                              const la::Vector& temperature_change = {});
 
 /// Nodal average of cell stresses (each node: mean over its cells, within one body).
 std::vector<Eigen::Matrix<double, 6, 1>> nodal_average(const mesh::Mesh& mesh,

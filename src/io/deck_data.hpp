@@ -5,6 +5,7 @@
 
 #include "fem/amplitude.hpp"
 #include "fem/material.hpp"
+#include "fem/step.hpp"
 #include "io/deck.hpp"
 #include "io/deck_tokenizer.hpp"
 #include "mesh/mesh.hpp"
@@ -170,6 +171,7 @@ struct DeckLoadState
   std::map<std::pair<int32_t, int>, DeckValue> dload;
   /// (cell, 0 GRAV / 1 CENTRIF) -> the load.
   std::map<std::pair<int32_t, int>, DeckBodyLoad> body;
+  std::map<int32_t, DeckValue> temperature; ///< node -> *TEMPERATURE
 };
 
 struct DeckData
@@ -194,6 +196,7 @@ struct DeckData
   std::vector<DeckContactPair> pairs;
   std::vector<fem::LinearEquation> equations;
 
+  std::map<int32_t, double> initial_temperatures; ///< node -> *INITIAL CONDITIONS, TYPE=TEMPERATURE
   /// Supports given before the first *STEP (model data): in force in every step.
   std::map<int64_t, DeckValue> model_boundary;
   std::map<std::string, fem::Amplitude> amplitudes;  ///< *AMPLITUDE by name

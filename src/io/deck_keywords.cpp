@@ -22,7 +22,6 @@ constexpr int64_t largest_label = std::numeric_limits<int32_t>::max();
 
 /// Keywords that change nothing a static elastic contact run computes: read, reported.
 const std::map<std::string, std::string> inert_keywords = {
-    {"EXPANSION", "the run has no temperature field"},
     {"CONDUCTIVITY", "the run is mechanical only"},
     {"SPECIFIC HEAT", "the run is mechanical only"},
     {"GAP CONDUCTANCE", "the run is mechanical only"},
@@ -64,8 +63,6 @@ const std::map<std::string, std::string> unsupported_keywords = {
     {"RIGID BODY", "rigid bodies"},
     {"COUPLING", "coupling constraints"},
     {"MPC", "nonlinear multi-point constraints (linear ones: *EQUATION)"},
-    {"INITIAL CONDITIONS", "initial conditions"},
-    {"TEMPERATURE", "temperature loads"},
     {"SPRING", "spring elements"},
     {"DASHPOT", "dashpot elements"},
     {"MASS", "mass elements"},
@@ -245,6 +242,9 @@ private:
         {"MATERIAL", &KeywordReader::material},
         {"ELASTIC", &KeywordReader::elastic},
         {"DENSITY", &KeywordReader::density},
+        {"EXPANSION", &KeywordReader::expansion},
+        {"INITIAL CONDITIONS", &KeywordReader::initial_conditions},
+        {"TEMPERATURE", &KeywordReader::temperature},
         {"SOLID SECTION", &KeywordReader::solid_section},
         {"BOUNDARY", &KeywordReader::boundary},
         {"CLOAD", &KeywordReader::cload},
@@ -507,6 +507,83 @@ private:
     _data.materials[_material].density = rho;
     if (_tokens.next_data(line))
       fail_at(line.where, "temperature-dependent densities are not implemented by feticon (one data line)");
+  }
+
+  /// Isotropic alpha. ZERO= (CalculiX's reference temperature) does not change the thermal
+  /// strain of a constant alpha (fem/temperature_history.hpp), so it is read and not kept.
+  void expansion()
+  {
+    known_parameters({"TYPE", "ZERO", "USER"});
+    if (_material.empty())
+      throw Error(where() + " comes before any *MATERIAL");
+    if (_keyword.has("USER"))
+      throw Error(where() + ": USER (a user subroutine) is not implemented by feticon");
+    if (const std::string* type = _keyword.value("TYPE"); type && *type != "ISO")
+      throw Error(where() + ": TYPE=" + *type + " is not implemented by feticon (isotropic expansion, TYPE=ISO)");
+    if (const std::string* zero = _keyword.value("ZERO"); zero && !parse_deck_real(*zero))
+      throw Error(where() + ": ZERO=" + *zero + " is not a number");
+    DeckDataLine line;
+    if (!_tokens.next_data(line))
+      throw Error(where() + " needs a data line: the expansion coefficient");
+    _data.materials[_material].expansion = real(line, 0, "expansion coefficient");
+    if (_tokens.next_data(line))
+      fail_at(line.where,
+              "temperature-dependent expansion coefficients are not implemented by feticon (one data line)");
+  }
+
+  /// TYPE=TEMPERATURE: node or node set, T_0 (model data).
+  void initial_conditions()
+  {
+    known_parameters({"TYPE", "USER"});
+    const std::string type = required("TYPE");
+    if (type != "TEMPERATURE")
+      throw Error(where() + ": TYPE=" + type + " is not implemented by feticon (TYPE=TEMPERATURE)");
+    if (_keyword.has("USER"))
+      throw Error(where() + ": USER (a user subroutine) is not implemented by feticon");
+    if (_in_step)
+      throw Error(where() + " belongs to the model data, before the first *STEP");
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+    {
+      const double value = temperature_value(line);
+      for (const int32_t n : nodes(line, 0))
+        _data.initial_temperatures[n] = value;
+    }
+  }
+
+  /// Node or node set, T in the step (OP=NEW: the nodes not named go back to T_0).
+  void temperature()
+  {
+    known_parameters({"OP", "AMPLITUDE", "USER", "FILE", "BSTART", "FSTART", "BNSTART", "FNSTART", "SUBMODEL", "STEP",
+                      "TIME DELAY"});
+    for (const char* p : {"USER", "FILE", "BSTART", "FSTART", "BNSTART", "FNSTART", "SUBMODEL", "STEP", "TIME DELAY"})
+      if (_keyword.has(p))
+        throw Error(where() + ": " + p + " is not implemented by feticon (temperatures on data lines)");
+    if (!_in_step)
+      throw Error(where() + " belongs inside a *STEP");
+    const std::string amplitude = begin_load(_data.state.temperature);
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+    {
+      const double value = temperature_value(line);
+      for (const int32_t n : nodes(line, 0))
+        _data.state.temperature[n] = {value, amplitude};
+    }
+  }
+
+  /// Field 1 of a temperature line: finite and not below absolute zero.
+  double temperature_value(const DeckDataLine& line)
+  {
+    const double value = real(line, 1, "temperature");
+    try
+    {
+      fem::check_temperature(value, "the temperature");
+    }
+    catch (const Error& e)
+    {
+      fail_at(line.at(1), e.what());
+    }
+    return value;
   }
 
   void solid_section()

@@ -114,6 +114,7 @@ public:
     sets_and_surfaces();
     contact_pairs();
     load_stages();
+    initial_temperatures();
     amplitudes();
     equations();
   }
@@ -494,6 +495,27 @@ private:
     return out;
   }
 
+  /// The temperatures of the nodes that belong to a cell (a node without one has no strain).
+  std::vector<fem::NodalTemperature> temperatures(const std::map<int32_t, DeckValue>& given) const
+  {
+    std::vector<fem::NodalTemperature> out;
+    for (const auto& [node, value] : given)
+      if (const int32_t m = mesh_of(node); m >= 0)
+        out.push_back({m, value.value, value.amplitude});
+    return out;
+  }
+
+  /// *INITIAL CONDITIONS, TYPE=TEMPERATURE; 0 where none is given (CalculiX's default).
+  void initial_temperatures()
+  {
+    if (_d.initial_temperatures.empty())
+      return;
+    _p.initial_temperatures.assign(_p.mesh.n_nodes(), 0.0);
+    for (const auto& [node, value] : _d.initial_temperatures)
+      if (const int32_t m = mesh_of(node); m >= 0)
+        _p.initial_temperatures[m] = value;
+  }
+
   /// Plane strain as CalculiX decks state it (feticon export writes it so): u_z = 0 on every
   /// node in every step is the eliminated component, not a support.
   bool every_node_fixes_z() const
@@ -548,6 +570,7 @@ private:
       step.nodal_forces = nodal_forces(state.cload, name);
       step.pressures = pressures(state.dload, prefix + "pressure_");
       step.body_loads = body_loads(state.body);
+      step.temperatures = temperatures(state.temperature);
       step.time = _deck.steps[k].time;
       step.ramp = _deck.steps[k].ramp;
       // Step 1 takes the solver's load_steps, which the first *STATIC sets (--set may change it).

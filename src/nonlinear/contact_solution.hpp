@@ -70,7 +70,10 @@ struct RestartState
 
 struct ContactSolution
 {
-  la::Vector u;                            ///< global displacement, 3 per mesh node
+  la::Vector u; ///< global displacement, 3 per mesh node
+  /// T - T_0 per mesh node (K) at the load step of u (fem::TemperatureHistory); empty: the
+  /// problem has no temperatures. The stresses of the outputs subtract its thermal strain.
+  la::Vector temperature_change;
   contact::ContactConstraints constraints; ///< contact rows of the last solve
   la::Vector contact_lambda;               ///< their (row-normalized) multipliers
   /// With friction: the tangential rows of the last solve (of its contact rows) and their

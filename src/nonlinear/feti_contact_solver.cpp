@@ -12,6 +12,7 @@
 #include "dual/contact_qp.hpp"
 #include "dual/dual_penalty_problem.hpp"
 #include "dual/multiplier_memory.hpp"
+#include "fem/temperature_history.hpp"
 #include "nonlinear/load_stepping.hpp"
 #include "nonlinear/outer_convergence.hpp"
 #include "la/vector_space.hpp"
@@ -244,12 +245,14 @@ private:
   /// f_int and its assembled norm at the current u; throws (on every rank) where an element
   /// is inverted at u.
   void update_internal_force();
+  /// The subdomains' temperature change at load step `step` (problems with temperatures).
+  void set_temperatures(int step);
   /// The same where u is an outer iteration's result: an element inverted at u (on any rank)
   /// is the outer loop diverging, which a cutback may cure, not an error of the run; its
   /// message, the same on every rank, is returned and f_int is left as it was.
   std::optional<std::string> update_internal_force_at_iterate();
   /// max(||f(t_n)||, ||f_int(u)||): the scale of the relative residual (OuterConvergence).
-  double force_scale() const { return std::max({_f_step_norm, _f_int_norm, _force_floor}); }
+  double force_scale() const { return std::max({_f_step_norm, _f_int_norm, _thermal_force_norm, _force_floor}); }
   /// The QP tolerance of outer iteration k (SolverSettings::forcing).
   double qp_rtol(int k);
   /// Rows of the outer loop only where g < max(g_min, 0) + 0.05 master diagonals
@@ -369,7 +372,12 @@ private:
 
   // The current load step.
   int _step = 0;
-  la::Vector _f_step;      ///< f(t_n), stacked
+  la::Vector _f_step; ///< f(t_n), stacked
+  const fem::TemperatureHistory _temperatures;
+  la::Vector _temperature_change; ///< T - T_0 per mesh node at the current load step; empty: none
+  /// ||f_int(0)|| at the current temperatures, assembled: the load of the thermal strain on a
+  /// held body, the force scale of a run loaded by temperatures alone (f_int of its answer is 0).
+  double _thermal_force_norm = 0;
   double _f_step_norm = 0; ///< ||f(t_n)|| (fem::LoadHistory::external_force_norm)
   std::unique_ptr<decomposition::EqualityRows> _equality;
   int64_t _n_equality = 0;
@@ -401,7 +409,7 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
       _primal_space(owned_subdomain_space(*_decomp)),
       _system(std::make_unique<decomposition::SubdomainSystem>(
           *_decomp, problem.materials, settings.kinematics, settings.generalized_inverse, settings.factor_precision)),
-      _dirichlet(problem.all_constrained_dofs())
+      _dirichlet(problem.all_constrained_dofs()), _temperatures(problem)
 {
   _out.n_subdomains = _decomp->n_subdomains();
   if (!comm.serial())
@@ -611,6 +619,7 @@ int FetiContactSolve::restore(const ContactSolution& previous)
   _out.history = previous.history;
   _out.steps = previous.steps;
   _out.warnings = previous.warnings; // the floors of the steps before the checkpoint
+  set_temperatures(r.completed_steps);
   ScopedTimer t(_timers, "internal forces");
   update_internal_force();
   // A refreshed K_M(u) is rebuilt at the first outer iteration of the step, as it would
@@ -632,6 +641,23 @@ void FetiContactSolve::begin_load_step(int step, double)
   _equality_by_id.resize(0);
   _u_step_start = _decomp->gather_mean(_decomp->gather_stacked(_u));
   _step_start = {_u, _multipliers, _previous_active};
+  if (!_temperatures.empty())
+  {
+    // The step's temperatures change f_int(u) at the u it starts from.
+    set_temperatures(step);
+    ScopedTimer t(_timers, "internal forces");
+    update_internal_force();
+  }
+}
+
+void FetiContactSolve::set_temperatures(int step)
+{
+  if (_temperatures.empty())
+    return;
+  _temperature_change = _temperatures.change(_history.point(step));
+  _system->set_temperature_change(_temperature_change);
+  const la::Vector f_held = _system->internal_force(la::Vector::Zero(_u.size()));
+  _thermal_force_norm = _decomp->gather_sum(_decomp->gather_stacked(f_held)).norm();
 }
 
 bool FetiContactSolve::cut_back(int step)
@@ -1029,6 +1055,7 @@ void FetiContactSolve::end_load_step(const LoadStep& record)
     return; // u is not finite: the solution keeps the last converged step's
   const la::Vector u_stacked_global = _decomp->gather_stacked(_u);
   _out.u = _decomp->gather_mean(u_stacked_global);
+  _out.temperature_change = _temperature_change;
   if (!record.converged && record.floor.empty())
     return;
   RestartState& r = _out.restart;
