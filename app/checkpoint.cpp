@@ -118,7 +118,8 @@ nonlinear::OuterIteration outer_iteration_record(const nlohmann::json& h)
 void write_checkpoint(const std::filesystem::path& path, const nonlinear::ContactSolution& solution)
 {
   const auto& r = solution.restart;
-  const std::string json = records(solution).dump();
+  // Warnings echo deck bytes that need not be UTF-8: replaced (U+FFFD), not a failed checkpoint.
+  const std::string json = records(solution).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   feticon::write_file_atomically(path, [&](std::ostream& os) {
     os.write(magic, 8);
     write_block(os, r.u_stacked.data(), r.u_stacked.size());

@@ -285,6 +285,8 @@ void prepare_output_folder(const std::filesystem::path& out_dir, bool overwrite)
 
 void write_json(const std::filesystem::path& path, const nlohmann::ordered_json& json)
 {
-  feticon::write_file_atomically(path, json.dump(2) + "\n");
+  // A deck's bytes that are not UTF-8 (echoed in a warning) become U+FFFD rather than a failed
+  // summary of a completed run.
+  feticon::write_file_atomically(path, json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 } // namespace feticon::app
