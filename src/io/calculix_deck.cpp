@@ -230,10 +230,37 @@ void write_materials(std::ostream& out, const fem::Problem& problem)
   {
     const fem::Material& m = problem.materials[b];
     out << "*MATERIAL, NAME=" << deck_name("M_", mesh.body_names[b]) << "\n*ELASTIC\n"
-        << number(m.young) << ", " << number(m.poisson) << '\n'
-        << "*SOLID SECTION, ELSET=" << deck_name("B_", mesh.body_names[b])
+        << number(m.young) << ", " << number(m.poisson) << '\n';
+    if (m.expansion != 0)
+      out << "*EXPANSION\n" << number(m.expansion) << '\n';
+    out << "*SOLID SECTION, ELSET=" << deck_name("B_", mesh.body_names[b])
         << ", MATERIAL=" << deck_name("M_", mesh.body_names[b]) << '\n';
   }
+}
+
+/// *INITIAL CONDITIONS, TYPE=TEMPERATURE of the nodes whose T_0 is not 0 (CalculiX's default).
+void write_initial_temperatures(std::ostream& out, const fem::Problem& problem)
+{
+  bool header = false;
+  for (size_t n = 0; n < problem.initial_temperatures.size(); ++n)
+    if (problem.initial_temperatures[n] != 0)
+    {
+      if (!header)
+        out << "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n";
+      header = true;
+      out << n + 1 << ", " << number(problem.initial_temperatures[n]) << '\n';
+    }
+}
+
+/// A step's *TEMPERATURE, OP=NEW (the nodes it does not name go back to T_0, as in
+/// fem::TemperatureHistory); nothing for a problem without temperatures.
+void write_temperatures(std::ostream& out, const fem::Problem& problem, const fem::Step& step)
+{
+  if (!problem.has_temperatures())
+    return;
+  out << "*TEMPERATURE, OP=NEW\n";
+  for (const fem::NodalTemperature& t : step.temperatures)
+    out << t.node + 1 << ", " << number(t.value) << '\n';
 }
 
 /// Per contact pair: its two *SURFACEs, a linear pressure-overclosure interaction (with
@@ -363,7 +390,9 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
       out << "*NODE PRINT, NSET=" << deck_name("N_", name) << ", TOTALS=ONLY\nRF\n";
     out << "*END STEP\n";
   };
+  write_initial_temperatures(out, problem);
   write_step(out, problem, options, summary);
+  write_temperatures(out, problem, problem.steps.front());
   output_requests();
   if (problem.steps.size() > 1)
   {
@@ -372,6 +401,7 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
     {
       write_later_step(out, history, stage, problem.steps[stage - 1].increments.value_or(options.increments), options,
                        summary);
+      write_temperatures(out, problem, problem.steps[stage - 1]);
       output_requests();
     }
   }

@@ -19,8 +19,9 @@ namespace feticon::io
 {
 namespace
 {
-const std::set<std::string> structured_keys = {"mesh",  "bodies", "plane_strain", "supports",
-                                               "loads", "steps",  "amplitudes",   "contact"};
+const std::set<std::string> structured_keys = {"mesh",       "bodies",       "plane_strain",        "supports",
+                                               "loads",      "temperatures", "initial_temperature", "steps",
+                                               "amplitudes", "contact"};
 
 std::vector<std::string> split_path(const std::string& path)
 {
@@ -397,7 +398,8 @@ ProblemFile with_overrides(ProblemFile file, const std::vector<std::string>& ove
   {
     file.deck = std::filesystem::absolute(file.folder / file.root["mesh"]["file"].Scalar());
     file.deck_outline = deck_outline(file.deck);
-    for (const char* section : {"bodies", "plane_strain", "supports", "loads", "steps", "amplitudes", "contact"})
+    for (const char* section : {"bodies", "plane_strain", "supports", "loads", "temperatures", "initial_temperature",
+                                "steps", "amplitudes", "contact"})
       FETICON_CHECK(!file.root[section],
                     file.source << ": section '" << section << "' is not read when mesh.file is "
                                 << "an input deck: the deck gives the whole model");
@@ -494,11 +496,13 @@ fem::Problem build_custom_problem(const ProblemFile& file)
   {
     const YAML::Node body = root["bodies"][name];
     FETICON_CHECK(body, file.source << ": bodies." << name << " is missing (young, poisson)");
-    r.only_keys(body, "bodies." + name, {"young", "poisson", "density"});
+    r.only_keys(body, "bodies." + name, {"young", "poisson", "density", "expansion"});
     fem::Material m{r.number(body["young"], "bodies." + name + ".young"),
                     r.number(body["poisson"], "bodies." + name + ".poisson")};
     if (body["density"])
       m.density = r.number(body["density"], "bodies." + name + ".density");
+    if (body["expansion"])
+      m.expansion = r.number(body["expansion"], "bodies." + name + ".expansion");
     m.check(file.source + ": bodies." + name);
     p.materials.push_back(m);
   }

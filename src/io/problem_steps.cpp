@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace feticon::io
 {
@@ -120,6 +121,82 @@ std::vector<fem::DirichletCondition> supports(const YAML::Node& list, const std:
   return out;
 }
 
+/// The nodes a temperature entry names: its node `set`, the nodes of its `body`, or every node.
+std::vector<int32_t> temperature_nodes(const YAML::Node& t, const std::string& key, const ProblemReader& r,
+                                       const mesh::Mesh& mesh)
+{
+  FETICON_CHECK(!(t["set"] && t["body"]), r.source << ": " << key << ": set or body, not both");
+  if (t["set"])
+  {
+    const std::string set = r.text(t["set"], key + ".set");
+    FETICON_CHECK(mesh.node_sets.count(set),
+                  r.source << ": " << key << ".set: no node set '" << set
+                           << "' in the mesh; it has: " << names_of(mesh.node_sets));
+    return mesh.node_sets.at(set);
+  }
+  std::vector<char> named(static_cast<size_t>(mesh.n_nodes()), t["body"] ? 0 : 1);
+  if (t["body"])
+  {
+    const std::string body = r.text(t["body"], key + ".body");
+    const auto it = std::find(mesh.body_names.begin(), mesh.body_names.end(), body);
+    FETICON_CHECK(it != mesh.body_names.end(),
+                  r.source << ": " << key << ".body: the mesh has no body '" << body << "'");
+    const auto index = static_cast<int32_t>(it - mesh.body_names.begin());
+    for (int32_t c = 0; c < mesh.n_cells(); ++c)
+      if (mesh.cell_body[c] == index)
+        for (const int32_t n : mesh.cells[c])
+          named[n] = 1;
+  }
+  std::vector<int32_t> nodes;
+  for (int32_t n = 0; n < mesh.n_nodes(); ++n)
+    if (named[n])
+      nodes.push_back(n);
+  return nodes;
+}
+
+/// `temperatures:` [{set | body, value, amplitude}, ...] (neither set nor body: every node): the
+/// nodes' temperatures in the step (a node named twice takes the later entry's).
+std::vector<fem::NodalTemperature> temperatures(const YAML::Node& list, const std::string& where,
+                                                const ProblemReader& r, fem::Problem& p)
+{
+  FETICON_CHECK(list.IsSequence(), r.source << ": " << where << " must be a list of {set or body, value}");
+  std::map<int32_t, fem::NodalTemperature> by_node;
+  for (size_t i = 0; i < list.size(); ++i)
+  {
+    const YAML::Node t = list[i];
+    const std::string key = where + "." + std::to_string(i);
+    r.only_keys(t, key, {"set", "body", "value", "amplitude"});
+    const double value = r.number(t["value"], key + ".value");
+    fem::check_temperature(value, r.source + ": " + key + ".value");
+    const std::string amplitude = amplitude_of(t, key, r, p);
+    for (const int32_t n : temperature_nodes(t, key, r, p.mesh))
+      by_node[n] = {n, value, amplitude};
+  }
+  std::vector<fem::NodalTemperature> out;
+  for (const auto& [node, t] : by_node)
+    out.push_back(t);
+  return out;
+}
+
+/// `initial_temperature:` one value for every node, or [{set or body, value}, ...] over 0 elsewhere.
+void initial_temperatures(const YAML::Node& node, const ProblemReader& r, fem::Problem& p)
+{
+  if (node.IsScalar())
+  {
+    const double value = r.number(node, "initial_temperature");
+    fem::check_temperature(value, r.source + ": initial_temperature");
+    p.initial_temperatures.assign(p.mesh.n_nodes(), value);
+    return;
+  }
+  FETICON_CHECK(node.IsSequence(), r.source << ": initial_temperature must be a number or a list of {set, value}");
+  p.initial_temperatures.assign(p.mesh.n_nodes(), 0.0);
+  for (const fem::NodalTemperature& t : temperatures(node, "initial_temperature", r, p))
+  {
+    FETICON_CHECK(t.amplitude.empty(), r.source << ": initial_temperature takes no amplitude");
+    p.initial_temperatures[t.node] = t.value;
+  }
+}
+
 /// A step's loads: tractions and body loads (its other load kinds are cleared).
 void loads(const YAML::Node& list, const std::string& where, const ProblemReader& r, fem::Problem& p, fem::Step& step)
 {
@@ -154,9 +231,11 @@ void loads(const YAML::Node& list, const std::string& where, const ProblemReader
 void step_entry(const YAML::Node& entry, const std::string& key, const ProblemReader& r, fem::Problem& p,
                 fem::Step& step)
 {
-  r.only_keys(entry, key, {"supports", "loads", "increments", "time", "ramp"});
+  r.only_keys(entry, key, {"supports", "loads", "temperatures", "increments", "time", "ramp"});
   if (entry["supports"])
     step.dirichlet = supports(entry["supports"], key + ".supports", r, p);
+  if (entry["temperatures"])
+    step.temperatures = temperatures(entry["temperatures"], key + ".temperatures", r, p);
   if (entry["loads"])
     loads(entry["loads"], key + ".loads", r, p, step);
   step.increments.reset();
@@ -190,9 +269,13 @@ void read_steps(const YAML::Node& root, const ProblemReader& r, fem::Problem& p)
       p.amplitudes[name] = amplitude(kv.second, "amplitudes." + name, r);
     }
   }
+  if (root["initial_temperature"])
+    initial_temperatures(root["initial_temperature"], r, p);
   fem::Step first;
   if (root["supports"])
     first.dirichlet = supports(root["supports"], "supports", r, p);
+  if (root["temperatures"])
+    first.temperatures = temperatures(root["temperatures"], "temperatures", r, p);
   if (root["loads"])
     loads(root["loads"], "loads", r, p, first);
   p.steps = {first};

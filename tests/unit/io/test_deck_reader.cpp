@@ -455,6 +455,38 @@ TEST(DeckReader, AmplitudesOnLoadsAndSteps)
   EXPECT_EQ(p.steps[1].time, 1.0);
 }
 
+// Temperatures (issue 65, item 4): *EXPANSION in the material, *INITIAL CONDITIONS,
+// TYPE=TEMPERATURE of the model, *TEMPERATURE per step carried over (OP=MOD) and cleared
+// (OP=NEW, the nodes it does not name back to T_0). Reference: the deck's own numbers.
+TEST(DeckReader, TemperaturesAndExpansion)
+{
+  const auto dir = test::fresh_directory("deck_temperatures");
+  std::string text = two_cubes;
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  replace("*ELASTIC\n", "*EXPANSION, ZERO=20.\n1.2e-5\n*ELASTIC\n");
+  replace("*STEP, NLGEOM", "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nall, 20.\n*STEP, NLGEOM");
+  replace("*END STEP\n*STEP\n",
+          "*TEMPERATURE, AMPLITUDE=ramp2\ntop, 120.\n*END STEP\n*STEP\n"
+          "*TEMPERATURE, OP=NEW\n15, 70.\n");
+  replace("*STEP, NLGEOM", "*AMPLITUDE, NAME=ramp2\n0, 0, 1, 2\n*STEP, NLGEOM");
+  const fem::Problem p = read_deck(write(dir, "two_cubes.inp", text)).problem;
+  for (const fem::Material& m : p.materials)
+    EXPECT_EQ(m.expansion, 1.2e-5);
+  ASSERT_EQ(p.initial_temperatures.size(), 16u);
+  EXPECT_EQ(p.initial_temperatures[0], 20.0);
+  ASSERT_EQ(p.steps.size(), 2u);
+  ASSERT_EQ(p.steps[0].temperatures.size(), 4u); // the set top
+  EXPECT_EQ(p.steps[0].temperatures[0].value, 120.0);
+  EXPECT_EQ(p.steps[0].temperatures[0].amplitude, "RAMP2");
+  ASSERT_EQ(p.steps[1].temperatures.size(), 1u); // OP=NEW: node 15 alone
+  EXPECT_EQ(p.steps[1].temperatures[0].value, 70.0);
+  EXPECT_EQ(p.steps[1].temperatures[0].amplitude, "");
+}
+
 TEST(DeckReader, IncludeContinuationAndNodeSurface)
 {
   const auto dir = test::fresh_directory("deck_include");
@@ -541,6 +573,15 @@ TEST(DeckReader, MalformedDecksEndInOneLineNamingFileAndLine)
        "two_cubes.inp:52: *STEP: AMPLITUDE=SINE must be RAMP or STEP"},
       {"*DLOAD\n2, P2, 1e6", "*DLOAD, AMPLITUDE=A\n2, P2, 1e6\n*AMPLITUDE, NAME=A\n0, 0, 1, 1",
        "the *DLOAD on element 2, face 2 has no amplitude, in the step before AMPLITUDE=A"},
+      {"*ELASTIC\n", "*EXPANSION, TYPE=ORTHO\n1e-5, 1e-5, 2e-5\n*ELASTIC\n",
+       "*EXPANSION: TYPE=ORTHO is not implemented by feticon (isotropic expansion, TYPE=ISO)"},
+      {"*ELASTIC\n", "*EXPANSION\n1e-5, 20\n1.1e-5, 100\n*ELASTIC\n",
+       "temperature-dependent expansion coefficients are not implemented by feticon"},
+      {"*STEP, NLGEOM", "*INITIAL CONDITIONS, TYPE=STRESS\n1, 1e6\n*STEP, NLGEOM",
+       "*INITIAL CONDITIONS: TYPE=STRESS is not implemented by feticon (TYPE=TEMPERATURE)"},
+      {"*STEP, NLGEOM", "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nall, inf\n*STEP, NLGEOM",
+       "is not a finite number (temperature)"},
+      {"*CLOAD\n17, 3, -10.0", "*TEMPERATURE\n99, 100.", "two_cubes.inp:60:1: *TEMPERATURE: node 99 is not defined"},
   };
   for (const Case& c : cases)
   {
