@@ -61,6 +61,15 @@ std::string amplitude_of(const YAML::Node& entry, const std::string& key, const 
   return key;
 }
 
+/// The index of the body an entry's `body:` names.
+int32_t body_of(const YAML::Node& entry, const std::string& key, const ProblemReader& r, const mesh::Mesh& mesh)
+{
+  const std::string body = r.text(entry["body"], key + ".body");
+  const auto it = std::find(mesh.body_names.begin(), mesh.body_names.end(), body);
+  FETICON_CHECK(it != mesh.body_names.end(), r.source << ": " << key << ".body: the mesh has no body '" << body << "'");
+  return static_cast<int32_t>(it - mesh.body_names.begin());
+}
+
 fem::BodyLoad body_load(const YAML::Node& load, const std::string& key, const mesh::Mesh& mesh, const ProblemReader& r)
 {
   r.only_keys(load, key, {"gravity", "centrifugal", "body"});
@@ -82,11 +91,7 @@ fem::BodyLoad body_load(const YAML::Node& load, const std::string& key, const me
   }
   if (load["body"])
   {
-    const std::string body = r.text(load["body"], key + ".body");
-    const auto it = std::find(mesh.body_names.begin(), mesh.body_names.end(), body);
-    FETICON_CHECK(it != mesh.body_names.end(),
-                  r.source << ": " << key << ".body: the mesh has no body '" << body << "'");
-    const auto index = static_cast<int32_t>(it - mesh.body_names.begin());
+    const int32_t index = body_of(load, key, r, mesh);
     for (size_t c = 0; c < mesh.cells.size(); ++c)
       if (mesh.cell_body[c] == index)
         out.cells.push_back(static_cast<int32_t>(c));
@@ -137,11 +142,7 @@ std::vector<int32_t> temperature_nodes(const YAML::Node& t, const std::string& k
   std::vector<char> named(static_cast<size_t>(mesh.n_nodes()), t["body"] ? 0 : 1);
   if (t["body"])
   {
-    const std::string body = r.text(t["body"], key + ".body");
-    const auto it = std::find(mesh.body_names.begin(), mesh.body_names.end(), body);
-    FETICON_CHECK(it != mesh.body_names.end(),
-                  r.source << ": " << key << ".body: the mesh has no body '" << body << "'");
-    const auto index = static_cast<int32_t>(it - mesh.body_names.begin());
+    const int32_t index = body_of(t, key, r, mesh);
     for (int32_t c = 0; c < mesh.n_cells(); ++c)
       if (mesh.cell_body[c] == index)
         for (const int32_t n : mesh.cells[c])
