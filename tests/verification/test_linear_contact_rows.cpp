@@ -17,8 +17,8 @@ using namespace feticon;
 
 namespace
 {
-test::FetiContactRun run(const fem::Problem& problem, double band,
-                         dual::DualPreconditioner preconditioner = dual::DualPreconditioner::dirichlet)
+test::FetiContactRun run_with_band(const fem::Problem& problem, double band,
+                                   dual::DualPreconditioner preconditioner = dual::DualPreconditioner::dirichlet)
 {
   nonlinear::SolverSettings s;
   s.kinematics = fem::Kinematics::linear;
@@ -34,10 +34,11 @@ TEST(LinearContactRows, RowsNearContactGiveTheAnswerOfEveryRow)
   problems::HertzParameters parameters;
   parameters.mesh.refinement = 1;
   const fem::Problem problem = problems::hertz_problem(parameters);
-  const test::FetiContactRun every = run(problem, 1e300);
-  const test::FetiContactRun near = run(problem, 0.25);   // the default
-  const test::FetiContactRun narrow = run(problem, 0.02); // too few rows at first: more QPs
-  const test::FetiContactRun lumped = run(problem, 0.25, dual::DualPreconditioner::lumped); // no Schur boundary
+  const test::FetiContactRun every = run_with_band(problem, 1e300);
+  const test::FetiContactRun near = run_with_band(problem, 0.25);   // the default
+  const test::FetiContactRun narrow = run_with_band(problem, 0.02); // too few rows at first: more QPs
+  const test::FetiContactRun lumped =
+      run_with_band(problem, 0.25, dual::DualPreconditioner::lumped); // no Schur boundary
   std::printf("MPRGP steps: every row %d, band 0.25 %d, band 0.02 %d in %zu QPs; dual sizes %lld / %lld\n", every.mprgp,
               near.mprgp, narrow.mprgp, narrow.solution.history.size(), static_cast<long long>(every.solution.n_dual),
               static_cast<long long>(near.solution.n_dual));

@@ -1,8 +1,7 @@
 /// A shrink fit by temperature (issue 65, item 4): a ring cooled onto a hub, frictionless, in
 /// plane strain, against Lame's solution with the thermal interference.
 
-#include "mesh/box.hpp"
-#include "mesh/cell_conversion.hpp"
+#include "annulus_mesh.hpp"
 #include "nonlinear/contact_pressure.hpp"
 #include "nonlinear/feti_contact_solver.hpp"
 
@@ -14,36 +13,11 @@
 
 using namespace feticon;
 
-namespace
+namespace shrink_fit_model
 {
 constexpr double young = 2.1e11, poisson = 0.3, alpha = 1.2e-5;
 constexpr double a = 0.01, b = 0.05, c = 0.1; ///< hub bore, interface and ring outer radii (m)
 constexpr double thickness = 0.005;           ///< one cell through z (m)
-
-/// Edge nodes of quadratic cells on the circle through both ends when they are at one radius
-/// (the interface and the rims stay round), at the midpoint otherwise.
-Eigen::Vector3d on_circle(const Eigen::Vector3d& p, const Eigen::Vector3d& q)
-{
-  Eigen::Vector3d m = 0.5 * (p + q);
-  const double rp = std::hypot(p.x(), p.y()), rq = std::hypot(q.x(), q.y());
-  if (std::abs(rp - rq) < 1e-12 * rp)
-    m.head<2>() *= rp / m.head<2>().norm();
-  return m;
-}
-
-/// A quarter annulus r in [r0, r1], theta in [0, pi/2], z in [0, thickness], of hex8 or hex20
-/// cells: side "xmin" is r = r0, "xmax" r = r1, "ymin" the plane y = 0, "ymax" the plane x = 0.
-mesh::Mesh quarter_annulus(double r0, double r1, int n_r, int n_theta, mesh::CellKind kind, const std::string& name)
-{
-  const mesh::Mesh hex = mesh::generate_mapped_block(
-      {n_r, n_theta, 1},
-      [&](int32_t i, int32_t j, int32_t k) {
-    const double r = r0 + (r1 - r0) * i / n_r, theta = std::numbers::pi / 2 * j / n_theta;
-    return Eigen::Vector3d(r * std::cos(theta), r * std::sin(theta), thickness * k);
-      },
-      name);
-  return kind == mesh::CellKind::hex8 ? hex : mesh::convert_hex8_mesh(hex, kind, on_circle);
-}
 
 /// Hub (a, b) and ring (b, c), touching at r = b with matching nodes; the ring's nodes at
 /// T - T_0 = delta_T, the hub's at T_0; symmetry planes x = 0 and y = 0, u_z = 0 on both faces
@@ -52,9 +26,9 @@ fem::Problem shrink_fit(mesh::CellKind kind, int n_r, int n_theta, double delta_
 {
   fem::Problem p;
   p.name = "shrink fit";
-  p.mesh = quarter_annulus(a, b, n_r, n_theta, kind, "hub");
+  p.mesh = test::quarter_annulus(a, b, thickness, n_r, n_theta, kind, "hub");
   const int32_t hub_nodes = p.mesh.n_nodes();
-  mesh::append_mesh(p.mesh, quarter_annulus(b, c, n_r, n_theta, kind, "ring"), "ring_");
+  mesh::append_mesh(p.mesh, test::quarter_annulus(b, c, thickness, n_r, n_theta, kind, "ring"), "ring_");
   p.materials.assign(2, fem::Material{young, poisson});
   for (fem::Material& m : p.materials)
     m.expansion = alpha;
@@ -93,7 +67,7 @@ nonlinear::SolverSettings settings(fem::Kinematics kinematics)
   s.subdomains = 4;
   return s;
 }
-} // namespace
+} // namespace shrink_fit_model
 
 // Reference: Lame (thick cylinders in plane strain, above), p = 1.309e8 Pa for a ring cooled by
 // 100 K. The interface pressure is the pair's normal force over the interface's area
@@ -103,6 +77,7 @@ nonlinear::SolverSettings settings(fem::Kinematics kinematics)
 // (contact/mortar_constraints.cpp, row_normal), 1.9 degrees off the radius here.
 TEST(ShrinkFit, CooledRingOnHubMatchesLame)
 {
+  using namespace shrink_fit_model;
   const double delta_T = -100;
   const double expected = lame_pressure(delta_T);
   struct Case
