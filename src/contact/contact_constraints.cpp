@@ -248,6 +248,14 @@ ContactConstraints concatenate_pairs(std::vector<ContactConstraints> parts, la::
   return out;
 }
 
+ContactConstraints no_rows(ContactFormulation formulation, la::Index n_global_dofs)
+{
+  ContactConstraints out;
+  out.formulation = formulation;
+  ContactRowBuilder().finish(n_global_dofs, out);
+  return out;
+}
+
 ContactConstraints without_rows(const ContactConstraints& rows)
 {
   ContactConstraints out;

@@ -228,6 +228,10 @@ ContactConstraints concatenate_pairs(std::vector<ContactConstraints> parts, la::
 /// outputs of one pair.
 ContactConstraints pair_rows(const ContactConstraints& rows, int32_t p);
 
+/// @brief No rows over n_global_dofs DOFs, of a pair of formulation `formulation` (a pair out of
+/// force in a step, among the parts of concatenate_pairs).
+ContactConstraints no_rows(ContactFormulation formulation, la::Index n_global_dofs);
+
 /// @brief `rows` without its rows: the figures of the search (formulation, search distance,
 /// slave counts), for a subset of its rows to be built into (ContactRowBuilder::finish).
 ContactConstraints without_rows(const ContactConstraints& rows);

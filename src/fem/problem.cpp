@@ -198,6 +198,9 @@ void Problem::validate_step(size_t step) const
     }
     for (const auto& b : s.body_loads)
       amplitude_known(b.amplitude, b.where);
+    for (const int32_t pair : s.removed_contacts)
+      FETICON_CHECK(pair >= 0 && pair < std::ssize(contacts),
+                    "the step removes contact pair " << pair << ", the problem has " << contacts.size());
     for (const auto& t : s.temperatures)
     {
       FETICON_CHECK(t.node >= 0 && t.node < mesh.n_nodes(), "a temperature names node " << t.node << ", out of range");

@@ -72,6 +72,9 @@ struct Step
   /// Temperatures in force in the step; a node not named goes to (or stays at) its initial
   /// temperature (fem/temperature_history.hpp).
   std::vector<NodalTemperature> temperatures;
+  /// Contact pairs (indices into Problem::contacts) out of force in the step: no rows, no
+  /// pressure (deck *MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE; ADD puts one back).
+  std::vector<int32_t> removed_contacts = {};
   /// Load steps of the step; unset: the solver's (settings load_steps).
   std::optional<int> increments = {};
   double time = 1;  ///< the step's time period (*STATIC's), for amplitudes and the outputs

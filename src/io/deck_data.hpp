@@ -172,6 +172,8 @@ struct DeckLoadState
   /// (cell, 0 GRAV / 1 CENTRIF) -> the load.
   std::map<std::pair<int32_t, int>, DeckBodyLoad> body;
   std::map<int32_t, DeckValue> temperature; ///< node -> *TEMPERATURE
+  /// (slave, master) of the pairs *MODEL CHANGE, REMOVE took out -> the line that did
+  std::map<std::pair<std::string, std::string>, std::string> removed_pairs;
 };
 
 struct DeckData

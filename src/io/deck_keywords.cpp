@@ -74,7 +74,6 @@ const std::map<std::string, std::string> unsupported_keywords = {
     {"RADIATE", "heat transfer"},
     {"SUBMODEL", "submodels"},
     {"CHANGE SURFACE BEHAVIOR", "contact laws that change between steps"},
-    {"MODEL CHANGE", "elements removed or added between steps"},
     {"DISTRIBUTING COUPLING", "coupling constraints"},
 };
 
@@ -245,6 +244,7 @@ private:
         {"EXPANSION", &KeywordReader::expansion},
         {"INITIAL CONDITIONS", &KeywordReader::initial_conditions},
         {"TEMPERATURE", &KeywordReader::temperature},
+        {"MODEL CHANGE", &KeywordReader::model_change},
         {"SOLID SECTION", &KeywordReader::solid_section},
         {"BOUNDARY", &KeywordReader::boundary},
         {"CLOAD", &KeywordReader::cload},
@@ -568,6 +568,32 @@ private:
       const double value = temperature_value(line);
       for (const int32_t n : nodes(line, 0))
         _data.state.temperature[n] = {value, amplitude};
+    }
+  }
+
+  /// TYPE=CONTACT PAIR, ADD or REMOVE: data lines "slave surface, master surface" of pairs
+  /// taken out of the step (and the next ones) or put back.
+  void model_change()
+  {
+    known_parameters({"TYPE", "ADD", "REMOVE"});
+    if (!_in_step)
+      throw Error(where() + " belongs inside a *STEP");
+    const std::string type = required("TYPE");
+    if (type != "CONTACT PAIR")
+      throw Error(where() + ": TYPE=" + type + " is not implemented by feticon (TYPE=CONTACT PAIR)");
+    if (_keyword.has("ADD") == _keyword.has("REMOVE"))
+      throw Error(where() + " needs one of ADD and REMOVE");
+    const bool remove = _keyword.has("REMOVE");
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+    {
+      if (line.fields.size() < 2 || line.fields[0].empty() || line.fields[1].empty())
+        fail_at(line.where, "a *MODEL CHANGE line names a pair: slave surface, master surface");
+      const std::pair<std::string, std::string> pair{name_of(line.fields[0]), name_of(line.fields[1])};
+      if (remove)
+        _data.state.removed_pairs[pair] = line.where.str();
+      else
+        _data.state.removed_pairs.erase(pair);
     }
   }
 

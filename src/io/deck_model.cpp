@@ -505,6 +505,24 @@ private:
     return out;
   }
 
+  /// The indices of the pairs *MODEL CHANGE took out (a name that is no pair is an error).
+  std::vector<int32_t> removed_contacts(const std::map<std::pair<std::string, std::string>, std::string>& removed) const
+  {
+    std::vector<int32_t> out;
+    for (const auto& [names, where] : removed)
+    {
+      const auto it = std::find_if(_d.pairs.begin(), _d.pairs.end(), [&](const DeckContactPair& p) {
+        return p.slave == names.first && p.master == names.second;
+      });
+      FETICON_CHECK(it != _d.pairs.end(),
+                    where << ": *MODEL CHANGE: no *CONTACT PAIR has slave " << names.first << " and master "
+                          << names.second);
+      out.push_back(static_cast<int32_t>(it - _d.pairs.begin()));
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
   /// *INITIAL CONDITIONS, TYPE=TEMPERATURE; 0 where none is given (CalculiX's default).
   void initial_temperatures()
   {
@@ -571,6 +589,7 @@ private:
       step.pressures = pressures(state.dload, prefix + "pressure_");
       step.body_loads = body_loads(state.body);
       step.temperatures = temperatures(state.temperature);
+      step.removed_contacts = removed_contacts(state.removed_pairs);
       step.time = _deck.steps[k].time;
       step.ramp = _deck.steps[k].ramp;
       // Step 1 takes the solver's load_steps, which the first *STATIC sets (--set may change it).

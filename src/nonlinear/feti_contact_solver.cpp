@@ -247,6 +247,8 @@ private:
   void update_internal_force();
   /// The subdomains' temperature change at load step `step` (problems with temperatures).
   void set_temperatures(int step);
+  /// The pairs in force in load step `step`'s step (the others' rows are not built).
+  void set_pairs_in_force(int step);
   /// The same where u is an outer iteration's result: an element inverted at u (on any rank)
   /// is the outer loop diverging, which a cutback may cure, not an error of the run; its
   /// message, the same on every rank, is returned and f_int is left as it was.
@@ -353,6 +355,7 @@ private:
   double _force_floor = 0;
   /// Every contact pair, and the interaction each is solved with (SolverSettings::interaction).
   std::vector<contact::ContactPair> _pairs;
+  std::vector<char> _pair_in_force; ///< per pair, in the current load step's step (*MODEL CHANGE)
   std::vector<fem::ContactInteraction> _interactions;
   bool _friction = false; ///< some pair has friction: every contact row gets its tangential rows
   contact::ContactOptions _contact_options;
@@ -428,6 +431,7 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
     _interactions.push_back(settings.interaction(pair));
     _friction = _friction || _interactions.back().friction.model != FrictionModel::none;
   }
+  _pair_in_force.assign(_pairs.size(), 1);
   _contact_options.search_distance = settings.search_distance;
   const bool dirichlet = settings.dual.preconditioner == dual::DualPreconditioner::dirichlet;
   if (dirichlet || _linear)
@@ -485,7 +489,10 @@ contact::ContactConstraints FetiContactSolve::pair_rows_at(const la::Vector& u_g
   for (size_t p = 0; p < _pairs.size(); ++p)
   {
     options.formulation = _interactions[p].formulation;
-    parts.push_back(contact::build_contact_constraints(_problem.mesh, u_global, _pairs[p], options));
+    if (_pair_in_force[p])
+      parts.push_back(contact::build_contact_constraints(_problem.mesh, u_global, _pairs[p], options));
+    else
+      parts.push_back(contact::no_rows(options.formulation, 3 * static_cast<la::Index>(_problem.mesh.n_nodes())));
   }
   return contact::concatenate_pairs(std::move(parts), 3 * static_cast<la::Index>(_problem.mesh.n_nodes()));
 }
@@ -630,6 +637,7 @@ int FetiContactSolve::restore(const ContactSolution& previous)
 void FetiContactSolve::begin_load_step(int step, double)
 {
   _step = step;
+  set_pairs_in_force(step);
   fem::ConstrainedDofs target = _history.prescribed(step);
   _f_step = _history.combine(step, _f_terms_stacked);
   _f_step_norm = _history.external_force_norm(step);
@@ -648,6 +656,15 @@ void FetiContactSolve::begin_load_step(int step, double)
     ScopedTimer t(_timers, "internal forces");
     update_internal_force();
   }
+}
+
+void FetiContactSolve::set_pairs_in_force(int step)
+{
+  _pair_in_force.assign(_pairs.size(), 1);
+  for (const int32_t p : _problem.steps[_history.point(step).stage - 1].removed_contacts)
+    _pair_in_force[p] = 0;
+  if (_linear_rows)
+    _linear_rows->set_pairs_in_force(_pair_in_force);
 }
 
 void FetiContactSolve::set_temperatures(int step)

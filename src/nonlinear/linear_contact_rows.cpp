@@ -42,18 +42,24 @@ LinearContactRows::LinearContactRows(const mesh::Mesh& mesh, const std::vector<s
     _selected[i] = _candidates.gap[i] < std::max(smallest[_candidates.pair[i]], 0.0) + _band_gap[i];
 }
 
-contact::ContactConstraints LinearContactRows::selected_rows(const la::Vector& u) const { return subset(_selected, u); }
+contact::ContactConstraints LinearContactRows::selected_rows(const la::Vector& u) const
+{
+  std::vector<char> keep = _selected;
+  for (size_t i = 0; i < keep.size(); ++i)
+    keep[i] = keep[i] && in_force(static_cast<la::Index>(i));
+  return subset(keep, u);
+}
 
 bool LinearContactRows::expand(const la::Vector& u)
 {
   const la::Vector gap = linearized_gaps(_candidates, u);
   bool penetrates = false;
   for (la::Index i = 0; i < gap.size(); ++i)
-    penetrates |= !_selected[i] && gap(i) < 0;
+    penetrates |= !_selected[i] && in_force(i) && gap(i) < 0;
   if (!penetrates)
     return false;
   for (la::Index i = 0; i < gap.size(); ++i)
-    _selected[i] |= gap(i) < _band_gap[i];
+    _selected[i] |= in_force(i) && gap(i) < _band_gap[i];
   return true;
 }
 

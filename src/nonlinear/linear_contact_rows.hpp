@@ -45,14 +45,20 @@ public:
   const contact::ContactConstraints& candidates() const { return _candidates; }
   la::Vector all_multipliers(const contact::ContactConstraints& selected, const la::Vector& lambda) const;
 
+  /// @brief Which pairs are in force (a step's model change); empty: all. Rows of the others are
+  /// neither selected nor added.
+  void set_pairs_in_force(std::vector<char> in_force) { _in_force = std::move(in_force); }
+
   int64_t n_selected() const;
   int64_t n_candidates() const { return _candidates.n_rows(); }
 
 private:
   contact::ContactConstraints subset(const std::vector<char>& keep, const la::Vector& u) const;
+  bool in_force(la::Index row) const { return _in_force.empty() || _in_force[_candidates.pair[row]]; }
 
   contact::ContactConstraints _candidates;
   std::vector<double> _band_gap; ///< band d_i per row (m)
   std::vector<char> _selected;
+  std::vector<char> _in_force; ///< per pair; empty: all
 };
 } // namespace feticon::nonlinear

@@ -9,8 +9,13 @@
 #    through the deck reader: the .dat's base reactions at both step ends. CalculiX 2.20 on
 #    this deck prints 2.903226E+07 and 1.451626E+07 N: the series formula with its penalty
 #    law's compliance 1 / K (K = 6e12 Pa/m) added to (L_block + L_base) / E, 3.2 % less;
-# 3. bad input: a temperature below absolute zero, an *EXPANSION outside a material, a
-#    *TEMPERATURE on an undefined node set: one line each.
+# 3. model changes (issue 65, item 6): the deck with the pair removed in step 2 (*MODEL CHANGE,
+#    TYPE=CONTACT PAIR, REMOVE: the block expands into the base, reaction 0) and added back in a
+#    step 3 like step 2 (1.5e7 N again: small displacements do not depend on the path).
+#    CalculiX 2.20 on this deck: 2.903226E+07, 2.6E-22, 1.451612E+07 N;
+# 4. bad input: a temperature below absolute zero, an *EXPANSION outside a material, a
+#    *TEMPERATURE on an undefined node set, a *MODEL CHANGE of a pair no *CONTACT PAIR
+#    defines: one line each.
 # Usage: thermal.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -74,8 +79,32 @@ for t, f in expected.items():
 print("deck: base reactions", [base[t] for t in sorted(base)], "N")
 PY
 
-# Bad input: one line naming file, line and what is wrong.
 deck="$work/deck/feticon.inp"
+/usr/bin/python3 - "$deck" "$work/change.inp" <<'PY'
+import sys
+
+s = open(sys.argv[1]).read()
+second = s.index("*STEP", s.index("*END STEP"))
+pair = "*MODEL CHANGE, TYPE=CONTACT PAIR, {}\nS_block_zmin, S_base_zmax\n*BOUNDARY"
+step = s[second:]
+open(sys.argv[2], "w").write(
+    s[:second] + step.replace("*BOUNDARY", pair.format("REMOVE"), 1) + step.replace("*BOUNDARY", pair.format("ADD"), 1))
+PY
+"$feticon" run -q "$work/change.inp" --output "$work/change" "${settings[@]}" 2>/dev/null
+/usr/bin/python3 - "$work/change/change.dat" <<'PY'
+import re
+import sys
+
+text = open(sys.argv[1]).read()
+blocks = re.findall(r"total force \(fx,fy,fz\) for set (\S+) and time\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)", text)
+base = {float(t): float(fz) for name, t, fx, fy, fz in blocks if name == "N_BASE_ZMIN"}
+assert sorted(base) == [1.0, 2.0, 3.0], base
+assert abs(base[1.0] - 3e7) <= 5e-7 * 3e7 and abs(base[3.0] - 1.5e7) <= 5e-7 * 1.5e7, base
+assert abs(base[2.0]) <= 1e-6 * 3e7, base  # no pair: no reaction but round-off
+print("model change: base reactions", [base[t] for t in sorted(base)], "N")
+PY
+
+# Bad input: one line naming file, line and what is wrong.
 expect_error() {
   local name="$1" pattern="$2" file="$3"
   if "$feticon" run -q "$file" --output "$work/bad_$name" 2>"$work/err_$name"; then
@@ -94,3 +123,7 @@ awk '/^\*MATERIAL/ && !done {print "*EXPANSION"; print "1e-5"; done = 1} {print}
 expect_error early "early.inp:[0-9]*: \*EXPANSION comes before any \*MATERIAL" "$work/early.inp"
 sed '0,/^126, 1.200000000000e+02$/s//NOWHERE, 120/' "$deck" >"$work/unknown.inp"
 expect_error unknown "unknown.inp:[0-9]*.*NOWHERE" "$work/unknown.inp"
+sed 's/^S_block_zmin, S_base_zmax$/S_block_zmin, S_lid/' "$work/change.inp" >"$work/nopair.inp"
+sed -i '0,/^S_block_zmin, S_lid$/s//S_block_zmin, S_base_zmax/' "$work/nopair.inp"
+expect_error nopair "nopair.inp:[0-9]*: \*MODEL CHANGE: no \*CONTACT PAIR has slave S_BLOCK_ZMIN and master S_LID" \
+  "$work/nopair.inp"

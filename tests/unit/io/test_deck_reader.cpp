@@ -581,6 +581,11 @@ TEST(DeckReader, MalformedDecksEndInOneLineNamingFileAndLine)
        "*INITIAL CONDITIONS: TYPE=STRESS is not implemented by feticon (TYPE=TEMPERATURE)"},
       {"*STEP, NLGEOM", "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nall, inf\n*STEP, NLGEOM",
        "is not a finite number (temperature)"},
+      {"*CLOAD\n17, 3, -10.0", "*MODEL CHANGE, TYPE=ELEMENT, REMOVE\n1",
+       "*MODEL CHANGE: TYPE=ELEMENT is not implemented by feticon (TYPE=CONTACT PAIR)"},
+      {"*CLOAD\n17, 3, -10.0", "*MODEL CHANGE, TYPE=CONTACT PAIR\nA, B", "*MODEL CHANGE needs one of ADD and REMOVE"},
+      {"*CLOAD\n17, 3, -10.0", "*MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE\nupper_bottom, nowhere",
+       "*MODEL CHANGE: no *CONTACT PAIR has slave UPPER_BOTTOM and master NOWHERE"},
       {"*CLOAD\n17, 3, -10.0", "*TEMPERATURE\n99, 100.", "two_cubes.inp:60:1: *TEMPERATURE: node 99 is not defined"},
   };
   for (const Case& c : cases)
