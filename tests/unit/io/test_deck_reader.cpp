@@ -168,6 +168,14 @@ top, 1, 2, 1e-3
 *END STEP
 )";
 
+/// Replaces the first `from` in `text` by `to`; a `from` that is not there fails the test.
+void replace_first(std::string& text, const std::string& from, const std::string& to)
+{
+  const size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+}
+
 // Every cell type through the CalculiX export and back (C3D4, C3D10, C3D20, C3D6 blocks; faces
 // by S-number; 20-node elements on two lines): the same cells with the same node order, the
 // same loads, and contact faces with the same outward node order. Reference: the problem that
@@ -420,11 +428,7 @@ TEST(DeckReader, AmplitudesOnLoadsAndSteps)
 {
   const auto dir = test::fresh_directory("deck_amplitudes");
   std::string text = two_cubes;
-  const auto replace = [&](const std::string& from, const std::string& to) {
-    const size_t at = text.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
-  };
+  const auto replace = [&](const std::string& from, const std::string& to) { replace_first(text, from, to); };
   replace("*STEP, NLGEOM",
           "*AMPLITUDE, NAME=updown, TIME=TOTAL TIME, SHIFTX=0.5\n0, 0, 0.5, 1,\n1, 0.4\n"
           "*STEP, NLGEOM");
@@ -457,21 +461,18 @@ TEST(DeckReader, AmplitudesOnLoadsAndSteps)
 
 // Temperatures (issue 65, item 4): *EXPANSION in the material, *INITIAL CONDITIONS,
 // TYPE=TEMPERATURE of the model, *TEMPERATURE per step carried over (OP=MOD) and cleared
-// (OP=NEW, the nodes it does not name back to T_0). Reference: the deck's own numbers.
+// (OP=NEW, the nodes it does not name back to T_0); the pair taken out in step 2 (*MODEL
+// CHANGE, item 6). Reference: the deck's own numbers.
 TEST(DeckReader, TemperaturesAndExpansion)
 {
   const auto dir = test::fresh_directory("deck_temperatures");
   std::string text = two_cubes;
-  const auto replace = [&](const std::string& from, const std::string& to) {
-    const size_t at = text.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
-  };
+  const auto replace = [&](const std::string& from, const std::string& to) { replace_first(text, from, to); };
   replace("*ELASTIC\n", "*EXPANSION, ZERO=20.\n1.2e-5\n*ELASTIC\n");
   replace("*STEP, NLGEOM", "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nall, 20.\n*STEP, NLGEOM");
   replace("*END STEP\n*STEP\n",
           "*TEMPERATURE, AMPLITUDE=ramp2\ntop, 120.\n*END STEP\n*STEP\n"
-          "*TEMPERATURE, OP=NEW\n15, 70.\n");
+          "*TEMPERATURE, OP=NEW\n15, 70.\n*MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE\nupper_bottom, lower_top\n");
   replace("*STEP, NLGEOM", "*AMPLITUDE, NAME=ramp2\n0, 0, 1, 2\n*STEP, NLGEOM");
   const fem::Problem p = read_deck(write(dir, "two_cubes.inp", text)).problem;
   for (const fem::Material& m : p.materials)
@@ -485,6 +486,8 @@ TEST(DeckReader, TemperaturesAndExpansion)
   ASSERT_EQ(p.steps[1].temperatures.size(), 1u); // OP=NEW: node 15 alone
   EXPECT_EQ(p.steps[1].temperatures[0].value, 70.0);
   EXPECT_EQ(p.steps[1].temperatures[0].amplitude, "");
+  EXPECT_TRUE(p.steps[0].removed_contacts.empty());
+  EXPECT_EQ(p.steps[1].removed_contacts, std::vector<int32_t>{0});
 }
 
 TEST(DeckReader, IncludeContinuationAndNodeSurface)
@@ -591,9 +594,7 @@ TEST(DeckReader, MalformedDecksEndInOneLineNamingFileAndLine)
   for (const Case& c : cases)
   {
     std::string text = two_cubes;
-    const size_t at = text.find(c.from);
-    ASSERT_NE(at, std::string::npos) << c.from;
-    text.replace(at, c.from.size(), c.to);
+    replace_first(text, c.from, c.to);
     const std::string message = error_of(write(dir, "two_cubes.inp", text));
     EXPECT_NE(message.find(c.expected), std::string::npos)
         << "expected '" << c.expected << "', got '" << message << "'";
