@@ -62,11 +62,10 @@ void set_path(YAML::Node node, const std::vector<std::string>& path, size_t i, c
   set_path(node[key], path, i + 1, value, full);
 }
 
-/// Scalars of the non-structured part as dotted keys.
 /// Throws for a key given twice in one map: YAML forbids it, yaml-cpp keeps both entries and
-/// a lookup would silently take one of them.
-/// Also bounds the nesting, before anything else walks the tree: an alias that contains
-/// itself (`x: &r [*r]`) makes an endless tree, which would overflow the stack.
+/// a lookup would silently take one of them. Also requires every key to be a name (a scalar)
+/// and bounds the nesting, before anything else walks the tree: an alias that contains itself
+/// (`x: &r [*r]`) makes an endless tree, which would overflow the stack.
 void reject_duplicate_keys(const YAML::Node& node, const std::string& path, const std::string& source, int depth = 0)
 {
   constexpr int max_depth = 32; // a problem file nests a few levels (sections, lists of maps)
@@ -78,6 +77,11 @@ void reject_duplicate_keys(const YAML::Node& node, const std::string& path, cons
     std::set<std::string> seen;
     for (const auto& kv : node)
     {
+      // Every later lookup reads keys as names: a list or map as a key (a stray '!' or '?' in
+      // a flow map) would end in yaml-cpp's "bad conversion" without file or key.
+      FETICON_CHECK(kv.first.IsScalar(),
+                    source << ": '" << path.substr(0, 80) << "' has a key that is not a name (line "
+                           << kv.first.Mark().line + 1 << ")");
       const std::string key = kv.first.Scalar();
       const std::string full = path.empty() ? key : path + "." + key;
       FETICON_CHECK(seen.insert(key).second,
@@ -90,6 +94,7 @@ void reject_duplicate_keys(const YAML::Node& node, const std::string& path, cons
       reject_duplicate_keys(node[i], path + "." + std::to_string(i), source, depth + 1);
 }
 
+/// Scalars of the non-structured part as dotted keys.
 void flatten(const YAML::Node& node, const std::string& prefix, const Settings& settings,
              std::vector<std::pair<std::string, std::string>>& out, const std::string& source)
 {

@@ -135,6 +135,8 @@ expect "missing problem file" "does not exist\|not exist\|exist" -- "$work/nothi
 printf 'problem: custom\n' > "$work/nomesh.yaml"
 expect "custom without mesh" "mesh" -- "$work/nomesh.yaml"
 expect "empty box list" "mesh.boxes" -- "$(variant '/    - {name/d' noboxes)"
+expect "a list as a key" "'mesh.boxes.0' has a key that is not a name (line" -- \
+  "$(variant 's/, cells: \[8, 4, 1\]}/, [cells]: [8, 4, 1]}/' listkey)"
 expect "negative box length" "length" -- "$(variant 's/lengths: \[0.4/lengths: [-0.4/' neglength)"
 expect "zero cells" "cells" -- "$(variant 's/cells: \[8, 4, 1\]/cells: [0, 4, 1]/' zerocells)"
 expect "body without material" "bodies.punch" -- "$(variant '/  punch: {young/d' nomaterial)"
