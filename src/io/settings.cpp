@@ -152,6 +152,15 @@ std::string trim(const std::string& s)
   return b == std::string::npos ? "" : s.substr(b, e - b + 1);
 }
 
+/// `value` with control bytes (a NUL from YAML's "\x00") as '?', for a one-line message.
+std::string printable(std::string value)
+{
+  for (char& c : value)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+      c = '?';
+  return value;
+}
+
 } // namespace
 
 Settings::Settings() : Settings(std::vector<SettingSpec>{}) {}
@@ -207,8 +216,10 @@ void Settings::set(const std::string& key, const std::string& raw, const std::st
     char* end = nullptr;
     errno = 0;
     const double v = std::strtod(value.c_str(), &end);
-    FETICON_CHECK(!value.empty() && end && *end == '\0' && std::isfinite(v),
-                  source << ": " << key << " = '" << value << "' is not a finite number"
+    // The whole value, not up to a NUL byte (YAML's "\x00" is a one-byte string strtod reads as
+    // empty, which std::stod refused later).
+    FETICON_CHECK(!value.empty() && end == value.c_str() + value.size() && std::isfinite(v),
+                  source << ": " << key << " = '" << printable(value) << "' is not a finite number"
                          << (s.or_auto ? " or auto" : ""));
     // Underflow (1e-320, subnormal) as well: no setting means anything there, and number()
     // would not read it back.
@@ -233,12 +244,12 @@ void Settings::set(const std::string& key, const std::string& raw, const std::st
         ok = ok || c == value;
         list += (list.empty() ? "" : ", ") + c;
       }
-      FETICON_CHECK(ok, source << ": " << key << " = '" << value << "' must be one of: " << list);
+      FETICON_CHECK(ok, source << ": " << key << " = '" << printable(value) << "' must be one of: " << list);
     }
     break;
   case Type::boolean:
     FETICON_CHECK(value == "true" || value == "false",
-                  source << ": " << key << " = '" << value << "' must be true or false");
+                  source << ": " << key << " = '" << printable(value) << "' must be true or false");
     break;
   }
   _values[key] = value;
