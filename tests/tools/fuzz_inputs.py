@@ -689,6 +689,8 @@ def deck_continuation(text, rng):
 
 def deck_case(text, rng):
     lines = deck_lines(text)
+    if not lines:  # an earlier mutation (a truncation) emptied the file
+        return None
     i = rng.randrange(len(lines))
     lines[i] = lines[i].lower() if rng.random() < 0.5 else lines[i].swapcase()
     return "".join(lines), f"line {i + 1} case changed"
