@@ -51,11 +51,38 @@ void add_warnings(std::vector<std::string>& to, const std::vector<std::string>& 
 struct PointResults
 {
   std::vector<double> stress, strain; ///< cells x 8 points x 6, or empty
+  std::vector<double> plastic_strain; ///< cells x 8 points (PEEQ), or empty (no plastic body)
   std::vector<Eigen::Matrix<double, 6, 1>> cell_stress, cell_strain;
 };
 
+/// The results of cell c at the points of its solve's rule from its J2 states (a plastic
+/// cell); hex8's in hex8_gauss_points() order, as hex8_point_results gives them.
+fem::CellPointResults plastic_point_results(const mesh::Mesh& mesh, int32_t c, const Eigen::MatrixX3d& X,
+                                            const Eigen::MatrixX3d& u, const fem::Material& material,
+                                            const Eigen::VectorXd* temperature_change,
+                                            std::span<const fem::PlasticPointState> states)
+{
+  const mesh::CellKind type = mesh.cells.kind(c);
+  const fem::CellPointResults r = fem::cell_point_results(
+      type, X, u, material, fem::Kinematics::linear,
+      mesh.reduced(c) ? fem::Integration::reduced : fem::Integration::full, c, temperature_change, states);
+  if (type != mesh::CellKind::hex8)
+    return r;
+  // The rule's points run x fastest, then y, then z; hex8_gauss_points() follows the corners.
+  fem::CellPointResults out = r;
+  for (int a = 0; a < 8; ++a)
+  {
+    const Eigen::Vector3d& xi = fem::hex8_gauss_points()[a];
+    const size_t lexicographic = (xi(0) > 0 ? 1 : 0) + (xi(1) > 0 ? 2 : 0) + (xi(2) > 0 ? 4 : 0);
+    out.stress[a] = r.stress[lexicographic];
+    out.strain[a] = r.strain[lexicographic];
+    out.weight[a] = r.weight[lexicographic];
+  }
+  return out;
+}
+
 PointResults point_results(const fem::Problem& p, const la::Vector& u, const la::Vector& temperature_change,
-                           fem::Kinematics kinematics)
+                           fem::Kinematics kinematics, const fem::MeshPlasticStates& plastic)
 {
   const bool thermal = temperature_change.size() > 0;
   const mesh::Mesh& mesh = p.mesh;
@@ -78,7 +105,7 @@ PointResults point_results(const fem::Problem& p, const la::Vector& u, const la:
     const std::span<const int32_t> cell = mesh.cells[c];
     const fem::Material& material = p.materials[mesh.cell_body[c]];
     fem::CellPointResults r;
-    if (mesh.cells.kind(c) == mesh::CellKind::hex8)
+    if (mesh.cells.kind(c) == mesh::CellKind::hex8 && plastic.of(c).empty())
     {
       for (int a = 0; a < 8; ++a)
       {
@@ -104,8 +131,10 @@ PointResults point_results(const fem::Problem& p, const la::Vector& u, const la:
         if (thermal)
           dT_any(a) = temperature_change(cell[a]);
       }
-      r = fem::cell_point_results(mesh.cells.kind(c), X_any, u_any, material, kinematics, fem::Integration::full, c,
-                                  thermal ? &dT_any : nullptr);
+      r = plastic.of(c).empty()
+          ? fem::cell_point_results(mesh.cells.kind(c), X_any, u_any, material, kinematics, fem::Integration::full, c,
+                                    thermal ? &dT_any : nullptr)
+          : plastic_point_results(mesh, c, X_any, u_any, material, thermal ? &dT_any : nullptr, plastic.of(c));
     }
     Eigen::Matrix<double, 6, 1> s = Eigen::Matrix<double, 6, 1>::Zero(), e = s;
     double volume = 0;
@@ -126,7 +155,34 @@ PointResults point_results(const fem::Problem& p, const la::Vector& u, const la:
     cell_stress[c] = s / volume;
     cell_strain[c] = e / volume;
   }
+  if (dat_points && !plastic.empty())
+  {
+    out.plastic_strain.assign(static_cast<size_t>(mesh.n_cells()) * 8, 0.0);
+    for (int32_t c = 0; c < mesh.n_cells(); ++c)
+      for (size_t g = 0; g < plastic.of(c).size(); ++g) // the rule's order, x fastest: to the corners'
+      {
+        const Eigen::Vector3d& xi = fem::hex8_gauss_points()[g];
+        const size_t lexicographic = (xi(0) > 0 ? 1 : 0) + (xi(1) > 0 ? 2 : 0) + (xi(2) > 0 ? 4 : 0);
+        out.plastic_strain[8 * c + g] = plastic.of(c)[lexicographic].equivalent_plastic_strain;
+      }
+  }
   return out;
+}
+
+/// The .frd's PE: at each node the mean over its cells of their points' mean equivalent plastic
+/// strain (elastic cells count 0, as ccx's extrapolation of their zero points does).
+std::vector<double> nodal_plastic_strain(const mesh::Mesh& mesh, const fem::MeshPlasticStates& plastic)
+{
+  std::vector<double> sum(mesh.n_nodes(), 0.0), count(mesh.n_nodes(), 0.0);
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    for (const int32_t node : mesh.cells[c])
+    {
+      sum[node] += plastic.mean_equivalent_plastic_strain(c);
+      count[node] += 1;
+    }
+  for (int32_t n = 0; n < mesh.n_nodes(); ++n)
+    sum[n] = count[n] > 0 ? sum[n] / count[n] : 0.0;
+  return sum;
 }
 } // namespace
 
@@ -180,12 +236,14 @@ void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
   }
   // CalculiX's RF: f_int(u) + B_I' lambda (internal force less the contact force on the body),
   // the support reactions plus the applied nodal loads.
-  const fem::Assembler assembler(mesh, fem::whole_mesh_domain(mesh), p.materials, _kinematics);
+  fem::Assembler assembler(mesh, fem::whole_mesh_domain(mesh), p.materials, _kinematics);
+  if (!solution.plastic.empty())
+    assembler.set_plastic_state(solution.plastic.points); // the whole mesh's cells in order
   la::Vector reaction = assembler.internal_force(solution.u);
   if (rows.n_rows() > 0)
     reaction += rows.B.transpose() * solution.contact_lambda;
 
-  const PointResults points = point_results(p, solution.u, solution.temperature_change, _kinematics);
+  const PointResults points = point_results(p, solution.u, solution.temperature_change, _kinematics, solution.plastic);
   const std::vector<double>& point_stress = points.stress;
   const std::vector<double>& point_strain = points.strain;
   const auto& cell_stress = points.cell_stress;
@@ -212,6 +270,10 @@ void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
   frd.stress = stress;
   if (fields.strain)
     frd.strain = strain;
+  const std::vector<double> nodal_peeq = fields.plastic_strain && !solution.plastic.empty()
+      ? nodal_plastic_strain(mesh, solution.plastic)
+      : std::vector<double>{};
+  frd.plastic_strain = nodal_peeq;
   if (fields.reaction_force)
     frd.reaction_force = rf;
   frd.contact_pressure = pressure;
@@ -226,6 +288,7 @@ void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
   dat.reaction_force = rf;
   dat.stress = point_stress;
   dat.strain = point_strain;
+  dat.plastic_strain = points.plastic_strain;
   dat.contact_pressure = pressure;
   dat.contact_gap = gap;
   add_warnings(_warnings, _dat->add_step(dat, step.outputs));

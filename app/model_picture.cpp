@@ -104,8 +104,8 @@ void write_picture_data(const std::filesystem::path& dir, const fem::Problem& pr
 {
   const mesh::Mesh& mesh = problem.mesh;
   std::filesystem::create_directories(dir);
-  const auto stresses =
-      fem::cell_cauchy_stresses(mesh, solution.u, problem.materials, kinematics, solution.temperature_change);
+  const auto stresses = fem::cell_cauchy_stresses(mesh, solution.u, problem.materials, kinematics,
+                                                  solution.temperature_change, &solution.plastic);
   // The boundary faces by their corners (a triangle's fourth is -1), drawn as polygons.
   std::vector<int32_t> surface_of(mesh.n_nodes(), -1), surface_nodes, faces, contact_triangles, contact_pair;
   std::vector<double> mises;

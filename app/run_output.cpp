@@ -32,12 +32,21 @@ struct StepFields
   io::VtuField contact_pair{"contact_pair", 1, {}};
   io::VtuField cauchy{"cauchy_stress", 6, {}}, mises{"von_mises", 1, {}};
   io::VtuField temperature_change{"temperature_change", 1, {}}; ///< T - T_0 (K), written when the problem has one
+  /// The mean equivalent plastic strain of each cell's points, written when a body is plastic.
+  io::VtuField plastic_strain{"equivalent_plastic_strain", 1, {}};
 
   std::vector<io::VtuField> point_fields(bool thermal) const
   {
     std::vector<io::VtuField> fields{displacement, pressure, contact_pair};
     if (thermal)
       fields.push_back(temperature_change);
+    return fields;
+  }
+  std::vector<io::VtuField> cell_fields(bool plastic) const
+  {
+    std::vector<io::VtuField> fields{cauchy, mises};
+    if (plastic)
+      fields.push_back(plastic_strain);
     return fields;
   }
 };
@@ -72,7 +81,10 @@ void write_step_vtu(const std::filesystem::path& path, const fem::Problem& probl
   StepFields f;
   f.displacement.values.assign(u.data(), u.data() + u.size());
   f.temperature_change.values.assign(dT.data(), dT.data() + dT.size());
-  for (const auto& s : fem::cell_cauchy_stresses(mesh, u, problem.materials, kinematics, dT))
+  const fem::MeshPlasticStates plastic = cells.empty() ? solution.plastic : solution.plastic.subset(cells);
+  for (int32_t c = 0; !plastic.empty() && c < mesh.n_cells(); ++c)
+    f.plastic_strain.values.push_back(plastic.mean_equivalent_plastic_strain(c));
+  for (const auto& s : fem::cell_cauchy_stresses(mesh, u, problem.materials, kinematics, dT, &plastic))
   {
     // VTK's symmetric tensor order: xx, yy, zz, xy, yz, xz (feticon Voigt: 11,22,33,12,23,31).
     for (int k = 0; k < 6; ++k)
@@ -96,17 +108,18 @@ void write_step_vtu(const std::filesystem::path& path, const fem::Problem& probl
     for (int32_t n = 0; n < mesh.n_nodes(); ++n)
       x.row(n) += u.segment<3>(3 * n).transpose();
     const Eigen::Ref<const io::PointMatrix> ref(x);
-    io::write_vtu(path, mesh, &ref, f.point_fields(dT.size() > 0), {f.cauchy, f.mises});
+    io::write_vtu(path, mesh, &ref, f.point_fields(dT.size() > 0), f.cell_fields(!plastic.empty()));
   }
   else
-    io::write_vtu(path, mesh, nullptr, f.point_fields(dT.size() > 0), {f.cauchy, f.mises});
+    io::write_vtu(path, mesh, nullptr, f.point_fields(dT.size() > 0), f.cell_fields(!plastic.empty()));
 }
 
 void write_step_pvtu(const std::filesystem::path& path, const fem::Problem& problem,
                      const std::vector<std::string>& pieces)
 {
   const StepFields f;
-  io::write_pvtu(path, pieces, problem.mesh, f.point_fields(problem.has_temperatures()), {f.cauchy, f.mises});
+  io::write_pvtu(path, pieces, problem.mesh, f.point_fields(problem.has_temperatures()),
+                 f.cell_fields(problem.has_plastic_body()));
 }
 
 void write_pressure_csv(const std::filesystem::path& path, const std::vector<nonlinear::PressureSample>& samples,

@@ -106,6 +106,51 @@ la::Vector SubdomainSystem::internal_force(const la::Vector& u_stacked) const
   return f;
 }
 
+void SubdomainSystem::commit_plastic_state(const la::Vector& u_stacked)
+{
+  parallel_for(_decomposition.first_owned(), _decomposition.end_owned(), setup_work, [&](int32_t s) {
+    if (_assemblers[s]->has_plastic_cells())
+      _assemblers[s]->commit_plastic_state(full_local(s, u_stacked));
+  });
+}
+
+bool SubdomainSystem::has_plastic_cells() const
+{
+  for (int32_t s = _decomposition.first_owned(); s < _decomposition.end_owned(); ++s)
+    if (_assemblers[s]->has_plastic_cells())
+      return true;
+  return false;
+}
+
+void SubdomainSystem::plastic_states(fem::MeshPlasticStates& states) const
+{
+  for (int32_t s = _decomposition.first_owned(); s < _decomposition.end_owned(); ++s)
+  {
+    const std::vector<int32_t>& cells = _decomposition.subdomain(s).domain.cells;
+    for (size_t k = 0; k < cells.size(); ++k)
+    {
+      const std::span<const fem::PlasticPointState> committed = _assemblers[s]->plastic_state(k);
+      std::copy(committed.begin(), committed.end(), states.of(cells[k]).begin());
+    }
+  }
+}
+
+void SubdomainSystem::set_plastic_states(const fem::MeshPlasticStates& states)
+{
+  for (int32_t s = _decomposition.first_owned(); s < _decomposition.end_owned(); ++s)
+  {
+    if (!_assemblers[s]->has_plastic_cells())
+      continue;
+    std::vector<fem::PlasticPointState> local;
+    for (const int32_t c : _decomposition.subdomain(s).domain.cells)
+    {
+      const std::span<const fem::PlasticPointState> cell = states.of(c);
+      local.insert(local.end(), cell.begin(), cell.end());
+    }
+    _assemblers[s]->set_plastic_state(std::move(local));
+  }
+}
+
 long SubdomainSystem::factor_nonzeros() const
 {
   long total = 0;

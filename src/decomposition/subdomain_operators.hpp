@@ -5,6 +5,7 @@
 #include "decomposition/decomposition.hpp"
 #include "decomposition/generalized_inverse.hpp"
 #include "fem/assembler.hpp"
+#include "fem/plastic_states.hpp"
 
 #include <memory>
 #include <vector>
@@ -39,6 +40,17 @@ public:
   /// @brief The temperature change T - T_0 (K) of every mesh node for the internal forces and
   /// stiffnesses that follow (fem::Assembler::set_temperature_change); empty: none.
   void set_temperature_change(const la::Vector& mesh_temperature_change);
+
+  /// Makes the J2 states at stacked displacement `u` the committed ones in every owned
+  /// subdomain (fem::Assembler::commit_plastic_state): the end of a converged increment.
+  void commit_plastic_state(const la::Vector& u_stacked);
+  /// True if some owned subdomain has cells of a plastic body.
+  bool has_plastic_cells() const;
+  /// The committed J2 states of the owned subdomains' cells, written into `states` (indexed by
+  /// mesh cell, fem::MeshPlasticStates::zero of the mesh).
+  void plastic_states(fem::MeshPlasticStates& states) const;
+  /// Sets the owned subdomains' committed states from `states` (a restart).
+  void set_plastic_states(const fem::MeshPlasticStates& states);
 
   /// Internal force of every subdomain at stacked displacement `u` (stacked).
   la::Vector internal_force(const la::Vector& u_stacked) const;

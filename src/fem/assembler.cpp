@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "fem/cell_element.hpp"
+#include "fem/plastic_states.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -153,12 +154,53 @@ Assembler::Assembler(const mesh::Mesh& mesh, AssemblyDomain domain, std::vector<
 {
   FETICON_CHECK(static_cast<int32_t>(_materials.size()) >= mesh.n_bodies(),
                 "the mesh has " << mesh.n_bodies() << " bodies but " << _materials.size() << " materials were given");
+  const auto body_name = [&](size_t b) { return b < mesh.body_names.size() ? mesh.body_names[b] : std::to_string(b); };
   for (size_t b = 0; b < _materials.size(); ++b)
-    _materials[b].check("material of body '" + (b < mesh.body_names.size() ? mesh.body_names[b] : std::to_string(b)) +
-                        "'");
+    _materials[b].check("material of body '" + body_name(b) + "'");
+  _plastic_offset.assign(1, 0);
+  for (size_t k = 0; k < _domain.cells.size(); ++k)
+  {
+    const int32_t c = _domain.cells[k];
+    const size_t points = plastic_points(mesh, _materials, c);
+    FETICON_CHECK(points == 0 || kinematics == Kinematics::linear,
+                  "body '" << body_name(static_cast<size_t>(mesh.cell_body[c]))
+                           << "' is plastic: J2 plasticity is implemented at small strain only (displacements = "
+                              "small, no NLGEOM)");
+    _plastic_offset.push_back(_plastic_offset.back() + static_cast<int64_t>(points));
+  }
+  _plastic_committed.resize(static_cast<size_t>(_plastic_offset.back()));
 }
 
 void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatrix* K, la::Vector* f_int) const
+{
+  assemble_cells(u, kind, K, f_int, nullptr);
+}
+
+void Assembler::commit_plastic_state(const la::Vector& u)
+{
+  if (_plastic_committed.empty())
+    return;
+  std::vector<PlasticPointState> updated(_plastic_committed.size());
+  assemble_cells(u, StiffnessKind::none, nullptr, nullptr, &updated);
+  _plastic_committed = std::move(updated);
+}
+
+std::span<const PlasticPointState> Assembler::plastic_state(size_t k) const
+{
+  return std::span<const PlasticPointState>(_plastic_committed)
+      .subspan(static_cast<size_t>(_plastic_offset[k]),
+               static_cast<size_t>(_plastic_offset[k + 1] - _plastic_offset[k]));
+}
+
+void Assembler::set_plastic_state(std::vector<PlasticPointState> states)
+{
+  FETICON_CHECK(states.size() == _plastic_committed.size(),
+                "plastic state of " << states.size() << " points, the domain has " << _plastic_committed.size());
+  _plastic_committed = std::move(states);
+}
+
+void Assembler::assemble_cells(const la::Vector& u, StiffnessKind kind, la::SparseMatrix* K, la::Vector* f_int,
+                               std::vector<PlasticPointState>* updated) const
 {
   FETICON_CHECK(u.size() == _domain.n_dofs(),
                 "displacement has " << u.size() << " entries, expected " << _domain.n_dofs());
@@ -186,7 +228,7 @@ void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatr
     const std::span<const int32_t> local = _domain.cell_nodes[k];
     const mesh::CellKind type = _mesh.cells.kind(c);
     const Material& material = _materials[_mesh.cell_body[c]];
-    if (type == mesh::CellKind::hex8)
+    if (type == mesh::CellKind::hex8 && !material.is_plastic())
     {
       for (int a = 0; a < 8; ++a)
       {
@@ -210,8 +252,12 @@ void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatr
       dT_any(a) = thermal ? _temperature_change(local[a]) : 0.0;
     }
     const Integration integration = _mesh.reduced(c) ? Integration::reduced : Integration::full;
+    CellPlasticState plastic{plastic_state(k), {}};
+    if (updated)
+      plastic.updated = std::span<PlasticPointState>(*updated).subspan(static_cast<size_t>(_plastic_offset[k]),
+                                                                       plastic.committed.size());
     cell_element(type, X_any, u_any, material, _kinematics, element_kind, integration, fe_any, &Ke_any, c,
-                 thermal ? &dT_any : nullptr);
+                 thermal ? &dT_any : nullptr, &plastic);
     add_cell(local, fe_any, Ke_any, f_int, K);
   }
 }

@@ -5,10 +5,16 @@
 /// penalty) and each FETI subdomain (its cells with local node numbering). The node
 /// adjacency is built once; each assembly writes K's pattern from it and adds the element
 /// matrices in place, so no triplet list of 576 entries per cell is ever held in memory.
-/// hex8 cells go through hex8_element (fixed-size, the fast path), every other type through
-/// cell_element.
+/// hex8 cells of elastic bodies go through hex8_element (fixed-size, the fast path), every
+/// other cell through cell_element.
+///
+/// The cells of plastic bodies keep a J2 state per quadrature point: the state committed at
+/// the end of the last converged increment. f_int(u) and K(u) return from it (so a cut-back
+/// increment rolls back by not committing), and commit_plastic_state(u) makes the states at u
+/// the committed ones.
 
 #include "fem/hex8_element.hpp"
+#include "fem/j2_plasticity.hpp"
 #include "la/types.hpp"
 #include "mesh/mesh.hpp"
 
@@ -66,6 +72,16 @@ public:
   /// load step (fem/temperature_history.hpp).
   void set_temperature_change(la::Vector temperature_change);
 
+  /// True if some cell of the domain belongs to a plastic body.
+  bool has_plastic_cells() const { return !_plastic_committed.empty(); }
+  /// Makes the J2 states at displacement `u` the committed ones (the end of a converged increment).
+  void commit_plastic_state(const la::Vector& u);
+  /// The committed states of the quadrature points of the domain's k-th cell (empty: elastic).
+  std::span<const PlasticPointState> plastic_state(size_t k) const;
+  /// Replaces every committed state (a restart), in the order of plastic_state(0), (1), ...
+  void set_plastic_state(std::vector<PlasticPointState> states);
+  const std::vector<PlasticPointState>& plastic_states() const { return _plastic_committed; }
+
   /// Reference coordinates of the domain's nodes, one row per local node.
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> local_coordinates() const;
 
@@ -75,6 +91,12 @@ private:
   std::vector<Material> _materials;
   Kinematics _kinematics;
   la::Vector _temperature_change; ///< per local node; empty: none
+  /// The committed J2 states: those of domain cell k are [_plastic_offset[k], _plastic_offset[k + 1]).
+  std::vector<int64_t> _plastic_offset;
+  std::vector<PlasticPointState> _plastic_committed;
+  /// assemble() with, where `updated` is not null, the states at u written into it.
+  void assemble_cells(const la::Vector& u, StiffnessKind kind, la::SparseMatrix* K, la::Vector* f_int,
+                      std::vector<PlasticPointState>* updated) const;
   /// The sparsity pattern of K, kept per node (a ninth of K's indices, none of its values):
   /// a zero-valued copy of K held as much memory as K for the whole run.
   NodeAdjacency _adjacency;

@@ -79,7 +79,8 @@ double thermal_stress_at(mesh::CellKind type, const Material& material, const Ei
 
 void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, const Material& material,
                   Kinematics kinematics, StiffnessKind kind, Integration integration, Eigen::VectorXd& f,
-                  Eigen::MatrixXd* K, int64_t cell, const Eigen::VectorXd* temperature_change)
+                  Eigen::MatrixXd* K, int64_t cell, const Eigen::VectorXd* temperature_change,
+                  const CellPlasticState* plastic)
 {
   const Eigen::Index n = 3 * X.rows();
   const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
@@ -92,14 +93,32 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
     const PointGeometry geo = point_geometry(type, X, rule.points[q], rule.weights[q], cell);
     const auto [Fd, strain] = deformation(geo.dN_dX, u, kinematics, cell);
     // S = D E is St Venant-Kirchhoff's S = lambda tr(E) I + 2 mu E in Voigt form (engineering
-    // shears), of the strain less the thermal strain.
-    Voigt S = D * strain;
-    S.head<3>().array() -= thermal_stress_at(type, material, temperature_change, rule.points[q]);
+    // shears), of the strain less the thermal strain (and the plastic strain).
+    const double thermal = thermal_stress_at(type, material, temperature_change, rule.points[q]);
+    Voigt S;
+    const Eigen::Matrix<double, 6, 6>* C = &D;
+    Eigen::Matrix<double, 6, 6> tangent;
+    if (material.is_plastic())
+    {
+      FETICON_ASSERT(plastic && plastic->committed.size() == rule.points.size() && kinematics == Kinematics::linear,
+                     "a plastic cell needs a state per quadrature point and small strain");
+      const J2Update update = j2_return(material, strain, thermal, plastic->committed[q]);
+      S = update.stress;
+      if (!plastic->updated.empty())
+        plastic->updated[q] = update.state;
+      if (kind == StiffnessKind::tangent)
+        C = &(tangent = j2_tangent(material, strain, thermal, plastic->committed[q], update));
+    }
+    else
+    {
+      S = D * strain;
+      S.head<3>().array() -= thermal;
+    }
     const auto B = strain_displacement(geo.dN_dX, Fd);
     f.noalias() += B.transpose() * S * geo.weight_det_j;
     if (kind == StiffnessKind::none)
       continue;
-    K->noalias() += B.transpose() * D * B * geo.weight_det_j;
+    K->noalias() += B.transpose() * *C * B * geo.weight_det_j;
     if (kind == StiffnessKind::tangent && kinematics == Kinematics::total_lagrangian)
     {
       Eigen::Matrix3d St;
@@ -115,7 +134,8 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
 
 CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
                                     const Material& material, Kinematics kinematics, Integration integration,
-                                    int64_t cell, const Eigen::VectorXd* temperature_change)
+                                    int64_t cell, const Eigen::VectorXd* temperature_change,
+                                    std::span<const PlasticPointState> plastic)
 {
   const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
   const QuadratureRule& rule = quadrature(type, integration);
@@ -124,8 +144,20 @@ CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d&
   {
     const PointGeometry geo = point_geometry(type, X, rule.points[q], rule.weights[q], cell);
     const auto [Fd, strain] = deformation(geo.dN_dX, u, kinematics, cell);
-    Voigt stress = D * strain;
-    stress.head<3>().array() -= thermal_stress_at(type, material, temperature_change, rule.points[q]);
+    const double thermal = thermal_stress_at(type, material, temperature_change, rule.points[q]);
+    Voigt stress;
+    if (material.is_plastic())
+    {
+      FETICON_CHECK(plastic.size() == rule.points.size(),
+                    "cell " << cell << " is plastic but has " << plastic.size() << " point states for "
+                            << rule.points.size() << " quadrature points");
+      stress = j2_return(material, strain, thermal, plastic[q]).stress;
+    }
+    else
+    {
+      stress = D * strain;
+      stress.head<3>().array() -= thermal;
+    }
     if (kinematics == Kinematics::total_lagrangian)
     {
       // sigma = F S F' / det F (det F > 0, checked in deformation).
@@ -143,10 +175,10 @@ CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d&
 
 Voigt cell_cauchy_stress(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
                          const Material& material, Kinematics kinematics, int64_t cell, Integration integration,
-                         const Eigen::VectorXd* temperature_change)
+                         const Eigen::VectorXd* temperature_change, std::span<const PlasticPointState> plastic)
 {
   const CellPointResults points =
-      cell_point_results(type, X, u, material, kinematics, integration, cell, temperature_change);
+      cell_point_results(type, X, u, material, kinematics, integration, cell, temperature_change, plastic);
   Voigt sum = Voigt::Zero();
   double volume = 0;
   for (size_t q = 0; q < points.weight.size(); ++q)

@@ -10,27 +10,41 @@
 /// thermal strain as hex8_element.hpp says.
 
 #include "fem/hex8_element.hpp"
+#include "fem/j2_plasticity.hpp"
 #include "fem/material.hpp"
 #include "fem/reference_element.hpp"
 
 #include <Eigen/Dense>
 
 #include <cstdint>
+#include <span>
 
 namespace feticon::fem
 {
-/// Internal force (N) and, unless kind == none, stiffness (N/m) of one cell.
+/// The J2 state of a cell's quadrature points (fem/j2_plasticity.hpp): the committed states
+/// the increment starts from, and, where not empty, where the states at u are written.
+struct CellPlasticState
+{
+  std::span<const PlasticPointState> committed;
+  std::span<PlasticPointState> updated;
+};
+
+/// Internal force (N) and, unless kind == none, stiffness (N/m) of one cell. A plastic material
+/// (Material::is_plastic, small strain) needs `plastic` with one committed state per quadrature
+/// point; its K is the elastic K_0 for kind == material and the consistent tangent for tangent.
 /// @param[in] X  reference node coordinates, one row per local node (m)
 /// @param[in] u  node displacements, likewise (m)
 /// @param[in] cell  cell id for error messages (an inverted cell names it)
 /// @param[in] temperature_change  T - T_0 per node (K); null: none
 void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, const Material& material,
                   Kinematics kinematics, StiffnessKind kind, Integration integration, Eigen::VectorXd& f,
-                  Eigen::MatrixXd* K, int64_t cell, const Eigen::VectorXd* temperature_change = nullptr);
+                  Eigen::MatrixXd* K, int64_t cell, const Eigen::VectorXd* temperature_change = nullptr,
+                  const CellPlasticState* plastic = nullptr);
 
 /// Cauchy stress (Pa) and strain (small strain, or Green-Lagrange E; engineering shears) at the
 /// quadrature points of the cell, Voigt [11,22,33,12,23,31], and each point's weight times
-/// det J (m^3): hex8_point_results for any cell type.
+/// det J (m^3): hex8_point_results for any cell type. A plastic material's stress is that of
+/// its points' committed states at u.
 struct CellPointResults
 {
   std::vector<Eigen::Matrix<double, 6, 1>> stress, strain;
@@ -38,7 +52,8 @@ struct CellPointResults
 };
 CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
                                     const Material& material, Kinematics kinematics, Integration integration,
-                                    int64_t cell, const Eigen::VectorXd* temperature_change = nullptr);
+                                    int64_t cell, const Eigen::VectorXd* temperature_change = nullptr,
+                                    std::span<const PlasticPointState> plastic = {});
 
 /// Volume-averaged Cauchy stress of one cell (Pa), Voigt [11,22,33,12,23,31]: the weighted mean
 /// of cell_point_results' stresses (at the points of `integration`), as hex8_cauchy_stress.
@@ -46,7 +61,8 @@ Eigen::Matrix<double, 6, 1> cell_cauchy_stress(mesh::CellKind type, const Eigen:
                                                const Eigen::MatrixX3d& u, const Material& material,
                                                Kinematics kinematics, int64_t cell,
                                                Integration integration = Integration::full,
-                                               const Eigen::VectorXd* temperature_change = nullptr);
+                                               const Eigen::VectorXd* temperature_change = nullptr,
+                                               std::span<const PlasticPointState> plastic = {});
 
 /// Small strain (linear) or Green-Lagrange strain (total Lagrangian), Voigt
 /// [11,22,33,12,23,31] with engineering shears, at each quadrature point of the cell.

@@ -26,5 +26,12 @@ void Material::check(const std::string& where) const
   // Negative alpha is physical (zirconium tungstate, some composites' fibre direction).
   FETICON_CHECK(std::isfinite(expansion),
                 where << ": the expansion coefficient alpha = " << expansion << " is not finite");
+  if (!is_plastic())
+    return;
+  plastic.check(where);
+  for (size_t k = 0; k + 1 < plastic.stress.size(); ++k)
+    FETICON_CHECK(plastic.hardening(plastic.plastic_strain[k]) > -3 * lame_mu(),
+                  where << ": the plastic table softens faster than 3 G = " << 3 * lame_mu() << " Pa between points "
+                        << k + 1 << " and " << k + 2 << ": the radial return has no solution");
 }
 } // namespace feticon::fem

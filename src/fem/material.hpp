@@ -1,6 +1,8 @@
 #pragma once
 /// @file Isotropic St Venant–Kirchhoff material (linear elasticity at small strain), with its
-/// thermal expansion.
+/// thermal expansion and, at small strain, J2 plasticity.
+
+#include "fem/yield_curve.hpp"
 
 #include <Eigen/Dense>
 #include <string>
@@ -17,6 +19,11 @@ struct Material
   /// alpha (1/K): the thermal strain alpha (T - T_0) I of a temperature change from the
   /// initial temperature T_0 (fem/temperature_history.hpp); 0: none
   double expansion = 0;
+  /// J2 plasticity with isotropic hardening (fem/j2_plasticity.hpp) by this yield curve; empty:
+  /// elastic. Small strain only (Problem::check refuses it with large displacements).
+  YieldCurve plastic = {};
+
+  bool is_plastic() const { return !plastic.empty(); }
 
   double lame_lambda() const { return young * poisson / ((1 + poisson) * (1 - 2 * poisson)); }
   double lame_mu() const { return young / (2 * (1 + poisson)); }
@@ -26,7 +33,8 @@ struct Material
   /// 6x6 elasticity matrix in Voigt order [11,22,33,12,23,31] with engineering shears.
   Eigen::Matrix<double, 6, 6> elasticity_matrix() const;
   /// Throws feticon::Error naming `where` if E <= 0, nu is outside (-1, 0.5), rho is negative or not
-  /// finite, or alpha is not finite.
+  /// finite, alpha is not finite, or the yield curve is malformed (YieldCurve::check) or softens
+  /// faster than 3 G (the radial return would have no solution).
   void check(const std::string& where) const;
 };
 

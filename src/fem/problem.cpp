@@ -86,6 +86,11 @@ ConstrainedDofs Problem::all_constrained_dofs(size_t step, const std::string& am
   return to_constrained_dofs(merged);
 }
 
+bool Problem::has_plastic_body() const
+{
+  return std::ranges::any_of(materials, [](const Material& m) { return m.is_plastic(); });
+}
+
 bool Problem::has_temperatures() const
 {
   return std::ranges::any_of(steps, [](const Step& s) { return !s.temperatures.empty(); });

@@ -74,6 +74,8 @@ struct Problem
   ConstrainedDofs all_constrained_dofs(size_t step = 0, const std::string& amplitude = {}) const;
   /// Some step gives temperatures (the thermal strain then enters the elements).
   bool has_temperatures() const;
+  /// True if some body's material is plastic (Material::is_plastic).
+  bool has_plastic_body() const;
   /// Checks materials, set names and sizes; throws feticon::Error naming what is wrong.
   void validate() const;
 

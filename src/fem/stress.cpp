@@ -8,7 +8,8 @@ namespace feticon::fem
 std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& mesh, const la::Vector& u,
                                                               const std::vector<Material>& body_materials,
                                                               Kinematics kinematics,
-                                                              const la::Vector& temperature_change)
+                                                              const la::Vector& temperature_change,
+                                                              const MeshPlasticStates* plastic)
 {
   std::vector<Eigen::Matrix<double, 6, 1>> stresses(mesh.n_cells());
   const bool thermal = temperature_change.size() > 0;
@@ -19,7 +20,8 @@ std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& 
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
   {
     const mesh::CellKind type = mesh.cells.kind(c);
-    if (type != mesh::CellKind::hex8)
+    const std::span<const PlasticPointState> states = plastic ? plastic->of(c) : std::span<const PlasticPointState>{};
+    if (type != mesh::CellKind::hex8 || !states.empty())
     {
       const std::span<const int32_t> cell = mesh.cells[c];
       X_any.resize(static_cast<Eigen::Index>(cell.size()), 3);
@@ -32,9 +34,9 @@ std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& 
         if (thermal)
           dT_any(a) = temperature_change(cell[a]);
       }
-      stresses[c] =
-          cell_cauchy_stress(type, X_any, u_any, body_materials[mesh.cell_body[c]], kinematics, c,
-                             mesh.reduced(c) ? Integration::reduced : Integration::full, thermal ? &dT_any : nullptr);
+      stresses[c] = cell_cauchy_stress(type, X_any, u_any, body_materials[mesh.cell_body[c]], kinematics, c,
+                                       mesh.reduced(c) ? Integration::reduced : Integration::full,
+                                       thermal ? &dT_any : nullptr, states);
       continue;
     }
     for (int a = 0; a < 8; ++a)

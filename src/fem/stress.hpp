@@ -2,6 +2,7 @@
 /// @file Stress recovery per cell for output and post-processing.
 
 #include "fem/material.hpp"
+#include "fem/plastic_states.hpp"
 #include "la/types.hpp"
 #include "mesh/mesh.hpp"
 
@@ -12,10 +13,13 @@ namespace feticon::fem
 /// Volume-averaged Cauchy stress of every cell (Pa), Voigt [11,22,33,12,23,31].
 /// @param u global displacement (3 DOFs per mesh node)
 /// @param temperature_change T - T_0 per mesh node (K); empty: none
+/// @param plastic the J2 states of the plastic cells (ContactSolution::plastic); null or empty:
+///                no plastic body
 std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& mesh, const la::Vector& u,
                                                               const std::vector<Material>& body_materials,
                                                               Kinematics kinematics,
-                                                              const la::Vector& temperature_change = {});
+                                                              const la::Vector& temperature_change = {},
+                                                              const MeshPlasticStates* plastic = nullptr);
 
 /// Nodal average of cell stresses (each node: mean over its cells, within one body).
 std::vector<Eigen::Matrix<double, 6, 1>> nodal_average(const mesh::Mesh& mesh,

@@ -222,7 +222,7 @@ void write_node_sets(std::ostream& out, const mesh::Mesh& mesh, const std::set<s
   }
 }
 
-/// *MATERIAL with *ELASTIC and its *SOLID SECTION, per body.
+/// *MATERIAL with *ELASTIC (*EXPANSION, *PLASTIC) and its *SOLID SECTION, per body.
 void write_materials(std::ostream& out, const fem::Problem& problem)
 {
   const mesh::Mesh& mesh = problem.mesh;
@@ -233,6 +233,12 @@ void write_materials(std::ostream& out, const fem::Problem& problem)
         << number(m.young) << ", " << number(m.poisson) << '\n';
     if (m.expansion != 0)
       out << "*EXPANSION\n" << number(m.expansion) << '\n';
+    if (m.is_plastic())
+    {
+      out << "*PLASTIC\n";
+      for (size_t k = 0; k < m.plastic.stress.size(); ++k)
+        out << number(m.plastic.stress[k]) << ", " << number(m.plastic.plastic_strain[k]) << '\n';
+    }
     out << "*SOLID SECTION, ELSET=" << deck_name("B_", mesh.body_names[b])
         << ", MATERIAL=" << deck_name("M_", mesh.body_names[b]) << '\n';
   }
@@ -291,13 +297,13 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
   }
 }
 
-/// The static *STEP with its increments, *BOUNDARY (supports, plane strain) and *CLOAD (the
+/// The static *STEP with its increments (the step's own, else `options`'), *BOUNDARY (supports, plane strain) and *CLOAD (the
 /// external force, totals counted in `summary`).
 void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
                 CalculixDeckSummary& summary)
 {
   const mesh::Mesh& mesh = problem.mesh;
-  const double increment = 1.0 / options.increments;
+  const double increment = 1.0 / problem.steps.front().increments.value_or(options.increments);
   out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "") << ", INC=10000\n*STATIC\n"
       << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
   out << "*BOUNDARY\n";
@@ -388,6 +394,13 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
       out << "*CONTACT FILE\nCSTR\n";
     for (const std::string& name : node_sets)
       out << "*NODE PRINT, NSET=" << deck_name("N_", name) << ", TOTALS=ONLY\nRF\n";
+    if (problem.has_plastic_body())
+    {
+      out << "*EL FILE\nS, PE\n";
+      for (int32_t b = 0; b < mesh.n_bodies(); ++b)
+        if (problem.materials[b].is_plastic())
+          out << "*EL PRINT, ELSET=" << deck_name("B_", mesh.body_names[b]) << "\nPEEQ\n";
+    }
     out << "*END STEP\n";
   };
   write_initial_temperatures(out, problem);

@@ -41,11 +41,12 @@ void check_size(std::span<const double> values, std::size_t expected, const char
 }
 
 /// Blank line, " <what> for set <set> and time <E14.7>", blank line (printout.f formats 100-107).
-void append_set_header(std::string& out, const char* what, const std::string& set, double time)
+void append_set_header(std::string& out, const char* what, const std::string& set, double time,
+                       const char* for_set = " for set ")
 {
   out += "\n ";
   out += what;
-  out += " for set ";
+  out += for_set;
   out += set;
   out += " and time ";
   append_fortran_e(out, time, 14, 7);
@@ -193,6 +194,7 @@ void DatWriter::print_integration_points(TextFileBuffer& file, const DatStep& st
   {
     std::span<const double> values;
     const char* header = nullptr;
+    int components = 6;
     if (variable == "S")
     {
       values = step.stress;
@@ -203,29 +205,33 @@ void DatWriter::print_integration_points(TextFileBuffer& file, const DatStep& st
       values = step.strain;
       header = "strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)";
     }
+    else if (variable == "PEEQ")
+    {
+      values = step.plastic_strain;
+      // ccx's format 108 has no space before "for set" (append_set_header's for_set).
+      header = "equivalent plastic strain (elem, integ.pnt.,pe)";
+      components = 1;
+    }
     if (values.empty())
     {
       add_to_list(unavailable, variable);
       continue;
     }
-    append_set_header(out, header, set, step.time);
+    append_set_header(out, header, set, step.time, components == 1 ? "for set " : " for set ");
     for (const int32_t cell : cells)
     {
       const int64_t label = label_of(_model.element_labels, cell);
       for (int j = 0; j < 8; ++j)
       {
         // printoutint.f: I10, 1X, I3, 6 x (1X, 1PE13.6).
-        const double* point = &values[(std::size_t(cell) * 8 + feticon_point_of_calculix[j]) * 6];
-        std::array<double, 6> tensor;
-        for (int k = 0; k < 6; ++k)
-          tensor[k] = point[feticon_component_of_calculix[k]];
+        const double* point = &values[(std::size_t(cell) * 8 + feticon_point_of_calculix[j]) * components];
         append_integer(out, label, 10);
         out += ' ';
         append_integer(out, j + 1, 3);
-        for (const double value : tensor)
+        for (int k = 0; k < components; ++k)
         {
           out += ' ';
-          append_fortran_1pe(out, value, 13, 6);
+          append_fortran_1pe(out, components == 1 ? point[0] : point[feticon_component_of_calculix[k]], 13, 6);
         }
         out += '\n';
       }
@@ -283,6 +289,7 @@ std::vector<std::string> DatWriter::add_step(const DatStep& step, const std::vec
   check_size(step.reaction_force, 3 * n_nodes, "reaction_force", _path);
   check_size(step.stress, 48 * n_cells, "stress (cells x 8 points x 6)", _path);
   check_size(step.strain, 48 * n_cells, "strain (cells x 8 points x 6)", _path);
+  check_size(step.plastic_strain, 8 * n_cells, "plastic_strain (cells x 8 points)", _path);
   check_size(step.contact_pressure, n_nodes, "contact_pressure", _path);
   check_size(step.contact_gap, n_nodes, "contact_gap", _path);
 

@@ -78,6 +78,8 @@ struct DatStep
   std::span<const double> stress;
   /// n_cells x 8 x 6 strain, tensor components (xy = gamma_xy / 2), same orders as stress: E
   std::span<const double> strain;
+  /// n_cells x 8 equivalent plastic strain, same order (empty: no plastic body): PEEQ
+  std::span<const double> plastic_strain;
   std::span<const double> contact_pressure; ///< n_nodes (Pa), >= 0: CSTR
   std::span<const double> contact_gap;      ///< n_nodes (m), normal gap, < 0 penetration: CDIS
 };

@@ -46,7 +46,6 @@ const std::map<std::string, std::string> unsupported_keywords = {
     {"HEAT TRANSFER", "heat transfer"},
     {"COUPLED TEMPERATURE-DISPLACEMENT", "thermo-mechanics"},
     {"VISCO", "viscous materials"},
-    {"PLASTIC", "plasticity"},
     {"CYCLIC HARDENING", "plasticity"},
     {"DEFORMATION PLASTICITY", "plasticity"},
     {"HYPERELASTIC", "hyperelastic materials"},
@@ -242,6 +241,7 @@ private:
         {"ELASTIC", &KeywordReader::elastic},
         {"DENSITY", &KeywordReader::density},
         {"EXPANSION", &KeywordReader::expansion},
+        {"PLASTIC", &KeywordReader::plastic},
         {"INITIAL CONDITIONS", &KeywordReader::initial_conditions},
         {"TEMPERATURE", &KeywordReader::temperature},
         {"MODEL CHANGE", &KeywordReader::model_change},
@@ -529,6 +529,45 @@ private:
     if (_tokens.next_data(line))
       fail_at(line.where,
               "temperature-dependent expansion coefficients are not implemented by feticon (one data line)");
+  }
+
+  /// J2 plasticity with isotropic hardening: lines of von Mises stress, equivalent plastic
+  /// strain (and a temperature, which may be given if it is one for the whole table).
+  void plastic()
+  {
+    known_parameters({"HARDENING"});
+    if (_material.empty())
+      throw Error(where() + " comes before any *MATERIAL");
+    if (const std::string* hardening = _keyword.value("HARDENING"); hardening && *hardening != "ISOTROPIC")
+      throw Error(where() + ": HARDENING=" + *hardening +
+                  " is not implemented by feticon (isotropic hardening, HARDENING=ISOTROPIC)");
+    fem::YieldCurve& curve = _data.materials[_material].plastic;
+    curve = {};
+    DeckDataLine line;
+    std::optional<double> temperature;
+    while (_tokens.next_data(line))
+    {
+      curve.stress.push_back(real(line, 0, "von Mises stress"));
+      curve.plastic_strain.push_back(real(line, 1, "equivalent plastic strain"));
+      if (line.fields.size() > 2 && !line.fields[2].empty())
+      {
+        const double t = real(line, 2, "temperature");
+        if (temperature && *temperature != t)
+          fail_at(line.at(2), "temperature-dependent plastic tables are not implemented by feticon (one temperature)");
+        temperature = t;
+      }
+      try
+      {
+        // Each line as it comes, so that the error names the line that breaks the table.
+        curve.check("material " + _material + ", *PLASTIC");
+      }
+      catch (const Error& e)
+      {
+        fail_at(line.where, e.what());
+      }
+    }
+    if (curve.empty())
+      throw Error(where() + " needs data lines: von Mises stress, equivalent plastic strain");
   }
 
   /// TYPE=TEMPERATURE: node or node set, T_0 (model data).

@@ -227,6 +227,14 @@ private:
                     section.where.str() << ": *SOLID SECTION: no material '" << section.material << "' is defined");
       FETICON_CHECK(material->second.young > 0,
                     section.where.str() << ": *SOLID SECTION: material '" << section.material << "' has no *ELASTIC");
+      try
+      {
+        material->second.check("material '" + section.material + "'"); // e.g. a table that softens faster than 3 G
+      }
+      catch (const Error& e)
+      {
+        throw Error(section.where.str() + ": *SOLID SECTION: " + e.what());
+      }
       set->second.for_each([&](int32_t c) {
         FETICON_CHECK(section_of_cell[c] < 0 || section_of_cell[c] == static_cast<int32_t>(s),
                       section.where.str()

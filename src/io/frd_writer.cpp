@@ -132,6 +132,8 @@ FrdFields frd_fields(const std::vector<DeckOutputRequest>& outputs, std::vector<
         fields.stress = true;
       else if (request.kind == Kind::el_file && variable == "E")
         fields.strain = true;
+      else if (request.kind == Kind::el_file && variable == "PE")
+        fields.plastic_strain = true;
       else if (request.kind == Kind::contact_file && is_one_of(head, {"CDIS", "CSTR"}))
         fields.contact = true;
       else
@@ -283,12 +285,14 @@ void FrdWriter::check_step(const FrdStep& step) const
   check_field(step.stress, _n_nodes, 6, "stress", _path);
   check_field(step.strain, _n_nodes, 6, "strain", _path);
   check_field(step.reaction_force, _n_nodes, 3, "reaction_force", _path);
+  check_field(step.plastic_strain, _n_nodes, 1, "plastic_strain", _path);
   check_field(step.contact_pressure, _n_nodes, 1, "contact_pressure", _path);
   check_field(step.contact_gap, _n_nodes, 1, "contact_gap", _path);
   check_single_precision(step.displacement, 3, "displacement", _node_labels, _path);
   check_single_precision(step.stress, 6, "stress", _node_labels, _path);
   check_single_precision(step.strain, 6, "strain", _node_labels, _path);
   check_single_precision(step.reaction_force, 3, "reaction force", _node_labels, _path);
+  check_single_precision(step.plastic_strain, 1, "equivalent plastic strain", _node_labels, _path);
   check_single_precision(step.contact_pressure, 1, "contact pressure", _node_labels, _path);
   check_single_precision(step.contact_gap, 1, "contact gap", _node_labels, _path);
   FETICON_CHECK(step.step >= 1, "frd '" << _path.string() << "': step " << step.step << " must be >= 1");
@@ -345,6 +349,10 @@ void FrdWriter::write_fields(TextFileBuffer& out, const FrdStep& step, int32_t i
           " -5  EYZ         1    4    2    3\n"
           " -5  EZX         1    4    3    1\n",
           6, row_major(step.strain, 6));
+  if (!step.plastic_strain.empty())
+    block(" -4  PE          1    1\n"
+          " -5  PE          1    1    0    0\n",
+          1, row_major(step.plastic_strain, 1));
   if (!step.reaction_force.empty())
     block(" -4  FORC        4    1\n"
           " -5  F1          1    2    1    0\n"

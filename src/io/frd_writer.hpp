@@ -57,6 +57,7 @@ struct FrdStep
   std::span<const double> strain;           ///< n_nodes x 6, tensor components (xy = gamma/2),
                                             ///< same order: TOSTRAIN
   std::span<const double> reaction_force;   ///< n_nodes x 3 (N), CalculiX's RF (DatStep): FORC
+  std::span<const double> plastic_strain;   ///< n_nodes, the equivalent plastic strain: PE
   std::span<const double> contact_pressure; ///< n_nodes (Pa), >= 0, 0 off contact: CONTACT CPRESS
   /// n_nodes (m), normal gap, < 0 penetration (ccx's sign), 0 off contact: CONTACT COPEN;
   /// empty: COPEN written as 0. Written only with contact_pressure.
@@ -71,12 +72,13 @@ struct FrdFields
   bool reaction_force = false; ///< RF
   bool stress = false;         ///< S
   bool strain = false;         ///< E
+  bool plastic_strain = false; ///< PE (equivalent plastic strain)
   bool contact = false;        ///< CDIS or CSTR
 };
 
 /// @brief Reads the *_FILE requests of `outputs` (print requests are ignored).
 /// @param[out] warnings one line per request, naming its position, for what feticon does not
-///   write: variables other than U, RF, S, E, CDIS, CSTR, and NSET=/ELSET= (all nodes are written)
+///   write: variables other than U, RF, S, E, PE, CDIS, CSTR, and NSET=/ELSET= (all nodes are written)
 FrdFields frd_fields(const std::vector<DeckOutputRequest>& outputs, std::vector<std::string>& warnings);
 
 /// @brief Writes a CalculiX .frd result file step by step (see the file comment).

@@ -23,6 +23,25 @@ const std::set<std::string> structured_keys = {"mesh",       "bodies",       "pl
                                                "loads",      "temperatures", "initial_temperature", "steps",
                                                "amplitudes", "contact"};
 
+/// A body's `plastic:` table [[von Mises stress, equivalent plastic strain], ...] (the rows of
+/// CalculiX's *PLASTIC).
+fem::YieldCurve yield_curve(const YAML::Node& table, const std::string& key, const ProblemReader& r)
+{
+  FETICON_CHECK(table.IsSequence() && table.size() > 0,
+                r.source << ": " << key << " must be a list of [von Mises stress, equivalent plastic strain]");
+  fem::YieldCurve curve;
+  for (size_t i = 0; i < table.size(); ++i)
+  {
+    const std::string at = key + "[" + std::to_string(i) + "]";
+    FETICON_CHECK(table[i].IsSequence() && table[i].size() == 2,
+                  r.source << ": " << at << " must be [von Mises stress, equivalent plastic strain]");
+    curve.stress.push_back(r.number(table[i][0], at + "[0]"));
+    curve.plastic_strain.push_back(r.number(table[i][1], at + "[1]"));
+  }
+  curve.check(r.source + ": " + key);
+  return curve;
+}
+
 std::vector<std::string> split_path(const std::string& path)
 {
   std::vector<std::string> parts;
@@ -501,13 +520,15 @@ fem::Problem build_custom_problem(const ProblemFile& file)
   {
     const YAML::Node body = root["bodies"][name];
     FETICON_CHECK(body, file.source << ": bodies." << name << " is missing (young, poisson)");
-    r.only_keys(body, "bodies." + name, {"young", "poisson", "density", "expansion"});
+    r.only_keys(body, "bodies." + name, {"young", "poisson", "density", "expansion", "plastic"});
     fem::Material m{r.number(body["young"], "bodies." + name + ".young"),
                     r.number(body["poisson"], "bodies." + name + ".poisson")};
     if (body["density"])
       m.density = r.number(body["density"], "bodies." + name + ".density");
     if (body["expansion"])
       m.expansion = r.number(body["expansion"], "bodies." + name + ".expansion");
+    if (body["plastic"])
+      m.plastic = yield_curve(body["plastic"], "bodies." + name + ".plastic", r);
     m.check(file.source + ": bodies." + name);
     p.materials.push_back(m);
   }

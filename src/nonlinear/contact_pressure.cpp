@@ -198,9 +198,10 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
                 "contact multipliers do not match the contact rows");
   const la::Vector tributary = slave_tributary_areas(problem, solution.u, kinematics, pair_index);
 
-  const auto stresses = fem::nodal_average(
-      problem.mesh,
-      fem::cell_cauchy_stresses(problem.mesh, solution.u, problem.materials, kinematics, solution.temperature_change));
+  const auto stresses =
+      fem::nodal_average(problem.mesh,
+                         fem::cell_cauchy_stresses(problem.mesh, solution.u, problem.materials, kinematics,
+                                                   solution.temperature_change, &solution.plastic));
 
   // Plane strain: the nodes of a line through the thickness (same reference x) form one
   // sample; in 3D every node is its own sample.

@@ -3,6 +3,7 @@
 
 #include "contact/contact_constraints.hpp"
 #include "contact/tangential_rows.hpp"
+#include "fem/plastic_states.hpp"
 #include "la/types.hpp"
 #include "qp/qp_report.hpp"
 #include "qp/qp_state.hpp"
@@ -66,6 +67,8 @@ struct RestartState
   /// it grow (ContactSolution::schur_boundary_widened); empty while it has its initial extent.
   /// A restart forms its operators on it, as the uninterrupted run has them.
   std::vector<int32_t> schur_boundary;
+  /// The committed J2 states of every plastic cell (fem::MeshPlasticStates::pack); empty without.
+  std::vector<double> plastic;
 };
 
 struct ContactSolution
@@ -74,6 +77,9 @@ struct ContactSolution
   /// T - T_0 per mesh node (K) at the load step of u (fem::TemperatureHistory); empty: the
   /// problem has no temperatures. The stresses of the outputs subtract its thermal strain.
   la::Vector temperature_change;
+  /// The J2 states committed at the last converged load step, per mesh cell (empty: no plastic
+  /// body); every rank holds every cell's.
+  fem::MeshPlasticStates plastic;
   contact::ContactConstraints constraints; ///< contact rows of the last solve
   la::Vector contact_lambda;               ///< their (row-normalized) multipliers
   /// With friction: the tangential rows of the last solve (of its contact rows) and their

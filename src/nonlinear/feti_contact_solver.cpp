@@ -19,6 +19,7 @@
 #include "par/block_space.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -338,6 +339,12 @@ private:
   const SolverSettings& _settings;
   TimerTable& _timers;
   ContactSolution& _out;
+  /// Small displacements: the contact rows are a fixed set of candidates found at the reference
+  /// configuration (LinearContactRows).
+  const bool _small_displacements;
+  /// A linear problem (small displacements, elastic bodies): one solve per load step, its outer
+  /// loop the contact set's (linear_verdict). A plastic body's f_int is nonlinear in u even at
+  /// small strain: its outer loop is the modified Newton loop of large displacements.
   const bool _linear;
   fem::LoadHistory _history; ///< split where a load step is cut back
   std::unique_ptr<decomposition::Decomposition> _decomp;
@@ -404,7 +411,8 @@ private:
 FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSettings& settings, TimerTable& timers,
                                    par::Communicator comm, ContactSolution& out)
     : _problem(problem), _settings(settings), _timers(timers), _out(out),
-      _linear(settings.kinematics == fem::Kinematics::linear), _history(settings.load_history(problem)), _decomp([&] {
+      _small_displacements(settings.kinematics == fem::Kinematics::linear), _linear(settings.path_independent(problem)),
+      _history(settings.load_history(problem)), _decomp([&] {
         ScopedTimer t(timers, "decomposition");
         return std::make_unique<decomposition::Decomposition>(problem.mesh, make_partition(problem, settings),
                                                               problem.eliminated, comm);
@@ -425,6 +433,7 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
     std::sort(_out.owned_cells.begin(), _out.owned_cells.end());
   }
   _u = la::Vector::Zero(_decomp->n_primal());
+  _out.plastic = fem::MeshPlasticStates::zero(problem.mesh, problem.materials);
   for (const fem::ContactPairNames& pair : problem.contacts)
   {
     _pairs.push_back({pair.slave, pair.master, pair.slave_nodes});
@@ -434,7 +443,7 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
   _pair_in_force.assign(_pairs.size(), 1);
   _contact_options.search_distance = settings.search_distance;
   const bool dirichlet = settings.dual.preconditioner == dual::DualPreconditioner::dirichlet;
-  if (dirichlet || _linear)
+  if (dirichlet || _small_displacements)
   {
     // In the reference configuration: a linear run's candidates, every row within the search
     // distance (LinearContactRows picks its QPs' rows among them); with large displacements,
@@ -442,10 +451,10 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
     // (outer_iteration).
     ScopedTimer t(timers, "contact search");
     const la::Vector zero = la::Vector::Zero(3 * problem.mesh.n_nodes());
-    contact::ContactConstraints reach = _linear ? pair_rows_at(zero, _contact_options) : reach_rows(zero);
+    contact::ContactConstraints reach = _small_displacements ? pair_rows_at(zero, _contact_options) : reach_rows(zero);
     if (dirichlet)
-      _schur_boundary = schur_boundary_dofs(problem, _dirichlet, &reach, !_linear || _friction);
-    if (_linear)
+      _schur_boundary = schur_boundary_dofs(problem, _dirichlet, &reach, !_small_displacements || _friction);
+    if (_small_displacements)
       _linear_rows.emplace(problem.mesh, master_sets(), std::move(reach), settings.linear_contact_band);
   }
   update_stiffness(); // K_0 and R(X), kept for the whole run (modified Newton)
@@ -460,7 +469,7 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
   _force_floor = _primal_space.max(stiffest) * _convergence.roundoff_displacement();
   // The outer loop rebuilds the rows at every iteration, so rows near contact suffice; a linear
   // run solves once and needs every node within the search distance.
-  if (!_linear)
+  if (!_small_displacements)
     _contact_options.near_contact_fraction = near_contact_fraction;
   ScopedTimer t(timers, "internal forces");
   update_internal_force();
@@ -626,6 +635,14 @@ int FetiContactSolve::restore(const ContactSolution& previous)
   _out.history = previous.history;
   _out.steps = previous.steps;
   _out.warnings = previous.warnings; // the floors of the steps before the checkpoint
+  if (!_out.plastic.empty())
+  {
+    FETICON_CHECK(!r.plastic.empty(),
+                  "restart: the checkpoint holds no plastic states, and a body of this problem "
+                  "is plastic (another model?)");
+    _out.plastic.unpack(r.plastic);
+    _system->set_plastic_states(_out.plastic);
+  }
   set_temperatures(r.completed_steps);
   ScopedTimer t(_timers, "internal forces");
   update_internal_force();
@@ -744,7 +761,8 @@ double FetiContactSolve::qp_rtol(int k)
 IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
 {
   const std::string where = "load step " + std::to_string(_step) + ", outer iteration " + std::to_string(k) + ": ";
-  const bool refresh = !_linear &&
+  // At small strain K_0 stays: a plastic body's is its elastic stiffness (fem::Assembler).
+  const bool refresh = !_small_displacements &&
       ((_settings.stiffness == StiffnessUpdate::load_step && k == 1 && _step > 1) ||
        (_settings.stiffness == StiffnessUpdate::iteration && (_step > 1 || k > 1)) || _stiffness_stale);
   if (refresh)
@@ -756,7 +774,8 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   const la::Vector u_global = _decomp->gather_mean(_decomp->gather_stacked(_u));
   contact::ContactConstraints contact_rows = search_contact(u_global);
   qp::QpCounters rough_counters;
-  if (_settings.first_rows_reached && !_linear && k == 1 && u_global.isZero(0.0) && contact_rows.n_rows() > 0)
+  if (_settings.first_rows_reached && !_small_displacements && k == 1 && u_global.isZero(0.0) &&
+      contact_rows.n_rows() > 0)
     contact_rows = rows_reached_from_rest(std::move(contact_rows), u_global, rough_counters);
   if (_schur && !covers(_problem, _schur_boundary, contact_rows))
     grow_schur_boundary(u_global, where);
@@ -816,7 +835,7 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
                                        : _convergence.verdict(correction.du_norm, correction.u_norm, correction.du_max,
                                                               it.residual_norm, active, _previous_active);
   _previous_active = std::move(active);
-  if (verdict == OuterVerdict::iterate || !slip_bound_settled)
+  if (verdict == OuterVerdict::iterate || !slip_bound_settled || more_rows)
     return IterationOutcome::next();
   if (!exact_qp) // the step ends only after a QP solved to qp.rtol
   {
@@ -1075,7 +1094,25 @@ void FetiContactSolve::end_load_step(const LoadStep& record)
   _out.temperature_change = _temperature_change;
   if (!record.converged && record.floor.empty())
     return;
+  if (!_out.plastic.empty())
+  {
+    // The increment is accepted: its J2 states become the ones the next starts from.
+    _system->commit_plastic_state(_u);
+    _system->plastic_states(_out.plastic);
+    // f_int from the committed states (equal to the trial one's to round-off), as a restart
+    // computes it: the continued run is then bitwise the uninterrupted one.
+    update_internal_force();
+    // Every rank's outputs (the .frd, .dat and checkpoint of rank 0 among them) read every cell's.
+    if (!_decomp->comm().serial())
+      _out.plastic.unpack(_decomp->comm().all_gather(_out.plastic.pack(_out.owned_cells)));
+  }
   RestartState& r = _out.restart;
+  if (!_out.plastic.empty())
+  {
+    std::vector<int32_t> cells(static_cast<size_t>(_problem.mesh.n_cells()));
+    std::iota(cells.begin(), cells.end(), 0);
+    r.plastic = _out.plastic.pack(cells);
+  }
   r.completed_steps = _step;
   r.schur_boundary.clear();
   if (_out.schur_boundary_widened)

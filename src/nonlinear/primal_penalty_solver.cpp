@@ -219,6 +219,9 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
   FETICON_CHECK(!problem.has_temperatures(),
                 "the problem has temperatures, which method = primal_penalty does not "
                 "model: use method smalbe or dual_penalty");
+  FETICON_CHECK(!problem.has_plastic_body(),
+                "a body is plastic, which method = primal_penalty does not model: use "
+                "method smalbe or dual_penalty");
   const auto run_start = std::chrono::steady_clock::now();
   ContactSolution out;
   PrimalPenaltySolve solve(problem, settings, timers, out);

@@ -77,22 +77,29 @@ struct SolverSettings
   /// displacements, one with small ones (linear elasticity takes the whole load in one step;
   /// contact's own nonlinearity is the outer loop's).
   int steps() const { return kinematics == fem::Kinematics::linear ? 1 : load_steps; }
-  /// The same for `problem`: load_steps = auto is two where a pair has friction (which follows
-  /// the path in its steps), else one.
+  /// Whether `problem`'s answer at a step's end is independent of the load path, so that each
+  /// step takes one load step: small displacements and no plastic body (friction's path is
+  /// its load steps' own business, LoadHistory).
+  bool path_independent(const fem::Problem& problem) const
+  {
+    return kinematics == fem::Kinematics::linear && !problem.has_plastic_body();
+  }
+  /// The same for `problem`: load_steps = auto is two where a pair has friction or a body is
+  /// plastic (both follow the path in its steps), else one.
   int steps_of(const fem::Problem& problem) const
   {
-    if (kinematics == fem::Kinematics::linear)
+    if (path_independent(problem))
       return 1;
-    return auto_load_steps && has_friction(problem) ? 2 : load_steps;
+    return auto_load_steps && (has_friction(problem) || problem.has_plastic_body()) ? 2 : load_steps;
   }
   /// The load history of `problem` under these settings: steps_of(problem) load steps where a
-  /// step does not give its increments; with small displacements each step without
-  /// amplitudes in one load step (frictionless contact of linear elastic bodies: the answer
-  /// at a step's end does not depend on the path, so one QP per step gives CalculiX's per-step
-  /// results), a step with amplitudes in its increments (load_steps where it gives none).
+  /// step does not give its increments; with small displacements and elastic bodies each step
+  /// without amplitudes in one load step (frictionless contact of linear elastic bodies: the
+  /// answer at a step's end does not depend on the path, so one QP per step gives CalculiX's
+  /// per-step results), a step with amplitudes in its increments (load_steps where it gives none).
   fem::LoadHistory load_history(const fem::Problem& problem) const
   {
-    const bool linear = kinematics == fem::Kinematics::linear;
+    const bool linear = path_independent(problem);
     return fem::LoadHistory(problem, linear ? load_steps : steps_of(problem), linear);
   }
   /// Load steps of the whole run on `problem` (load_history(problem).n_steps()).

@@ -1,0 +1,104 @@
+#include "fem/j2_plasticity.hpp"
+
+#include "common/error.hpp"
+
+#include <cmath>
+
+namespace feticon::fem
+{
+namespace
+{
+/// s : s of a deviator in Voigt form with plain shears.
+double contract(const Voigt& s) { return s.head<3>().squaredNorm() + 2 * s.tail<3>().squaredNorm(); }
+
+Voigt deviator(const Voigt& sigma)
+{
+  Voigt s = sigma;
+  s.head<3>().array() -= sigma.head<3>().mean();
+  return s;
+}
+
+struct Trial
+{
+  Voigt stress, deviator;
+  double q = 0; ///< von Mises stress of the trial state
+};
+
+Trial trial_state(const Material& material, const Voigt& strain, double thermal_stress,
+                  const PlasticPointState& committed)
+{
+  Trial t;
+  t.stress = material.elasticity_matrix() * (strain - committed.plastic_strain);
+  t.stress.head<3>().array() -= thermal_stress;
+  t.deviator = deviator(t.stress);
+  t.q = std::sqrt(1.5 * contract(t.deviator));
+  return t;
+}
+
+/// The increment d >= 0 of the equivalent plastic strain with q_tr - 3 G d = sigma_y(eqps + d):
+/// on one segment k of the piecewise-linear yield curve the equation is linear,
+///   d = (q_tr - sigma_k - H_k (eqps - p_k)) / (3 G + H_k),
+/// so the solution is the first segment from eqps's on which that d stays.
+double plastic_increment(const YieldCurve& curve, double shear_modulus, double q_trial, double eqps)
+{
+  const size_t last = curve.stress.size() - 1;
+  for (size_t k = curve.segment(eqps);; ++k)
+  {
+    const double hardening = k < last
+        ? (curve.stress[k + 1] - curve.stress[k]) / (curve.plastic_strain[k + 1] - curve.plastic_strain[k])
+        : 0.0;
+    const double denominator = 3 * shear_modulus + hardening;
+    FETICON_CHECK(denominator > 0,
+                  "the plastic table softens faster than 3 G = " << 3 * shear_modulus << " Pa (slope " << hardening
+                                                                 << " Pa): the radial return has no solution");
+    const double d = (q_trial - curve.stress[k] - hardening * (eqps - curve.plastic_strain[k])) / denominator;
+    if (k == last || eqps + d < curve.plastic_strain[k + 1])
+      return d;
+  }
+}
+} // namespace
+
+J2Update j2_return(const Material& material, const Voigt& strain, double thermal_stress,
+                   const PlasticPointState& committed)
+{
+  const Trial t = trial_state(material, strain, thermal_stress, committed);
+  J2Update out{t.stress, committed, false};
+  const double eqps = committed.equivalent_plastic_strain;
+  if (t.q <= material.plastic.yield_stress(eqps))
+    return out;
+  const double G = material.lame_mu();
+  const double d = plastic_increment(material.plastic, G, t.q, eqps);
+  out.plastic = true;
+  out.stress = t.stress - (3 * G * d / t.q) * t.deviator;
+  // deps_p = 3/2 d s_tr / q_tr as a tensor; engineering shears double its shear entries.
+  Voigt direction = 1.5 / t.q * t.deviator;
+  direction.tail<3>() *= 2;
+  out.state.plastic_strain += d * direction;
+  out.state.equivalent_plastic_strain = eqps + d;
+  return out;
+}
+
+Eigen::Matrix<double, 6, 6> j2_tangent(const Material& material, const Voigt& strain, double thermal_stress,
+                                       const PlasticPointState& committed, const J2Update& update)
+{
+  Eigen::Matrix<double, 6, 6> C = material.elasticity_matrix();
+  if (!update.plastic)
+    return C;
+  const Trial t = trial_state(material, strain, thermal_stress, committed);
+  const double G = material.lame_mu();
+  const double bulk = material.young / (3 * (1 - 2 * material.poisson));
+  const double d = update.state.equivalent_plastic_strain - committed.equivalent_plastic_strain;
+  const double theta = 1 - 3 * G * d / t.q;
+  const double hardening = material.plastic.hardening(update.state.equivalent_plastic_strain);
+  const double theta_bar = 1 / (1 + hardening / (3 * G)) - (1 - theta);
+  const Voigt n = t.deviator / std::sqrt(contract(t.deviator));
+  // 2 G theta I_dev on engineering shears: 2 G theta (delta_ij - 1/3) on the normals, G theta
+  // on each shear; n : eps = n_v . eps_v with n_v's plain shears.
+  C.setZero();
+  C.topLeftCorner<3, 3>().setConstant(bulk - 2 * G * theta / 3);
+  C.topLeftCorner<3, 3>().diagonal().array() += 2 * G * theta;
+  C.bottomRightCorner<3, 3>().diagonal().setConstant(G * theta);
+  C -= 2 * G * theta_bar * n * n.transpose();
+  return C;
+}
+} // namespace feticon::fem

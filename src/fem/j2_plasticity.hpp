@@ -1,0 +1,49 @@
+#pragma once
+/// @file J2 (von Mises) plasticity with isotropic hardening at small strain: the radial return
+/// and its consistent tangent (Simo and Hughes 1998, Computational Inelasticity, box 3.2;
+/// ALGORITHMS.md section 7).
+///
+/// With the shear modulus G, the trial stress sigma_tr = D (eps - eps_p,n) - thermal, its
+/// deviator s_tr and q_tr = sqrt(3/2 s_tr : s_tr): if q_tr <= sigma_y(eqps_n) the step is
+/// elastic; otherwise the increment d of the equivalent plastic strain solves
+///   q_tr - 3 G d - sigma_y(eqps_n + d) = 0
+/// (exactly, segment by segment of the piecewise-linear yield curve), s = (1 - 3 G d / q_tr) s_tr,
+/// eps_p += 3/2 d s_tr / q_tr, and the consistent tangent is
+///   C = K 1 (x) 1 + 2 G theta I_dev - 2 G theta_bar n (x) n,  n = s_tr / |s_tr|,
+///   theta = 1 - 3 G d / q_tr,  theta_bar = 1 / (1 + H / (3 G)) - (1 - theta),
+/// H = d sigma_y / d eqps at the new eqps. Voigt [11,22,33,12,23,31]: engineering shears in the
+/// strains (plastic strain included), plain shears in the stress.
+
+#include "fem/material.hpp"
+
+#include <Eigen/Dense>
+
+namespace feticon::fem
+{
+using Voigt = Eigen::Matrix<double, 6, 1>;
+
+/// What a J2 material remembers at one integration point between increments.
+struct PlasticPointState
+{
+  Voigt plastic_strain = Voigt::Zero(); ///< eps_p, engineering shears
+  double equivalent_plastic_strain = 0; ///< eqps = integral of sqrt(2/3 deps_p : deps_p)
+};
+
+struct J2Update
+{
+  Voigt stress;            ///< sigma (Pa)
+  PlasticPointState state; ///< the state at the end of the increment
+  bool plastic = false;    ///< the point yielded in this increment
+};
+
+/// The radial return from `committed` at total strain `strain` (engineering shears), less the
+/// normal stress `thermal_stress` (alpha E / (1 - 2 nu) Delta T) of a temperature change.
+/// `material.plastic` must not be empty.
+J2Update j2_return(const Material& material, const Voigt& strain, double thermal_stress,
+                   const PlasticPointState& committed);
+
+/// The consistent tangent d sigma / d eps (6x6, engineering shears) of the update `update`
+/// from `committed` at `strain`; the elasticity matrix where the point did not yield.
+Eigen::Matrix<double, 6, 6> j2_tangent(const Material& material, const Voigt& strain, double thermal_stress,
+                                       const PlasticPointState& committed, const J2Update& update);
+} // namespace feticon::fem
