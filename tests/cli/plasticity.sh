@@ -5,13 +5,16 @@
 # 1. the problem file: converged, the VTU holds equivalent_plastic_strain, the contact force at
 #    the end the series model's 1.33820254e7 N (elastic unloading from 6.31828222e7 N);
 # 2. its CalculiX deck (feticon export: *PLASTIC, *EL FILE PE, *EL PRINT PEEQ) through the deck
-#    reader: the platen's reactions at both step ends, PEEQ of every point 2.731289e-3 at both
-#    (the series model's eps_p), the .frd's PE block. CalculiX 2.20 on this deck prints
-#    reactions 6.306867E+07 and 1.321864E+07 N and PEEQ 2.721E-03 (its penalty law's compliance
-#    takes 2e-5 m of the press; see docs/materials.md);
+#    reader: the platen's reactions at every increment and PEEQ of every point against the
+#    series model, the .frd's PE block. CalculiX 2.20 on this deck prints reactions 6.251933E+07,
+#    6.285092E+07, 6.318266E+07 and 1.340666E+07 N (closed form 6.25194855e7, 6.28511539e7,
+#    6.31828222e7, 1.33820254e7) and PEEQ 7.732E-05, 1.4037E-03, 2.7307E-03 (2.731289e-3): its
+#    penalty law (K = 8e14 Pa/m) lets the platen in by sigma / K = 3.1e-7 m, which the block's
+#    plastic strain gives up, and adds 1 / K to the unloading compliance (+0.18 %);
 # 3. restart: the checkpoint after step 1 (of a one-step copy) continues to the uninterrupted
 #    run's answer, bitwise (the J2 states are in the checkpoint);
-# 4. bad input: decreasing plastic strains, a first plastic strain that is not 0, kinematic
+# 4. two MPI ranks give the one-rank answer;
+# 5. bad input: decreasing plastic strains, a first plastic strain that is not 0, kinematic
 #    hardening, a temperature-dependent table, plasticity with NLGEOM: one line each.
 # Usage: plasticity.sh FETICON SOURCE_DIR
 set -euo pipefail
@@ -109,6 +112,21 @@ assert continued["converged"], continued.get("reason")
 a, b = whole["contact"]["total_normal_force"], continued["contact"]["total_normal_force"]
 assert a == b, (a, b)  # bitwise: the same states, the same QPs
 print(f"restart: contact force {b:.12g} N, the uninterrupted run's")
+PY
+
+# Two MPI ranks (the J2 states of each rank's subdomains gathered to both): the one-rank answer.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mpirun --oversubscribe -np 2 "$feticon" run -q "$work/press.yaml" --output "$work/ranks" "${settings[@]}"
+grep -q 'Name="equivalent_plastic_strain"' "$work/ranks/step_004.pvtu"
+/usr/bin/python3 - "$work/file/summary.json" "$work/ranks/summary.json" <<'PY'
+import json
+import sys
+
+one, two = (json.load(open(p)) for p in sys.argv[1:])
+assert [s["outer_iterations"] for s in one["steps"]] == [s["outer_iterations"] for s in two["steps"]]
+a, b = one["contact"]["total_normal_force"], two["contact"]["total_normal_force"]
+assert abs(a - b) <= 1e-12 * a, (a, b)
+print(f"2 ranks: contact force {b:.12g} N, outer iterations as on one rank")
 PY
 
 deck="$work/deck/feticon.inp"
