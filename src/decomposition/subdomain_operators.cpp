@@ -49,10 +49,12 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
         la::principal_submatrix(K_full, sub.active_of_full, sub.n_dofs(), la::Entries::lower_triangle);
     op.K.swap(K_active);
 
-    // Kernel from the current coordinates x = X + u (the kernel of K_M(u)).
+    // Kernel from the current coordinates x = X + u (the kernel of K_M(u)); with small
+    // displacements K(u) (a plastic body's tangent) keeps the kernel of X.
     Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> x = assembler.local_coordinates();
-    for (int32_t n = 0; n < sub.domain.n_nodes(); ++n)
-      x.row(n) += u_full.segment<3>(3 * n).transpose();
+    if (assembler.kinematics() == fem::Kinematics::total_lagrangian)
+      for (int32_t n = 0; n < sub.domain.n_nodes(); ++n)
+        x.row(n) += u_full.segment<3>(3 * n).transpose();
     op.R = rigid_body_modes(x, sub.full_of_active);
     for (int32_t node : choose_fixing_nodes(x))
       for (int i = 0; i < 3; ++i)

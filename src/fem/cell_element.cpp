@@ -106,7 +106,9 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
       S = update.stress;
       if (!plastic->updated.empty())
         plastic->updated[q] = update.state;
-      if (kind == StiffnessKind::tangent)
+      // The material part of K is the elasto-plastic tangent (small strain: all of K); at a
+      // point that does not yield it is D, so K_0 (u = 0) is the elastic stiffness.
+      if (kind != StiffnessKind::none)
         C = &(tangent = j2_tangent(material, strain, thermal, plastic->committed[q], update));
     }
     else

@@ -31,7 +31,8 @@ struct CellPlasticState
 
 /// Internal force (N) and, unless kind == none, stiffness (N/m) of one cell. A plastic material
 /// (Material::is_plastic, small strain) needs `plastic` with one committed state per quadrature
-/// point; its K is the elastic K_0 for kind == material and the consistent tangent for tangent.
+/// point; its K is the consistent tangent of the return (Simo and Hughes), D where a point does
+/// not yield (K_0 at u = 0).
 /// @param[in] X  reference node coordinates, one row per local node (m)
 /// @param[in] u  node displacements, likewise (m)
 /// @param[in] cell  cell id for error messages (an inverted cell names it)

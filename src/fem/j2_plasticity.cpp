@@ -64,7 +64,12 @@ J2Update j2_return(const Material& material, const Voigt& strain, double thermal
   const Trial t = trial_state(material, strain, thermal_stress, committed);
   J2Update out{t.stress, committed, false};
   const double eqps = committed.equivalent_plastic_strain;
-  if (t.q <= material.plastic.yield_stress(eqps))
+  // A point that ended the last increment on the yield surface starts the next one there: its
+  // trial stress at the increment's start exceeds sigma_y by round-off alone. Taken as yielding,
+  // its tangent is the elasto-plastic one for a step that may unload (a release diverged from
+  // it: the block's tangent H, 200 times softer than E); within 1e-10 of sigma_y the point is
+  // elastic (a stress error below 1e-10 sigma_y).
+  if (t.q <= material.plastic.yield_stress(eqps) * (1 + 1e-10))
     return out;
   const double G = material.lame_mu();
   const double d = plastic_increment(material.plastic, G, t.q, eqps);

@@ -73,9 +73,10 @@ std::vector<SettingSpec> make_specs()
       {"smalbe.beta", "2", "SMALBE-M: M <- M / beta when the Lagrangian increases too little", Type::number, {}, 1, 1e6, true},
       {"eps_n", "100", "primal penalty eps_n as a multiple of max diag K", Type::number, {}, 0, inf, true},
       {"displacements", "large", "large (total Lagrangian, Vondrák et al.'s benchmark) or small (linear elasticity)", Type::text, {"small", "large"}, 0, 0, false},
-      {"newton.stiffness", "initial", "FETI outer-loop stiffness: initial (K_0 kept, Vondrák et al.'s "
-                                      "modified Newton), step or iteration (K_M(u) refreshed)",
-       Type::text, {"initial", "step", "iteration"}, 0, 0, false},
+      {"newton.stiffness", "auto", "FETI outer-loop stiffness: initial (K_0 kept, Vondrák et al.'s "
+                                   "modified Newton), step or iteration (K_M(u) refreshed); auto: initial, "
+                                   "iteration where a body is plastic (docs/materials.md)",
+       Type::text, {"auto", "initial", "step", "iteration"}, 0, 0, false},
       {"newton.max_iterations", "15", "outer iterations per load step", Type::integer, {}, 1, 10000, false},
       {"newton.cutbacks", "5", "a load step whose outer loop diverges or does not converge is solved again from "
        "its start with half the increment, up to this many times in a row (CalculiX's and Abaqus's cutbacks); "

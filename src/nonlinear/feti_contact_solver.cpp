@@ -346,7 +346,8 @@ private:
   /// loop the contact set's (linear_verdict). A plastic body's f_int is nonlinear in u even at
   /// small strain: its outer loop is the modified Newton loop of large displacements.
   const bool _linear;
-  fem::LoadHistory _history; ///< split where a load step is cut back
+  const StiffnessUpdate _stiffness; ///< SolverSettings::stiffness_of the problem
+  fem::LoadHistory _history;        ///< split where a load step is cut back
   std::unique_ptr<decomposition::Decomposition> _decomp;
   par::BlockSpace _primal_space;
   std::unique_ptr<decomposition::SubdomainSystem> _system;
@@ -412,7 +413,7 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
                                    par::Communicator comm, ContactSolution& out)
     : _problem(problem), _settings(settings), _timers(timers), _out(out),
       _small_displacements(settings.kinematics == fem::Kinematics::linear), _linear(settings.path_independent(problem)),
-      _history(settings.load_history(problem)), _decomp([&] {
+      _stiffness(settings.stiffness_of(problem)), _history(settings.load_history(problem)), _decomp([&] {
         ScopedTimer t(timers, "decomposition");
         return std::make_unique<decomposition::Decomposition>(problem.mesh, make_partition(problem, settings),
                                                               problem.eliminated, comm);
@@ -702,7 +703,7 @@ bool FetiContactSolve::cut_back(int step)
   _multipliers = _step_start.multipliers;
   _previous_active = _step_start.active;
   _diverged = false;
-  _stiffness_stale = _settings.stiffness == StiffnessUpdate::iteration;
+  _stiffness_stale = _stiffness == StiffnessUpdate::iteration;
   _history.split(step);
   ScopedTimer t(_timers, "internal forces");
   update_internal_force();
@@ -761,10 +762,10 @@ double FetiContactSolve::qp_rtol(int k)
 IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
 {
   const std::string where = "load step " + std::to_string(_step) + ", outer iteration " + std::to_string(k) + ": ";
-  // At small strain K_0 stays: a plastic body's is its elastic stiffness (fem::Assembler).
-  const bool refresh = !_small_displacements &&
-      ((_settings.stiffness == StiffnessUpdate::load_step && k == 1 && _step > 1) ||
-       (_settings.stiffness == StiffnessUpdate::iteration && (_step > 1 || k > 1)) || _stiffness_stale);
+  // With small displacements K_0 is K for good, unless a plastic body's tangent changes it.
+  const bool refresh = (!_small_displacements || !_out.plastic.empty()) &&
+      ((_stiffness == StiffnessUpdate::load_step && k == 1 && _step > 1) ||
+       (_stiffness == StiffnessUpdate::iteration && (_step > 1 || k > 1)) || _stiffness_stale);
   if (refresh)
   {
     _stiffness_stale = false;

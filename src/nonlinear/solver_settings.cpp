@@ -21,9 +21,10 @@ SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
   residual_tolerance = s.number("newton.residual_tolerance");
   forcing = s.number("newton.forcing");
   const std::string& stiffness_name = s.text("newton.stiffness");
-  stiffness = stiffness_name == "initial" ? StiffnessUpdate::initial
-      : stiffness_name == "step"          ? StiffnessUpdate::load_step
-                                          : StiffnessUpdate::iteration;
+  stiffness_auto = stiffness_name == "auto";
+  stiffness = stiffness_name == "initial" || stiffness_auto ? StiffnessUpdate::initial
+      : stiffness_name == "step"                            ? StiffnessUpdate::load_step
+                                                            : StiffnessUpdate::iteration;
   subdomains = s.is_auto("subdomains") ? 8 : s.integer("subdomains");
   const std::string& partitioner_name = s.text("partitioner");
   partitioner = partitioner_name == "metis" ? Partitioner::metis

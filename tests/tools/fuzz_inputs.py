@@ -390,7 +390,8 @@ MM_MUTATORS = [number_replacer(EXTREMES), mm_header, mm_size]
 # numbers it parses, the references between nodes, elements, sets and surfaces, *INCLUDE, and
 # the magnitudes a valid deck may carry (1e-30 to 1e30 moduli, loads and coordinates).
 
-DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_friction.inp", "punch_tet10.inp",
+DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_friction.inp", "contactenergy_plastic.inp",
+              "punch_tet10.inp",
               "punch_c3d20r.inp", "contactenergy_density.inp"]
 # Seeds of our own (tests/data/fuzz/): a C3D10 deck, feticon's export of gmsh_tet10.yaml, and
 # a C3D20 / C3D20R one (reduced integration per cell), the same punch meshed with hex20.
@@ -398,9 +399,11 @@ FUZZ_FOLDER_DECKS = {"punch_tet10.inp", "punch_c3d20r.inp"}
 # Seeds made from another by an edit: contact1 with Coulomb friction (*FRICTION after the
 # pressure-overclosure law, as tests/cli/deck_friction.sh adds it to CalculiX's decks).
 # contactenergy with a density, for the body loads among the keyword mutations (*DLOAD GRAV,
-# CENTRIF).
+# CENTRIF). contactenergy (small displacements) with J2 plasticity (issue 66: a yield stress its
+# load passes, hardening then perfect beyond the table's end).
 DECK_DERIVED = {"contact1_friction.inp": ("contact1.inp", "*SURFACE BEHAVIOR", "*FRICTION\n0.3, 1e6\n"),
-                "contactenergy_density.inp": ("contactenergy.inp", "*ELASTIC", "*DENSITY\n7850.\n")}
+                "contactenergy_density.inp": ("contactenergy.inp", "*ELASTIC", "*DENSITY\n7850.\n"),
+                "contactenergy_plastic.inp": ("contactenergy.inp", "*ELASTIC", "*PLASTIC\n20., 0.\n40., 0.1\n")}
 DECK_EXTREMES = EXTREMES + ["1e400", "-1e400", "NaN", "-nan", "Infinity", "1.5D3", "1d999",
                             "9223372036854775807", "9223372036854775808",
                             "-9223372036854775809", "-0", "1e-30", "1e30", "-1e30"]
@@ -427,6 +430,8 @@ DECK_KEYWORDS = [
     "*SOLID SECTION, ELSET=EALL, MATERIAL=EL", "*SOLID SECTION, ELSET=@, MATERIAL=@",
     "*SURFACE INTERACTION, NAME=SI1", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD",
     "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED", "*NODE PRINT, NSET=@", "*EL FILE\nS,E,XYZ",
+    "*PLASTIC\n20,0\n10,0.001", "*PLASTIC\n20,0.01", "*PLASTIC\n20,0\n30,0", "*PLASTIC\n-1,0",
+    "*PLASTIC, HARDENING=KINEMATIC\n20,0", "*PLASTIC\n20,0,20\n30,1,100", "*PLASTIC", "*PLASTIC\n1e30,0\n1e-30,1e30",
     "*AMPLITUDE, NAME=A\n0,0,1,1", "*CLOAD, AMPLITUDE=A\n1,1,1", "*AMPLITUDE, NAME=A\n1,0,0,1",
     "*AMPLITUDE, NAME=A\n0", "*AMPLITUDE, NAME=A, TIME=TOTAL TIME, SHIFTX=1e300\n0,0,1,1e300",
     "*AMPLITUDE, NAME=A, SHIFTY=-1\n0,0,1,1,1,-1e30", "*STEP, AMPLITUDE=STEP", "*STEP, AMPLITUDE=@",
