@@ -116,14 +116,6 @@ void SubdomainSystem::commit_plastic_state(const la::Vector& u_stacked)
   });
 }
 
-bool SubdomainSystem::has_plastic_cells() const
-{
-  for (int32_t s = _decomposition.first_owned(); s < _decomposition.end_owned(); ++s)
-    if (_assemblers[s]->has_plastic_cells())
-      return true;
-  return false;
-}
-
 void SubdomainSystem::plastic_states(fem::MeshPlasticStates& states) const
 {
   for (int32_t s = _decomposition.first_owned(); s < _decomposition.end_owned(); ++s)

@@ -44,8 +44,6 @@ public:
   /// Makes the J2 states at stacked displacement `u` the committed ones in every owned
   /// subdomain (fem::Assembler::commit_plastic_state): the end of a converged increment.
   void commit_plastic_state(const la::Vector& u_stacked);
-  /// True if some owned subdomain has cells of a plastic body.
-  bool has_plastic_cells() const;
   /// The committed J2 states of the owned subdomains' cells, written into `states` (indexed by
   /// mesh cell, fem::MeshPlasticStates::zero of the mesh).
   void plastic_states(fem::MeshPlasticStates& states) const;

@@ -80,7 +80,6 @@ public:
   std::span<const PlasticPointState> plastic_state(size_t k) const;
   /// Replaces every committed state (a restart), in the order of plastic_state(0), (1), ...
   void set_plastic_state(std::vector<PlasticPointState> states);
-  const std::vector<PlasticPointState>& plastic_states() const { return _plastic_committed; }
 
   /// Reference coordinates of the domain's nodes, one row per local node.
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> local_coordinates() const;
