@@ -55,6 +55,14 @@ struct PointResults
   std::vector<Eigen::Matrix<double, 6, 1>> cell_stress, cell_strain;
 };
 
+/// The point of hex8's 2x2x2 rule (x fastest, then y, then z) that is hex8_gauss_points()[a]
+/// (the corners' order, the .dat's).
+size_t rule_point_of_gauss_point(int a)
+{
+  const Eigen::Vector3d& xi = fem::hex8_gauss_points()[a];
+  return (xi(0) > 0 ? 1 : 0) + (xi(1) > 0 ? 2 : 0) + (xi(2) > 0 ? 4 : 0);
+}
+
 /// The results of cell c at the points of its solve's rule from its J2 states (a plastic
 /// cell); hex8's in hex8_gauss_points() order, as hex8_point_results gives them.
 fem::CellPointResults plastic_point_results(const mesh::Mesh& mesh, int32_t c, const Eigen::MatrixX3d& X,
@@ -68,15 +76,13 @@ fem::CellPointResults plastic_point_results(const mesh::Mesh& mesh, int32_t c, c
       mesh.reduced(c) ? fem::Integration::reduced : fem::Integration::full, c, temperature_change, states);
   if (type != mesh::CellKind::hex8)
     return r;
-  // The rule's points run x fastest, then y, then z; hex8_gauss_points() follows the corners.
   fem::CellPointResults out = r;
   for (int a = 0; a < 8; ++a)
   {
-    const Eigen::Vector3d& xi = fem::hex8_gauss_points()[a];
-    const size_t lexicographic = (xi(0) > 0 ? 1 : 0) + (xi(1) > 0 ? 2 : 0) + (xi(2) > 0 ? 4 : 0);
-    out.stress[a] = r.stress[lexicographic];
-    out.strain[a] = r.strain[lexicographic];
-    out.weight[a] = r.weight[lexicographic];
+    const size_t q = rule_point_of_gauss_point(a);
+    out.stress[a] = r.stress[q];
+    out.strain[a] = r.strain[q];
+    out.weight[a] = r.weight[q];
   }
   return out;
 }
@@ -159,12 +165,9 @@ PointResults point_results(const fem::Problem& p, const la::Vector& u, const la:
   {
     out.plastic_strain.assign(static_cast<size_t>(mesh.n_cells()) * 8, 0.0);
     for (int32_t c = 0; c < mesh.n_cells(); ++c)
-      for (size_t g = 0; g < plastic.of(c).size(); ++g) // the rule's order, x fastest: to the corners'
-      {
-        const Eigen::Vector3d& xi = fem::hex8_gauss_points()[g];
-        const size_t lexicographic = (xi(0) > 0 ? 1 : 0) + (xi(1) > 0 ? 2 : 0) + (xi(2) > 0 ? 4 : 0);
-        out.plastic_strain[8 * c + g] = plastic.of(c)[lexicographic].equivalent_plastic_strain;
-      }
+      for (size_t a = 0; a < plastic.of(c).size(); ++a)
+        out.plastic_strain[8 * c + a] =
+            plastic.of(c)[rule_point_of_gauss_point(static_cast<int>(a))].equivalent_plastic_strain;
   }
   return out;
 }

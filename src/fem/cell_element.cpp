@@ -102,14 +102,15 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
     {
       FETICON_ASSERT(plastic && plastic->committed.size() == rule.points.size() && kinematics == Kinematics::linear,
                      "a plastic cell needs a state per quadrature point and small strain");
-      const J2Update update = j2_return(material, strain, thermal, plastic->committed[q]);
+      // The material part of K is the elasto-plastic tangent (small strain: all of K); at a
+      // point that does not yield it is D, so K_0 (u = 0) is the elastic stiffness.
+      const bool with_k = kind != StiffnessKind::none;
+      const J2Update update = j2_return(material, strain, thermal, plastic->committed[q], with_k ? &tangent : nullptr);
       S = update.stress;
       if (!plastic->updated.empty())
         plastic->updated[q] = update.state;
-      // The material part of K is the elasto-plastic tangent (small strain: all of K); at a
-      // point that does not yield it is D, so K_0 (u = 0) is the elastic stiffness.
-      if (kind != StiffnessKind::none)
-        C = &(tangent = j2_tangent(material, strain, thermal, plastic->committed[q], update));
+      if (with_k)
+        C = &tangent;
     }
     else
     {

@@ -56,10 +56,28 @@ double plastic_increment(const YieldCurve& curve, double shear_modulus, double q
       return d;
   }
 }
+
+/// The consistent tangent of a yielded point: trial state t, increment d from eqps d_0 + d.
+Eigen::Matrix<double, 6, 6> consistent_tangent(const Material& material, const Trial& t, double d, double eqps)
+{
+  const double G = material.lame_mu();
+  const double bulk = material.young / (3 * (1 - 2 * material.poisson));
+  const double theta = 1 - 3 * G * d / t.q;
+  const double theta_bar = 1 / (1 + material.plastic.hardening(eqps) / (3 * G)) - (1 - theta);
+  const Voigt n = t.deviator / std::sqrt(contract(t.deviator));
+  // 2 G theta I_dev on engineering shears: 2 G theta (delta_ij - 1/3) on the normals, G theta
+  // on each shear; n : eps = n_v . eps_v with n_v's plain shears.
+  Eigen::Matrix<double, 6, 6> C = Eigen::Matrix<double, 6, 6>::Zero();
+  C.topLeftCorner<3, 3>().setConstant(bulk - 2 * G * theta / 3);
+  C.topLeftCorner<3, 3>().diagonal().array() += 2 * G * theta;
+  C.bottomRightCorner<3, 3>().diagonal().setConstant(G * theta);
+  C -= 2 * G * theta_bar * n * n.transpose();
+  return C;
+}
 } // namespace
 
 J2Update j2_return(const Material& material, const Voigt& strain, double thermal_stress,
-                   const PlasticPointState& committed)
+                   const PlasticPointState& committed, Eigen::Matrix<double, 6, 6>* tangent)
 {
   const Trial t = trial_state(material, strain, thermal_stress, committed);
   J2Update out{t.stress, committed, false};
@@ -70,7 +88,11 @@ J2Update j2_return(const Material& material, const Voigt& strain, double thermal
   // it: the block's tangent H, 200 times softer than E); within 1e-10 of sigma_y the point is
   // elastic (a stress error below 1e-10 sigma_y).
   if (t.q <= material.plastic.yield_stress(eqps) * (1 + 1e-10))
+  {
+    if (tangent)
+      *tangent = material.elasticity_matrix();
     return out;
+  }
   const double G = material.lame_mu();
   const double d = plastic_increment(material.plastic, G, t.q, eqps);
   out.plastic = true;
@@ -80,30 +102,8 @@ J2Update j2_return(const Material& material, const Voigt& strain, double thermal
   direction.tail<3>() *= 2;
   out.state.plastic_strain += d * direction;
   out.state.equivalent_plastic_strain = eqps + d;
+  if (tangent)
+    *tangent = consistent_tangent(material, t, d, eqps + d);
   return out;
-}
-
-Eigen::Matrix<double, 6, 6> j2_tangent(const Material& material, const Voigt& strain, double thermal_stress,
-                                       const PlasticPointState& committed, const J2Update& update)
-{
-  Eigen::Matrix<double, 6, 6> C = material.elasticity_matrix();
-  if (!update.plastic)
-    return C;
-  const Trial t = trial_state(material, strain, thermal_stress, committed);
-  const double G = material.lame_mu();
-  const double bulk = material.young / (3 * (1 - 2 * material.poisson));
-  const double d = update.state.equivalent_plastic_strain - committed.equivalent_plastic_strain;
-  const double theta = 1 - 3 * G * d / t.q;
-  const double hardening = material.plastic.hardening(update.state.equivalent_plastic_strain);
-  const double theta_bar = 1 / (1 + hardening / (3 * G)) - (1 - theta);
-  const Voigt n = t.deviator / std::sqrt(contract(t.deviator));
-  // 2 G theta I_dev on engineering shears: 2 G theta (delta_ij - 1/3) on the normals, G theta
-  // on each shear; n : eps = n_v . eps_v with n_v's plain shears.
-  C.setZero();
-  C.topLeftCorner<3, 3>().setConstant(bulk - 2 * G * theta / 3);
-  C.topLeftCorner<3, 3>().diagonal().array() += 2 * G * theta;
-  C.bottomRightCorner<3, 3>().diagonal().setConstant(G * theta);
-  C -= 2 * G * theta_bar * n * n.transpose();
-  return C;
 }
 } // namespace feticon::fem

@@ -39,11 +39,8 @@ struct J2Update
 /// The radial return from `committed` at total strain `strain` (engineering shears), less the
 /// normal stress `thermal_stress` (alpha E / (1 - 2 nu) Delta T) of a temperature change.
 /// `material.plastic` must not be empty.
+/// @param[out] tangent if not null, the consistent tangent d sigma / d eps (6x6, engineering
+///             shears) of the return; the elasticity matrix where the point did not yield
 J2Update j2_return(const Material& material, const Voigt& strain, double thermal_stress,
-                   const PlasticPointState& committed);
-
-/// The consistent tangent d sigma / d eps (6x6, engineering shears) of the update `update`
-/// from `committed` at `strain`; the elasticity matrix where the point did not yield.
-Eigen::Matrix<double, 6, 6> j2_tangent(const Material& material, const Voigt& strain, double thermal_stress,
-                                       const PlasticPointState& committed, const J2Update& update);
+                   const PlasticPointState& committed, Eigen::Matrix<double, 6, 6>* tangent = nullptr);
 } // namespace feticon::fem
