@@ -108,7 +108,7 @@ nlohmann::ordered_json contact_benchmark(const BenchOptions& options)
   out["completed"] = solution.completed;
   if (!solution.converged)
     out["reason"] = solution.reason;
-  out["degrees_of_freedom"] = 3 * static_cast<int64_t>(problem->mesh.n_nodes());
+  out["degrees_of_freedom"] = problem->mesh.dofs_per_node() * static_cast<int64_t>(problem->mesh.n_nodes());
   out["elements"] = problem->mesh.n_cells();
   out["subdomains"] = solution.n_subdomains;
   out["subdomains_reason"] = feti.subdomains_reason;

@@ -73,7 +73,7 @@ fem::CellPointResults plastic_point_results(const mesh::Mesh& mesh, int32_t c, c
   const mesh::CellKind type = mesh.cells.kind(c);
   const fem::CellPointResults r = fem::cell_point_results(
       type, X, u, material, fem::Kinematics::linear,
-      mesh.reduced(c) ? fem::Integration::reduced : fem::Integration::full, c, temperature_change, states);
+      mesh.reduced(c) ? fem::Integration::reduced : fem::Integration::full, c, temperature_change, states, mesh.planar);
   if (type != mesh::CellKind::hex8)
     return r;
   fem::CellPointResults out = r;
@@ -139,7 +139,7 @@ PointResults point_results(const fem::Problem& p, const la::Vector& u, const la:
       }
       r = plastic.of(c).empty()
           ? fem::cell_point_results(mesh.cells.kind(c), X_any, u_any, material, kinematics, fem::Integration::full, c,
-                                    thermal ? &dT_any : nullptr)
+                                    thermal ? &dT_any : nullptr, {}, mesh.planar)
           : plastic_point_results(mesh, c, X_any, u_any, material, thermal ? &dT_any : nullptr, plastic.of(c));
     }
     Eigen::Matrix<double, 6, 1> s = Eigen::Matrix<double, 6, 1>::Zero(), e = s;

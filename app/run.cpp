@@ -163,8 +163,8 @@ void set_up(const RunOptions& options, RunContext& run)
   }
   run.solver.explicit_block_budget = run.memory_estimate.explicit_block_budget;
   log::info("feticon: problem " + problem.name + ", " + mesh::describe_cells(problem.mesh.cells) + ", " +
-            std::to_string(3 * static_cast<int64_t>(problem.mesh.n_nodes())) + " DOFs, method " +
-            settings.text("method") + ", " + settings.text("displacements") + " displacements" +
+            std::to_string(problem.mesh.dofs_per_node() * static_cast<int64_t>(problem.mesh.n_nodes())) +
+            " DOFs, method " + settings.text("method") + ", " + settings.text("displacements") + " displacements" +
             (problem.mesh_from_cache ? "; mesh from the mesh cache (FETICON_MESH_CACHE=off remeshes)" : ""));
   if (run.solver.method != nonlinear::ContactMethod::primal_penalty)
     log::info("subdomains: " + std::to_string(run.feti.subdomains) + " (" + run.feti.subdomains_reason +
@@ -257,7 +257,7 @@ void summarize_problem(const RunContext& run, const nonlinear::ContactSolution& 
   summary["completed"] = solution.completed; // every load step ran; converged: and met the stopping test
   if (!solution.converged)
     summary["reason"] = solution.reason;
-  summary["degrees_of_freedom"] = 3 * static_cast<int64_t>(problem.mesh.n_nodes());
+  summary["degrees_of_freedom"] = problem.mesh.dofs_per_node() * static_cast<int64_t>(problem.mesh.n_nodes());
   summary["nodes"] = problem.mesh.n_nodes();
   summary["elements"] = problem.mesh.n_cells();
   summary["mesh_from_cache"] = problem.mesh_from_cache;

@@ -26,26 +26,68 @@ struct ClosestPoint
   ProjectionKind kind = ProjectionKind::face;
 };
 
-/// Which master edges lie on the boundary of the master surface: those of only one master face.
+/// Which master edges lie on the boundary of the master surface: those of only one master face;
+/// of a master curve (the edges of 2D cells), the corners of only one master edge.
 class SurfaceBoundary
 {
 public:
   explicit SurfaceBoundary(const std::vector<mesh::Face>& faces)
   {
     for (const mesh::Face& face : faces)
-      for (int a = 0, n = face.n_corners(); a < n; ++a)
-        ++_edge_faces[key(face[a], face[(a + 1) % n])];
+      if (mesh::is_line(face.kind))
+        for (int a = 0; a < 2; ++a)
+          ++_corner_faces[face[a]];
+      else
+        for (int a = 0, n = face.n_corners(); a < n; ++a)
+          ++_edge_faces[key(face[a], face[(a + 1) % n])];
   }
   bool edge_on_boundary(int32_t a, int32_t b) const { return _edge_faces.at(key(a, b)) == 1; }
+  bool corner_on_boundary(int32_t a) const { return _corner_faces.at(a) == 1; }
 
 private:
   static std::pair<int32_t, int32_t> key(int32_t a, int32_t b) { return std::minmax(a, b); }
   std::map<std::pair<int32_t, int32_t>, int32_t> _edge_faces;
+  std::map<int32_t, int32_t> _corner_faces;
 };
 
 /// Distance beyond a boundary side, relative to the face size, from which a node is beyond the rim
 /// of the master surface: the same 1e-6 as the acceptance tolerance of a projection.
 constexpr double rim_tolerance = 1e-6;
+
+/// Whether x_s lies beyond a boundary side of the face (file comment): for a face, on the outer
+/// side of the line of a boundary side in the face's tangent plane, whose outward in-plane
+/// normal is (x_k+1 - x_k) x n_f (counter-clockwise sides seen from outside); for an edge of a
+/// 2D cell, past a boundary corner along the edge.
+bool beyond_boundary(const mesh::Face& face, const FaceGeometry& geometry, const SurfaceBoundary& boundary,
+                     const Eigen::Vector3d& x_s)
+{
+  const double tolerance = rim_tolerance * face_size(geometry);
+  if (mesh::is_line(face.kind))
+  {
+    for (int k = 0; k < 2; ++k)
+    {
+      const Eigen::Vector3d corner = geometry.x.row(k).transpose();
+      const Eigen::Vector3d outward = (corner - geometry.x.row(1 - k).transpose()).normalized();
+      if (boundary.corner_on_boundary(face[k]) && outward.dot(x_s - corner) > tolerance)
+        return true;
+    }
+    return false;
+  }
+  const int n_corners = geometry.n_corners();
+  for (int k = 0; k < n_corners; ++k)
+  {
+    const int next = (k + 1) % n_corners;
+    if (!boundary.edge_on_boundary(face[k], face[next]))
+      continue;
+    const Eigen::Vector3d start = geometry.x.row(k).transpose();
+    const Eigen::Vector3d side = geometry.x.row(next).transpose() - start;
+    const Eigen::Vector2d mid = 0.5 * (face_corner_xi(geometry.kind, k) + face_corner_xi(geometry.kind, next));
+    const Eigen::Vector3d outward = side.cross(face_normal(geometry, mid)).normalized();
+    if (outward.dot(x_s - start) > tolerance)
+      return true;
+  }
+  return false;
+}
 
 bool has_corner(const mesh::Face& face, int32_t node) { return std::ranges::find(face, node) != face.end(); }
 
@@ -131,26 +173,10 @@ std::optional<ClosestPoint> outside_point(const std::vector<FaceGeometry>& geome
   if (best_face < 0)
     return std::nullopt;
 
-  const mesh::Face& face = faces[best_face];
   const FaceGeometry& geometry = geometries[best_face];
   const int n_corners = geometry.n_corners();
   const double size = face_size(geometry);
-  // Beyond a boundary side k of the face, i.e. on the outer side of the side's line in the face's
-  // tangent plane; the outward in-plane normal of side k is (x_k+1 - x_k) x n_f (counter-clockwise
-  // sides seen from outside).
-  bool beyond_rim = false;
-  for (int k = 0; k < n_corners; ++k)
-  {
-    const int next = (k + 1) % n_corners;
-    if (!boundary.edge_on_boundary(face[k], face[next]))
-      continue;
-    const Eigen::Vector3d start = geometry.x.row(k).transpose();
-    const Eigen::Vector3d side = geometry.x.row(next).transpose() - start;
-    const Eigen::Vector2d mid = 0.5 * (face_corner_xi(geometry.kind, k) + face_corner_xi(geometry.kind, next));
-    const Eigen::Vector3d outward = side.cross(face_normal(geometry, mid)).normalized();
-    beyond_rim = beyond_rim || outward.dot(x_s - start) > rim_tolerance * size;
-  }
-  if (beyond_rim)
+  if (beyond_boundary(faces[best_face], geometry, boundary, x_s))
   {
     const QuadProjection p = project_to_face(geometry, x_s);
     if (p.converged && within_extension(geometry.kind, p.xi, rim_extension))

@@ -14,10 +14,15 @@ namespace
 {
 using mesh::FaceKind;
 
-/// Tangents x_,xi and x_,eta at xi, columns of a 3 x 2 matrix.
+/// Tangents x_,xi and x_,eta at xi, columns of a 3 x 2 matrix; an edge of a 2D cell (line2,
+/// line3) has x_,eta = e_z, so that x_,xi x x_,eta is its outward normal and the projection's
+/// Newton iteration leaves eta at 0.
 Eigen::Matrix<double, 3, 2> tangents(const FaceGeometry& face, const Eigen::Vector2d& xi)
 {
-  return face.x.transpose() * fem::face_shape_gradients(face.kind, xi);
+  Eigen::Matrix<double, 3, 2> t = face.x.transpose() * fem::face_shape_gradients(face.kind, xi);
+  if (mesh::is_line(face.kind))
+    t.col(1) = Eigen::Vector3d::UnitZ();
+  return t;
 }
 
 /// Step of the central differences of the tangents that give the curvature term.
@@ -31,8 +36,14 @@ const std::vector<std::vector<int>>& face_sub_facets(FaceKind kind)
   static const std::vector<std::vector<int>> quad4 = {{0, 1, 2, 3}};
   static const std::vector<std::vector<int>> tri6 = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
   static const std::vector<std::vector<int>> quad8 = {{0, 4, 7}, {4, 1, 5}, {5, 2, 6}, {7, 6, 3}, {4, 5, 6, 7}};
+  static const std::vector<std::vector<int>> line2 = {{0, 1}};
+  static const std::vector<std::vector<int>> line3 = {{0, 2}, {2, 1}};
   switch (kind)
   {
+  case FaceKind::line2:
+    return line2;
+  case FaceKind::line3:
+    return line3;
   case FaceKind::tri3:
     return tri3;
   case FaceKind::quad4:
@@ -59,6 +70,7 @@ FaceGeometry current_face_geometry(const mesh::Mesh& mesh, const la::Vector& u, 
 {
   FaceGeometry out;
   out.kind = face.kind;
+  out.planar = mesh.planar;
   out.x.resize(face.size(), 3);
   for (int a = 0; a < face.size(); ++a)
   {
@@ -71,6 +83,8 @@ FaceGeometry current_face_geometry(const mesh::Mesh& mesh, const la::Vector& u, 
 
 Eigen::Vector2d face_corner_xi(FaceKind kind, int k)
 {
+  if (mesh::is_line(kind))
+    return {k == 0 ? -1.0 : 1.0, 0.0};
   if (mesh::face_corners(kind) == 4)
     return quad_corner(k);
   static const std::array<Eigen::Vector2d, 3> corners = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0),
@@ -80,6 +94,8 @@ Eigen::Vector2d face_corner_xi(FaceKind kind, int k)
 
 bool within_extension(FaceKind kind, const Eigen::Vector2d& xi, double extension)
 {
+  if (mesh::is_line(kind))
+    return std::abs(xi(0)) <= 1 + extension;
   if (mesh::face_corners(kind) == 4)
     return xi.lpNorm<Eigen::Infinity>() <= 1 + extension;
   return outside_distance(kind, xi) <= extension;
@@ -87,6 +103,8 @@ bool within_extension(FaceKind kind, const Eigen::Vector2d& xi, double extension
 
 double outside_distance(FaceKind kind, const Eigen::Vector2d& xi)
 {
+  if (mesh::is_line(kind))
+    return std::abs(xi(0)) - 1;
   if (mesh::face_corners(kind) == 4)
     return xi.lpNorm<Eigen::Infinity>() - 1;
   return std::max({-xi(0), -xi(1), xi(0) + xi(1) - 1});
@@ -190,15 +208,30 @@ Eigen::VectorXd face_lumped_areas(const FaceGeometry& face)
     const double area = 0.5 * (face.x.row(1) - face.x.row(0)).cross(face.x.row(2) - face.x.row(0)).norm();
     return Eigen::Vector3d::Constant(area / 3);
   }
+  case FaceKind::line2:
+  {
+    // int N_a times the out-of-plane measure (thickness, 2 pi r) ds: Gauss' 2 points are exact.
+    Eigen::Vector2d areas = Eigen::Vector2d::Zero();
+    const double half_length = 0.5 * (face.x.row(1) - face.x.row(0)).norm();
+    for (const double t : {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)})
+    {
+      const Eigen::Vector2d N(0.5 * (1 - t), 0.5 * (1 + t));
+      const Eigen::Vector3d x = face.x.topRows<2>().transpose() * N;
+      areas += N * half_length * face.planar.measure(x);
+    }
+    return areas;
+  }
   case FaceKind::tri6:
   case FaceKind::quad8:
+  case FaceKind::line3:
     break;
   }
   Eigen::VectorXd areas = Eigen::VectorXd::Zero(face.x.rows());
   for (const std::vector<int>& facet : face_sub_facets(face.kind))
   {
     FaceGeometry sub;
-    sub.kind = facet.size() == 3 ? FaceKind::tri3 : FaceKind::quad4;
+    sub.kind = facet.size() == 2 ? FaceKind::line2 : facet.size() == 3 ? FaceKind::tri3 : FaceKind::quad4;
+    sub.planar = face.planar;
     sub.x.resize(static_cast<Eigen::Index>(facet.size()), 3);
     for (size_t k = 0; k < facet.size(); ++k)
       sub.x.row(static_cast<Eigen::Index>(k)) = face.x.row(facet[k]);

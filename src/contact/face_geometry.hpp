@@ -15,7 +15,9 @@
 /// areas are lumped from linear sub-facets instead: a tri6 as its four corner-and-midpoint
 /// triangles, a quad8 as its four corner triangles and the quadrilateral of its midpoints; each
 /// triangle gives a third of its area to each of its nodes, each quadrilateral int N_a dA. Every
-/// node gets a positive area and they sum to the face's (facet) area.
+/// node gets a positive area and they sum to the face's (facet) area. An edge of a 2D cell
+/// (line2, line3; mesh::Planar) is a face too: its normal x_,xi x e_z, its area its length
+/// times the thickness (or 2 pi r, int N_a 2 pi r ds); a line3 lumps as its two halves.
 
 #include "contact/closest_point.hpp"
 #include "la/types.hpp"
@@ -34,6 +36,7 @@ struct FaceGeometry
 {
   mesh::FaceKind kind = mesh::FaceKind::quad4;
   FaceNodeCoordinates x;
+  mesh::Planar planar = {}; ///< the mesh's: an edge's area is its length times the out-of-plane measure
 
   int n_corners() const { return mesh::face_corners(kind); }
   /// The first four rows as a quad (quad4 only).

@@ -295,6 +295,9 @@ MortarCoupling compute_mortar_coupling(const mesh::Mesh& mesh, const la::Vector&
 ContactConstraints build_mortar_constraints(const mesh::Mesh& mesh, const la::Vector& u, const ContactPair& pair,
                                             const ContactOptions& options)
 {
+  FETICON_CHECK(mesh.planar.kind == mesh::PlanarKind::none,
+                "mortar contact on the edges of 2D cells is not implemented: use contact.formulation = "
+                "node_to_segment");
   // Validates the input and gives, per slave node, whether a row exists and its normal.
   ContactConstraints closest = build_node_to_segment_constraints(mesh, u, pair, options);
   const MortarCoupling coupling =

@@ -5,7 +5,7 @@
 namespace feticon::decomposition
 {
 la::Matrix rigid_body_modes(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& coords,
-                            const std::vector<int32_t>& full_of_active)
+                            const std::vector<int32_t>& full_of_active, bool axisymmetric)
 {
   const la::Index n_nodes = coords.rows();
   FETICON_CHECK(n_nodes > 0, "rigid_body_modes: no nodes");
@@ -24,7 +24,7 @@ la::Matrix rigid_body_modes(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen
     active[f] = 1;
   std::vector<la::Index> eliminated_rows;
   for (la::Index f = 0; f < 3 * n_nodes; ++f)
-    if (!active[f])
+    if (!active[f] || (axisymmetric && f % 3 == 0))
       eliminated_rows.push_back(f);
   la::Matrix basis = la::Matrix::Identity(6, 6);
   if (!eliminated_rows.empty())

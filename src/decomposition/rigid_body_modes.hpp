@@ -8,7 +8,9 @@
 /// (translations, then rotations about x, y, z; ALGORITHMS.md section 2). Components
 /// eliminated for the whole problem (plane strain) remove the modes that move them:
 /// the kernel is the subspace of rigid modes vanishing on eliminated DOFs (3 modes in
-/// plane strain). Columns are orthonormalized (R' R = I).
+/// plane strain). In axisymmetry (x = r) a radial displacement strains the hoops, so the modes
+/// vanish on the x components too: one mode, the axial translation. Columns are
+/// orthonormalized (R' R = I).
 
 #include "la/types.hpp"
 
@@ -19,7 +21,8 @@ namespace feticon::decomposition
 {
 /// @param coords           one row per local node: reference X for K_0, current x for K_M(u)
 /// @param full_of_active   active DOF -> local full DOF 3n+i
+/// @param axisymmetric     the cells are axisymmetric (mesh::PlanarKind::axisymmetric)
 /// @return n_active x k orthonormal basis of the kernel (k = 6 without eliminations)
 la::Matrix rigid_body_modes(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& coords,
-                            const std::vector<int32_t>& full_of_active);
+                            const std::vector<int32_t>& full_of_active, bool axisymmetric = false);
 } // namespace feticon::decomposition

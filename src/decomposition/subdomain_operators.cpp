@@ -55,7 +55,7 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
     if (assembler.kinematics() == fem::Kinematics::total_lagrangian)
       for (int32_t n = 0; n < sub.domain.n_nodes(); ++n)
         x.row(n) += u_full.segment<3>(3 * n).transpose();
-    op.R = rigid_body_modes(x, sub.full_of_active);
+    op.R = rigid_body_modes(x, sub.full_of_active, assembler.mesh().planar.kind == mesh::PlanarKind::axisymmetric);
     for (int32_t node : choose_fixing_nodes(x))
       for (int i = 0; i < 3; ++i)
         if (sub.active_of_full[3 * node + i] >= 0)

@@ -58,7 +58,15 @@ qp::NormEstimate pfp_norm_estimate(const FetiOperators& feti, const CoarseProjec
     return {known, 0};
   const FOperator F_raw(feti);
   const ProjectedOperator PFP_raw(F_raw, projector, 0.0);
-  const qp::NormEstimate norm = qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1);
+  qp::NormEstimate norm = qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1);
+  if (norm.value == 0)
+  {
+    // P F P = 0: every row is in the range of G' (a body held by as many rows as it has rigid
+    // modes, such as an axisymmetric one by one axial support), so lambda = lambda~ and the QP
+    // is trivial. The scale of F keeps the penalty rho ||PFP|| of H positive.
+    const qp::NormEstimate f_norm = qp::estimate_norm(F_raw, options.power_iterations, 1e-3, 1);
+    norm = {f_norm.value, norm.applications + f_norm.applications};
+  }
   FETICON_CHECK(norm.value > 0 && std::isfinite(norm.value), "||PFP|| estimate " << norm.value << " is not positive");
   return norm;
 }

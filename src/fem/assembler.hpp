@@ -56,6 +56,8 @@ class Assembler
 public:
   /// @param body_materials one material per body of the mesh (indexed by cell_body)
   Assembler(const mesh::Mesh& mesh, AssemblyDomain domain, std::vector<Material> body_materials, Kinematics kinematics);
+  /// The mesh the cells are of.
+  const mesh::Mesh& mesh() const { return _mesh; }
 
   const AssemblyDomain& domain() const { return _domain; }
   Kinematics kinematics() const { return _kinematics; }

@@ -2,6 +2,8 @@
 
 #include "common/error.hpp"
 
+#include <cmath>
+
 namespace feticon::fem
 {
 namespace
@@ -9,27 +11,56 @@ namespace
 using Voigt = Eigen::Matrix<double, 6, 1>;
 
 /// Gradients with respect to X and w det J at one quadrature point; an inverted or flat cell
-/// is an error naming it.
+/// is an error naming it. A 2D cell's gradients have no z column, its w det J is times the
+/// out-of-plane measure (mesh::Planar::measure), and in axisymmetry `hoop` holds N_a / r, which
+/// gives the hoop strain u_r / r.
 struct PointGeometry
 {
   Eigen::MatrixX3d dN_dX;
   double weight_det_j = 0;
+  Eigen::VectorXd hoop;
 };
 
 PointGeometry point_geometry(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::Vector3d& xi, double weight,
-                             int64_t cell)
+                             int64_t cell, const mesh::Planar& planar)
 {
   const Eigen::MatrixX3d dN = shape_gradients(type, xi);
-  const Eigen::Matrix3d J = X.transpose() * dN; // dX_i / dxi_j
+  if (!mesh::is_planar(type))
+  {
+    const Eigen::Matrix3d J = X.transpose() * dN; // dX_i / dxi_j
+    const double det = J.determinant();
+    FETICON_CHECK(det > 0,
+                  "cell " << cell << " (" << mesh::cell_type(type).name
+                          << ") is inverted or flat: det(dX/dxi) = " << det << " at a quadrature point");
+    return {dN * J.inverse(), weight * det, {}};
+  }
+  FETICON_CHECK(planar.kind != mesh::PlanarKind::none,
+                "cell " << cell << " (" << mesh::cell_type(type).name << ") is 2D but the model is 3D");
+  const Eigen::Matrix2d J = X.leftCols<2>().transpose() * dN.leftCols<2>();
   const double det = J.determinant();
   FETICON_CHECK(det > 0,
                 "cell " << cell << " (" << mesh::cell_type(type).name << ") is inverted or flat: det(dX/dxi) = " << det
-                        << " at a quadrature point");
-  return {dN * J.inverse(), weight * det};
+                        << " at a quadrature point (2D cells run counter-clockwise in the x-y plane)");
+  PointGeometry geo{Eigen::MatrixX3d::Zero(dN.rows(), 3), 0, {}};
+  geo.dN_dX.leftCols<2>() = dN.leftCols<2>() * J.inverse();
+  const Eigen::VectorXd N = shape_values(type, xi);
+  const Eigen::Vector3d x = X.transpose() * N;
+  if (planar.kind == mesh::PlanarKind::axisymmetric)
+  {
+    FETICON_CHECK(x(0) > 0,
+                  "cell " << cell << " (axisymmetric " << mesh::cell_type(type).name
+                          << ") has a quadrature point at r = x = " << x(0)
+                          << ": an axisymmetric model lies at x >= 0");
+    geo.hoop = N / x(0);
+  }
+  geo.weight_det_j = weight * det * planar.measure(x);
+  return geo;
 }
 
-/// B_NL for the deformation gradient Fd (Fd = I: the linear B).
-Eigen::Matrix<double, 6, Eigen::Dynamic> strain_displacement(const Eigen::MatrixX3d& dN, const Eigen::Matrix3d& Fd)
+/// B_NL for the deformation gradient Fd (Fd = I: the linear B); `hoop` (axisymmetry) adds the
+/// variation of E_33 = 1/2 (F_33^2 - 1), F_33 = 1 + u_r / r, with the radial displacements.
+Eigen::Matrix<double, 6, Eigen::Dynamic> strain_displacement(const Eigen::MatrixX3d& dN, const Eigen::Matrix3d& Fd,
+                                                             const Eigen::VectorXd& hoop)
 {
   Eigen::Matrix<double, 6, Eigen::Dynamic> B(6, 3 * dN.rows());
   for (Eigen::Index a = 0; a < dN.rows(); ++a)
@@ -43,15 +74,19 @@ Eigen::Matrix<double, 6, Eigen::Dynamic> strain_displacement(const Eigen::Matrix
       B(4, col) = Fd(i, 1) * dN(a, 2) + Fd(i, 2) * dN(a, 1);
       B(5, col) = Fd(i, 2) * dN(a, 0) + Fd(i, 0) * dN(a, 2);
     }
+  for (Eigen::Index a = 0; a < hoop.size(); ++a)
+    B(2, 3 * a) += Fd(2, 2) * hoop(a);
   return B;
 }
 
 /// The deformation gradient used in B (I for linear kinematics) and the strain, Voigt with
 /// engineering shears.
-std::pair<Eigen::Matrix3d, Voigt> deformation(const Eigen::MatrixX3d& dN, const Eigen::MatrixX3d& u,
+std::pair<Eigen::Matrix3d, Voigt> deformation(const PointGeometry& geo, const Eigen::MatrixX3d& u,
                                               Kinematics kinematics, int64_t cell)
 {
-  const Eigen::Matrix3d grad_u = u.transpose() * dN; // du_i / dX_j
+  Eigen::Matrix3d grad_u = u.transpose() * geo.dN_dX; // du_i / dX_j
+  if (geo.hoop.size() > 0)
+    grad_u(2, 2) = u.col(0).dot(geo.hoop); // u_r / r
   Voigt strain;
   if (kinematics == Kinematics::linear)
   {
@@ -67,6 +102,21 @@ std::pair<Eigen::Matrix3d, Voigt> deformation(const Eigen::MatrixX3d& dN, const 
   strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(1, 2), 2 * E(2, 0);
   return {Fd, strain};
 }
+/// Plane stress (sigma_33 = 0 at every point): the material tangent of the in-plane strains,
+/// D - D e_3 e_3' D / D_33.
+Eigen::Matrix<double, 6, 6> plane_stress_tangent(const Eigen::Matrix<double, 6, 6>& D)
+{
+  return D - D.col(2) * D.row(2) / D(2, 2);
+}
+
+/// Plane stress: the strain_33 at which the stress D strain - thermal (1,1,1,0,0,0) has no 33
+/// component. Exact in total-Lagrangian St Venant-Kirchhoff too, whose S is linear in E.
+void free_thickness_strain(const Eigen::Matrix<double, 6, 6>& D, double thermal, Voigt& strain)
+{
+  strain(2) = 0;
+  strain(2) = (thermal - D.row(2).dot(strain)) / D(2, 2);
+}
+
 /// alpha E / (1 - 2 nu) Delta T at reference point xi (0 without a temperature change).
 double thermal_stress_at(mesh::CellKind type, const Material& material, const Eigen::VectorXd* temperature_change,
                          const Eigen::Vector3d& xi)
@@ -75,28 +125,50 @@ double thermal_stress_at(mesh::CellKind type, const Material& material, const Ei
     return 0;
   return material.thermal_stress() * shape_values(type, xi).dot(*temperature_change);
 }
+/// K_G(a, b) = (grad N_a' S grad N_b) I_3 w det J; in axisymmetry also S_33 N_a N_b / r^2 on
+/// the radial components (E_33 = 1/2 (F_33^2 - 1) is quadratic in u_r / r).
+void add_geometric_stiffness(const PointGeometry& geo, const Voigt& S, Eigen::MatrixXd& K)
+{
+  Eigen::Matrix3d St;
+  St << S(0), S(3), S(5), S(3), S(1), S(4), S(5), S(4), S(2);
+  const Eigen::MatrixXd G = geo.dN_dX * St * geo.dN_dX.transpose() * geo.weight_det_j;
+  for (Eigen::Index a = 0; a < G.rows(); ++a)
+    for (Eigen::Index b = 0; b < G.rows(); ++b)
+      for (int i = 0; i < 3; ++i)
+        K(3 * a + i, 3 * b + i) += G(a, b);
+  for (Eigen::Index a = 0; a < geo.hoop.size(); ++a)
+    for (Eigen::Index b = 0; b < geo.hoop.size(); ++b)
+      K(3 * a, 3 * b) += S(2) * geo.hoop(a) * geo.hoop(b) * geo.weight_det_j;
+}
 } // namespace
 
 void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, const Material& material,
                   Kinematics kinematics, StiffnessKind kind, Integration integration, Eigen::VectorXd& f,
                   Eigen::MatrixXd* K, int64_t cell, const Eigen::VectorXd* temperature_change,
-                  const CellPlasticState* plastic)
+                  const CellPlasticState* plastic, const mesh::Planar& planar)
 {
   const Eigen::Index n = 3 * X.rows();
   const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
+  const bool plane_stress = mesh::is_planar(type) && planar.kind == mesh::PlanarKind::plane_stress;
+  FETICON_CHECK(!plane_stress || !material.is_plastic(),
+                "cell " << cell << ": plasticity in plane stress is not implemented (plane strain, axisymmetric "
+                        << "and 3D cells are)");
+  const Eigen::Matrix<double, 6, 6> D_in_plane = plane_stress ? plane_stress_tangent(D) : D;
   f.setZero(n);
   if (kind != StiffnessKind::none)
     K->setZero(n, n);
   const QuadratureRule& rule = quadrature(type, integration);
   for (size_t q = 0; q < rule.points.size(); ++q)
   {
-    const PointGeometry geo = point_geometry(type, X, rule.points[q], rule.weights[q], cell);
-    const auto [Fd, strain] = deformation(geo.dN_dX, u, kinematics, cell);
+    const PointGeometry geo = point_geometry(type, X, rule.points[q], rule.weights[q], cell, planar);
+    auto [Fd, strain] = deformation(geo, u, kinematics, cell);
     // S = D E is St Venant-Kirchhoff's S = lambda tr(E) I + 2 mu E in Voigt form (engineering
     // shears), of the strain less the thermal strain (and the plastic strain).
     const double thermal = thermal_stress_at(type, material, temperature_change, rule.points[q]);
+    if (plane_stress)
+      free_thickness_strain(D, thermal, strain);
     Voigt S;
-    const Eigen::Matrix<double, 6, 6>* C = &D;
+    const Eigen::Matrix<double, 6, 6>* C = &D_in_plane;
     Eigen::Matrix<double, 6, 6> tangent;
     if (material.is_plastic())
     {
@@ -117,37 +189,36 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
       S = D * strain;
       S.head<3>().array() -= thermal;
     }
-    const auto B = strain_displacement(geo.dN_dX, Fd);
+    const auto B = strain_displacement(geo.dN_dX, Fd, geo.hoop);
     f.noalias() += B.transpose() * S * geo.weight_det_j;
     if (kind == StiffnessKind::none)
       continue;
     K->noalias() += B.transpose() * *C * B * geo.weight_det_j;
     if (kind == StiffnessKind::tangent && kinematics == Kinematics::total_lagrangian)
-    {
-      Eigen::Matrix3d St;
-      St << S(0), S(3), S(5), S(3), S(1), S(4), S(5), S(4), S(2);
-      const Eigen::MatrixXd G = geo.dN_dX * St * geo.dN_dX.transpose() * geo.weight_det_j;
-      for (Eigen::Index a = 0; a < X.rows(); ++a)
-        for (Eigen::Index b = 0; b < X.rows(); ++b)
-          for (int i = 0; i < 3; ++i)
-            (*K)(3 * a + i, 3 * b + i) += G(a, b);
-    }
+      add_geometric_stiffness(geo, S, *K);
   }
 }
 
 CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
                                     const Material& material, Kinematics kinematics, Integration integration,
                                     int64_t cell, const Eigen::VectorXd* temperature_change,
-                                    std::span<const PlasticPointState> plastic)
+                                    std::span<const PlasticPointState> plastic, const mesh::Planar& planar)
 {
   const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
+  const bool plane_stress = mesh::is_planar(type) && planar.kind == mesh::PlanarKind::plane_stress;
   const QuadratureRule& rule = quadrature(type, integration);
   CellPointResults out;
   for (size_t q = 0; q < rule.points.size(); ++q)
   {
-    const PointGeometry geo = point_geometry(type, X, rule.points[q], rule.weights[q], cell);
-    const auto [Fd, strain] = deformation(geo.dN_dX, u, kinematics, cell);
+    const PointGeometry geo = point_geometry(type, X, rule.points[q], rule.weights[q], cell, planar);
+    auto [Fd, strain] = deformation(geo, u, kinematics, cell);
     const double thermal = thermal_stress_at(type, material, temperature_change, rule.points[q]);
+    if (plane_stress)
+    {
+      free_thickness_strain(D, thermal, strain);
+      if (kinematics == Kinematics::total_lagrangian)
+        Fd(2, 2) = std::sqrt(1 + 2 * strain(2)); // the thickness stretch, for sigma = F S F' / det F
+    }
     Voigt stress;
     if (material.is_plastic())
     {
@@ -178,10 +249,11 @@ CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d&
 
 Voigt cell_cauchy_stress(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
                          const Material& material, Kinematics kinematics, int64_t cell, Integration integration,
-                         const Eigen::VectorXd* temperature_change, std::span<const PlasticPointState> plastic)
+                         const Eigen::VectorXd* temperature_change, std::span<const PlasticPointState> plastic,
+                         const mesh::Planar& planar)
 {
   const CellPointResults points =
-      cell_point_results(type, X, u, material, kinematics, integration, cell, temperature_change, plastic);
+      cell_point_results(type, X, u, material, kinematics, integration, cell, temperature_change, plastic, planar);
   Voigt sum = Voigt::Zero();
   double volume = 0;
   for (size_t q = 0; q < points.weight.size(); ++q)
@@ -193,13 +265,15 @@ Voigt cell_cauchy_stress(mesh::CellKind type, const Eigen::MatrixX3d& X, const E
 }
 
 std::vector<Voigt> cell_point_strains(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
-                                      Kinematics kinematics, Integration integration, int64_t cell)
+                                      Kinematics kinematics, Integration integration, int64_t cell,
+                                      const mesh::Planar& planar)
 {
   std::vector<Voigt> out;
   const QuadratureRule& rule = quadrature(type, integration);
   for (size_t q = 0; q < rule.points.size(); ++q)
     out.push_back(
-        deformation(point_geometry(type, X, rule.points[q], rule.weights[q], cell).dN_dX, u, kinematics, cell).second);
+        deformation(point_geometry(type, X, rule.points[q], rule.weights[q], cell, planar), u, kinematics, cell)
+            .second);
   return out;
 }
 } // namespace feticon::fem

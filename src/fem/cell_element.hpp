@@ -8,11 +8,18 @@
 /// the linear element is the same with Fdef = I in B and S = D eps(u). Element DOFs are
 /// node-major: dof 3a + i is component i of node a. A temperature change subtracts the
 /// thermal strain as hex8_element.hpp says.
+///
+/// 2D cells (mesh::Planar; nodes in the x-y plane, u_z zero): the same formulas with no
+/// gradient in z and w det J times the out-of-plane measure (thickness, 2 pi r): plane strain
+/// is E_33 = 0; plane stress takes E_33 where S_33 = 0 (the in-plane tangent
+/// D - D e3 e3' D / D_33; exact for St Venant-Kirchhoff, linear in E); axisymmetry (x = r) has
+/// F_33 = 1 + u_r / r, so E_33 = u_r / r + (u_r / r)^2 / 2, with its terms in B and in K_G.
 
 #include "fem/hex8_element.hpp"
 #include "fem/j2_plasticity.hpp"
 #include "fem/material.hpp"
 #include "fem/reference_element.hpp"
+#include "mesh/mesh.hpp"
 
 #include <Eigen/Dense>
 
@@ -40,7 +47,7 @@ struct CellPlasticState
 void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, const Material& material,
                   Kinematics kinematics, StiffnessKind kind, Integration integration, Eigen::VectorXd& f,
                   Eigen::MatrixXd* K, int64_t cell, const Eigen::VectorXd* temperature_change = nullptr,
-                  const CellPlasticState* plastic = nullptr);
+                  const CellPlasticState* plastic = nullptr, const mesh::Planar& planar = {});
 
 /// Cauchy stress (Pa) and strain (small strain, or Green-Lagrange E; engineering shears) at the
 /// quadrature points of the cell, Voigt [11,22,33,12,23,31], and each point's weight times
@@ -54,7 +61,7 @@ struct CellPointResults
 CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
                                     const Material& material, Kinematics kinematics, Integration integration,
                                     int64_t cell, const Eigen::VectorXd* temperature_change = nullptr,
-                                    std::span<const PlasticPointState> plastic = {});
+                                    std::span<const PlasticPointState> plastic = {}, const mesh::Planar& planar = {});
 
 /// Volume-averaged Cauchy stress of one cell (Pa), Voigt [11,22,33,12,23,31]: the weighted mean
 /// of cell_point_results' stresses (at the points of `integration`), as hex8_cauchy_stress.
@@ -63,11 +70,14 @@ Eigen::Matrix<double, 6, 1> cell_cauchy_stress(mesh::CellKind type, const Eigen:
                                                Kinematics kinematics, int64_t cell,
                                                Integration integration = Integration::full,
                                                const Eigen::VectorXd* temperature_change = nullptr,
-                                               std::span<const PlasticPointState> plastic = {});
+                                               std::span<const PlasticPointState> plastic = {},
+                                               const mesh::Planar& planar = {});
 
 /// Small strain (linear) or Green-Lagrange strain (total Lagrangian), Voigt
-/// [11,22,33,12,23,31] with engineering shears, at each quadrature point of the cell.
+/// [11,22,33,12,23,31] with engineering shears, at each quadrature point of the cell: the
+/// kinematic strain (in plane stress E_33 is the material's: cell_point_results).
 std::vector<Eigen::Matrix<double, 6, 1>> cell_point_strains(mesh::CellKind type, const Eigen::MatrixX3d& X,
                                                             const Eigen::MatrixX3d& u, Kinematics kinematics,
-                                                            Integration integration, int64_t cell);
+                                                            Integration integration, int64_t cell,
+                                                            const mesh::Planar& planar = {});
 } // namespace feticon::fem

@@ -14,6 +14,27 @@ namespace
 template <class Visit>
 void integrate_face(const mesh::Mesh& mesh, const mesh::Face& face, Visit&& visit)
 {
+  if (mesh::is_line(face.kind))
+  {
+    // The edge of a 2D cell: dA = |x_,xi| times the out-of-plane measure (thickness, 2 pi r),
+    // the outward normal x_,xi x e_z.
+    const FaceQuadrature& rule = face_quadrature(face.kind);
+    for (size_t q = 0; q < rule.points.size(); ++q)
+    {
+      const Eigen::VectorXd N = face_shape_values(face.kind, rule.points[q]);
+      const Eigen::MatrixX2d dN = face_shape_gradients(face.kind, rule.points[q]);
+      Eigen::Vector3d dxi = Eigen::Vector3d::Zero(), x = Eigen::Vector3d::Zero();
+      for (int a = 0; a < face.size(); ++a)
+      {
+        dxi += dN(a, 0) * mesh.nodes.row(face[a]).transpose();
+        x += N(a) * mesh.nodes.row(face[a]).transpose();
+      }
+      const double length = dxi.norm();
+      FETICON_CHECK(length > 0, "degenerate boundary edge with nodes " << face[0] << ", " << face[1]);
+      visit(N, rule.weights[q] * length * mesh.planar.measure(x), dxi.cross(Eigen::Vector3d::UnitZ()) / length);
+    }
+    return;
+  }
   if (face.kind != mesh::FaceKind::quad4)
   {
     const FaceQuadrature& rule = face_quadrature(face.kind);

@@ -96,6 +96,38 @@ bool Problem::has_temperatures() const
   return std::ranges::any_of(steps, [](const Step& s) { return !s.temperatures.empty(); });
 }
 
+void Problem::validate_planar() const
+{
+  const bool planar = mesh.planar.kind != mesh::PlanarKind::none;
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    FETICON_CHECK(mesh::is_planar(mesh.cells.kind(c)) == planar,
+                  "problem '" << name << "': cell " << c << " is " << mesh::cell_type(mesh.cells.kind(c)).name
+                              << " in a " << mesh::planar_name(mesh.planar.kind)
+                              << " model: 2D and 3D cells do not mix");
+  if (!planar)
+    return;
+  FETICON_CHECK(eliminated == (std::array<bool, 3>{false, false, true}),
+                "problem '" << name << "': a " << mesh::planar_name(mesh.planar.kind)
+                            << " model has u_z eliminated, and only u_z");
+  FETICON_CHECK(std::isfinite(mesh.planar.thickness) && mesh.planar.thickness > 0,
+                "problem '" << name << "': thickness " << mesh.planar.thickness << " m is not positive");
+  for (int32_t n = 0; n < mesh.n_nodes(); ++n)
+  {
+    FETICON_CHECK(mesh.nodes(n, 2) == 0,
+                  "problem '" << name << "': node " << n << " of a 2D model lies at z = " << mesh.nodes(n, 2)
+                              << ", not in the x-y plane");
+    FETICON_CHECK(mesh.planar.kind != mesh::PlanarKind::axisymmetric || mesh.nodes(n, 0) >= 0,
+                  "problem '" << name << "': node " << n
+                              << " of an axisymmetric model lies at r = x = " << mesh.nodes(n, 0) << " < 0");
+  }
+  if (mesh.planar.kind == mesh::PlanarKind::plane_stress)
+    for (size_t b = 0; b < materials.size(); ++b)
+      FETICON_CHECK(!materials[b].is_plastic(),
+                    "problem '" << name << "': body '" << mesh.body_names[b]
+                                << "' is plastic: plasticity in plane stress is not "
+                                   "implemented (plane strain and axisymmetry are)");
+}
+
 void Problem::validate() const
 {
   FETICON_CHECK(mesh.n_cells() > 0, "problem '" << name << "': the mesh has no cells");
@@ -104,9 +136,11 @@ void Problem::validate() const
                 "problem '" << name << "': reduced-integration flags for " << mesh.reduced_integration.size()
                             << " cells, the mesh has " << mesh.n_cells());
   for (int32_t c = 0; c < static_cast<int32_t>(mesh.reduced_integration.size()); ++c)
-    FETICON_CHECK(!mesh.reduced(c) || mesh.cells.kind(c) == mesh::CellKind::hex20,
+    FETICON_CHECK(!mesh.reduced(c) || mesh.cells.kind(c) == mesh::CellKind::hex20 ||
+                      mesh.cells.kind(c) == mesh::CellKind::quad8,
                   "problem '" << name << "': cell " << c << " (" << mesh::cell_type(mesh.cells.kind(c)).name
-                              << ") is marked for reduced integration, which only hex20 offers");
+                              << ") is marked for reduced integration, which only hex20 and quad8 offer");
+  validate_planar();
   FETICON_CHECK(static_cast<int32_t>(materials.size()) == mesh.n_bodies(),
                 "problem '" << name << "': " << mesh.n_bodies() << " bodies but " << materials.size() << " materials");
   for (size_t b = 0; b < materials.size(); ++b)

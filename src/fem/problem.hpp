@@ -63,7 +63,8 @@ struct Problem
   std::vector<double> initial_temperatures;
   /// Any number of pairs, none included (a model held by supports, glued or tied only).
   std::vector<ContactPairNames> contacts;
-  /// Components fixed to zero on every node and eliminated (plane strain: {0,0,1}).
+  /// Components fixed to zero on every node and eliminated (plane strain: {0,0,1}; every 2D
+  /// model, mesh::Planar).
   std::array<bool, 3> eliminated{false, false, false};
 
   /// Consistent nodal forces (3 per node) of the loads of step `step` (0-based) whose
@@ -81,5 +82,7 @@ struct Problem
 
 private:
   void validate_step(size_t step) const;
+  /// 2D cells in a planar model only, u_z eliminated, nodes at z = 0 (and x >= 0 in axisymmetry).
+  void validate_planar() const;
 };
 } // namespace feticon::fem

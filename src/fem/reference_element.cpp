@@ -1,6 +1,7 @@
 #include "fem/reference_element.hpp"
 
 #include "fem/hex8.hpp"
+#include "fem/reference_face.hpp"
 
 #include <array>
 #include <cmath>
@@ -106,10 +107,30 @@ ShapeTable wedge6(const Eigen::Vector3d& xi)
   return t;
 }
 
+/// A 2D cell's shape functions are those of the face of the same shape (its node order is
+/// the face's: fem/reference_face.hpp); nothing varies with zeta.
+ShapeTable planar(mesh::FaceKind shape, const Eigen::Vector3d& xi)
+{
+  const Eigen::Vector2d p = xi.head<2>();
+  const Eigen::VectorXd N = face_shape_values(shape, p);
+  ShapeTable t = ShapeTable::Zero(N.size(), 4);
+  t.col(0) = N;
+  t.middleCols<2>(1) = face_shape_gradients(shape, p);
+  return t;
+}
+
 ShapeTable shape_table(CellKind kind, const Eigen::Vector3d& xi)
 {
   switch (kind)
   {
+  case CellKind::tri3:
+    return planar(mesh::FaceKind::tri3, xi);
+  case CellKind::quad4:
+    return planar(mesh::FaceKind::quad4, xi);
+  case CellKind::tri6:
+    return planar(mesh::FaceKind::tri6, xi);
+  case CellKind::quad8:
+    return planar(mesh::FaceKind::quad8, xi);
   case CellKind::hex8:
     return hex8(xi);
   case CellKind::hex20:
@@ -150,6 +171,18 @@ QuadratureRule tet_rule(int points)
           {1.0 / 24, 1.0 / 24, 1.0 / 24, 1.0 / 24}};
 }
 
+/// A face's rule at zeta = 0: the rule of the 2D cell of its shape (quad4's 2x2 Gauss, quad8's
+/// 3x3, tri3's 3 points of degree 2, fem/reference_face.hpp).
+QuadratureRule planar_rule(mesh::FaceKind shape)
+{
+  const FaceQuadrature& face = face_quadrature(shape);
+  QuadratureRule rule;
+  for (size_t q = 0; q < face.points.size(); ++q)
+    rule.points.emplace_back(face.points[q].x(), face.points[q].y(), 0);
+  rule.weights = face.weights;
+  return rule;
+}
+
 QuadratureRule wedge_rule()
 {
   // The triangle's degree-2 rule at the edge midpoints' inward points (1/6, 1/6), (2/3, 1/6),
@@ -184,9 +217,18 @@ Eigen::MatrixX3d shape_gradients(mesh::CellKind kind, const Eigen::Vector3d& xi)
 const QuadratureRule& quadrature(mesh::CellKind kind, Integration integration)
 {
   static const QuadratureRule cube2 = gauss_cube(2), cube3 = gauss_cube(3), tet1 = tet_rule(1), tet4 = tet_rule(4),
-                              wedge = wedge_rule();
+                              wedge = wedge_rule(), square2 = planar_rule(mesh::FaceKind::quad4),
+                              square3 = planar_rule(mesh::FaceKind::quad8),
+                              triangle = planar_rule(mesh::FaceKind::tri3);
   switch (kind)
   {
+  case CellKind::tri3:
+  case CellKind::tri6:
+    return triangle;
+  case CellKind::quad4:
+    return square2;
+  case CellKind::quad8:
+    return integration == Integration::reduced ? square2 : square3;
   case CellKind::hex8:
     return cube2;
   case CellKind::hex20:

@@ -8,7 +8,10 @@
 /// Quadrature ("full" integrates the stiffness of an undistorted cell exactly):
 ///   hex8 2x2x2 Gauss; hex20 3x3x3, reduced 2x2x2 (CalculiX's C3D20R); tet4 1 point; tet10 the
 ///   4-point rule of degree 2; wedge6 the 3-point triangle rule of degree 2 times 2 Gauss points.
-/// Reduced integration is offered for hex20 (CalculiX's C3D20R): a single cell has zero-energy
+/// 2D cells (x-y plane, zeta = 0): the face rules of their shapes (fem/reference_face.hpp):
+/// tri3 and tri6 the 3-point rule of degree 2, quad4 2x2 Gauss, quad8 3x3, reduced 2x2
+/// (CalculiX's CPE8R, CPS8R, CAX8R).
+/// Reduced integration is offered for hex20 and quad8 (CalculiX's C3D20R): a single cell has zero-energy
 /// modes besides the rigid ones, which do not spread through a mesh of several cells; for the
 /// other types it is the full rule.
 

@@ -73,6 +73,12 @@ Eigen::VectorXd face_shape_values(FaceKind kind, const Eigen::Vector2d& xi)
     for (int a = 0; a < 4; ++a)
       N(a) = 0.25 * (1 + quad_corners[a][0] * r) * (1 + quad_corners[a][1] * s);
     break;
+  case FaceKind::line2:
+    N << 0.5 * (1 - r), 0.5 * (1 + r);
+    break;
+  case FaceKind::line3:
+    N << 0.5 * r * (r - 1), 0.5 * r * (r + 1), 1 - r * r;
+    break;
   case FaceKind::quad8:
     for (int a = 0; a < 4; ++a)
     {
@@ -93,9 +99,15 @@ Eigen::MatrixX2d face_shape_gradients(FaceKind kind, const Eigen::Vector2d& xi)
   // dL_a / d(r, s)
   const std::array<Eigen::RowVector2d, 3> dL = {Eigen::RowVector2d(-1, -1), Eigen::RowVector2d(1, 0),
                                                 Eigen::RowVector2d(0, 1)};
-  Eigen::MatrixX2d dN(mesh::face_nodes(kind), 2);
+  Eigen::MatrixX2d dN = Eigen::MatrixX2d::Zero(mesh::face_nodes(kind), 2);
   switch (kind)
   {
+  case FaceKind::line2:
+    dN.col(0) << -0.5, 0.5;
+    break;
+  case FaceKind::line3:
+    dN.col(0) << r - 0.5, r + 0.5, -2 * r;
+    break;
   case FaceKind::tri3:
     for (int a = 0; a < 3; ++a)
       dN.row(a) = dL[a];
@@ -132,10 +144,22 @@ Eigen::MatrixX2d face_shape_gradients(FaceKind kind, const Eigen::Vector2d& xi)
   return dN;
 }
 
+/// The n-point Gauss rule on the segment [-1, 1] (eta = 0).
+FaceQuadrature gauss_segment(int n)
+{
+  FaceQuadrature rule;
+  for (int i = 0; i < n; ++i)
+  {
+    rule.points.emplace_back(gauss_line(n).points[i], 0);
+    rule.weights.push_back(gauss_line(n).weights[i]);
+  }
+  return rule;
+}
+
 const FaceQuadrature& face_quadrature(FaceKind kind)
 {
-  static const std::array<FaceQuadrature, 4> rules = {triangle_rule(false), triangle_rule(true), gauss_square(2),
-                                                      gauss_square(3)};
+  static const std::array<FaceQuadrature, 6> rules = {triangle_rule(false), triangle_rule(true), gauss_square(2),
+                                                      gauss_square(3),      gauss_segment(2),    gauss_segment(3)};
   return rules[static_cast<size_t>(kind)];
 }
 } // namespace feticon::fem

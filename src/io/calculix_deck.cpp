@@ -80,6 +80,13 @@ std::pair<Eigen::Vector3d, double> mean_normal_and_size(const mesh::Mesh& mesh, 
   double shortest = std::numeric_limits<double>::infinity();
   for (const mesh::Face& f : mesh.face_set(set))
   {
+    if (mesh::is_line(f.kind)) // an edge of a 2D cell: its length, its normal (x1 - x0) x e_z
+    {
+      const Eigen::Vector3d edge = mesh.nodes.row(f[1]) - mesh.nodes.row(f[0]);
+      sum += edge.cross(Eigen::Vector3d::UnitZ());
+      shortest = std::min(shortest, edge.norm());
+      continue;
+    }
     const int n = f.n_corners();
     // Area vector of the corners' polygon: half the cross product of the diagonals of a quad,
     // of two edges of a triangle.
@@ -169,6 +176,19 @@ std::vector<ContactPairFaces> contact_pairs(const fem::Problem& problem, const C
   return pairs;
 }
 
+/// CalculiX's element type of a cell: C3D8 ..., C3D20R; a 2D cell's by its formulation (CPE4,
+/// CPS8R, CAX6, ...).
+std::string calculix_element_name(mesh::CellKind kind, bool reduced, mesh::PlanarKind planar)
+{
+  const std::string_view solid = mesh::cell_type(kind).calculix_names.front(); // C3D8, CPE4, ...
+  if (!mesh::is_planar(kind))
+    return reduced ? "C3D20R" : std::string(solid);
+  const char* prefix = planar == mesh::PlanarKind::plane_stress ? "CPS"
+      : planar == mesh::PlanarKind::axisymmetric                ? "CAX"
+                                                                : "CPE";
+  return prefix + std::string(solid.substr(3)) + (reduced ? "R" : "");
+}
+
 /// The deck's heading, *NODE (coordinates x) and one *ELEMENT block per body.
 void write_mesh(std::ostream& out, const fem::Problem& problem, const Coordinates& x,
                 const CalculixDeckSummary& summary)
@@ -195,7 +215,7 @@ void write_mesh(std::ostream& out, const fem::Problem& problem, const Coordinate
           if (mesh.cell_body[c] == b && mesh.cells.kind(c) == kind && mesh.reduced(c) == reduced)
           {
             if (!any)
-              out << "*ELEMENT, TYPE=" << (reduced ? "C3D20R" : mesh::cell_type(kind).calculix_names.front())
+              out << "*ELEMENT, TYPE=" << calculix_element_name(kind, reduced, mesh.planar.kind)
                   << ", ELSET=" << deck_name("B_", mesh.body_names[b]) << '\n';
             any = true;
             out << c + 1;
@@ -241,6 +261,8 @@ void write_materials(std::ostream& out, const fem::Problem& problem)
     }
     out << "*SOLID SECTION, ELSET=" << deck_name("B_", mesh.body_names[b])
         << ", MATERIAL=" << deck_name("M_", mesh.body_names[b]) << '\n';
+    if (mesh.planar.kind == mesh::PlanarKind::plane_strain || mesh.planar.kind == mesh::PlanarKind::plane_stress)
+      out << number(mesh.planar.thickness) << '\n';
   }
 }
 
@@ -311,8 +333,9 @@ void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOp
     for (int i = 0; i < 3; ++i)
       if (d.value[i])
         out << deck_name("N_", d.set) << ", " << i + 1 << ", " << i + 1 << ", " << number(*d.value[i]) << '\n';
+  // A hex layer's eliminated u_z is a support in the deck (2D cells have no u_z).
   for (int i = 0; i < 3; ++i)
-    if (problem.eliminated[i])
+    if (problem.eliminated[i] && mesh.planar.kind == mesh::PlanarKind::none)
       out << "NALL, " << i + 1 << ", " << i + 1 << ", 0.0\n";
 
   const la::Vector f = problem.external_force();

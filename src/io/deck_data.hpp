@@ -125,6 +125,7 @@ struct DeckSection
 {
   std::string elset, material;
   DeckPosition where;
+  double thickness = 0; ///< the data line's first field (2D cells), 0 if not given
 };
 
 /// *FRICTION under a *SURFACE INTERACTION (CalculiX's data line: mu, stick slope).
@@ -193,6 +194,10 @@ struct DeckData
   std::map<std::string, DeckSurface> surfaces;
   std::map<std::string, fem::Material> materials;
   std::vector<DeckSection> sections;
+  /// The formulation of the 2D cells (CPE*: plane strain, CPS*: plane stress, CAX*:
+  /// axisymmetric); none if the cells are 3D. Where the first cell block set it.
+  mesh::PlanarKind planar = mesh::PlanarKind::none;
+  DeckPosition first_cells;
   std::set<std::string> interactions;
   std::map<std::string, DeckFriction> frictions; ///< by interaction name
   std::vector<DeckContactPair> pairs;

@@ -325,14 +325,20 @@ private:
     const mesh::CellType* cell_type = mesh::cell_type_of_calculix_name(type);
     if (!cell_type)
       throw Error(where() + ": element type " + type +
-                  " is not implemented by feticon (C3D8, C3D8R, C3D8I, C3D20, C3D20R, C3D4, C3D10, C3D6)");
+                  " is not implemented by feticon (C3D8, C3D8R, C3D8I, C3D20, C3D20R, C3D4, C3D10, C3D6; "
+                  "CPE3/4/6/8, CPS3/4/6/8, CAX3/4/6/8 and their R variants)");
     if (type == "C3D8R" || type == "C3D8I")
       _data.warn("element type " + type + " (" + _keyword.where.str() +
                  ") is solved as C3D8 (full 2x2x2 "
                  "integration" +
                  (type == "C3D8R" ? std::string(", not reduced with hourglass control)")
                                   : std::string(", without incompatible modes: stiffer in bending)")));
-    const char reduced = type == "C3D20R" ? 1 : 0; // 2x2x2 Gauss points, as CalculiX
+    if (type.size() == 5 && type.back() == 'R' && type[3] == '4')
+      _data.warn("element type " + type + " (" + _keyword.where.str() + ") is solved as " + type.substr(0, 4) +
+                 " (full 2x2 integration, not reduced with hourglass control)");
+    planar_formulation(type, *cell_type);
+    // 2x2x2 (C3D20R) or 2x2 (CPE8R, CPS8R, CAX8R) Gauss points, as CalculiX.
+    const char reduced = type == "C3D20R" || (cell_type->kind == mesh::CellKind::quad8 && type.back() == 'R') ? 1 : 0;
     const size_t n_nodes = static_cast<size_t>(cell_type->n_nodes);
     const std::string count = std::to_string(n_nodes);
     IndexRuns* set = _keyword.has("ELSET") ? &_data.element_sets[required("ELSET")] : nullptr;
@@ -380,6 +386,27 @@ private:
     }
     if (label != 0)
       fail_at(start, "element " + std::to_string(label) + " of type " + type + " has fewer than " + count + " nodes");
+  }
+
+  /// The 2D formulation an element type names (CPE: plane strain, CPS: plane stress, CAX:
+  /// axisymmetric): one per deck, and no 3D cells beside 2D ones.
+  void planar_formulation(const std::string& type, const mesh::CellType& cell_type)
+  {
+    mesh::PlanarKind kind = mesh::PlanarKind::none;
+    if (cell_type.dimension == 2)
+      kind = type.starts_with("CPE") ? mesh::PlanarKind::plane_strain
+          : type.starts_with("CPS")  ? mesh::PlanarKind::plane_stress
+                                     : mesh::PlanarKind::axisymmetric;
+    if (_data.cells.empty())
+    {
+      _data.planar = kind;
+      _data.first_cells = _keyword.where;
+      return;
+    }
+    if (kind != _data.planar)
+      throw Error(where() + ": " + type + " elements (" + std::string(mesh::planar_name(kind)) + ") in a " +
+                  std::string(mesh::planar_name(_data.planar)) + " model (its first elements at " +
+                  _data.first_cells.str() + "): one formulation per model, 2D and 3D cells do not mix");
   }
 
   /// *NSET and *ELSET: numbers, names of sets of the same kind, or GENERATE triples.
@@ -653,11 +680,23 @@ private:
 
   void solid_section()
   {
-    known_parameters({"ELSET", "MATERIAL", "ORIENTATION"});
+    known_parameters({"ELSET", "MATERIAL", "ORIENTATION", "OFFSET"});
+    if (_keyword.has("OFFSET") && real_parameter("OFFSET", 0) != 0)
+      throw Error(where() + ": OFFSET (of a shell's reference surface) is not implemented by feticon");
     if (_keyword.has("ORIENTATION"))
       _data.warn(where() + ": ORIENTATION= changes nothing for the isotropic material, and is not used");
-    _data.sections.push_back({required("ELSET"), required("MATERIAL"), _keyword.where});
-    skip_data(); // a 3D solid section's data line (a thickness for 2D elements) has no meaning here
+    DeckSection section{required("ELSET"), required("MATERIAL"), _keyword.where};
+    // The data line: the thickness of plane strain and plane stress cells (meaningless for
+    // 3D and axisymmetric ones).
+    DeckDataLine line;
+    while (_tokens.next_data(line))
+      if (section.thickness == 0 && !line.fields.empty() && !line.fields[0].empty())
+      {
+        section.thickness = real(line, 0, "thickness");
+        if (!(section.thickness > 0) || !std::isfinite(section.thickness))
+          fail_at(line.at(0), "the thickness " + std::string(line.fields[0]) + " is not positive");
+      }
+    _data.sections.push_back(std::move(section));
   }
 
   // ---- loads and supports ------------------------------------------------------------------

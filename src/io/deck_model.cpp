@@ -244,6 +244,7 @@ private:
       });
     }
 
+    planar_section();
     std::unordered_map<int32_t, int32_t> body_of_root;
     std::vector<int32_t> body_section;
     for (int32_t c = 0; c < mesh.n_cells(); ++c)
@@ -277,6 +278,35 @@ private:
     }
     for (size_t b = 0; b < names.size(); ++b)
       mesh.body_names.push_back(uses[names[b]] > 1 ? names[b] + "_" + std::to_string(b + 1) : names[b]);
+  }
+
+  /// The 2D formulation of the cells and the thickness of their sections (CalculiX's default
+  /// 1 where a section gives none); feticon takes one thickness per model.
+  void planar_section()
+  {
+    mesh::Planar& planar = _p.mesh.planar;
+    planar.kind = _d.planar;
+    if (planar.kind == mesh::PlanarKind::axisymmetric)
+      for (int32_t n = 0; n < _p.mesh.n_nodes(); ++n)
+        FETICON_CHECK(_p.mesh.nodes(n, 0) >= 0,
+                      "node " << _deck.node_labels[n] << " of a CAX element lies at r = x = " << _p.mesh.nodes(n, 0)
+                              << " < 0 (" << _d.first_cells.str() << "): an axisymmetric model lies at x >= 0");
+    if (planar.kind != mesh::PlanarKind::plane_strain && planar.kind != mesh::PlanarKind::plane_stress)
+      return;
+    const DeckSection* first = nullptr;
+    for (const DeckSection& section : _d.sections)
+    {
+      const double thickness = section.thickness > 0 ? section.thickness : 1.0;
+      if (!first)
+      {
+        first = &section;
+        planar.thickness = thickness;
+      }
+      FETICON_CHECK(thickness == planar.thickness,
+                    section.where.str() << ": *SOLID SECTION: thickness " << thickness << " m, the section at "
+                                        << first->where.str() << " has " << planar.thickness
+                                        << " m: feticon takes one thickness per model");
+    }
   }
 
   void sets_and_surfaces()
@@ -396,10 +426,16 @@ private:
       FETICON_CHECK(pair.slave != pair.master, at << ": slave and master are the same surface '" << pair.slave << "'");
       FETICON_CHECK(!_d.surfaces.at(pair.master).node_based,
                     at << ": master surface '" << pair.master << "' must be made of element faces (TYPE=ELEMENT)");
+      // The edges of 2D cells have node-to-segment rows only (mortar on lines is not implemented).
+      const bool planar = _p.mesh.planar.kind != mesh::PlanarKind::none;
+      if (planar && !pair.node_to_surface)
+        _d.warn(at +
+                ": a SURFACE TO SURFACE pair of 2D cells is solved node-to-segment (feticon's mortar rows "
+                "need faces)");
       fem::ContactInteraction interaction{pair.interaction,
                                           {},
-                                          pair.node_to_surface ? fem::ContactFormulation::node_to_segment
-                                                               : fem::ContactFormulation::mortar};
+                                          pair.node_to_surface || planar ? fem::ContactFormulation::node_to_segment
+                                                                         : fem::ContactFormulation::mortar};
       if (const auto it = _d.frictions.find(pair.interaction); it != _d.frictions.end() && it->second.coefficient > 0)
         interaction.friction = {fem::FrictionModel::coulomb, it->second.coefficient, 0};
       used.insert(pair.interaction);
@@ -565,7 +601,8 @@ private:
 
   void load_stages()
   {
-    _p.eliminated = {false, false, every_node_fixes_z()};
+    // A 2D model has no u_z; a 3D one given as one layer with u_z = 0 everywhere is plane strain.
+    _p.eliminated = {false, false, _p.mesh.planar.kind != mesh::PlanarKind::none || every_node_fixes_z()};
     // The prescribed DOFs of the first step; later steps may change values only.
     std::vector<int64_t> first_dofs;
     for (size_t k = 0; k < _d.step_states.size(); ++k)

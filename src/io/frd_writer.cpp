@@ -13,9 +13,10 @@ namespace feticon::io
 namespace
 {
 /// The I10 field of node and element labels.
-/// frd element types (CalculiX's frd format: 1 he8, 2 pe6, 3 te4, 4 he20, 6 te10), indexed by
-/// mesh::CellKind (hex8, tet4, tet10, hex20, wedge6).
-constexpr std::array<int, 5> frd_type = {1, 3, 6, 4, 2};
+/// frd element types (CalculiX's frd format: 1 he8, 2 pe6, 3 te4, 4 he20, 6 te10, 7 tr3, 8 tr6,
+/// 9 qu4, 10 qu8), indexed by mesh::CellKind (hex8, tet4, tet10, hex20, wedge6, tri3, quad4,
+/// tri6, quad8). 2D cells are written as themselves, as CalculiX's default OUTPUT=2D does.
+constexpr std::array<int, 9> frd_type = {1, 3, 6, 4, 2, 7, 9, 8, 10};
 
 /// The frd's node k of a cell is its local node frd_local(kind)[k]: CalculiX's order, except
 /// that the frd lists a he20's vertical edges (CalculiX's nodes 17-20) before its top edges

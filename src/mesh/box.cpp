@@ -130,6 +130,11 @@ void append_mesh(Mesh& target, const Mesh& other, const std::string& prefix)
                                                       << " body indices");
   FETICON_CHECK(int64_t{target.n_nodes()} + other.n_nodes() <= std::numeric_limits<int32_t>::max(),
                 "append_mesh: the result would exceed int32 local node ids");
+  FETICON_CHECK(target.cells.empty() || target.planar == other.planar,
+                "append_mesh: a " << planar_name(other.planar.kind) << " mesh cannot join a "
+                                  << planar_name(target.planar.kind) << " one (or their thicknesses differ)");
+  if (target.cells.empty())
+    target.planar = other.planar;
 
   const int32_t node_offset = target.n_nodes();
   const int32_t body_offset = target.n_bodies();

@@ -188,9 +188,57 @@ CellType make_wedge6()
   return t;
 }
 
-const std::array<CellType, 5>& table()
+/// A 2D cell: corners counter-clockwise in the x-y plane, then the midpoints of the edges
+/// c0 c1, c1 c2, ... (CalculiX's CPE3/4/6/8, Gmsh's and VTK's order); face (edge) k is CalculiX's
+/// S(k+1) / P(k+1): corners k, k + 1, then its midpoint, so (x1 - x0) x e_z points outward.
+CellType make_planar(CellKind kind, std::string_view name, int corners, int order, int vtk_type, int gmsh_type,
+                     std::vector<std::string_view> calculix_names)
 {
-  static const std::array<CellType, 5> types = {make_hex8(), make_tet4(), make_tet10(), make_hex20(), make_wedge6()};
+  static const std::vector<std::array<double, 3>> tri = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  static const std::vector<std::array<double, 3>> quad = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  const int n_nodes = order == 1 ? corners : 2 * corners;
+  CellType t{.kind = kind,
+             .name = name,
+             .n_nodes = n_nodes,
+             .n_corners = corners,
+             .order = order,
+             .dimension = 2,
+             .reference_nodes = corners == 3 ? tri : quad,
+             .edges = {},
+             .faces = {},
+             .vtk_type = vtk_type,
+             .gmsh_type = gmsh_type,
+             .gmsh_to_local = identity(n_nodes),
+             .calculix_names = std::move(calculix_names),
+             .vtk_to_local = identity(n_nodes)};
+  for (int k = 0; k < corners; ++k)
+  {
+    t.edges.push_back({k, (k + 1) % corners});
+    CellFace face{order == 1 ? FaceKind::line2 : FaceKind::line3, {k, (k + 1) % corners}};
+    if (order == 2)
+      face.nodes.push_back(corners + k);
+    t.faces.push_back(std::move(face));
+  }
+  if (order == 2)
+    add_edge_nodes(t);
+  return t;
+}
+
+const std::array<CellType, 9>& table()
+{
+  // CalculiX's reduced-integration variants of the linear cells (C3D8R, CPE4R, ...) carry the
+  // full rule here: one point with hourglass control is a different element, the full rule
+  // the nearest we have (docs/elements.md).
+  static const std::array<CellType, 9> types = {
+      make_hex8(),
+      make_tet4(),
+      make_tet10(),
+      make_hex20(),
+      make_wedge6(),
+      make_planar(CellKind::tri3, "tri3", 3, 1, 5, 2, {"CPE3", "CPS3", "CAX3"}),
+      make_planar(CellKind::quad4, "quad4", 4, 1, 9, 3, {"CPE4", "CPS4", "CAX4", "CPE4R", "CPS4R", "CAX4R"}),
+      make_planar(CellKind::tri6, "tri6", 3, 2, 22, 9, {"CPE6", "CPS6", "CAX6"}),
+      make_planar(CellKind::quad8, "quad8", 4, 2, 23, 16, {"CPE8", "CPS8", "CAX8", "CPE8R", "CPS8R", "CAX8R"})};
   return types;
 }
 } // namespace

@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 
 #include <algorithm>
+#include <numbers>
 
 namespace feticon::mesh
 {
@@ -44,6 +45,27 @@ std::vector<int32_t> Mesh::face_set_nodes(const std::string& name) const
   return ids;
 }
 
+double Planar::measure(const Eigen::Vector3d& x) const
+{
+  switch (kind)
+  {
+  case PlanarKind::none:
+    return 1;
+  case PlanarKind::plane_strain:
+  case PlanarKind::plane_stress:
+    return thickness;
+  case PlanarKind::axisymmetric:
+    return 2 * std::numbers::pi * x(0);
+  }
+  return 1;
+}
+
+std::string_view planar_name(PlanarKind kind)
+{
+  constexpr std::array<std::string_view, 4> names = {"3D", "plane strain", "plane stress", "axisymmetric"};
+  return names[static_cast<size_t>(kind)];
+}
+
 double centre_jacobian_determinant(const Mesh& mesh, int32_t c)
 {
   const std::span<const int32_t> cell = mesh.cells[c];
@@ -66,6 +88,15 @@ double centre_jacobian_determinant(const Mesh& mesh, int32_t c)
   case CellKind::tet4:
   case CellKind::tet10:
     jacobian << x(1) - x(0), x(2) - x(0), x(3) - x(0);
+    break;
+  case CellKind::tri3:
+  case CellKind::tri6:
+    // A 2D cell's third direction is e_z: positive when its corners run counter-clockwise.
+    jacobian << x(1) - x(0), x(2) - x(0), Eigen::Vector3d::UnitZ();
+    break;
+  case CellKind::quad4:
+  case CellKind::quad8:
+    jacobian << 0.5 * (x(1) - x(0) + x(2) - x(3)), 0.5 * (x(3) - x(0) + x(2) - x(1)), Eigen::Vector3d::UnitZ();
     break;
   case CellKind::wedge6:
     // The linear wedge's derivatives at (1/3, 1/3, 0) (cell_type.hpp's reference wedge).
@@ -153,6 +184,7 @@ Mesh submesh(const Mesh& mesh, const std::vector<int32_t>& cells, std::vector<in
     }
   Mesh piece;
   piece.body_names = mesh.body_names;
+  piece.planar = mesh.planar;
   piece.nodes.resize(static_cast<Eigen::Index>(node_of_local.size()), 3);
   for (size_t k = 0; k < node_of_local.size(); ++k)
     piece.nodes.row(static_cast<Eigen::Index>(k)) = mesh.nodes.row(node_of_local[k]);

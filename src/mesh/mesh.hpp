@@ -136,6 +136,31 @@ Face cell_face(CellKind kind, std::span<const int32_t> cell_nodes, int k);
 /// The cells by type, e.g. "1230 cells (tet10)" or "800 cells (720 hex8, 80 wedge6)".
 std::string describe_cells(const CellList& cells);
 
+/// How a mesh of 2D cells (mesh/cell_type.hpp: in the x-y plane, u_z eliminated) stands for a
+/// solid: plane strain (eps_zz = 0) or plane stress (sigma_zz = 0) of a slab `thickness` thick,
+/// or a solid of revolution about the y axis (x = r, y = the axial coordinate; the hoop strain
+/// u_r / r), whose loads, forces and reactions are those of the whole circle (2 pi r per unit
+/// length of its generating curve), as CalculiX's for CAX cells.
+enum class PlanarKind : uint8_t
+{
+  none, ///< a 3D mesh
+  plane_strain,
+  plane_stress,
+  axisymmetric
+};
+struct Planar
+{
+  PlanarKind kind = PlanarKind::none;
+  double thickness = 1; ///< plane strain and plane stress (m); CalculiX's default 1
+
+  /// The out-of-plane measure at point x: the thickness, or 2 pi x(0) in axisymmetry (m); 1 for
+  /// a 3D mesh. A volume is an area times it, an area a length times it.
+  double measure(const Eigen::Vector3d& x) const;
+  bool operator==(const Planar& other) const = default;
+};
+/// "plane strain", "plane stress", "axisymmetric", "3D".
+std::string_view planar_name(PlanarKind kind);
+
 struct Mesh
 {
   /// Reference coordinates, one row per node (m).
@@ -151,11 +176,16 @@ struct Mesh
   /// Per cell: integrated with the reduced rule (hex20: CalculiX's C3D20R, 2x2x2 Gauss points;
   /// fem/reference_element.hpp). Empty when no cell is.
   std::vector<char> reduced_integration;
+  /// The formulation of the 2D cells (all cells are 2D when kind != none, none are otherwise).
+  Planar planar = {};
 
   /// Whether cell `cell` is integrated with the reduced rule.
   bool reduced(int32_t cell) const { return !reduced_integration.empty() && reduced_integration[cell] != 0; }
 
   int32_t n_nodes() const { return static_cast<int32_t>(nodes.rows()); }
+  /// The unknowns of a node: 2 for a 2D mesh (u_z eliminated), 3 otherwise (a plane-strain hex
+  /// layer counts its eliminated u_z, as it always has).
+  int dofs_per_node() const { return planar.kind == PlanarKind::none ? 3 : 2; }
   int32_t n_cells() const { return static_cast<int32_t>(cells.size()); }
   int32_t n_bodies() const { return static_cast<int32_t>(body_names.size()); }
 

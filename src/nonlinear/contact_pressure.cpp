@@ -203,9 +203,9 @@ std::vector<PressureSample> slave_pressure_by_x(const fem::Problem& problem, con
                          fem::cell_cauchy_stresses(problem.mesh, solution.u, problem.materials, kinematics,
                                                    solution.temperature_change, &solution.plastic));
 
-  // Plane strain: the nodes of a line through the thickness (same reference x) form one
-  // sample; in 3D every node is its own sample.
-  const bool plane_strain = problem.eliminated[2];
+  // Plane strain on a hex layer: the nodes of a line through the thickness (same reference x)
+  // form one sample; in 3D and on 2D cells every node is its own sample.
+  const bool plane_strain = problem.eliminated[2] && problem.mesh.planar.kind == mesh::PlanarKind::none;
   const double key_scale = 1e9; // nm resolution groups nodes through the thickness
   auto key_of = [&](int32_t node) {
     const auto& X = problem.mesh.nodes;

@@ -392,10 +392,11 @@ MM_MUTATORS = [number_replacer(EXTREMES), mm_header, mm_size]
 
 DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_friction.inp", "contactenergy_plastic.inp",
               "punch_tet10.inp",
-              "punch_c3d20r.inp", "contactenergy_density.inp"]
+              "punch_c3d20r.inp", "contactenergy_density.inp", "rings_cax4.inp"]
 # Seeds of our own (tests/data/fuzz/): a C3D10 deck, feticon's export of gmsh_tet10.yaml, and
-# a C3D20 / C3D20R one (reduced integration per cell), the same punch meshed with hex20.
-FUZZ_FOLDER_DECKS = {"punch_tet10.inp", "punch_c3d20r.inp"}
+# a C3D20 / C3D20R one (reduced integration per cell), the same punch meshed with hex20; two
+# CAX4 rings shrink-fitted through a node-to-surface pair of element edges (issue 64).
+FUZZ_FOLDER_DECKS = {"punch_tet10.inp", "punch_c3d20r.inp", "rings_cax4.inp"}
 # Seeds made from another by an edit: contact1 with Coulomb friction (*FRICTION after the
 # pressure-overclosure law, as tests/cli/deck_friction.sh adds it to CalculiX's decks).
 # contactenergy with a density, for the body loads among the keyword mutations (*DLOAD GRAV,
@@ -414,6 +415,9 @@ DECK_WORDS = ["abc", "", "NALL", "S1", "P5", "1.5.2", "1e", "--1", "0x10", "1 2"
 DECK_KEYWORDS = [
     "*FOO", "*", "* ", "*,", "*, NSET=A", "*NODE", "*NODE,", "*NODE, NSET", "*NODE, SYSTEM=R",
     "*ELEMENT", "*ELEMENT, TYPE=C3D20", "*ELEMENT, TYPE=C3D8\n1,1,2,3,4,5,6,7",
+    "*ELEMENT, TYPE=CPE4, ELSET=EALL\n998,1,2,3,4", "*ELEMENT, TYPE=CAX8R\n997,1,2,3,4,5,6,7,8",
+    "*ELEMENT, TYPE=CPS3\n996,3,2,1", "*SOLID SECTION, ELSET=EALL, MATERIAL=EL\n-1.",
+    "*SOLID SECTION, ELSET=HUB, MATERIAL=STEEL, OFFSET=0.5\n0.01",
     "*ELEMENT, TYPE=C3D8R, ELSET=EALL\n999,1,2,3,4,5,6,7,8", "*STEP", "*END STEP", "*STATIC",
     "*STATIC\n1e-300,1e300", "*STATIC\n0,0", "*FRICTION\n0.3", "*DENSITY\n7.8e-9", "*INCLUDE",
     "*INCLUDE, INPUT=", "*INCLUDE, INPUT=.", "*MATERIAL, NAME=", "*MATERIAL, NAME=EL",

@@ -1,5 +1,6 @@
 /// Thermal strain in the elements and the temperatures of a problem's history (issue 65, item 4).
 
+#include "common/error.hpp"
 #include "fem/cell_element.hpp"
 #include "fem/hex8_element.hpp"
 #include "fem/temperature_history.hpp"
