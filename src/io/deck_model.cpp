@@ -257,13 +257,15 @@ private:
         body_section.push_back(section);
       const int32_t body = it->second;
       mesh.cell_body[c] = body; // section_of_cell[c] is read above, not after
+      // body_section holds -1 - s once the body spans several sections (s its first).
+      const int32_t first_section = body_section[body] >= 0 ? body_section[body] : -1 - body_section[body];
       const DeckSection& mine = _d.sections[section];
-      const DeckSection& first = _d.sections[body_section[body]];
+      const DeckSection& first = _d.sections[first_section];
       FETICON_CHECK(mine.material == first.material,
                     "element " << _deck.element_labels[c] << " (material " << mine.material << ") shares nodes with "
                                << "elements of material " << first.material << "; feticon takes one material per "
                                << "body (a connected set of elements)");
-      if (body_section[body] != section)
+      if (body_section[body] >= 0 && body_section[body] != section)
         body_section[body] = -1 - body_section[body]; // the body spans several sections
     }
     // Names: the section's element set where one section makes the body, else BODY<k>.

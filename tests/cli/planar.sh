@@ -155,3 +155,12 @@ expect_error negative_r "axisymmetric" "$work/negative_r.inp"
 plate CPS4 0 >"$work/zero_thickness.inp"
 expect_error zero_thickness "thickness 0 is not positive" "$work/zero_thickness.inp"
 expect_error mortar "mortar contact on the edges of 2D cells" "$work/fit.inp" --set contact.formulation=mortar
+
+# ---- 5. a body across two sections of one material (the fuzz driver's mutant 5298 of seed 74:
+# the reader indexed its sections with the "several sections" mark and aborted) -----------------
+source_dir="$2"
+sed 's/^101, 101, 102, 107, 106$/101, 101, 102, 107, 1/' "$source_dir/tests/data/fuzz/rings_cax4.inp" >"$work/joined.inp"
+grep -q "^101, 101, 102, 107, 1$" "$work/joined.inp"
+"$feticon" run "$work/joined.inp" --output "$work/joined" >"$work/joined.log" 2>&1 ||
+  grep -q "^feticon: error" "$work/joined.log" || { cat "$work/joined.log"; exit 1; }
+echo "a body across two sections: $(tail -1 "$work/joined.log")"
