@@ -181,8 +181,12 @@ qp::QpState ContactQp::outer_state(const la::Vector& lambda, const qp::SmalbeRep
 
 double ContactQp::feasibility_error(const la::Vector& lambda) const
 {
+  // Relative to the loads on the floating modes, or to the multipliers where those loads are
+  // round-off (self-equilibrated: a press fit's ||e|| was 1e-13 N against 5e4 N of contact
+  // force, and ||G lambda - e|| / ||e|| read 1e10 for an answer balanced to 4e-8 of its forces).
   const double e_norm = _e.norm();
-  return (_feti.apply_G(lambda) - _e).norm() / (e_norm > 0 ? e_norm : 1.0);
+  const double scale = e_norm > 1e-10 * lambda.norm() ? e_norm : lambda.norm();
+  return (_feti.apply_G(lambda) - _e).norm() / (scale > 0 ? scale : 1.0);
 }
 
 PrimalSolution ContactQp::recover(const la::Vector& lambda, const std::vector<char>& active,

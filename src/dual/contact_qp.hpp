@@ -109,7 +109,7 @@ public:
   std::optional<qp::QpState> inner_start(const qp::QpState& state) const;
   /// The dual solve's state of SMALBE-M's result (omega back to a coarse vector).
   qp::QpState outer_state(const la::Vector& lambda, const qp::SmalbeReport& report) const;
-  /// ||G lambda - e|| / ||e||.
+  /// ||G lambda - e|| / ||e||, or / ||lambda|| where ||e|| <= 1e-10 ||lambda|| (self-equilibrated loads).
   double feasibility_error(const la::Vector& lambda) const;
   /// ||e||, the net load on the subdomains' rigid modes.
   double load_norm() const { return _e.norm(); }

@@ -84,7 +84,7 @@ struct DualSolution
   /// penalty) with the applications of P F P (+ rho Q) and of the preconditioner timed here
   /// (the norm estimate's applications are in hessian_multiplications only).
   qp::QpReport report;
-  double feasibility_error = 0; ///< ||G lambda - e|| / ||e||
+  double feasibility_error = 0; ///< ||G lambda - e|| / ||e|| (/ ||lambda|| where ||e|| is round-off)
   int64_t active_contacts = 0;  ///< contact rows with lambda_i > 0
 };
 

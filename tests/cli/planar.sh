@@ -9,7 +9,9 @@
 #    free), to 1e-9 relative; the reaction at the bottom = sigma * width * thickness;
 # 3. the export writes CAX4 / CPS4 again (feticon export of the deck's problem file);
 # 4. bad input, one line each: CPE4 beside C3D8, CPE4 beside CAX4, a clockwise CPE4, a CAX4 at
-#    x < 0, a thickness of 0, contact.formulation = mortar on 2D cells.
+#    x < 0, a thickness of 0, contact.formulation = mortar on 2D cells;
+# 5. a body across two sections of one material (a fuzz mutant that aborted the reader);
+# 6. Coulomb friction on edges: converged, the multipliers balanced.
 # Usage: planar.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -164,3 +166,19 @@ grep -q "^101, 101, 102, 107, 1$" "$work/joined.inp"
 "$feticon" run "$work/joined.inp" --output "$work/joined" >"$work/joined.log" 2>&1 ||
   grep -q "^feticon: error" "$work/joined.log" || { cat "$work/joined.log"; exit 1; }
 echo "a body across two sections: $(tail -1 "$work/joined.log")"
+
+# ---- 6. Coulomb friction on edges (one tangent, e_z x n): the seed with mu = 0.2 converges and
+# its multipliers balance; the press fit's loads are self-equilibrated (||e|| round-off), so the
+# feasibility is relative to the multipliers (it read 1e10 over the round-off ||e||) -----------
+sed 's/PRESSURE-OVERCLOSURE=HARD/PRESSURE-OVERCLOSURE=HARD\n*FRICTION\n0.2, 1e6/' \
+  "$source_dir/tests/data/fuzz/rings_cax4.inp" >"$work/friction.inp"
+"$feticon" run "$work/friction.inp" --output "$work/friction" >"$work/friction.log" 2>&1 ||
+  { cat "$work/friction.log"; exit 1; }
+"$py" - "$work/friction/summary.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["converged"], "friction on edges not converged"
+f = s["contact"]["feasibility_error"]
+print(f"friction on edges: contact force {s['contact']['total_normal_force']:.6e} N, feasibility {f:.1e}")
+assert f < 1e-6, "the multipliers do not balance"
+PY
