@@ -14,27 +14,6 @@ namespace
 template <class Visit>
 void integrate_face(const mesh::Mesh& mesh, const mesh::Face& face, Visit&& visit)
 {
-  if (mesh::is_line(face.kind))
-  {
-    // The edge of a 2D cell: dA = |x_,xi| times the out-of-plane measure (thickness, 2 pi r),
-    // the outward normal x_,xi x e_z.
-    const FaceQuadrature& rule = face_quadrature(face.kind);
-    for (size_t q = 0; q < rule.points.size(); ++q)
-    {
-      const Eigen::VectorXd N = face_shape_values(face.kind, rule.points[q]);
-      const Eigen::MatrixX2d dN = face_shape_gradients(face.kind, rule.points[q]);
-      Eigen::Vector3d dxi = Eigen::Vector3d::Zero(), x = Eigen::Vector3d::Zero();
-      for (int a = 0; a < face.size(); ++a)
-      {
-        dxi += dN(a, 0) * mesh.nodes.row(face[a]).transpose();
-        x += N(a) * mesh.nodes.row(face[a]).transpose();
-      }
-      const double length = dxi.norm();
-      FETICON_CHECK(length > 0, "degenerate boundary edge with nodes " << face[0] << ", " << face[1]);
-      visit(N, rule.weights[q] * length * mesh.planar.measure(x), dxi.cross(Eigen::Vector3d::UnitZ()) / length);
-    }
-    return;
-  }
   if (face.kind != mesh::FaceKind::quad4)
   {
     const FaceQuadrature& rule = face_quadrature(face.kind);
@@ -42,16 +21,22 @@ void integrate_face(const mesh::Mesh& mesh, const mesh::Face& face, Visit&& visi
     {
       const Eigen::VectorXd N = face_shape_values(face.kind, rule.points[q]);
       const Eigen::MatrixX2d dN = face_shape_gradients(face.kind, rule.points[q]);
-      Eigen::Vector3d dxi = Eigen::Vector3d::Zero(), deta = Eigen::Vector3d::Zero();
+      Eigen::Vector3d dxi = Eigen::Vector3d::Zero(), deta = Eigen::Vector3d::Zero(), x = Eigen::Vector3d::Zero();
       for (int a = 0; a < face.size(); ++a)
       {
         dxi += dN(a, 0) * mesh.nodes.row(face[a]).transpose();
         deta += dN(a, 1) * mesh.nodes.row(face[a]).transpose();
+        x += N(a) * mesh.nodes.row(face[a]).transpose();
       }
+      // The edge of a 2D cell is swept through the out-of-plane measure (thickness, 2 pi r):
+      // x_,eta = measure e_z, so dA = |x_,xi| measure and the normal x_,xi x e_z is outward.
+      if (mesh::is_line(face.kind))
+        deta = mesh.planar.measure(x) * Eigen::Vector3d::UnitZ();
       const Eigen::Vector3d normal = dxi.cross(deta);
       const double dA = normal.norm();
       FETICON_CHECK(dA > 0,
-                    "degenerate boundary face with corner nodes " << face[0] << ", " << face[1] << ", " << face[2]);
+                    "degenerate boundary face (" << face.size() << " nodes) with corner nodes " << face[0] << ", "
+                                                 << face[1] << ", ...");
       visit(N, rule.weights[q] * dA, normal / dA);
     }
     return;

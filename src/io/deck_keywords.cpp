@@ -406,7 +406,10 @@ private:
     if (kind != _data.planar)
       throw Error(where() + ": " + type + " elements (" + std::string(mesh::planar_name(kind)) + ") in a " +
                   std::string(mesh::planar_name(_data.planar)) + " model (its first elements at " +
-                  _data.first_cells.str() + "): one formulation per model, 2D and 3D cells do not mix");
+                  _data.first_cells.str() + "): one formulation per model" +
+                  (kind == mesh::PlanarKind::none || _data.planar == mesh::PlanarKind::none
+                       ? ", 2D and 3D cells do not mix"
+                       : ""));
   }
 
   /// *NSET and *ELSET: numbers, names of sets of the same kind, or GENERATE triples.
