@@ -1,6 +1,7 @@
 #include "contact/mortar_constraints.hpp"
 #include "contact/contact_row_builder.hpp"
 
+#include "contact/mortar_edge_integration.hpp"
 #include "contact/mortar_face_integration.hpp"
 #include "contact/surface_search.hpp"
 
@@ -80,9 +81,10 @@ std::vector<std::array<int32_t, 2>> quadratic_edge_ends(const mesh::Mesh& mesh, 
   {
     if (!is_quadratic(face.kind))
       continue;
-    // Edge node corners + e joins corners e and e + 1 (fem/reference_face.hpp).
+    // Edge node corners + e joins corners e and e + 1 (fem/reference_face.hpp); a line3's one
+    // edge node joins its two ends.
     const int corners = mesh::face_corners(face.kind);
-    for (int e = 0; e < corners; ++e)
+    for (int e = 0; e < face.size() - corners; ++e)
       ends[nodes.index_of(face[corners + e])] = {face[e], face[(e + 1) % corners]};
   }
   return ends;
@@ -138,8 +140,9 @@ struct FaceSegments
 };
 
 /// The dual basis of a slave face and its segments with the candidate master faces (those
-/// sharing no node with it). quad4 against quad4 goes through integrate_segment, the arithmetic
-/// of hex8 runs; any other pair through integrate_face_segment.
+/// sharing no node with it). Edges of 2D cells go through integrate_edge_segment; quad4 against
+/// quad4 through integrate_segment, the arithmetic of hex8 runs; any other pair through
+/// integrate_face_segment.
 FaceSegments integrate_slave_face(const mesh::Face& face, const FaceGeometry& slave,
                                   const std::vector<mesh::Face>& master_faces,
                                   const std::vector<FaceGeometry>& master_geometry, const SurfaceSearch& search,
@@ -152,6 +155,16 @@ FaceSegments integrate_slave_face(const mesh::Face& face, const FaceGeometry& sl
   search.candidates(box, candidates);
   std::optional<DualBasis> quad_dual;
   std::optional<FaceDualBasis> dual;
+  if (mesh::is_line(face.kind))
+  {
+    dual = face_dual_basis(slave);
+    out.nodal_area = dual->nodal_area;
+    for (const int32_t f : candidates)
+      if (!share_a_node(face, master_faces[f]))
+        if (std::optional<Eigen::MatrixXd> segment = integrate_edge_segment(slave, *dual, master_geometry[f], options))
+          out.segments.emplace_back(f, std::move(*segment));
+    return out;
+  }
   if (face.kind == mesh::FaceKind::quad4)
   {
     quad_dual = dual_basis(slave.quad());
@@ -295,9 +308,6 @@ MortarCoupling compute_mortar_coupling(const mesh::Mesh& mesh, const la::Vector&
 ContactConstraints build_mortar_constraints(const mesh::Mesh& mesh, const la::Vector& u, const ContactPair& pair,
                                             const ContactOptions& options)
 {
-  FETICON_CHECK(mesh.planar.kind == mesh::PlanarKind::none,
-                "mortar contact on the edges of 2D cells is not implemented: use contact.formulation = "
-                "node_to_segment");
   // Validates the input and gives, per slave node, whether a row exists and its normal.
   ContactConstraints closest = build_node_to_segment_constraints(mesh, u, pair, options);
   const MortarCoupling coupling =

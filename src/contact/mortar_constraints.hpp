@@ -39,8 +39,9 @@
 /// both surfaces, which is what makes the contact patch test pass on non-matching meshes.
 ///
 /// Face types. Faces of every type (tri3, tri6, quad4, quad8) are integrated
-/// (mortar_face_integration.hpp; quad4 against quad4 by mortar_integration.hpp). On tri6 and
-/// quad8 slave faces D_j and M_ja are those of the transformed basis, and the row of an edge
+/// (mortar_face_integration.hpp; quad4 against quad4 by mortar_integration.hpp), and so are the
+/// line2 and line3 edges of 2D cells (mortar_edge_integration.hpp). On tri6, quad8 and line3
+/// slave faces D_j and M_ja are those of the transformed basis, and the row of an edge
 /// node m is that of its transformed value x~_m = (x_m - alpha (x_c1 + x_c2)) / (1 - 2 alpha):
 /// the master weights above times 1 - 2 alpha, plus alpha on each corner c1, c2 of its edge
 /// (master_share = 1 - 2 alpha), slave_area = D~_m / (1 - 2 alpha). On faces other than quad4

@@ -110,7 +110,10 @@ const QuadratureRule2d& segment_rule()
 }
 } // namespace
 
-bool is_quadratic(FaceKind kind) { return kind == FaceKind::tri6 || kind == FaceKind::quad8; }
+bool is_quadratic(FaceKind kind)
+{
+  return kind == FaceKind::tri6 || kind == FaceKind::quad8 || kind == FaceKind::line3;
+}
 
 Eigen::VectorXd transformed_shape_values(FaceKind kind, const Eigen::Vector2d& xi)
 {
@@ -119,8 +122,8 @@ Eigen::VectorXd transformed_shape_values(FaceKind kind, const Eigen::Vector2d& x
     return N;
   const int corners = mesh::face_corners(kind);
   constexpr double alpha = quadratic_dual_alpha;
-  // Edge node corners + e joins corners e and e + 1.
-  for (int e = 0; e < corners; ++e)
+  // Edge node corners + e joins corners e and e + 1 (a line3's one edge node joins its ends).
+  for (int e = 0; e < mesh::face_nodes(kind) - corners; ++e)
   {
     const double edge = N(corners + e);
     N(e) += alpha * edge;
@@ -132,21 +135,27 @@ Eigen::VectorXd transformed_shape_values(FaceKind kind, const Eigen::Vector2d& x
 
 FaceDualBasis face_dual_basis(const FaceGeometry& slave)
 {
-  // Degree 8 on triangles, 7 per direction on quadrilaterals: N~ N~ times the area element.
+  // Degree 8 on triangles, 7 per direction on quadrilaterals: N~ N~ times the area element;
+  // degree 9 on edges, where the area element also holds the measure (linear in axisymmetry).
   static const QuadratureRule2d triangle = gauss_triangle(5);
   static const QuadratureRule2d square = gauss_square(4);
+  static const QuadratureRule2d segment = gauss_legendre_1d(5);
+  const bool line = mesh::is_line(slave.kind);
   const bool tri = mesh::face_corners(slave.kind) == 3;
-  const QuadratureRule2d& rule = tri ? triangle : square;
-  const double reference_area = tri ? 0.5 : 1.0; // gauss_triangle's weights sum to 1, gauss_square's to 4
+  const QuadratureRule2d& rule = line ? segment : tri ? triangle : square;
+  const double reference_area = tri ? 0.5 : 1.0; // gauss_triangle's weights sum to 1, the others' to 2^dimension
   const auto n = static_cast<Eigen::Index>(slave.x.rows());
   Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(n, n);
   FaceDualBasis dual;
   dual.nodal_area = Eigen::VectorXd::Zero(n);
   for (size_t q = 0; q < rule.points.size(); ++q)
   {
-    const Eigen::VectorXd shape = transformed_shape_values(slave.kind, rule.points[q]);
-    const Eigen::Matrix<double, 3, 2> t = slave.x.transpose() * fem::face_shape_gradients(slave.kind, rule.points[q]);
-    const double weight = reference_area * rule.weights[q] * t.col(0).cross(t.col(1)).norm();
+    const Eigen::Vector2d& xi = rule.points[q];
+    const Eigen::VectorXd shape = transformed_shape_values(slave.kind, xi);
+    const Eigen::Matrix<double, 3, 2> t = slave.x.transpose() * fem::face_shape_gradients(slave.kind, xi);
+    const double element =
+        line ? t.col(0).norm() * slave.planar.measure(face_point(slave, xi)) : t.col(0).cross(t.col(1)).norm();
+    const double weight = reference_area * rule.weights[q] * element;
     mass += weight * shape * shape.transpose();
     dual.nodal_area += weight * shape;
   }

@@ -46,11 +46,12 @@ namespace feticon::contact
 /// Weight of its edge nodes' functions that a quadratic face's corner function takes (file comment).
 inline constexpr double quadratic_dual_alpha = 0.2;
 
-/// Whether a face type has edge nodes (and so transformed slave functions).
+/// Whether a face type has edge nodes (and so transformed slave functions): tri6, quad8, line3
+/// (mortar_edge_integration.hpp).
 bool is_quadratic(mesh::FaceKind kind);
 
-/// The slave functions N~(xi): the standard ones for tri3 and quad4, transformed for tri6 and
-/// quad8 (file comment).
+/// The slave functions N~(xi): the standard ones for tri3, quad4 and line2, transformed for
+/// tri6, quad8 and line3 (file comment).
 Eigen::VectorXd transformed_shape_values(mesh::FaceKind kind, const Eigen::Vector2d& xi);
 
 /// Dual basis of one slave face of any type.
@@ -62,7 +63,8 @@ struct FaceDualBasis
   Eigen::VectorXd nodal_area;
 };
 
-/// @brief Dual basis of the slave face (current node coordinates, m).
+/// @brief Dual basis of the slave face (current node coordinates, m); of an edge of a 2D cell
+/// (line2, line3) with the area element ds times the model's measure (mortar_edge_integration.hpp).
 /// @throws feticon::Error if a nodal area D~_j is not positive (a degenerate face).
 FaceDualBasis face_dual_basis(const FaceGeometry& slave);
 

@@ -428,16 +428,10 @@ private:
       FETICON_CHECK(pair.slave != pair.master, at << ": slave and master are the same surface '" << pair.slave << "'");
       FETICON_CHECK(!_d.surfaces.at(pair.master).node_based,
                     at << ": master surface '" << pair.master << "' must be made of element faces (TYPE=ELEMENT)");
-      // The edges of 2D cells have node-to-segment rows only (mortar on lines is not implemented).
-      const bool planar = _p.mesh.planar.kind != mesh::PlanarKind::none;
-      if (planar && !pair.node_to_surface)
-        _d.warn(at +
-                ": a SURFACE TO SURFACE pair of 2D cells is solved node-to-segment (feticon's mortar rows "
-                "need faces)");
       fem::ContactInteraction interaction{pair.interaction,
                                           {},
-                                          pair.node_to_surface || planar ? fem::ContactFormulation::node_to_segment
-                                                                         : fem::ContactFormulation::mortar};
+                                          pair.node_to_surface ? fem::ContactFormulation::node_to_segment
+                                                               : fem::ContactFormulation::mortar};
       if (const auto it = _d.frictions.find(pair.interaction); it != _d.frictions.end() && it->second.coefficient > 0)
         interaction.friction = {fem::FrictionModel::coulomb, it->second.coefficient, 0};
       used.insert(pair.interaction);

@@ -3,13 +3,14 @@
 # 1. a shrink fit of two CAX4 rings (hub 0.05..0.1 + 1e-5 m, ring 0.1..0.15 m, 0.02 m high,
 #    held axially at y = 0 only) through a NODE TO SURFACE pair: the contact force over
 #    2 pi b h against Lame's interface pressure E delta (b^2 - a^2)(c^2 - b^2) / (2 b^3 (c^2 - a^2))
-#    = 4.6875e6 Pa within 0.5 %; on two MPI ranks the same force to 1e-8;
+#    = 4.6875e6 Pa within 0.5 %; on two MPI ranks the same force to 1e-8; the same pair as
+#    SURFACE TO SURFACE: dual mortar rows on the edges, within 0.5 % too;
 # 2. a plate in uniaxial tension by an edge pressure P3 (CPS4, thickness 0.01 m, and CPE4):
 #    u_y at the top = sigma L / E (plane stress) and (1 - nu^2) sigma L / E (plane strain, u_x
 #    free), to 1e-9 relative; the reaction at the bottom = sigma * width * thickness;
 # 3. the export writes CAX4 / CPS4 again (feticon export of the deck's problem file);
 # 4. bad input, one line each: CPE4 beside C3D8, CPE4 beside CAX4, a clockwise CPE4, a CAX4 at
-#    x < 0, a thickness of 0, contact.formulation = mortar on 2D cells;
+#    x < 0, a thickness of 0;
 # 5. a body across two sections of one material (a fuzz mutant that aborted the reader);
 # 6. Coulomb friction on edges: converged, the multipliers balanced.
 # Usage: planar.sh FETICON SOURCE_DIR
@@ -60,6 +61,19 @@ p = s["contact"]["total_normal_force"] / (2 * math.pi * b * h)
 print(f"shrink fit (CAX4 16 x 4 each): interface pressure {p:.6e} Pa, Lame {lame:.6e} Pa ({100 * (p / lame - 1):+.3f} %)")
 assert abs(p / lame - 1) < 0.005, "interface pressure off Lame's by more than 0.5 %"
 assert s["degrees_of_freedom"] == 2 * 2 * 17 * 5, s["degrees_of_freedom"]  # 2 DOFs a node
+PY
+sed 's/TYPE=NODE TO SURFACE/TYPE=SURFACE TO SURFACE/' "$work/fit.inp" >"$work/fit_mortar.inp"
+"$feticon" run "$work/fit_mortar.inp" --output "$work/fit_mortar" >"$work/fit_mortar.log" 2>&1 ||
+  { cat "$work/fit_mortar.log"; exit 1; }
+"$py" - "$work/fit_mortar/summary.json" <<'PY'
+import json, math, sys
+s = json.load(open(sys.argv[1]))
+assert s["converged"] and s["contact"]["pairs"][0]["formulation"] == "mortar", "mortar shrink fit"
+a, b, c, h, delta, E = 0.05, 0.1, 0.15, 0.02, 1e-5, 2e11
+lame = E * delta * (b * b - a * a) * (c * c - b * b) / (2 * b ** 3 * (c * c - a * a))
+p = s["contact"]["total_normal_force"] / (2 * math.pi * b * h)
+print(f"shrink fit, SURFACE TO SURFACE (mortar): {p:.6e} Pa ({100 * (p / lame - 1):+.3f} %)")
+assert abs(p / lame - 1) < 0.005, "mortar interface pressure off Lame's by more than 0.5 %"
 PY
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 if command -v mpirun >/dev/null; then
@@ -156,7 +170,6 @@ plate CAX4 "" | sed 's/^1, 0, 0, 0$/1, -0.5, 0, 0/; s/^4, 0, 2, 0$/4, -0.5, 2, 0
 expect_error negative_r "axisymmetric" "$work/negative_r.inp"
 plate CPS4 0 >"$work/zero_thickness.inp"
 expect_error zero_thickness "thickness 0 is not positive" "$work/zero_thickness.inp"
-expect_error mortar "mortar contact on the edges of 2D cells" "$work/fit.inp" --set contact.formulation=mortar
 
 # ---- 5. a body across two sections of one material (the fuzz driver's mutant 5298 of seed 74:
 # the reader indexed its sections with the "several sections" mark and aborted) -----------------
