@@ -12,7 +12,8 @@ theirs from the mesh cache, which the export filled, as ccx reads its mesh from 
 Conventions. Both pressures are per deformed area: CalculiX's CPRESS is the penalty pressure
 (Cauchy traction) at the slave nodes, extrapolated from its integration points; feticon's is
 the nodal normal force over the node's tributary area in the current configuration. In plane
-strain (one cell layer) the two nodes through the thickness form one sample (their mean).
+strain (one cell layer) the two nodes through the thickness form one sample (their mean); a
+CPE deck's nodes are each a sample.
 Hertz figures, against McEwen's p(x) = p0 sqrt(1 - x^2/a^2) with a and p0 from feticon's
 summary (they depend on the problem only), use the deformed coordinate x + u_x with large
 displacements and the reference x with small ones:
@@ -37,14 +38,17 @@ import sys
 ACTIVE = 1e-3  # a sample is loaded when p > ACTIVE * max p (the one threshold used here)
 
 
-# CalculiX's C3D8 faces S1..S6 as 0-based positions in the element's node list.
+# CalculiX's C3D8 faces S1..S6 as 0-based positions in the element's node list; the edges
+# S1..S4 of a 2D quadrilateral (CPE4, CPS4, CAX4) join corner k to corner k + 1.
 C3D8_FACES = [(0, 1, 2, 3), (4, 7, 6, 5), (0, 4, 5, 1), (1, 5, 6, 2), (2, 6, 7, 3), (3, 7, 4, 0)]
+QUAD_EDGES = [(0, 1), (1, 2), (2, 3), (3, 0)]
 
 
 def read_deck(path):
     """Node coordinates {id: (x, y, z)} of the deck (after the slave shift) and the node ids of
     the slave surface of the first *CONTACT PAIR."""
     nodes, elements, surfaces, section, name, slave = {}, {}, {}, None, None, None
+    planar, element_type = set(), None
     with open(path) as f:
         for line in f:
             if line.startswith("**"):
@@ -55,19 +59,23 @@ def read_deck(path):
                 name = next((w.split("=")[1] for w in words[1:] if w.upper().startswith("NAME=")), None)
                 if section == "*SURFACE":
                     surfaces[name] = []
+                element_type = next((w.split("=")[1].upper() for w in words[1:] if w.upper().startswith("TYPE=")), None)
                 continue
             v = [t.strip() for t in line.split(",")]
             if section == "*NODE":
                 nodes[int(v[0])] = tuple(float(t) for t in v[1:4])
             elif section == "*ELEMENT":
                 elements[int(v[0])] = [int(t) for t in v[1:9]]
+                if element_type and element_type[:3] in ("CPE", "CPS", "CAX"):
+                    planar.add(int(v[0]))
             elif section == "*SURFACE":
                 surfaces[name].append((int(v[0]), int(v[1][1:])))
             elif section == "*CONTACT PAIR" and slave is None:
                 slave = v[0]
     slave_nodes = set()
     for element, face in surfaces.get(slave, []):
-        slave_nodes.update(elements[element][k] for k in C3D8_FACES[face - 1])
+        faces = QUAD_EDGES if element in planar else C3D8_FACES
+        slave_nodes.update(elements[element][k] for k in faces[face - 1])
     return nodes, slave_nodes
 
 
@@ -248,7 +256,7 @@ def main(case):
     deck_nodes, slave_nodes = read_deck(deck)
     with open(deck) as f:
         text = f.read()
-    plane_strain = re.search(r"^NALL, 3, 3", text, re.M) is not None
+    plane_strain = re.search(r"^NALL, 3, 3", text, re.M) is not None or "TYPE=CPE" in text
     load = [0.0, 0.0, 0.0]
     in_cload = False
     for line in text.split("\n"):

@@ -107,58 +107,101 @@ void straighten_corners(std::vector<Eigen::Vector2d>& points, const std::vector<
 }
 } // namespace
 
-Mesh extrude_cross_section(const CrossSection& section, const SizeField& size, double thickness)
+namespace
 {
-  FETICON_CHECK(thickness > 0, "cross section of " << section.body << ": thickness " << thickness << " must be > 0");
+/// Gmsh's quadrilaterals of `section` with their corners straightened (the boundary nodes stay).
+QuadSection straightened_quadrilaterals(const CrossSection& section, const SizeField& size)
+{
   QuadSection gmsh_mesh;
   const std::string failure = gmsh_module().mesh_cross_section(section, size, gmsh_mesh);
   FETICON_CHECK(failure.empty(), failure);
-  std::vector<Eigen::Vector2d>& points = gmsh_mesh.points;
-  const std::vector<std::array<int32_t, 4>>& quads = gmsh_mesh.quads;
-  const auto n = static_cast<int32_t>(points.size());
   // Curve nodes stay on their curve.
-  std::vector<char> on_boundary(n, 0);
+  std::vector<char> on_boundary(gmsh_mesh.points.size(), 0);
   for (const auto& edges : gmsh_mesh.curve_edges)
     for (const auto& [a, b] : edges)
       on_boundary[a] = on_boundary[b] = 1;
-  straighten_corners(points, quads, on_boundary);
+  straighten_corners(gmsh_mesh.points, gmsh_mesh.quads, on_boundary);
+  return gmsh_mesh;
+}
 
-  Mesh mesh;
-  mesh.body_names = {section.body};
-  mesh.nodes.resize(2 * n, 3);
-  for (int32_t i = 0; i < n; ++i)
-    for (int layer = 0; layer < 2; ++layer)
-      mesh.nodes.row(i + layer * n) << points[i].x(), points[i].y(), layer * thickness;
-  // Directed edges of the counter-clockwise quads: a boundary edge runs with its cell's order.
+/// The boundary edges of every curve of `section`, each as (a, b) running with its cell's
+/// counter-clockwise order, so that (x_b - x_a) x e_z points out of the body.
+std::vector<std::vector<std::pair<int32_t, int32_t>>> outward_curve_edges(const CrossSection& section,
+                                                                          const QuadSection& quads)
+{
   std::set<std::pair<int32_t, int32_t>> directed;
-  for (const auto& q : quads)
-  {
-    mesh.cells.add(CellKind::hex8, Hex8Nodes{q[0], q[1], q[2], q[3], q[0] + n, q[1] + n, q[2] + n, q[3] + n});
+  for (const auto& q : quads.quads)
     for (int k = 0; k < 4; ++k)
       directed.insert({q[k], q[(k + 1) % 4]});
-    mesh.face_sets["zmin"].push_back(Face{q[0], q[3], q[2], q[1]});
-    mesh.face_sets["zmax"].push_back(Face{q[0] + n, q[1] + n, q[2] + n, q[3] + n});
-  }
-  mesh.cell_body.assign(mesh.cells.size(), 0);
+  std::vector<std::vector<std::pair<int32_t, int32_t>>> out(section.curves.size());
   for (size_t c = 0; c < section.curves.size(); ++c)
-  {
-    auto& faces = mesh.face_sets[section.curves[c].set];
-    for (auto [a, b] : gmsh_mesh.curve_edges[c])
+    for (auto [a, b] : quads.curve_edges[c])
     {
       if (!directed.count({a, b}))
         std::swap(a, b);
       FETICON_CHECK(directed.count({a, b}),
                     "cross section of " << section.body << ": a boundary edge of '" << section.curves[c].set
                                         << "' is no cell edge");
-      // (x_b - x_a) x e_z points to the right of a -> b: out of the body.
-      faces.push_back(Face{a, b, b + n, a + n});
+      out[c].push_back({a, b});
     }
-  }
+  return out;
+}
+
+/// Each face set also a node set; every cell counter-clockwise.
+void finish_sets_and_check(Mesh& mesh, const CrossSection& section)
+{
   for (const auto& [name, faces] : mesh.face_sets)
     mesh.add_node_set_from_faces(name, name);
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
     FETICON_CHECK(centre_jacobian_determinant(mesh, c) > 0,
                   "cross section of " << section.body << ": Gmsh made an inverted cell");
+}
+} // namespace
+
+Mesh extrude_cross_section(const CrossSection& section, const SizeField& size, double thickness)
+{
+  FETICON_CHECK(thickness > 0, "cross section of " << section.body << ": thickness " << thickness << " must be > 0");
+  const QuadSection quads = straightened_quadrilaterals(section, size);
+  const auto n = static_cast<int32_t>(quads.points.size());
+  Mesh mesh;
+  mesh.body_names = {section.body};
+  mesh.nodes.resize(2 * n, 3);
+  for (int32_t i = 0; i < n; ++i)
+    for (int layer = 0; layer < 2; ++layer)
+      mesh.nodes.row(i + layer * n) << quads.points[i].x(), quads.points[i].y(), layer * thickness;
+  for (const auto& q : quads.quads)
+  {
+    mesh.cells.add(CellKind::hex8, Hex8Nodes{q[0], q[1], q[2], q[3], q[0] + n, q[1] + n, q[2] + n, q[3] + n});
+    mesh.face_sets["zmin"].push_back(Face{q[0], q[3], q[2], q[1]});
+    mesh.face_sets["zmax"].push_back(Face{q[0] + n, q[1] + n, q[2] + n, q[3] + n});
+  }
+  mesh.cell_body.assign(mesh.cells.size(), 0);
+  const auto edges = outward_curve_edges(section, quads);
+  for (size_t c = 0; c < section.curves.size(); ++c)
+    for (const auto& [a, b] : edges[c])
+      mesh.face_sets[section.curves[c].set].push_back(Face{a, b, b + n, a + n});
+  finish_sets_and_check(mesh, section);
+  return mesh;
+}
+
+Mesh mesh_cross_section(const CrossSection& section, const SizeField& size, const Planar& planar)
+{
+  FETICON_CHECK(planar.kind != PlanarKind::none, "cross section of " << section.body << " needs a 2D formulation");
+  const QuadSection quads = straightened_quadrilaterals(section, size);
+  Mesh mesh;
+  mesh.planar = planar;
+  mesh.body_names = {section.body};
+  mesh.nodes.resize(static_cast<Eigen::Index>(quads.points.size()), 3);
+  for (size_t i = 0; i < quads.points.size(); ++i)
+    mesh.nodes.row(static_cast<Eigen::Index>(i)) << quads.points[i].x(), quads.points[i].y(), 0;
+  for (const auto& q : quads.quads)
+    mesh.cells.add(CellKind::quad4, std::vector<int32_t>(q.begin(), q.end()));
+  mesh.cell_body.assign(mesh.cells.size(), 0);
+  const auto edges = outward_curve_edges(section, quads);
+  for (size_t c = 0; c < section.curves.size(); ++c)
+    for (const auto& [a, b] : edges[c])
+      mesh.face_sets[section.curves[c].set].emplace_back(FaceKind::line2, std::vector<int32_t>{a, b});
+  finish_sets_and_check(mesh, section);
   return mesh;
 }
 } // namespace feticon::mesh

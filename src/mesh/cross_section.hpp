@@ -1,14 +1,15 @@
 #pragma once
-/// @file One hex8 layer extruded from a quadrilateral mesh of a plane region (z = 0), which
-/// Gmsh builds with a size field: graded, shape-regular meshes of plane-strain bodies without
-/// the needle cells of tensor-product grading.
+/// @file A quadrilateral mesh of a plane region (z = 0), which Gmsh builds with a size field:
+/// graded, shape-regular meshes of plane-strain bodies without the needle cells of
+/// tensor-product grading; as quad4 cells of a 2D model (mesh::Planar) or extruded into one
+/// hex8 layer.
 ///
 /// The region is bounded by one closed loop of straight segments and circular arcs,
 /// counter-clockwise. Gmsh meshes it with triangles (frontal-Delaunay) and recombines them
 /// into quadrilaterals (blossom matching), then smooths; a mesh that keeps a triangle is an
-/// error. Every boundary curve carries a name; the extruded faces of all curves of one name
-/// form the face set of that name (outward), and "zmin" / "zmax" are the layer's two faces.
-/// Each face set also becomes the node set of the same name.
+/// error. Every boundary curve carries a name; the edges (2D) or extruded faces (hex8 layer) of
+/// all curves of one name form the face set of that name (outward); the layer's two faces are
+/// "zmin" / "zmax". Each face set also becomes the node set of the same name.
 
 #include "mesh/mesh.hpp"
 
@@ -42,4 +43,9 @@ using SizeField = std::function<double(double x, double y)>;
 /// layer of hex8 cells of thickness `thickness` (m) along z.
 /// @throws feticon::Error if Gmsh fails or leaves a cell that is not a quadrilateral.
 Mesh extrude_cross_section(const CrossSection& section, const SizeField& size, double thickness);
+
+/// @brief Meshes `section` with quad4 cells of the size `size` for the 2D formulation `planar`
+/// (its line2 edges as the curves' face sets).
+/// @throws feticon::Error as extrude_cross_section, or if planar is not 2D.
+Mesh mesh_cross_section(const CrossSection& section, const SizeField& size, const Planar& planar);
 } // namespace feticon::mesh

@@ -177,6 +177,8 @@ std::string serialize(const Mesh& mesh)
     put_string(out, name);
     put_vector(out, cached_faces(faces));
   }
+  put<uint8_t>(out, static_cast<uint8_t>(mesh.planar.kind));
+  put<double>(out, mesh.planar.thickness);
   return out;
 }
 
@@ -277,7 +279,7 @@ bool deserialize(const std::string& data, Mesh& mesh)
   for (const auto& [name, faces] : face_sets)
     for (const CachedFace& face : faces)
     {
-      if (face[0] < 0 || face[0] > static_cast<int32_t>(FaceKind::quad8))
+      if (face[0] < 0 || face[0] > static_cast<int32_t>(FaceKind::line3))
         return false;
       const auto kind = static_cast<FaceKind>(face[0]);
       mesh.face_sets[name].push_back(Face(kind, std::span<const int32_t>(face.data() + 1, face_nodes(kind))));
@@ -289,6 +291,10 @@ bool deserialize(const std::string& data, Mesh& mesh)
     for (const Face& face : faces)
       if (!std::ranges::all_of(face, in_range))
         return false;
+  uint8_t planar = 0;
+  if (!in.get(planar) || planar > static_cast<uint8_t>(PlanarKind::axisymmetric) || !in.get(mesh.planar.thickness))
+    return false;
+  mesh.planar.kind = static_cast<PlanarKind>(planar);
   const auto bodies = static_cast<int32_t>(mesh.body_names.size());
   return in.at_end() && mesh.cell_body.size() == mesh.cells.size() &&
       std::ranges::all_of(mesh.cell_body, [bodies](int32_t b) { return b >= 0 && b < bodies; });

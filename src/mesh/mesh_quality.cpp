@@ -3,24 +3,43 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace feticon::mesh
 {
+namespace
+{
+/// The corner polygons of a cell whose edges and angles count: a 2D cell's corners (counter-
+/// clockwise), a 3D cell's faces (or, in_plane, its face S1, the zeta = -1 face of a hex8 layer).
+std::vector<std::vector<int32_t>> corner_polygons(const CellType& type, std::span<const int32_t> cell, bool in_plane)
+{
+  if (type.dimension == 2)
+    return {std::vector<int32_t>(cell.begin(), cell.begin() + type.n_corners)};
+  std::vector<std::vector<int32_t>> out;
+  const size_t n_faces = in_plane ? 1 : type.faces.size();
+  for (size_t f = 0; f < n_faces; ++f)
+  {
+    std::vector<int32_t>& polygon = out.emplace_back();
+    for (int k = 0; k < face_corners(type.faces[f].kind); ++k)
+      polygon.push_back(cell[type.faces[f].nodes[k]]);
+  }
+  return out;
+}
+} // namespace
+
 MeshQuality mesh_quality(const Mesh& mesh, bool in_plane)
 {
   MeshQuality q;
   q.min_angle_deg = std::numeric_limits<double>::infinity();
   for (size_t c = 0; c < mesh.cells.size(); ++c)
   {
-    const std::span<const int32_t> cell = mesh.cells[c];
-    const CellType& type = cell_type(mesh.cells.kind(c));
-    // A hex8's face S1 is its zeta = -1 face, the plane-strain section.
-    const size_t n_faces = in_plane ? 1 : type.faces.size();
     double shortest = std::numeric_limits<double>::infinity(), longest = 0;
-    for (size_t f = 0; f < n_faces; ++f)
-      for (int k = 0, m = face_corners(type.faces[f].kind); k < m; ++k)
+    for (const std::vector<int32_t>& polygon : corner_polygons(cell_type(mesh.cells.kind(c)), mesh.cells[c], in_plane))
+    {
+      const auto m = static_cast<int>(polygon.size());
+      for (int k = 0; k < m; ++k)
       {
-        auto at = [&](int j) { return Eigen::Vector3d(mesh.nodes.row(cell[type.faces[f].nodes[(k + j) % m]])); };
+        auto at = [&](int j) { return Eigen::Vector3d(mesh.nodes.row(polygon[(k + j) % m])); };
         const Eigen::Vector3d to_next = at(1) - at(0), to_previous = at(m - 1) - at(0);
         shortest = std::min(shortest, to_next.norm());
         longest = std::max(longest, to_next.norm());
@@ -28,6 +47,7 @@ MeshQuality mesh_quality(const Mesh& mesh, bool in_plane)
         q.min_angle_deg = std::min(q.min_angle_deg, angle);
         q.max_angle_deg = std::max(q.max_angle_deg, angle);
       }
+    }
     q.max_aspect_ratio = std::max(q.max_aspect_ratio, longest / shortest);
   }
   if (mesh.cells.empty())

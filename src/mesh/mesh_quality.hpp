@@ -14,7 +14,8 @@ struct MeshQuality
 };
 
 /// @brief The measures over all cells.
-/// @param in_plane true for a plane-strain layer: only the cells' z = min faces count (their
-///   4 edges and corners), since the layer thickness is no element size of the 2D problem.
+/// @param in_plane true for a plane-strain hex8 layer: only the cells' z = min faces count
+///   (their 4 edges and corners), since the layer thickness is no element size of the 2D
+///   problem. 2D cells count their own edges and corners either way.
 MeshQuality mesh_quality(const Mesh& mesh, bool in_plane);
 } // namespace feticon::mesh

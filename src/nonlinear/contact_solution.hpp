@@ -69,6 +69,9 @@ struct RestartState
   std::vector<int32_t> schur_boundary;
   /// The committed J2 states of every plastic cell (fem::MeshPlasticStates::pack); empty without.
   std::vector<double> plastic;
+  /// Small displacements: the candidate contact rows the QPs had (LinearContactRows), those
+  /// added where a left-out row was penetrated included; empty: the initial selection.
+  std::vector<int32_t> linear_rows_selected;
 };
 
 struct ContactSolution

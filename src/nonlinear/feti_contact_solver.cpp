@@ -621,6 +621,8 @@ int FetiContactSolve::restore(const ContactSolution& previous)
     keys.push_back(contact::contact_key(r.contact_pair.empty() ? 0 : r.contact_pair[j], r.contact_slave[j]));
   }
   _multipliers.restore(r.dual, keys, r.contact_lambda, r.contact_tangential);
+  if (_linear_rows && !r.linear_rows_selected.empty())
+    _linear_rows->select(r.linear_rows_selected);
   _previous_active = _multipliers.active_keys(_force_floor);
   if (!r.schur_boundary.empty() && _schur) // the boundary had grown: its operators as they were
   {
@@ -1115,6 +1117,7 @@ void FetiContactSolve::end_load_step(const LoadStep& record)
     r.plastic = _out.plastic.pack(cells);
   }
   r.completed_steps = _step;
+  r.linear_rows_selected = _linear_rows ? _linear_rows->selected_indices() : std::vector<int32_t>{};
   r.schur_boundary.clear();
   if (_out.schur_boundary_widened)
     for (size_t i = 0; i < _schur_boundary.size(); ++i)

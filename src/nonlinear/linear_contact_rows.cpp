@@ -1,5 +1,7 @@
 #include "nonlinear/linear_contact_rows.hpp"
 
+#include "common/error.hpp"
+
 #include "contact/contact_row_builder.hpp"
 
 #include <algorithm>
@@ -75,6 +77,26 @@ la::Vector LinearContactRows::all_multipliers(const contact::ContactConstraints&
 }
 
 int64_t LinearContactRows::n_selected() const { return std::count(_selected.begin(), _selected.end(), 1); }
+
+std::vector<int32_t> LinearContactRows::selected_indices() const
+{
+  std::vector<int32_t> out;
+  for (size_t i = 0; i < _selected.size(); ++i)
+    if (_selected[i])
+      out.push_back(static_cast<int32_t>(i));
+  return out;
+}
+
+void LinearContactRows::select(const std::vector<int32_t>& indices)
+{
+  std::ranges::fill(_selected, 0);
+  for (const int32_t i : indices)
+  {
+    FETICON_CHECK(i >= 0 && i < std::ssize(_selected),
+                  "restart: the checkpoint selects contact row " << i << " of " << _selected.size() << " candidates");
+    _selected[i] = 1;
+  }
+}
 
 contact::ContactConstraints LinearContactRows::subset(const std::vector<char>& keep, const la::Vector& u) const
 {

@@ -50,6 +50,12 @@ public:
   void set_pairs_in_force(std::vector<char> in_force) { _in_force = std::move(in_force); }
 
   int64_t n_selected() const;
+  /// The candidates selected so far, by index (what a checkpoint keeps: the rows expand added
+  /// are those of the uninterrupted run, which a restart's QPs must start from).
+  std::vector<int32_t> selected_indices() const;
+  /// @brief Selects these candidates (and no others).
+  /// @throws feticon::Error for an index out of range (a checkpoint of another model).
+  void select(const std::vector<int32_t>& indices);
   int64_t n_candidates() const { return _candidates.n_rows(); }
 
 private:

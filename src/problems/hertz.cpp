@@ -27,21 +27,24 @@ std::vector<fem::NodalForce> moment_free_couple(const mesh::Mesh& mesh, double f
   std::map<int32_t, double> nodal;
   for (const mesh::Face& face : mesh.face_set("load"))
   {
-    // A face of the extruded layer: two nodes at each of two abscissae; a quarter of its
-    // area times the linear traction's consistent weights on each.
+    // An edge of a 2D cell (one node at each of two abscissae) or a face of the hex8 layer
+    // (two at each): its area, over the nodes at an abscissa, times the linear traction's
+    // consistent weights.
     double x_min = 1e300, x_max = -1e300, z_min = 1e300, z_max = -1e300;
     for (int32_t node : face)
     {
       x_min = std::min(x_min, mesh.nodes(node, 0)), x_max = std::max(x_max, mesh.nodes(node, 0));
       z_min = std::min(z_min, mesh.nodes(node, 2)), z_max = std::max(z_max, mesh.nodes(node, 2));
     }
-    const double thickness = z_max - z_min, length = x_max - x_min;
+    const bool edge = mesh::is_line(face.kind);
+    const double thickness = edge ? mesh.planar.thickness : z_max - z_min, length = x_max - x_min;
     const double k = 3 * force * radius / (2 * std::pow(half_width, 3) * thickness); // Pa/m
+    const double per_abscissa = edge ? 1.0 : 0.5;
     for (int32_t node : face)
     {
       const bool left = mesh.nodes(node, 0) == x_min;
       const double t_here = k * (left ? x_min : x_max), t_other = k * (left ? x_max : x_min);
-      nodal[node] += 0.5 * thickness * length / 6 * (2 * t_here + t_other);
+      nodal[node] += per_abscissa * thickness * length / 6 * (2 * t_here + t_other);
     }
   }
   std::vector<fem::NodalForce> out;

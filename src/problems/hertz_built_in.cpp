@@ -123,6 +123,8 @@ std::vector<io::SettingSpec> hertz_setting_specs()
       {"hertz.mesh", "graded", "graded (Gmsh quadrilaterals with a size field growing by growth_ratio "
                                "away from the contact, shape-regular) or tensor (mapped blocks with "
                                "tensor-product grading)", Type::text, {"graded", "tensor"}, 0, 0, false},
+      {"hertz.cells", "quad4", "quad4 (2D plane-strain cells, thickness 0.01 m) or hex8_layer (one hex8 layer "
+       "with u_z eliminated: the paper's model, for comparison)", Type::text, {"quad4", "hex8_layer"}, 0, 0, false},
       {"hertz.refinement", "1", "scales every element size by 1/refinement", Type::number, {}, 0.05, 64, false},
       {"hertz.element_size", "0.005", "element size in the contact zone at refinement 1 (m)", Type::number, {}, 0, 0.1, true},
       {"hertz.master_ratio", "1.3", "block (master) / cylinder (slave) contact element size", Type::number, {}, 0.2, 5, false},
@@ -152,6 +154,7 @@ HertzParameters hertz_parameters(const io::Settings& s)
       ? cattaneo_mindlin_coefficient(s, "hertz.tangential_displacement", p.tangential_displacement, "m", "cylinder")
       : cattaneo_mindlin_coefficient(s, "hertz.tangential_load", p.tangential_load, "N/m", "cylinder");
   p.mesh.kind = s.text("hertz.mesh") == "tensor" ? HertzMeshKind::tensor : HertzMeshKind::graded;
+  p.mesh.cells = s.text("hertz.cells") == "hex8_layer" ? HertzCells::hex8_layer : HertzCells::quad4;
   p.mesh.refinement = s.number("hertz.refinement");
   p.mesh.element_size = s.number("hertz.element_size");
   p.mesh.master_ratio = s.number("hertz.master_ratio");

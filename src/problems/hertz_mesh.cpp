@@ -2,11 +2,13 @@
 
 #include "mesh/box.hpp"
 #include "mesh/cross_section.hpp"
+#include "mesh/rectangle.hpp"
 #include "mesh/mesh_cache.hpp"
 
 #include "common/error.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <iterator>
@@ -89,23 +91,35 @@ Mesh tensor_bodies(const HertzMeshParameters& p)
   auto n_cells = [](const std::vector<double>& positions) { return static_cast<int32_t>(positions.size()) - 1; };
 
   // Column at abscissa x spans from the arc to the axis plane, height sqrt(R1^2 - x^2).
-  const Mesh cylinder = mesh::generate_mapped_block(
-      {n_cells(cylinder_x), n_cells(cylinder_t), 1},
-      [&](int32_t i, int32_t j, int32_t k) {
+  const auto cylinder_point = [&](int32_t i, int32_t j) {
     const double x = cylinder_x[i];
     const double height = std::sqrt(radius * radius - x * x);
-    const double y = (radius - height) + cylinder_t[j] / radius * height;
-    return Eigen::Vector3d(x, y, k * thickness);
-      },
-      "cylinder");
+    return Eigen::Vector2d(x, (radius - height) + cylinder_t[j] / radius * height);
+  };
   // j counts upward, while the graded depths start at the contact surface y = 0.
   const int32_t block_ny = n_cells(block_d);
-  const Mesh block = mesh::generate_mapped_block(
-      {n_cells(block_x), block_ny, 1},
-      [&](int32_t i, int32_t j, int32_t k) {
-    return Eigen::Vector3d(block_x[i], -block_d[block_ny - j], k * thickness);
-      },
-      "block");
+  const auto block_point = [&](int32_t i, int32_t j) { return Eigen::Vector2d(block_x[i], -block_d[block_ny - j]); };
+  const std::array<int32_t, 2> cylinder_cells{n_cells(cylinder_x), n_cells(cylinder_t)};
+  const std::array<int32_t, 2> block_cells{n_cells(block_x), block_ny};
+  const auto layer = [&](const auto& point, const std::array<int32_t, 2>& cells, const char* name) {
+    return mesh::generate_mapped_block(
+        {cells[0], cells[1], 1},
+        [&](int32_t i, int32_t j, int32_t k) {
+      const Eigen::Vector2d xy = point(i, j);
+      return Eigen::Vector3d(xy.x(), xy.y(), k * thickness);
+        },
+        name);
+  };
+  const auto planar = [&](const auto& point, const std::array<int32_t, 2>& cells, const char* name) {
+    // Quad4 cells have only corners, at whole grid points.
+    const auto at = [&](double i, double j) { return point(static_cast<int32_t>(i), static_cast<int32_t>(j)); };
+    return mesh::generate_mapped_rectangle(cells, at, mesh::CellKind::quad4,
+                                           {mesh::PlanarKind::plane_strain, thickness}, name);
+  };
+  const bool hex = p.cells == HertzCells::hex8_layer;
+  const Mesh cylinder =
+      hex ? layer(cylinder_point, cylinder_cells, "cylinder") : planar(cylinder_point, cylinder_cells, "cylinder");
+  const Mesh block = hex ? layer(block_point, block_cells, "block") : planar(block_point, block_cells, "block");
 
   Mesh mesh;
   mesh::append_mesh(mesh, cylinder, "cylinder_");
@@ -134,7 +148,7 @@ auto graded_size(const HertzMeshParameters& p, double h)
 /// The two bodies of the graded mesh (see hertz_mesh.hpp): each body's cross-section meshed by Gmsh with
 /// quadrilaterals whose size is h_b at the distance d = 0 from the contact band
 /// [0, fine_width] x {0} and h_b + (q - 1) d beyond, i.e. cells growing by about q from one
-/// to the next, then extruded into one layer.
+/// to the next: quad4 cells of a 2D model, or extruded into one hex8 layer.
 Mesh graded_bodies(const HertzMeshParameters& p)
 {
   const double radius = p.cylinder_radius;
@@ -164,10 +178,14 @@ Mesh graded_bodies(const HertzMeshParameters& p)
                     {{-p.block_width, 0}, "contact"},
                     {{-p.block_width, -p.block_depth}, "side"}};
   }
+  const auto cross_section = [&](const CrossSection& section, double h) {
+    if (p.cells == HertzCells::hex8_layer)
+      return mesh::extrude_cross_section(section, graded_size(p, h), p.thickness);
+    return mesh::mesh_cross_section(section, graded_size(p, h), {mesh::PlanarKind::plane_strain, p.thickness});
+  };
   Mesh mesh;
-  mesh::append_mesh(mesh, mesh::extrude_cross_section(cylinder, graded_size(p, h_slave), p.thickness), "cylinder_");
-  mesh::append_mesh(mesh, mesh::extrude_cross_section(block, graded_size(p, p.master_ratio * h_slave), p.thickness),
-                    "block_");
+  mesh::append_mesh(mesh, cross_section(cylinder, h_slave), "cylinder_");
+  mesh::append_mesh(mesh, cross_section(block, p.master_ratio * h_slave), "block_");
   merge_sets(mesh, {"cylinder_load"}, "load");
   merge_sets(mesh, {"block_support"}, "support");
   return mesh;
@@ -180,7 +198,7 @@ std::string graded_cache_key(const HertzMeshParameters& p)
       << " block_width " << p.block_width << " block_depth " << p.block_depth << " thickness " << p.thickness
       << " element_size " << p.element_size << " master_ratio " << p.master_ratio << " fine_width " << p.fine_width
       << " fine_depth " << p.fine_depth << " growth_ratio " << p.growth_ratio << " refinement " << p.refinement
-      << (p.full ? " full" : "");
+      << (p.full ? " full" : "") << (p.cells == HertzCells::quad4 ? " quad4" : "");
   return key.str();
 }
 
@@ -223,7 +241,7 @@ int64_t hertz_node_estimate(const HertzMeshParameters& p)
   check_parameters(p);
   const double R = p.cylinder_radius;
   const double h_slave = p.element_size / p.refinement, h_master = p.master_ratio * h_slave;
-  double cells = 0; // of both cross-sections; one layer of cells has twice as many nodes
+  double cells = 0; // of both cross-sections
   if (p.kind == HertzMeshKind::tensor)
   {
     const double q = std::pow(p.growth_ratio, 1 / p.refinement);
@@ -240,12 +258,13 @@ int64_t hertz_node_estimate(const HertzMeshParameters& p)
         cells_by_size(p.block_width, p.block_depth, h_master, graded_size(p, h_master),
                       [](double, double) { return true; });
   }
-  // Quadrilaterals have about as many nodes as cells; the extruded layer doubles them. Gmsh's
+  // Quadrilaterals have about as many nodes as cells; the hex8 layer doubles them. Gmsh's
   // recombined quadrilaterals come out smaller than the size field asks, by a steady factor
   // (nodes built / integral 1.35, 1.34, 1.29 at refinement 0.5, 1, 4.4): 1.3 corrects it.
   const double quad_factor = p.kind == HertzMeshKind::graded ? 1.3 : 1.0;
   const double halves = p.full ? 2.0 : 1.0;
-  return static_cast<int64_t>(std::min(2 * quad_factor * halves * cells, 4e18));
+  const double layers = p.cells == HertzCells::hex8_layer ? 2.0 : 1.0;
+  return static_cast<int64_t>(std::min(layers * quad_factor * halves * cells, 4e18));
 }
 
 Mesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache)
@@ -257,8 +276,11 @@ Mesh generate_hertz(const HertzMeshParameters& parameters, bool* from_cache)
       ? mesh::cached_mesh(
             graded_cache_key(parameters), [&] { return graded_bodies(parameters); }, from_cache)
       : tensor_bodies(parameters);
-  merge_sets(mesh, {"cylinder_zmin", "block_zmin"}, "zmin");
-  merge_sets(mesh, {"cylinder_zmax", "block_zmax"}, "zmax");
+  if (parameters.cells == HertzCells::hex8_layer)
+  {
+    merge_sets(mesh, {"cylinder_zmin", "block_zmin"}, "zmin");
+    merge_sets(mesh, {"cylinder_zmax", "block_zmax"}, "zmax");
+  }
   if (parameters.full)
     return mesh;
   std::vector<int32_t> symmetry;
@@ -276,7 +298,7 @@ ContactZoneSummary summarize_contact_zone(const Mesh& mesh, const std::string& f
   {
     double min_x = std::numeric_limits<double>::infinity();
     double size = 0;
-    for (int a = 0; a < 4; ++a)
+    for (int a = 0; a < face.size(); ++a)
     {
       min_x = std::min(min_x, mesh.nodes(face[a], 0));
       for (int b = 0; b < a; ++b)

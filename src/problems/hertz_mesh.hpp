@@ -1,6 +1,8 @@
 #pragma once
 /// @file Mesh of the Hertz line-contact problem (ALGORITHMS.md section 9): a cylinder of radius R1
-/// pressed on a half-space, plane strain, modelled by one hex layer in z.
+/// pressed on a half-space, plane strain, modelled by quad4 cells of a 2D model (the default,
+/// thickness `thickness`, line2 edges as faces) or by one hex8 layer in z with u_z eliminated
+/// (the model of the paper and of feticon before 2D cells, kept for comparison).
 ///
 /// Geometry (m). The contact point is the origin, the cylinder axis is (0, R1) and only x >= 0 is
 /// meshed: the plane x = 0 is a symmetry plane (u_x = 0 there, which also removes the sideways
@@ -9,7 +11,7 @@
 ///    arc y_b(x) = R1 - sqrt(R1^2 - x^2) and the plane y = R1 through the axis, where the line load
 ///    is applied; bounded on the right by the plane x = Xc.
 ///  - body 1 "block": the half-space truncated to 0 <= x <= W, -D <= y <= 0, supported at y = -D.
-///  - z in [0, thickness], one cell layer.
+///  - hex8 layer: z in [0, thickness], one cell layer.
 ///
 /// Mesh `graded` (the default). Each body's cross-section is meshed by Gmsh with
 /// quadrilaterals (mesh/cross_section.hpp) of size h_b (h_slave = h, h_master = master_ratio * h)
@@ -42,7 +44,7 @@
 ///   "cylinder_contact" arc faces (slave surface)     "block_contact" y = 0 (master surface)
 ///   "load"             cylinder top y = R1            "support"       block bottom y = -D
 ///   "cylinder_symmetry", "block_symmetry" x = 0       "cylinder_side" x = Xc, "block_side" x = W
-///   "zmin", "zmax"     the z faces of both bodies
+///   "zmin", "zmax"     the z faces of both bodies (hex8 layer only)
 /// and the node set "symmetry" = cylinder_symmetry + block_symmetry nodes. The full model
 /// (HertzMeshParameters::full) has no symmetry sets; its "cylinder_side" and "block_side" are
 /// both sides.
@@ -60,10 +62,17 @@ enum class HertzMeshKind
   tensor  ///< mapped blocks with tensor-product grading (needle cells far from the contact)
 };
 
+enum class HertzCells
+{
+  quad4,     ///< 2D plane-strain cells (mesh::Planar)
+  hex8_layer ///< one hex8 layer through the thickness
+};
+
 /// Dimensions (m) and grading of the Hertz mesh; defaults as in the file comment.
 struct HertzMeshParameters
 {
   HertzMeshKind kind = HertzMeshKind::graded;
+  HertzCells cells = HertzCells::quad4;
   /// Cylinder radius R1 (m).
   double cylinder_radius = 1.0;
   /// Half-width Xc of the modelled cylinder segment (m), < R1.
@@ -72,7 +81,7 @@ struct HertzMeshParameters
   double block_width = 1.5;
   /// Depth D of the block, y in [-D, 0] (m).
   double block_depth = 1.5;
-  /// Thickness in z of the single cell layer (m).
+  /// Thickness of the model (m): of the 2D cells, or in z of the single hex8 layer.
   double thickness = 0.01;
   /// Cell size h on the cylinder near the contact, before refinement (m).
   double element_size = 0.005;

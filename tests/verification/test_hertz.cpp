@@ -196,10 +196,12 @@ TEST(HertzBenchmark, DualPenaltyFeasibilityFallsLikeOneOverRho)
 
 // Reference: the SMALBE-M solution of the same discrete problem (exact multipliers). The
 // primal penalty of Vondrák et al.'s section 2 allows a penetration lambda/eps_n, so its pressure
-// approaches the exact one like 1/eps_n: measured 1.5e-1, 2.0e-2, 2.0e-3 of p0 for
-// eps_n = 1e-2, 1e-1, 1 max diag K on the graded mesh (3.1e-2, 3.8e-3, 3.8e-4 on the tensor
-// mesh, whose needle cells make max diag K larger against the contact cells' stiffness);
-// asserted: at least a factor 5 per decade, and at the stiffest penalty at most 5 times the
+// approaches the exact one like 1/eps_n: measured 1.49e-1, 2.00e-2, 2.08e-3 of p0 for
+// eps_n = 1, 10, 100 max diag K on the graded mesh of quad4 cells (2.09e-4 at 1000). The hex8
+// layer gave the same figures at 100 times smaller factors (1e-2, 1e-1, 1): the through-thickness
+// shear of its largest cells, G h^2 / t with h up to 0.15 m and t = 0.01 m, inflated its
+// max diag K by about that much against the in-plane stiffness that 2D cells have alone.
+// Asserted: at least a factor 5 per decade, and at the stiffest penalty at most 5 times the
 // measured difference. Coarse mesh (refinement 0.5) for test time.
 TEST(HertzBenchmark, PrimalPenaltyApproachesTheExactSolutionLikeOneOverEps)
 {
@@ -226,7 +228,7 @@ TEST(HertzBenchmark, PrimalPenaltyApproachesTheExactSolutionLikeOneOverEps)
   const std::vector<double> exact = pressures(nonlinear::ContactMethod::smalbe, 0);
   const double p0 = problems::hertz_analytic(parameters).peak_pressure;
   std::vector<double> differences;
-  for (double eps : {1e-2, 1e-1, 1.0})
+  for (double eps : {1.0, 10.0, 100.0})
   {
     const std::vector<double> p = pressures(nonlinear::ContactMethod::primal_penalty, eps);
     ASSERT_EQ(p.size(), exact.size());

@@ -4,6 +4,7 @@
 /// nodes lie on the arc y = R1 - sqrt(R1^2 - x^2) and the master surface is exactly y = 0, so
 /// g = y_s; (2) a brute-force search that projects every slave node on every master face;
 /// (3) for mortar rows on the flat master plane, sum_a M_ja = D_j (HertzRowsAndTiming).
+/// The brute-force search projects on quad4 faces: those tests take the hex8 layer's mesh.
 
 #include "contact/contact_constraints.hpp"
 #include "contact/mortar_constraints.hpp"
@@ -25,6 +26,15 @@ using row_checks::expect_rows_annihilate_translations;
 using row_checks::weight_sum;
 
 const ContactPair hertz_pair{.slave = "cylinder_contact", .master = "block_contact"};
+
+/// The Hertz mesh as one hex8 layer (quad4 contact faces), at `refinement`.
+mesh::Mesh hertz_layer(double refinement = 1)
+{
+  problems::HertzMeshParameters parameters;
+  parameters.cells = problems::HertzCells::hex8_layer;
+  parameters.refinement = refinement;
+  return problems::generate_hertz(parameters);
+}
 
 /// Closest accepted projection over all master faces (smallest |g|, first face on ties).
 struct BruteForceRow
@@ -102,7 +112,7 @@ int expect_same_as_brute_force(const mesh::Mesh& mesh, const la::Vector& u, cons
 
 TEST(HertzContact, GapsEqualAnalyticArcAndBruteForce)
 {
-  const mesh::Mesh mesh = problems::generate_hertz({});
+  const mesh::Mesh mesh = hertz_layer();
   const double radius = 1.0;
   const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), hertz_pair);
   const std::vector<int32_t> slave_nodes = mesh.face_set_nodes(hertz_pair.slave);
@@ -136,9 +146,7 @@ TEST(HertzContact, GapsEqualAnalyticArcAndBruteForce)
 
 TEST(HertzContact, SearchTimeAtRefinement4)
 {
-  problems::HertzMeshParameters parameters;
-  parameters.refinement = 4;
-  const mesh::Mesh mesh = problems::generate_hertz(parameters);
+  const mesh::Mesh mesh = hertz_layer(4);
   const auto start = std::chrono::steady_clock::now();
   const ContactConstraints rows = build_contact_constraints(mesh, la::Vector(), hertz_pair);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -163,7 +171,7 @@ TEST(HertzContact, DeformedConfigurationMatchesBruteForce)
   // reference. The surface also tilts across the thickness (du_y/dz = 2e-3 cos(3x)), so the
   // projections of penetrating nodes on z = 0 land just outside the rim z = 0 of the master
   // surface: rim rows.
-  const mesh::Mesh mesh = problems::generate_hertz({});
+  const mesh::Mesh mesh = hertz_layer();
   la::Vector u = la::Vector::Zero(3 * mesh.n_nodes());
   for (int32_t node = 0; node < mesh.n_nodes(); ++node)
   {

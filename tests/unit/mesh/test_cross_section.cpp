@@ -1,4 +1,4 @@
-/// Tests of the extruded Gmsh cross-sections and of the mesh quality measures. References:
+/// Tests of the Gmsh cross-sections (2D and extruded) and of the mesh quality measures. References:
 /// exact areas of the sections, the circle of an arc, outward normals from the geometry, and
 /// hand-computed shape measures of box cells.
 
@@ -85,6 +85,55 @@ TEST(CrossSection, AreaSetsAndOrientation)
         (mesh.nodes.row(f[1]) - mesh.nodes.row(f[0])).cross(mesh.nodes.row(f[3]) - mesh.nodes.row(f[0]));
     EXPECT_LT(n.dot(centre - Eigen::Vector3d(1, 1, centre.z())), 0); // out of the plate: towards the centre
   }
+}
+
+// The 2D mesh is the extruded layer's section: the same points and quadrilaterals, counter-
+// clockwise, its edge sets the layer's side faces seen edge-on (its z = 0 nodes, outward normals).
+TEST(CrossSection, QuadrilateralsOfA2DModel)
+{
+  const auto size = [](double, double) { return 0.05; };
+  const Mesh layer = extrude_cross_section(notched_square(), size, 0.1);
+  const Mesh planar = mesh_cross_section(notched_square(), size, {PlanarKind::plane_strain, 0.1});
+  EXPECT_EQ(planar.planar.kind, PlanarKind::plane_strain);
+  ASSERT_EQ(planar.n_cells(), layer.n_cells());
+  ASSERT_EQ(2 * planar.n_nodes(), layer.n_nodes());
+  EXPECT_EQ(planar.nodes, layer.nodes.topRows(planar.n_nodes()));
+  double area = 0;
+  for (int32_t c = 0; c < planar.n_cells(); ++c)
+  {
+    EXPECT_EQ(planar.cells.kind(c), CellKind::quad4);
+    const auto cell = planar.cells[c];
+    for (int k = 0; k < 4; ++k)
+      EXPECT_EQ(cell[k], layer.cells[c][k]);
+    EXPECT_GT(centre_jacobian_determinant(planar, c), 0);
+    for (int k = 0; k < 4; ++k) // shoelace
+      area += 0.5 *
+          (planar.nodes(cell[k], 0) * planar.nodes(cell[(k + 1) % 4], 1) -
+           planar.nodes(cell[(k + 1) % 4], 0) * planar.nodes(cell[k], 1));
+  }
+  EXPECT_NEAR(area, (1 - M_PI / 16), 5e-4);
+  EXPECT_EQ(planar.face_sets.count("zmin"), 0u);
+  const std::map<std::string, Eigen::Vector3d> normals = {
+      {"bottom", {0, -1, 0}}, {"right", {1, 0, 0}}, {"top", {0, 1, 0}}, {"left", {-1, 0, 0}}};
+  for (const auto& [set, normal] : normals)
+  {
+    ASSERT_EQ(planar.face_set(set).size(), layer.face_set(set).size()) << set;
+    std::vector<int32_t> first_layer = layer.node_set(set);
+    std::erase_if(first_layer, [&](int32_t n) { return n >= planar.n_nodes(); });
+    EXPECT_EQ(planar.node_set(set), first_layer) << set;
+    for (const Face& f : planar.face_set(set))
+    {
+      ASSERT_EQ(f.kind, FaceKind::line2);
+      const Eigen::Vector3d along = planar.nodes.row(f[1]) - planar.nodes.row(f[0]);
+      EXPECT_NEAR(along.cross(Eigen::Vector3d::UnitZ()).normalized().dot(normal), 1, 1e-12) << set;
+    }
+  }
+  // Its quality is the layer's seen in plane.
+  const MeshQuality in_plane = mesh_quality(layer, true), own = mesh_quality(planar, false);
+  EXPECT_DOUBLE_EQ(own.max_aspect_ratio, in_plane.max_aspect_ratio);
+  EXPECT_DOUBLE_EQ(own.min_angle_deg, in_plane.min_angle_deg);
+  EXPECT_DOUBLE_EQ(own.max_angle_deg, in_plane.max_angle_deg);
+  EXPECT_GT(own.min_angle_deg, 30);
 }
 
 TEST(CrossSection, SizeFieldGradesTheCells)

@@ -5,6 +5,7 @@
 #include "mesh/mesh_cache.hpp"
 
 #include "mesh/box.hpp"
+#include "mesh/rectangle.hpp"
 
 #include "common/error.hpp"
 
@@ -43,6 +44,8 @@ void expect_identical(const Mesh& a, const Mesh& b)
   EXPECT_EQ(a.body_names, b.body_names);
   EXPECT_EQ(a.node_sets, b.node_sets);
   EXPECT_EQ(a.face_sets, b.face_sets);
+  EXPECT_EQ(a.planar.kind, b.planar.kind);
+  EXPECT_EQ(a.planar.thickness, b.planar.thickness);
 }
 
 class MeshCache : public ::testing::Test
@@ -92,6 +95,20 @@ TEST_F(MeshCache, SecondCallReadsTheStoredMeshBitForBit)
   EXPECT_TRUE(hit);
   EXPECT_EQ(builds, 1);
   expect_identical(again, test_mesh());
+}
+
+// A 2D mesh (quad8 cells, line3 edges) keeps its formulation and thickness through the cache.
+TEST_F(MeshCache, PlanarMeshKeepsItsFormulation)
+{
+  const Mesh planar = generate_rectangle(
+      {.nx = 3, .ny = 2, .kind = CellKind::quad8, .planar = {PlanarKind::plane_stress, 0.25}, .body_name = "plate"});
+  bool hit = true;
+  const auto build = [&] { return planar; };
+  cached_mesh(location, "plate", build, &hit);
+  EXPECT_FALSE(hit);
+  const Mesh again = cached_mesh(location, "plate", build, &hit);
+  EXPECT_TRUE(hit);
+  expect_identical(again, planar);
 }
 
 TEST_F(MeshCache, OtherKeyIsAMiss)

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -28,11 +29,13 @@ namespace test = mesh::test;
 /// Hertz contact half-width of the steel cylinder of section 9 (m).
 constexpr double half_width = 0.068078;
 
+/// The hex8 layer (whose volumes and Jacobians the tests below measure) at `refinement`.
 Mesh hertz(double refinement, HertzMeshKind kind)
 {
   HertzMeshParameters p;
   p.refinement = refinement;
   p.kind = kind;
+  p.cells = HertzCells::hex8_layer;
   return generate_hertz(p);
 }
 
@@ -286,6 +289,49 @@ TEST_P(HertzMeshRefinement, ContactZoneResolution)
 
 INSTANTIATE_TEST_SUITE_P(Kind, HertzMeshRefinement, ::testing::Values(HertzMeshKind::graded, HertzMeshKind::tensor));
 
+// The 2D mesh (the default) is the hex8 layer's section: its z = 0 nodes, one quad4 cell per
+// hex8 (the same first four nodes), its edge sets the layer's side faces seen edge-on, and no
+// z sets; plane strain with the layer's thickness.
+TEST_P(HertzMesh, Quad4CellsAreTheLayersSection)
+{
+  const Mesh layer = this->mesh();
+  HertzMeshParameters p;
+  p.refinement = std::get<1>(GetParam());
+  p.kind = std::get<0>(GetParam());
+  const Mesh planar = generate_hertz(p);
+  EXPECT_EQ(planar.planar.kind, mesh::PlanarKind::plane_strain);
+  EXPECT_EQ(planar.planar.thickness, p.thickness);
+  ASSERT_EQ(planar.n_cells(), layer.n_cells());
+  EXPECT_EQ(planar.cell_body, layer.cell_body);
+  std::vector<int32_t> layer_node(planar.n_nodes(), -1); // the layer's node at each 2D node
+  for (int32_t c = 0; c < planar.n_cells(); ++c)
+  {
+    ASSERT_EQ(planar.cells.kind(c), mesh::CellKind::quad4);
+    for (int k = 0; k < 4; ++k)
+      layer_node[planar.cells[c][k]] = layer.cells[c][k];
+  }
+  for (int32_t n = 0; n < planar.n_nodes(); ++n)
+    ASSERT_EQ(planar.nodes.row(n), layer.nodes.row(layer_node[n])) << n;
+  EXPECT_EQ(planar.face_sets.count("zmin") + planar.face_sets.count("zmax"), 0u);
+  for (const auto& [name, faces] : planar.face_sets)
+  {
+    ASSERT_EQ(faces.size(), layer.face_set(name).size()) << name;
+    for (size_t f = 0; f < faces.size(); ++f)
+    {
+      ASSERT_EQ(faces[f].kind, mesh::FaceKind::line2) << name;
+      // The layer's face over the edge holds both its nodes, and their normals agree (the
+      // edge's (x_1 - x_0) x e_z, the face's from its corners).
+      const mesh::Face& face = layer.face_set(name)[f];
+      for (int k = 0; k < 2; ++k)
+        EXPECT_NE(std::ranges::find(face, layer_node[faces[f][k]]), face.end()) << name;
+      const Eigen::Vector3d edge = planar.nodes.row(faces[f][1]) - planar.nodes.row(faces[f][0]);
+      const Eigen::Vector3d normal = (layer.nodes.row(face[1]) - layer.nodes.row(face[0]))
+                                         .cross(layer.nodes.row(face[3]) - layer.nodes.row(face[0]));
+      EXPECT_GT(edge.cross(Eigen::Vector3d::UnitZ()).dot(normal), 0) << name;
+    }
+  }
+}
+
 TEST(HertzMeshQuality, GradedHasNoNeedleCells)
 {
   // The tensor grading carries the contact spacing along whole rows and columns (the needle
@@ -311,17 +357,19 @@ TEST(HertzMeshSize, EstimateBeforeBuildingIsNearTheBuiltMesh)
   // reference is the node count of the mesh generate_hertz then builds. The tensor count is
   // closed-form (rounding of the graded spacings only); the graded one integrates the size
   // field Gmsh follows, with one calibrated factor for its recombined quadrilaterals.
-  for (const HertzMeshKind kind : {HertzMeshKind::graded, HertzMeshKind::tensor})
-    for (double refinement : {0.5, 1.0, 4.4})
-    {
-      HertzMeshParameters p;
-      p.refinement = refinement;
-      p.kind = kind;
-      const double built = generate_hertz(p).n_nodes();
-      const double estimate = static_cast<double>(hertz_node_estimate(p));
-      EXPECT_NEAR(estimate / built, 1.0, kind == HertzMeshKind::tensor ? 0.05 : 0.1)
-          << refinement << " built " << built << " estimate " << estimate;
-    }
+  for (const HertzCells cells : {HertzCells::quad4, HertzCells::hex8_layer})
+    for (const HertzMeshKind kind : {HertzMeshKind::graded, HertzMeshKind::tensor})
+      for (double refinement : {0.5, 1.0, 4.4})
+      {
+        HertzMeshParameters p;
+        p.refinement = refinement;
+        p.kind = kind;
+        p.cells = cells;
+        const double built = generate_hertz(p).n_nodes();
+        const double estimate = static_cast<double>(hertz_node_estimate(p));
+        EXPECT_NEAR(estimate / built, 1.0, kind == HertzMeshKind::tensor ? 0.05 : 0.1)
+            << refinement << " built " << built << " estimate " << estimate;
+      }
 }
 
 TEST(HertzMeshParametersCheck, RejectsBadValues)
