@@ -4,6 +4,7 @@
 #include "problems/cantilever_obstacle.hpp"
 #include "problems/hertz.hpp"
 #include "problems/hertz3d.hpp"
+#include "problems/hertz_axi.hpp"
 
 namespace feticon::problems
 {
@@ -21,6 +22,7 @@ struct Entry
 const Entry registry[] = {
     {"hertz", hertz_setting_specs, make_hertz_problem},
     {"hertz3d", hertz3d_setting_specs, make_hertz3d_problem},
+    {"hertz_axi", hertz_axi_setting_specs, make_hertz_axi_problem},
     {"cantilever_obstacle", cantilever_obstacle_setting_specs, make_cantilever_obstacle_problem},
 };
 } // namespace
@@ -32,6 +34,7 @@ std::vector<io::SettingSpec> setting_specs()
   // clang-format off
   std::vector<io::SettingSpec> out = {
       {"problem", "hertz", "hertz (Vondrák et al.'s benchmark), hertz3d (a sphere on a half-space), "
+                           "hertz_axi (the sphere on the half-space as an axisymmetric model), "
                            "cantilever_obstacle (a cantilever bent onto a block: finite rotations) or "
                            "custom (mesh, bodies, supports, loads, contact sections of the problem file)",
        Type::text, {}, 0, 0, false},

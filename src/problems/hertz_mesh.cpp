@@ -52,11 +52,22 @@ void check_parameters(const HertzMeshParameters& p)
   FETICON_CHECK(!p.full || p.kind == HertzMeshKind::graded,
                 "Hertz mesh: the full model (a tangential load or displacement) is meshed by the graded mesh only: "
                 "hertz.mesh = graded");
+  FETICON_CHECK(!p.axisymmetric || p.cells == HertzCells::quad4,
+                "Hertz mesh: an axisymmetric model has quad4 cells, not a hex8 layer");
+  FETICON_CHECK(!(p.axisymmetric && p.full), "Hertz mesh: an axisymmetric model has no full (two-sided) form");
   const double h_max = std::max(1.0, p.master_ratio) * p.element_size / p.refinement;
   FETICON_CHECK(std::min(p.fine_width, p.fine_depth) >= h_max,
                 "Hertz mesh: the fine region (fine_width, fine_depth >= "
                     << std::min(p.fine_width, p.fine_depth) << " m) must hold at least one cell of " << h_max
                     << " m; decrease element_size or master_ratio");
+}
+
+/// The 2D formulation of the quad4 cells: plane strain of the thickness, or axisymmetric.
+mesh::Planar formulation(const HertzMeshParameters& p)
+{
+  if (p.axisymmetric)
+    return {mesh::PlanarKind::axisymmetric, 1};
+  return {mesh::PlanarKind::plane_strain, p.thickness};
 }
 
 /// Replaces the face sets `sources` by their union `target` (with its node set).
@@ -113,8 +124,7 @@ Mesh tensor_bodies(const HertzMeshParameters& p)
   const auto planar = [&](const auto& point, const std::array<int32_t, 2>& cells, const char* name) {
     // Quad4 cells have only corners, at whole grid points.
     const auto at = [&](double i, double j) { return point(static_cast<int32_t>(i), static_cast<int32_t>(j)); };
-    return mesh::generate_mapped_rectangle(cells, at, mesh::CellKind::quad4,
-                                           {mesh::PlanarKind::plane_strain, thickness}, name);
+    return mesh::generate_mapped_rectangle(cells, at, mesh::CellKind::quad4, formulation(p), name);
   };
   const bool hex = p.cells == HertzCells::hex8_layer;
   const Mesh cylinder =
@@ -181,7 +191,7 @@ Mesh graded_bodies(const HertzMeshParameters& p)
   const auto cross_section = [&](const CrossSection& section, double h) {
     if (p.cells == HertzCells::hex8_layer)
       return mesh::extrude_cross_section(section, graded_size(p, h), p.thickness);
-    return mesh::mesh_cross_section(section, graded_size(p, h), {mesh::PlanarKind::plane_strain, p.thickness});
+    return mesh::mesh_cross_section(section, graded_size(p, h), formulation(p));
   };
   Mesh mesh;
   mesh::append_mesh(mesh, cross_section(cylinder, h_slave), "cylinder_");
@@ -198,7 +208,8 @@ std::string graded_cache_key(const HertzMeshParameters& p)
       << " block_width " << p.block_width << " block_depth " << p.block_depth << " thickness " << p.thickness
       << " element_size " << p.element_size << " master_ratio " << p.master_ratio << " fine_width " << p.fine_width
       << " fine_depth " << p.fine_depth << " growth_ratio " << p.growth_ratio << " refinement " << p.refinement
-      << (p.full ? " full" : "") << (p.cells == HertzCells::quad4 ? " quad4" : "");
+      << (p.full ? " full" : "") << (p.cells == HertzCells::quad4 ? " quad4" : "")
+      << (p.axisymmetric ? " axisymmetric" : "");
   return key.str();
 }
 

@@ -73,6 +73,9 @@ struct HertzMeshParameters
 {
   HertzMeshKind kind = HertzMeshKind::graded;
   HertzCells cells = HertzCells::quad4;
+  /// The quad4 cells axisymmetric about x = 0 (the axis; y along it) instead of plane strain:
+  /// the cylinder becomes a sphere of radius cylinder_radius (hertz_axi.hpp).
+  bool axisymmetric = false;
   /// Cylinder radius R1 (m).
   double cylinder_radius = 1.0;
   /// Half-width Xc of the modelled cylinder segment (m), < R1.
