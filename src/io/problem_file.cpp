@@ -449,12 +449,45 @@ ProblemFile with_overrides(ProblemFile file, const std::vector<std::string>& ove
 }
 } // namespace
 
+/// A 2D mesh's formulation from mesh.formulation (plane_strain, plane_stress, axisymmetric)
+/// and mesh.thickness (m, default 1; not in axisymmetry): needed by 2D cells, refused for 3D
+/// ones. u_z is then eliminated on every node (mesh::Planar).
+void set_planar_formulation(const YAML::Node& mesh_node, const ProblemReader& r, fem::Problem& p)
+{
+  const bool planar_cells = p.mesh.n_cells() > 0 && mesh::cell_type(p.mesh.cells.kind(0)).dimension == 2;
+  if (!mesh_node["formulation"])
+  {
+    FETICON_CHECK(!planar_cells,
+                  r.source << ": the mesh has 2D cells: give mesh.formulation (plane_strain, "
+                              "plane_stress or axisymmetric) and, for the first two, mesh.thickness");
+    FETICON_CHECK(!mesh_node["thickness"], r.source << ": mesh.thickness is for 2D meshes with mesh.formulation");
+    return;
+  }
+  const std::string name = r.text(mesh_node["formulation"], "mesh.formulation");
+  const std::optional<mesh::PlanarKind> kind = name == "plane_strain" ? mesh::PlanarKind::plane_strain
+      : name == "plane_stress"                                        ? mesh::PlanarKind::plane_stress
+      : name == "axisymmetric"                                        ? std::optional(mesh::PlanarKind::axisymmetric)
+                                                                      : std::nullopt;
+  FETICON_CHECK(kind,
+                r.source << ": mesh.formulation '" << name << "' is none of plane_strain, plane_stress, axisymmetric");
+  FETICON_CHECK(planar_cells,
+                r.source << ": mesh.formulation " << name << " needs a mesh of 2D cells (a Gmsh file "
+                         << "whose bodies are physical surfaces); this mesh has 3D cells");
+  FETICON_CHECK(!(mesh_node["thickness"] && *kind == mesh::PlanarKind::axisymmetric),
+                r.source << ": mesh.thickness is not for an axisymmetric model (its measure is 2 pi r)");
+  const double thickness = mesh_node["thickness"] ? r.number(mesh_node["thickness"], "mesh.thickness") : 1.0;
+  FETICON_CHECK(std::isfinite(thickness) && thickness > 0,
+                r.source << ": mesh.thickness = " << thickness << " must be a positive length (m)");
+  p.mesh.planar = {*kind, thickness};
+  p.eliminated = {false, false, true};
+}
+
 CustomMeshSize custom_mesh_size(const ProblemFile& file)
 {
   const ProblemReader r{file.source};
   const YAML::Node& root = file.root;
   FETICON_CHECK(root["mesh"], file.source << ": problem: custom needs a 'mesh' section (file: or boxes:)");
-  r.only_keys(root["mesh"], "mesh", {"file", "boxes"});
+  r.only_keys(root["mesh"], "mesh", {"file", "boxes", "formulation", "thickness"});
   CustomMeshSize size;
   size.plane_strain =
       root["plane_strain"] && root["plane_strain"].IsScalar() && root["plane_strain"].Scalar() == "true";
@@ -492,7 +525,7 @@ fem::Problem build_custom_problem(const ProblemFile& file)
   const ProblemReader r{file.source};
   const YAML::Node& root = file.root;
   FETICON_CHECK(root["mesh"], file.source << ": problem: custom needs a 'mesh' section (file: or boxes:)");
-  r.only_keys(root["mesh"], "mesh", {"file", "boxes"});
+  r.only_keys(root["mesh"], "mesh", {"file", "boxes", "formulation", "thickness"});
   if (!file.deck.empty())
     return read_deck(file.deck, file.deck_outline).problem;
   fem::Problem p;
@@ -501,6 +534,7 @@ fem::Problem build_custom_problem(const ProblemFile& file)
     p.mesh = mesh::read_gmsh(file.folder / r.text(root["mesh"]["file"], "mesh.file"), &p.mesh_from_cache);
   else
     p.mesh = boxes_mesh(root["mesh"]["boxes"], r);
+  set_planar_formulation(root["mesh"], r, p);
 
   // Materials: one entry per body.
   FETICON_CHECK(root["bodies"] && root["bodies"].IsMap(),

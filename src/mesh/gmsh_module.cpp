@@ -4,13 +4,16 @@
 
 #include <dlfcn.h>
 
+#include <string>
 #include <system_error>
+#include <vector>
 
 namespace feticon::mesh
 {
 namespace
 {
-const GmshModule* load_gmsh_module()
+/// Where the module may be, in the order tried.
+std::vector<std::filesystem::path> module_candidates()
 {
   std::vector<std::filesystem::path> candidates;
   std::error_code error;
@@ -19,8 +22,14 @@ const GmshModule* load_gmsh_module()
     candidates.push_back(executable.parent_path() / "libfeticon_gmsh.so");
   candidates.emplace_back(FETICON_GMSH_MODULE_PATH);         // the build tree's (tests, bench)
   candidates.emplace_back(FETICON_GMSH_MODULE_INSTALL_PATH); // the installed one (cmake --install)
+  return candidates;
+}
+
+const GmshModule* load_gmsh_module()
+{
+  std::error_code error;
   std::string tried;
-  for (const std::filesystem::path& path : candidates)
+  for (const std::filesystem::path& path : module_candidates())
   {
     if (!std::filesystem::exists(path, error))
     {
@@ -52,6 +61,21 @@ const GmshModule* load_gmsh_module()
   return nullptr;
 }
 } // namespace
+
+std::string gmsh_module_stamp()
+{
+  std::error_code error;
+  for (const std::filesystem::path& path : module_candidates())
+    if (std::filesystem::exists(path, error))
+    {
+      const auto size = std::filesystem::file_size(path, error);
+      const auto time = std::filesystem::last_write_time(path, error);
+      if (error)
+        return {};
+      return std::to_string(size) + ":" + std::to_string(time.time_since_epoch().count());
+    }
+  return {};
+}
 
 const GmshModule& gmsh_module()
 {

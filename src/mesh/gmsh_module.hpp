@@ -64,6 +64,11 @@ inline constexpr int gmsh_module_abi = 2;
 /// The loaded module (next to the executable, else in the build tree); throws
 /// feticon::Error naming the files tried and why when it cannot be loaded.
 const GmshModule& gmsh_module();
+
+/// Size and modification time of the module gmsh_module() would load, without loading it;
+/// empty if there is none. The mesh cache's keys hold it: a rebuilt module (a changed mesher
+/// or reader) leaves the executable's build id as it was.
+std::string gmsh_module_stamp();
 } // namespace feticon::mesh
 
 /// The module's one exported symbol.

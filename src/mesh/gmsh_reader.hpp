@@ -19,6 +19,13 @@
 ///     order of the cell's face (mesh::cell_face), so its own orientation in the file does not
 ///     matter.
 ///   - 0D and 1D physical groups are node sets.
+///   - A file without a 3D physical group is a 2D model: its 2D physical groups are the bodies
+///     (3- and 6-node triangles, 4- and 8-node quadrangles at z = 0), its 1D groups edge sets
+///     (2- and 3-node lines, each an edge of exactly one cell, stored with the cell's nodes
+///     so that (x_1 - x_0) x e_z points out of the body) and node sets, its 0D groups node
+///     sets. Cells clockwise in the x-y plane (a surface whose normal is -z) are turned
+///     counter-clockwise. The formulation (plane strain, plane stress, axisymmetric) is not
+///     in the file: the problem file's mesh.formulation sets Mesh::planar.
 ///   - Every physical group needs a name (Physical Surface("load") = {...}), names are unique
 ///     over all dimensions (sets and bodies are looked up by name alone), and every group has
 ///     elements. 2D elements outside physical groups are ignored.
@@ -46,9 +53,10 @@ namespace feticon::mesh
 /// file comment).
 /// @param[in] path a `.msh` file (metres)
 /// @return the mesh: bodies from 3D groups, face sets and node sets from 2D groups, node sets
-///         from 0D/1D groups; cells have positive Jacobian determinant at their centres
+///         from 0D/1D groups (a 2D model: one dimension less); cells have positive Jacobian
+///         determinant at their centres
 /// @throws feticon::Error naming the file and the problem: missing, unreadable or corrupt file,
-///         no 3D physical group, unnamed, duplicate or empty groups, element types feticon does
+///         no 3D or 2D physical group, unnamed, duplicate or empty groups, element types feticon does
 ///         not know, a surface element that is not a boundary face of a cell of its type,
 ///         bodies sharing nodes, inverted or degenerate cells.
 /// @param[out] from_cache whether the mesh came from the mesh cache (may be null)

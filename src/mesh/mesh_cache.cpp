@@ -1,5 +1,7 @@
 #include "mesh/mesh_cache.hpp"
 
+#include "mesh/gmsh_module.hpp"
+
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
@@ -390,6 +392,7 @@ MeshCacheLocation mesh_cache_location()
     return location;
   location.build_id = executable_build_id();
   location.enabled = !location.build_id.empty();
+  location.build_id += " gmsh module " + gmsh_module_stamp();
   return location;
 }
 

@@ -8,8 +8,9 @@
 /// copy of the Mesh, so a hit gives the identical mesh, bit for bit.
 ///
 /// An entry is found by its key, the text of every input of the mesh, together with the build
-/// id of the running executable, so that a rebuilt feticon (whose mesher may have changed)
-/// never reads an older entry. The file stores the key and a checksum of its content and is
+/// id of the running executable and the size and time of the Gmsh module it would load, so
+/// that a rebuilt feticon or module (whose mesher or reader may have changed) never reads an
+/// older entry (a module rebuilt alone once served the meshes of the reader it replaced). The file stores the key and a checksum of its content and is
 /// written atomically (temporary file, rename): a truncated, corrupt or foreign file is a
 /// miss and is replaced, never an error. The folder is $FETICON_MESH_CACHE, else
 /// $XDG_CACHE_HOME/feticon/meshes, else ~/.cache/feticon/meshes; FETICON_MESH_CACHE=off turns
@@ -30,7 +31,9 @@ struct MeshCacheLocation
 {
   bool enabled = false;
   std::filesystem::path folder;
-  std::string build_id;                                   ///< of the running executable, part of every key
+  /// The running executable's build id and the Gmsh module's stamp (gmsh_module_stamp), part of
+  /// every key.
+  std::string build_id;
   std::uintmax_t limit_bytes = std::uintmax_t{256} << 20; ///< entries beyond it are pruned
 };
 MeshCacheLocation mesh_cache_location();

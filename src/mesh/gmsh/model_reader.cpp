@@ -36,12 +36,16 @@ std::optional<FaceKind> face_kind_of_gmsh_type(int type)
     return FaceKind::tri6;
   case 16:
     return FaceKind::quad8;
+  case 1:
+    return FaceKind::line2;
+  case 8:
+    return FaceKind::line3;
   default:
     return std::nullopt;
   }
 }
 
-constexpr std::array<std::string_view, 4> face_kind_names = {"tri3", "tri6", "quad4", "quad8"};
+constexpr std::array<std::string_view, 6> face_kind_names = {"tri3", "tri6", "quad4", "quad8", "line2", "line3"};
 
 struct PhysicalGroup
 {
@@ -118,41 +122,88 @@ std::vector<PhysicalGroup> read_groups(const std::string& where)
     gmsh::model::getEntitiesForPhysicalGroup(dim, tag, group.entities);
     groups.push_back(std::move(group));
   }
-  FETICON_CHECK(std::any_of(groups.begin(), groups.end(), [](const PhysicalGroup& g) { return g.dim == 3; }),
-                where << ": no 3D physical group; every body must be a Physical Volume(\"name\") "
-                         "meshed with tetrahedra, hexahedra or prisms");
+  FETICON_CHECK(std::any_of(groups.begin(), groups.end(), [](const PhysicalGroup& g) { return g.dim >= 2; }),
+                where << ": no 3D or 2D physical group; every body must be a Physical Volume(\"name\") "
+                         "meshed with tetrahedra, hexahedra or prisms (or, in a 2D model, a Physical "
+                         "Surface(\"name\") meshed with triangles or quadrangles)");
   return groups;
 }
 
-/// Volume entities holding elements must belong to exactly one 3D group (one body).
-void check_volume_entities(const std::vector<PhysicalGroup>& groups, const std::string& where)
+/// The model's dimension: 3 if it has a physical volume (the bodies) or a meshed volume, else 2
+/// (the bodies are its physical surfaces, its face sets the physical curves).
+int model_dimension(const std::vector<PhysicalGroup>& groups, const std::string& where)
 {
+  if (std::ranges::any_of(groups, [](const PhysicalGroup& g) { return g.dim == 3; }))
+    return 3;
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types, 3, -1);
+  FETICON_CHECK(types.empty(),
+                where << ": no 3D physical group, but volume elements; every body must be a Physical "
+                         "Volume(\"name\") meshed with tetrahedra, hexahedra or prisms");
+  return 2;
+}
+
+/// Entities of the model's dimension holding elements must belong to exactly one group of it
+/// (one body).
+void check_body_entities(const std::vector<PhysicalGroup>& groups, int dim, const std::string& where)
+{
+  const std::string entity_kind = dim == 3 ? "volume" : "surface";
   std::map<int, const PhysicalGroup*> body_of_entity;
   for (const PhysicalGroup& group : groups)
-    if (group.dim == 3)
+    if (group.dim == dim)
       for (const int entity : group.entities)
       {
         const auto [it, inserted] = body_of_entity.emplace(entity, &group);
         FETICON_CHECK(inserted,
-                      where << ": volume " << entity << " is in two physical volumes, '" << it->second->name
-                            << "' and '" << group.name << "'; a volume belongs to one body");
+                      where << ": " << entity_kind << " " << entity << " is in two " << group_kind(dim) << "s, '"
+                            << it->second->name << "' and '" << group.name << "'; a " << entity_kind
+                            << " belongs to one body");
       }
-  gmsh::vectorpair volumes;
-  gmsh::model::getEntities(volumes, 3);
-  for (const auto& [dim, entity] : volumes)
+  gmsh::vectorpair entities;
+  gmsh::model::getEntities(entities, dim);
+  for (const auto& [entity_dim, entity] : entities)
   {
     if (body_of_entity.contains(entity))
       continue;
     std::vector<int> types;
-    gmsh::model::mesh::getElementTypes(types, dim, entity);
+    gmsh::model::mesh::getElementTypes(types, entity_dim, entity);
     FETICON_CHECK(types.empty(),
-                  where << ": volume " << entity
-                        << " has elements but is in no physical volume; add it to a body "
-                           "(Physical Volume) or do not save it (Mesh.SaveAll = 0)");
+                  where << ": " << entity_kind << " " << entity << " has elements but is in no " << group_kind(dim)
+                        << "; add it to a body or do not save it (Mesh.SaveAll = 0)");
   }
 }
 
-/// Hexahedra of the 3D group `group` as Gmsh node tags, with their Gmsh element tags.
+/// Twice the signed area of the corner polygon of a 2D cell in the x-y plane (> 0:
+/// counter-clockwise).
+double planar_orientation(const Mesh& mesh, const std::vector<int32_t>& cell)
+{
+  const int n = cell.size() == 3 || cell.size() == 6 ? 3 : 4;
+  double area = 0;
+  for (int k = 0; k < n; ++k)
+  {
+    const auto a = mesh.nodes.row(cell[k]), b = mesh.nodes.row(cell[(k + 1) % n]);
+    area += a(0) * b(1) - b(0) * a(1);
+  }
+  return area;
+}
+
+/// A 2D cell clockwise in the x-y plane, counter-clockwise: corners c0, c_(n-1), ..., c1 and
+/// the edge nodes of the reversed edges (Gmsh orients a surface's cells by its normal, which
+/// need not be +z).
+void make_counter_clockwise(GmshCell& cell)
+{
+  const CellType& type = cell_type(cell.kind);
+  const int n = type.n_corners;
+  const std::array<std::size_t, 20> old = cell.tags;
+  for (int k = 1; k < n; ++k)
+    cell.tags[k] = old[n - k];
+  if (type.n_nodes > n) // edge node k joins corners k and k + 1
+    for (int k = 0; k < n; ++k)
+      cell.tags[n + k] = old[n + (n - 1 - k)];
+}
+
+/// The cells of the body group `group` (3D: a physical volume; 2D: a physical surface) as Gmsh
+/// node tags, with their Gmsh element tags.
 void read_body_cells(const PhysicalGroup& group, const std::string& where, std::vector<GmshCell>& cells,
                      std::vector<std::size_t>& element_tags)
 {
@@ -161,15 +212,18 @@ void read_body_cells(const PhysicalGroup& group, const std::string& where, std::
   {
     std::vector<int> types;
     std::vector<std::vector<std::size_t>> tags, nodes;
-    gmsh::model::mesh::getElements(types, tags, nodes, 3, entity);
+    gmsh::model::mesh::getElements(types, tags, nodes, group.dim, entity);
     for (std::size_t t = 0; t < types.size(); ++t)
     {
       const CellType* type = cell_type_of_gmsh_type(types[t]);
-      FETICON_CHECK(type,
-                    where << ": physical volume '" << group.name << "' holds " << tags[t].size() << " elements of type "
-                          << element_type_name(types[t])
-                          << "; feticon reads 4- and 10-node tetrahedra, 8- and 20-node hexahedra and 6-node prisms "
-                             "(for 20-node hexahedra set Mesh.SecondOrderIncomplete = 1)");
+      FETICON_CHECK(type && type->dimension == group.dim,
+                    where << ": " << group_kind(group.dim) << " '" << group.name << "' holds " << tags[t].size()
+                          << " elements of type " << element_type_name(types[t])
+                          << (group.dim == 3
+                                  ? "; feticon reads 4- and 10-node tetrahedra, 8- and 20-node hexahedra and 6-node "
+                                    "prisms (for 20-node hexahedra set Mesh.SecondOrderIncomplete = 1)"
+                                  : "; a 2D body is 3- or 6-node triangles and 4- or 8-node quadrangles (for 8-node "
+                                    "quadrangles set Mesh.SecondOrderIncomplete = 1)"));
       const std::size_t n = static_cast<std::size_t>(type->n_nodes);
       for (std::size_t e = 0; e < tags[t].size(); ++e)
       {
@@ -181,18 +235,19 @@ void read_body_cells(const PhysicalGroup& group, const std::string& where, std::
       }
     }
   }
-  FETICON_CHECK(cells.size() > n_before, where << ": physical volume '" << group.name << "' has no elements");
+  FETICON_CHECK(cells.size() > n_before,
+                where << ": " << group_kind(group.dim) << " '" << group.name << "' has no elements");
 }
 
-/// Bodies, nodes and cells from the 3D groups.
-/// @return the local node id of every Gmsh node tag used by a hexahedron
-std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGroup>& groups, const std::string& where,
-                                                    Mesh& mesh)
+/// Bodies, nodes and cells from the groups of the model's dimension `dim`.
+/// @return the local node id of every Gmsh node tag used by a cell
+std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGroup>& groups, int dim,
+                                                    const std::string& where, Mesh& mesh)
 {
   std::vector<GmshCell> gmsh_cells;
   std::vector<std::size_t> element_tags;
   for (const PhysicalGroup& group : groups)
-    if (group.dim == 3)
+    if (group.dim == dim)
     {
       read_body_cells(group, where, gmsh_cells, element_tags);
       mesh.body_names.push_back(group.name);
@@ -242,6 +297,12 @@ std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGr
     }
   FETICON_CHECK(std::all_of(found.begin(), found.end(), [](bool f) { return f; }),
                 where << ": cells use nodes that the file does not define (corrupt file?)");
+  if (dim == 2)
+    for (int32_t n = 0; n < mesh.n_nodes(); ++n)
+      FETICON_CHECK(mesh.nodes(n, 2) == 0,
+                    where << ": no 3D physical group, so a 2D model, whose cells lie in the "
+                             "plane z = 0; node "
+                          << n << " of its cells is at z = " << mesh.nodes(n, 2));
 
   mesh.cells.reserve(gmsh_cells.size(), gmsh_cells.size() * 8);
   std::vector<int32_t> cell, sorted;
@@ -259,6 +320,13 @@ std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGr
     std::sort(sorted.begin(), sorted.end());
     FETICON_CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end(),
                   where << ": " << name() << " repeats a node (degenerate)");
+    if (type.dimension == 2 && planar_orientation(mesh, cell) < 0)
+    {
+      make_counter_clockwise(gmsh_cells[c]);
+      cell.clear();
+      for (const std::size_t tag : gmsh_cells[c].nodes())
+        cell.push_back(local_id.at(tag));
+    }
     mesh.cells.add(type.kind, cell);
     // Distinct nodes at one place collapse an edge: the centre's Jacobian can stay positive,
     // but the cell is degenerate (its aspect ratio infinite).
@@ -280,8 +348,9 @@ std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGr
   return local_id;
 }
 
-/// Face sets (and node sets of the same names) from the 2D groups.
-void read_face_sets(const std::vector<PhysicalGroup>& groups, const std::string& where,
+/// Face sets (and node sets of the same names) from the groups one dimension below the
+/// model's `dim`: surfaces of a 3D model, curves (edges) of a 2D one.
+void read_face_sets(const std::vector<PhysicalGroup>& groups, int dim, const std::string& where,
                     const std::unordered_map<std::size_t, int32_t>& local_id, Mesh& mesh)
 {
   std::unordered_map<SortedFace, FaceOwner, SortedFaceHash> owners;
@@ -296,29 +365,31 @@ void read_face_sets(const std::vector<PhysicalGroup>& groups, const std::string&
     }
   }
 
+  const std::string kind_of_group = group_kind(dim - 1);
   for (const PhysicalGroup& group : groups)
   {
-    if (group.dim != 2)
+    if (group.dim != dim - 1)
       continue;
     std::vector<Face>& faces = mesh.face_sets[group.name];
     for (const int entity : group.entities)
     {
       std::vector<int> types;
       std::vector<std::vector<std::size_t>> tags, nodes;
-      gmsh::model::mesh::getElements(types, tags, nodes, 2, entity);
+      gmsh::model::mesh::getElements(types, tags, nodes, dim - 1, entity);
       for (std::size_t t = 0; t < types.size(); ++t)
       {
         const std::optional<FaceKind> kind = face_kind_of_gmsh_type(types[t]);
-        FETICON_CHECK(kind,
-                      where << ": physical surface '" << group.name << "' holds " << tags[t].size()
+        FETICON_CHECK(kind && is_line(*kind) == (dim == 2),
+                      where << ": " << kind_of_group << " '" << group.name << "' holds " << tags[t].size()
                             << " elements of type " << element_type_name(types[t])
-                            << "; faces of cells are 3- or 6-node triangles and 4- or 8-node quadrangles");
+                            << (dim == 3 ? "; faces of cells are 3- or 6-node triangles and 4- or 8-node quadrangles"
+                                         : "; edges of 2D cells are 2- or 3-node lines"));
         const auto n = static_cast<std::size_t>(face_nodes(*kind));
         for (std::size_t e = 0; e < tags[t].size(); ++e)
         {
           // The element's corners as a linear face of their own, for their key.
           Face corners;
-          corners.kind = face_corners(*kind) == 3 ? FaceKind::tri3 : FaceKind::quad4;
+          corners.kind = is_line(*kind) ? FaceKind::line2 : face_corners(*kind) == 3 ? FaceKind::tri3 : FaceKind::quad4;
           bool on_cells = true;
           for (int k = 0; k < face_corners(*kind); ++k)
           {
@@ -328,11 +399,11 @@ void read_face_sets(const std::vector<PhysicalGroup>& groups, const std::string&
           }
           const auto owner = on_cells ? owners.find(sorted_corners(corners)) : owners.end();
           const std::string element = std::string(face_kind_names[static_cast<size_t>(*kind)]) + " (Gmsh element " +
-              std::to_string(tags[t][e]) + ") of physical surface '" + group.name + "'";
+              std::to_string(tags[t][e]) + ") of " + kind_of_group + " '" + group.name + "'";
           FETICON_CHECK(owner != owners.end(),
-                        where << ": " << element
-                              << " is not a face of any cell of a body; the surface must "
-                                 "bound a physical volume and share its mesh");
+                        where << ": " << element << " is not a face of any cell of a body; the "
+                              << (dim == 3 ? "surface" : "curve") << " must bound a " << group_kind(dim)
+                              << " and share its mesh");
           FETICON_CHECK(owner->second.count == 1,
                         where << ": " << element
                               << " lies between two cells; face sets must be on the boundary of a body");
@@ -346,18 +417,18 @@ void read_face_sets(const std::vector<PhysicalGroup>& groups, const std::string&
         }
       }
     }
-    FETICON_CHECK(!faces.empty(), where << ": physical surface '" << group.name << "' has no elements");
+    FETICON_CHECK(!faces.empty(), where << ": " << kind_of_group << " '" << group.name << "' has no elements");
     mesh.add_node_set_from_faces(group.name, group.name);
   }
 }
 
-/// Node sets from the 0D and 1D groups.
-void read_node_sets(const std::vector<PhysicalGroup>& groups, const std::string& where,
+/// Node sets from the groups two or more dimensions below the model's `dim`.
+void read_node_sets(const std::vector<PhysicalGroup>& groups, int dim, const std::string& where,
                     const std::unordered_map<std::size_t, int32_t>& local_id, Mesh& mesh)
 {
   for (const PhysicalGroup& group : groups)
   {
-    if (group.dim > 1)
+    if (group.dim > dim - 2)
       continue;
     std::vector<std::size_t> tags;
     std::vector<double> coordinates;
@@ -388,11 +459,12 @@ std::string one_line(std::string text)
 Mesh read_open_model(const std::string& where)
 {
   const std::vector<PhysicalGroup> groups = read_groups(where);
-  check_volume_entities(groups, where);
+  const int dim = model_dimension(groups, where);
+  check_body_entities(groups, dim, where);
   Mesh mesh;
-  const std::unordered_map<std::size_t, int32_t> local_id = read_cells(groups, where, mesh);
-  read_face_sets(groups, where, local_id, mesh);
-  read_node_sets(groups, where, local_id, mesh);
+  const std::unordered_map<std::size_t, int32_t> local_id = read_cells(groups, dim, where, mesh);
+  read_face_sets(groups, dim, where, local_id, mesh);
+  read_node_sets(groups, dim, where, local_id, mesh);
   return mesh;
 }
 
