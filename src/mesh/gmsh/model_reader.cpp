@@ -239,6 +239,54 @@ void read_body_cells(const PhysicalGroup& group, const std::string& where, std::
                 where << ": " << group_kind(group.dim) << " '" << group.name << "' has no elements");
 }
 
+/// The cells, in feticon's node ids, after checks: no repeated node, no collapsed edge, a
+/// positive Jacobian at the centre (2D cells turned counter-clockwise first).
+void add_checked_cells(std::vector<GmshCell>& gmsh_cells, const std::vector<std::size_t>& element_tags,
+                       const std::unordered_map<std::size_t, int32_t>& local_id, const std::string& where, Mesh& mesh)
+{
+  mesh.cells.reserve(gmsh_cells.size(), gmsh_cells.size() * 8);
+  std::vector<int32_t> cell, sorted;
+  for (std::size_t c = 0; c < gmsh_cells.size(); ++c)
+  {
+    const CellType& type = cell_type(gmsh_cells[c].kind);
+    cell.clear();
+    for (const std::size_t tag : gmsh_cells[c].nodes())
+      cell.push_back(local_id.at(tag));
+    const auto name = [&] {
+      return std::string(type.name) + " (Gmsh element " + std::to_string(element_tags[c]) + ") of body '" +
+          mesh.body_names[mesh.cell_body[c]] + "'";
+    };
+    sorted = cell;
+    std::sort(sorted.begin(), sorted.end());
+    FETICON_CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end(),
+                  where << ": " << name() << " repeats a node (degenerate)");
+    if (type.dimension == 2 && planar_orientation(mesh, cell) < 0)
+    {
+      make_counter_clockwise(gmsh_cells[c]);
+      cell.clear();
+      for (const std::size_t tag : gmsh_cells[c].nodes())
+        cell.push_back(local_id.at(tag));
+    }
+    mesh.cells.add(type.kind, cell);
+    // Distinct nodes at one place collapse an edge: the centre's Jacobian can stay positive,
+    // but the cell is degenerate (its aspect ratio infinite).
+    double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+    for (const auto& e : type.edges)
+    {
+      const double length = (mesh.nodes.row(cell[e[0]]) - mesh.nodes.row(cell[e[1]])).norm();
+      shortest = std::min(shortest, length);
+      longest = std::max(longest, length);
+    }
+    FETICON_CHECK(shortest > 1e-9 * longest,
+                  where << ": " << name() << " has an edge of length " << shortest
+                        << " (coincident nodes; degenerate)");
+    const double det = centre_jacobian_determinant(mesh, static_cast<int32_t>(c));
+    FETICON_CHECK(det > 0,
+                  where << ": " << name() << " is inverted or flat (Jacobian determinant " << det
+                        << " at its centre); check the volume's orientation");
+  }
+}
+
 /// Bodies, nodes and cells from the groups of the model's dimension `dim`.
 /// @return the local node id of every Gmsh node tag used by a cell
 std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGroup>& groups, int dim,
@@ -304,47 +352,7 @@ std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGr
                              "plane z = 0; node "
                           << n << " of its cells is at z = " << mesh.nodes(n, 2));
 
-  mesh.cells.reserve(gmsh_cells.size(), gmsh_cells.size() * 8);
-  std::vector<int32_t> cell, sorted;
-  for (std::size_t c = 0; c < gmsh_cells.size(); ++c)
-  {
-    const CellType& type = cell_type(gmsh_cells[c].kind);
-    cell.clear();
-    for (const std::size_t tag : gmsh_cells[c].nodes())
-      cell.push_back(local_id.at(tag));
-    const auto name = [&] {
-      return std::string(type.name) + " (Gmsh element " + std::to_string(element_tags[c]) + ") of body '" +
-          mesh.body_names[mesh.cell_body[c]] + "'";
-    };
-    sorted = cell;
-    std::sort(sorted.begin(), sorted.end());
-    FETICON_CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end(),
-                  where << ": " << name() << " repeats a node (degenerate)");
-    if (type.dimension == 2 && planar_orientation(mesh, cell) < 0)
-    {
-      make_counter_clockwise(gmsh_cells[c]);
-      cell.clear();
-      for (const std::size_t tag : gmsh_cells[c].nodes())
-        cell.push_back(local_id.at(tag));
-    }
-    mesh.cells.add(type.kind, cell);
-    // Distinct nodes at one place collapse an edge: the centre's Jacobian can stay positive,
-    // but the cell is degenerate (its aspect ratio infinite).
-    double shortest = std::numeric_limits<double>::infinity(), longest = 0;
-    for (const auto& e : type.edges)
-    {
-      const double length = (mesh.nodes.row(cell[e[0]]) - mesh.nodes.row(cell[e[1]])).norm();
-      shortest = std::min(shortest, length);
-      longest = std::max(longest, length);
-    }
-    FETICON_CHECK(shortest > 1e-9 * longest,
-                  where << ": " << name() << " has an edge of length " << shortest
-                        << " (coincident nodes; degenerate)");
-    const double det = centre_jacobian_determinant(mesh, static_cast<int32_t>(c));
-    FETICON_CHECK(det > 0,
-                  where << ": " << name() << " is inverted or flat (Jacobian determinant " << det
-                        << " at its centre); check the volume's orientation");
-  }
+  add_checked_cells(gmsh_cells, element_tags, local_id, where, mesh);
   return local_id;
 }
 
