@@ -103,6 +103,13 @@ ExplicitBoundaryOperators::ExplicitBoundaryOperators(const SubdomainSystem& syst
       return;
     Local& local = _local[s - _first];
     local.boundary = schur.boundary(s);
+    if (local.boundary.empty()) // no dual row touches it (a body alone in its subdomain, no contact)
+    {
+      local.blocks.resize(0, 0);
+      local.schur_minus_K_plus.resize(0);
+      local.sigma = 1;
+      return;
+    }
     const la::Vector schur_diagonal = form_blocks(system.operators(s).K, system.operators(s).K_plus, local.boundary,
                                                   local.blocks, "subdomain " + std::to_string(s));
     const la::Vector K_plus_diagonal = local.blocks.diagonal();

@@ -25,6 +25,26 @@ std::vector<std::vector<int32_t>> corner_polygons(const CellType& type, std::spa
   }
   return out;
 }
+
+/// The corners' points without those that repeat the previous one (a collapsed edge: a quad
+/// used as a triangle, as decks do), so that the polygon's edges and angles are those of the
+/// shape the cell has, not a zero length and a zero angle.
+std::vector<Eigen::Vector3d> without_collapsed_edges(const Mesh& mesh, const std::vector<int32_t>& corners)
+{
+  std::vector<Eigen::Vector3d> points;
+  double perimeter = 0;
+  for (size_t k = 0; k < corners.size(); ++k)
+    perimeter += (mesh.nodes.row(corners[(k + 1) % corners.size()]) - mesh.nodes.row(corners[k])).norm();
+  for (size_t k = 0; k < corners.size(); ++k)
+  {
+    const Eigen::Vector3d x = mesh.nodes.row(corners[k]).transpose();
+    if (points.empty() || (x - points.back()).norm() > 1e-12 * perimeter)
+      points.push_back(x);
+  }
+  if (points.size() > 1 && (points.back() - points.front()).norm() <= 1e-12 * perimeter)
+    points.pop_back();
+  return points;
+}
 } // namespace
 
 MeshQuality mesh_quality(const Mesh& mesh, bool in_plane)
@@ -34,12 +54,13 @@ MeshQuality mesh_quality(const Mesh& mesh, bool in_plane)
   for (size_t c = 0; c < mesh.cells.size(); ++c)
   {
     double shortest = std::numeric_limits<double>::infinity(), longest = 0;
-    for (const std::vector<int32_t>& polygon : corner_polygons(cell_type(mesh.cells.kind(c)), mesh.cells[c], in_plane))
+    for (const std::vector<int32_t>& corners : corner_polygons(cell_type(mesh.cells.kind(c)), mesh.cells[c], in_plane))
     {
+      const std::vector<Eigen::Vector3d> polygon = without_collapsed_edges(mesh, corners);
       const auto m = static_cast<int>(polygon.size());
       for (int k = 0; k < m; ++k)
       {
-        auto at = [&](int j) { return Eigen::Vector3d(mesh.nodes.row(polygon[(k + j) % m])); };
+        auto at = [&](int j) { return polygon[(k + j) % m]; };
         const Eigen::Vector3d to_next = at(1) - at(0), to_previous = at(m - 1) - at(0);
         shortest = std::min(shortest, to_next.norm());
         longest = std::max(longest, to_next.norm());

@@ -10,7 +10,8 @@
 #   plane strain (thickness 0.1, x = 0 held along x): force p R t, settlement 2 H p (1 - nu^2) / E;
 # both to 1e-7 (the QP's tolerance; read from the VTU by tests/tools/read_vtu.py). Then bad
 # input, one line each: 2D cells without mesh.formulation, a formulation for 3D boxes, a
-# thickness in axisymmetry, an unknown formulation, a curve that bounds no body.
+# thickness in axisymmetry, an unknown formulation, a curve that bounds no body; bodies without
+# supports, loads or contact (each alone in its subdomain: no dual row).
 # Usage: gmsh_2d.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -115,6 +116,12 @@ printf '%s\n' "problem: custom" "mesh:" "  formulation: plane_strain" "  boxes:"
   "    - {name: b, origin: [0, 0, 0], lengths: [1, 1, 1], cells: [1, 1, 1]}" \
   "bodies:" "  b: {young: 2e11, poisson: 0.3}" >"$work/boxes.yaml"
 expect_error boxes_3d "needs a mesh of 2D cells" "$work/boxes.yaml"
+# Bodies, nothing else (fuzz seed 76, mutant 5631: a YAML document break cut the file there):
+# each body alone in its subdomain, no dual row at all; the explicit operators of a subdomain
+# without boundary crashed (SIGSEGV), now the rigid-body check says what is wrong.
+printf '%s\n' "problem: custom" "mesh: {file: blocks.msh, formulation: axisymmetric}" "bodies:" \
+  "  lower: {young: 2e11, poisson: 0.3}" "  upper: {young: 2e11, poisson: 0.3}" >"$work/floating.yaml"
+expect_error floating "do not suppress every rigid-body motion" "$work/floating.yaml"
 # The first line of "bottom" from node 1 to node 7, the diagonal of the first cell: no edge.
 sed 's/^\(.* 1 2 3 3 \)1 2$/\11 7/' "$work/blocks.msh" >"$work/diagonal.msh"
 grep -q " 1 2 3 3 1 7$" "$work/diagonal.msh"
