@@ -1,7 +1,6 @@
 #include "contact/mortar_constraints.hpp"
 #include "contact/contact_row_builder.hpp"
 
-#include "contact/mortar_edge_integration.hpp"
 #include "contact/mortar_face_integration.hpp"
 #include "contact/surface_search.hpp"
 
@@ -140,9 +139,8 @@ struct FaceSegments
 };
 
 /// The dual basis of a slave face and its segments with the candidate master faces (those
-/// sharing no node with it). Edges of 2D cells go through integrate_edge_segment; quad4 against
-/// quad4 through integrate_segment, the arithmetic of hex8 runs; any other pair through
-/// integrate_face_segment.
+/// sharing no node with it). quad4 against quad4 goes through integrate_segment, the arithmetic
+/// of hex8 runs; any other pair (edges of 2D cells included) through integrate_face_segment.
 FaceSegments integrate_slave_face(const mesh::Face& face, const FaceGeometry& slave,
                                   const std::vector<mesh::Face>& master_faces,
                                   const std::vector<FaceGeometry>& master_geometry, const SurfaceSearch& search,
@@ -155,16 +153,6 @@ FaceSegments integrate_slave_face(const mesh::Face& face, const FaceGeometry& sl
   search.candidates(box, candidates);
   std::optional<DualBasis> quad_dual;
   std::optional<FaceDualBasis> dual;
-  if (mesh::is_line(face.kind))
-  {
-    dual = face_dual_basis(slave);
-    out.nodal_area = dual->nodal_area;
-    for (const int32_t f : candidates)
-      if (!share_a_node(face, master_faces[f]))
-        if (std::optional<Eigen::MatrixXd> segment = integrate_edge_segment(slave, *dual, master_geometry[f], options))
-          out.segments.emplace_back(f, std::move(*segment));
-    return out;
-  }
   if (face.kind == mesh::FaceKind::quad4)
   {
     quad_dual = dual_basis(slave.quad());

@@ -1,5 +1,7 @@
 #include "contact/mortar_face_integration.hpp"
 
+#include "contact/mortar_edge_integration.hpp"
+
 #include "common/error.hpp"
 #include "fem/reference_face.hpp"
 
@@ -166,6 +168,8 @@ FaceDualBasis face_dual_basis(const FaceGeometry& slave)
 std::optional<Eigen::MatrixXd> integrate_face_segment(const FaceGeometry& slave, const FaceDualBasis& dual,
                                                       const FaceGeometry& master, const SegmentOptions& options)
 {
+  if (mesh::is_line(slave.kind))
+    return integrate_edge_segment(slave, dual, master, options);
   const FacePlane plane = face_plane(slave);
   if (!(-face_normal(master, reference_centre(master.kind)).dot(plane.normal) >= options.min_facing))
     return std::nullopt;

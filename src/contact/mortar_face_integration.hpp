@@ -70,6 +70,7 @@ FaceDualBasis face_dual_basis(const FaceGeometry& slave);
 
 /// @brief Mortar integrals int Phi_j N_a^m dA of the slave face (dual basis `dual`) against the
 /// master face: rows the slave face's nodes, columns the master face's (standard functions).
+/// An edge of a 2D cell goes to integrate_edge_segment (mortar_edge_integration.hpp).
 /// @return nothing if they do not overlap in the slave face's auxiliary plane, or the master
 /// face does not face the slave (SegmentOptions::min_facing).
 /// @throws feticon::Error if a slave sub-facet is not convex in the auxiliary plane.

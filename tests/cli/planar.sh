@@ -4,7 +4,8 @@
 #    held axially at y = 0 only) through a NODE TO SURFACE pair: the contact force over
 #    2 pi b h against Lame's interface pressure E delta (b^2 - a^2)(c^2 - b^2) / (2 b^3 (c^2 - a^2))
 #    = 4.6875e6 Pa within 0.5 %; on two MPI ranks the same force to 1e-8; the same pair as
-#    SURFACE TO SURFACE: dual mortar rows on the edges, within 0.5 % too;
+#    SURFACE TO SURFACE: dual mortar rows on the edges, within 0.5 % too, and the same force
+#    and MPRGP steps on 1 and 2 ranks;
 # 2. a plate in uniaxial tension by an edge pressure P3 (CPS4, thickness 0.01 m, and CPE4):
 #    u_y at the top = sigma L / E (plane stress) and (1 - nu^2) sigma L / E (plane strain, u_x
 #    free), to 1e-9 relative; the reaction at the bottom = sigma * width * thickness;
@@ -84,6 +85,18 @@ import json, sys
 one, two = (json.load(open(f))["contact"]["total_normal_force"] for f in sys.argv[1:])
 print(f"contact force: 1 rank {one:.10e} N, 2 ranks {two:.10e} N")
 assert abs(one - two) <= 1e-8 * abs(one), "2 ranks differ from 1"
+PY
+  # The mortar pair on 4 subdomains: one rank against two.
+  for ranks in 1 2; do
+    mpirun --oversubscribe -np "$ranks" "$feticon" run "$work/fit_mortar.inp" --output "$work/fit_mortar_$ranks" \
+      --set subdomains=4 >"$work/fit_mortar_$ranks.log" 2>&1 || { cat "$work/fit_mortar_$ranks.log"; exit 1; }
+  done
+  "$py" - "$work/fit_mortar_1/summary.json" "$work/fit_mortar_2/summary.json" <<'PY'
+import json, sys
+one, two = (json.load(open(f)) for f in sys.argv[1:])
+f1, f2 = (s["contact"]["total_normal_force"] for s in (one, two))
+print(f"mortar contact force: 1 rank {f1:.10e} N, 2 ranks {f2:.10e} N, MPRGP steps {one['qp']['iterations']} / {two['qp']['iterations']}")
+assert abs(f1 - f2) <= 1e-8 * abs(f1) and one["qp"]["iterations"] == two["qp"]["iterations"], "2 ranks differ from 1"
 PY
 fi
 

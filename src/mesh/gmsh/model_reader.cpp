@@ -175,13 +175,12 @@ void check_body_entities(const std::vector<PhysicalGroup>& groups, int dim, cons
 
 /// Twice the signed area of the corner polygon of a 2D cell in the x-y plane (> 0:
 /// counter-clockwise).
-double planar_orientation(const Mesh& mesh, const std::vector<int32_t>& cell)
+double planar_orientation(const Mesh& mesh, const std::vector<int32_t>& cell, int n_corners)
 {
-  const int n = cell.size() == 3 || cell.size() == 6 ? 3 : 4;
   double area = 0;
-  for (int k = 0; k < n; ++k)
+  for (int k = 0; k < n_corners; ++k)
   {
-    const auto a = mesh.nodes.row(cell[k]), b = mesh.nodes.row(cell[(k + 1) % n]);
+    const auto a = mesh.nodes.row(cell[k]), b = mesh.nodes.row(cell[(k + 1) % n_corners]);
     area += a(0) * b(1) - b(0) * a(1);
   }
   return area;
@@ -190,16 +189,15 @@ double planar_orientation(const Mesh& mesh, const std::vector<int32_t>& cell)
 /// A 2D cell clockwise in the x-y plane, counter-clockwise: corners c0, c_(n-1), ..., c1 and
 /// the edge nodes of the reversed edges (Gmsh orients a surface's cells by its normal, which
 /// need not be +z).
-void make_counter_clockwise(GmshCell& cell)
+void make_counter_clockwise(std::vector<int32_t>& cell, const CellType& type)
 {
-  const CellType& type = cell_type(cell.kind);
   const int n = type.n_corners;
-  const std::array<std::size_t, 20> old = cell.tags;
+  const std::vector<int32_t> old = cell;
   for (int k = 1; k < n; ++k)
-    cell.tags[k] = old[n - k];
+    cell[k] = old[n - k];
   if (type.n_nodes > n) // edge node k joins corners k and k + 1
     for (int k = 0; k < n; ++k)
-      cell.tags[n + k] = old[n + (n - 1 - k)];
+      cell[n + k] = old[n + (n - 1 - k)];
 }
 
 /// The cells of the body group `group` (3D: a physical volume; 2D: a physical surface) as Gmsh
@@ -241,7 +239,7 @@ void read_body_cells(const PhysicalGroup& group, const std::string& where, std::
 
 /// The cells, in feticon's node ids, after checks: no repeated node, no collapsed edge, a
 /// positive Jacobian at the centre (2D cells turned counter-clockwise first).
-void add_checked_cells(std::vector<GmshCell>& gmsh_cells, const std::vector<std::size_t>& element_tags,
+void add_checked_cells(const std::vector<GmshCell>& gmsh_cells, const std::vector<std::size_t>& element_tags,
                        const std::unordered_map<std::size_t, int32_t>& local_id, const std::string& where, Mesh& mesh)
 {
   mesh.cells.reserve(gmsh_cells.size(), gmsh_cells.size() * 8);
@@ -260,13 +258,8 @@ void add_checked_cells(std::vector<GmshCell>& gmsh_cells, const std::vector<std:
     std::sort(sorted.begin(), sorted.end());
     FETICON_CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end(),
                   where << ": " << name() << " repeats a node (degenerate)");
-    if (type.dimension == 2 && planar_orientation(mesh, cell) < 0)
-    {
-      make_counter_clockwise(gmsh_cells[c]);
-      cell.clear();
-      for (const std::size_t tag : gmsh_cells[c].nodes())
-        cell.push_back(local_id.at(tag));
-    }
+    if (type.dimension == 2 && planar_orientation(mesh, cell, type.n_corners) < 0)
+      make_counter_clockwise(cell, type);
     mesh.cells.add(type.kind, cell);
     // Distinct nodes at one place collapse an edge: the centre's Jacobian can stay positive,
     // but the cell is degenerate (its aspect ratio infinite).
