@@ -2,8 +2,11 @@
 
 #include "common/log.hpp"
 #include "contact/adjust.hpp"
+#include "contact/tie_rows.hpp"
 
+#include <chrono>
 #include <string>
+#include <vector>
 
 namespace feticon::app
 {
@@ -22,12 +25,20 @@ problems::MeshPrediction predict_mesh(const io::ProblemFile& file)
 
 namespace
 {
-/// The pairs' ADJUST applied (contact/adjust.hpp): the model CalculiX starts its first
-/// increment from.
+/// The pairs' ADJUST applied (contact/adjust.hpp) and the ties' rows made (contact/tie_rows.hpp,
+/// their ADJUST included): the model CalculiX starts its first increment from.
 fem::Problem adjusted(fem::Problem problem)
 {
   if (const int64_t moved = contact::adjust_slave_nodes(problem))
     log::info("contact ADJUST: " + std::to_string(moved) + " slave nodes moved onto their master surfaces");
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<contact::TieReport> ties = contact::tie_surfaces(problem);
+  const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+  for (const contact::TieReport& report : ties)
+    log::info(contact::describe(report));
+  if (!ties.empty())
+    log::info("ties: " + std::to_string(problem.tie_equations.size()) + " rows made in " +
+              std::to_string(took.count()) + " s");
   return problem;
 }
 } // namespace

@@ -290,7 +290,34 @@ MortarCoupling compute_mortar_coupling(const mesh::Mesh& mesh, const la::Vector&
       triplets.emplace_back(j, node, value);
   coupling.M.resize(n_slave, mesh.n_nodes());
   coupling.M.setFromTriplets(triplets.begin(), triplets.end());
+  coupling.edge_ends = quadratic_edge_ends(mesh, pair.slave, coupling.slave);
   return coupling;
+}
+
+std::optional<MortarRowWeights> mortar_row_weights(const MortarCoupling& coupling, la::Index j, double min_overlap)
+{
+  const double nodal_area = coupling.slave.area(j);
+  MortarRowWeights out;
+  double overlap = 0;
+  for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(coupling.M, j); it; ++it)
+    if (std::abs(it.value()) > negligible_coupling * nodal_area)
+    {
+      out.weights.emplace_back(static_cast<int32_t>(it.col()), it.value());
+      overlap += it.value();
+    }
+  if (!(overlap >= min_overlap * nodal_area))
+    return std::nullopt;
+  // An edge node's row is that of its transformed value x~_m = (x_m - alpha (x_c1 + x_c2)) /
+  // (1 - 2 alpha) (mortar_face_integration.hpp), scaled to a unit coefficient on x_m: the
+  // master weights times 1 - 2 alpha, its edge's corners alpha each (all summing to 1).
+  const std::array<int32_t, 2>& ends = coupling.edge_ends[j];
+  out.share = ends[0] >= 0 ? 1 - 2 * quadratic_dual_alpha : 1.0;
+  for (auto& [node, weight] : out.weights)
+    weight = weight / overlap * out.share;
+  if (ends[0] >= 0)
+    for (const int32_t corner : ends)
+      out.weights.emplace_back(corner, quadratic_dual_alpha);
+  return out;
 }
 
 ContactConstraints build_mortar_constraints(const mesh::Mesh& mesh, const la::Vector& u, const ContactPair& pair,
@@ -310,38 +337,21 @@ ContactConstraints build_mortar_constraints(const mesh::Mesh& mesh, const la::Ve
       std::ranges::any_of(mesh.face_set(pair.slave), [](const mesh::Face& face) { return is_quadratic(face.kind); });
   const std::vector<mesh::Face>& master_faces = mesh.face_set(pair.master);
   const std::unordered_map<int32_t, Eigen::Vector3d> master_normals = master_nodal_normals(mesh, u, master_faces);
-  const std::vector<std::array<int32_t, 2>> edge_ends = quadratic_edge_ends(mesh, pair.slave, coupling.slave);
   ContactRowBuilder rows;
-  CouplingRow weights;
   for (la::Index i = 0; i < closest.n_rows(); ++i)
   {
     const int32_t s = closest.slave_node[i];
     const int32_t j = coupling.slave.index_of(s);
-    const double nodal_area = coupling.slave.area(j);
-    weights.clear();
-    double overlap = 0;
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(coupling.M, j); it; ++it)
-      if (std::abs(it.value()) > negligible_coupling * nodal_area)
-      {
-        weights.emplace_back(static_cast<int32_t>(it.col()), it.value());
-        overlap += it.value();
-      }
-    if (!(overlap >= options.mortar_min_overlap * nodal_area))
+    const std::optional<MortarRowWeights> row = mortar_row_weights(coupling, j, options.mortar_min_overlap);
+    if (!row)
     {
       ++out.n_overhanging;
       continue;
     }
-    // An edge node's row is that of its transformed value x~_m = (x_m - alpha (x_c1 + x_c2)) /
-    // (1 - 2 alpha) (mortar_face_integration.hpp), scaled to a unit coefficient on x_m: the
-    // master weights times 1 - 2 alpha, its edge's corners alpha each (all summing to 1), and
-    // the area D~_m / (1 - 2 alpha), so that force / area is still the nodal pressure z_m.
-    const std::array<int32_t, 2>& ends = edge_ends[j];
-    const double share = ends[0] >= 0 ? 1 - 2 * quadratic_dual_alpha : 1.0;
-    for (auto& [node, weight] : weights)
-      weight = weight / overlap * share;
-    if (ends[0] >= 0)
-      for (const int32_t corner : ends)
-        weights.emplace_back(corner, quadratic_dual_alpha);
+    const auto& [weights, share] = *row;
+    // The area D~_m / (1 - 2 alpha) of an edge node, so that force / area is still the nodal
+    // pressure z_m.
+    const double nodal_area = coupling.slave.area(j);
     const Eigen::Vector3d n = row_normal(closest, i, master_faces, master_normals);
     Eigen::Vector3d master_point = Eigen::Vector3d::Zero();
     for (const auto& [node, weight] : weights)

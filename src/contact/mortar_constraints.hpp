@@ -69,7 +69,9 @@
 #include "la/types.hpp"
 #include "mesh/mesh.hpp"
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -103,7 +105,22 @@ struct MortarCoupling
   double search_distance = 0;
   /// (slave face, master face) pairs integrated with a nonzero intersection.
   int64_t n_segments = 0;
+  /// Per slave index: the corners at the ends of its edge if it is an edge node of a quadratic
+  /// slave face (tri6, quad8, line3), else {-1, -1}.
+  std::vector<std::array<int32_t, 2>> edge_ends;
 };
+
+/// The master side of slave node j's row (file comment, "Rows"): the nodes and weights w with
+/// sum w = 1 such that the row says x_j = sum w x (its transformed value's corners included).
+struct MortarRowWeights
+{
+  std::vector<std::pair<int32_t, double>> weights;
+  double share = 1; ///< of the master nodes: 1 - 2 alpha for an edge node of a quadratic face
+};
+
+/// @brief The weights of slave index j of `coupling` (file comment), or nothing if its overlap
+/// o_j is below min_overlap.
+std::optional<MortarRowWeights> mortar_row_weights(const MortarCoupling& coupling, la::Index j, double min_overlap);
 
 /// @brief D and M of `pair` at the displacement `u`.
 /// @param[in] search_distance candidate master faces are those within this distance of a slave

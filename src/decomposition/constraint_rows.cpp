@@ -156,10 +156,59 @@ std::vector<EquationRow> orthonormal_equation_rows(const Decomposition& decompos
   }
   return out;
 }
+
+/// Entries of a row over global DOFs split over the copies of each node, a / p on each of the
+/// p copies (build_equality_rows' comment).
+void split_over_copies(const Decomposition& decomposition, const std::vector<int64_t>& dofs,
+                       const std::vector<double>& values, std::vector<RowEntry>& entries)
+{
+  entries.clear();
+  for (size_t k = 0; k < dofs.size(); ++k)
+  {
+    const auto& copies = decomposition.copies(static_cast<int32_t>(dofs[k] / 3));
+    const int component = static_cast<int>(dofs[k] % 3);
+    const double value = values[k] / static_cast<double>(copies.size());
+    for (const NodeCopy& copy : copies)
+    {
+      const Subdomain& sub = decomposition.subdomain(copy.subdomain);
+      entries.push_back({copy.subdomain, sub.active_of_full[3 * copy.local_node + component], value});
+    }
+  }
+}
+
+/// The tie rows (build_equality_rows' comment), appended to `out` from id `first_id` on.
+void add_tie_rows(const Decomposition& decomposition, const fem::ConstrainedDofs& dirichlet,
+                  const std::vector<fem::LinearEquation>& ties, int64_t first_id, EqualityRows& out)
+{
+  const mesh::Mesh& mesh = decomposition.mesh();
+  std::vector<char> held(3 * static_cast<size_t>(mesh.n_nodes()), 0);
+  for (const int64_t dof : dirichlet.dofs)
+    held[dof] = 1;
+  std::vector<fem::LinearEquation> kept;
+  for (const fem::LinearEquation& tie : ties)
+    if (!held[3 * static_cast<size_t>(tie.terms.front().node) + tie.terms.front().component])
+      kept.push_back(tie);
+  std::vector<RowEntry> entries;
+  for (const fem::ReducedEquation& row : fem::reduce_equations(kept, 3 * static_cast<int64_t>(mesh.n_nodes()),
+                                                               dirichlet, decomposition.eliminated(), &mesh))
+  {
+    split_over_copies(decomposition, row.dofs, row.coefficients, entries);
+    double norm2 = 0;
+    for (const RowEntry& e : entries)
+      norm2 += e.value * e.value;
+    const double scale = 1 / std::sqrt(norm2);
+    for (RowEntry& e : entries)
+      e.value *= scale;
+    if (touches_owned(decomposition, entries))
+      out.rows.add_row(entries, row.rhs * scale, first_id + out.n_ties);
+    ++out.n_ties;
+  }
+}
 } // namespace
 
 EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::ConstrainedDofs& dirichlet,
-                                 const std::vector<fem::LinearEquation>& equations)
+                                 const std::vector<fem::LinearEquation>& equations,
+                                 const std::vector<fem::LinearEquation>& ties)
 {
   const mesh::Mesh& mesh = decomposition.mesh();
   // Prescribed value per global DOF (NaN where free).
@@ -216,22 +265,13 @@ EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::
   const int64_t first_equation_id = out.n_gluing + out.n_dirichlet;
   for (const EquationRow& row : orthonormal_equation_rows(decomposition, dirichlet, equations))
   {
-    entries.clear();
-    for (size_t k = 0; k < row.dofs.size(); ++k)
-    {
-      const auto& copies = decomposition.copies(static_cast<int32_t>(row.dofs[k] / 3));
-      const int component = static_cast<int>(row.dofs[k] % 3);
-      const double value = row.values[k] / static_cast<double>(copies.size());
-      for (const NodeCopy& copy : copies)
-      {
-        const Subdomain& sub = decomposition.subdomain(copy.subdomain);
-        entries.push_back({copy.subdomain, sub.active_of_full[3 * copy.local_node + component], value});
-      }
-    }
+    split_over_copies(decomposition, row.dofs, row.values, entries);
     if (touches_owned(decomposition, entries))
       out.rows.add_row(entries, row.c, first_equation_id + out.n_equations);
     ++out.n_equations;
   }
+  out.rows.set_n_orthonormal(first_equation_id + out.n_equations);
+  add_tie_rows(decomposition, dirichlet, ties, first_equation_id + out.n_equations, out);
   return out;
 }
 

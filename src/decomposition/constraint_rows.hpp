@@ -37,8 +37,14 @@ public:
   std::span<const RowEntry> row(int64_t i) const;
   const std::vector<double>& c() const { return _c; }
   la::Vector c_vector() const;
+  /// Rows with a global id below this are orthonormal among themselves (B B' = I on them:
+  /// gluing, Dirichlet and equation rows); the rest (ties, contact) are scaled by
+  /// dual::ConstraintScaling. 0 unless set.
+  int64_t n_orthonormal() const { return _n_orthonormal; }
+  void set_n_orthonormal(int64_t n) { _n_orthonormal = n; }
 
 private:
+  int64_t _n_orthonormal = 0;
   std::vector<int64_t> _offsets{0};
   std::vector<RowEntry> _entries;
   std::vector<double> _c;
@@ -62,8 +68,17 @@ private:
 /// equations, with c combined alike, is the same constraint). Row e of the result combines
 /// equations 1..e of its group, so a multiplier is no longer that of one equation.
 ///
-/// Ids: gluing rows in node order, then Dirichlet rows, then equation rows in equation order;
-/// only rows touching owned subdomains are kept (every rank builds every row, the same way).
+/// Tie rows (fem::Problem::tie_equations, contact/tie_rows.hpp) come last, a block of their own:
+/// reduced against the supports like the equations (a tie whose slave DOF this step holds is
+/// dropped: the support wins) and split over the copies alike, then each scaled to unit norm,
+/// not orthonormalized: every tie row has a slave DOF of its own, so they are independent, and
+/// the dense orthonormalization of a tied surface's rows (all linked through master nodes) would
+/// cost O(n m^2). B B' is then not I on them; dual::ConstraintScaling takes them into its block
+/// (ConstraintRows::n_orthonormal) as it does contact rows (ALGORITHMS.md section 10).
+///
+/// Ids: gluing rows in node order, then Dirichlet rows, then equation rows in equation order,
+/// then tie rows in their order; only rows touching owned subdomains are kept (every rank builds
+/// every row, the same way).
 /// @throws feticon::Error naming the equation if one has no free term or is linearly dependent
 ///         on the supports and the equations before it (fem/linear_equations.hpp).
 struct EqualityRows
@@ -72,10 +87,12 @@ struct EqualityRows
   int64_t n_gluing = 0; ///< global counts
   int64_t n_dirichlet = 0;
   int64_t n_equations = 0;
-  int64_t n_global() const { return n_gluing + n_dirichlet + n_equations; }
+  int64_t n_ties = 0;
+  int64_t n_global() const { return n_gluing + n_dirichlet + n_equations + n_ties; }
 };
 EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::ConstrainedDofs& dirichlet,
-                                 const std::vector<fem::LinearEquation>& equations = {});
+                                 const std::vector<fem::LinearEquation>& equations = {},
+                                 const std::vector<fem::LinearEquation>& ties = {});
 
 /// Converts rows over global mesh DOFs (3*node + component; `B_global` row-major, one row
 /// per constraint) to subdomain rows. A DOF shared by several subdomains is put on its

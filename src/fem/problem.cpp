@@ -91,6 +91,13 @@ bool Problem::has_plastic_body() const
   return std::ranges::any_of(materials, [](const Material& m) { return m.is_plastic(); });
 }
 
+std::vector<LinearEquation> Problem::all_equations() const
+{
+  std::vector<LinearEquation> out = equations;
+  out.insert(out.end(), tie_equations.begin(), tie_equations.end());
+  return out;
+}
+
 bool Problem::has_temperatures() const
 {
   return std::ranges::any_of(steps, [](const Step& s) { return !s.temperatures.empty(); });
@@ -173,6 +180,19 @@ void Problem::validate() const
                         std::isfinite(t.coefficient),
                     "a linear equation names node " << t.node << ", component " << t.component
                                                     << " out of range or a coefficient that is not finite");
+  }
+  for (const Tie& t : ties)
+  {
+    FETICON_CHECK(!mesh.face_set(t.slave).empty(), "tie " << t.name << ": slave surface '" << t.slave << "' is empty");
+    FETICON_CHECK(!mesh.face_set(t.master).empty(),
+                  "tie " << t.name << ": master surface '" << t.master << "' is empty");
+    FETICON_CHECK(t.slave != t.master,
+                  "tie " << t.name << ": slave and master are the same surface '" << t.slave << "'");
+    if (!t.slave_nodes.empty())
+      FETICON_CHECK(!mesh.node_set(t.slave_nodes).empty(),
+                    "tie " << t.name << ": slave node set '" << t.slave_nodes << "' is empty");
+    FETICON_CHECK(std::isfinite(t.position_tolerance) && t.position_tolerance >= 0,
+                  "tie " << t.name << ": position tolerance " << t.position_tolerance << " m must be >= 0");
   }
   for (size_t k = 0; k < contacts.size(); ++k)
     for (size_t j = 0; j < k; ++j)

@@ -48,6 +48,28 @@ struct ContactPairNames
   std::string adjust_nodes = {};
 };
 
+/// A tie (deck *TIE, or a contact pair whose law is PRESSURE-OVERCLOSURE=TIED; problem file
+/// `ties:`): every slave node within the position tolerance of the master surface moves with
+/// the master surface where it lies, u_s = sum_a w_a u_a in each component
+/// (contact/tie_rows.hpp builds the rows).
+struct Tie
+{
+  std::string name;
+  std::string slave;  ///< face set
+  std::string master; ///< face set
+  /// If not empty, a node set: only these nodes of the slave faces are tied (a deck's
+  /// node-based slave surface); their rows are node-to-segment.
+  std::string slave_nodes = {};
+  /// Slave nodes farther than this from the master surface stay untied (m); 0: 2.5 % of the
+  /// master faces' mean edge length (CalculiX's rule is 2.5 % of a typical element size).
+  double position_tolerance = 0;
+  /// Tied slave nodes moved onto the master surface first (CalculiX's default, ADJUST=YES).
+  bool adjust = true;
+  /// mortar: w_a = M_ja / D_j (the dual mortar weights, exact for a constant stress across
+  /// non-matching meshes); node_to_segment: w_a = N_a at the closest point (CalculiX's tie).
+  ContactFormulation formulation = ContactFormulation::mortar;
+};
+
 struct Problem
 {
   std::string name;
@@ -63,6 +85,12 @@ struct Problem
   std::vector<double> initial_temperatures;
   /// Any number of pairs, none included (a model held by supports, glued or tied only).
   std::vector<ContactPairNames> contacts;
+  std::vector<Tie> ties;
+  /// The ties' rows, made from `ties` and the mesh before a solve (contact::tie_surfaces): one
+  /// per tied slave DOF, its first term the slave DOF with coefficient 1, the only row where
+  /// that DOF comes first. A block of its own beside `equations`: independent by construction,
+  /// so FETI scales them row by row instead of orthonormalizing them.
+  std::vector<LinearEquation> tie_equations;
   /// Components fixed to zero on every node and eliminated (plane strain: {0,0,1}; every 2D
   /// model, mesh::Planar).
   std::array<bool, 3> eliminated{false, false, false};
@@ -73,6 +101,8 @@ struct Problem
   /// The DOFs step `step` prescribes, with the eliminated components, and the values of the
   /// supports whose amplitude is `amplitude` (0 for the others).
   ConstrainedDofs all_constrained_dofs(size_t step = 0, const std::string& amplitude = {}) const;
+  /// `equations` then `tie_equations`: what the direct solves eliminate.
+  std::vector<LinearEquation> all_equations() const;
   /// Some step gives temperatures (the thermal strain then enters the elements).
   bool has_temperatures() const;
   /// True if some body's material is plastic (Material::is_plastic).

@@ -319,6 +319,37 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
   }
 }
 
+/// Per tie: its two *SURFACEs (named T_ apart from the contact pairs' S_) and the *TIE. A tie's
+/// formulation is not written: CalculiX ties node to face, and feticon reads the *TIE of a
+/// face-based slave surface back as mortar.
+void write_ties(std::ostream& out, const fem::Problem& problem)
+{
+  if (problem.ties.empty())
+    return;
+  const mesh::Mesh& mesh = problem.mesh;
+  std::vector<std::vector<int32_t>> cells_of_node(mesh.n_nodes());
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    for (int32_t n : mesh.cells[c])
+      cells_of_node[n].push_back(c);
+  for (const fem::Tie& tie : problem.ties)
+  {
+    FETICON_CHECK(tie.slave_nodes.empty(),
+                  "calculix export: tie " << tie.name << " ties the nodes of set '" << tie.slave_nodes
+                                          << "' only, which a deck's *TIE cannot say");
+    for (const std::string& set : {tie.slave, tie.master})
+    {
+      out << "*SURFACE, NAME=" << deck_name("T_", set) << ", TYPE=ELEMENT\n";
+      for (const auto& [cell, f] : element_faces(mesh, set, cells_of_node))
+        out << cell + 1 << ", S" << f << '\n';
+    }
+    out << "*TIE, NAME=" << deck_name("TIE_", tie.name);
+    if (tie.position_tolerance > 0)
+      out << ", POSITION TOLERANCE=" << number(tie.position_tolerance);
+    out << (tie.adjust ? "" : ", ADJUST=NO") << '\n'
+        << deck_name("T_", tie.slave) << ", " << deck_name("T_", tie.master) << '\n';
+  }
+}
+
 /// The static *STEP with its increments (the step's own, else `options`'), *BOUNDARY (supports, plane strain) and *CLOAD (the
 /// external force, totals counted in `summary`).
 void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
@@ -411,6 +442,7 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   write_node_sets(out, mesh, node_sets);
   write_materials(out, problem);
   write_contact(out, problem, options, pairs);
+  write_ties(out, problem);
   const auto output_requests = [&] {
     out << "*NODE FILE\nU, RF\n";
     if (!pairs.empty())

@@ -145,6 +145,15 @@ struct DeckContactPair
   DeckPosition where;
 };
 
+/// *TIE (CalculiX: model data; one line "slave surface, master surface").
+struct DeckTie
+{
+  std::string name, slave, master;
+  double position_tolerance = 0; ///< POSITION TOLERANCE= (m); 0: the default rule (fem::Tie)
+  bool adjust = true;            ///< ADJUST=NO turns it off
+  DeckPosition where;
+};
+
 /// A load or prescribed value with the amplitude its keyword names (AMPLITUDE=; empty: the
 /// step's ramp).
 struct DeckValue
@@ -201,6 +210,9 @@ struct DeckData
   std::set<std::string> interactions;
   std::map<std::string, DeckFriction> frictions; ///< by interaction name
   std::vector<DeckContactPair> pairs;
+  std::vector<DeckTie> ties;
+  /// Interactions whose *SURFACE BEHAVIOR is PRESSURE-OVERCLOSURE=TIED: their pairs are ties.
+  std::set<std::string> tied_interactions;
   std::vector<fem::LinearEquation> equations;
 
   std::map<int32_t, double> initial_temperatures; ///< node -> *INITIAL CONDITIONS, TYPE=TEMPERATURE

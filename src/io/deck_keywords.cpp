@@ -58,7 +58,6 @@ const std::map<std::string, std::string> unsupported_keywords = {
     {"PART", "parts and assemblies (flatten the deck into one model)"},
     {"ASSEMBLY", "parts and assemblies (flatten the deck into one model)"},
     {"INSTANCE", "parts and assemblies (flatten the deck into one model)"},
-    {"TIE", "tied contact"},
     {"RIGID BODY", "rigid bodies"},
     {"COUPLING", "coupling constraints"},
     {"MPC", "nonlinear multi-point constraints (linear ones: *EQUATION)"},
@@ -256,6 +255,7 @@ private:
         {"SURFACE BEHAVIOR", &KeywordReader::surface_behavior},
         {"FRICTION", &KeywordReader::friction},
         {"CONTACT PAIR", &KeywordReader::contact_pair},
+        {"TIE", &KeywordReader::tie},
         {"STEP", &KeywordReader::step},
         {"STATIC", &KeywordReader::static_procedure},
         {"END STEP", &KeywordReader::end_step},
@@ -996,7 +996,15 @@ private:
     if (law == "HARD")
       return; // what feticon enforces
     if (law == "TIED")
-      throw Error(where() + ": PRESSURE-OVERCLOSURE=TIED (tied contact) is not implemented by feticon");
+    {
+      // CalculiX's tied contact is a penalty law in both directions (these lines: its
+      // stiffness); feticon ties the surfaces exactly, as a *TIE.
+      _data.tied_interactions.insert(_interaction);
+      if (!parameters.empty())
+        _data.warn("interaction " + _interaction + ": PRESSURE-OVERCLOSURE=TIED (" + parameters + ", " +
+                   _keyword.where.str() + ") is a penalty tie; feticon ties the surfaces exactly");
+      return;
+    }
     if (law != "LINEAR" && law != "EXPONENTIAL" && law != "TABULAR")
       throw Error(where() + ": PRESSURE-OVERCLOSURE=" + law + " is not a law feticon knows");
     _data.warn("interaction " + _interaction + ": PRESSURE-OVERCLOSURE=" + law + " (" + parameters + ", " +
@@ -1036,7 +1044,9 @@ private:
     if (!_tokens.next_data(line))
       throw Error(where() + " needs a data line: friction coefficient mu [, stick slope]");
     friction.coefficient = real(line, 0, "friction coefficient mu");
-    if (friction.coefficient < 0 || friction.coefficient > largest_friction_coefficient)
+    // A tied interaction sticks whatever its *FRICTION says (CalculiX decks write mu = 1e30).
+    const bool tied = _data.tied_interactions.count(_interaction) > 0;
+    if (!tied && (friction.coefficient < 0 || friction.coefficient > largest_friction_coefficient))
       fail_at(line.at(0), "friction coefficient " + text(line.fields[0]) + " is outside 0 to 100");
     if (line.fields.size() > 2)
       fail_at(line.at(2),
@@ -1055,10 +1065,11 @@ private:
     for (const char* p : {"LAGRANGE", "SLIP TOLERANCE", "ELASTIC SLIP"})
       if (_keyword.has(p))
         _data.warn(where() + ": " + p + " is not used; feticon enforces the stick exactly");
-    if (!slope.empty())
+    if (!slope.empty() && !tied)
       _data.warn("interaction " + _interaction + ": the stick slope " + slope + " of *FRICTION (" +
                  _keyword.where.str() + ") is not used; feticon enforces the stick exactly (no elastic slip)");
-    _data.frictions[_interaction] = friction;
+    if (!tied)
+      _data.frictions[_interaction] = friction;
   }
 
   void contact_pair()
@@ -1102,6 +1113,44 @@ private:
     }
     if (!any)
       throw Error(where() + " needs a data line: slave surface, master surface");
+  }
+
+  /// *TIE (model data): NAME, POSITION TOLERANCE, ADJUST=YES|NO and one line "slave, master";
+  /// cyclic symmetry and multistage ties are other constraints, refused.
+  void tie()
+  {
+    for (const char* other : {"CYCLIC SYMMETRY", "MULTISTAGE"})
+      if (_keyword.has(other))
+        throw Error(where() + ": " + other + " ties are not implemented by feticon (cyclic symmetry)");
+    known_parameters({"NAME", "POSITION TOLERANCE", "ADJUST"});
+    if (_in_step)
+      throw Error(where() + " belongs to the model data, before the first *STEP");
+    DeckTie tie;
+    tie.name = required("NAME");
+    tie.where = _keyword.where;
+    if (const std::string* tolerance = _keyword.value("POSITION TOLERANCE"))
+    {
+      const std::optional<double> value = parse_deck_real(*tolerance);
+      if (!value || !std::isfinite(*value) || *value < 0)
+        throw Error(where() + ": POSITION TOLERANCE=" + *tolerance + " must be a distance >= 0");
+      tie.position_tolerance = *value;
+    }
+    if (const std::string* adjust = _keyword.value("ADJUST"))
+    {
+      if (*adjust != "YES" && *adjust != "NO")
+        throw Error(where() + ": ADJUST=" + *adjust + " must be YES or NO");
+      tie.adjust = *adjust == "YES";
+    }
+    DeckDataLine line;
+    if (!_tokens.next_data(line))
+      throw Error(where() + " needs a data line: slave surface, master surface");
+    if (line.fields.size() != 2 || line.fields[0].empty() || line.fields[1].empty())
+      fail_at(line.where, "a tie line is: slave surface, master surface");
+    tie.slave = name_of(line.fields[0]);
+    tie.master = name_of(line.fields[1]);
+    if (_tokens.next_data(line))
+      fail_at(line.where, "a *TIE has one line (slave surface, master surface); write one *TIE per pair of surfaces");
+    _data.ties.push_back(std::move(tie));
   }
 
   // ---- steps ----------------------------------------------------------------------------

@@ -113,6 +113,7 @@ public:
     bodies_and_materials();
     sets_and_surfaces();
     contact_pairs();
+    ties();
     load_stages();
     initial_temperatures();
     amplitudes();
@@ -428,23 +429,52 @@ private:
       FETICON_CHECK(pair.slave != pair.master, at << ": slave and master are the same surface '" << pair.slave << "'");
       FETICON_CHECK(!_d.surfaces.at(pair.master).node_based,
                     at << ": master surface '" << pair.master << "' must be made of element faces (TYPE=ELEMENT)");
+      const std::string slave_nodes = _restricted_surfaces.count(pair.slave) ? "slave_nodes_" + pair.slave : "";
+      const fem::ContactFormulation formulation =
+          pair.node_to_surface ? fem::ContactFormulation::node_to_segment : fem::ContactFormulation::mortar;
+      used.insert(pair.interaction);
+      if (_d.tied_interactions.count(pair.interaction))
+      {
+        // A tied pair moves no node (a pair's ADJUST is a distance or a set; a tie's a flag).
+        _p.ties.push_back({pair.interaction, pair.slave, pair.master, slave_nodes, 0, false,
+                           slave_nodes.empty() ? formulation : fem::ContactFormulation::node_to_segment});
+        continue;
+      }
       fem::ContactInteraction interaction{pair.interaction,
                                           {},
                                           pair.node_to_surface ? fem::ContactFormulation::node_to_segment
                                                                : fem::ContactFormulation::mortar};
       if (const auto it = _d.frictions.find(pair.interaction); it != _d.frictions.end() && it->second.coefficient > 0)
         interaction.friction = {fem::FrictionModel::coulomb, it->second.coefficient, 0};
-      used.insert(pair.interaction);
       FETICON_CHECK(pair.adjust_set.empty() || _p.mesh.node_sets.count(pair.adjust_set),
                     at << ": ADJUST=" << pair.adjust_set << " names no node set (nor a distance)");
-      _p.contacts.push_back({pair.slave, pair.master,
-                             _restricted_surfaces.count(pair.slave) ? "slave_nodes_" + pair.slave : "",
-                             std::move(interaction), pair.adjust, pair.adjust_set});
+      _p.contacts.push_back(
+          {pair.slave, pair.master, slave_nodes, std::move(interaction), pair.adjust, pair.adjust_set});
     }
     for (const auto& [interaction, friction] : _d.frictions)
       if (!used.count(interaction))
         _d.warn("*FRICTION of interaction " + interaction + " (" + friction.where.str() +
                 ") is not used: no *CONTACT PAIR takes that interaction");
+  }
+
+  /// Every *TIE: a node-based slave surface is tied node to segment (CalculiX's way), a surface
+  /// of element faces by mortar.
+  void ties()
+  {
+    for (const DeckTie& tie : _d.ties)
+    {
+      const std::string at = tie.where.str() + ": *TIE " + tie.name;
+      for (const std::string& s : {tie.slave, tie.master})
+        FETICON_CHECK(_d.surfaces.count(s), at << ": no *SURFACE '" << s << "' is defined");
+      FETICON_CHECK(tie.slave != tie.master, at << ": slave and master are the same surface '" << tie.slave << "'");
+      FETICON_CHECK(!_d.surfaces.at(tie.master).node_based,
+                    at << ": master surface '" << tie.master << "' must be made of element faces (TYPE=ELEMENT)");
+      const bool node_based = _d.surfaces.at(tie.slave).node_based;
+      _p.ties.push_back({tie.name, tie.slave, tie.master,
+                         _restricted_surfaces.count(tie.slave) ? "slave_nodes_" + tie.slave : "",
+                         tie.position_tolerance, tie.adjust,
+                         node_based ? fem::ContactFormulation::node_to_segment : fem::ContactFormulation::mortar});
+    }
   }
 
   /// Supports as node sets grouped by their prescribed components and values.

@@ -19,9 +19,9 @@ namespace feticon::io
 {
 namespace
 {
-const std::set<std::string> structured_keys = {"mesh",       "bodies",       "plane_strain",        "supports",
-                                               "loads",      "temperatures", "initial_temperature", "steps",
-                                               "amplitudes", "contact"};
+const std::set<std::string> structured_keys = {
+    "mesh",  "bodies",     "plane_strain", "supports", "loads", "temperatures", "initial_temperature",
+    "steps", "amplitudes", "contact",      "ties"};
 
 /// A body's `plastic:` table [[von Mises stress, equivalent plastic strain], ...] (the rows of
 /// CalculiX's *PLASTIC).
@@ -245,6 +245,27 @@ fem::Friction pair_friction(const YAML::Node& pair, const std::string& key, cons
 
 /// A body load of the `loads` list: {gravity: [gx, gy, gz]} or {centrifugal: {omega, point,
 /// axis}}, on one body (`body: NAME`) or on all.
+/// A pair's or tie's `formulation:` (node_to_segment or mortar).
+fem::ContactFormulation formulation_of(const YAML::Node& node, const std::string& key, const ProblemReader& r)
+{
+  const std::string formulation = r.text(node, key);
+  FETICON_CHECK(formulation == "mortar" || formulation == "node_to_segment",
+                r.source << ": " << key << " = '" << formulation << "' must be one of: node_to_segment, mortar");
+  return formulation == "mortar" ? fem::ContactFormulation::mortar : fem::ContactFormulation::node_to_segment;
+}
+
+/// Slave and master of list entry `key` are two face sets of the mesh.
+void check_surfaces(const std::string& slave, const std::string& master, const std::string& key, const mesh::Mesh& mesh,
+                    const ProblemReader& r)
+{
+  for (const std::string& s : {slave, master})
+    FETICON_CHECK(mesh.face_sets.count(s),
+                  r.source << ": " << key << ": no face set '" << s
+                           << "' in the mesh; it has: " << names_of(mesh.face_sets));
+  FETICON_CHECK(slave != master,
+                r.source << ": " << key << ": slave and master are the same face set '" << slave << "'");
+}
+
 std::vector<fem::ContactPairNames> contact_pairs(const YAML::Node& contact, const mesh::Mesh& mesh,
                                                  const ProblemReader& r)
 {
@@ -264,22 +285,43 @@ std::vector<fem::ContactPairNames> contact_pairs(const YAML::Node& contact, cons
                     r.source << ": " << key << ".adjust = " << pair.adjust << " m must be >= 0");
     }
     if (c["formulation"])
-    {
-      const std::string formulation = r.text(c["formulation"], key + ".formulation");
-      FETICON_CHECK(formulation == "mortar" || formulation == "node_to_segment",
-                    r.source << ": " << key << ".formulation = '" << formulation
-                             << "' must be one of: node_to_segment, mortar");
-      pair.interaction.formulation =
-          formulation == "mortar" ? fem::ContactFormulation::mortar : fem::ContactFormulation::node_to_segment;
-    }
-    for (const std::string& s : {pair.slave, pair.master})
-      FETICON_CHECK(mesh.face_sets.count(s),
-                    r.source << ": " << key << ": no face set '" << s
-                             << "' in the mesh; it has: " << names_of(mesh.face_sets));
-    FETICON_CHECK(pair.slave != pair.master,
-                  r.source << ": " << key << ": slave and master are the same face set '" << pair.slave
-                           << "'; a contact pair needs two surfaces");
+      pair.interaction.formulation = formulation_of(c["formulation"], key + ".formulation", r);
+    check_surfaces(pair.slave, pair.master, key, mesh, r);
     out.push_back(pair);
+  }
+  return out;
+}
+
+/// The `ties:` list: slave and master face sets, and optionally name, position_tolerance (m),
+/// adjust (true / false) and formulation (fem::Tie).
+std::vector<fem::Tie> ties(const YAML::Node& list, const mesh::Mesh& mesh, const ProblemReader& r)
+{
+  FETICON_CHECK(list.IsSequence(), r.source << ": ties must be a list of ties");
+  std::vector<fem::Tie> out;
+  for (size_t i = 0; i < list.size(); ++i)
+  {
+    const YAML::Node t = list[i];
+    const std::string key = "ties." + std::to_string(i);
+    r.only_keys(t, key, {"name", "slave", "master", "position_tolerance", "adjust", "formulation"});
+    fem::Tie tie{t["name"] ? r.text(t["name"], key + ".name") : std::to_string(i), r.text(t["slave"], key + ".slave"),
+                 r.text(t["master"], key + ".master")};
+    if (t["position_tolerance"])
+    {
+      tie.position_tolerance = r.number(t["position_tolerance"], key + ".position_tolerance");
+      FETICON_CHECK(std::isfinite(tie.position_tolerance) && tie.position_tolerance > 0,
+                    r.source << ": " << key << ".position_tolerance = " << tie.position_tolerance << " m must be > 0");
+    }
+    if (t["adjust"])
+    {
+      const std::string adjust = r.text(t["adjust"], key + ".adjust");
+      FETICON_CHECK(adjust == "true" || adjust == "false",
+                    r.source << ": " << key << ".adjust = '" << adjust << "' must be true or false");
+      tie.adjust = adjust == "true";
+    }
+    if (t["formulation"])
+      tie.formulation = formulation_of(t["formulation"], key + ".formulation", r);
+    check_surfaces(tie.slave, tie.master, key, mesh, r);
+    out.push_back(tie);
   }
   return out;
 }
@@ -423,7 +465,7 @@ ProblemFile with_overrides(ProblemFile file, const std::vector<std::string>& ove
     file.deck = std::filesystem::absolute(file.folder / file.root["mesh"]["file"].Scalar());
     file.deck_outline = deck_outline(file.deck);
     for (const char* section : {"bodies", "plane_strain", "supports", "loads", "temperatures", "initial_temperature",
-                                "steps", "amplitudes", "contact"})
+                                "steps", "amplitudes", "contact", "ties"})
       FETICON_CHECK(!file.root[section],
                     file.source << ": section '" << section << "' is not read when mesh.file is "
                                 << "an input deck: the deck gives the whole model");
@@ -575,6 +617,8 @@ fem::Problem build_custom_problem(const ProblemFile& file)
   read_steps(root, r, p);
   if (root["contact"])
     p.contacts = contact_pairs(root["contact"], p.mesh, r);
+  if (root["ties"])
+    p.ties = ties(root["ties"], p.mesh, r);
   p.validate();
   return p;
 }

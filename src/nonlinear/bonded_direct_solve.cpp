@@ -72,7 +72,7 @@ ReducedBondedSystem reduce_bonded(const fem::Problem& problem, const SolverSetti
   la::Vector f_pen;
   penalty_terms(rows, bonded, eps, K_pen, f_pen);
   const la::SparseMatrix A = K + K_pen;
-  fem::ConstraintElimination elimination(n, problem.all_constrained_dofs(), problem.equations, &problem.mesh);
+  fem::ConstraintElimination elimination(n, problem.all_constrained_dofs(), problem.all_equations(), &problem.mesh);
   BondedSystem system{elimination.reduce_matrix(A), elimination.reduce_rhs(A, problem.external_force() + f_pen), {}};
   out.assembly_seconds = seconds_since(start);
   return {std::move(system), std::move(elimination), std::move(bonded), std::move(eps)};

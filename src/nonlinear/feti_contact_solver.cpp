@@ -92,10 +92,11 @@ std::vector<char> schur_boundary_dofs(const fem::Problem& problem, const fem::Co
   for (int64_t dof : dirichlet.dofs)
     if (!problem.eliminated[dof % 3]) // plane strain's u_z = 0 is no row
       boundary[dof] = 1;
-  for (const fem::LinearEquation& equation : problem.equations) // rows on every copy of these nodes
-    for (const auto& term : equation.terms)
-      if (!problem.eliminated[term.component])
-        boundary[3 * static_cast<size_t>(term.node) + term.component] = 1;
+  for (const auto* block : {&problem.equations, &problem.tie_equations}) // rows on every copy of these nodes
+    for (const fem::LinearEquation& equation : *block)
+      for (const auto& term : equation.terms)
+        if (!problem.eliminated[term.component])
+          boundary[3 * static_cast<size_t>(term.node) + term.component] = 1;
   const auto flag_node = [&](int64_t node) {
     for (int c = 0; c < 3; ++c)
       if (!problem.eliminated[c])
@@ -662,7 +663,7 @@ void FetiContactSolve::begin_load_step(int step, double)
   _f_step = _history.combine(step, _f_terms_stacked);
   _f_step_norm = _history.external_force_norm(step);
   _equality = std::make_unique<decomposition::EqualityRows>(
-      decomposition::build_equality_rows(*_decomp, target, _problem.equations));
+      decomposition::build_equality_rows(*_decomp, target, _problem.equations, _problem.tie_equations));
   _n_equality = _equality->n_global();
   _forcing = !_linear && _settings.forcing > 0;
   _previous_residual = std::numeric_limits<double>::infinity();

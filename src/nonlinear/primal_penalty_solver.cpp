@@ -160,7 +160,7 @@ void PrimalPenaltySolve::solve_linear(const contact::ContactConstraints& rows, c
   const la::SparseMatrix A = _K + _K_pen;
   // Supports and linear equations are eliminated exactly; the penalty is contact's alone
   // (fem/constraint_elimination.hpp).
-  const fem::ConstraintElimination elim(_n, _target, _problem.equations, &_problem.mesh);
+  const fem::ConstraintElimination elim(_n, _target, _problem.all_equations(), &_problem.mesh);
   factor.factorize(elim.reduce_matrix(A), "the penalized stiffness");
   const la::Vector u_new = elim.expand(factor.solve(elim.reduce_rhs(A, _f_step + _f_pen)));
   it.displacement_change = (u_new - _u).norm() / std::max(u_new.norm(), 1e-300);
@@ -173,10 +173,10 @@ void PrimalPenaltySolve::solve_increment(const contact::ContactConstraints& rows
 {
   // This step's supports (and the linear equations' dependent DOFs) first; then every
   // correction is zero there.
-  fem::ConstraintElimination(_n, _target, _problem.equations, &_problem.mesh).impose(_u);
+  fem::ConstraintElimination(_n, _target, _problem.all_equations(), &_problem.mesh).impose(_u);
   fem::ConstrainedDofs homogeneous = _target;
   homogeneous.values.setZero();
-  const fem::ConstraintElimination elim(_n, homogeneous, _problem.equations, &_problem.mesh);
+  const fem::ConstraintElimination elim(_n, homogeneous, _problem.all_equations(), &_problem.mesh);
   // Active set of the linearized step made consistent first (rows violated after the
   // step, B du - c > 0), as in the linear case: taking it from the current gaps alone
   // lets nodes at the contact edge flip at every Newton iteration.

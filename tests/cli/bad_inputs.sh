@@ -190,6 +190,28 @@ expect "deck friction rough" "ROUGH (rough friction" -- "$(friction_variant '*FR
 expect "deck friction table" "takes one data line" -- "$(friction_variant '*FRICTION\n0.3\n0.2' friction_table)"
 expect "deck friction negative stick slope" "stick slope -1e6 must be positive" -- \
   "$(friction_variant '*FRICTION\n0.3, -1e6' friction_slope)"
+# *TIE (issue 63, item 3) on the two tied blocks of tests/cli/deck_tie.sh.
+tie_variant() { sed "$1" "$src_dir/tests/data/calculix/tie_blocks.inp" > "$work/$2.inp"; echo "$work/$2.inp"; }
+expect "deck tie cyclic symmetry" "CYCLIC SYMMETRY ties are not implemented" -- \
+  "$(tie_variant 's/^\*TIE, NAME=T1/&, CYCLIC SYMMETRY/' tie_cyclic)"
+expect "deck tie undefined surface" "no \*SURFACE 'SNOWHERE'" -- \
+  "$(tie_variant 's/^Supper_bottom, Slower_top/Snowhere, Slower_top/' tie_undefined)"
+expect "deck tie beyond tolerance" "no node of slave surface 'SFAR' lies within the position tolerance" -- \
+  "$(tie_variant 's/^\*TIE, NAME=T1/*SURFACE, NAME=Sfar\nEupper_top, S2\n&/;s/^Supper_bottom, Slower_top/Sfar, Slower_top/' tie_far)"
+expect "deck tie negative tolerance" "POSITION TOLERANCE=-1 must be a distance" -- \
+  "$(tie_variant 's/POSITION TOLERANCE=0.01/POSITION TOLERANCE=-1/' tie_negative)"
+expect "deck tie two lines" "a \*TIE has one line" -- \
+  "$(tie_variant 's/^Supper_bottom, Slower_top/&\nSupper_bottom, Slower_top/' tie_two_lines)"
+expect "deck tie in a step" "belongs to the model data" -- \
+  "$(tie_variant '/^\*TIE/,/^Supper_bottom/d;s/^\*STATIC/&\n*TIE, NAME=T1\nSupper_bottom, Slower_top/' tie_in_step)"
+expect "deck tie same surface" "slave and master are the same surface" -- \
+  "$(tie_variant 's/^Supper_bottom, Slower_top/Slower_top, Slower_top/' tie_same)"
+expect "tie unknown key" "unknown key 'tolerance' in ties.0" -- \
+  "$(variant 's/^contact:/ties:\n  - {slave: punch_ymin, master: base_ymax, tolerance: 1}\ncontact:/' tie_key)"
+expect "tie negative tolerance" "ties.0.position_tolerance = -1 m must be > 0" -- \
+  "$(variant 's/^contact:/ties:\n  - {slave: punch_ymin, master: base_ymax, position_tolerance: -1}\ncontact:/' tie_tolerance)"
+expect "tie unknown face set" "ties.0: no face set 'nowhere'" -- \
+  "$(variant 's/^contact:/ties:\n  - {slave: nowhere, master: base_ymax}\ncontact:/' tie_set)"
 # Body loads (issue 65, item 5): *DLOAD GRAV / CENTRIF and *DENSITY.
 grav_variant() { deck_variant "s/^\*CLOAD/*DLOAD\n$1\n*CLOAD/;$2" "$3"; }
 expect "deck gravity without density" "GRAV: body .* has no density" -- \

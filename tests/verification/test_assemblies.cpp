@@ -1,8 +1,9 @@
 /// Assemblies (issue 63): several contact pairs with a body slave in one and master in another,
 /// and models without any contact pair, through the FETI contact solver.
 
+#include "stacked_bodies.hpp"
+
 #include "fem/stress.hpp"
-#include "mesh/box.hpp"
 #include "nonlinear/contact_pressure.hpp"
 #include "nonlinear/feti_contact_solver.hpp"
 
@@ -17,39 +18,7 @@ using namespace feticon;
 
 namespace
 {
-constexpr double young = 2e11;
-
-/// Unit cubes stacked along z, body k on [k, k + 1] with cells[k] cells along each axis (so
-/// neighbours' contact faces do not match), held by symmetry planes x = 0 and y = 0 and the
-/// bottom z = 0, pressed by `pressure` (dead, on the reference top face); contact pair k: the
-/// bottom of body k + 1 (slave) on the top of body k (master).
-fem::Problem stacked_cubes(const std::vector<int>& cells, double pressure)
-{
-  fem::Problem p;
-  p.name = "stacked cubes";
-  for (size_t k = 0; k < cells.size(); ++k)
-  {
-    mesh::BoxParameters box;
-    box.origin = Eigen::Vector3d(0, 0, static_cast<double>(k));
-    box.nx = box.ny = box.nz = cells[k];
-    box.body_name = "body" + std::to_string(k);
-    const std::string prefix = k == 0 ? "" : box.body_name + "_";
-    if (k == 0)
-      p.mesh = mesh::generate_box(box);
-    else
-      mesh::append_mesh(p.mesh, mesh::generate_box(box), prefix);
-    p.steps.front().dirichlet.push_back({prefix + "xmin", {0.0, std::nullopt, std::nullopt}});
-    p.steps.front().dirichlet.push_back({prefix + "ymin", {std::nullopt, 0.0, std::nullopt}});
-    if (k > 0)
-      p.contacts.push_back({prefix + "zmin", (k == 1 ? std::string() : "body" + std::to_string(k - 1) + "_") + "zmax"});
-  }
-  p.steps.front().dirichlet.push_back({"zmin", {std::nullopt, std::nullopt, 0.0}});
-  const std::string top = cells.size() == 1 ? "zmax" : "body" + std::to_string(cells.size() - 1) + "_zmax";
-  p.steps.front().tractions = {{top, Eigen::Vector3d(0, 0, -pressure)}};
-  p.materials.assign(cells.size(), fem::Material{young, 0.3});
-  p.validate();
-  return p;
-}
+constexpr double young = test::stack_young;
 
 nonlinear::SolverSettings exact_settings(fem::Kinematics kinematics)
 {
@@ -86,7 +55,7 @@ double settlement_error(const fem::Problem& p, const la::Vector& u, const std::f
 TEST(Assemblies, ThreeBodyStackWithTwoPairsIsUniaxialStress)
 {
   const double p = 1e8;
-  const fem::Problem problem = stacked_cubes({3, 4, 2}, p);
+  const fem::Problem problem = test::stacked_cubes({3, 4, 2}, -p);
   ASSERT_EQ(problem.contacts.size(), 2u);
   TimerTable timers;
   const nonlinear::ContactSolution solution =
@@ -127,7 +96,7 @@ TEST(Assemblies, ThreeBodyStackWithTwoPairsIsUniaxialStress)
 TEST(Assemblies, PairsWithTheirOwnFormulationGiveTheSameStack)
 {
   const double p = 1e8;
-  fem::Problem problem = stacked_cubes({3, 4, 4}, p);
+  fem::Problem problem = test::stacked_cubes({3, 4, 4}, -p);
   problem.contacts[1].interaction.formulation = fem::ContactFormulation::node_to_segment;
   TimerTable timers;
   const nonlinear::ContactSolution solution =
@@ -150,7 +119,7 @@ TEST(Assemblies, ModelWithoutContactRunsWithTheSameSolver)
   {
     const bool large = kinematics == fem::Kinematics::total_lagrangian;
     const double p = large ? 4e9 : 1e8; // 2 % strain with large displacements
-    const fem::Problem problem = stacked_cubes({3}, p);
+    const fem::Problem problem = test::stacked_cubes({3}, -p);
     ASSERT_TRUE(problem.contacts.empty());
     TimerTable timers;
     const nonlinear::ContactSolution solution =

@@ -12,6 +12,7 @@
 /// interference pressure as in test_planar_solids.cpp.
 
 #include "linear_solve.hpp"
+#include "stacked_bodies.hpp"
 #include "mesh/rectangle.hpp"
 #include "nonlinear/contact_pressure.hpp"
 
@@ -28,47 +29,8 @@ using namespace feticon;
 
 namespace planar_mortar
 {
-constexpr double young = 2e11, poisson = 0.3, pressure = 1e7, width = 0.5, height = 0.4; ///< SI
-
-/// Block [0, width] x [-height, 0] of n x n cells under block [0, width] x [0, height] of
-/// (n + 2) x (n + 1): non-matching at y = 0, the upper block's bottom the slave surface.
-fem::Problem stacked_blocks(mesh::CellKind kind, mesh::PlanarKind planar, int n)
-{
-  fem::Problem p;
-  p.name = "planar patch";
-  p.eliminated = {false, false, true};
-  const mesh::Planar formulation{planar, 0.1};
-  p.mesh = mesh::generate_rectangle({.origin = {0, -height},
-                                     .lengths = {width, height},
-                                     .nx = n,
-                                     .ny = n,
-                                     .kind = kind,
-                                     .planar = formulation,
-                                     .body_name = "lower"});
-  mesh::append_mesh(p.mesh,
-                    mesh::generate_rectangle({.origin = {0, 0},
-                                              .lengths = {width, height},
-                                              .nx = n + 2,
-                                              .ny = n + 1,
-                                              .kind = kind,
-                                              .planar = formulation,
-                                              .body_name = "upper"}),
-                    "upper_");
-  p.materials = {fem::Material{young, poisson}, fem::Material{young, poisson}};
-  fem::Step step;
-  step.dirichlet.push_back({"ymin", {std::nullopt, 0.0, std::nullopt}});
-  if (planar != mesh::PlanarKind::axisymmetric) // on the axis u_r = 0 by itself
-  {
-    step.dirichlet.push_back({"xmin", {0.0, std::nullopt, std::nullopt}});
-    step.dirichlet.push_back({"upper_xmin", {0.0, std::nullopt, std::nullopt}});
-  }
-  step.pressures.push_back({"upper_ymax", pressure});
-  p.steps = {step};
-  p.contacts.push_back({"upper_ymin", "ymax"});
-  p.contacts[0].interaction.formulation = fem::ContactFormulation::mortar;
-  p.validate();
-  return p;
-}
+/// SI; the blocks of test::stacked_blocks
+constexpr double young = test::stack_young, poisson = test::stack_poisson, pressure = 1e7, width = 0.5, height = 0.4;
 
 } // namespace planar_mortar
 
@@ -82,7 +44,7 @@ TEST(PlanarMortar, NonMatchingBlocksPassTheContactPatchTest)
     for (const mesh::CellKind kind : mesh::planar_cell_kinds)
       for (const int subdomains : {1, 3})
       {
-        const fem::Problem problem = stacked_blocks(kind, planar, 3);
+        const fem::Problem problem = test::stacked_blocks(kind, planar, 3, pressure);
         const nonlinear::ContactSolution s = test::solve_linear(problem, subdomains, 1e-11);
         ASSERT_TRUE(s.converged) << s.reason;
         ASSERT_EQ(s.constraints.formulation, contact::ContactFormulation::mortar);
