@@ -270,7 +270,6 @@ EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::
       out.rows.add_row(entries, row.c, first_equation_id + out.n_equations);
     ++out.n_equations;
   }
-  out.rows.set_n_orthonormal(first_equation_id + out.n_equations);
   add_tie_rows(decomposition, dirichlet, ties, first_equation_id + out.n_equations, out);
   return out;
 }

@@ -37,14 +37,8 @@ public:
   std::span<const RowEntry> row(int64_t i) const;
   const std::vector<double>& c() const { return _c; }
   la::Vector c_vector() const;
-  /// Rows with a global id below this are orthonormal among themselves (B B' = I on them:
-  /// gluing, Dirichlet and equation rows); the rest (ties, contact) are scaled by
-  /// dual::ConstraintScaling. 0 unless set.
-  int64_t n_orthonormal() const { return _n_orthonormal; }
-  void set_n_orthonormal(int64_t n) { _n_orthonormal = n; }
 
 private:
-  int64_t _n_orthonormal = 0;
   std::vector<int64_t> _offsets{0};
   std::vector<RowEntry> _entries;
   std::vector<double> _c;
@@ -73,8 +67,8 @@ private:
 /// dropped: the support wins) and split over the copies alike, then each scaled to unit norm,
 /// not orthonormalized: every tie row has a slave DOF of its own, so they are independent, and
 /// the dense orthonormalization of a tied surface's rows (all linked through master nodes) would
-/// cost O(n m^2). B B' is then not I on them; dual::ConstraintScaling takes them into its block
-/// (ConstraintRows::n_orthonormal) as it does contact rows (ALGORITHMS.md section 10).
+/// cost O(n m^2) (ALGORITHMS.md section 10). B B' is then near I on them, not equal: the
+/// preconditioner's scaling takes it as I (dual/constraint_scaling.hpp says why).
 ///
 /// Ids: gluing rows in node order, then Dirichlet rows, then equation rows in equation order,
 /// then tie rows in their order; only rows touching owned subdomains are kept (every rank builds

@@ -30,12 +30,13 @@ double largest_eigenvalue_of_inverse(const Eigen::SimplicialLLT<la::SparseMatrix
 }
 } // namespace
 
-ConstraintScaling::ConstraintScaling(const FetiOperators& feti, const std::vector<char>& held) : _feti(feti)
+ConstraintScaling::ConstraintScaling(const FetiOperators& feti, int64_t n_equality, const std::vector<char>& held)
+    : _feti(feti)
 {
-  const auto is_scaled = [n = feti.n_orthonormal()](int64_t id) { return id >= n; };
+  const auto is_contact = [n_equality](int64_t id) { return id >= n_equality; };
   std::vector<int64_t> local_keys;
   std::vector<double> local_values;
-  for (const FetiOperators::GramEntry& e : feti.gram_entries(is_scaled))
+  for (const FetiOperators::GramEntry& e : feti.gram_entries(is_contact))
   {
     local_keys.insert(local_keys.end(), {e.row, e.col, e.subdomain});
     local_values.push_back(e.value);
@@ -72,10 +73,10 @@ ConstraintScaling::ConstraintScaling(const FetiOperators& feti, const std::vecto
   for (const size_t k : order)
     if (!is_held(keys[3 * k]) && !is_held(keys[3 * k + 1]))
       triplets.emplace_back(position(keys[3 * k]), position(keys[3 * k + 1]), values[k]);
-  // Entries between orthonormal rows are not among the gathered ones: B B' = I there; held
-  // rows are the identity.
+  // Equality-equality entries are not among the gathered ones: B_E B_E' = I; held rows are
+  // the identity.
   for (const int64_t id : _ids)
-    if (!is_scaled(id) || is_held(id))
+    if (!is_contact(id) || is_held(id))
       triplets.emplace_back(position(id), position(id), 1.0);
   const auto n = static_cast<la::Index>(_ids.size());
   la::SparseMatrix block(n, n);

@@ -10,8 +10,13 @@
 /// smallest eigenvalue of M F on such rows falls to about 0.1 and keeps falling as the
 /// contact zone gets more subdomains (docs/distributed.md, weak scaling).
 ///
-/// B B' differs from I only on the block C of the contact and tie rows and the equality rows
-/// that share a degree of freedom with one. That block, a few rows per contact row, is assembled
+/// B B' differs from I only on the block C of the contact rows and the equality rows that
+/// share a degree of freedom with one, and on the tie rows (decomposition/constraint_rows.hpp),
+/// which are left out of C: each is of unit norm and they are nearly orthogonal, and their
+/// block is large and fills in. Measured on a tie of 101 200 rows (two 1 x 1 x 0.05 plates of
+/// 150^2 and 183^2 hex8 cells, 340k DOFs, 32 subdomains; docs/contact.md, "Ties"): with the tie
+/// rows in C, 59 MPRGP steps in 19.2 s (a block of 108k rows, 22M nonzeros in its factor,
+/// whose solve cost five times an F product a step); with Y = I on them, 100 steps in 5.8 s. That block, a few rows per contact row, is assembled
 /// from the subdomain products B_s B_s', replicated on every rank like G G' and factorized
 /// once per dual problem; Y is the identity elsewhere.
 
@@ -28,14 +33,13 @@ public:
   /// dependent. Measured: 4.6 on hertz3d with friction, 2.5e6 with a nearly repeated row.
   static constexpr double max_amplification = 1e3;
 
-  /// The rows from feti.n_orthonormal() on (ties, contact) and those they share a DOF with
-  /// form the block C; below it B B' = I. If the block is singular or nearly so (dependent
-  /// rows; max_amplification), Y falls back to the identity with a warning and factorized()
-  /// is false.
+  /// @param n_equality rows with a global id below it are equality rows (B_E B_E' = I).
+  ///        If the block is singular or nearly so (dependent rows; max_amplification), Y
+  ///        falls back to the identity with a warning and factorized() is false.
   /// @param held owned rows (by dual index) on which Y is the identity, apart from the rest:
   ///        friction rows that supports hold (FrictionRows::held; fixed at 0 in the QP), which
   ///        nearly repeat support rows and would make the block nearly singular. Empty: none.
-  explicit ConstraintScaling(const FetiOperators& feti, const std::vector<char>& held = {});
+  ConstraintScaling(const FetiOperators& feti, int64_t n_equality, const std::vector<char>& held = {});
 
   /// Rows of the block C over all ranks (0: Y = I, nothing to scale).
   int64_t block_size() const { return static_cast<int64_t>(_ids.size()); }

@@ -151,8 +151,9 @@ ContactQp::ContactQp(const FetiOperators& feti, const la::Vector& c, const la::V
   const la::Vector d = feti.apply_B(feti.apply_K_plus(f_stacked)) - c;
   _b = _projector.apply_P(_scale * (d - feti.apply_F(_lambda_tilde)));
   if (options.preconditioner != DualPreconditioner::none)
-    _timed_preconditioner.emplace(_preconditioner.emplace(
-        feti, _projector, options, _norm.value, options.method == DualMethod::smalbe ? 0.0 : options.rho, held_rows()));
+    _timed_preconditioner.emplace(_preconditioner.emplace(feti, _projector, options, _norm.value, n_equality,
+                                                          options.method == DualMethod::smalbe ? 0.0 : options.rho,
+                                                          held_rows()));
 }
 
 la::Vector ContactQp::mu(const la::Vector& lambda) const

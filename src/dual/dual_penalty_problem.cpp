@@ -42,13 +42,13 @@ private:
 /// at every change of the active set, and the step at which that run met the QP's rtol. r has
 /// entries from a hash of the row id, so the estimate is the same on any number of ranks.
 void measure_solution_face(const FetiOperators& feti, const CoarseProjector& projector, const FOperator& F,
-                           const DualPenaltyOptions& options, double s, double rho, const std::vector<char>& free,
-                           const std::vector<char>& held, qp::QpCounters& out)
+                           const DualPenaltyOptions& options, double s, int64_t n_equality, double rho,
+                           const std::vector<char>& free, const std::vector<char>& held, qp::QpCounters& out)
 {
   const ProjectedOperator H(F, projector, rho);
   std::optional<DualPreconditionerOperator> M;
   if (options.preconditioner != DualPreconditioner::none)
-    M.emplace(feti, projector, options, s, rho, held);
+    M.emplace(feti, projector, options, s, n_equality, rho, held);
   const FaceRestriction face(free);
   la::Vector r = la::Vector::Zero(feti.n_dual());
   for (la::Index i = 0; i < r.size(); ++i)
@@ -249,7 +249,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, 
       ? sliding_message
       : unheld_body_message(feti, qp.rhs(), qp.load_norm(), out.active_contacts, options.rtol);
   if (options.spectrum_steps > 0)
-    measure_solution_face(feti, qp.projector(), qp.scaled_F(), options, qp.pfp_norm(),
+    measure_solution_face(feti, qp.projector(), qp.scaled_F(), options, qp.pfp_norm(), n_equality,
                           smalbe_method ? smalbe_report.final_rho : options.rho, active, qp.held_rows(), out.report);
   PrimalSolution primal = qp.recover(lambda, active, unheld);
   out.u = std::move(primal.u);

@@ -5,12 +5,12 @@
 namespace feticon::dual
 {
 DualPreconditionerOperator::DualPreconditionerOperator(const FetiOperators& feti, const CoarseProjector& projector,
-                                                       const DualPenaltyOptions& options, double s, double rho,
-                                                       const std::vector<char>& held)
+                                                       const DualPenaltyOptions& options, double s, int64_t n_equality,
+                                                       double rho, const std::vector<char>& held)
     : _feti(feti), _projector(projector), _options(options), _s(s), _rho(rho)
 {
   if (options.constraint_scaling)
-    _scaling.emplace(feti, held);
+    _scaling.emplace(feti, n_equality, held);
   FETICON_CHECK(options.preconditioner != DualPreconditioner::dirichlet || options.schur,
                 "the Dirichlet preconditioner needs the subdomain Schur complements");
 }

@@ -18,7 +18,7 @@ public:
   /// @param s the scale of F^ = F / s (||PFP||)
   /// @param held friction rows that supports hold (ConstraintScaling)
   DualPreconditionerOperator(const FetiOperators& feti, const CoarseProjector& projector,
-                             const DualPenaltyOptions& options, double s, double rho,
+                             const DualPenaltyOptions& options, double s, int64_t n_equality, double rho,
                              const std::vector<char>& held = {});
   la::Index size() const override { return _feti.n_dual(); }
   const la::VectorSpace* space() const override { return &_feti.space(); }

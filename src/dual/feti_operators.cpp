@@ -11,7 +11,7 @@
 namespace feticon::dual
 {
 FetiOperators::FetiOperators(const decomposition::SubdomainSystem& system, const decomposition::ConstraintRows& rows)
-    : _system(system), _layout(system.decomposition(), rows), _n_orthonormal(rows.n_orthonormal()),
+    : _system(system), _layout(system.decomposition(), rows),
       // A substitution costs its factor's nonzeros: counted in DOFs, the 3D subdomains (about
       // five times the nonzeros per DOF of plane strain) would run serially where threads pay
       // (docs/measurements.md).

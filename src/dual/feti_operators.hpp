@@ -47,9 +47,6 @@ public:
   /// Reductions over dual vectors (blocks: the rows owned by one subdomain).
   const la::VectorSpace& space() const { return _layout.space(); }
   const par::Communicator& comm() const { return _layout.comm(); }
-  /// Rows with a global id below this have B B' = I among themselves
-  /// (decomposition::ConstraintRows::n_orthonormal).
-  int64_t n_orthonormal() const { return _n_orthonormal; }
 
   int64_t n_primal() const { return _system.decomposition().n_primal(); }
   int64_t n_kernel() const { return _system.n_kernel(); }
@@ -121,7 +118,6 @@ private:
 
   const decomposition::SubdomainSystem& _system;
   DualLayout _layout;
-  int64_t _n_orthonormal = 0;
   /// Per owned subdomain (indexed s - first owned): B_s (its rows: the layout's
   /// rows_of_subdomain) and B_s R_s.
   std::vector<la::SparseMatrix> _B;

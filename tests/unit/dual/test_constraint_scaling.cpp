@@ -74,7 +74,7 @@ std::unique_ptr<Setup> make_setup(int extra, double near_copy = 0)
 TEST(ConstraintScaling, InvertsBBtWithContactRows)
 {
   const auto s = make_setup(4);
-  const dual::ConstraintScaling Y(*s->feti);
+  const dual::ConstraintScaling Y(*s->feti, s->n_equality);
   ASSERT_TRUE(Y.factorized());
   // The 4 extra rows and the gluing rows of the interface nodes they touch.
   EXPECT_GT(Y.block_size(), 4);
@@ -90,7 +90,7 @@ TEST(ConstraintScaling, InvertsBBtWithContactRows)
 TEST(ConstraintScaling, IsTheIdentityForOrthonormalEqualityRows)
 {
   const auto s = make_setup(0);
-  const dual::ConstraintScaling Y(*s->feti);
+  const dual::ConstraintScaling Y(*s->feti, s->n_equality);
   EXPECT_EQ(Y.block_size(), 0);
   const la::Vector v = la::Vector::Random(s->feti->n_dual());
   EXPECT_LT((s->feti->apply_B(s->feti->apply_Bt(v)) - v).norm(), 1e-12 * v.norm());
@@ -104,14 +104,14 @@ TEST(ConstraintScaling, IsTheIdentityForOrthonormalEqualityRows)
 TEST(ConstraintScaling, FallsBackToTheIdentityForNearlyDependentRows)
 {
   const auto nearly = make_setup(2, 1e-3);
-  const dual::ConstraintScaling Y(*nearly->feti);
+  const dual::ConstraintScaling Y(*nearly->feti, nearly->n_equality);
   EXPECT_FALSE(Y.factorized());
   EXPECT_EQ(Y.block_size(), 0);
   const la::Vector v = la::Vector::Random(nearly->feti->n_dual());
   EXPECT_EQ(Y.apply(v), v);
 
   const auto apart = make_setup(2, 0.5);
-  const dual::ConstraintScaling Z(*apart->feti);
+  const dual::ConstraintScaling Z(*apart->feti, apart->n_equality);
   EXPECT_TRUE(Z.factorized());
   EXPECT_GT(Z.block_size(), 3);
 }
