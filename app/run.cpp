@@ -330,7 +330,9 @@ void summarize_contact(RunContext& run, const nonlinear::ContactSolution& soluti
   double peak = 0, area = 0;
   for (int32_t p = 0; p < static_cast<int32_t>(problem.contacts.size()); ++p)
   {
-    const fem::ContactInteraction interaction = run.solver.interaction(problem.contacts[p]);
+    // The interaction of the last step, whose answer this is (a *CHANGE FRICTION may have
+    // changed it).
+    const fem::ContactInteraction interaction = run.solver.interaction(problem, p, problem.steps.size() - 1);
     const auto mine = nonlinear::slave_pressure_by_x(problem, solution, run.solver.kinematics, interaction.friction, p);
     int64_t pair_active = 0;
     for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)

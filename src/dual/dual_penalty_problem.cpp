@@ -196,8 +196,9 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, 
   qp::MprgpOptions mprgp = mprgp_options(options);
   const bool smalbe_method = options.method == DualMethod::smalbe;
   qp::SmalbeReport smalbe_report;
-  // MPRGP for bounds; MPGP where 3D friction adds discs.
-  const bool discs = !qp.constraints().discs.empty();
+  // MPRGP for bounds; MPGP where 3D friction adds discs, on every rank if any rank has one
+  // (the two solvers' collectives differ: a rank owning no disc row must run MPGP too).
+  const bool discs = feti.comm().max(qp.constraints().discs.empty() ? 0.0 : 1.0) > 0;
   const auto inner_solver = [discs](const la::LinearOperator& H,
                                     const qp::MprgpOptions& o) -> std::unique_ptr<qp::QpSolver> {
     if (discs)

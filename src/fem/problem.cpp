@@ -260,6 +260,12 @@ void Problem::validate_step(size_t step) const
     for (const int32_t pair : s.removed_contacts)
       FETICON_CHECK(pair >= 0 && pair < std::ssize(contacts),
                     "the step removes contact pair " << pair << ", the problem has " << contacts.size());
+    for (const auto& [pair, f] : s.changed_friction)
+      FETICON_CHECK(pair >= 0 && pair < std::ssize(contacts) && std::isfinite(f.coefficient) && f.coefficient >= 0 &&
+                        std::isfinite(f.slip_bound) && f.slip_bound >= 0,
+                    "the step changes the friction of contact pair "
+                        << pair << " (of " << contacts.size() << ") to coefficient " << f.coefficient
+                        << " and slip bound " << f.slip_bound << "; both must be finite and >= 0");
     for (const auto& t : s.temperatures)
     {
       FETICON_CHECK(t.node >= 0 && t.node < mesh.n_nodes(), "a temperature names node " << t.node << ", out of range");

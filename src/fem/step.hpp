@@ -9,6 +9,7 @@
 /// AMPLITUDE=STEP); one with an amplitude is its value times a(t). fem::LoadHistory evaluates
 /// them at every increment.
 
+#include "fem/contact_interaction.hpp"
 #include "fem/body_loads.hpp"
 #include "fem/dirichlet.hpp"
 
@@ -75,6 +76,10 @@ struct Step
   /// Contact pairs (indices into Problem::contacts) out of force in the step: no rows, no
   /// pressure (deck *MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE; ADD puts one back).
   std::vector<int32_t> removed_contacts = {};
+  /// Contact pairs (indices into Problem::contacts) whose friction in the step is not their
+  /// interaction's, with the friction in force (deck *CHANGE FRICTION, which holds until
+  /// another changes it).
+  std::vector<std::pair<int32_t, Friction>> changed_friction = {};
   /// Load steps of the step; unset: the solver's (settings load_steps).
   std::optional<int> increments = {};
   double time = 1;  ///< the step's time period (*STATIC's), for amplitudes and the outputs

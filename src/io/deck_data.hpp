@@ -184,6 +184,8 @@ struct DeckLoadState
   std::map<int32_t, DeckValue> temperature; ///< node -> *TEMPERATURE
   /// (slave, master) of the pairs *MODEL CHANGE, REMOVE took out -> the line that did
   std::map<std::pair<std::string, std::string>, std::string> removed_pairs;
+  /// Interaction -> the friction a *CHANGE FRICTION gave it (this step and the next ones).
+  std::map<std::string, DeckFriction> frictions;
 };
 
 struct DeckData

@@ -244,6 +244,7 @@ private:
         {"INITIAL CONDITIONS", &KeywordReader::initial_conditions},
         {"TEMPERATURE", &KeywordReader::temperature},
         {"MODEL CHANGE", &KeywordReader::model_change},
+        {"CHANGE FRICTION", &KeywordReader::change_friction},
         {"SOLID SECTION", &KeywordReader::solid_section},
         {"BOUNDARY", &KeywordReader::boundary},
         {"CLOAD", &KeywordReader::cload},
@@ -267,6 +268,9 @@ private:
         {"CONTACT FILE", &KeywordReader::output_request},
     };
     _in_interaction = _in_interaction && (_keyword.name == "SURFACE BEHAVIOR" || _keyword.name == "FRICTION");
+    if (!_changing_friction.empty() && _keyword.name != "FRICTION")
+      throw Error(where() + ": the *CHANGE FRICTION before it (" + _changing_friction_where +
+                  ") needs its *FRICTION next");
     if (const auto it = handlers.find(_keyword.name); it != handlers.end())
     {
       (this->*(it->second))();
@@ -666,6 +670,20 @@ private:
     }
   }
 
+  /// *CHANGE FRICTION, INTERACTION= (in a step): the *FRICTION after it gives the interaction's
+  /// friction from this step on.
+  void change_friction()
+  {
+    known_parameters({"INTERACTION"});
+    if (!_in_step)
+      throw Error(where() + " belongs inside a *STEP");
+    _changing_friction = required("INTERACTION");
+    if (!_data.interactions.count(_changing_friction))
+      throw Error(where() + ": no *SURFACE INTERACTION '" + _changing_friction + "' is defined before it");
+    _changing_friction_where = _keyword.where.str();
+    no_data();
+  }
+
   /// Field 1 of a temperature line: finite and not below absolute zero.
   double temperature_value(const DeckDataLine& line)
   {
@@ -1032,21 +1050,40 @@ private:
       if (const auto it = other_laws.find(key); it != other_laws.end())
         throw Error(where() + ": " + key + " (" + it->second + ") is not implemented by feticon (Coulomb's law: mu)");
     known_parameters({"LAGRANGE", "SLIP TOLERANCE", "ELASTIC SLIP"});
+    const std::string changed = std::exchange(_changing_friction, std::string());
+    if (!changed.empty())
+    {
+      const DeckFriction friction = friction_line(changed);
+      if (_data.tied_interactions.count(changed))
+        _data.warn(where() + ": interaction " + changed + " is tied; its friction is not used");
+      else
+        _data.state.frictions[changed] = friction;
+      return;
+    }
     if (!_in_interaction)
       throw Error(where() +
                   " belongs in the block of a *SURFACE INTERACTION (right after it or its *SURFACE BEHAVIOR)");
     if (_data.frictions.count(_interaction))
       throw Error(where() + ": interaction " + _interaction + " has a *FRICTION already (at " +
                   _data.frictions.at(_interaction).where.str() + ")");
+    // A tied interaction sticks whatever its *FRICTION says (CalculiX decks write mu = 1e30).
+    if (!_data.tied_interactions.count(_interaction))
+      _data.frictions[_interaction] = friction_line(_interaction);
+    else
+      for (DeckDataLine line; _tokens.next_data(line);)
+        ;
+  }
+
+  /// The data line of a *FRICTION of `interaction` (mu, stick slope), checked.
+  DeckFriction friction_line(const std::string& interaction)
+  {
     DeckFriction friction;
     friction.where = _keyword.where;
     DeckDataLine line;
     if (!_tokens.next_data(line))
       throw Error(where() + " needs a data line: friction coefficient mu [, stick slope]");
     friction.coefficient = real(line, 0, "friction coefficient mu");
-    // A tied interaction sticks whatever its *FRICTION says (CalculiX decks write mu = 1e30).
-    const bool tied = _data.tied_interactions.count(_interaction) > 0;
-    if (!tied && (friction.coefficient < 0 || friction.coefficient > largest_friction_coefficient))
+    if (friction.coefficient < 0 || friction.coefficient > largest_friction_coefficient)
       fail_at(line.at(0), "friction coefficient " + text(line.fields[0]) + " is outside 0 to 100");
     if (line.fields.size() > 2)
       fail_at(line.at(2),
@@ -1065,11 +1102,10 @@ private:
     for (const char* p : {"LAGRANGE", "SLIP TOLERANCE", "ELASTIC SLIP"})
       if (_keyword.has(p))
         _data.warn(where() + ": " + p + " is not used; feticon enforces the stick exactly");
-    if (!slope.empty() && !tied)
-      _data.warn("interaction " + _interaction + ": the stick slope " + slope + " of *FRICTION (" +
+    if (!slope.empty())
+      _data.warn("interaction " + interaction + ": the stick slope " + slope + " of *FRICTION (" +
                  _keyword.where.str() + ") is not used; feticon enforces the stick exactly (no elastic slip)");
-    if (!tied)
-      _data.frictions[_interaction] = friction;
+    return friction;
   }
 
   void contact_pair()
@@ -1281,6 +1317,8 @@ private:
   /// True from a *SURFACE INTERACTION until a keyword other than its *SURFACE BEHAVIOR and
   /// *FRICTION (CalculiX: the interaction's block ends there, as a material's does).
   bool _in_interaction = false;
+  /// The interaction of a *CHANGE FRICTION whose *FRICTION comes next, and where it was.
+  std::string _changing_friction, _changing_friction_where;
   bool _in_step = false, _have_procedure = false;
   DeckPosition _step_where;
   DeckStep _step;

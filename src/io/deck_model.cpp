@@ -576,6 +576,21 @@ private:
   }
 
   /// The indices of the pairs *MODEL CHANGE took out (a name that is no pair is an error).
+  /// The pairs whose interaction a *CHANGE FRICTION changed, with their friction (mu = 0:
+  /// frictionless).
+  std::vector<std::pair<int32_t, fem::Friction>> changed_friction(
+      const std::map<std::string, DeckFriction>& frictions) const
+  {
+    std::vector<std::pair<int32_t, fem::Friction>> out;
+    for (size_t p = 0; p < _p.contacts.size(); ++p)
+      if (const auto it = frictions.find(_p.contacts[p].interaction.name); it != frictions.end())
+        out.emplace_back(static_cast<int32_t>(p),
+                         it->second.coefficient > 0
+                             ? fem::Friction{fem::FrictionModel::coulomb, it->second.coefficient, 0}
+                             : fem::Friction{});
+    return out;
+  }
+
   std::vector<int32_t> removed_contacts(const std::map<std::pair<std::string, std::string>, std::string>& removed) const
   {
     std::vector<int32_t> out;
@@ -661,6 +676,7 @@ private:
       step.body_loads = body_loads(state.body);
       step.temperatures = temperatures(state.temperature);
       step.removed_contacts = removed_contacts(state.removed_pairs);
+      step.changed_friction = changed_friction(state.frictions);
       step.time = _deck.steps[k].time;
       step.ramp = _deck.steps[k].ramp;
       // Step 1 takes the solver's load_steps, which the first *STATIC sets (--set may change it).

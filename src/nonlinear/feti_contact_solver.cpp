@@ -249,7 +249,8 @@ private:
   void update_internal_force();
   /// The subdomains' temperature change at load step `step` (problems with temperatures).
   void set_temperatures(int step);
-  /// The pairs in force in load step `step`'s step (the others' rows are not built).
+  /// The pairs in force in load step `step`'s step (the others' rows are not built) and the
+  /// interactions they are solved with there (a *CHANGE FRICTION).
   void set_pairs_in_force(int step);
   /// The same where u is an outer iteration's result: an element inverted at u (on any rank)
   /// is the outer loop diverging, which a cutback may cure, not an error of the run; its
@@ -436,12 +437,15 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
   }
   _u = la::Vector::Zero(_decomp->n_primal());
   _out.plastic = fem::MeshPlasticStates::zero(problem.mesh, problem.materials);
-  for (const fem::ContactPairNames& pair : problem.contacts)
+  for (int32_t p = 0; p < std::ssize(problem.contacts); ++p)
   {
+    const fem::ContactPairNames& pair = problem.contacts[p];
     _pairs.push_back({pair.slave, pair.master, pair.slave_nodes});
-    _interactions.push_back(settings.interaction(pair));
-    _friction = _friction || _interactions.back().friction.model != FrictionModel::none;
+    _interactions.push_back(settings.interaction(problem, p, 0));
   }
+  // A pair that gets friction in a later step (*CHANGE FRICTION) needs tangential rows from the
+  // start, with the bound 0 until then.
+  _friction = settings.has_friction(problem);
   _pair_in_force.assign(_pairs.size(), 1);
   _contact_options.search_distance = settings.search_distance;
   const bool dirichlet = settings.dual.preconditioner == dual::DualPreconditioner::dirichlet;
@@ -681,9 +685,12 @@ void FetiContactSolve::begin_load_step(int step, double)
 
 void FetiContactSolve::set_pairs_in_force(int step)
 {
+  const size_t stage = _history.point(step).stage - 1;
   _pair_in_force.assign(_pairs.size(), 1);
-  for (const int32_t p : _problem.steps[_history.point(step).stage - 1].removed_contacts)
+  for (const int32_t p : _problem.steps[stage].removed_contacts)
     _pair_in_force[p] = 0;
+  for (int32_t p = 0; p < std::ssize(_pairs); ++p)
+    _interactions[p] = _settings.interaction(_problem, p, stage);
   if (_linear_rows)
     _linear_rows->set_pairs_in_force(_pair_in_force);
 }

@@ -76,10 +76,21 @@ fem::ContactInteraction SolverSettings::interaction(const fem::ContactPairNames&
   return out;
 }
 
+fem::ContactInteraction SolverSettings::interaction(const fem::Problem& problem, int32_t pair, size_t step) const
+{
+  fem::ContactPairNames names = problem.contacts[pair];
+  for (const auto& [changed, friction] : problem.steps[step].changed_friction)
+    if (changed == pair)
+      names.interaction.friction = friction;
+  return interaction(names);
+}
+
 bool SolverSettings::has_friction(const fem::Problem& problem) const
 {
-  return std::ranges::any_of(problem.contacts, [&](const fem::ContactPairNames& pair) {
-    return interaction(pair).friction.model != FrictionModel::none;
-  });
+  for (size_t step = 0; step < problem.steps.size(); ++step)
+    for (int32_t pair = 0; pair < std::ssize(problem.contacts); ++pair)
+      if (interaction(problem, pair, step).friction.model != FrictionModel::none)
+        return true;
+  return false;
 }
 } // namespace feticon::nonlinear

@@ -173,7 +173,10 @@ struct SolverSettings
 
   /// The interaction `pair` is solved with: its own, with the given settings in its place.
   fem::ContactInteraction interaction(const fem::ContactPairNames& pair) const;
-  /// Whether a pair of `problem` is solved with friction.
+  /// The interaction pair `pair` of `problem` is solved with in step `step` (0-based): as
+  /// above, with the friction the step gives it (fem::Step::changed_friction) in place of its own.
+  fem::ContactInteraction interaction(const fem::Problem& problem, int32_t pair, size_t step) const;
+  /// Whether a pair of `problem` is solved with friction in some step.
   bool has_friction(const fem::Problem& problem) const;
 };
 } // namespace feticon::nonlinear

@@ -212,6 +212,16 @@ expect "tie negative tolerance" "ties.0.position_tolerance = -1 m must be > 0" -
   "$(variant 's/^contact:/ties:\n  - {slave: punch_ymin, master: base_ymax, position_tolerance: -1}\ncontact:/' tie_tolerance)"
 expect "tie unknown face set" "ties.0: no face set 'nowhere'" -- \
   "$(variant 's/^contact:/ties:\n  - {slave: nowhere, master: base_ymax}\ncontact:/' tie_set)"
+# *CHANGE FRICTION (issue 65, item 6) on tests/data/calculix/change_friction.inp.
+cf_variant() { sed "$1" "$src_dir/tests/data/calculix/change_friction.inp" > "$work/$2.inp"; echo "$work/$2.inp"; }
+expect "deck change friction unknown interaction" "no \*SURFACE INTERACTION 'SI9'" -- \
+  "$(cf_variant 's/^\*CHANGE FRICTION, INTERACTION=SI1/*CHANGE FRICTION, INTERACTION=SI9/' cf_unknown)"
+expect "deck change friction without friction" "needs its \*FRICTION next" -- \
+  "$(cf_variant '/^\*CHANGE FRICTION/{n;N;d}' cf_nofriction)"
+expect "deck change friction outside a step" "CHANGE FRICTION belongs inside a \*STEP" -- \
+  "$(cf_variant 's/^\*SURFACE INTERACTION, NAME=SI1/&\n*CHANGE FRICTION, INTERACTION=SI1/' cf_model)"
+expect "deck change friction negative" "friction coefficient -0.1 is outside 0 to 100" -- \
+  "$(cf_variant 's/^0.1$/-0.1/' cf_negative)"
 # Body loads (issue 65, item 5): *DLOAD GRAV / CENTRIF and *DENSITY.
 grav_variant() { deck_variant "s/^\*CLOAD/*DLOAD\n$1\n*CLOAD/;$2" "$3"; }
 expect "deck gravity without density" "GRAV: body .* has no density" -- \

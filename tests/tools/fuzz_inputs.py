@@ -393,11 +393,13 @@ MM_MUTATORS = [number_replacer(EXTREMES), mm_header, mm_size]
 
 DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_friction.inp", "contactenergy_plastic.inp",
               "punch_tet10.inp",
-              "punch_c3d20r.inp", "contactenergy_density.inp", "rings_cax4.inp", "tie_blocks.inp"]
+              "punch_c3d20r.inp", "contactenergy_density.inp", "rings_cax4.inp", "tie_blocks.inp",
+              "change_friction.inp"]
 # Seeds of our own (tests/data/fuzz/): a C3D10 deck, feticon's export of gmsh_tet10.yaml, and
 # a C3D20 / C3D20R one (reduced integration per cell), the same punch meshed with hex20; two
 # CAX4 rings shrink-fitted through a node-to-surface pair of element edges (issue 64). From
-# tests/data/calculix/: tie_blocks.inp, two blocks glued by a *TIE (issue 63).
+# tests/data/calculix/: tie_blocks.inp, two blocks glued by a *TIE (issue 63), and
+# change_friction.inp, a block pushed along a base over three steps, *CHANGE FRICTION in the last.
 FUZZ_FOLDER_DECKS = {"punch_tet10.inp", "punch_c3d20r.inp", "rings_cax4.inp"}
 # Seeds made from another by an edit: contact1 with Coulomb friction (*FRICTION after the
 # pressure-overclosure law, as tests/cli/deck_friction.sh adds it to CalculiX's decks).
@@ -437,7 +439,8 @@ DECK_KEYWORDS = [
     "*SURFACE INTERACTION, NAME=SI1", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD",
     "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED", "*TIE, NAME=T2\n@,@", "*TIE, NAME=T2, POSITION TOLERANCE=1e30\nSUPPER_BOTTOM,SLOWER_TOP",
     "*TIE, NAME=T2, ADJUST=NO, POSITION TOLERANCE=1e-30\nSLOWER_TOP,SUPPER_BOTTOM", "*TIE, NAME=T2, CYCLIC SYMMETRY\n@,@", "*TIE\n@,@",
-    "*TIE, NAME=T2\nSSLAV,SMAST", "*TIE, NAME=T2, POSITION TOLERANCE=0.5\nSMAST,SSLAV", "*NODE PRINT, NSET=@", "*EL FILE\nS,E,XYZ",
+    "*TIE, NAME=T2\nSSLAV,SMAST", "*CHANGE FRICTION, INTERACTION=SI1\n*FRICTION\n0.5", "*CHANGE FRICTION, INTERACTION=@",
+    "*CHANGE FRICTION\n*FRICTION\n0.1", "*CHANGE FRICTION, INTERACTION=SI1\n*FRICTION\n1e300,1e300", "*TIE, NAME=T2, POSITION TOLERANCE=0.5\nSMAST,SSLAV", "*NODE PRINT, NSET=@", "*EL FILE\nS,E,XYZ",
     "*PLASTIC\n20,0\n10,0.001", "*PLASTIC\n20,0.01", "*PLASTIC\n20,0\n30,0", "*PLASTIC\n-1,0",
     "*PLASTIC, HARDENING=KINEMATIC\n20,0", "*PLASTIC\n20,0,20\n30,1,100", "*PLASTIC", "*PLASTIC\n1e30,0\n1e-30,1e30",
     "*AMPLITUDE, NAME=A\n0,0,1,1", "*CLOAD, AMPLITUDE=A\n1,1,1", "*AMPLITUDE, NAME=A\n1,0,0,1",
