@@ -130,11 +130,11 @@ TieReport tie_surface(fem::Problem& problem, const fem::Tie& tie, std::vector<ch
 std::vector<TieReport> tie_surfaces(fem::Problem& problem)
 {
   problem.tie_equations.clear();
+  if (problem.ties.empty())
+    return {};
   // Slave DOFs that may not get a tie row (file comment): the first step's supports, every DOF
   // an equation names, then each tie's own.
   std::vector<char> taken(3 * static_cast<size_t>(problem.mesh.n_nodes()), 0);
-  if (problem.ties.empty())
-    return {};
   for (const int64_t dof : problem.all_constrained_dofs(0).dofs)
     taken[dof] = 1;
   for (const fem::LinearEquation& equation : problem.equations)

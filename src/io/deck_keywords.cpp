@@ -1050,28 +1050,24 @@ private:
       if (const auto it = other_laws.find(key); it != other_laws.end())
         throw Error(where() + ": " + key + " (" + it->second + ") is not implemented by feticon (Coulomb's law: mu)");
     known_parameters({"LAGRANGE", "SLIP TOLERANCE", "ELASTIC SLIP"});
+    // After a *CHANGE FRICTION (in a step) the friction of its interaction from the step on;
+    // else that of the interaction whose block this is.
     const std::string changed = std::exchange(_changing_friction, std::string());
-    if (!changed.empty())
-    {
-      const DeckFriction friction = friction_line(changed);
-      if (_data.tied_interactions.count(changed))
-        _data.warn(where() + ": interaction " + changed + " is tied; its friction is not used");
-      else
-        _data.state.frictions[changed] = friction;
-      return;
-    }
-    if (!_in_interaction)
+    const std::string interaction = changed.empty() ? _interaction : changed;
+    if (changed.empty() && !_in_interaction)
       throw Error(where() +
                   " belongs in the block of a *SURFACE INTERACTION (right after it or its *SURFACE BEHAVIOR)");
-    if (_data.frictions.count(_interaction))
-      throw Error(where() + ": interaction " + _interaction + " has a *FRICTION already (at " +
-                  _data.frictions.at(_interaction).where.str() + ")");
+    if (changed.empty() && _data.frictions.count(interaction))
+      throw Error(where() + ": interaction " + interaction + " has a *FRICTION already (at " +
+                  _data.frictions.at(interaction).where.str() + ")");
     // A tied interaction sticks whatever its *FRICTION says (CalculiX decks write mu = 1e30).
-    if (!_data.tied_interactions.count(_interaction))
-      _data.frictions[_interaction] = friction_line(_interaction);
-    else
+    if (_data.tied_interactions.count(interaction))
+    {
       for (DeckDataLine line; _tokens.next_data(line);)
         ;
+      return;
+    }
+    (changed.empty() ? _data.frictions : _data.state.frictions)[interaction] = friction_line(interaction);
   }
 
   /// The data line of a *FRICTION of `interaction` (mu, stick slope), checked.
