@@ -6,17 +6,22 @@
 # the reference of the same mesh measured in the same run. Each case --reps times (default 3):
 # the log's "rows made in" (contact/tie_rows: closest points, ADJUST, mortar integration), the
 # run's MPRGP steps, dual solve and total solve time, and the peak memory; medians printed.
+# With --calculix, the deck `feticon export` writes of the tie model is also run by CalculiX
+# (ccx, 2 threads) and by feticon, one after the other, --reps times each: wall time, peak
+# memory and the error against the exact uniaxial tension of both.
 #
-#   bench/tie_setup.sh [--reps N] [--feticon build/feticon]
+#   bench/tie_setup.sh [--reps N] [--feticon build/feticon] [--calculix]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 feticon=$root/build/feticon
 reps=3
+calculix=false
 while [[ $# -gt 0 ]]; do
   case $1 in
     --reps) reps=$2; shift 2 ;;
     --feticon) feticon=$2; shift 2 ;;
-    *) echo "usage: $0 [--reps N] [--feticon PATH]" >&2; exit 2 ;;
+    --calculix) calculix=true; shift ;;
+    *) echo "usage: $0 [--reps N] [--feticon PATH] [--calculix]" >&2; exit 2 ;;
   esac
 done
 work=$(mktemp -d)
@@ -72,4 +77,41 @@ for case in ("tie", "contact"):
     if made:
         line += f", {rows} tie rows made in {statistics.median(made):.2f} s"
     print(line + f" (medians of {reps})")
+PY
+$calculix || exit 0
+"$feticon" export "$work/tie.yaml" --format calculix -o "$work/deck" > /dev/null
+for ((r = 1; r <= reps; ++r)); do
+  (cd "$work/deck" && OMP_NUM_THREADS=2 /usr/bin/time -f "%e %M" -o "ccx.$r.time" ccx -i feticon > ccx.log 2>&1)
+  cp "$work/deck/feticon.frd" "$work/ccx.frd"
+  /usr/bin/time -f "%e %M" -o "$work/deck/feticon.$r.time" "$feticon" run "$work/deck/feticon.inp" -o "$work/deckrun" \
+    --overwrite --set output.plots=false --set output.vtu=false > /dev/null 2>&1
+done
+/usr/bin/python3 - "$work" "$reps" "$root" <<'PY'
+import statistics, sys
+work, reps, root = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+sys.path.insert(0, root + "/tests/tools")
+from frd_vs_vtu import frd_displacements
+coords, reading = {}, False
+for line in open(work + "/deck/feticon.inp"):
+    if line.startswith("*"):
+        reading = line.upper().startswith("*NODE,")
+        continue
+    if reading:
+        f = line.split(",")
+        coords[int(f[0])] = [float(v) for v in f[1:4]]
+E, nu, s = 2e11, 0.3, 1e8
+def error(frd):
+    u = {r[0]: r[1:] for r in frd_displacements(frd)}
+    worst = scale = 0.0
+    for n, (x, y, z) in coords.items():
+        exact = (-nu * s * x / E, -nu * s * y / E, s * z / E)
+        worst = max(worst, max(abs(a - b) for a, b in zip(u[n], exact)))
+        scale = max(scale, max(abs(v) for v in exact))
+    return worst / scale
+for code, frd in (("ccx", work + "/ccx.frd"), ("feticon", work + "/deckrun/feticon.frd")):
+    times = [open(f"{work}/deck/{code}.{r}.time").read().split() for r in range(1, reps + 1)]
+    wall = statistics.median(float(t[0]) for t in times)
+    memory = statistics.median(int(t[1]) for t in times) / 2**20
+    print(f"deck, {code:8s} wall {wall:.2f} s, peak memory {memory:.2f} GiB, max |u - u_exact| / max |u_exact| "
+          f"{error(frd):.2e} (medians of {reps})")
 PY

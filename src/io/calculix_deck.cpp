@@ -121,6 +121,16 @@ bool floats_along(const fem::Problem& problem, int32_t body, const Eigen::Vector
 /// Node coordinates as the deck writes them (slave bodies shifted, see contact_pairs).
 using Coordinates = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
+/// The cells of every node (element_faces' lookup).
+std::vector<std::vector<int32_t>> cells_of_nodes(const mesh::Mesh& mesh)
+{
+  std::vector<std::vector<int32_t>> out(mesh.n_nodes());
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    for (int32_t n : mesh.cells[c])
+      out[n].push_back(c);
+  return out;
+}
+
 /// The faces of a contact pair and its penalty stiffness.
 struct ContactPairFaces
 {
@@ -134,11 +144,7 @@ std::vector<ContactPairFaces> contact_pairs(const fem::Problem& problem, const C
                                             CalculixDeckSummary& summary)
 {
   const mesh::Mesh& mesh = problem.mesh;
-  std::vector<std::vector<int32_t>> cells_of_node(mesh.n_nodes());
-  for (int32_t c = 0; c < mesh.n_cells(); ++c)
-    for (int32_t n : mesh.cells[c])
-      cells_of_node[n].push_back(c);
-
+  const std::vector<std::vector<int32_t>> cells_of_node = cells_of_nodes(mesh);
   std::vector<ContactPairFaces> pairs;
   std::vector<char> shifted_body(mesh.n_bodies(), 0);
   for (const fem::ContactPairNames& names : problem.contacts)
@@ -327,10 +333,7 @@ void write_ties(std::ostream& out, const fem::Problem& problem)
   if (problem.ties.empty())
     return;
   const mesh::Mesh& mesh = problem.mesh;
-  std::vector<std::vector<int32_t>> cells_of_node(mesh.n_nodes());
-  for (int32_t c = 0; c < mesh.n_cells(); ++c)
-    for (int32_t n : mesh.cells[c])
-      cells_of_node[n].push_back(c);
+  const std::vector<std::vector<int32_t>> cells_of_node = cells_of_nodes(mesh);
   for (const fem::Tie& tie : problem.ties)
   {
     FETICON_CHECK(tie.slave_nodes.empty(),

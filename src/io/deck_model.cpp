@@ -436,14 +436,10 @@ private:
       if (_d.tied_interactions.count(pair.interaction))
       {
         // A tied pair moves no node (a pair's ADJUST is a distance or a set; a tie's a flag).
-        _p.ties.push_back({pair.interaction, pair.slave, pair.master, slave_nodes, 0, false,
-                           slave_nodes.empty() ? formulation : fem::ContactFormulation::node_to_segment});
+        _p.ties.push_back({pair.interaction, pair.slave, pair.master, slave_nodes, 0, false, formulation});
         continue;
       }
-      fem::ContactInteraction interaction{pair.interaction,
-                                          {},
-                                          pair.node_to_surface ? fem::ContactFormulation::node_to_segment
-                                                               : fem::ContactFormulation::mortar};
+      fem::ContactInteraction interaction{pair.interaction, {}, formulation};
       if (const auto it = _d.frictions.find(pair.interaction); it != _d.frictions.end() && it->second.coefficient > 0)
         interaction.friction = {fem::FrictionModel::coulomb, it->second.coefficient, 0};
       FETICON_CHECK(pair.adjust_set.empty() || _p.mesh.node_sets.count(pair.adjust_set),
