@@ -63,17 +63,17 @@ size_t rule_point_of_gauss_point(int a)
   return (xi(0) > 0 ? 1 : 0) + (xi(1) > 0 ? 2 : 0) + (xi(2) > 0 ? 4 : 0);
 }
 
-/// The results of cell c at the points of its solve's rule from its J2 states (a plastic
-/// cell); hex8's in hex8_gauss_points() order, as hex8_point_results gives them.
-fem::CellPointResults plastic_point_results(const mesh::Mesh& mesh, int32_t c, const Eigen::MatrixX3d& X,
-                                            const Eigen::MatrixX3d& u, const fem::Material& material,
-                                            const Eigen::VectorXd* temperature_change,
-                                            std::span<const fem::PlasticPointState> states)
+/// The results of cell c at the points of its solve's rule (a plastic cell from its J2 states,
+/// or a hyperelastic one); hex8's in hex8_gauss_points() order, as hex8_point_results gives them.
+fem::CellPointResults rule_point_results(const mesh::Mesh& mesh, int32_t c, const Eigen::MatrixX3d& X,
+                                         const Eigen::MatrixX3d& u, const fem::Material& material,
+                                         fem::Kinematics kinematics, const Eigen::VectorXd* temperature_change,
+                                         std::span<const fem::PlasticPointState> states)
 {
   const mesh::CellKind type = mesh.cells.kind(c);
   const fem::CellPointResults r = fem::cell_point_results(
-      type, X, u, material, fem::Kinematics::linear,
-      mesh.reduced(c) ? fem::Integration::reduced : fem::Integration::full, c, temperature_change, states, mesh.planar);
+      type, X, u, material, kinematics, mesh.reduced(c) ? fem::Integration::reduced : fem::Integration::full, c,
+      temperature_change, states, mesh.planar);
   if (type != mesh::CellKind::hex8)
     return r;
   fem::CellPointResults out = r;
@@ -111,7 +111,7 @@ PointResults point_results(const fem::Problem& p, const la::Vector& u, const la:
     const std::span<const int32_t> cell = mesh.cells[c];
     const fem::Material& material = p.materials[mesh.cell_body[c]];
     fem::CellPointResults r;
-    if (mesh.cells.kind(c) == mesh::CellKind::hex8 && plastic.of(c).empty())
+    if (mesh.cells.kind(c) == mesh::CellKind::hex8 && plastic.of(c).empty() && !material.is_hyperelastic())
     {
       for (int a = 0; a < 8; ++a)
       {
@@ -137,10 +137,10 @@ PointResults point_results(const fem::Problem& p, const la::Vector& u, const la:
         if (thermal)
           dT_any(a) = temperature_change(cell[a]);
       }
-      r = plastic.of(c).empty()
+      r = material.is_st_venant_kirchhoff()
           ? fem::cell_point_results(mesh.cells.kind(c), X_any, u_any, material, kinematics, fem::Integration::full, c,
                                     thermal ? &dT_any : nullptr, {}, mesh.planar)
-          : plastic_point_results(mesh, c, X_any, u_any, material, thermal ? &dT_any : nullptr, plastic.of(c));
+          : rule_point_results(mesh, c, X_any, u_any, material, kinematics, thermal ? &dT_any : nullptr, plastic.of(c));
     }
     Eigen::Matrix<double, 6, 1> s = Eigen::Matrix<double, 6, 1>::Zero(), e = s;
     double volume = 0;

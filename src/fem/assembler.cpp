@@ -168,6 +168,10 @@ Assembler::Assembler(const mesh::Mesh& mesh, AssemblyDomain domain, std::vector<
                               "small, no NLGEOM)");
     _plastic_offset.push_back(_plastic_offset.back() + static_cast<int64_t>(points));
   }
+  for (size_t b = 0; b < _materials.size(); ++b)
+    FETICON_CHECK(!_materials[b].is_hyperelastic() || kinematics == Kinematics::total_lagrangian,
+                  "body '" << body_name(b)
+                           << "' is hyperelastic, which needs large displacements (displacements = large, NLGEOM)");
   _plastic_committed.resize(static_cast<size_t>(_plastic_offset.back()));
 }
 
@@ -228,7 +232,7 @@ void Assembler::assemble_cells(const la::Vector& u, StiffnessKind kind, la::Spar
     const std::span<const int32_t> local = _domain.cell_nodes[k];
     const mesh::CellKind type = _mesh.cells.kind(c);
     const Material& material = _materials[_mesh.cell_body[c]];
-    if (type == mesh::CellKind::hex8 && !material.is_plastic())
+    if (type == mesh::CellKind::hex8 && material.is_st_venant_kirchhoff())
     {
       for (int a = 0; a < 8; ++a)
       {

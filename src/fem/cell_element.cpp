@@ -1,6 +1,7 @@
 #include "fem/cell_element.hpp"
 
 #include "common/error.hpp"
+#include "fem/hyperelasticity.hpp"
 
 #include <cmath>
 
@@ -150,9 +151,9 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
   const Eigen::Index n = 3 * X.rows();
   const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
   const bool plane_stress = mesh::is_planar(type) && planar.kind == mesh::PlanarKind::plane_stress;
-  FETICON_CHECK(!plane_stress || !material.is_plastic(),
-                "cell " << cell << ": plasticity in plane stress is not implemented (plane strain, axisymmetric "
-                        << "and 3D cells are)");
+  FETICON_CHECK(!plane_stress || material.is_st_venant_kirchhoff(),
+                "cell " << cell << ": " << (material.is_plastic() ? "plasticity" : "hyperelasticity")
+                        << " in plane stress is not implemented (plane strain, axisymmetric and 3D cells are)");
   const Eigen::Matrix<double, 6, 6> D_in_plane = plane_stress ? plane_stress_tangent(D) : D;
   f.setZero(n);
   if (kind != StiffnessKind::none)
@@ -183,6 +184,13 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
         plastic->updated[q] = update.state;
       if (with_k)
         C = &tangent;
+    }
+    else if (material.is_hyperelastic())
+    {
+      FETICON_ASSERT(kinematics == Kinematics::total_lagrangian,
+                     "a hyperelastic cell needs total Lagrangian kinematics");
+      S = hyperelastic_stress(material.hyperelastic, strain, kind != StiffnessKind::none ? &tangent : nullptr);
+      C = &tangent;
     }
     else
     {
@@ -227,6 +235,8 @@ CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d&
                             << rule.points.size() << " quadrature points");
       stress = j2_return(material, strain, thermal, plastic[q]).stress;
     }
+    else if (material.is_hyperelastic())
+      stress = hyperelastic_stress(material.hyperelastic, strain);
     else
     {
       stress = D * strain;

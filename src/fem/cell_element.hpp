@@ -7,7 +7,8 @@
 ///   K_G(a,b) = (grad N_a' S grad N_b) I_3 w detJ;
 /// the linear element is the same with Fdef = I in B and S = D eps(u). Element DOFs are
 /// node-major: dof 3a + i is component i of node a. A temperature change subtracts the
-/// thermal strain as hex8_element.hpp says.
+/// thermal strain as hex8_element.hpp says. A hyperelastic material (fem/hyperelasticity.hpp,
+/// total Lagrangian) replaces S = D E and D by its S(E) and dS/dE.
 ///
 /// 2D cells (mesh::Planar; nodes in the x-y plane, u_z zero): the same formulas with no
 /// gradient in z and w det J times the out-of-plane measure (thickness, 2 pi r): plane strain

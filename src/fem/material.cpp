@@ -16,6 +16,13 @@ Eigen::Matrix<double, 6, 6> Material::elasticity_matrix() const
   return D;
 }
 
+void Material::set_hyperelastic(const Hyperelastic& law)
+{
+  hyperelastic = law;
+  young = law.initial_young();
+  poisson = law.initial_poisson();
+}
+
 void Material::check(const std::string& where) const
 {
   FETICON_CHECK(std::isfinite(young) && young > 0, where << ": Young's modulus E = " << young << " must be positive");
@@ -26,6 +33,12 @@ void Material::check(const std::string& where) const
   // Negative alpha is physical (zirconium tungstate, some composites' fibre direction).
   FETICON_CHECK(std::isfinite(expansion),
                 where << ": the expansion coefficient alpha = " << expansion << " is not finite");
+  if (is_hyperelastic())
+  {
+    hyperelastic.check(where);
+    FETICON_CHECK(!is_plastic(), where << ": plasticity of a hyperelastic material is not implemented");
+    FETICON_CHECK(expansion == 0, where << ": thermal expansion of a hyperelastic material is not implemented");
+  }
   if (!is_plastic())
     return;
   plastic.check(where);

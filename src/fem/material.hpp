@@ -1,7 +1,8 @@
 #pragma once
 /// @file Isotropic St Venant–Kirchhoff material (linear elasticity at small strain), with its
-/// thermal expansion and, at small strain, J2 plasticity.
+/// thermal expansion and, at small strain, J2 plasticity; or a hyperelastic law.
 
+#include "fem/hyperelasticity.hpp"
 #include "fem/yield_curve.hpp"
 
 #include <Eigen/Dense>
@@ -22,8 +23,17 @@ struct Material
   /// J2 plasticity with isotropic hardening (fem/j2_plasticity.hpp) by this yield curve; empty:
   /// elastic. Small strain only (Problem::check refuses it with large displacements).
   YieldCurve plastic = {};
+  /// Neo-Hooke or Mooney-Rivlin (fem/hyperelasticity.hpp) in place of St Venant-Kirchhoff;
+  /// empty: none. young and poisson are then its moduli at E = 0 (set_hyperelastic), which K_0
+  /// and the solver's scalings use. Total Lagrangian only (the Assembler refuses small strain).
+  Hyperelastic hyperelastic = {};
 
   bool is_plastic() const { return !plastic.empty(); }
+  bool is_hyperelastic() const { return !hyperelastic.empty(); }
+  /// St Venant-Kirchhoff (the hex8 fast path's material): neither plastic nor hyperelastic.
+  bool is_st_venant_kirchhoff() const { return !is_plastic() && !is_hyperelastic(); }
+  /// The hyperelastic law and young, poisson at its E = 0.
+  void set_hyperelastic(const Hyperelastic& law);
 
   double lame_lambda() const { return young * poisson / ((1 + poisson) * (1 - 2 * poisson)); }
   double lame_mu() const { return young / (2 * (1 + poisson)); }
@@ -34,7 +44,8 @@ struct Material
   Eigen::Matrix<double, 6, 6> elasticity_matrix() const;
   /// Throws feticon::Error naming `where` if E <= 0, nu is outside (-1, 0.5), rho is negative or not
   /// finite, alpha is not finite, or the yield curve is malformed (YieldCurve::check) or softens
-  /// faster than 3 G (the radial return would have no solution).
+  /// faster than 3 G (the radial return would have no solution), or a hyperelastic law is
+  /// malformed (Hyperelastic::check) or has a plastic table or thermal expansion (not implemented).
   void check(const std::string& where) const;
 };
 

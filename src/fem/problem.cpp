@@ -91,6 +91,11 @@ bool Problem::has_plastic_body() const
   return std::ranges::any_of(materials, [](const Material& m) { return m.is_plastic(); });
 }
 
+bool Problem::has_inelastic_or_hyperelastic_body() const
+{
+  return std::ranges::any_of(materials, [](const Material& m) { return !m.is_st_venant_kirchhoff(); });
+}
+
 std::vector<LinearEquation> Problem::all_equations() const
 {
   std::vector<LinearEquation> out = equations;
@@ -129,10 +134,10 @@ void Problem::validate_planar() const
   }
   if (mesh.planar.kind == mesh::PlanarKind::plane_stress)
     for (size_t b = 0; b < materials.size(); ++b)
-      FETICON_CHECK(!materials[b].is_plastic(),
-                    "problem '" << name << "': body '" << mesh.body_names[b]
-                                << "' is plastic: plasticity in plane stress is not "
-                                   "implemented (plane strain and axisymmetry are)");
+      FETICON_CHECK(materials[b].is_st_venant_kirchhoff(),
+                    "problem '" << name << "': body '" << mesh.body_names[b] << "' is "
+                                << (materials[b].is_plastic() ? "plastic: plasticity" : "hyperelastic: hyperelasticity")
+                                << " in plane stress is not implemented (plane strain and axisymmetry are)");
 }
 
 void Problem::validate() const

@@ -107,6 +107,8 @@ struct Problem
   bool has_temperatures() const;
   /// True if some body's material is plastic (Material::is_plastic).
   bool has_plastic_body() const;
+  /// True if some body is plastic or hyperelastic: its tangent drifts away from K_0.
+  bool has_inelastic_or_hyperelastic_body() const;
   /// Checks materials, set names and sizes; throws feticon::Error naming what is wrong.
   void validate() const;
 

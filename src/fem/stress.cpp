@@ -21,7 +21,7 @@ std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& 
   {
     const mesh::CellKind type = mesh.cells.kind(c);
     const std::span<const PlasticPointState> states = plastic ? plastic->of(c) : std::span<const PlasticPointState>{};
-    if (type != mesh::CellKind::hex8 || !states.empty())
+    if (type != mesh::CellKind::hex8 || !states.empty() || body_materials[mesh.cell_body[c]].is_hyperelastic())
     {
       const std::span<const int32_t> cell = mesh.cells[c];
       X_any.resize(static_cast<Eigen::Index>(cell.size()), 3);

@@ -248,15 +248,21 @@ void write_node_sets(std::ostream& out, const mesh::Mesh& mesh, const std::set<s
   }
 }
 
-/// *MATERIAL with *ELASTIC (*EXPANSION, *PLASTIC) and its *SOLID SECTION, per body.
+/// *MATERIAL with *ELASTIC or *HYPERELASTIC (*EXPANSION, *PLASTIC) and its *SOLID SECTION, per body.
 void write_materials(std::ostream& out, const fem::Problem& problem)
 {
   const mesh::Mesh& mesh = problem.mesh;
   for (int32_t b = 0; b < mesh.n_bodies(); ++b)
   {
     const fem::Material& m = problem.materials[b];
-    out << "*MATERIAL, NAME=" << deck_name("M_", mesh.body_names[b]) << "\n*ELASTIC\n"
-        << number(m.young) << ", " << number(m.poisson) << '\n';
+    out << "*MATERIAL, NAME=" << deck_name("M_", mesh.body_names[b]) << '\n';
+    const fem::Hyperelastic& h = m.hyperelastic;
+    if (!m.is_hyperelastic())
+      out << "*ELASTIC\n" << number(m.young) << ", " << number(m.poisson) << '\n';
+    else if (h.c01 == 0)
+      out << "*HYPERELASTIC, NEO HOOKE\n" << number(h.c10) << ", " << number(h.d1) << '\n';
+    else
+      out << "*HYPERELASTIC, MOONEY-RIVLIN\n" << number(h.c10) << ", " << number(h.c01) << ", " << number(h.d1) << '\n';
     if (m.expansion != 0)
       out << "*EXPANSION\n" << number(m.expansion) << '\n';
     if (m.is_plastic())

@@ -87,7 +87,7 @@ struct DeckOutline
 {
   int64_t nodes = 0;
   int64_t elements = 0;
-  bool nlgeom = false; ///< some *STEP has NLGEOM
+  bool nlgeom = false; ///< some *STEP has NLGEOM, or a material is hyperelastic (CalculiX turns it on)
   int increments = 1;  ///< of the first *STATIC
 };
 DeckOutline deck_outline(const std::filesystem::path& path);

@@ -48,7 +48,6 @@ const std::map<std::string, std::string> unsupported_keywords = {
     {"VISCO", "viscous materials"},
     {"CYCLIC HARDENING", "plasticity"},
     {"DEFORMATION PLASTICITY", "plasticity"},
-    {"HYPERELASTIC", "hyperelastic materials"},
     {"HYPERFOAM", "hyperelastic materials"},
     {"CREEP", "creep"},
     {"USER MATERIAL", "user materials"},
@@ -241,6 +240,7 @@ private:
         {"DENSITY", &KeywordReader::density},
         {"EXPANSION", &KeywordReader::expansion},
         {"PLASTIC", &KeywordReader::plastic},
+        {"HYPERELASTIC", &KeywordReader::hyperelastic},
         {"INITIAL CONDITIONS", &KeywordReader::initial_conditions},
         {"TEMPERATURE", &KeywordReader::temperature},
         {"MODEL CHANGE", &KeywordReader::model_change},
@@ -512,6 +512,8 @@ private:
     if (!_tokens.next_data(line))
       throw Error(where() + " needs a data line: Young's modulus, Poisson's ratio");
     fem::Material& m = _data.materials[_material];
+    if (m.is_hyperelastic())
+      throw Error(where() + ": material " + _material + " is hyperelastic already (*HYPERELASTIC)");
     m.young = real(line, 0, "Young's modulus");
     m.poisson = real(line, 1, "Poisson's ratio");
     try
@@ -524,6 +526,43 @@ private:
     }
     if (_tokens.next_data(line))
       fail_at(line.where, "temperature-dependent elastic constants are not implemented by feticon (one data line)");
+  }
+
+  /// NEO HOOKE (C10, D1), MOONEY-RIVLIN (C10, C01, D1), or their POLYNOMIAL / REDUCED
+  /// POLYNOMIAL forms with N=1 (CalculiX's default: POLYNOMIAL, N=1), at one temperature. CalculiX
+  /// turns on NLGEOM for the whole model where a material is hyperelastic (deck_outline does).
+  void hyperelastic()
+  {
+    known_parameters({"NEO HOOKE", "MOONEY-RIVLIN", "POLYNOMIAL", "REDUCED POLYNOMIAL", "N"});
+    if (_material.empty())
+      throw Error(where() + " comes before any *MATERIAL");
+    if (const std::string* n = _keyword.value("N"); n && *n != "1")
+      throw Error(where() + ": N=" + *n + " is not implemented by feticon (N=1: Neo-Hooke, Mooney-Rivlin)");
+    const bool neo_hooke = _keyword.has("NEO HOOKE") || _keyword.has("REDUCED POLYNOMIAL");
+    if (neo_hooke && (_keyword.has("MOONEY-RIVLIN") || _keyword.has("POLYNOMIAL")))
+      throw Error(where() + " names two hyperelastic models");
+    fem::Material& m = _data.materials[_material];
+    if (m.young > 0)
+      throw Error(where() + ": material " + _material + " has *ELASTIC or *HYPERELASTIC already");
+    DeckDataLine line;
+    if (!_tokens.next_data(line))
+      throw Error(where() + (neo_hooke ? " needs a data line: C10, D1" : " needs a data line: C10, C01, D1"));
+    fem::Hyperelastic law;
+    law.c10 = real(line, 0, "C10");
+    law.c01 = neo_hooke ? 0 : real(line, 1, "C01");
+    law.d1 = real(line, neo_hooke ? 1 : 2, "D1");
+    try
+    {
+      law.check("material " + _material + ", *HYPERELASTIC");
+    }
+    catch (const Error& e)
+    {
+      fail_at(line.where, e.what());
+    }
+    m.set_hyperelastic(law);
+    if (_tokens.next_data(line))
+      fail_at(line.where,
+              "temperature-dependent hyperelastic constants are not implemented by feticon (one data line)");
   }
 
   /// rho (mass per volume, in the deck's units): used by *DLOAD GRAV and CENTRIF only.

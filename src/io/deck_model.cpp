@@ -227,7 +227,8 @@ private:
       FETICON_CHECK(material != _d.materials.end(),
                     section.where.str() << ": *SOLID SECTION: no material '" << section.material << "' is defined");
       FETICON_CHECK(material->second.young > 0,
-                    section.where.str() << ": *SOLID SECTION: material '" << section.material << "' has no *ELASTIC");
+                    section.where.str() << ": *SOLID SECTION: material '" << section.material
+                                        << "' has no *ELASTIC (nor *HYPERELASTIC)");
       try
       {
         material->second.check("material '" + section.material + "'"); // e.g. a table that softens faster than 3 G
@@ -798,6 +799,8 @@ DeckOutline deck_outline(const std::filesystem::path& path)
       const std::string* nlgeom = keyword.value("NLGEOM");
       out.nlgeom = out.nlgeom || (nlgeom && (nlgeom->empty() || *nlgeom == "YES"));
     }
+    else if (keyword.name == "HYPERELASTIC")
+      out.nlgeom = true; // CalculiX's rule: a hyperelastic material makes the model geometrically nonlinear
     else if (keyword.name == "STATIC" && first_step)
     {
       first_step = false;

@@ -42,6 +42,46 @@ fem::YieldCurve yield_curve(const YAML::Node& table, const std::string& key, con
   return curve;
 }
 
+/// A body's `hyperelastic: {c10, c01, d1}` (CalculiX's *HYPERELASTIC; c01 0 or absent: Neo-Hooke).
+fem::Hyperelastic hyperelastic_law(const YAML::Node& node, const std::string& key, const ProblemReader& r)
+{
+  FETICON_CHECK(node.IsMap(), r.source << ": " << key << " must be a map {c10, c01, d1} (Pa, Pa, 1/Pa)");
+  r.only_keys(node, key, {"c10", "c01", "d1"});
+  fem::Hyperelastic law;
+  law.c10 = r.number(node["c10"], key + ".c10");
+  law.c01 = node["c01"] ? r.number(node["c01"], key + ".c01") : 0.0;
+  law.d1 = r.number(node["d1"], key + ".d1");
+  law.check(r.source + ": " + key);
+  return law;
+}
+
+/// The material of body `key` (bodies.NAME): young and poisson, or a hyperelastic law, and the
+/// optional density, expansion and plastic table.
+fem::Material body_material(const YAML::Node& body, const std::string& key, const ProblemReader& r)
+{
+  r.only_keys(body, key, {"young", "poisson", "density", "expansion", "plastic", "hyperelastic"});
+  fem::Material m;
+  if (body["hyperelastic"])
+  {
+    FETICON_CHECK(!body["young"] && !body["poisson"],
+                  r.source << ": " << key << " gives young / poisson and a hyperelastic law: one or the other");
+    m.set_hyperelastic(hyperelastic_law(body["hyperelastic"], key + ".hyperelastic", r));
+  }
+  else
+  {
+    m.young = r.number(body["young"], key + ".young");
+    m.poisson = r.number(body["poisson"], key + ".poisson");
+  }
+  if (body["density"])
+    m.density = r.number(body["density"], key + ".density");
+  if (body["expansion"])
+    m.expansion = r.number(body["expansion"], key + ".expansion");
+  if (body["plastic"])
+    m.plastic = yield_curve(body["plastic"], key + ".plastic", r);
+  m.check(r.source + ": " + key);
+  return m;
+}
+
 std::vector<std::string> split_path(const std::string& path)
 {
   std::vector<std::string> parts;
@@ -596,17 +636,7 @@ fem::Problem build_custom_problem(const ProblemFile& file)
   {
     const YAML::Node body = root["bodies"][name];
     FETICON_CHECK(body, file.source << ": bodies." << name << " is missing (young, poisson)");
-    r.only_keys(body, "bodies." + name, {"young", "poisson", "density", "expansion", "plastic"});
-    fem::Material m{r.number(body["young"], "bodies." + name + ".young"),
-                    r.number(body["poisson"], "bodies." + name + ".poisson")};
-    if (body["density"])
-      m.density = r.number(body["density"], "bodies." + name + ".density");
-    if (body["expansion"])
-      m.expansion = r.number(body["expansion"], "bodies." + name + ".expansion");
-    if (body["plastic"])
-      m.plastic = yield_curve(body["plastic"], "bodies." + name + ".plastic", r);
-    m.check(file.source + ": bodies." + name);
-    p.materials.push_back(m);
+    p.materials.push_back(body_material(body, "bodies." + name, r));
   }
   if (root["plane_strain"])
   {

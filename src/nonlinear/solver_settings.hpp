@@ -129,7 +129,7 @@ struct SolverSettings
   /// docs/materials.md), K_0 otherwise.
   StiffnessUpdate stiffness_of(const fem::Problem& problem) const
   {
-    return stiffness_auto && problem.has_plastic_body() ? StiffnessUpdate::iteration : stiffness;
+    return stiffness_auto && problem.has_inelastic_or_hyperelastic_body() ? StiffnessUpdate::iteration : stiffness;
   }
   /// Inexact outer iterations (large displacements): the QP of outer iteration k > 1 stops at
   /// rtol = max(dual.rtol, min(max_forcing_rtol, forcing * ||du_{k-1}|| / ||u||)), the

@@ -2,7 +2,7 @@
 /// stiff elastic platen under a prescribed displacement, loaded past yield, unloaded, reloaded
 /// and released, against the closed form of the uniaxial series model at every load step.
 
-#include "mesh/box.hpp"
+#include "block_under_platen.hpp"
 #include "nonlinear/contact_pressure.hpp"
 #include "nonlinear/feti_contact_solver.hpp"
 
@@ -25,40 +25,17 @@ constexpr double block_height = 0.5, platen_height = 0.2, area = 0.25;
 /// top moved down by each step's entry of `press` (m) in that step's increments.
 fem::Problem compressed_block(const std::vector<std::pair<double, int>>& press)
 {
-  fem::Problem p;
-  p.name = "plastic block";
   mesh::BoxParameters block, top;
   block.lengths = Eigen::Vector3d(0.5, 0.5, block_height);
   block.nx = block.ny = block.nz = 3;
-  block.body_name = "block";
-  top.origin = Eigen::Vector3d(0, 0, block_height);
   top.lengths = Eigen::Vector3d(0.5, 0.5, platen_height);
   top.nx = top.ny = 4;
   top.nz = 2;
-  top.body_name = "platen";
-  p.mesh = mesh::generate_box(block);
-  mesh::append_mesh(p.mesh, mesh::generate_box(top), "platen_");
   fem::Material steel{young, poisson};
   steel.plastic.stress = {yield, yield + hardening};
   steel.plastic.plastic_strain = {0, 1};
-  p.materials = {steel, fem::Material{platen_young, poisson}};
-  p.steps.clear();
-  for (const auto& [depth, increments] : press)
-  {
-    fem::Step step;
-    for (const std::string prefix : {"", "platen_"})
-    {
-      step.dirichlet.push_back({prefix + "xmin", {0.0, std::nullopt, std::nullopt}});
-      step.dirichlet.push_back({prefix + "ymin", {std::nullopt, 0.0, std::nullopt}});
-    }
-    step.dirichlet.push_back({"zmin", {std::nullopt, std::nullopt, 0.0}});
-    step.dirichlet.push_back({"platen_zmax", {std::nullopt, std::nullopt, -depth}});
-    step.increments = increments;
-    p.steps.push_back(step);
-  }
-  p.contacts.push_back({"platen_zmin", "zmax"});
-  p.validate();
-  return p;
+  return block_under_platen::pressed_block("plastic block", block, top, {steel, fem::Material{platen_young, poisson}},
+                                           press, true);
 }
 
 /// The closed form: frictionless contact and free lateral faces leave both bodies in uniaxial
