@@ -68,7 +68,25 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
   std::vector<int64_t> owned_kernel_dims(_decomposition.end_owned() - first);
   parallel_for(first, _decomposition.end_owned(), setup_work, [&](int32_t s) {
     SubdomainOperators& op = _operators[s];
-    op.K_plus.setup(op.K, op.R, fixing_candidates[s - first], _method, "subdomain " + std::to_string(s), _precision);
+    const std::string what = "subdomain " + std::to_string(s);
+    try
+    {
+      op.K_plus.setup(op.K, op.R, fixing_candidates[s - first], _method, what, _precision);
+    }
+    catch (const Error&)
+    {
+      // A hyperelastic law beyond its convexity in E can make K_M indefinite: K_M again from
+      // the positive definite part of each point's tangent (fem/cell_element.cpp).
+      const fem::Assembler& assembler = *_assemblers[s];
+      if (!assembler.has_hyperelastic_cells())
+        throw;
+      la::SparseMatrix K_active =
+          la::principal_submatrix(assembler.stiffness(full_local(s, u_stacked), fem::StiffnessKind::material_definite),
+                                  _decomposition.subdomain(s).active_of_full, _decomposition.subdomain(s).n_dofs(),
+                                  la::Entries::lower_triangle);
+      op.K.swap(K_active);
+      op.K_plus.setup(op.K, op.R, fixing_candidates[s - first], _method, what, _precision);
+    }
     owned_kernel_dims[s - first] = op.R.cols();
   });
   // Kernel blocks of all subdomains, in subdomain order (the coarse space is replicated).

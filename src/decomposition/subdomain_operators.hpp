@@ -33,7 +33,8 @@ public:
                   la::FactorPrecision precision = la::FactorPrecision::double_precision);
 
   /// Assembles K_s at the stacked displacement `u` (material part K_M(u) in TL, K_0 when
-  /// u = 0 or linear), computes R_s from the coordinates X + u and factorizes; with
+  /// u = 0 or linear), computes R_s from the coordinates X + u and factorizes (a subdomain of
+  /// hyperelastic cells whose K_M is indefinite: StiffnessKind::material_definite); with
   /// `timers`, adds the wall time of the two to its "assembly" and "factorization".
   void update(const la::Vector& u_stacked, TimerTable* timers = nullptr);
 

@@ -175,6 +175,12 @@ Assembler::Assembler(const mesh::Mesh& mesh, AssemblyDomain domain, std::vector<
   _plastic_committed.resize(static_cast<size_t>(_plastic_offset.back()));
 }
 
+bool Assembler::has_hyperelastic_cells() const
+{
+  return std::ranges::any_of(_domain.cells,
+                             [&](int32_t c) { return _materials[_mesh.cell_body[c]].is_hyperelastic(); });
+}
+
 void Assembler::assemble(const la::Vector& u, StiffnessKind kind, la::SparseMatrix* K, la::Vector* f_int) const
 {
   assemble_cells(u, kind, K, f_int, nullptr);

@@ -76,6 +76,8 @@ public:
 
   /// True if some cell of the domain belongs to a plastic body.
   bool has_plastic_cells() const { return !_plastic_committed.empty(); }
+  /// True if some cell of the domain belongs to a hyperelastic body.
+  bool has_hyperelastic_cells() const;
   /// Makes the J2 states at displacement `u` the committed ones (the end of a converged increment).
   void commit_plastic_state(const la::Vector& u);
   /// The committed states of the quadrature points of the domain's k-th cell (empty: elastic).

@@ -118,6 +118,25 @@ void free_thickness_strain(const Eigen::Matrix<double, 6, 6>& D, double thermal,
   strain(2) = (thermal - D.row(2).dot(strain)) / D(2, 2);
 }
 
+/// A hyperelastic law is not convex in E (though polyconvex in F): a nearly incompressible one
+/// loses definiteness at a dilatation J - 1 of about mu_0 / K_0, and K_M can then be indefinite,
+/// which FETI's factorization of K_M refuses (K_M is symmetric positive semi-definite with the
+/// rigid-body kernel; the geometric stiffness is left out for the same reason).
+/// StiffnessKind::material_definite takes the nearest positive definite matrix instead, dS/dE
+/// with its negative eigenvalues raised to 1e-8 of the largest. Only where the factorization
+/// fails (decomposition/subdomain_operators.cpp): done at every point, or with the absolute
+/// values of the eigenvalues, it slowed the quad4 seal at K_0 / mu_0 = 500 from 1.2 s to 6 s and
+/// 22 s, and at 5000 it did not converge.
+void make_positive_definite(Eigen::Matrix<double, 6, 6>& tangent)
+{
+  if (Eigen::LLT<Eigen::Matrix<double, 6, 6>>(tangent).info() == Eigen::Success)
+    return;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(tangent);
+  Eigen::Matrix<double, 6, 1> values = eigen.eigenvalues();
+  values = values.cwiseMax(1e-8 * values.maxCoeff());
+  tangent = eigen.eigenvectors() * values.asDiagonal() * eigen.eigenvectors().transpose();
+}
+
 /// alpha E / (1 - 2 nu) Delta T at reference point xi (0 without a temperature change).
 double thermal_stress_at(mesh::CellKind type, const Material& material, const Eigen::VectorXd* temperature_change,
                          const Eigen::Vector3d& xi)
@@ -190,6 +209,8 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
       FETICON_ASSERT(kinematics == Kinematics::total_lagrangian,
                      "a hyperelastic cell needs total Lagrangian kinematics");
       S = hyperelastic_stress(material.hyperelastic, strain, kind != StiffnessKind::none ? &tangent : nullptr);
+      if (kind == StiffnessKind::material_definite)
+        make_positive_definite(tangent);
       C = &tangent;
     }
     else

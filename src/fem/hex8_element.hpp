@@ -29,6 +29,9 @@ enum class StiffnessKind
   none,     ///< internal force only
   material, ///< K_M (the FETI operator in TL: its kernel is the rigid modes of x = X + u)
   tangent,  ///< K_T = K_M + K_G (consistent tangent for full Newton)
+  /// K_M with each hyperelastic point's dS/dE replaced by its nearest positive definite matrix:
+  /// where K_M is indefinite (fem/cell_element.cpp, make_positive_definite)
+  material_definite,
 };
 
 /// Internal force and (optionally) stiffness of one hex8 cell.

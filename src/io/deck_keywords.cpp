@@ -553,7 +553,7 @@ private:
     law.d1 = real(line, neo_hooke ? 1 : 2, "D1");
     try
     {
-      law.check("material " + _material + ", *HYPERELASTIC");
+      law.check("material " + _material);
     }
     catch (const Error& e)
     {

@@ -63,6 +63,7 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what, FactorPre
   Decomposition& solver = *_impl->solver;
   // CHOLMOD picks simplicial (small subdomains: no BLAS call overhead) or supernodal.
   solver.setMode(Eigen::CholmodAuto);
+  solver.cholmod().print = 0; // a failure is reported by the checks below, in one line
   {
     // The ordering is METIS's (nodal_ordering.hpp; CHOLMOD's default also tries METIS when
     // AMD fills in much, as on 3D subdomains), and METIS draws from the C library's one

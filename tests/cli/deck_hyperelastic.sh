@@ -70,4 +70,35 @@ for run in runs:
         print(f"{run} rank(s), increment {k + 1}: platen force {f:.7g} N, closed form {e:.7g} N ({(f - e) / expected[-1]:+.1e})")
         assert abs(f - e) <= 1e-5 * expected[-1], "the force is not the closed form's"
 PY
+
+# Bad input: one line naming file and line (or the body), non-zero exit.
+expect_error() { # expect_error NAME PATTERN: the mutated deck fails with one line matching PATTERN
+  local name="$1" pattern="$2"
+  if "$feticon" run -q "$work/$name.inp" --output "$work/bad_$name" >"$work/$name.log" 2>&1; then
+    echo "$name: the run did not fail"
+    exit 1
+  fi
+  grep -q "$pattern" "$work/$name.log" || { echo "$name: no '$pattern' in:"; cat "$work/$name.log"; exit 1; }
+  [ "$(grep -c . "$work/$name.log")" -le 2 ] || { echo "$name: more than one line:"; cat "$work/$name.log"; exit 1; }
+}
+law='^5\.000000000000e+05, 4\.000000000000e-08$'
+grep -q "$law" "$deck" || { echo "the deck's *HYPERELASTIC line changed"; exit 1; }
+sed "s/$law/-5e5, 4e-8/" "$deck" >"$work/c10.inp"
+expect_error c10 "c10.inp:82: \*HYPERELASTIC: material M_BLOCK: C10 = -500000 must be positive"
+sed "s/$law/5e5, 0/" "$deck" >"$work/d1.inp"
+expect_error d1 "D1 = 0 must be positive"
+sed 's/^\*HYPERELASTIC, NEO HOOKE$/*HYPERELASTIC, OGDEN, N=1/' "$deck" >"$work/ogden.inp"
+expect_error ogden "parameter OGDEN is not implemented"
+sed 's/^\*HYPERELASTIC, NEO HOOKE$/*HYPERELASTIC, POLYNOMIAL, N=2/' "$deck" >"$work/n2.inp"
+expect_error n2 "N=2 is not implemented"
+sed 's/^\*HYPERELASTIC, NEO HOOKE$/*ELASTIC\n1e6, 0.45\n*HYPERELASTIC, NEO HOOKE/' "$deck" >"$work/both.inp"
+expect_error both "has \*ELASTIC or \*HYPERELASTIC already"
+sed "s/$law/5e5, 4e-8\n*PLASTIC\n1e5, 0/" "$deck" >"$work/plastic.inp"
+expect_error plastic "plasticity of a hyperelastic material is not implemented"
+if "$feticon" run -q "$deck" --output "$work/small" --set displacements=small >"$work/small.log" 2>&1; then
+  echo "small: the run did not fail"; exit 1
+fi
+grep -q "body 'B_BLOCK' is hyperelastic, which needs large displacements" "$work/small.log" \
+  || { cat "$work/small.log"; exit 1; }
+echo "bad input: seven one-line errors"
 echo "deck_hyperelastic: ok"

@@ -394,12 +394,13 @@ MM_MUTATORS = [number_replacer(EXTREMES), mm_header, mm_size]
 DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_friction.inp", "contactenergy_plastic.inp",
               "punch_tet10.inp",
               "punch_c3d20r.inp", "contactenergy_density.inp", "rings_cax4.inp", "tie_blocks.inp",
-              "change_friction.inp"]
+              "change_friction.inp", "rubber_block.inp"]
 # Seeds of our own (tests/data/fuzz/): a C3D10 deck, feticon's export of gmsh_tet10.yaml, and
 # a C3D20 / C3D20R one (reduced integration per cell), the same punch meshed with hex20; two
 # CAX4 rings shrink-fitted through a node-to-surface pair of element edges (issue 64). From
-# tests/data/calculix/: tie_blocks.inp, two blocks glued by a *TIE (issue 63), and
-# change_friction.inp, a block pushed along a base over three steps, *CHANGE FRICTION in the last.
+# tests/data/calculix/: tie_blocks.inp, two blocks glued by a *TIE (issue 63),
+# change_friction.inp, a block pushed along a base over three steps, *CHANGE FRICTION in the last,
+# and rubber_block.inp, a Neo-Hooke block compressed 30 % through contact (issue 66).
 FUZZ_FOLDER_DECKS = {"punch_tet10.inp", "punch_c3d20r.inp", "rings_cax4.inp"}
 # Seeds made from another by an edit: contact1 with Coulomb friction (*FRICTION after the
 # pressure-overclosure law, as tests/cli/deck_friction.sh adds it to CalculiX's decks).
@@ -443,6 +444,9 @@ DECK_KEYWORDS = [
     "*CHANGE FRICTION\n*FRICTION\n0.1", "*CHANGE FRICTION, INTERACTION=SI1\n*FRICTION\n1e300,1e300", "*TIE, NAME=T2, POSITION TOLERANCE=0.5\nSMAST,SSLAV", "*NODE PRINT, NSET=@", "*EL FILE\nS,E,XYZ",
     "*PLASTIC\n20,0\n10,0.001", "*PLASTIC\n20,0.01", "*PLASTIC\n20,0\n30,0", "*PLASTIC\n-1,0",
     "*PLASTIC, HARDENING=KINEMATIC\n20,0", "*PLASTIC\n20,0,20\n30,1,100", "*PLASTIC", "*PLASTIC\n1e30,0\n1e-30,1e30",
+    "*HYPERELASTIC, NEO HOOKE\n1e6,1e-8", "*HYPERELASTIC, MOONEY-RIVLIN\n1e6,1e5,1e-9", "*HYPERELASTIC\n-1,0,1e-8",
+    "*HYPERELASTIC, NEO HOOKE\n1e6,0", "*HYPERELASTIC, OGDEN, N=3\n1,2,3", "*HYPERELASTIC, NEO HOOKE\n1e300,1e-300",
+    "*HYPERELASTIC, NEO HOOKE\n1e-300,1e300", "*HYPERELASTIC, POLYNOMIAL, N=1\n1e6,1e6,1e-9,20\n1e6,1e6,1e-9,100",
     "*AMPLITUDE, NAME=A\n0,0,1,1", "*CLOAD, AMPLITUDE=A\n1,1,1", "*AMPLITUDE, NAME=A\n1,0,0,1",
     "*AMPLITUDE, NAME=A\n0", "*AMPLITUDE, NAME=A, TIME=TOTAL TIME, SHIFTX=1e300\n0,0,1,1e300",
     "*AMPLITUDE, NAME=A, SHIFTY=-1\n0,0,1,1,1,-1e30", "*STEP, AMPLITUDE=STEP", "*STEP, AMPLITUDE=@",
