@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The Python module (issue 67, item 4) from the build tree: examples/python/hertz_sweep.py runs
-# and draws its figure; feticon.run's summary is the command line's to the last digit (the same
+# and draws its figure; feticon.run's summary is the command line's to round-off (the same
 # library call, so the reference is the executable's summary.json of the same problem); a dict
 # problem and settings act as a problem file and --set do; a bad deck raises feticon.Error with
 # the executable's one-line message.
@@ -34,8 +34,12 @@ import feticon
 
 cli = json.load(open(sys.argv[1]))
 r = feticon.run(settings={"load_steps": 2, "hertz.refinement": 0.7})
+# The same library call in another process: equal to round-off, not to the last digit (the heap
+# addresses of the two processes differ, and with them where Eigen's vectorized sums start their
+# packets; measured 8.4e-14 on one machine, 0 on another).
 for key in ("p_peak_computed", "a_computed", "rms_error_over_p0"):
-    assert r.summary["hertz"][key] == cli["hertz"][key], (key, r.summary["hertz"][key], cli["hertz"][key])
+    a, b = r.summary["hertz"][key], cli["hertz"][key]
+    assert abs(a - b) <= 1e-12 * abs(b), (key, a, b)
 assert r.summary["qp"]["iterations"] == cli["qp"]["iterations"]
 n = cli["nodes"]
 assert r.coordinates.shape == (n, 3) and r.displacements.shape == (n, 3)
@@ -46,7 +50,7 @@ assert abs(force / cli["contact"]["total_normal_force"] - 1) < 1e-9, force
 
 # A dict is a problem file: the same problem as the settings above.
 d = feticon.run({"problem": "hertz", "load_steps": 2, "hertz": {"refinement": 0.7}})
-assert d.summary["hertz"]["p_peak_computed"] == cli["hertz"]["p_peak_computed"]
+assert d.summary["hertz"]["p_peak_computed"] == r.summary["hertz"]["p_peak_computed"]
 assert np.array_equal(d.displacements, r.displacements)
 
 try:
