@@ -247,26 +247,26 @@ private:
     }
 
     planar_section();
-    std::unordered_map<int32_t, int32_t> body_of_root;
+    // A body is the cells of one material in one connected set of cells: a connected set of
+    // several materials is several bodies that share the nodes of their interfaces (glued
+    // there as subdomains are).
+    std::map<std::string, int64_t> material_index;
+    for (const auto& [name, material] : _d.materials)
+      material_index.emplace(name, static_cast<int64_t>(material_index.size()));
+    std::unordered_map<int64_t, int32_t> body_of_part; // component root x materials + material
     std::vector<int32_t> body_section;
     for (int32_t c = 0; c < mesh.n_cells(); ++c)
     {
       const int32_t section = section_of_cell[c];
       FETICON_CHECK(section >= 0, "element " << _deck.element_labels[c] << " has no *SOLID SECTION (no material)");
-      const auto [it, added] =
-          body_of_root.emplace(components.find(mesh.cells[c][0]), static_cast<int32_t>(body_section.size()));
+      const int64_t part = static_cast<int64_t>(components.find(mesh.cells[c][0])) * std::ssize(material_index) +
+          material_index.at(_d.sections[section].material);
+      const auto [it, added] = body_of_part.emplace(part, static_cast<int32_t>(body_section.size()));
       if (added)
         body_section.push_back(section);
       const int32_t body = it->second;
       mesh.cell_body[c] = body; // section_of_cell[c] is read above, not after
       // body_section holds -1 - s once the body spans several sections (s its first).
-      const int32_t first_section = body_section[body] >= 0 ? body_section[body] : -1 - body_section[body];
-      const DeckSection& mine = _d.sections[section];
-      const DeckSection& first = _d.sections[first_section];
-      FETICON_CHECK(mine.material == first.material,
-                    "element " << _deck.element_labels[c] << " (material " << mine.material << ") shares nodes with "
-                               << "elements of material " << first.material << "; feticon takes one material per "
-                               << "body (a connected set of elements)");
       if (body_section[body] >= 0 && body_section[body] != section)
         body_section[body] = -1 - body_section[body]; // the body spans several sections
     }
