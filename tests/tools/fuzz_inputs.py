@@ -712,7 +712,9 @@ def deck_case(text, rng):
     if not lines:  # an earlier mutation (a truncation) emptied the file
         return None
     i = rng.randrange(len(lines))
-    lines[i] = lines[i].lower() if rng.random() < 0.5 else lines[i].swapcase()
+    changed = lines[i].lower() if rng.random() < 0.5 else lines[i].swapcase()
+    # Back to latin-1 (the deck's bytes): a junk byte may change case out of it ('\xff' to U+0178).
+    lines[i] = changed.encode("latin-1", "replace").decode("latin-1")
     return "".join(lines), f"line {i + 1} case changed"
 
 
