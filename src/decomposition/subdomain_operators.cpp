@@ -1,6 +1,7 @@
 #include "decomposition/subdomain_operators.hpp"
 
 #include "common/error.hpp"
+#include "common/log.hpp"
 #include "common/parallel.hpp"
 #include "common/timer.hpp"
 #include "decomposition/rigid_body_modes.hpp"
@@ -86,6 +87,8 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
                                   la::Entries::lower_triangle);
       op.K.swap(K_active);
       op.K_plus.setup(op.K, op.R, fixing_candidates[s - first], _method, what, _precision);
+      log::warning("a hyperelastic subdomain's K_M was indefinite (the law is not convex in E there): factored "
+                   "from each point's nearest positive definite tangent, a quasi-Newton step (docs/materials.md)");
     }
     owned_kernel_dims[s - first] = op.R.cols();
   });

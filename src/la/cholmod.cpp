@@ -99,6 +99,23 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what, FactorPre
                                                   "definite (a body or subdomain may be "
                                                   "unsupported)");
   }
+  // A simplicial factor is LDL' (CholmodAuto), which CHOLMOD computes for an indefinite matrix
+  // as well (only a zero pivot stops it): D > 0 is what makes A positive definite. (A
+  // hyperelastic subdomain's indefinite K_M passed here and made MPRGP fail; supernodal LL'
+  // fails by itself.)
+  if (const cholmod_factor& L = solver.factor(); !L.is_super && !L.is_ll)
+  {
+    const auto* p = static_cast<const int*>(L.p);
+    const auto* x = static_cast<const double*>(L.x);
+    for (size_t j = 0; j < L.n; ++j)
+      if (!(x[p[j]] > 0))
+      {
+        _impl.reset();
+        FETICON_CHECK(false,
+                      "Cholesky factorization of " << what << " failed: the matrix is not positive definite "
+                                                   << "(pivot " << j << " of " << L.n << ")");
+      }
+  }
   // For a supernodal factor CHOLMOD's lnz counts the entries.
   _impl->nonzeros = static_cast<long>(solver.cholmod().lnz);
   if (precision == FactorPrecision::single_precision && solver.factor().is_super)

@@ -4,7 +4,10 @@
 /// factorizations ordering at once must still give the same factor, bit for bit, or every
 /// threaded run's answer depends on timing (docs/distributed.md, determinism).
 
+#include "common/error.hpp"
 #include "la/cholmod.hpp"
+
+#include <Eigen/Eigenvalues>
 
 #include <gtest/gtest.h>
 
@@ -66,5 +69,52 @@ TEST(CholmodFactor, ConcurrentFactorizationsGiveTheSameFactorBitForBit)
       EXPECT_EQ((xi - reference).cwiseAbs().maxCoeff(), 0.0) << "round " << round;
     }
   }
+}
+} // namespace feticon::la
+
+namespace feticon::la
+{
+// Reference: the spectrum. The 2D grid Laplacian shifted by -0.5 has eigenvalues below zero
+// (its smallest is 4 - 4 cos(pi / (m + 1)) - 0.5 < 0 at m = 6), yet has no zero pivot, so
+// CHOLMOD's simplicial LDL' completes; the factor must still refuse it in one line, as the
+// shifted-up matrix it accepts. Small enough for CHOLMOD's simplicial factor.
+TEST(CholmodFactor, SimplicialFactorRefusesAnIndefiniteMatrix)
+{
+  const int m = 6;
+  std::vector<Triplet> t;
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j)
+    {
+      const int r = i * m + j;
+      t.emplace_back(r, r, 3.5);
+      if (i + 1 < m)
+      {
+        t.emplace_back(r, r + m, -1.0);
+        t.emplace_back(r + m, r, -1.0);
+      }
+      if (j + 1 < m)
+      {
+        t.emplace_back(r, r + 1, -1.0);
+        t.emplace_back(r + 1, r, -1.0);
+      }
+    }
+  SparseMatrix A(m * m, m * m);
+  A.setFromTriplets(t.begin(), t.end());
+  ASSERT_LT(Eigen::SelfAdjointEigenSolver<Matrix>(Matrix(A)).eigenvalues().minCoeff(), 0);
+  CholmodFactor factor;
+  try
+  {
+    factor.factorize(A, "the shifted Laplacian");
+    FAIL() << "an indefinite matrix was factored";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("the shifted Laplacian failed: the matrix is not positive definite"),
+              std::string::npos)
+        << e.what();
+  }
+  SparseMatrix shifted = A;
+  shifted.diagonal().array() += 1.0;
+  EXPECT_NO_THROW(factor.factorize(shifted, "the shifted Laplacian"));
 }
 } // namespace feticon::la
