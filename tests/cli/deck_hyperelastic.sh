@@ -72,15 +72,7 @@ for run in runs:
 PY
 
 # Bad input: one line naming file and line (or the body), non-zero exit.
-expect_error() { # expect_error NAME PATTERN: the mutated deck fails with one line matching PATTERN
-  local name="$1" pattern="$2"
-  if "$feticon" run -q "$work/$name.inp" --output "$work/bad_$name" >"$work/$name.log" 2>&1; then
-    echo "$name: the run did not fail"
-    exit 1
-  fi
-  grep -q "$pattern" "$work/$name.log" || { echo "$name: no '$pattern' in:"; cat "$work/$name.log"; exit 1; }
-  [ "$(grep -c . "$work/$name.log")" -le 2 ] || { echo "$name: more than one line:"; cat "$work/$name.log"; exit 1; }
-}
+source "$(dirname "$0")/../tools/expect_deck_error.sh" # expect_error NAME PATTERN
 law='^5\.000000000000e+05, 4\.000000000000e-08$'
 grep -q "$law" "$deck" || { echo "the deck's *HYPERELASTIC line changed"; exit 1; }
 sed "s/$law/-5e5, 4e-8/" "$deck" >"$work/c10.inp"

@@ -130,15 +130,7 @@ print(f"2 ranks: contact force {b:.12g} N, outer iterations as on one rank")
 PY
 
 deck="$work/deck/feticon.inp"
-expect_error() { # expect_error NAME PATTERN: the mutated deck fails with one line matching PATTERN
-  local name="$1" pattern="$2"
-  if "$feticon" run -q "$work/$name.inp" --output "$work/bad_$name" >"$work/$name.log" 2>&1; then
-    echo "$name: the run did not fail"
-    exit 1
-  fi
-  grep -q "$pattern" "$work/$name.log" || { echo "$name: no '$pattern' in:"; cat "$work/$name.log"; exit 1; }
-  [ "$(grep -c . "$work/$name.log")" -le 2 ] || { echo "$name: more than one line:"; cat "$work/$name.log"; exit 1; }
-}
+source "$(dirname "$0")/../tools/expect_deck_error.sh" # expect_error NAME PATTERN
 sed 's/^1\.250000000000e+09, 1\.000000000000e+00$/1.25e9, 0/' "$deck" >"$work/decreasing.inp"
 expect_error decreasing "equivalent plastic strains must increase"
 sed 's/^2\.500000000000e+08, 0\.000000000000e+00$/2.5e8, 0.01/' "$deck" >"$work/nonzero.inp"
