@@ -110,10 +110,11 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what, FactorPre
     for (size_t j = 0; j < L.n; ++j)
       if (!(x[p[j]] > 0))
       {
+        const size_t n = L.n; // L lives in _impl
         _impl.reset();
         FETICON_CHECK(false,
                       "Cholesky factorization of " << what << " failed: the matrix is not positive definite "
-                                                   << "(pivot " << j << " of " << L.n << ")");
+                                                   << "(pivot " << j << " of " << n << ")");
       }
   }
   // For a supernodal factor CHOLMOD's lnz counts the entries.
