@@ -78,7 +78,7 @@ int main(int argc, char** argv)
   keep_freed_memory();
   feticon::par::Environment mpi(argc, argv);
   feticon::log::set_rank(feticon::par::Communicator::world().rank());
-  CLI::App app{"feticon: frictionless contact of elastic bodies with large displacements "
+  CLI::App app{"feticon: contact of solid bodies with friction and large displacements "
                "by FETI domain decomposition (dual penalty + MPRGP)"};
   app.require_subcommand(1);
   feticon::app::register_run_command(app);

@@ -79,9 +79,9 @@ la::Vector linear_combination(const std::vector<std::pair<int, double>>& c, Term
 }
 } // namespace
 
-LoadHistory::LoadHistory(const Problem& problem, int default_steps, bool one_step_per_stage)
+LoadHistory::LoadHistory(const Problem& problem, const Rules& rules)
 {
-  FETICON_CHECK(default_steps >= 1, "load steps: " << default_steps << ", must be >= 1");
+  FETICON_CHECK(rules.default_steps >= 1, "load steps: " << rules.default_steps << ", must be >= 1");
   problem.validate();
   const ConstrainedDofs first = problem.all_constrained_dofs(0);
   _dofs = first.dofs;
@@ -104,7 +104,20 @@ LoadHistory::LoadHistory(const Problem& problem, int default_steps, bool one_ste
       stage.amplitudes.emplace_back(static_cast<int>(_terms.size()), problem.amplitudes.at(name));
       _terms.push_back({problem.external_force(k, name), problem.all_constrained_dofs(k, name).values});
     }
-    stage.steps = one_step_per_stage && stage.amplitudes.empty() ? 1 : step.increments.value_or(default_steps);
+    stage.grow = rules.grow;
+    if (rules.one_step_per_stage && stage.amplitudes.empty())
+    {
+      if (step.increments.value_or(1) > 1 || (step.automatic && step.automatic->initial < step.time))
+        _stages_in_one_step.push_back(static_cast<int>(k) + 1);
+    }
+    else if (step.increments)
+      stage.steps = *step.increments;
+    else if (step.automatic && !(k == 0 && rules.default_first))
+      stage.automatic = IncrementControl{std::min(1.0, step.automatic->initial / step.time),
+                                         std::min(1.0, step.automatic->minimum / step.time),
+                                         std::min(1.0, step.automatic->maximum / step.time)};
+    else
+      stage.steps = rules.default_steps;
     add_stage(std::move(stage));
     start_time += step.time;
   }
@@ -139,9 +152,68 @@ void LoadHistory::add_stage(Stage stage)
   _last_step.push_back((_last_step.empty() ? 0 : _last_step.back()) + stage.steps);
   // As a one-stage run's t = n / N, so that stage 1 reproduces its numbers exactly.
   std::vector<double>& fractions = _fractions.emplace_back();
-  for (int j = 1; j <= stage.steps; ++j)
-    fractions.push_back(static_cast<double>(j) / stage.steps);
+  if (!stage.automatic)
+    for (int j = 1; j <= stage.steps; ++j)
+      fractions.push_back(static_cast<double>(j) / stage.steps);
   _stages.push_back(std::move(stage));
+  if (const std::optional<IncrementControl>& a = _stages.back().automatic)
+  {
+    FETICON_CHECK(a->minimum > 0 && a->minimum <= a->initial && a->initial <= a->maximum,
+                  "step " << number << ": automatic increments need 0 < minimum <= initial <= maximum, given "
+                          << a->minimum << ", " << a->initial << ", " << a->maximum << " (fractions of its time)");
+    plan(_stages.size() - 1, 0, a->initial);
+  }
+}
+
+void LoadHistory::plan(size_t stage, size_t j, double increment)
+{
+  std::vector<double>& fractions = _fractions[stage];
+  fractions.resize(j);
+  const double at = j == 0 ? 0.0 : fractions.back();
+  // The rest in equal increments no larger than `increment` (k / n from the start, as a fixed
+  // stage's, so that an increment that never changes gives the fixed plan bit for bit).
+  const double n = std::max(1.0, std::ceil((1 - at) / increment - 1e-9));
+  FETICON_CHECK(j + n <= 100000,
+                "step " << stage + 1 << ": an increment of " << increment
+                        << " of its time makes more than 100000 load steps");
+  for (int k = 1; k < static_cast<int>(n); ++k)
+    fractions.push_back(at + (1 - at) * k / n);
+  fractions.push_back(1.0);
+  for (size_t s = stage; s < _last_step.size(); ++s)
+    _last_step[s] = (s == 0 ? 0 : _last_step[s - 1]) + static_cast<int>(_fractions[s].size());
+}
+
+bool LoadHistory::may_halve(int step) const
+{
+  const LoadPoint p = point(step);
+  const Stage& stage = _stages[p.stage - 1];
+  if (!stage.automatic)
+    return true;
+  const int j = step - last_step(p.stage - 1);
+  const double increment = p.fraction - (j == 1 ? 0.0 : _fractions[p.stage - 1][j - 2]);
+  return 0.5 * increment >= stage.automatic->minimum * (1 - 1e-9);
+}
+
+void LoadHistory::increment_done(int step, int iterations)
+{
+  const LoadPoint p = point(step);
+  Stage& stage = _stages[p.stage - 1];
+  if (!stage.automatic || p.fraction == 1.0)
+    return;
+  const int j = step - last_step(p.stage - 1);
+  const double increment = p.fraction - (j == 1 ? 0.0 : _fractions[p.stage - 1][j - 2]);
+  double factor = 1;
+  if (iterations > slow_iterations)
+    factor = 0.75;
+  else if (iterations <= easy_iterations && stage.easy_before && stage.grow)
+    factor = 1.5;
+  stage.easy_before = iterations <= easy_iterations;
+  const double next = std::clamp(factor * increment, stage.automatic->minimum, stage.automatic->maximum);
+  // A plan whose next increment is this one stands (one that never changes is the fixed plan);
+  // after a cutback its next is the other half, and the one after is planned at that size.
+  const std::vector<double>& fractions = _fractions[p.stage - 1];
+  if (std::abs(fractions[j] - p.fraction - next) > 1e-9 * next)
+    plan(p.stage - 1, j, next);
 }
 
 bool LoadHistory::has_amplitudes() const
@@ -166,11 +238,15 @@ LoadPoint LoadHistory::point(int step) const
   return {stage + 1, fraction, stage == 0 ? fraction : stage + fraction, s.start_time + fraction * s.period};
 }
 
-void LoadHistory::follow(const std::vector<double>& load_factors)
+void LoadHistory::follow(const std::vector<Done>& done)
 {
-  for (int i = 1; i <= static_cast<int>(load_factors.size()); ++i)
-    for (int cuts = 0; cuts < 64 && i <= n_steps() && load_factor(i) > load_factors[i - 1] + 1e-12 * i; ++cuts)
+  for (int i = 1; i <= static_cast<int>(done.size()) && i <= n_steps(); ++i)
+  {
+    for (int cuts = 0; cuts < 64 && i <= n_steps() && load_factor(i) > done[i - 1].load_factor + 1e-12 * i; ++cuts)
       split(i);
+    if (i <= n_steps())
+      increment_done(i, done[i - 1].iterations);
+  }
 }
 
 void LoadHistory::split(int step)
@@ -180,6 +256,7 @@ void LoadHistory::split(int step)
   const int j = step - last_step(p.stage - 1) - 1;
   const double before = j == 0 ? 0.0 : fractions[j - 1];
   fractions.insert(fractions.begin() + j, 0.5 * (before + fractions[j]));
+  _stages[p.stage - 1].easy_before = false; // CalculiX's istab = 0 after a cutback
   for (size_t s = p.stage - 1; s < _last_step.size(); ++s)
     ++_last_step[s];
 }

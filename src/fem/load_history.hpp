@@ -16,6 +16,16 @@
 /// them (combine()). For a step 1 without amplitudes the numbers are those of t * f and
 /// t * u_D bit for bit, so a one-step problem runs as it did before steps existed.
 ///
+/// A step with automatic increments (Step::automatic) starts with its initial increment; after
+/// every increment the run finishes (increment_done) the next is 1.5 times the last where it
+/// and the one before converged in at most easy_iterations outer iterations, 0.75 times where
+/// it took more than slow_iterations (CalculiX's I_G = 4, D_D = 1.5, I_L = 10, D_B = 0.75,
+/// checkconvergence.c), else the same, within the step's minimum and maximum; the rest of the
+/// step is planned in equal increments no larger (CalculiX instead shortens the last). A
+/// cutback halves an increment (split), not below the minimum, and the increments after it
+/// keep the halved size until they grow. A fixed step (Step::increments, or the default) keeps
+/// its plan.
+///
 /// A load without amplitude starts a step from the value of the loads without amplitude at the
 /// end of the step before: CalculiX's rule, as long as no load trades a ramp for an amplitude
 /// between steps (the deck reader refuses that). The prescribed DOF set is step 1's for the
@@ -32,6 +42,7 @@
 #include "la/types.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace feticon::fem
@@ -63,19 +74,30 @@ struct LoadTerm
 class LoadHistory
 {
 public:
-  /// @brief The history of `problem`.
-  /// @param[in] problem            its steps and amplitudes
-  /// @param[in] default_steps      load steps of a step that does not give its increments (the
-  ///                               solver's load_steps; 1 with small displacements)
-  /// @param[in] one_step_per_stage every stage without amplitudes in one load step whatever
-  ///                               its increments: small displacements, where frictionless
-  ///                               contact makes the answer at a stage's end independent of
-  ///                               the path (a stage with amplitudes keeps its increments:
-  ///                               their values in between are asked for)
+  /// How a problem's steps become load steps.
+  struct Rules
+  {
+    /// Load steps of a step that does not give its increments (the solver's load_steps; 1 with
+    /// small displacements).
+    int default_steps = 1;
+    /// Every stage without amplitudes in one load step whatever its increments: small
+    /// displacements, where frictionless contact makes the answer at a stage's end independent
+    /// of the path (a stage with amplitudes keeps its increments: their values in between are
+    /// asked for).
+    bool one_step_per_stage = false;
+    /// Step 1 in default_steps equal increments even where it has automatic ones (an explicit
+    /// load_steps setting).
+    bool default_first = false;
+    /// Automatic increments grow after easy ones; false keeps them at their initial size (cut
+    /// back where one fails): friction, whose slip reversals the QP does not yet pass from every
+    /// state (fricloop, docs/usage.md).
+    bool grow = true;
+  };
+  /// @brief The history of `problem` by `rules`.
   /// @throws feticon::Error naming the step and the set for a step that prescribes a
   ///         component step 1 leaves free or leaves free one step 1 prescribes, and for a
   ///         step's unknown or empty set, non-finite value, out-of-range node or increments < 1
-  LoadHistory(const Problem& problem, int default_steps, bool one_step_per_stage = false);
+  LoadHistory(const Problem& problem, const Rules& rules);
 
   /// @brief A history from its stage ends, all ramped (tests, the direct Newton reference).
   /// @param[in] dofs   the prescribed DOFs (sorted, as ConstrainedDofs::dofs)
@@ -113,10 +135,31 @@ public:
   /// as load step `step`, the old one follows as step + 1, and n_steps() grows by one.
   void split(int step);
 
-  /// @brief Splits steps as a run that cut back did (a restart of it): step i is halved while
-  /// its load factor is above load_factors[i - 1], so that the midpoints give the same numbers.
-  /// A factor that no halving reaches (another load_steps) is left for the caller's check.
-  void follow(const std::vector<double>& load_factors);
+  /// @brief Whether load step `step` may be halved: always in a fixed stage, in an automatic one
+  /// while half its increment is not below the step's minimum.
+  bool may_halve(int step) const;
+
+  /// @brief Load step `step` was finished in `iterations` outer iterations (a large number for
+  /// one accepted without converging): an automatic stage plans the rest of its steps at the
+  /// next increment (the file comment); a fixed one keeps its plan.
+  void increment_done(int step, int iterations);
+
+  /// One load step of a run, as follow() replays it.
+  struct Done
+  {
+    double load_factor;
+    int iterations; ///< as increment_done() had them
+  };
+  /// @brief Splits and plans steps as a run did (a restart of it): step i is halved while its
+  /// load factor is above done[i - 1]'s, so that the midpoints give the same numbers, then
+  /// finished as done[i - 1] was. A factor that no halving reaches (another load_steps) is
+  /// left for the caller's check.
+  void follow(const std::vector<Done>& done);
+
+  /// Outer iterations of an easy increment, and of a slow one (the file comment).
+  static constexpr int easy_iterations = 4, slow_iterations = 10;
+  /// The stages taken in one load step although they ask for more (one_step_per_stage), 1-based.
+  const std::vector<int>& stages_in_one_step() const { return _stages_in_one_step; }
 
   /// @brief The value at load step `step` of a quantity given per term, by the rule of the file
   /// comment (for the solvers' own layouts, e.g. forces split over subdomains).
@@ -134,7 +177,14 @@ private:
     int ramp_start = -1; ///< the term of R_{s-1}; -1 in stage 1
     int ramp_end = 0;    ///< the term of R_s
     std::vector<std::pair<int, Amplitude>> amplitudes;
+    /// Automatic increments, as fractions of the period; unset: a fixed plan.
+    std::optional<IncrementControl> automatic = {};
+    bool easy_before = false; ///< the last increment was easy (automatic stages)
+    bool grow = true;         ///< Rules::grow
   };
+  /// Plans the steps of stage `stage` (0-based) after its j-th at `increment` (a fraction)
+  /// until its end, and moves the later stages' step numbers.
+  void plan(size_t stage, size_t j, double increment);
   /// (term, coefficient) of load step `step`, in a fixed order.
   std::vector<std::pair<int, double>> coefficients(int step) const;
   void add_stage(Stage stage);
@@ -145,5 +195,6 @@ private:
   std::vector<int> _last_step; ///< cumulative: last load step of stage s at s - 1
   /// j / N_s of each load step of stage s at s - 1, with the midpoints of split steps.
   std::vector<std::vector<double>> _fractions;
+  std::vector<int> _stages_in_one_step;
 };
 } // namespace feticon::fem

@@ -63,6 +63,16 @@ inline constexpr double absolute_zero_celsius = -273.15;
 /// zero (absolute_zero_celsius).
 void check_temperature(double value, const std::string& what);
 
+/// Automatic increments of a step (a deck's *STATIC without DIRECT), in the step's time: the
+/// first increment, and the bounds the control keeps it within (fem::LoadHistory grows it after
+/// easy increments and halves it where one fails, as CalculiX does).
+struct IncrementControl
+{
+  double initial = 1;
+  double minimum = 1e-5;
+  double maximum = 1;
+};
+
 struct Step
 {
   std::vector<DirichletCondition> dirichlet;
@@ -80,8 +90,10 @@ struct Step
   /// interaction's, with the friction in force (deck *CHANGE FRICTION, which holds until
   /// another changes it).
   std::vector<std::pair<int32_t, Friction>> changed_friction = {};
-  /// Load steps of the step; unset: the solver's (settings load_steps).
+  /// Load steps of the step, equal increments; unset: automatic ones if `automatic` is set,
+  /// else the solver's (settings load_steps).
   std::optional<int> increments = {};
+  std::optional<IncrementControl> automatic = {};
   double time = 1;  ///< the step's time period (*STATIC's), for amplitudes and the outputs
   bool ramp = true; ///< loads without amplitude ramp over the step (false: applied at once)
 };

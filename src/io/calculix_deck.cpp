@@ -359,15 +359,30 @@ void write_ties(std::ostream& out, const fem::Problem& problem)
   }
 }
 
-/// The static *STEP with its increments (the step's own, else `options`'), *BOUNDARY (supports, plane strain) and *CLOAD (the
+/// *STEP and *STATIC of `step` in a time of 1: its automatic increments (as fractions of its
+/// time), or its fixed ones (the step's own, else `options`') as automatic ones whose maximum is
+/// the initial (CalculiX may cut them back, as feticon does, but not grow them).
+void write_step_start(std::ostream& out, const fem::Step& step, const CalculixOptions& options)
+{
+  out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "") << ", INC=10000\n*STATIC\n";
+  if (step.automatic && !step.increments)
+  {
+    const fem::IncrementControl& a = *step.automatic;
+    out << number(a.initial / step.time) << ", 1.0, " << number(a.minimum / step.time) << ", "
+        << number(a.maximum / step.time) << '\n';
+    return;
+  }
+  const double increment = 1.0 / step.increments.value_or(options.increments);
+  out << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
+}
+
+/// The static *STEP with its increments (write_step_start), *BOUNDARY (supports, plane strain) and *CLOAD (the
 /// external force, totals counted in `summary`).
 void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
                 CalculixDeckSummary& summary)
 {
   const mesh::Mesh& mesh = problem.mesh;
-  const double increment = 1.0 / problem.steps.front().increments.value_or(options.increments);
-  out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "") << ", INC=10000\n*STATIC\n"
-      << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
+  write_step_start(out, problem.steps.front(), options);
   out << "*BOUNDARY\n";
   for (const fem::DirichletCondition& d : problem.steps.front().dirichlet)
     for (int i = 0; i < 3; ++i)
@@ -393,14 +408,12 @@ void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOp
 }
 /// A later load stage as the next *STEP: the prescribed values that changed since the last
 /// stage (*BOUNDARY keeps the others) and the stage's whole external force (*CLOAD, OP=NEW
-/// drops the last step's loads), reached linearly in `increments` increments, as feticon's
+/// drops the last step's loads), reached linearly in its increments, as feticon's
 /// load history runs from one stage's end to the next.
-void write_later_step(std::ostream& out, const fem::LoadHistory& history, int stage, int increments,
+void write_later_step(std::ostream& out, const fem::LoadHistory& history, int stage, const fem::Step& step,
                       const CalculixOptions& options, CalculixDeckSummary& summary)
 {
-  const double increment = 1.0 / increments;
-  out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "") << ", INC=10000\n*STATIC\n"
-      << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
+  write_step_start(out, step, options);
   const int end = history.last_step(stage), before = history.last_step(stage - 1);
   const la::Vector values = history.prescribed_values(end), values_before = history.prescribed_values(before);
   out << "*BOUNDARY\n";
@@ -479,11 +492,10 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   output_requests();
   if (problem.steps.size() > 1)
   {
-    const fem::LoadHistory history(problem, options.increments);
+    const fem::LoadHistory history(problem, {.default_steps = options.increments});
     for (int stage = 2; stage <= history.n_stages(); ++stage)
     {
-      write_later_step(out, history, stage, problem.steps[stage - 1].increments.value_or(options.increments), options,
-                       summary);
+      write_later_step(out, history, stage, problem.steps[stage - 1], options, summary);
       write_temperatures(out, problem, problem.steps[stage - 1]);
       output_requests();
     }

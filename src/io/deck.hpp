@@ -50,9 +50,12 @@ struct DeckOutputRequest
 struct DeckStep
 {
   bool nlgeom = false;
-  int increments = 1; ///< load steps: total time / initial increment of *STATIC (rounded up)
-  double time = 1.0;  ///< the step's time (*STATIC), for CalculiX's total time in the outputs
-  bool ramp = true;   ///< *STEP, AMPLITUDE=RAMP (the default) or STEP
+  /// *STATIC, DIRECT: load steps of the step, total time / initial increment (rounded up).
+  std::optional<int> increments = {};
+  /// *STATIC without DIRECT: automatic increments (fem::LoadHistory).
+  std::optional<fem::IncrementControl> automatic = {};
+  double time = 1.0; ///< the step's time (*STATIC), for CalculiX's total time in the outputs
+  bool ramp = true;  ///< *STEP, AMPLITUDE=RAMP (the default) or STEP
   std::vector<DeckOutputRequest> outputs;
   std::string where;
 };
@@ -88,7 +91,8 @@ struct DeckOutline
   int64_t nodes = 0;
   int64_t elements = 0;
   bool nlgeom = false; ///< some *STEP has NLGEOM, or a material is hyperelastic (CalculiX turns it on)
-  int increments = 1;  ///< of the first *STATIC
+  /// Load steps of the first *STATIC if it is DIRECT (feticon's load_steps); unset: automatic.
+  std::optional<int> increments = {};
 };
 DeckOutline deck_outline(const std::filesystem::path& path);
 

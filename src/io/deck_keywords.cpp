@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <sstream>
 
 namespace feticon::io
 {
@@ -1251,6 +1252,27 @@ private:
     no_data();
   }
 
+  /// *STATIC's automatic increments: the initial one, the minimum (default: the initial or
+  /// 1e-5 of the step time, whichever is smaller) and the maximum (default: the step time), as
+  /// CalculiX defines them.
+  fem::IncrementControl automatic_increments(const DeckDataLine& line, double initial, double total) const
+  {
+    fem::IncrementControl c{initial, std::min(initial, 1e-5 * total), total};
+    if (line.fields.size() > 2 && !line.fields[2].empty())
+      c.minimum = real(line, 2, "minimum increment");
+    if (line.fields.size() > 3 && !line.fields[3].empty())
+      c.maximum = std::min(real(line, 3, "maximum increment"), total);
+    c.initial = std::min(initial, total);
+    if (!(c.minimum > 0) || c.minimum > c.initial || c.initial > c.maximum)
+    {
+      std::ostringstream what;
+      what << "the increments need 0 < minimum <= initial <= maximum, given " << c.minimum << ", " << c.initial << ", "
+           << c.maximum;
+      fail_at(line.where, what.str());
+    }
+    return c;
+  }
+
   void static_procedure()
   {
     known_parameters({"DIRECT", "SOLVER", "TIME RESET", "TOTAL TIME"});
@@ -1266,16 +1288,18 @@ private:
     const double total = line.fields.size() > 1 && !line.fields[1].empty() ? real(line, 1, "step time") : 1.0;
     if (!(initial > 0) || !(total > 0))
       fail_at(line.where, "the initial increment and the step time must be positive");
-    const double increments = std::ceil(total / initial - 1e-9);
-    if (increments > 1000)
-      fail_at(line.where,
-              "the step asks for " + std::to_string(static_cast<int64_t>(increments)) +
-                  " increments; feticon takes at most 1000 load steps per step");
-    _step.increments = std::max(1, static_cast<int>(increments));
     _step.time = total;
-    if (!_keyword.has("DIRECT"))
-      _data.warn(where() + ": feticon takes the initial increment as fixed (" + std::to_string(_step.increments) +
-                 " load steps); CalculiX adapts it");
+    if (_keyword.has("DIRECT"))
+    {
+      const double increments = std::ceil(total / initial - 1e-9);
+      if (increments > 100000)
+        fail_at(line.where,
+                "the step asks for " + std::to_string(static_cast<int64_t>(increments)) +
+                    " fixed increments (DIRECT); feticon takes at most 100000 load steps per step");
+      _step.increments = std::max(1, static_cast<int>(increments));
+    }
+    else
+      _step.automatic = automatic_increments(line, initial, total);
     if (_tokens.next_data(line))
       fail_at(line.where, "*STATIC takes one data line");
   }

@@ -676,9 +676,11 @@ private:
       step.changed_friction = changed_friction(state.frictions);
       step.time = _deck.steps[k].time;
       step.ramp = _deck.steps[k].ramp;
-      // Step 1 takes the solver's load_steps, which the first *STATIC sets (--set may change it).
+      // Step 1 takes the solver's load_steps, which a first *STATIC, DIRECT sets (--set may
+      // change it, also for automatic increments: LoadHistory's default_first).
       if (k > 0)
         step.increments = _deck.steps[k].increments;
+      step.automatic = _deck.steps[k].automatic;
     }
   }
 
@@ -767,16 +769,19 @@ Deck read_deck(const std::filesystem::path& path, const DeckOutline& outline)
 
 namespace
 {
-/// The number of load steps of the first *STATIC's data line (1 if it has none).
-int outline_increments(DeckTokenizer& tokens)
+/// The number of load steps of the first *STATIC's data line if it is DIRECT (1 if it has
+/// none); unset for automatic increments.
+std::optional<int> outline_increments(DeckTokenizer& tokens, const DeckKeyword& keyword)
 {
+  if (!keyword.has("DIRECT"))
+    return std::nullopt;
   DeckDataLine line;
   if (!tokens.next_data(line) || line.fields.empty())
     return 1;
   // The reader checks these numbers; here a malformed one leaves the default.
   const double initial = std::strtod(std::string(line.fields[0]).c_str(), nullptr);
   const double total = line.fields.size() > 1 ? std::strtod(std::string(line.fields[1]).c_str(), nullptr) : 1.0;
-  if (initial > 0 && total > 0 && total / initial <= 1000)
+  if (initial > 0 && total > 0 && total / initial <= 100000)
     return std::max(1, static_cast<int>(std::ceil(total / initial - 1e-9)));
   return 1;
 }
@@ -804,7 +809,7 @@ DeckOutline deck_outline(const std::filesystem::path& path)
     else if (keyword.name == "STATIC" && first_step)
     {
       first_step = false;
-      out.increments = outline_increments(tokens);
+      out.increments = outline_increments(tokens, keyword);
     }
   }
   return out;

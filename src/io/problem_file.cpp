@@ -246,7 +246,8 @@ void settings_of_deck(ProblemFile& file, const std::filesystem::path& path)
   file.root["mesh"]["file"] = file.deck.string();
   const std::string source = path.string();
   file.settings.set("displacements", outline.nlgeom ? "large" : "small", source);
-  file.settings.set("load_steps", std::to_string(outline.increments), source);
+  if (outline.increments) // a first *STATIC, DIRECT; automatic increments are the deck's step 1's
+    file.settings.set("load_steps", std::to_string(*outline.increments), source);
 }
 
 /// The friction of a contact pair of the problem file, `friction: {model: coulomb, coefficient:

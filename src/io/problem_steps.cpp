@@ -227,12 +227,32 @@ void loads(const YAML::Node& list, const std::string& where, const ProblemReader
   }
 }
 
+/// A step's `increment: {initial, minimum, maximum}` (in its time; the minimum defaults to the
+/// initial or 1e-5 of the step time, whichever is smaller, the maximum to the step time, as a
+/// deck's *STATIC).
+fem::IncrementControl increment_control(const YAML::Node& node, const std::string& key, const ProblemReader& r,
+                                        double time)
+{
+  FETICON_CHECK(node.IsMap() && node["initial"],
+                r.source << ": " << key << " must be a map {initial: DT, minimum: DT, maximum: DT}");
+  r.only_keys(node, key, {"initial", "minimum", "maximum"});
+  fem::IncrementControl c;
+  c.initial = r.number(node["initial"], key + ".initial");
+  c.minimum = node["minimum"] ? r.number(node["minimum"], key + ".minimum") : std::min(c.initial, 1e-5 * time);
+  c.maximum = node["maximum"] ? r.number(node["maximum"], key + ".maximum") : time;
+  FETICON_CHECK(c.minimum > 0 && c.minimum <= c.initial && c.initial <= c.maximum && c.initial <= time,
+                r.source << ": " << key
+                         << " needs 0 < minimum <= initial <= maximum and initial <= the step's time, given "
+                         << c.minimum << ", " << c.initial << ", " << c.maximum << " (time " << time << ")");
+  return c;
+}
+
 /// One entry of `steps:` over `step`, which holds the step before (what the entry does not give
 /// carries over, as in CalculiX's steps).
 void step_entry(const YAML::Node& entry, const std::string& key, const ProblemReader& r, fem::Problem& p,
                 fem::Step& step)
 {
-  r.only_keys(entry, key, {"supports", "loads", "temperatures", "increments", "time", "ramp"});
+  r.only_keys(entry, key, {"supports", "loads", "temperatures", "increments", "increment", "time", "ramp"});
   if (entry["supports"])
     step.dirichlet = supports(entry["supports"], key + ".supports", r, p);
   if (entry["temperatures"])
@@ -249,6 +269,13 @@ void step_entry(const YAML::Node& entry, const std::string& key, const ProblemRe
   }
   step.time = entry["time"] ? r.number(entry["time"], key + ".time") : 1.0;
   FETICON_CHECK(step.time > 0, r.source << ": " << key << ".time = " << step.time << " must be positive");
+  step.automatic.reset();
+  if (entry["increment"])
+  {
+    FETICON_CHECK(!step.increments,
+                  r.source << ": " << key << " gives both increments (fixed) and increment (automatic)");
+    step.automatic = increment_control(entry["increment"], key + ".increment", r, step.time);
+  }
   step.ramp = true;
   if (entry["ramp"])
   {

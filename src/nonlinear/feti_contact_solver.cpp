@@ -234,7 +234,7 @@ public:
   void end_load_step(const LoadStep& record) override;
   std::string format(const OuterIteration& it) const override { return format_iteration(it); }
   bool cut_back(int step) override;
-  const fem::LoadHistory& history() const { return _history; }
+  fem::LoadHistory& history() { return _history; }
 
 private:
   /// K, R and their factors at the current u; the preconditioner and explicit blocks with them.
@@ -426,6 +426,10 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
       _dirichlet(problem.all_constrained_dofs()), _temperatures(problem)
 {
   _out.n_subdomains = _decomp->n_subdomains();
+  for (const int stage : _history.stages_in_one_step())
+    log::info("step " + std::to_string(stage) +
+              " asks for several increments and takes one: with small displacements, elastic bodies and no "
+              "friction its answer does not depend on the load path");
   if (!comm.serial())
   {
     for (int32_t s = _decomp->first_owned(); s < _decomp->end_owned(); ++s)
@@ -601,10 +605,10 @@ int FetiContactSolve::restore(const ContactSolution& previous)
   FETICON_CHECK(r.u_stacked.size() == _decomp->n_primal_global(),
                 "restart: the checkpoint has " << r.u_stacked.size() << " unknowns, this problem "
                                                << _decomp->n_primal_global() << " (different mesh or subdomains?)");
-  std::vector<double> completed_factors; // of a run that cut steps back: the same splits
+  std::vector<fem::LoadHistory::Done> done; // of a run that cut steps back or grew them: the same plan
   for (int i = 0; i < r.completed_steps && i < static_cast<int>(previous.steps.size()); ++i)
-    completed_factors.push_back(previous.steps[i].load_factor);
-  _history.follow(completed_factors);
+    done.push_back(done_of(previous.steps[i]));
+  _history.follow(done);
   FETICON_CHECK(r.completed_steps < _history.n_steps(),
                 "restart: all " << _history.n_steps() << " load steps are already done");
   // The step numbers name points of the load history: a checkpoint of other load_steps or

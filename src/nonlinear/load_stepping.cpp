@@ -6,10 +6,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
 
 namespace feticon::nonlinear
 {
-void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int first_step, int max_outer_iterations,
+fem::LoadHistory::Done done_of(const LoadStep& record)
+{
+  return {record.load_factor, record.converged ? record.outer_iterations : std::numeric_limits<int>::max()};
+}
+
+void run_load_steps(LoadStepPhases& phases, fem::LoadHistory& history, int first_step, int max_outer_iterations,
                     int max_cutbacks, ContactSolution& out, const StepCallback& on_step)
 {
   // Warnings after the loop (post-processing) are not the last iteration's.
@@ -50,7 +56,8 @@ void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int
       retry = outcome.retry;
     }
     const bool unconverged = !record.converged && record.floor.empty() && failure.empty();
-    if ((unconverged || retry) && cutbacks_in_a_row < max_cutbacks && phases.cut_back(step))
+    const bool may_halve = history.may_halve(step);
+    if ((unconverged || retry) && cutbacks_in_a_row < max_cutbacks && may_halve && phases.cut_back(step))
     {
       ++cutbacks_in_a_row;
       std::string why =
@@ -84,12 +91,14 @@ void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int
     }
     else if (!record.converged)
     {
-      char reason[160];
-      std::snprintf(reason, sizeof reason, "load step %d did not converge in %d outer iterations (|du|/|u| = %g)", step,
-                    max_outer_iterations, record.displacement_change);
+      char reason[220];
+      std::snprintf(reason, sizeof reason, "load step %d did not converge in %d outer iterations (|du|/|u| = %g)%s",
+                    step, max_outer_iterations, record.displacement_change,
+                    may_halve ? "" : "; half its increment is below the step's minimum");
       out.reason = reason;
       return;
     }
+    history.increment_done(step, done_of(record).iterations);
     if (on_step)
       on_step(step, out);
   }

@@ -70,15 +70,21 @@ public:
   }
 };
 
+/// A finished load step as its history's increment control takes it (fem::LoadHistory::Done):
+/// its outer iterations, or the largest int for one accepted without converging (at a floor).
+fem::LoadHistory::Done done_of(const LoadStep& record);
+
 /// Runs load steps first_step, ..., history.n_steps() of `phases` at the history's load
 /// factors (LoadStep::load_factor) with at most max_outer_iterations outer iterations each,
 /// appending to out.history and out.steps; `on_step` after every converged step (or one ended
 /// at a floor, which goes into out.warnings). A step whose outer loop diverges or does not
 /// converge is cut back (LoadStepPhases::cut_back, which splits it in the history that
-/// `phases` owns) up to max_cutbacks times in a row, as CalculiX and Abaqus cut an increment
-/// back; each cutback goes into out.warnings, and the failed attempt's iterations stay in
-/// out.history (work done). Ends with out.completed (and out.converged if every step met the
+/// `phases` owns: the same object as `history`) up to max_cutbacks times in a row and not below
+/// an automatic step's minimum increment, as CalculiX and Abaqus cut an increment back; each
+/// cutback goes into out.warnings, and the failed attempt's iterations stay in out.history
+/// (work done). Every finished step goes to history.increment_done (automatic increments
+/// grow after easy ones). Ends with out.completed (and out.converged if every step met the
 /// stopping test), or out.reason saying where and why it stopped.
-void run_load_steps(LoadStepPhases& phases, const fem::LoadHistory& history, int first_step, int max_outer_iterations,
+void run_load_steps(LoadStepPhases& phases, fem::LoadHistory& history, int first_step, int max_outer_iterations,
                     int max_cutbacks, ContactSolution& out, const StepCallback& on_step = {});
 } // namespace feticon::nonlinear

@@ -29,7 +29,7 @@ public:
   void end_load_step(const LoadStep&) override { _out.u = _u; }
   std::string format(const OuterIteration& it) const override;
   bool cut_back(int step) override;
-  const fem::LoadHistory& history() const { return _history; }
+  fem::LoadHistory& history() { return _history; }
 
 private:
   /// Small displacements: the penalized system for the total u.

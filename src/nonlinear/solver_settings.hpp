@@ -96,11 +96,21 @@ struct SolverSettings
   /// step does not give its increments; with small displacements and elastic bodies each step
   /// without amplitudes in one load step (frictionless contact of linear elastic bodies: the
   /// answer at a step's end does not depend on the path, so one QP per step gives CalculiX's
-  /// per-step results), a step with amplitudes in its increments (load_steps where it gives none).
+  /// per-step results), a step with amplitudes or friction in its increments (where it gives none,
+  /// load_steps, auto: one).
+  /// A step's automatic increments (a deck's *STATIC) are its own, but an explicit load_steps
+  /// runs step 1 in load_steps equal ones.
   fem::LoadHistory load_history(const fem::Problem& problem) const
   {
     const bool linear = path_independent(problem);
-    return fem::LoadHistory(problem, linear ? load_steps : steps_of(problem), linear);
+    const bool friction = has_friction(problem);
+    return fem::LoadHistory(problem,
+                            {.default_steps = !linear ? steps_of(problem)
+                                 : auto_load_steps    ? 1
+                                                      : load_steps,
+                             .one_step_per_stage = linear && !friction,
+                             .default_first = !auto_load_steps,
+                             .grow = !friction});
   }
   /// Load steps of the whole run on `problem` (load_history(problem).n_steps()).
   int steps(const fem::Problem& problem) const { return load_history(problem).n_steps(); }

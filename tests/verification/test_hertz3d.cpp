@@ -70,7 +70,7 @@ TEST(Hertz3d, HalfModelOfATangentialLoadCarriesItWithoutMoment)
   for (int32_t n : problem.mesh.face_set_nodes("sphere_contact"))
     x_min = std::min(x_min, problem.mesh.nodes(n, 0));
   EXPECT_LT(x_min, -0.001); // both halves of the contact zone
-  const fem::LoadHistory history(problem, 1, true);
+  const fem::LoadHistory history(problem, {.default_steps = 1, .one_step_per_stage = true});
   ASSERT_EQ(history.n_steps(), 2);
   for (int step : {1, 2})
   {

@@ -439,9 +439,10 @@ TEST(LoadStages, DirectNewtonFollowsTheHistory)
   nonlinear::DirectNewtonOptions options;
   options.load_steps = 3;
   la::Vector u_one = la::Vector::Zero(3 * problem.mesh.n_nodes());
-  const auto one = nonlinear::solve_direct_newton(assembler, fem::LoadHistory(problem, 3), u_one, options);
+  const auto one =
+      nonlinear::solve_direct_newton(assembler, fem::LoadHistory(problem, {.default_steps = 3}), u_one, options);
   la::Vector u_two = la::Vector::Zero(3 * problem.mesh.n_nodes());
-  const fem::LoadHistory history(staged, 4);
+  const fem::LoadHistory history(staged, {.default_steps = 4});
   ASSERT_EQ(history.n_steps(), 6);
   const auto two = nonlinear::solve_direct_newton(assembler, history, u_two, options);
   ASSERT_TRUE(one.converged && two.converged);

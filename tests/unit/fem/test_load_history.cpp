@@ -60,7 +60,7 @@ std::string error_of(const fem::Problem& problem)
 {
   try
   {
-    const fem::LoadHistory history(problem, 1);
+    const fem::LoadHistory history(problem, {.default_steps = 1});
     (void)history;
   }
   catch (const Error& e)
@@ -77,7 +77,7 @@ TEST(LoadHistory, OneStageIsTTimesTheLoadBitForBit)
 {
   const fem::Problem problem = box_problem(3e6, 1e-3);
   const int N = 7;
-  const fem::LoadHistory history(problem, N);
+  const fem::LoadHistory history(problem, {.default_steps = N});
   ASSERT_EQ(history.n_stages(), 1);
   ASSERT_EQ(history.n_steps(), N);
   const la::Vector f = problem.external_force();
@@ -107,7 +107,7 @@ TEST(LoadHistory, PiecewiseLinearThroughTheStageEnds)
 {
   fem::Problem problem = box_problem(1e6, 1e-3);
   set_later(problem, {box_stage(3e6, -1e-3, 4), box_stage(0, 0, 1)});
-  const fem::LoadHistory history(problem, 2);
+  const fem::LoadHistory history(problem, {.default_steps = 2});
   ASSERT_EQ(history.n_stages(), 3);
   ASSERT_EQ(history.n_steps(), 7);
   EXPECT_EQ(history.last_step(0), 0);
@@ -148,7 +148,7 @@ TEST(LoadHistory, OneStepPerStage)
 {
   fem::Problem problem = box_problem(1e6, 1e-3);
   set_later(problem, {box_stage(3e6, -1e-3, 4), box_stage(0, 0, 5)});
-  const fem::LoadHistory history(problem, 1, true);
+  const fem::LoadHistory history(problem, {.default_steps = 1, .one_step_per_stage = true});
   ASSERT_EQ(history.n_steps(), 3);
   for (int n = 1; n <= 3; ++n)
   {
@@ -167,7 +167,7 @@ TEST(LoadHistory, EliminatedComponentsBelongToEveryStage)
   fem::Step stage = box_stage(2e6, 0, 1);
   stage.dirichlet = {{"xmin", {-1e-3, std::nullopt, std::nullopt}}};
   set_later(problem, {stage});
-  const fem::LoadHistory history(problem, 1);
+  const fem::LoadHistory history(problem, {.default_steps = 1});
   EXPECT_EQ(history.dofs(), problem.all_constrained_dofs().dofs);
   const la::Vector values = history.prescribed_values(2);
   for (size_t k = 0; k < history.dofs().size(); ++k)
@@ -238,7 +238,7 @@ TEST(LoadHistory, CombinesAnyQuantityGivenPerTerm)
 {
   fem::Problem problem = box_problem(1e6, 1e-3);
   set_later(problem, {box_stage(3e6, -1e-3, 4)});
-  const fem::LoadHistory history(problem, 2);
+  const fem::LoadHistory history(problem, {.default_steps = 2});
   const std::vector<la::Vector> terms = {2 * history.terms()[0].force, 2 * history.terms()[1].force};
   for (int n = 1; n <= history.n_steps(); ++n)
     EXPECT_LE((history.combine(n, terms) - 2 * history.external_force(n)).norm(), 1e-15 * terms[1].norm());
@@ -253,7 +253,7 @@ TEST(LoadHistory, SplitHalvesAStepsIncrement)
 {
   fem::Problem problem = box_problem(1e6, 1e-3);
   set_later(problem, {box_stage(3e6, -1e-3, 4)});
-  fem::LoadHistory history(problem, 2);
+  fem::LoadHistory history(problem, {.default_steps = 2});
   const fem::LoadHistory unsplit = history;
   history.split(2);
   history.split(4);
@@ -279,14 +279,14 @@ TEST(LoadHistory, SplitHalvesAStepsIncrement)
 TEST(LoadHistory, FollowReproducesTheSplitsOfACutBackRun)
 {
   fem::Problem problem = box_problem(1e6, 1e-3);
-  fem::LoadHistory history(problem, 1);
-  history.follow({0.25, 0.375, 0.5});
+  fem::LoadHistory history(problem, {.default_steps = 1});
+  history.follow({{0.25, 2}, {0.375, 2}, {0.5, 2}}); // iterations: a fixed plan ignores them
   const std::vector<double> t = {0.25, 0.375, 0.5, 1.0};
   ASSERT_EQ(history.n_steps(), 4);
   for (int n = 1; n <= 4; ++n)
     EXPECT_EQ(history.load_factor(n), t[n - 1]) << "step " << n;
-  fem::LoadHistory other(problem, 1);
-  other.follow({1.0 / 3});
+  fem::LoadHistory other(problem, {.default_steps = 1});
+  other.follow({{1.0 / 3, 2}});
   EXPECT_NE(other.load_factor(1), 1.0 / 3);
 }
 
@@ -309,8 +309,9 @@ TEST(LoadHistory, AmplitudesAndStepLoadsByHand)
   fem::Step third = box_stage(2e6, 5e-4, 2);
   third.ramp = false;
   set_later(problem, {second, third});
-  const fem::LoadHistory history(problem, 1, true); // amplitudes keep their increments
-  ASSERT_EQ(history.n_steps(), 4 + 2 + 1);          // step 3 has none: one load step
+  const fem::LoadHistory history(problem,
+                                 {.default_steps = 1, .one_step_per_stage = true}); // amplitudes keep their increments
+  ASSERT_EQ(history.n_steps(), 4 + 2 + 1);                                          // step 3 has none: one load step
   EXPECT_TRUE(history.has_amplitudes());
   const std::vector<double> time = {0.5, 1, 1.5, 2, 2.5, 3, 4};
   const std::vector<double> p = {0.5e6, 1e6, 0, -1e6, 1.5e6, 3e6, 2e6};
@@ -326,7 +327,7 @@ TEST(LoadHistory, AmplitudesAndStepLoadsByHand)
       EXPECT_NEAR(values(static_cast<la::Index>(k)), history.dofs()[k] % 3 == 2 ? d[n - 1] : 0.0, 1e-18);
   }
   // Without one_step_per_stage the STEP stage takes its 2 increments, both at its values.
-  const fem::LoadHistory every(problem, 1);
+  const fem::LoadHistory every(problem, {.default_steps = 1});
   ASSERT_EQ(every.n_steps(), 8);
   EXPECT_NEAR(total_x(every.external_force(7)), 2e6, 1e-9 * 2e6);
   EXPECT_TRUE(identical(every.external_force(7), every.external_force(8)));
@@ -367,4 +368,106 @@ TEST(LoadHistory, AmplitudeTableAndItsErrors)
   problem.steps.front().tractions[0].amplitude = "NONE";
   EXPECT_NE(error_of(problem).find("names amplitude 'NONE', which is not defined"), std::string::npos)
       << error_of(problem);
+}
+
+namespace
+{
+/// box_problem whose step 1 has automatic increments {initial, minimum, maximum}.
+fem::Problem automatic_problem(double initial, double minimum, double maximum)
+{
+  fem::Problem problem = box_problem(1e6, 1e-3);
+  problem.steps.front().automatic = fem::IncrementControl{initial, minimum, maximum};
+  return problem;
+}
+
+std::vector<double> load_factors(const fem::LoadHistory& history)
+{
+  std::vector<double> t;
+  for (int n = 1; n <= history.n_steps(); ++n)
+    t.push_back(history.load_factor(n));
+  return t;
+}
+} // namespace
+
+// Reference: the rule of load_history.hpp's file comment by hand. Initial 0.1: ten steps,
+// bit for bit the fixed plan of 10. Two easy increments (<= 4 outer iterations) grow the next
+// to 0.15: the remaining 0.8 in ceil(0.8 / 0.15) = 6 equal ones; a slow one (> 10) shrinks it
+// to 0.75 * 0.8 / 6 = 0.1: the remaining 2/3 in 7; easy ones then grow it to the maximum 0.4.
+TEST(LoadHistory, AutomaticIncrementsGrowAndShrinkByHand)
+{
+  fem::Problem problem = automatic_problem(0.1, 0.01, 0.4);
+  fem::LoadHistory history(problem, {});
+  fem::Problem fixed = box_problem(1e6, 1e-3);
+  fixed.steps.front().increments = 10;
+  EXPECT_EQ(load_factors(history), load_factors(fem::LoadHistory(fixed, {})));
+  history.increment_done(1, 3); // easy, but the first: the same size
+  EXPECT_EQ(history.n_steps(), 10);
+  history.increment_done(2, 4); // the second easy one in a row
+  ASSERT_EQ(history.n_steps(), 2 + 6);
+  EXPECT_DOUBLE_EQ(history.load_factor(3), 0.2 + 0.8 / 6);
+  history.increment_done(3, 11);
+  ASSERT_EQ(history.n_steps(), 3 + 7);
+  EXPECT_DOUBLE_EQ(history.load_factor(4) - history.load_factor(3), (1 - history.load_factor(3)) / 7);
+  for (int n = 4; n < history.n_steps(); ++n)
+  {
+    history.increment_done(n, 2);
+    EXPECT_LE(history.load_factor(n + 1) - history.load_factor(n), 0.4 * (1 + 1e-12)) << "step " << n;
+  }
+  EXPECT_EQ(history.load_factor(history.n_steps()), 1.0);
+  EXPECT_LT(history.n_steps(), 10);
+}
+
+// Reference: the halving rule with minimum 0.01: 0.1 halves to 0.05, 0.025, 0.0125, and
+// stops there (half of it, 0.00625, is below the minimum). A step with maximum = initial and
+// one with growth off (friction, Rules::grow) keep the fixed plan after easy increments.
+TEST(LoadHistory, AutomaticIncrementsHalveDownToTheMinimumAndGrowOnlyWhereAllowed)
+{
+  fem::LoadHistory history(automatic_problem(0.1, 0.01, 1), {});
+  for (const double t : {0.05, 0.025, 0.0125})
+  {
+    ASSERT_TRUE(history.may_halve(1));
+    history.split(1);
+    EXPECT_DOUBLE_EQ(history.load_factor(1), t);
+  }
+  EXPECT_FALSE(history.may_halve(1));
+  const fem::Problem problem = automatic_problem(0.1, 0.01, 1);
+  fem::LoadHistory capped(automatic_problem(0.1, 0.01, 0.1), {});
+  fem::LoadHistory frozen(problem, {.grow = false});
+  const std::vector<double> fixed = load_factors(capped);
+  for (int n = 1; n < 10; ++n)
+  {
+    capped.increment_done(n, 1);
+    frozen.increment_done(n, 1);
+  }
+  EXPECT_EQ(load_factors(capped), fixed);
+  EXPECT_EQ(load_factors(frozen), fixed);
+}
+
+// Reference: a run's own history. A history that grew, shrank and was cut back is rebuilt by
+// follow() from its (load factor, iterations) list with the same load factors bit for bit (a
+// restart continues on the same plan).
+TEST(LoadHistory, FollowReplaysAnAutomaticRunBitForBit)
+{
+  const fem::Problem problem = automatic_problem(0.1, 1e-3, 0.5);
+  fem::LoadHistory run(problem, {});
+  std::vector<fem::LoadHistory::Done> done;
+  const std::vector<int> iterations = {2, 3, 2, 15, 12, 3, 3, 2};
+  for (int n = 1; n <= static_cast<int>(iterations.size()) && n < run.n_steps(); ++n)
+  {
+    if (iterations[n - 1] == 15) // did not converge: cut back and redone
+      run.split(n);
+    done.push_back({run.load_factor(n), iterations[n - 1] == 15 ? 5 : iterations[n - 1]});
+    run.increment_done(n, done.back().iterations);
+  }
+  fem::LoadHistory restarted(problem, {});
+  restarted.follow(done);
+  EXPECT_EQ(load_factors(restarted), load_factors(run));
+}
+
+// Reference: the check of add_stage: 0 < minimum <= initial <= maximum, named by step.
+TEST(LoadHistory, AutomaticIncrementsOutOfOrderAreRefused)
+{
+  EXPECT_NE(error_of(automatic_problem(0.1, 0.2, 1)).find("automatic increments need 0 < minimum <= initial"),
+            std::string::npos)
+      << error_of(automatic_problem(0.1, 0.2, 1));
 }

@@ -397,7 +397,13 @@ TEST(DeckReader, KeywordsSetsSurfacesAndSteps)
   ASSERT_EQ(deck.info.steps.size(), 2u);
   EXPECT_TRUE(deck.info.steps[0].nlgeom);
   EXPECT_TRUE(deck.info.steps[1].nlgeom); // NLGEOM stays on
-  EXPECT_EQ(deck.info.steps[0].increments, 4);
+  // *STATIC 0.25, 1.0 without DIRECT: automatic, CalculiX's default minimum and maximum.
+  EXPECT_FALSE(deck.info.steps[0].increments);
+  ASSERT_TRUE(deck.info.steps[0].automatic);
+  EXPECT_EQ(deck.info.steps[0].automatic->initial, 0.25);
+  EXPECT_EQ(deck.info.steps[0].automatic->minimum, 1e-5);
+  EXPECT_EQ(deck.info.steps[0].automatic->maximum, 1.0);
+  EXPECT_EQ(p.steps[0].automatic->initial, 0.25);
   ASSERT_EQ(deck.info.steps[0].outputs.size(), 1u);
   EXPECT_EQ(deck.info.steps[0].outputs[0].set, "TOP");
   EXPECT_EQ(deck.info.steps[0].outputs[0].variables, (std::vector<std::string>{"U", "RF"}));
@@ -616,7 +622,10 @@ TEST(DeckReader, OutlineCountsWithoutReading)
   EXPECT_EQ(outline.nodes, 16);
   EXPECT_EQ(outline.elements, 3); // the continued element line counts as two lines: an upper bound
   EXPECT_TRUE(outline.nlgeom);
-  EXPECT_EQ(outline.increments, 4);
+  EXPECT_FALSE(outline.increments); // automatic: the deck's step 1 has them, not load_steps
+  std::string direct = two_cubes;
+  direct.replace(direct.find("*STATIC\n0.25"), 7, "*STATIC, DIRECT");
+  EXPECT_EQ(deck_outline(write(dir, "direct.inp", direct)).increments, 4);
 }
 
 TEST(DeckReader, ProblemFileOfADeckTakesItsSettings)
@@ -626,7 +635,8 @@ TEST(DeckReader, ProblemFileOfADeckTakesItsSettings)
   const ProblemFile file = load_problem_file(path, {"load_steps=3"}, {});
   EXPECT_EQ(file.settings.text("problem"), "custom");
   EXPECT_EQ(file.settings.text("displacements"), "large");
-  EXPECT_EQ(file.settings.integer("load_steps"), 3); // --set wins over the deck's 4
+  // --set wins: step 1 in 3 equal increments, not the deck's automatic ones
+  EXPECT_EQ(file.settings.integer("load_steps"), 3);
   EXPECT_EQ(file.deck, std::filesystem::absolute(path));
   EXPECT_EQ(custom_mesh_size(file).nodes, 16);
 }

@@ -97,7 +97,8 @@ TEST(LoadStepping, RecordsEveryIterationAndCallsBackAfterConvergedSteps)
       [](int step, int k) { return k == step + 1 ? IterationOutcome::step_converged() : IterationOutcome::next(); });
   ContactSolution out;
   std::vector<int> called_back;
-  run_load_steps(phases, equal_steps(2), 1, 10, 0, out,
+  fem::LoadHistory history = equal_steps(2);
+  run_load_steps(phases, history, 1, 10, 0, out,
                  [&](int step, const ContactSolution&) { called_back.push_back(step); });
   EXPECT_TRUE(out.converged);
   EXPECT_TRUE(out.reason.empty());
@@ -122,7 +123,8 @@ TEST(LoadStepping, UnrecordedConvergenceKeepsTheLastRecordedIteration)
   ScriptedPhases phases(
       [](int, int k) { return k == 3 ? IterationOutcome::step_converged(false) : IterationOutcome::next(); });
   ContactSolution out;
-  run_load_steps(phases, equal_steps(1), 1, 10, 0, out);
+  fem::LoadHistory history = equal_steps(1);
+  run_load_steps(phases, history, 1, 10, 0, out);
   EXPECT_TRUE(out.converged);
   EXPECT_EQ(out.history.size(), 2u);
   EXPECT_EQ(out.steps[0].outer_iterations, 2);
@@ -135,7 +137,8 @@ TEST(LoadStepping, StopsWithTheReasonOfAFailedIteration)
   });
   ContactSolution out;
   int called_back = 0;
-  run_load_steps(phases, equal_steps(3), 2, 10, 5, out, [&](int, const ContactSolution&) { ++called_back; });
+  fem::LoadHistory history = equal_steps(3);
+  run_load_steps(phases, history, 2, 10, 5, out, [&](int, const ContactSolution&) { ++called_back; });
   EXPECT_FALSE(out.converged);
   EXPECT_EQ(out.reason, "QP failed");
   EXPECT_EQ(out.history.size(), 1u); // the failed iteration is no result
@@ -147,7 +150,8 @@ TEST(LoadStepping, ReportsAStepThatDoesNotConverge)
 {
   ScriptedPhases phases([](int, int) { return IterationOutcome::next(); });
   ContactSolution out;
-  run_load_steps(phases, equal_steps(2), 1, 4, 0, out);
+  fem::LoadHistory history = equal_steps(2);
+  run_load_steps(phases, history, 1, 4, 0, out);
   EXPECT_FALSE(out.converged);
   EXPECT_EQ(out.history.size(), 4u);
   EXPECT_EQ(out.steps.size(), 1u);
@@ -159,8 +163,8 @@ TEST(LoadStepping, StepsThroughTheStagesOfAHistory)
 {
   ScriptedPhases phases([](int, int) { return IterationOutcome::step_converged(); });
   ContactSolution out;
-  run_load_steps(phases, fem::LoadHistory({}, {{la::Vector(), la::Vector(), 2}, {la::Vector(), la::Vector(), 3}}), 1,
-                 10, 0, out);
+  fem::LoadHistory history({}, {{la::Vector(), la::Vector(), 2}, {la::Vector(), la::Vector(), 3}});
+  run_load_steps(phases, history, 1, 10, 0, out);
   EXPECT_TRUE(out.converged);
   ASSERT_EQ(out.steps.size(), 5u);
   const std::vector<double> t = {0.5, 1.0, 4.0 / 3, 5.0 / 3, 2.0};
@@ -224,7 +228,8 @@ TEST(LoadStepping, CutsADivergedStepBackButStopsForOtherFailures)
   ScriptedPhases failing(
       [](int, int k) { return k == 2 ? IterationOutcome::stop("QP failed") : IterationOutcome::next(); });
   ContactSolution stopped;
-  run_load_steps(failing, equal_steps(1), 1, 10, 5, stopped);
+  fem::LoadHistory history = equal_steps(1);
+  run_load_steps(failing, history, 1, 10, 5, stopped);
   EXPECT_EQ(stopped.reason, "QP failed");
 }
 
