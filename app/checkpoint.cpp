@@ -135,6 +135,7 @@ void write_checkpoint(const std::filesystem::path& path, const nonlinear::Contac
     write_block(os, r.contact_pair.data(), static_cast<int64_t>(r.contact_pair.size()));             // likewise
     write_block(os, r.plastic.data(), static_cast<int64_t>(r.plastic.size()));                       // likewise
     write_block(os, r.linear_rows_selected.data(), static_cast<int64_t>(r.linear_rows_selected.size()));
+    write_block(os, r.stage_start.data(), static_cast<int64_t>(r.stage_start.size())); // likewise
   });
 }
 
@@ -207,6 +208,8 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
     r.plastic = read_block<double>(is, path);
   if (is.peek() != std::char_traits<char>::eof())
     r.linear_rows_selected = read_block<int32_t>(is, path);
+  if (is.peek() != std::char_traits<char>::eof())
+    r.stage_start = read_block<double>(is, path);
   FETICON_CHECK(r.contact_pair.empty() || r.contact_pair.size() == r.contact_slave.size(),
                 path.string() << ": the checkpoint has " << r.contact_pair.size() << " contact pairs for "
                               << r.contact_slave.size() << " contact multipliers");

@@ -132,11 +132,15 @@ std::vector<TieReport> tie_surfaces(fem::Problem& problem)
   problem.tie_equations.clear();
   if (problem.ties.empty())
     return {};
-  // Slave DOFs that may not get a tie row (file comment): the first step's supports, every DOF
-  // an equation names, then each tie's own.
+  // Slave DOFs that may not get a tie row (file comment): those every step's supports hold
+  // (one that some step frees needs its tie row then), every DOF an equation names, then each
+  // tie's own.
   std::vector<char> taken(3 * static_cast<size_t>(problem.mesh.n_nodes()), 0);
-  for (const int64_t dof : problem.all_constrained_dofs(0).dofs)
-    taken[dof] = 1;
+  std::vector<int> holding(taken.size(), 0);
+  for (size_t k = 0; k < problem.steps.size(); ++k)
+    for (const int64_t dof : problem.all_constrained_dofs(k).dofs)
+      if (++holding[dof] == static_cast<int>(problem.steps.size()))
+        taken[dof] = 1;
   for (const fem::LinearEquation& equation : problem.equations)
     for (const auto& term : equation.terms)
       taken[3 * static_cast<size_t>(term.node) + term.component] = 1;

@@ -21,7 +21,7 @@
 ///
 /// Independence, which lets FETI scale the rows one by one instead of orthonormalizing them
 /// (decomposition/constraint_rows.hpp): each row has its own slave DOF with coefficient 1.
-/// A slave DOF is skipped, and counted, if the first step's supports hold it (the support
+/// A slave DOF is skipped, and counted, if the supports of every step hold it (the support
 /// wins, as in CalculiX), if a linear equation (*EQUATION) names it, or if an earlier tie made
 /// it the slave DOF of a row (two ties sharing slave nodes). Chains (a master node of one tie
 /// the slave node of another) are fine; a cycle of ties through the same nodes is not detected.

@@ -11,7 +11,7 @@ qp::QpState MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_eq
                                          const std::vector<int64_t>& contact_key, int n_tangents) const
 {
   qp::QpState warm = _state;
-  if (_owned.size() == 0 && _restart_equality.size() == 0)
+  if (_owned.size() == 0 && _restart_equality.size() == 0 && _contact.empty())
     return warm; // the first solve of the run starts at 0
   FETICON_CHECK(_restart_equality.size() == 0 || _restart_equality.size() == n_equality,
                 "restart: the checkpoint holds " << _restart_equality.size()
@@ -24,7 +24,10 @@ qp::QpState MultiplierMemory::warm_start(const FetiOperators& feti, int64_t n_eq
   {
     const int64_t id = feti.row_id(i);
     if (id < n_equality)
-      warm.x(i) = _restart_equality.size() > 0 ? _restart_equality(id) : _owned(i);
+    {
+      if (!_equality_forgotten)
+        warm.x(i) = _restart_equality.size() > 0 ? _restart_equality(id) : _owned(i);
+    }
     else if (id < n_equality + n_contact)
     {
       if (const auto it = _contact.find(contact_key[id - n_equality]); it != _contact.end())
@@ -45,6 +48,7 @@ la::Vector MultiplierMemory::remember(const FetiOperators& feti, const DualSolut
 {
   _owned = solution.state.x;
   _restart_equality.resize(0);
+  _equality_forgotten = false;
   _state = solution.state;
   _state.x.resize(0);
   const int64_t n_contact = static_cast<int64_t>(contact_key.size());
@@ -73,6 +77,7 @@ void MultiplierMemory::restore(qp::QpState state, const std::vector<int64_t>& co
 {
   _owned.resize(0);
   _restart_equality = std::move(state.x);
+  _equality_forgotten = false;
   _contact.clear();
   _tangential.clear();
   FETICON_CHECK(tangential.empty() || tangential.size() == 2 * contact_key.size(),

@@ -36,6 +36,14 @@ public:
   la::Vector remember(const FetiOperators& feti, const DualSolution& solution, int64_t n_equality,
                       const std::vector<int64_t>& contact_key, int n_tangents = 0, la::Vector* tangential = nullptr);
 
+  /// The equality rows changed (a step holds other DOFs): the next solve starts their
+  /// multipliers at 0 (those of a checkpoint included).
+  void forget_equality()
+  {
+    _equality_forgotten = true;
+    _restart_equality.resize(0);
+  }
+
   /// F changed (a refreshed stiffness): ||PFP|| must be estimated again.
   void forget_operator_norm() { _state.operator_norm = 0; }
 
@@ -60,8 +68,9 @@ public:
   static std::set<int64_t> positive_keys(const std::map<int64_t, double>& contact, double floor);
 
 private:
-  la::Vector _owned;            ///< owned multipliers of the last solve (equality rows first)
-  la::Vector _restart_equality; ///< equality multipliers by row id from a checkpoint; used once
+  la::Vector _owned;                ///< owned multipliers of the last solve (equality rows first)
+  la::Vector _restart_equality;     ///< equality multipliers by row id from a checkpoint; used once
+  bool _equality_forgotten = false; ///< forget_equality() since the last solve
   std::map<int64_t, double> _contact;
   std::map<int64_t, std::array<double, 2>> _tangential; ///< by key, up to two tangents
   qp::QpState _state; ///< its x is always empty: the multipliers are kept above by row identity

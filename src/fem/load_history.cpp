@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <set>
 #include <string>
 
@@ -10,42 +11,39 @@ namespace feticon::fem
 {
 namespace
 {
-/// "u_y of node 17 (set 'FIX')": the first of `conditions` that prescribes `dof`.
-std::string describe(const mesh::Mesh& mesh, const std::vector<DirichletCondition>& conditions, int64_t dof)
+/// The DOFs of `step`'s supports that follow an amplitude, sorted.
+std::vector<int64_t> amplitude_dofs(const mesh::Mesh& mesh, const Step& step)
 {
-  const auto node = static_cast<int32_t>(dof / 3);
-  const int component = static_cast<int>(dof % 3);
-  std::string set = "?";
-  for (const DirichletCondition& d : conditions)
-  {
-    const auto& nodes = mesh.node_set(d.set);
-    if (d.value[component] && std::binary_search(nodes.begin(), nodes.end(), node))
-    {
-      set = d.set;
-      break;
-    }
-  }
-  return std::string("u_") + "xyz"[component] + " of node " + std::to_string(node) + " (set '" + set + "')";
+  std::set<int64_t> dofs;
+  for (const DirichletCondition& d : step.dirichlet)
+    if (!d.amplitude.empty())
+      for (const int32_t n : mesh.node_set(d.set))
+        for (int i = 0; i < 3; ++i)
+          if (d.value[i])
+            dofs.insert(3 * static_cast<int64_t>(n) + i);
+  return {dofs.begin(), dofs.end()};
 }
 
-/// Throws unless step `number` prescribes exactly step 1's DOFs, naming the first that differs.
-void check_same_dofs(const Problem& problem, const ConstrainedDofs& first, const ConstrainedDofs& later, size_t number)
+/// `held`'s values in the order of `all` (a superset), 0 at the DOFs it does not hold.
+la::Vector values_over(const std::vector<int64_t>& all, const ConstrainedDofs& held)
 {
-  std::vector<int64_t> added, omitted;
-  std::set_difference(later.dofs.begin(), later.dofs.end(), first.dofs.begin(), first.dofs.end(),
-                      std::back_inserter(added));
-  std::set_difference(first.dofs.begin(), first.dofs.end(), later.dofs.begin(), later.dofs.end(),
-                      std::back_inserter(omitted));
-  FETICON_CHECK(added.empty(),
-                "step " << number + 1 << " prescribes "
-                        << describe(problem.mesh, problem.steps[number].dirichlet, added.front())
-                        << ", which step 1 leaves free: a later step may change the "
-                           "values of step 1's prescribed components only");
-  FETICON_CHECK(omitted.empty(),
-                "step " << number + 1 << " leaves "
-                        << describe(problem.mesh, problem.steps[0].dirichlet, omitted.front())
-                        << " free, which step 1 prescribes: a later step may change "
-                           "the values of step 1's prescribed components only");
+  la::Vector out = la::Vector::Zero(static_cast<la::Index>(all.size()));
+  for (size_t k = 0; k < held.dofs.size(); ++k)
+  {
+    const auto at = std::lower_bound(all.begin(), all.end(), held.dofs[k]);
+    out(at - all.begin()) = held.values(static_cast<la::Index>(k));
+  }
+  return out;
+}
+
+/// Indices into `all` of `dofs` (both sorted; dofs a subset).
+std::vector<la::Index> indices_in(const std::vector<int64_t>& all, const std::vector<int64_t>& dofs)
+{
+  std::vector<la::Index> out;
+  out.reserve(dofs.size());
+  for (const int64_t dof : dofs)
+    out.push_back(std::lower_bound(all.begin(), all.end(), dof) - all.begin());
+  return out;
 }
 
 /// The amplitude names the loads and supports of `step` give, each once, sorted.
@@ -83,26 +81,32 @@ LoadHistory::LoadHistory(const Problem& problem, const Rules& rules)
 {
   FETICON_CHECK(rules.default_steps >= 1, "load steps: " << rules.default_steps << ", must be >= 1");
   problem.validate();
-  const ConstrainedDofs first = problem.all_constrained_dofs(0);
-  _dofs = first.dofs;
+  std::vector<ConstrainedDofs> held;
+  std::set<int64_t> every;
+  for (size_t k = 0; k < problem.steps.size(); ++k)
+  {
+    held.push_back(problem.all_constrained_dofs(k));
+    every.insert(held.back().dofs.begin(), held.back().dofs.end());
+  }
+  _dofs.assign(every.begin(), every.end());
   double start_time = 0;
   for (size_t k = 0; k < problem.steps.size(); ++k)
   {
     const Step& step = problem.steps[k];
-    const ConstrainedDofs held = k == 0 ? first : problem.all_constrained_dofs(k);
-    if (k > 0)
-      check_same_dofs(problem, first, held, k);
     Stage stage;
     stage.period = step.time;
     stage.start_time = start_time;
     stage.ramp = step.ramp;
+    stage.held = indices_in(_dofs, held[k].dofs);
     stage.ramp_start = k == 0 ? -1 : _stages.back().ramp_end;
+    if (k > 0 && step.ramp)
+      start_new_dofs(stage, held[k - 1].dofs, held[k].dofs, amplitude_dofs(problem.mesh, step));
     stage.ramp_end = static_cast<int>(_terms.size());
-    _terms.push_back({problem.external_force(k), held.values});
+    _terms.push_back({problem.external_force(k), values_over(_dofs, held[k])});
     for (const std::string& name : amplitudes_of(step))
     {
       stage.amplitudes.emplace_back(static_cast<int>(_terms.size()), problem.amplitudes.at(name));
-      _terms.push_back({problem.external_force(k, name), problem.all_constrained_dofs(k, name).values});
+      _terms.push_back({problem.external_force(k, name), values_over(_dofs, problem.all_constrained_dofs(k, name))});
     }
     stage.grow = rules.grow;
     if (rules.one_step_per_stage && stage.amplitudes.empty())
@@ -137,10 +141,90 @@ LoadHistory::LoadHistory(std::vector<int64_t> dofs, const std::vector<StageEnd>&
     stage.start_time = static_cast<double>(s);
     stage.steps = end.steps;
     stage.ramp_start = s == 0 ? -1 : _stages.back().ramp_end;
+    stage.held.resize(_dofs.size());
+    std::iota(stage.held.begin(), stage.held.end(), la::Index{0});
     stage.ramp_end = static_cast<int>(_terms.size());
     _terms.push_back({end.force, end.values});
     add_stage(std::move(stage));
   }
+}
+
+void LoadHistory::start_new_dofs(Stage& stage, const std::vector<int64_t>& before, const std::vector<int64_t>& now,
+                                 const std::vector<int64_t>& with_amplitude)
+{
+  std::vector<int64_t> added, started;
+  std::set_difference(now.begin(), now.end(), before.begin(), before.end(), std::back_inserter(added));
+  std::set_difference(added.begin(), added.end(), with_amplitude.begin(), with_amplitude.end(),
+                      std::back_inserter(started));
+  if (started.empty())
+    return;
+  stage.started = indices_in(_dofs, started);
+  // The stage ramps from a term of its own: R_{s-1}, whose values at the started DOFs
+  // start_stage() sets.
+  LoadTerm start = _terms[stage.ramp_start];
+  stage.ramp_start = static_cast<int>(_terms.size());
+  _terms.push_back(std::move(start));
+}
+
+std::vector<int64_t> LoadHistory::dofs_at(const std::vector<la::Index>& indices) const
+{
+  std::vector<int64_t> out;
+  out.reserve(indices.size());
+  for (const la::Index k : indices)
+    out.push_back(_dofs[k]);
+  return out;
+}
+
+std::vector<int64_t> LoadHistory::held_dofs(int stage) const
+{
+  FETICON_CHECK(stage >= 1 && stage <= n_stages(), "load stage " << stage << " of " << n_stages());
+  return dofs_at(_stages[stage - 1].held);
+}
+
+std::vector<int64_t> LoadHistory::started_dofs(int stage) const
+{
+  FETICON_CHECK(stage >= 1 && stage <= n_stages(), "load stage " << stage << " of " << n_stages());
+  return dofs_at(_stages[stage - 1].started);
+}
+
+void LoadHistory::start_stage(int step, const la::Vector& u)
+{
+  const LoadPoint p = point(step);
+  Stage& stage = _stages[p.stage - 1];
+  if (stage.started.empty() || step != last_step(p.stage - 1) + 1)
+    return;
+  la::Vector values(static_cast<la::Index>(stage.started.size()));
+  for (size_t k = 0; k < stage.started.size(); ++k)
+  {
+    const int64_t dof = _dofs[stage.started[k]];
+    FETICON_CHECK(dof < u.size(), "start_stage: a displacement of " << u.size() << " DOFs, DOF " << dof << " held");
+    values(static_cast<la::Index>(k)) = u(dof);
+  }
+  set_start_values(p.stage, values);
+}
+
+la::Vector LoadHistory::start_values(int stage) const
+{
+  FETICON_CHECK(stage >= 1 && stage <= n_stages(), "load stage " << stage << " of " << n_stages());
+  const Stage& s = _stages[stage - 1];
+  if (!s.started_given)
+    return {};
+  la::Vector out(static_cast<la::Index>(s.started.size()));
+  for (size_t k = 0; k < s.started.size(); ++k)
+    out(static_cast<la::Index>(k)) = _terms[s.ramp_start].values(s.started[k]);
+  return out;
+}
+
+void LoadHistory::set_start_values(int stage, const la::Vector& values)
+{
+  FETICON_CHECK(stage >= 1 && stage <= n_stages(), "load stage " << stage << " of " << n_stages());
+  Stage& s = _stages[stage - 1];
+  FETICON_CHECK(values.size() == static_cast<la::Index>(s.started.size()) && values.allFinite(),
+                "step " << stage << ": " << values.size() << " start values for the " << s.started.size()
+                        << " DOFs it holds and the step before leaves free (another model?), or not finite");
+  for (size_t k = 0; k < s.started.size(); ++k)
+    _terms[s.ramp_start].values(s.started[k]) = values(static_cast<la::Index>(k));
+  s.started_given = true;
 }
 
 void LoadHistory::add_stage(Stage stage)
@@ -305,5 +389,18 @@ la::Vector LoadHistory::prescribed_values(int step) const
   return linear_combination(coefficients(step), [&](int k) -> const la::Vector& { return _terms[k].values; });
 }
 
-ConstrainedDofs LoadHistory::prescribed(int step) const { return {_dofs, prescribed_values(step)}; }
+ConstrainedDofs LoadHistory::prescribed(int step) const
+{
+  const Stage& stage = _stages[point(step).stage - 1];
+  FETICON_CHECK(stage.started.empty() || stage.started_given,
+                "load step " << step << ": its step holds DOFs the step before leaves free, whose values start "
+                             << "from the displacement at the step's start, and the solver did not give it");
+  la::Vector values = prescribed_values(step);
+  if (stage.held.size() == _dofs.size())
+    return {_dofs, std::move(values)};
+  ConstrainedDofs out{dofs_at(stage.held), la::Vector(static_cast<la::Index>(stage.held.size()))};
+  for (size_t k = 0; k < stage.held.size(); ++k)
+    out.values(static_cast<la::Index>(k)) = values(stage.held[k]);
+  return out;
+}
 } // namespace feticon::fem

@@ -28,8 +28,13 @@
 ///
 /// A load without amplitude starts a step from the value of the loads without amplitude at the
 /// end of the step before: CalculiX's rule, as long as no load trades a ramp for an amplitude
-/// between steps (the deck reader refuses that). The prescribed DOF set is step 1's for the
-/// whole history: a step changes values only.
+/// between steps (the deck reader refuses that). Each step holds the DOFs its supports name (a
+/// deck's *BOUNDARY, OP=NEW may hold others than the step before, or free some): dofs() is the
+/// union over the steps, the values live in its order, and prescribed(n) gives the DOFs load
+/// step n's stage holds. A DOF that a step holds and the step before left free ramps from the
+/// displacement it has when the step starts (CalculiX's spcmatch.f), which the solver gives
+/// (start_stage); one with an amplitude follows its amplitude. A freed DOF's reaction is gone
+/// from the step's first increment on.
 ///
 /// Usage:
 ///   const LoadHistory history(problem, settings.steps(), linear);
@@ -94,9 +99,8 @@ public:
     bool grow = true;
   };
   /// @brief The history of `problem` by `rules`.
-  /// @throws feticon::Error naming the step and the set for a step that prescribes a
-  ///         component step 1 leaves free or leaves free one step 1 prescribes, and for a
-  ///         step's unknown or empty set, non-finite value, out-of-range node or increments < 1
+  /// @throws feticon::Error naming the step and the set for a step's unknown or empty set,
+  ///         non-finite value, out-of-range node or increments < 1
   LoadHistory(const Problem& problem, const Rules& rules);
 
   /// @brief A history from its stage ends, all ramped (tests, the direct Newton reference).
@@ -113,8 +117,22 @@ public:
   LoadPoint point(int step) const;
   double load_factor(int step) const { return point(step).load_factor; }
 
-  /// The prescribed DOFs (every stage's).
+  /// The prescribed DOFs (the union of every stage's).
   const std::vector<int64_t>& dofs() const { return _dofs; }
+  /// The DOFs stage `stage` (1-based) holds, sorted.
+  std::vector<int64_t> held_dofs(int stage) const;
+  /// The DOFs whose values ramp from the displacement at stage `stage`'s start (held there,
+  /// free in the stage before, without amplitude), sorted; empty for most stages.
+  std::vector<int64_t> started_dofs(int stage) const;
+
+  /// @brief Gives the start values of load step `step`'s stage if it is the stage's first step
+  /// and the stage has started_dofs(): the displacement `u` (3 per mesh node) there.
+  void start_stage(int step, const la::Vector& u);
+  /// The start values of stage `stage`'s started_dofs() (for a checkpoint); empty: none given.
+  la::Vector start_values(int stage) const;
+  /// @brief Gives them from a checkpoint (start_values() of the run that wrote it).
+  /// @throws feticon::Error if their number is not that of started_dofs(stage)
+  void set_start_values(int stage, const la::Vector& values);
   /// The terms f(t_n) and u_D(t_n) combine (the file comment).
   const std::vector<LoadTerm>& terms() const { return _terms; }
   /// True if some stage has a load or support with an amplitude.
@@ -125,9 +143,11 @@ public:
   /// ||f(t_n)||: t ||f_1|| in a stage 1 without amplitudes (as a one-stage run scales it),
   /// the norm of f(t_n) otherwise.
   double external_force_norm(int step) const;
-  /// u_D(t_n) in the order of dofs().
+  /// u_D(t_n) in the order of dofs() (0 where the stage does not hold the DOF).
   la::Vector prescribed_values(int step) const;
-  /// dofs() with u_D(t_n): what a one-stage solver built as `constrained.values *= t`.
+  /// The stage's held DOFs with u_D(t_n): what a one-stage solver built as
+  /// `constrained.values *= t`.
+  /// @throws feticon::Error if the stage has started_dofs() and start_stage() was not called
   ConstrainedDofs prescribed(int step) const;
 
   /// @brief Halves load step `step`'s increment (a cutback after its outer loop failed): a
@@ -181,10 +201,19 @@ private:
     std::optional<IncrementControl> automatic = {};
     bool easy_before = false; ///< the last increment was easy (automatic stages)
     bool grow = true;         ///< Rules::grow
+    /// Indices into _dofs of the DOFs the stage holds, and of its started_dofs(); the values of
+    /// the latter at the stage's start are those of term ramp_start (a term of its own).
+    std::vector<la::Index> held, started;
+    bool started_given = false; ///< start_stage() or set_start_values() gave them
   };
   /// Plans the steps of stage `stage` (0-based) after its j-th at `increment` (a fraction)
   /// until its end, and moves the later stages' step numbers.
   void plan(size_t stage, size_t j, double increment);
+  /// Sets `stage`'s started DOFs (held `now`, free `before`, not `with_amplitude`; all sorted)
+  /// and the term of its own its ramp starts from.
+  void start_new_dofs(Stage& stage, const std::vector<int64_t>& before, const std::vector<int64_t>& now,
+                      const std::vector<int64_t>& with_amplitude);
+  std::vector<int64_t> dofs_at(const std::vector<la::Index>& indices) const;
   /// (term, coefficient) of load step `step`, in a fixed order.
   std::vector<std::pair<int, double>> coefficients(int step) const;
   void add_stage(Stage stage);

@@ -416,13 +416,17 @@ void write_later_step(std::ostream& out, const fem::LoadHistory& history, int st
   write_step_start(out, step, options);
   const int end = history.last_step(stage), before = history.last_step(stage - 1);
   const la::Vector values = history.prescribed_values(end), values_before = history.prescribed_values(before);
-  out << "*BOUNDARY\n";
+  // The same held DOFs: the values that changed (*BOUNDARY keeps the others); others: all of
+  // them anew (a DOF held from here on ramps from its displacement in both codes).
+  const std::vector<int64_t> held = history.held_dofs(stage);
+  const bool same = held == history.held_dofs(stage - 1);
+  out << (same ? "*BOUNDARY\n" : "*BOUNDARY, OP=NEW\n");
   for (size_t k = 0; k < history.dofs().size(); ++k)
-    if (values(k) != values_before(k))
-    {
-      const int64_t dof = history.dofs()[k];
+  {
+    const int64_t dof = history.dofs()[k];
+    if (same ? values(k) != values_before(k) : std::binary_search(held.begin(), held.end(), dof))
       out << dof / 3 + 1 << ", " << dof % 3 + 1 << ", " << dof % 3 + 1 << ", " << number(values(k)) << '\n';
-    }
+  }
   const la::Vector force = history.external_force(end);
   out << "*CLOAD, OP=NEW\n";
   std::fill(std::begin(summary.total_load), std::end(summary.total_load), 0.0);

@@ -421,7 +421,14 @@ private:
   void set_block()
   {
     const bool nodes_kind = _keyword.name == "NSET";
-    known_parameters({nodes_kind ? "NSET" : "ELSET", "GENERATE"});
+    // CalculiX ignores a parameter a set does not have (with a warning): the set is the same.
+    // An Abaqus instance's set is another model's (parts and assemblies), refused.
+    if (_keyword.has("INSTANCE"))
+      throw Error(where() + ": parameter INSTANCE is not implemented by feticon (parts and assemblies)");
+    for (const auto& [key, value] : _keyword.parameters)
+      if (key != (nodes_kind ? "NSET" : "ELSET") && key != "GENERATE")
+        _data.warn(where() + ": parameter " + key + " is not one of *" + _keyword.name +
+                   "'s; ignored, as CalculiX ignores it");
     const std::string name = required(nodes_kind ? "NSET" : "ELSET");
     auto& sets = nodes_kind ? _data.node_sets : _data.element_sets;
     IndexRuns listed;
@@ -761,7 +768,7 @@ private:
   }
 
   // ---- loads and supports ------------------------------------------------------------------
-  /// OP=NEW clears the kind's values set in steps (model supports stay); MOD keeps them.
+  /// OP=NEW clears the kind's values set in steps; MOD keeps them.
   bool op_new() const
   {
     const std::string* op = _keyword.value("OP");
@@ -794,7 +801,12 @@ private:
       throw Error(where() + ": TYPE=" + *t + " is not implemented by feticon (displacements)");
     auto& target = _in_step ? _data.state.boundary : _data.model_boundary;
     if (op_new())
+    {
+      // CalculiX removes every support, the model's included (boundarys.f), from this step on.
       _data.state.boundary.clear();
+      if (_in_step)
+        _data.model_boundary.clear();
+    }
     DeckDataLine line;
     while (_tokens.next_data(line))
     {

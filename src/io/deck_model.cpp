@@ -641,30 +641,10 @@ private:
   {
     // A 2D model has no u_z; a 3D one given as one layer with u_z = 0 everywhere is plane strain.
     _p.eliminated = {false, false, _p.mesh.planar.kind != mesh::PlanarKind::none || every_node_fixes_z()};
-    // The prescribed DOFs of the first step; later steps may change values only.
-    std::vector<int64_t> first_dofs;
     for (size_t k = 0; k < _d.step_states.size(); ++k)
     {
       const DeckLoadState& state = _d.step_states[k];
       const std::string name = step_name(_deck.steps[k], k);
-      std::vector<int64_t> dofs;
-      for (const auto& [dof, value] : state.boundary)
-        if (mesh_of(dof / 3) >= 0 && !_p.eliminated[dof % 3])
-          dofs.push_back(dof);
-      if (k == 0)
-        first_dofs = dofs;
-      else if (dofs != first_dofs)
-      {
-        std::vector<int64_t> differ;
-        std::set_symmetric_difference(dofs.begin(), dofs.end(), first_dofs.begin(), first_dofs.end(),
-                                      std::back_inserter(differ));
-        FETICON_CHECK(false,
-                      name << " prescribes other degrees of freedom than step 1 (node "
-                           << read_label(static_cast<int32_t>(differ[0] / 3)) << ", degree of freedom "
-                           << differ[0] % 3 + 1
-                           << "); feticon keeps the supports of the first step and lets later steps change "
-                           << "their values only");
-      }
       const std::string prefix = "step" + std::to_string(k + 1) + "_";
       fem::Step& step = k == 0 ? _p.steps.front() : _p.steps.emplace_back();
       step.dirichlet = supports(state.boundary, prefix + "support_");

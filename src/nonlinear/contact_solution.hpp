@@ -72,6 +72,9 @@ struct RestartState
   /// Small displacements: the candidate contact rows the QPs had (LinearContactRows), those
   /// added where a left-out row was penetrated included; empty: the initial selection.
   std::vector<int32_t> linear_rows_selected;
+  /// The start values of the DOFs the last completed step's stage holds and the stage before
+  /// left free (fem::LoadHistory::start_values); empty: none.
+  std::vector<double> stage_start;
 };
 
 struct ContactSolution

@@ -85,11 +85,11 @@ void for_each_touched_dof(const fem::Problem& problem, const contact::ContactCon
 /// The fewer contact DOFs, the smaller the dense blocks (|b_s|^2 bytes, |b_s|^3 flops to form)
 /// and the better the preconditioner: a DOF no row touches is held fixed in S_s instead of
 /// eliminated.
-std::vector<char> schur_boundary_dofs(const fem::Problem& problem, const fem::ConstrainedDofs& dirichlet,
+std::vector<char> schur_boundary_dofs(const fem::Problem& problem, const std::vector<int64_t>& held,
                                       const contact::ContactConstraints* contact_rows, bool all_components)
 {
   std::vector<char> boundary(3 * static_cast<size_t>(problem.mesh.n_nodes()), 0);
-  for (int64_t dof : dirichlet.dofs)
+  for (int64_t dof : held)
     if (!problem.eliminated[dof % 3]) // plane strain's u_z = 0 is no row
       boundary[dof] = 1;
   for (const auto* block : {&problem.equations, &problem.tie_equations}) // rows on every copy of these nodes
@@ -353,7 +353,10 @@ private:
   std::unique_ptr<decomposition::Decomposition> _decomp;
   par::BlockSpace _primal_space;
   std::unique_ptr<decomposition::SubdomainSystem> _system;
-  const fem::ConstrainedDofs _dirichlet;
+  /// The DOFs some step holds (the Dirichlet rows' DOFs are on the Schur boundary in every step),
+  /// and those the current load step's holds (unset before the first).
+  const std::vector<int64_t> _ever_held;
+  std::optional<std::vector<int64_t>> _held;
   std::vector<char> _schur_boundary; ///< empty without the Dirichlet preconditioner
   std::unique_ptr<decomposition::SchurComplements> _schur;
   std::unique_ptr<decomposition::ExplicitBoundaryOperators> _explicit_operators;
@@ -423,7 +426,7 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
       _primal_space(owned_subdomain_space(*_decomp)),
       _system(std::make_unique<decomposition::SubdomainSystem>(
           *_decomp, problem.materials, settings.kinematics, settings.generalized_inverse, settings.factor_precision)),
-      _dirichlet(problem.all_constrained_dofs()), _temperatures(problem)
+      _ever_held(_history.dofs()), _temperatures(problem)
 {
   _out.n_subdomains = _decomp->n_subdomains();
   for (const int stage : _history.stages_in_one_step())
@@ -463,7 +466,7 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
     const la::Vector zero = la::Vector::Zero(3 * problem.mesh.n_nodes());
     contact::ContactConstraints reach = _small_displacements ? pair_rows_at(zero, _contact_options) : reach_rows(zero);
     if (dirichlet)
-      _schur_boundary = schur_boundary_dofs(problem, _dirichlet, &reach, !_small_displacements || _friction);
+      _schur_boundary = schur_boundary_dofs(problem, _ever_held, &reach, !_small_displacements || _friction);
     if (_small_displacements)
       _linear_rows.emplace(problem.mesh, master_sets(), std::move(reach), settings.linear_contact_band);
   }
@@ -620,6 +623,10 @@ int FetiContactSolve::restore(const ContactSolution& previous)
                 "restart: the checkpoint's load step " << r.completed_steps << " is at load factor " << saved_t
                                                        << ", this run's at " << _history.load_factor(r.completed_steps)
                                                        << " (different load_steps or load stages?)");
+  const int stage = _history.point(r.completed_steps).stage;
+  if (!r.stage_start.empty())
+    _history.set_start_values(stage, Eigen::Map<const la::Vector>(r.stage_start.data(), std::ssize(r.stage_start)));
+  _held = _history.held_dofs(stage);
   _u = _decomp->owned_slice(r.u_stacked);
   std::vector<int64_t> keys;
   for (size_t j = 0; j < r.contact_slave.size(); ++j)
@@ -667,7 +674,13 @@ void FetiContactSolve::begin_load_step(int step, double)
 {
   _step = step;
   set_pairs_in_force(step);
+  _u_step_start = _decomp->gather_mean(_decomp->gather_stacked(_u));
+  // A DOF the step holds and the step before left free ramps from its displacement here.
+  _history.start_stage(step, _u_step_start);
   fem::ConstrainedDofs target = _history.prescribed(step);
+  if (_held && *_held != target.dofs)
+    _multipliers.forget_equality(); // other Dirichlet rows: the old multipliers are not theirs
+  _held = target.dofs;
   _f_step = _history.combine(step, _f_terms_stacked);
   _f_step_norm = _history.external_force_norm(step);
   _equality = std::make_unique<decomposition::EqualityRows>(
@@ -676,7 +689,6 @@ void FetiContactSolve::begin_load_step(int step, double)
   _forcing = !_linear && _settings.forcing > 0;
   _previous_residual = std::numeric_limits<double>::infinity();
   _equality_by_id.resize(0);
-  _u_step_start = _decomp->gather_mean(_decomp->gather_stacked(_u));
   _step_start = {_u, _multipliers, _previous_active};
   if (!_temperatures.empty())
   {
@@ -869,8 +881,7 @@ contact::TangentialRows FetiContactSolve::friction_rows(const contact::ContactCo
 {
   if (!_friction)
     return {};
-  contact::TangentialRows tangential =
-      contact::build_tangential_rows(contact_rows, _problem.eliminated, _dirichlet.dofs);
+  contact::TangentialRows tangential = contact::build_tangential_rows(contact_rows, _problem.eliminated, *_held);
   // c_T = -B_T (u - u_0): B_T du - c_T is then the slip since the last converged load step.
   const la::Vector c_T = -(tangential.B * (u_global - _u_step_start));
   rows.append(decomposition::rows_from_global(*_decomp, tangential.B, c_T), _n_equality + contact_rows.n_rows());
@@ -967,7 +978,7 @@ void FetiContactSolve::grow_schur_boundary(const la::Vector& u_global, const std
   // near_contact_fraction). A linear run's rows are among the candidates the boundary was
   // made for: never here.
   const contact::ContactConstraints reach = reach_rows(u_global);
-  const std::vector<char> grown = schur_boundary_dofs(_problem, _dirichlet, &reach, true);
+  const std::vector<char> grown = schur_boundary_dofs(_problem, _ever_held, &reach, true);
   for (size_t i = 0; i < grown.size(); ++i)
     _schur_boundary[i] |= grown[i];
   _out.schur_boundary_widened = true;
@@ -1129,6 +1140,8 @@ void FetiContactSolve::end_load_step(const LoadStep& record)
     r.plastic = _out.plastic.pack(cells);
   }
   r.completed_steps = _step;
+  const la::Vector start = _history.start_values(_history.point(_step).stage);
+  r.stage_start.assign(start.data(), start.data() + start.size());
   r.linear_rows_selected = _linear_rows ? _linear_rows->selected_indices() : std::vector<int32_t>{};
   r.schur_boundary.clear();
   if (_out.schur_boundary_widened)

@@ -92,6 +92,7 @@ void PrimalPenaltySolve::begin_load_step(int step, double)
 {
   _step = step;
   _f_step = _history.external_force(step);
+  _history.start_stage(step, _u); // a DOF held from this step on ramps from its displacement
   _target = _history.prescribed(step);
   _active.clear();
   _u_step_start = _u;

@@ -465,6 +465,31 @@ TEST(DeckReader, AmplitudesOnLoadsAndSteps)
   EXPECT_EQ(p.steps[1].time, 1.0);
 }
 
+// *BOUNDARY, OP=NEW in a step removes every support, the model's too (CalculiX's boundarys.f):
+// step 2 holds the four top nodes in x and y only, the bottom's model support is gone; a
+// parameter *NSET does not have is ignored with a warning (CalculiX's), INSTANCE refused.
+// Reference: the deck's own numbers.
+TEST(DeckReader, BoundaryOpNewRemovesTheModelsSupports)
+{
+  const auto dir = test::fresh_directory("deck_op_new");
+  std::string text = two_cubes;
+  replace_first(text, "*BOUNDARY\ntop, 1, 2, 1e-3", "*BOUNDARY, OP=NEW\ntop, 1, 2, 1e-3");
+  replace_first(text, "*NSET, NSET=top", "*NSET, NSET=top, FREQUENCY=100");
+  const Deck deck = read_deck(write(dir, "op_new.inp", text));
+  const fem::Problem& p = deck.problem;
+  ASSERT_EQ(p.steps.size(), 2u);
+  EXPECT_EQ(p.all_constrained_dofs(0).dofs.size(), 4u * 3 + 4 * 2); // bottom in x, y, z; top in x, y
+  const std::vector<int64_t> held = p.all_constrained_dofs(1).dofs;
+  ASSERT_EQ(held.size(), 4u * 2);
+  for (const int64_t dof : held)
+    EXPECT_GE(p.mesh.nodes(dof / 3, 2), 2.0 - 1e-12) << dof; // the top (z = 2) only
+  EXPECT_TRUE(std::any_of(deck.info.warnings.begin(), deck.info.warnings.end(), [](const std::string& w) {
+    return w.find("parameter FREQUENCY is not one of *NSET's; ignored") != std::string::npos;
+  }));
+  replace_first(text, "FREQUENCY=100", "INSTANCE=part-1");
+  EXPECT_NE(error_of(write(dir, "instance.inp", text)).find("INSTANCE is not implemented"), std::string::npos);
+}
+
 // Temperatures (issue 65, item 4): *EXPANSION in the material, *INITIAL CONDITIONS,
 // TYPE=TEMPERATURE of the model, *TEMPERATURE per step carried over (OP=MOD) and cleared
 // (OP=NEW, the nodes it does not name back to T_0); the pair taken out in step 2 (*MODEL
