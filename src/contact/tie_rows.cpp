@@ -130,6 +130,7 @@ TieReport tie_surface(fem::Problem& problem, const fem::Tie& tie, std::vector<ch
 std::vector<TieReport> tie_surfaces(fem::Problem& problem)
 {
   problem.tie_equations.clear();
+  problem.tie_of_equation.clear();
   if (problem.ties.empty())
     return {};
   // Slave DOFs that may not get a tie row (file comment): those every step's supports hold
@@ -146,7 +147,10 @@ std::vector<TieReport> tie_surfaces(fem::Problem& problem)
       taken[3 * static_cast<size_t>(term.node) + term.component] = 1;
   std::vector<TieReport> out;
   for (const fem::Tie& tie : problem.ties)
+  {
     out.push_back(tie_surface(problem, tie, taken));
+    problem.tie_of_equation.resize(problem.tie_equations.size(), static_cast<int32_t>(out.size()) - 1);
+  }
   return out;
 }
 

@@ -86,6 +86,18 @@ ConstrainedDofs Problem::all_constrained_dofs(size_t step, const std::string& am
   return to_constrained_dofs(merged);
 }
 
+std::vector<LinearEquation> Problem::tie_equations_in_force(size_t step) const
+{
+  const std::vector<int32_t>& removed = steps.at(step).removed_ties;
+  if (removed.empty())
+    return tie_equations;
+  std::vector<LinearEquation> out;
+  for (size_t k = 0; k < tie_equations.size(); ++k)
+    if (std::ranges::find(removed, tie_of_equation.at(k)) == removed.end())
+      out.push_back(tie_equations[k]);
+  return out;
+}
+
 bool Problem::has_plastic_body() const
 {
   return std::ranges::any_of(materials, [](const Material& m) { return m.is_plastic(); });
@@ -262,6 +274,9 @@ void Problem::validate_step(size_t step) const
     }
     for (const auto& b : s.body_loads)
       amplitude_known(b.amplitude, b.where);
+    for (const int32_t tie : s.removed_ties)
+      FETICON_CHECK(tie >= 0 && tie < std::ssize(ties),
+                    "the step removes tie " << tie << ", the problem has " << ties.size());
     for (const int32_t pair : s.removed_contacts)
       FETICON_CHECK(pair >= 0 && pair < std::ssize(contacts),
                     "the step removes contact pair " << pair << ", the problem has " << contacts.size());

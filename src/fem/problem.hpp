@@ -91,6 +91,7 @@ struct Problem
   /// that DOF comes first. A block of its own beside `equations`: independent by construction,
   /// so FETI scales them row by row instead of orthonormalizing them.
   std::vector<LinearEquation> tie_equations;
+  std::vector<int32_t> tie_of_equation; ///< the tie (index into ties) of each tie equation
   /// Components fixed to zero on every node and eliminated (plane strain: {0,0,1}; every 2D
   /// model, mesh::Planar).
   std::array<bool, 3> eliminated{false, false, false};
@@ -101,6 +102,8 @@ struct Problem
   /// The DOFs step `step` prescribes, with the eliminated components, and the values of the
   /// supports whose amplitude is `amplitude` (0 for the others).
   ConstrainedDofs all_constrained_dofs(size_t step = 0, const std::string& amplitude = {}) const;
+  /// The tie equations of the ties in force in step `step` (0-based; Step::removed_ties).
+  std::vector<LinearEquation> tie_equations_in_force(size_t step) const;
   /// `equations` then `tie_equations`: what the direct solves eliminate.
   std::vector<LinearEquation> all_equations() const;
   /// Some step gives temperatures (the thermal strain then enters the elements).

@@ -86,6 +86,9 @@ struct Step
   /// Contact pairs (indices into Problem::contacts) out of force in the step: no rows, no
   /// pressure (deck *MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE; ADD puts one back).
   std::vector<int32_t> removed_contacts = {};
+  /// Ties (indices into Problem::ties) out of force in the step (a deck's tied contact pair
+  /// that *CHANGE SURFACE BEHAVIOR turned into contact; its contact pair is then in force).
+  std::vector<int32_t> removed_ties = {};
   /// Contact pairs (indices into Problem::contacts) whose friction in the step is not their
   /// interaction's, with the friction in force (deck *CHANGE FRICTION, which holds until
   /// another changes it).

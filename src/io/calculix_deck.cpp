@@ -461,12 +461,13 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
 
   write_mesh(out, problem, x, summary);
   FETICON_CHECK(problem.amplitudes.empty(), "calculix export: amplitudes are not written by feticon export");
-  FETICON_CHECK(
-      std::ranges::all_of(
-          problem.steps,
-          [](const fem::Step& step) { return step.removed_contacts.empty() && step.changed_friction.empty(); }),
-      "calculix export: contact pairs removed or given another friction in a step (*MODEL CHANGE, "
-      "*CHANGE FRICTION) are not written by feticon export");
+  FETICON_CHECK(std::ranges::all_of(
+                    problem.steps,
+                    [](const fem::Step& step) {
+    return step.removed_contacts.empty() && step.removed_ties.empty() && step.changed_friction.empty();
+                    }),
+                "calculix export: contact pairs removed, tied or given another friction in a step (*MODEL CHANGE, "
+                "*CHANGE SURFACE BEHAVIOR, *CHANGE FRICTION) are not written by feticon export");
   std::set<std::string> node_sets;
   for (const fem::Step& step : problem.steps)
     for (const fem::DirichletCondition& d : step.dirichlet)

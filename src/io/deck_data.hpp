@@ -186,6 +186,9 @@ struct DeckLoadState
   std::map<std::pair<std::string, std::string>, std::string> removed_pairs;
   /// Interaction -> the friction a *CHANGE FRICTION gave it (this step and the next ones).
   std::map<std::string, DeckFriction> frictions;
+  /// Interaction -> whether the law a *CHANGE SURFACE BEHAVIOR gave it is TIED (this step and
+  /// the next ones; else the model's: DeckData::tied_interactions).
+  std::map<std::string, bool> tied;
 };
 
 struct DeckData

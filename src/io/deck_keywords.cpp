@@ -71,7 +71,6 @@ const std::map<std::string, std::string> unsupported_keywords = {
     {"FILM", "heat transfer"},
     {"RADIATE", "heat transfer"},
     {"SUBMODEL", "submodels"},
-    {"CHANGE SURFACE BEHAVIOR", "contact laws that change between steps"},
     {"DISTRIBUTING COUPLING", "coupling constraints"},
 };
 
@@ -246,6 +245,7 @@ private:
         {"TEMPERATURE", &KeywordReader::temperature},
         {"MODEL CHANGE", &KeywordReader::model_change},
         {"CHANGE FRICTION", &KeywordReader::change_friction},
+        {"CHANGE SURFACE BEHAVIOR", &KeywordReader::change_surface_behavior},
         {"SOLID SECTION", &KeywordReader::solid_section},
         {"BOUNDARY", &KeywordReader::boundary},
         {"CLOAD", &KeywordReader::cload},
@@ -272,6 +272,9 @@ private:
     if (!_changing_friction.empty() && _keyword.name != "FRICTION")
       throw Error(where() + ": the *CHANGE FRICTION before it (" + _changing_friction_where +
                   ") needs its *FRICTION next");
+    if (!_changing_behavior.empty() && _keyword.name != "SURFACE BEHAVIOR")
+      throw Error(where() + ": the *CHANGE SURFACE BEHAVIOR before it (" + _changing_behavior_where +
+                  ") needs its *SURFACE BEHAVIOR next");
     if (const auto it = handlers.find(_keyword.name); it != handlers.end())
     {
       (this->*(it->second))();
@@ -717,19 +720,22 @@ private:
     }
   }
 
-  /// *CHANGE FRICTION, INTERACTION= (in a step): the *FRICTION after it gives the interaction's
-  /// friction from this step on.
-  void change_friction()
+  /// *CHANGE FRICTION and *CHANGE SURFACE BEHAVIOR, INTERACTION= (in a step): the *FRICTION or
+  /// *SURFACE BEHAVIOR after it gives the interaction's friction or law from this step on.
+  /// `interaction` and `at` remember it for that keyword.
+  void change_interaction(std::string& interaction, std::string& at)
   {
     known_parameters({"INTERACTION"});
     if (!_in_step)
       throw Error(where() + " belongs inside a *STEP");
-    _changing_friction = required("INTERACTION");
-    if (!_data.interactions.count(_changing_friction))
-      throw Error(where() + ": no *SURFACE INTERACTION '" + _changing_friction + "' is defined before it");
-    _changing_friction_where = _keyword.where.str();
+    interaction = required("INTERACTION");
+    if (!_data.interactions.count(interaction))
+      throw Error(where() + ": no *SURFACE INTERACTION '" + interaction + "' is defined before it");
+    at = _keyword.where.str();
     no_data();
   }
+  void change_friction() { change_interaction(_changing_friction, _changing_friction_where); }
+  void change_surface_behavior() { change_interaction(_changing_behavior, _changing_behavior_where); }
 
   /// Field 1 of a temperature line: finite and not below absolute zero.
   double temperature_value(const DeckDataLine& line)
@@ -1055,29 +1061,41 @@ private:
   void surface_behavior()
   {
     known_parameters({"PRESSURE-OVERCLOSURE"});
-    if (_interaction.empty())
+    // After a *CHANGE SURFACE BEHAVIOR the law of its interaction from the step on (TIED or not:
+    // the pairs are ties or contact there, DeckLoadState::tied); else the law of the interaction
+    // whose block this is.
+    const std::string changed = std::exchange(_changing_behavior, std::string());
+    if (changed.empty() && _interaction.empty())
       throw Error(where() + " comes before any *SURFACE INTERACTION");
+    const std::string interaction = changed.empty() ? _interaction : changed;
     const std::string law = required("PRESSURE-OVERCLOSURE");
     std::string parameters;
     DeckDataLine line;
     while (_tokens.next_data(line))
       for (size_t k = 0; k < line.fields.size(); ++k)
         parameters += (parameters.empty() ? "" : ", ") + text(line.fields[k]);
+    if (law != "HARD" && law != "TIED" && law != "LINEAR" && law != "EXPONENTIAL" && law != "TABULAR")
+      throw Error(where() + ": PRESSURE-OVERCLOSURE=" + law + " is not a law feticon knows");
+    if (!changed.empty())
+      _data.state.tied[interaction] = law == "TIED";
+    else if (law == "TIED")
+      _data.tied_interactions.insert(interaction);
     if (law == "HARD")
       return; // what feticon enforces
     if (law == "TIED")
     {
-      // CalculiX's tied contact is a penalty law in both directions (these lines: its
-      // stiffness); feticon ties the surfaces exactly, as a *TIE.
-      _data.tied_interactions.insert(_interaction);
+      // CalculiX's tied contact is a penalty law across the surfaces (these lines: its
+      // stiffness) whose tangential direction follows the *FRICTION stick slope (changesurfbeh:
+      // its slave nodes slide 0.02 of 0.1 over the master); feticon ties the surfaces exactly in
+      // every direction, as a *TIE.
       if (!parameters.empty())
-        _data.warn("interaction " + _interaction + ": PRESSURE-OVERCLOSURE=TIED (" + parameters + ", " +
-                   _keyword.where.str() + ") is a penalty tie; feticon ties the surfaces exactly");
+        _data.warn("interaction " + interaction + ": PRESSURE-OVERCLOSURE=TIED (" + parameters + ", " +
+                   _keyword.where.str() +
+                   ") is a penalty tie across the surfaces, tangentially the *FRICTION stick slope's in CalculiX; "
+                   "feticon ties the surfaces exactly in every direction");
       return;
     }
-    if (law != "LINEAR" && law != "EXPONENTIAL" && law != "TABULAR")
-      throw Error(where() + ": PRESSURE-OVERCLOSURE=" + law + " is not a law feticon knows");
-    _data.warn("interaction " + _interaction + ": PRESSURE-OVERCLOSURE=" + law + " (" + parameters + ", " +
+    _data.warn("interaction " + interaction + ": PRESSURE-OVERCLOSURE=" + law + " (" + parameters + ", " +
                _keyword.where.str() +
                ") is a penalty law; feticon enforces non-penetration exactly, so its "
                "answer differs from CalculiX's by the penetration the law allows (pressure / slope)");
@@ -1390,6 +1408,8 @@ private:
   bool _in_interaction = false;
   /// The interaction of a *CHANGE FRICTION whose *FRICTION comes next, and where it was.
   std::string _changing_friction, _changing_friction_where;
+  /// The interaction of a *CHANGE SURFACE BEHAVIOR whose *SURFACE BEHAVIOR comes next, and where.
+  std::string _changing_behavior, _changing_behavior_where;
   bool _in_step = false, _have_procedure = false;
   DeckPosition _step_where;
   DeckStep _step;

@@ -422,6 +422,8 @@ private:
     std::set<std::string> used;
     for (const DeckContactPair& pair : _d.pairs)
     {
+      _contact_of_pair.push_back(-1);
+      _tie_of_pair.push_back(-1);
       const std::string at = pair.where.str() + ": *CONTACT PAIR";
       FETICON_CHECK(_d.interactions.count(pair.interaction),
                     at << ": no *SURFACE INTERACTION '" << pair.interaction << "' is defined");
@@ -434,12 +436,20 @@ private:
       const fem::ContactFormulation formulation =
           pair.node_to_surface ? fem::ContactFormulation::node_to_segment : fem::ContactFormulation::mortar;
       used.insert(pair.interaction);
-      if (_d.tied_interactions.count(pair.interaction))
+      // Tied in some step: a tie; not tied in some: a contact pair (both where *CHANGE SURFACE
+      // BEHAVIOR turns one into the other: each is out of force where the other is in).
+      bool tied_somewhere = false, contact_somewhere = false;
+      for (size_t k = 0; k < _d.step_states.size(); ++k)
+        (tied_in_step(pair.interaction, k) ? tied_somewhere : contact_somewhere) = true;
+      if (tied_somewhere)
       {
         // A tied pair moves no node (a pair's ADJUST is a distance or a set; a tie's a flag).
+        _tie_of_pair.back() = static_cast<int32_t>(_p.ties.size());
         _p.ties.push_back({pair.interaction, pair.slave, pair.master, slave_nodes, 0, false, formulation});
-        continue;
       }
+      if (!contact_somewhere)
+        continue;
+      _contact_of_pair.back() = static_cast<int32_t>(_p.contacts.size());
       fem::ContactInteraction interaction{pair.interaction, {}, formulation};
       if (const auto it = _d.frictions.find(pair.interaction); it != _d.frictions.end() && it->second.coefficient > 0)
         interaction.friction = {fem::FrictionModel::coulomb, it->second.coefficient, 0};
@@ -572,6 +582,33 @@ private:
     return out;
   }
 
+  /// Whether the pairs of `interaction` are tied in step k (0-based): the law a *CHANGE SURFACE
+  /// BEHAVIOR gave it by then, else the model's.
+  bool tied_in_step(const std::string& interaction, size_t k) const
+  {
+    const auto& changed = _d.step_states[k].tied;
+    const auto it = changed.find(interaction);
+    return it != changed.end() ? it->second : _d.tied_interactions.count(interaction) > 0;
+  }
+
+  /// The contact pairs and ties out of force in step k: those *MODEL CHANGE took out, those tied
+  /// there, and the ties of pairs that are contact there.
+  void pairs_out_of_force(size_t k, fem::Step& step) const
+  {
+    step.removed_contacts = removed_contacts(_d.step_states[k].removed_pairs);
+    for (size_t p = 0; p < _d.pairs.size(); ++p)
+    {
+      const bool tied = tied_in_step(_d.pairs[p].interaction, k);
+      if (tied && _contact_of_pair[p] >= 0)
+        step.removed_contacts.push_back(_contact_of_pair[p]);
+      if (!tied && _tie_of_pair[p] >= 0)
+        step.removed_ties.push_back(_tie_of_pair[p]);
+    }
+    std::sort(step.removed_contacts.begin(), step.removed_contacts.end());
+    step.removed_contacts.erase(std::unique(step.removed_contacts.begin(), step.removed_contacts.end()),
+                                step.removed_contacts.end());
+  }
+
   /// The indices of the pairs *MODEL CHANGE took out (a name that is no pair is an error).
   /// The pairs whose interaction a *CHANGE FRICTION changed, with their friction (mu = 0:
   /// frictionless).
@@ -599,7 +636,11 @@ private:
       FETICON_CHECK(it != _d.pairs.end(),
                     where << ": *MODEL CHANGE: no *CONTACT PAIR has slave " << names.first << " and master "
                           << names.second);
-      out.push_back(static_cast<int32_t>(it - _d.pairs.begin()));
+      const int32_t contact = _contact_of_pair[it - _d.pairs.begin()];
+      FETICON_CHECK(contact >= 0,
+                    where << ": *MODEL CHANGE of the tied pair " << names.first << ", " << names.second
+                          << " is not implemented by feticon (contact pairs only)");
+      out.push_back(contact);
     }
     std::sort(out.begin(), out.end());
     return out;
@@ -652,7 +693,7 @@ private:
       step.pressures = pressures(state.dload, prefix + "pressure_");
       step.body_loads = body_loads(state.body);
       step.temperatures = temperatures(state.temperature);
-      step.removed_contacts = removed_contacts(state.removed_pairs);
+      pairs_out_of_force(k, step);
       step.changed_friction = changed_friction(state.frictions);
       step.time = _deck.steps[k].time;
       step.ramp = _deck.steps[k].ramp;
@@ -725,6 +766,9 @@ private:
   /// Mesh node of every node read, -1 if no element uses it; empty when every node is used
   /// (mesh numbering = reading numbering).
   std::vector<int32_t> _mesh_node;
+  /// Per *CONTACT PAIR (deck order): its index in Problem::contacts and in Problem::ties (-1:
+  /// none; a pair is one or the other, or both where *CHANGE SURFACE BEHAVIOR switches it).
+  std::vector<int32_t> _contact_of_pair, _tie_of_pair;
   std::set<std::string> _restricted_surfaces; ///< node surfaces with a slave_nodes_NAME set
 };
 } // namespace

@@ -357,6 +357,7 @@ private:
   /// and those the current load step's holds (unset before the first).
   const std::vector<int64_t> _ever_held;
   std::optional<std::vector<int64_t>> _held;
+  std::vector<int32_t> _ties_out;    ///< the ties out of force in the current load step's step
   std::vector<char> _schur_boundary; ///< empty without the Dirichlet preconditioner
   std::unique_ptr<decomposition::SchurComplements> _schur;
   std::unique_ptr<decomposition::ExplicitBoundaryOperators> _explicit_operators;
@@ -627,6 +628,7 @@ int FetiContactSolve::restore(const ContactSolution& previous)
   if (!r.stage_start.empty())
     _history.set_start_values(stage, Eigen::Map<const la::Vector>(r.stage_start.data(), std::ssize(r.stage_start)));
   _held = _history.held_dofs(stage);
+  _ties_out = _problem.steps[stage - 1].removed_ties;
   _u = _decomp->owned_slice(r.u_stacked);
   std::vector<int64_t> keys;
   for (size_t j = 0; j < r.contact_slave.size(); ++j)
@@ -678,13 +680,16 @@ void FetiContactSolve::begin_load_step(int step, double)
   // A DOF the step holds and the step before left free ramps from its displacement here.
   _history.start_stage(step, _u_step_start);
   fem::ConstrainedDofs target = _history.prescribed(step);
-  if (_held && *_held != target.dofs)
-    _multipliers.forget_equality(); // other Dirichlet rows: the old multipliers are not theirs
+  const size_t stage = _history.point(step).stage - 1;
+  const std::vector<int32_t>& ties_out = _problem.steps[stage].removed_ties;
+  if (_held && (*_held != target.dofs || _ties_out != ties_out))
+    _multipliers.forget_equality(); // other Dirichlet or tie rows: the old multipliers are not theirs
   _held = target.dofs;
+  _ties_out = ties_out;
   _f_step = _history.combine(step, _f_terms_stacked);
   _f_step_norm = _history.external_force_norm(step);
   _equality = std::make_unique<decomposition::EqualityRows>(
-      decomposition::build_equality_rows(*_decomp, target, _problem.equations, _problem.tie_equations));
+      decomposition::build_equality_rows(*_decomp, target, _problem.equations, _problem.tie_equations_in_force(stage)));
   _n_equality = _equality->n_global();
   _forcing = !_linear && _settings.forcing > 0;
   _previous_residual = std::numeric_limits<double>::infinity();

@@ -394,13 +394,14 @@ MM_MUTATORS = [number_replacer(EXTREMES), mm_header, mm_size]
 DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_friction.inp", "contactenergy_plastic.inp",
               "punch_tet10.inp",
               "punch_c3d20r.inp", "contactenergy_density.inp", "rings_cax4.inp", "tie_blocks.inp",
-              "change_friction.inp", "rubber_block.inp"]
+              "change_friction.inp", "rubber_block.inp", "changesurfbeh.inp"]
 # Seeds of our own (tests/data/fuzz/): a C3D10 deck, feticon's export of gmsh_tet10.yaml, and
 # a C3D20 / C3D20R one (reduced integration per cell), the same punch meshed with hex20; two
 # CAX4 rings shrink-fitted through a node-to-surface pair of element edges (issue 64). From
 # tests/data/calculix/: tie_blocks.inp, two blocks glued by a *TIE (issue 63),
 # change_friction.inp, a block pushed along a base over three steps, *CHANGE FRICTION in the last,
-# and rubber_block.inp, a Neo-Hooke block compressed 30 % through contact (issue 66).
+# rubber_block.inp, a Neo-Hooke block compressed 30 % through contact (issue 66), and CalculiX's
+# changesurfbeh.inp, a tie turned into contact by *CHANGE SURFACE BEHAVIOR (issue 65).
 FUZZ_FOLDER_DECKS = {"punch_tet10.inp", "punch_c3d20r.inp", "rings_cax4.inp"}
 # Seeds made from another by an edit: contact1 with Coulomb friction (*FRICTION after the
 # pressure-overclosure law, as tests/cli/deck_friction.sh adds it to CalculiX's decks).
@@ -424,7 +425,10 @@ DECK_KEYWORDS = [
     "*ELEMENT, TYPE=CPS3\n996,3,2,1", "*SOLID SECTION, ELSET=EALL, MATERIAL=EL\n-1.",
     "*SOLID SECTION, ELSET=HUB, MATERIAL=STEEL, OFFSET=0.5\n0.01",
     "*ELEMENT, TYPE=C3D8R, ELSET=EALL\n999,1,2,3,4,5,6,7,8", "*STEP", "*END STEP", "*STATIC",
-    "*STATIC\n1e-300,1e300", "*STATIC\n0,0", "*FRICTION\n0.3", "*DENSITY\n7.8e-9", "*INCLUDE",
+    "*STATIC\n1e-300,1e300", "*STATIC\n0,0", "*STATIC\n0.1, 1., 0.2",
+    "*STATIC, DIRECT\n1e-6, 1.", "*BOUNDARY, OP=NEW\n1,1,1,0.5", "*BOUNDARY, OP=NEW",
+    "*CHANGE SURFACE BEHAVIOR, INTERACTION=SI1\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED",
+    "*CHANGE SURFACE BEHAVIOR, INTERACTION=NONE", "*NSET, NSET=X, FREQUENCY=1\n1", "*FRICTION\n0.3", "*DENSITY\n7.8e-9", "*INCLUDE",
     "*INCLUDE, INPUT=", "*INCLUDE, INPUT=.", "*MATERIAL, NAME=", "*MATERIAL, NAME=EL",
     "*ELASTIC\n1,0.3", "*ELASTIC\n1e30,0.49999999", "*heading\ntitle", "*SURFACE, NAME=@",
     "*SURFACE, NAME=@, TYPE=NODE", "*SURFACE, NAME=SMAST\n1,S1",

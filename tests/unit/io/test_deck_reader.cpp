@@ -490,6 +490,31 @@ TEST(DeckReader, BoundaryOpNewRemovesTheModelsSupports)
   EXPECT_NE(error_of(write(dir, "instance.inp", text)).find("INSTANCE is not implemented"), std::string::npos);
 }
 
+// *CHANGE SURFACE BEHAVIOR (issue 65, item 6): a pair whose interaction is TIED in step 1 and
+// HARD from step 2 on is a tie and a contact pair, each out of force where the other is in;
+// one that stays TIED is a tie alone. Reference: the deck's own steps.
+TEST(DeckReader, ChangeSurfaceBehaviorSwitchesATieAndAContactPair)
+{
+  const auto dir = test::fresh_directory("deck_change_behavior");
+  std::string text = two_cubes;
+  replace_first(text, "PRESSURE-OVERCLOSURE=HARD", "PRESSURE-OVERCLOSURE=TIED");
+  const fem::Problem tied = read_deck(write(dir, "tied.inp", text)).problem;
+  EXPECT_EQ(tied.ties.size(), 1u);
+  EXPECT_TRUE(tied.contacts.empty());
+  replace_first(text, "*STEP\n*STATIC\n",
+                "*STEP\n*STATIC\n*CHANGE SURFACE BEHAVIOR, INTERACTION=SI\n"
+                "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n");
+  const fem::Problem p = read_deck(write(dir, "changed.inp", text)).problem;
+  ASSERT_EQ(p.ties.size(), 1u);
+  ASSERT_EQ(p.contacts.size(), 1u);
+  ASSERT_EQ(p.steps.size(), 2u);
+  EXPECT_EQ(p.steps[0].removed_contacts, std::vector<int32_t>{0});
+  EXPECT_TRUE(p.steps[0].removed_ties.empty());
+  EXPECT_TRUE(p.steps[1].removed_contacts.empty());
+  EXPECT_EQ(p.steps[1].removed_ties, std::vector<int32_t>{0});
+  EXPECT_EQ(p.ties[0].slave, p.contacts[0].slave);
+}
+
 // Temperatures (issue 65, item 4): *EXPANSION in the material, *INITIAL CONDITIONS,
 // TYPE=TEMPERATURE of the model, *TEMPERATURE per step carried over (OP=MOD) and cleared
 // (OP=NEW, the nodes it does not name back to T_0); the pair taken out in step 2 (*MODEL
