@@ -250,40 +250,6 @@ void settings_of_deck(ProblemFile& file, const std::filesystem::path& path)
     file.settings.set("load_steps", std::to_string(*outline.increments), source);
 }
 
-/// The friction of a contact pair of the problem file, `friction: {model: coulomb, coefficient:
-/// 0.3}` (or tresca with slip_bound, or none); none if it has none.
-fem::Friction pair_friction(const YAML::Node& pair, const std::string& key, const ProblemReader& r)
-{
-  fem::Friction out;
-  if (!pair.IsMap() || !pair["friction"])
-    return out;
-  const YAML::Node friction = pair["friction"];
-  r.only_keys(friction, key, {"model", "coefficient", "slip_bound"});
-  const std::string model = r.text(friction["model"], key + ".model");
-  FETICON_CHECK(model == "none" || model == "coulomb" || model == "tresca",
-                r.source << ": " << key << ".model = '" << model << "' must be one of: none, tresca, coulomb");
-  const std::map<std::string, std::string> needs = {{"coulomb", "coefficient"}, {"tresca", "slip_bound"}};
-  for (const char* number : {"coefficient", "slip_bound"})
-  {
-    const auto need = needs.find(model);
-    const bool wanted = need != needs.end() && need->second == number;
-    FETICON_CHECK(!friction[number] || wanted,
-                  r.source << ": " << key << "." << number << " does not belong to model " << model
-                           << " (coulomb takes coefficient, tresca slip_bound, none neither)");
-    FETICON_CHECK(friction[number] || !wanted, r.source << ": " << key << " (model " << model << ") needs " << number);
-  }
-  out.model = model == "coulomb" ? fem::FrictionModel::coulomb
-      : model == "tresca"        ? fem::FrictionModel::tresca
-                                 : fem::FrictionModel::none;
-  if (friction["coefficient"])
-    out.coefficient = r.number(friction["coefficient"], key + ".coefficient");
-  if (friction["slip_bound"])
-    out.slip_bound = r.number(friction["slip_bound"], key + ".slip_bound");
-  FETICON_CHECK(out.coefficient >= 0 && out.coefficient <= 100 && out.slip_bound >= 0 && std::isfinite(out.slip_bound),
-                r.source << ": " << key << ": coefficient must be in [0, 100] and slip_bound a finite value >= 0");
-  return out;
-}
-
 /// A body load of the `loads` list: {gravity: [gx, gy, gz]} or {centrifugal: {omega, point,
 /// axis}}, on one body (`body: NAME`) or on all.
 /// A pair's or tie's `formulation:` (node_to_segment or mortar).
@@ -645,9 +611,9 @@ fem::Problem build_custom_problem(const ProblemFile& file)
     FETICON_CHECK(v == "true" || v == "false", file.source << ": plane_strain must be true or false");
     p.eliminated = {false, false, v == "true"};
   }
-  read_steps(root, r, p);
   if (root["contact"])
     p.contacts = contact_pairs(root["contact"], p.mesh, r);
+  read_steps(root, r, p); // after the contact pairs, which a step may change
   if (root["ties"])
     p.ties = ties(root["ties"], p.mesh, r);
   p.validate();

@@ -247,12 +247,52 @@ fem::IncrementControl increment_control(const YAML::Node& node, const std::strin
   return c;
 }
 
+/// A step's `contact:` list, each entry {pair: I, friction: {...}, in_force: true|false} on pair
+/// I of the top-level `contact:` list: its friction from this step on (a deck's *CHANGE
+/// FRICTION), and whether it is in force (*MODEL CHANGE, REMOVE / ADD), over what `step` holds.
+void contact_changes(const YAML::Node& list, const std::string& key, const ProblemReader& r, const fem::Problem& p,
+                     fem::Step& step)
+{
+  FETICON_CHECK(list.IsSequence(), r.source << ": " << key << " must be a list of {pair, friction, in_force}");
+  for (size_t i = 0; i < list.size(); ++i)
+  {
+    const YAML::Node entry = list[i];
+    const std::string at = key + "." + std::to_string(i);
+    r.only_keys(entry, at, {"pair", "friction", "in_force"});
+    FETICON_CHECK(entry["pair"], r.source << ": " << at << " needs pair (an index into the contact list)");
+    const double number = r.number(entry["pair"], at + ".pair");
+    FETICON_CHECK(number >= 0 && number < static_cast<double>(p.contacts.size()) && number == std::floor(number),
+                  r.source << ": " << at << ".pair = " << number << " is not an index into the contact list ("
+                           << p.contacts.size() << " pairs)");
+    const auto pair = static_cast<int32_t>(number);
+    if (entry["friction"])
+    {
+      std::erase_if(step.changed_friction, [&](const auto& change) { return change.first == pair; });
+      step.changed_friction.emplace_back(pair, pair_friction(entry, at + ".friction", r));
+      std::sort(step.changed_friction.begin(), step.changed_friction.end(),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
+    }
+    if (entry["in_force"])
+    {
+      const std::string in_force = r.text(entry["in_force"], at + ".in_force");
+      FETICON_CHECK(in_force == "true" || in_force == "false",
+                    r.source << ": " << at << ".in_force must be true or false");
+      std::erase(step.removed_contacts, pair);
+      if (in_force == "false")
+        step.removed_contacts.insert(std::lower_bound(step.removed_contacts.begin(), step.removed_contacts.end(), pair),
+                                     pair);
+    }
+  }
+}
+
 /// One entry of `steps:` over `step`, which holds the step before (what the entry does not give
 /// carries over, as in CalculiX's steps).
 void step_entry(const YAML::Node& entry, const std::string& key, const ProblemReader& r, fem::Problem& p,
                 fem::Step& step)
 {
-  r.only_keys(entry, key, {"supports", "loads", "temperatures", "increments", "increment", "time", "ramp"});
+  r.only_keys(entry, key, {"supports", "loads", "temperatures", "increments", "increment", "time", "ramp", "contact"});
+  if (entry["contact"])
+    contact_changes(entry["contact"], key + ".contact", r, p, step);
   if (entry["supports"])
     step.dirichlet = supports(entry["supports"], key + ".supports", r, p);
   if (entry["temperatures"])
@@ -285,6 +325,40 @@ void step_entry(const YAML::Node& entry, const std::string& key, const ProblemRe
   }
 }
 } // namespace
+
+/// The friction of a contact pair of the problem file, `friction: {model: coulomb, coefficient:
+/// 0.3}` (or tresca with slip_bound, or none); none if it has none.
+fem::Friction pair_friction(const YAML::Node& pair, const std::string& key, const ProblemReader& r)
+{
+  fem::Friction out;
+  if (!pair.IsMap() || !pair["friction"])
+    return out;
+  const YAML::Node friction = pair["friction"];
+  r.only_keys(friction, key, {"model", "coefficient", "slip_bound"});
+  const std::string model = r.text(friction["model"], key + ".model");
+  FETICON_CHECK(model == "none" || model == "coulomb" || model == "tresca",
+                r.source << ": " << key << ".model = '" << model << "' must be one of: none, tresca, coulomb");
+  const std::map<std::string, std::string> needs = {{"coulomb", "coefficient"}, {"tresca", "slip_bound"}};
+  for (const char* number : {"coefficient", "slip_bound"})
+  {
+    const auto need = needs.find(model);
+    const bool wanted = need != needs.end() && need->second == number;
+    FETICON_CHECK(!friction[number] || wanted,
+                  r.source << ": " << key << "." << number << " does not belong to model " << model
+                           << " (coulomb takes coefficient, tresca slip_bound, none neither)");
+    FETICON_CHECK(friction[number] || !wanted, r.source << ": " << key << " (model " << model << ") needs " << number);
+  }
+  out.model = model == "coulomb" ? fem::FrictionModel::coulomb
+      : model == "tresca"        ? fem::FrictionModel::tresca
+                                 : fem::FrictionModel::none;
+  if (friction["coefficient"])
+    out.coefficient = r.number(friction["coefficient"], key + ".coefficient");
+  if (friction["slip_bound"])
+    out.slip_bound = r.number(friction["slip_bound"], key + ".slip_bound");
+  FETICON_CHECK(out.coefficient >= 0 && out.coefficient <= 100 && out.slip_bound >= 0 && std::isfinite(out.slip_bound),
+                r.source << ": " << key << ": coefficient must be in [0, 100] and slip_bound a finite value >= 0");
+  return out;
+}
 
 void read_steps(const YAML::Node& root, const ProblemReader& r, fem::Problem& p)
 {
