@@ -117,9 +117,9 @@ LoadHistory::LoadHistory(const Problem& problem, const Rules& rules)
     else if (step.increments)
       stage.steps = *step.increments;
     else if (step.automatic && !(k == 0 && rules.default_first))
-      stage.automatic = IncrementControl{std::min(1.0, step.automatic->initial / step.time),
-                                         std::min(1.0, step.automatic->minimum / step.time),
-                                         std::min(1.0, step.automatic->maximum / step.time)};
+      stage.automatic = IncrementControl{
+          std::min(1.0, step.automatic->initial / step.time), std::min(1.0, step.automatic->minimum / step.time),
+          std::min(1.0, step.automatic->maximum / step.time), step.automatic->max_increments};
     else
       stage.steps = rules.default_steps;
     add_stage(std::move(stage));
@@ -276,6 +276,18 @@ bool LoadHistory::may_halve(int step) const
   const int j = step - last_step(p.stage - 1);
   const double increment = p.fraction - (j == 1 ? 0.0 : _fractions[p.stage - 1][j - 2]);
   return 0.5 * increment >= stage.automatic->minimum * (1 - 1e-9);
+}
+
+std::string LoadHistory::increment_limit(int step) const
+{
+  const LoadPoint p = point(step);
+  const std::optional<IncrementControl>& a = _stages[p.stage - 1].automatic;
+  const int j = step - last_step(p.stage - 1);
+  if (!a || j <= a->max_increments)
+    return {};
+  return "step " + std::to_string(p.stage) + " needs more than its " + std::to_string(a->max_increments) +
+      " increments (*STEP, INC=; CalculiX's default 100) and stopped at load factor " +
+      std::to_string(point(step - 1).load_factor) + ": its increments stayed small (cut back, or slow to converge)";
 }
 
 void LoadHistory::increment_done(int step, int iterations)

@@ -48,6 +48,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace feticon::fem
@@ -158,6 +159,10 @@ public:
   /// @brief Whether load step `step` may be halved: always in a fixed stage, in an automatic one
   /// while half its increment is not below the step's minimum.
   bool may_halve(int step) const;
+
+  /// @brief Empty while load step `step` is within its automatic stage's max_increments; else
+  /// the one line that ends the run (CalculiX's rule).
+  std::string increment_limit(int step) const;
 
   /// @brief Load step `step` was finished in `iterations` outer iterations (a large number for
   /// one accepted without converging): an automatic stage plans the rest of its steps at the

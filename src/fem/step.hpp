@@ -71,6 +71,9 @@ struct IncrementControl
   double initial = 1;
   double minimum = 1e-5;
   double maximum = 1;
+  /// At most this many increments (a deck's *STEP, INC=; CalculiX's default 100): where they
+  /// stay small the run stops instead of creeping on.
+  int max_increments = 100;
 };
 
 struct Step

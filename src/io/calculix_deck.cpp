@@ -364,8 +364,10 @@ void write_ties(std::ostream& out, const fem::Problem& problem)
 /// the initial (CalculiX may cut them back, as feticon does, but not grow them).
 void write_step_start(std::ostream& out, const fem::Step& step, const CalculixOptions& options)
 {
-  out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "") << ", INC=10000\n*STATIC\n";
-  if (step.automatic && !step.increments)
+  const bool automatic = step.automatic && !step.increments;
+  out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "")
+      << ", INC=" << (automatic ? step.automatic->max_increments : 10000) << "\n*STATIC\n";
+  if (automatic)
   {
     const fem::IncrementControl& a = *step.automatic;
     out << number(a.initial / step.time) << ", 1.0, " << number(a.minimum / step.time) << ", "

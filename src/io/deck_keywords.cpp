@@ -1274,6 +1274,15 @@ private:
         throw Error(where() + ": AMPLITUDE=" + *a + " must be RAMP or STEP");
       _step.ramp = *a == "RAMP";
     }
+    if (const std::string* inc = _keyword.value("INC"))
+    {
+      const std::optional<double> n = parse_deck_real(*inc);
+      if (!n || *n < 1 || *n > 1e9 || *n != std::floor(*n))
+        throw Error(where() + ": INC=" + *inc + " must be a whole number of increments >= 1");
+      _step_max_increments = static_cast<int>(*n);
+    }
+    else
+      _step_max_increments = 100; // CalculiX's default
     const std::string* nlgeom = _keyword.value("NLGEOM");
     // NLGEOM stays on once a step has set it (CalculiX: "it remains active in all steps").
     _step.nlgeom =
@@ -1287,7 +1296,7 @@ private:
   /// CalculiX defines them.
   fem::IncrementControl automatic_increments(const DeckDataLine& line, double initial, double total) const
   {
-    fem::IncrementControl c{initial, std::min(initial, 1e-5 * total), total};
+    fem::IncrementControl c{initial, std::min(initial, 1e-5 * total), total, _step_max_increments};
     if (line.fields.size() > 2 && !line.fields[2].empty())
       c.minimum = real(line, 2, "minimum increment");
     if (line.fields.size() > 3 && !line.fields[3].empty())
@@ -1410,6 +1419,7 @@ private:
   std::string _changing_friction, _changing_friction_where;
   /// The interaction of a *CHANGE SURFACE BEHAVIOR whose *SURFACE BEHAVIOR comes next, and where.
   std::string _changing_behavior, _changing_behavior_where;
+  int _step_max_increments = 100; ///< the current *STEP's INC= (automatic increments)
   bool _in_step = false, _have_procedure = false;
   DeckPosition _step_where;
   DeckStep _step;

@@ -234,12 +234,19 @@ fem::IncrementControl increment_control(const YAML::Node& node, const std::strin
                                         double time)
 {
   FETICON_CHECK(node.IsMap() && node["initial"],
-                r.source << ": " << key << " must be a map {initial: DT, minimum: DT, maximum: DT}");
-  r.only_keys(node, key, {"initial", "minimum", "maximum"});
+                r.source << ": " << key << " must be a map {initial: DT, minimum: DT, maximum: DT, max_increments: N}");
+  r.only_keys(node, key, {"initial", "minimum", "maximum", "max_increments"});
   fem::IncrementControl c;
   c.initial = r.number(node["initial"], key + ".initial");
   c.minimum = node["minimum"] ? r.number(node["minimum"], key + ".minimum") : std::min(c.initial, 1e-5 * time);
   c.maximum = node["maximum"] ? r.number(node["maximum"], key + ".maximum") : time;
+  if (node["max_increments"])
+  {
+    const double n = r.number(node["max_increments"], key + ".max_increments");
+    FETICON_CHECK(n >= 1 && n <= 1e9 && n == std::floor(n),
+                  r.source << ": " << key << ".max_increments = " << n << " must be a whole number >= 1");
+    c.max_increments = static_cast<int>(n);
+  }
   FETICON_CHECK(c.minimum > 0 && c.minimum <= c.initial && c.initial <= c.maximum && c.initial <= time,
                 r.source << ": " << key
                          << " needs 0 < minimum <= initial <= maximum and initial <= the step's time, given "

@@ -26,6 +26,11 @@ void run_load_steps(LoadStepPhases& phases, fem::LoadHistory& history, int first
   int cutbacks_in_a_row = 0;
   for (int step = first_step; step <= history.n_steps(); ++step)
   {
+    if (std::string limit = history.increment_limit(step); !limit.empty())
+    {
+      out.reason = std::move(limit);
+      return;
+    }
     const double t = history.load_factor(step);
     phases.begin_load_step(step, t);
     LoadStep record;

@@ -8,7 +8,9 @@
 #    increment's end is converged; measured 3e-15).
 # 2. A problem file (large displacements) with `increment: {initial, maximum}` against the same
 #    step in `increments: 5`: the rule, and the same contact force (1e-6; measured 1.1e-7).
-# 3. Bad input: minimum above the initial increment, in a deck and in a problem file; one line.
+# 3. Bad input: minimum above the initial increment, in a deck and in a problem file; *STEP, INC=
+#    (CalculiX's maximum count of increments, default 100) below the increments the step takes,
+#    and INC=0: one line each.
 # Usage: automatic_increments.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -85,4 +87,9 @@ if "$feticon" run -q "$work/minimum.yaml" --output "$work/bad" >"$work/yaml.log"
   exit 1
 fi
 grep -q "steps.0.increment needs 0 < minimum <= initial <= maximum" "$work/yaml.log" || { cat "$work/yaml.log"; exit 1; }
+# *STEP, INC=3 (CalculiX's limit; default 100): the 6 increments the deck takes are too many.
+sed 's/^\*STEP,NLGEOM$/*STEP,NLGEOM,INC=3/' "$work/automatic.inp" >"$work/limited.inp"
+expect_error limited "step 1 needs more than its 3 increments (\*STEP, INC=; CalculiX's default 100)"
+sed 's/^\*STEP,NLGEOM$/*STEP,NLGEOM,INC=0/' "$work/automatic.inp" >"$work/zeroinc.inp"
+expect_error zeroinc "INC=0 must be a whole number of increments >= 1"
 echo "bad input: one line each"

@@ -434,6 +434,21 @@ TEST(LoadHistory, FollowReplaysAnAutomaticRunBitForBit)
   EXPECT_EQ(load_factors(restarted), load_factors(run));
 }
 
+// Reference: CalculiX's *STEP, INC= (nonlingeo.c): an automatic step's increments beyond
+// max_increments end the run with one line; a fixed step is bounded by its own plan.
+TEST(LoadHistory, AutomaticIncrementsStopAtTheirMaximumCount)
+{
+  fem::Problem problem = automatic_problem(0.1, 0.01, 1);
+  problem.steps.front().automatic->max_increments = 3;
+  const fem::LoadHistory history(problem, {});
+  EXPECT_EQ(history.increment_limit(3), "");
+  EXPECT_NE(history.increment_limit(4).find("step 1 needs more than its 3 increments (*STEP, INC="), std::string::npos)
+      << history.increment_limit(4);
+  fem::Problem fixed = box_problem(1e6, 1e-3);
+  fixed.steps.front().increments = 10;
+  EXPECT_EQ(fem::LoadHistory(fixed, {}).increment_limit(10), "");
+}
+
 // Reference: the check of add_stage: 0 < minimum <= initial <= maximum, named by step.
 TEST(LoadHistory, AutomaticIncrementsOutOfOrderAreRefused)
 {
