@@ -257,10 +257,13 @@ void LoadHistory::plan(size_t stage, size_t j, double increment)
   // The rest in equal increments no larger than `increment` (k / n from the start, as a fixed
   // stage's, so that an increment that never changes gives the fixed plan bit for bit).
   const double n = std::max(1.0, std::ceil((1 - at) / increment - 1e-9));
-  FETICON_CHECK(j + n <= 100000,
-                "step " << stage + 1 << ": an increment of " << increment
-                        << " of its time makes more than 100000 load steps");
-  for (int k = 1; k < static_cast<int>(n); ++k)
+  // The step stops after max_increments (increment_limit): the plan goes no further in these
+  // increments (a tiny initial one that never grew), its last load step stays the step's end.
+  const double limit = static_cast<double>(_stages[stage].automatic->max_increments) - static_cast<double>(j) + 1;
+  const double planned = std::min(n, std::max(1.0, limit));
+  FETICON_CHECK(j + planned <= 100000,
+                "step " << stage + 1 << ": " << j + planned << " load steps; feticon takes at most 100000 per step");
+  for (int k = 1; k < static_cast<int>(planned); ++k)
     fractions.push_back(at + (1 - at) * k / n);
   fractions.push_back(1.0);
   for (size_t s = stage; s < _last_step.size(); ++s)

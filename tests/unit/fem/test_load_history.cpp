@@ -447,6 +447,14 @@ TEST(LoadHistory, AutomaticIncrementsStopAtTheirMaximumCount)
   fem::Problem fixed = box_problem(1e6, 1e-3);
   fixed.steps.front().increments = 10;
   EXPECT_EQ(fem::LoadHistory(fixed, {}).increment_limit(10), "");
+  // An initial increment of 1e-7 of the step, which only growth could carry through: the plan
+  // holds the 100 increments the step may take, then its end, which the limit never reaches.
+  fem::Problem tiny = automatic_problem(1e-7, 1e-7, 1);
+  const fem::LoadHistory small(tiny, {});
+  ASSERT_EQ(small.n_steps(), 101);
+  EXPECT_DOUBLE_EQ(small.load_factor(100), 1e-5);
+  EXPECT_EQ(small.load_factor(101), 1.0);
+  EXPECT_NE(small.increment_limit(101), "");
 }
 
 // Reference: the check of add_stage: 0 < minimum <= initial <= maximum, named by step.
