@@ -364,9 +364,12 @@ void write_ties(std::ostream& out, const fem::Problem& problem)
 /// the initial (CalculiX may cut them back, as feticon does, but not grow them).
 void write_step_start(std::ostream& out, const fem::Step& step, const CalculixOptions& options)
 {
+  // INC=: the step's own count for automatic increments; for fixed ones room for cutbacks (twice
+  // the count, at least CalculiX's default 100), not so much that a failing model creeps on.
   const bool automatic = step.automatic && !step.increments;
+  const int fixed = step.increments.value_or(options.increments);
   out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "")
-      << ", INC=" << (automatic ? step.automatic->max_increments : 10000) << "\n*STATIC\n";
+      << ", INC=" << (automatic ? step.automatic->max_increments : std::max(100, 2 * fixed)) << "\n*STATIC\n";
   if (automatic)
   {
     const fem::IncrementControl& a = *step.automatic;
@@ -374,7 +377,7 @@ void write_step_start(std::ostream& out, const fem::Step& step, const CalculixOp
         << number(a.maximum / step.time) << '\n';
     return;
   }
-  const double increment = 1.0 / step.increments.value_or(options.increments);
+  const double increment = 1.0 / fixed;
   out << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
 }
 
