@@ -611,9 +611,9 @@ fem::Problem build_custom_problem(const ProblemFile& file)
     FETICON_CHECK(v == "true" || v == "false", file.source << ": plane_strain must be true or false");
     p.eliminated = {false, false, v == "true"};
   }
+  read_steps(root, r, p);
   if (root["contact"])
     p.contacts = contact_pairs(root["contact"], p.mesh, r);
-  read_steps(root, r, p); // after the contact pairs, which a step may change
   if (root["ties"])
     p.ties = ties(root["ties"], p.mesh, r);
   p.validate();

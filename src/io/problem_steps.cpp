@@ -257,7 +257,7 @@ fem::IncrementControl increment_control(const YAML::Node& node, const std::strin
 /// A step's `contact:` list, each entry {pair: I, friction: {...}, in_force: true|false} on pair
 /// I of the top-level `contact:` list: its friction from this step on (a deck's *CHANGE
 /// FRICTION), and whether it is in force (*MODEL CHANGE, REMOVE / ADD), over what `step` holds.
-void contact_changes(const YAML::Node& list, const std::string& key, const ProblemReader& r, const fem::Problem& p,
+void contact_changes(const YAML::Node& list, const std::string& key, const ProblemReader& r, size_t n_pairs,
                      fem::Step& step)
 {
   FETICON_CHECK(list.IsSequence(), r.source << ": " << key << " must be a list of {pair, friction, in_force}");
@@ -268,9 +268,9 @@ void contact_changes(const YAML::Node& list, const std::string& key, const Probl
     r.only_keys(entry, at, {"pair", "friction", "in_force"});
     FETICON_CHECK(entry["pair"], r.source << ": " << at << " needs pair (an index into the contact list)");
     const double number = r.number(entry["pair"], at + ".pair");
-    FETICON_CHECK(number >= 0 && number < static_cast<double>(p.contacts.size()) && number == std::floor(number),
+    FETICON_CHECK(number >= 0 && number < static_cast<double>(n_pairs) && number == std::floor(number),
                   r.source << ": " << at << ".pair = " << number << " is not an index into the contact list ("
-                           << p.contacts.size() << " pairs)");
+                           << n_pairs << " pairs)");
     const auto pair = static_cast<int32_t>(number);
     if (entry["friction"])
     {
@@ -295,11 +295,11 @@ void contact_changes(const YAML::Node& list, const std::string& key, const Probl
 /// One entry of `steps:` over `step`, which holds the step before (what the entry does not give
 /// carries over, as in CalculiX's steps).
 void step_entry(const YAML::Node& entry, const std::string& key, const ProblemReader& r, fem::Problem& p,
-                fem::Step& step)
+                size_t n_pairs, fem::Step& step)
 {
   r.only_keys(entry, key, {"supports", "loads", "temperatures", "increments", "increment", "time", "ramp", "contact"});
   if (entry["contact"])
-    contact_changes(entry["contact"], key + ".contact", r, p, step);
+    contact_changes(entry["contact"], key + ".contact", r, n_pairs, step);
   if (entry["supports"])
     step.dirichlet = supports(entry["supports"], key + ".supports", r, p);
   if (entry["temperatures"])
@@ -394,10 +394,12 @@ void read_steps(const YAML::Node& root, const ProblemReader& r, fem::Problem& p)
   FETICON_CHECK(steps.IsSequence() && steps.size() > 0, r.source << ": steps must be a non-empty list");
   FETICON_CHECK(steps.size() <= 10000, r.source << ": steps has " << steps.size() << " entries, at most 10000");
   p.steps.clear();
+  const YAML::Node pairs = root["contact"];
+  const size_t n_pairs = pairs && pairs.IsSequence() ? pairs.size() : 0;
   for (size_t i = 0; i < steps.size(); ++i)
   {
     fem::Step step = i == 0 ? first : p.steps.back();
-    step_entry(steps[i], "steps." + std::to_string(i), r, p, step);
+    step_entry(steps[i], "steps." + std::to_string(i), r, p, n_pairs, step);
     p.steps.push_back(std::move(step));
   }
 }

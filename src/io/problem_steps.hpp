@@ -14,7 +14,8 @@ namespace feticon::io
 /// coulomb, coefficient: 0.3}` (or tresca with slip_bound, or none); none if it has none.
 fem::Friction pair_friction(const YAML::Node& pair, const std::string& key, const ProblemReader& r);
 
-/// Fills p.steps and p.amplitudes from `root` (p.mesh and p.contacts read already).
+/// Fills p.steps and p.amplitudes from `root` (p.mesh read already; a step's `contact:` names
+/// pairs of root's `contact:` list by index).
 /// @throws feticon::Error naming the file and key of what is wrong
 void read_steps(const YAML::Node& root, const ProblemReader& r, fem::Problem& p);
 } // namespace feticon::io
