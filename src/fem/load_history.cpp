@@ -175,17 +175,22 @@ std::vector<int64_t> LoadHistory::dofs_at(const std::vector<la::Index>& indices)
   return out;
 }
 
-std::vector<int64_t> LoadHistory::held_dofs(int stage) const
+size_t LoadHistory::stage_index(int stage) const
 {
   FETICON_CHECK(stage >= 1 && stage <= n_stages(), "load stage " << stage << " of " << n_stages());
-  return dofs_at(_stages[stage - 1].held);
+  return static_cast<size_t>(stage - 1);
 }
 
-std::vector<int64_t> LoadHistory::started_dofs(int stage) const
+double LoadHistory::increment_of(int step) const
 {
-  FETICON_CHECK(stage >= 1 && stage <= n_stages(), "load stage " << stage << " of " << n_stages());
-  return dofs_at(_stages[stage - 1].started);
+  const LoadPoint p = point(step);
+  const int j = step - last_step(p.stage - 1);
+  return p.fraction - (j == 1 ? 0.0 : _fractions[p.stage - 1][j - 2]);
 }
+
+std::vector<int64_t> LoadHistory::held_dofs(int stage) const { return dofs_at(_stages[stage_index(stage)].held); }
+
+std::vector<int64_t> LoadHistory::started_dofs(int stage) const { return dofs_at(_stages[stage_index(stage)].started); }
 
 void LoadHistory::start_stage(int step, const la::Vector& u)
 {
@@ -205,8 +210,7 @@ void LoadHistory::start_stage(int step, const la::Vector& u)
 
 la::Vector LoadHistory::start_values(int stage) const
 {
-  FETICON_CHECK(stage >= 1 && stage <= n_stages(), "load stage " << stage << " of " << n_stages());
-  const Stage& s = _stages[stage - 1];
+  const Stage& s = _stages[stage_index(stage)];
   if (!s.started_given)
     return {};
   la::Vector out(static_cast<la::Index>(s.started.size()));
@@ -217,8 +221,7 @@ la::Vector LoadHistory::start_values(int stage) const
 
 void LoadHistory::set_start_values(int stage, const la::Vector& values)
 {
-  FETICON_CHECK(stage >= 1 && stage <= n_stages(), "load stage " << stage << " of " << n_stages());
-  Stage& s = _stages[stage - 1];
+  Stage& s = _stages[stage_index(stage)];
   FETICON_CHECK(values.size() == static_cast<la::Index>(s.started.size()) && values.allFinite(),
                 "step " << stage << ": " << values.size() << " start values for the " << s.started.size()
                         << " DOFs it holds and the step before leaves free (another model?), or not finite");
@@ -272,13 +275,8 @@ void LoadHistory::plan(size_t stage, size_t j, double increment)
 
 bool LoadHistory::may_halve(int step) const
 {
-  const LoadPoint p = point(step);
-  const Stage& stage = _stages[p.stage - 1];
-  if (!stage.automatic)
-    return true;
-  const int j = step - last_step(p.stage - 1);
-  const double increment = p.fraction - (j == 1 ? 0.0 : _fractions[p.stage - 1][j - 2]);
-  return 0.5 * increment >= stage.automatic->minimum * (1 - 1e-9);
+  const Stage& stage = _stages[point(step).stage - 1];
+  return !stage.automatic || 0.5 * increment_of(step) >= stage.automatic->minimum * (1 - 1e-9);
 }
 
 std::string LoadHistory::increment_limit(int step) const
@@ -300,7 +298,7 @@ void LoadHistory::increment_done(int step, int iterations)
   if (!stage.automatic || p.fraction == 1.0)
     return;
   const int j = step - last_step(p.stage - 1);
-  const double increment = p.fraction - (j == 1 ? 0.0 : _fractions[p.stage - 1][j - 2]);
+  const double increment = increment_of(step);
   double factor = 1;
   if (iterations > slow_iterations)
     factor = 0.75;

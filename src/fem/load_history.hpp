@@ -219,6 +219,10 @@ private:
   void start_new_dofs(Stage& stage, const std::vector<int64_t>& before, const std::vector<int64_t>& now,
                       const std::vector<int64_t>& with_amplitude);
   std::vector<int64_t> dofs_at(const std::vector<la::Index>& indices) const;
+  /// The index into _stages of stage `stage` (1-based), checked.
+  size_t stage_index(int stage) const;
+  /// The increment of load step `step` (a fraction of its stage).
+  double increment_of(int step) const;
   /// (term, coefficient) of load step `step`, in a fixed order.
   std::vector<std::pair<int, double>> coefficients(int step) const;
   void add_stage(Stage stage);
