@@ -513,6 +513,16 @@ TEST(DeckReader, ChangeSurfaceBehaviorSwitchesATieAndAContactPair)
   EXPECT_TRUE(p.steps[1].removed_contacts.empty());
   EXPECT_EQ(p.steps[1].removed_ties, std::vector<int32_t>{0});
   EXPECT_EQ(p.ties[0].slave, p.contacts[0].slave);
+  // *MODEL CHANGE of a pair that is only ever a tie: one line naming the deck line.
+  std::string removed = two_cubes;
+  replace_first(removed, "PRESSURE-OVERCLOSURE=HARD", "PRESSURE-OVERCLOSURE=TIED");
+  replace_first(removed, "*STEP\n*STATIC\n",
+                "*STEP\n*STATIC\n*MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE\nupper_bottom, lower_top\n");
+  const std::string message = error_of(write(dir, "removed_tie.inp", removed));
+  EXPECT_NE(message.find("*MODEL CHANGE of the tied pair UPPER_BOTTOM, LOWER_TOP is not implemented"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
 
 // Temperatures (issue 65, item 4): *EXPANSION in the material, *INITIAL CONDITIONS,
