@@ -4,6 +4,7 @@
 
 #include "common/error.hpp"
 #include "io/deck_data.hpp"
+#include "io/deck_parts.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -36,6 +37,7 @@ const std::map<std::string, std::string> inert_keywords = {
     {"CONTROLS", "feticon's solver settings are its own (feticon run --help)"},
     {"ORIENTATION", "the materials are isotropic, so an orientation changes nothing"},
     {"PREPRINT", "not written"},
+    {"SECTION CONTROLS", "feticon integrates C3D8R cells fully, without hourglass control"},
 };
 
 /// Keywords feticon does not implement, with what they are (for the one-line error).
@@ -55,9 +57,6 @@ const std::map<std::string, std::string> unsupported_keywords = {
     {"SHELL SECTION", "shell elements"},
     {"BEAM SECTION", "beam elements"},
     {"MEMBRANE SECTION", "membrane elements"},
-    {"PART", "parts and assemblies (flatten the deck into one model)"},
-    {"ASSEMBLY", "parts and assemblies (flatten the deck into one model)"},
-    {"INSTANCE", "parts and assemblies (flatten the deck into one model)"},
     {"RIGID BODY", "rigid bodies"},
     {"COUPLING", "coupling constraints"},
     {"MPC", "nonlinear multi-point constraints (linear ones: *EQUATION)"},
@@ -120,9 +119,16 @@ public:
     while (have)
     {
       _keyword = keyword;
-      handle();
+      if (_recording)
+        record();
+      else
+        handle();
       have = _tokens.next_keyword(keyword);
     }
+    FETICON_CHECK(!_recording, _recording->where.str() << ": *PART has no *END PART");
+    FETICON_CHECK(_open_instance.empty(),
+                  _instances.at(_open_instance).where.str() << ": *INSTANCE has no *END INSTANCE");
+    FETICON_CHECK(!_in_assembly, _assembly_where.str() << ": *ASSEMBLY has no *END ASSEMBLY");
     FETICON_CHECK(!_in_step, _step_where.str() << ": *STEP has no *END STEP");
     FETICON_CHECK(!_data.steps.empty(), "input deck has no *STEP: feticon solves the loads of a *STEP with *STATIC");
     FETICON_CHECK(!_data.cells.empty(), "input deck has no *ELEMENT");
@@ -183,28 +189,58 @@ private:
   int32_t entity(const DeckDataLine& line, size_t i, bool is_node) const
   {
     const int64_t label = integer(line, i, is_node ? "node number" : "element number");
-    const int32_t index = (is_node ? _data.node_index : _data.element_index).find(label);
-    if (index < 0)
-      fail_at(line.at(i),
-              (is_node ? "node " : "element ") + std::to_string(label) + " is not defined (by " +
-                  (is_node ? "a *NODE" : "an *ELEMENT") + " before this line)");
-    return index;
+    return index_of(label, is_node, _scope, line.at(i));
   }
   int32_t node(const DeckDataLine& line, size_t i) const { return entity(line, i, true); }
 
-  /// The nodes (elements) of field i: a number or the name of a node (element) set.
+  /// The mesh index of the node or element `label` of `scope` (deck_parts.hpp: an instance's
+  /// labels are its part's, shifted).
+  int32_t index_of(int64_t label, bool is_node, const DeckScope& scope, const DeckPosition& at) const
+  {
+    const char* kind = is_node ? "node " : "element ";
+    if (!_instances.empty() && scope.prefix.empty())
+      fail_at(at,
+              kind + std::to_string(label) +
+                  ": in a deck of parts and instances a node or element is named by its instance, "
+                  "INSTANCE.NUMBER, or by a set");
+    const int64_t model_label = label + (is_node ? scope.node_offset : scope.element_offset);
+    const int32_t index = (is_node ? _data.node_index : _data.element_index).find(model_label);
+    if (index < 0)
+      fail_at(at,
+              kind + std::to_string(label) + " is not defined (by " + (is_node ? "a *NODE" : "an *ELEMENT") +
+                  " before this line" +
+                  (scope.prefix.empty() ? std::string(")") : ", in instance " + scope.prefix + ")"));
+    return index;
+  }
+
+  /// The nodes (elements) of field i: a number, the name of a node (element) set, or a label of
+  /// an instance, "INSTANCE.NUMBER".
   std::vector<int32_t> members(const DeckDataLine& line, size_t i, bool is_node) const
   {
     if (i < line.fields.size() && !line.fields[i].empty() && !is_integer(line.fields[i]))
     {
+      const std::string name = _scope.prefix + name_of(line.fields[i]);
       const auto& sets = is_node ? _data.node_sets : _data.element_sets;
-      const auto it = sets.find(name_of(line.fields[i]));
-      if (it == sets.end())
-        fail_at(line.at(i),
-                std::string(is_node ? "no node set '" : "no element set '") + name_of(line.fields[i]) + "' is defined");
-      return it->second.expand();
+      if (const auto it = sets.find(name); it != sets.end())
+        return it->second.expand();
+      if (const size_t dot = name.rfind('.'); _scope.prefix.empty() && dot != std::string::npos)
+      {
+        int64_t label = 0;
+        const char* const end = name.data() + name.size();
+        const auto [stop, ec] = std::from_chars(name.data() + dot + 1, end, label);
+        if (_instances.count(name.substr(0, dot)) && ec == std::errc() && stop == end)
+          return {index_of(label, is_node, scope_of(name.substr(0, dot)), line.at(i))};
+      }
+      fail_at(line.at(i), std::string(is_node ? "no node set '" : "no element set '") + name + "' is defined");
     }
     return {entity(line, i, is_node)};
+  }
+
+  /// The scope of the lines of instance `name` (known).
+  DeckScope scope_of(const std::string& name) const
+  {
+    const DeckInstance& instance = _instances.at(name);
+    return {name + ".", instance.node_offset, instance.element_offset, nullptr};
   }
   std::vector<int32_t> nodes(const DeckDataLine& line, size_t i) const { return members(line, i, true); }
   std::vector<int32_t> elements(const DeckDataLine& line, size_t i) const { return members(line, i, false); }
@@ -213,14 +249,26 @@ private:
   void no_data()
   {
     DeckDataLine line;
-    if (_tokens.next_data(line))
+    if (next_data(line))
       fail_at(line.where, "takes no data lines");
+  }
+
+  /// The next data line of the current keyword: from the deck, or from the part an instance
+  /// reads again.
+  bool next_data(DeckDataLine& line)
+  {
+    if (!_replay)
+      return _tokens.next_data(line);
+    if (_replayed == _replay->size())
+      return false;
+    line = (*_replay)[_replayed++].view();
+    return true;
   }
 
   void skip_data()
   {
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
     }
   }
@@ -258,6 +306,12 @@ private:
         {"FRICTION", &KeywordReader::friction},
         {"CONTACT PAIR", &KeywordReader::contact_pair},
         {"TIE", &KeywordReader::tie},
+        {"PART", &KeywordReader::part},
+        {"END PART", &KeywordReader::end_part},
+        {"ASSEMBLY", &KeywordReader::assembly},
+        {"END ASSEMBLY", &KeywordReader::end_assembly},
+        {"INSTANCE", &KeywordReader::instance},
+        {"END INSTANCE", &KeywordReader::end_instance},
         {"STEP", &KeywordReader::step},
         {"STATIC", &KeywordReader::static_procedure},
         {"END STEP", &KeywordReader::end_step},
@@ -268,6 +322,9 @@ private:
         {"EL FILE", &KeywordReader::output_request},
         {"CONTACT FILE", &KeywordReader::output_request},
     };
+    if (!_open_instance.empty() && _keyword.name != "END INSTANCE")
+      throw Error(where() + ": the *INSTANCE at " + _instances.at(_open_instance).where.str() +
+                  " has no *END INSTANCE before it (feticon reads instances of parts: no data inside an instance)");
     _in_interaction = _in_interaction && (_keyword.name == "SURFACE BEHAVIOR" || _keyword.name == "FRICTION");
     if (!_changing_friction.empty() && _keyword.name != "FRICTION")
       throw Error(where() + ": the *CHANGE FRICTION before it (" + _changing_friction_where +
@@ -294,33 +351,176 @@ private:
   // ---- model data ---------------------------------------------------------------------------
   void heading() { skip_data(); }
 
+  // ---- parts and assemblies (deck_parts.hpp) -------------------------------------------------
+  /// *PART, NAME=: its keywords are kept (record) until *END PART and read for each instance.
+  void part()
+  {
+    known_parameters({"NAME"});
+    if (_in_step || _in_assembly)
+      throw Error(where() + " belongs to the model data, before the *ASSEMBLY and the first *STEP");
+    if (!_data.node_labels.empty() || !_data.cells.empty())
+      throw Error(where() +
+                  ": nodes or elements come before it outside any part; a deck has its mesh in parts "
+                  "or has no parts");
+    const std::string& name = required("NAME");
+    if (_parts.count(name))
+      throw Error(where() + ": part " + name + " is defined twice (first at " + _parts.at(name).where.str() + ")");
+    no_data();
+    _recording = &_parts[name];
+    _recording->where = _keyword.where;
+  }
+
+  /// A keyword inside a *PART, kept for its instances.
+  void record()
+  {
+    if (_keyword.name == "END PART")
+    {
+      known_parameters({});
+      no_data();
+      _recording = nullptr;
+      return;
+    }
+    if (const auto it = unsupported_keywords.find(_keyword.name); it != unsupported_keywords.end())
+      throw Error(where() + " is not implemented by feticon (" + it->second + ")");
+    if (_keyword.name == "PART")
+      throw Error(where() + ": the *PART at " + _recording->where.str() + " has no *END PART before it");
+    if (!allowed_in_part(_keyword.name))
+      throw Error(where() + " inside the *PART at " + _recording->where.str() +
+                  ": a part holds nodes, elements, sets, surfaces and sections; this keyword belongs to the "
+                  "model, the assembly or a step");
+    RecordedKeyword kept{_keyword, {}};
+    for (DeckDataLine line; _tokens.next_data(line);)
+      kept.lines.emplace_back(line);
+    _recording->keywords.push_back(std::move(kept));
+  }
+
+  void end_part() { throw Error(where() + " without a *PART"); }
+
+  void assembly()
+  {
+    known_parameters({"NAME"});
+    if (_in_step || _in_assembly || _assembly_where.line > 0)
+      throw Error(where() + ": a deck has one *ASSEMBLY, in the model data before the first *STEP");
+    if (!_data.node_labels.empty() || !_data.cells.empty())
+      throw Error(where() + ": nodes or elements come before it outside any part; an assembly places parts");
+    _in_assembly = true;
+    _assembly_where = _keyword.where;
+    no_data();
+  }
+
+  void end_assembly()
+  {
+    known_parameters({});
+    if (!_in_assembly)
+      throw Error(where() + " without an *ASSEMBLY");
+    _in_assembly = false;
+    no_data();
+  }
+
+  /// *INSTANCE, NAME=, PART=: the part's keywords read again under the instance's names, labels
+  /// and placement (data lines: a translation; an axis a, b and an angle in degrees).
+  void instance()
+  {
+    known_parameters({"NAME", "PART"});
+    if (!_in_assembly)
+      throw Error(where() + " belongs inside an *ASSEMBLY");
+    const std::string name = required("NAME"), part_name = required("PART"); // copies: _keyword changes below
+    const auto part = _parts.find(part_name);
+    if (part == _parts.end())
+      throw Error(where() + ": no *PART '" + part_name + "' is defined before it");
+    if (_instances.count(name))
+      throw Error(where() + ": instance " + name + " is defined twice (first at " + _instances.at(name).where.str() +
+                  ")");
+    const InstancePlacement placement = instance_placement();
+    _instances[name] = {part_name, _largest_node_label, _largest_element_label, _keyword.where};
+    DeckScope scope = scope_of(name);
+    scope.placement = &placement;
+    const DeckKeyword instance_keyword = _keyword;
+    _scope = scope;
+    for (const RecordedKeyword& kept : part->second.keywords)
+    {
+      _keyword = scoped_keyword(kept.keyword, scope.prefix);
+      _replay = &kept.lines;
+      _replayed = 0;
+      handle();
+      _replay = nullptr;
+    }
+    _scope = {};
+    _keyword = instance_keyword;
+    _open_instance = name;
+  }
+
+  /// The data lines of an *INSTANCE: none, a translation, or a translation and a rotation.
+  InstancePlacement instance_placement()
+  {
+    InstancePlacement placement;
+    DeckDataLine line;
+    if (!next_data(line))
+      return placement;
+    for (int k = 0; k < 3; ++k)
+      placement.translation[k] = real(line, k, "translation");
+    if (!next_data(line))
+      return placement;
+    Eigen::Vector3d a, b;
+    for (int k = 0; k < 3; ++k)
+    {
+      a[k] = real(line, k, "point a of the rotation axis");
+      b[k] = real(line, k + 3, "point b of the rotation axis");
+    }
+    try
+    {
+      placement.rotation = rotation_about_axis(a, b, real(line, 6, "rotation angle (degrees)"));
+    }
+    catch (const Error& e)
+    {
+      fail_at(line.where, e.what());
+    }
+    placement.axis_point = a;
+    if (next_data(line))
+      fail_at(line.where,
+              "an *INSTANCE has at most two data lines: a translation, and a rotation axis (a, b) "
+              "with its angle");
+    return placement;
+  }
+
+  void end_instance()
+  {
+    known_parameters({});
+    if (_open_instance.empty())
+      throw Error(where() + " without an *INSTANCE");
+    _open_instance.clear();
+    no_data();
+  }
+
   void node_block()
   {
     known_parameters({"NSET", "SYSTEM"});
     if (_keyword.has("SYSTEM"))
       throw Error(where() + ": SYSTEM= (local coordinates) is not implemented by feticon");
+    outside_parts_check();
     IndexRuns* set = nullptr;
     if (_keyword.has("NSET"))
       set = &_data.node_sets[required("NSET")];
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
-      const int64_t label = integer(line, 0, "node number");
-      if (label <= 0 || label > largest_label)
-        fail_at(line.at(0), "node number " + std::to_string(label) + " is outside 1.." + std::to_string(largest_label));
+      const int64_t label = model_label(line, "node", _scope.node_offset);
       if (line.fields.size() > 4)
         fail_at(line.at(4), "a node line has at most a number and three coordinates");
       const int32_t index = static_cast<int32_t>(_data.node_labels.size());
       if (index == std::numeric_limits<int32_t>::max())
         fail_at(line.where, "more nodes than feticon's 32-bit node indices hold");
       if (!_data.node_index.insert(label, index))
-        fail_at(line.at(0), "node " + std::to_string(label) + " is defined twice");
+        fail_at(line.at(0), "node " + std::to_string(label - _scope.node_offset) + " is defined twice");
       _data.node_labels.push_back(static_cast<int32_t>(label));
       if (index >= _data.coordinates.rows()) // more nodes than the outline counted
         _data.coordinates.conservativeResize(2 * static_cast<Eigen::Index>(index) + 1024, 3);
+      Eigen::Vector3d x;
       for (int k = 1; k <= 3; ++k)
-        _data.coordinates(index, k - 1) =
+        x[k - 1] =
             static_cast<size_t>(k) < line.fields.size() && !line.fields[k].empty() ? real(line, k, "coordinate") : 0.0;
+      _data.coordinates.row(index) = (_scope.placement ? _scope.placement->apply(x) : x).transpose();
+      _largest_node_label = std::max(_largest_node_label, label);
       if (set)
         set->push_back(index);
     }
@@ -344,6 +544,7 @@ private:
     if (type.size() == 5 && type.back() == 'R' && type[3] == '4')
       _data.warn("element type " + type + " (" + _keyword.where.str() + ") is solved as " + type.substr(0, 4) +
                  " (full 2x2 integration, not reduced with hourglass control)");
+    outside_parts_check();
     planar_formulation(type, *cell_type);
     // 2x2x2 (C3D20R) or 2x2 (CPE8R, CPS8R, CAX8R) Gauss points, as CalculiX.
     const char reduced = type == "C3D20R" || (cell_type->kind == mesh::CellKind::quad8 && type.back() == 'R') ? 1 : 0;
@@ -354,15 +555,12 @@ private:
     std::vector<int32_t> nodes_of_element;
     int64_t label = 0;
     DeckPosition start;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       size_t first = 0;
       if (nodes_of_element.empty() && label == 0)
       {
-        label = integer(line, 0, "element number");
-        if (label <= 0 || label > largest_label)
-          fail_at(line.at(0),
-                  "element number " + std::to_string(label) + " is outside 1.." + std::to_string(largest_label));
+        label = model_label(line, "element", _scope.element_offset);
         start = line.where;
         first = 1;
       }
@@ -383,10 +581,11 @@ private:
       }
       const int32_t index = static_cast<int32_t>(_data.cells.size());
       if (!_data.element_index.insert(label, index))
-        fail_at(start, "element " + std::to_string(label) + " is defined twice");
+        fail_at(start, "element " + std::to_string(label - _scope.element_offset) + " is defined twice");
       _data.cells.add(cell_type->kind, nodes_of_element);
       _data.reduced_integration.push_back(reduced);
       _data.element_labels.push_back(static_cast<int32_t>(label));
+      _largest_element_label = std::max(_largest_element_label, label);
       if (set)
         set->push_back(index);
       nodes_of_element.clear();
@@ -394,6 +593,28 @@ private:
     }
     if (label != 0)
       fail_at(start, "element " + std::to_string(label) + " of type " + type + " has fewer than " + count + " nodes");
+  }
+
+  /// The model's label of the node or element numbered by field 0 (an instance's numbers are
+  /// shifted past the labels before it, deck_parts.hpp).
+  int64_t model_label(const DeckDataLine& line, const std::string& kind, int64_t offset) const
+  {
+    const int64_t label = integer(line, 0, (kind + " number").c_str());
+    if (label <= 0 || label > largest_label - offset)
+      fail_at(line.at(0),
+              kind + " number " + std::to_string(label) + " is outside 1.." + std::to_string(largest_label - offset) +
+                  (offset > 0 ? " (the labels of the instances before it take the rest)" : ""));
+    return label + offset;
+  }
+
+  /// Nodes and elements of a deck of parts belong to parts (the assembly's own nodes are
+  /// reference points, which feticon does not implement).
+  void outside_parts_check() const
+  {
+    if (_scope.prefix.empty() && (!_parts.empty() || _in_assembly))
+      throw Error(where() +
+                  ": nodes and elements outside the parts (the assembly's reference points) are not "
+                  "implemented by feticon");
   }
 
   /// The 2D formulation an element type names (CPE: plane strain, CPS: plane stress, CAX:
@@ -425,11 +646,17 @@ private:
   {
     const bool nodes_kind = _keyword.name == "NSET";
     // CalculiX ignores a parameter a set does not have (with a warning): the set is the same.
-    // An Abaqus instance's set is another model's (parts and assemblies), refused.
-    if (_keyword.has("INSTANCE"))
-      throw Error(where() + ": parameter INSTANCE is not implemented by feticon (parts and assemblies)");
+    // INSTANCE= (an assembly's set of an instance's nodes or elements) and INTERNAL (hidden in
+    // Abaqus/CAE) are Abaqus's.
+    const DeckScope outer = _scope;
+    if (const std::string* instance = _keyword.value("INSTANCE"))
+    {
+      if (!_scope.prefix.empty() || !_instances.count(*instance))
+        throw Error(where() + ": INSTANCE=" + *instance + " names no instance placed before it");
+      _scope = scope_of(*instance);
+    }
     for (const auto& [key, value] : _keyword.parameters)
-      if (key != (nodes_kind ? "NSET" : "ELSET") && key != "GENERATE")
+      if (key != (nodes_kind ? "NSET" : "ELSET") && key != "GENERATE" && key != "INSTANCE" && key != "INTERNAL")
         _data.warn(where() + ": parameter " + key + " is not one of *" + _keyword.name +
                    "'s; ignored, as CalculiX ignores it");
     const std::string name = required(nodes_kind ? "NSET" : "ELSET");
@@ -438,7 +665,7 @@ private:
     const size_t n_entities = nodes_kind ? _data.node_labels.size() : _data.cells.size();
     DeckDataLine line;
     const bool generate = _keyword.has("GENERATE");
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       if (generate)
       {
@@ -448,12 +675,7 @@ private:
           fail_at(line.where, "GENERATE needs first <= last and a positive increment");
         for (int64_t label = first;; label += step)
         {
-          const int32_t i = nodes_kind ? _data.node_index.find(label) : _data.element_index.find(label);
-          if (i < 0)
-            fail_at(line.where,
-                    std::string(nodes_kind ? "node " : "element ") + std::to_string(label) +
-                        " of the generated range is not defined");
-          listed.push_back(i);
+          listed.push_back(index_of(label, nodes_kind, _scope, line.where));
           if (last - label < step) // the next label would pass `last` (or overflow int64)
             break;
         }
@@ -471,11 +693,12 @@ private:
     IndexRuns& set = sets[name];
     set.append(listed.expand());
     set.compact(n_entities);
+    _scope = outer;
   }
 
   void surface()
   {
-    known_parameters({"NAME", "TYPE"});
+    known_parameters({"NAME", "TYPE", "INTERNAL"});
     const std::string name = required("NAME");
     const std::string* type = _keyword.value("TYPE");
     if (type && *type != "ELEMENT" && *type != "NODE")
@@ -484,7 +707,7 @@ private:
     s.where = _keyword.where;
     s.node_based = type && *type == "NODE";
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       if (s.node_based)
       {
@@ -520,7 +743,7 @@ private:
     if (_material.empty())
       throw Error(where() + " comes before any *MATERIAL");
     DeckDataLine line;
-    if (!_tokens.next_data(line))
+    if (!next_data(line))
       throw Error(where() + " needs a data line: Young's modulus, Poisson's ratio");
     fem::Material& m = _data.materials[_material];
     if (m.is_hyperelastic())
@@ -535,7 +758,7 @@ private:
     {
       fail_at(line.where, e.what());
     }
-    if (_tokens.next_data(line))
+    if (next_data(line))
       fail_at(line.where, "temperature-dependent elastic constants are not implemented by feticon (one data line)");
   }
 
@@ -556,7 +779,7 @@ private:
     if (m.young > 0)
       throw Error(where() + ": material " + _material + " has *ELASTIC or *HYPERELASTIC already");
     DeckDataLine line;
-    if (!_tokens.next_data(line))
+    if (!next_data(line))
       throw Error(where() + (neo_hooke ? " needs a data line: C10, D1" : " needs a data line: C10, C01, D1"));
     fem::Hyperelastic law;
     law.c10 = real(line, 0, "C10");
@@ -571,7 +794,7 @@ private:
       fail_at(line.where, e.what());
     }
     m.set_hyperelastic(law);
-    if (_tokens.next_data(line))
+    if (next_data(line))
       fail_at(line.where,
               "temperature-dependent hyperelastic constants are not implemented by feticon (one data line)");
   }
@@ -583,13 +806,13 @@ private:
     if (_material.empty())
       throw Error(where() + " comes before any *MATERIAL");
     DeckDataLine line;
-    if (!_tokens.next_data(line))
+    if (!next_data(line))
       throw Error(where() + " needs a data line: the density");
     const double rho = real(line, 0, "density");
     if (!(rho > 0) || !std::isfinite(rho))
       fail_at(line.at(0), "the density must be positive and finite");
     _data.materials[_material].density = rho;
-    if (_tokens.next_data(line))
+    if (next_data(line))
       fail_at(line.where, "temperature-dependent densities are not implemented by feticon (one data line)");
   }
 
@@ -607,10 +830,10 @@ private:
     if (const std::string* zero = _keyword.value("ZERO"); zero && !parse_deck_real(*zero))
       throw Error(where() + ": ZERO=" + *zero + " is not a number");
     DeckDataLine line;
-    if (!_tokens.next_data(line))
+    if (!next_data(line))
       throw Error(where() + " needs a data line: the expansion coefficient");
     _data.materials[_material].expansion = real(line, 0, "expansion coefficient");
-    if (_tokens.next_data(line))
+    if (next_data(line))
       fail_at(line.where,
               "temperature-dependent expansion coefficients are not implemented by feticon (one data line)");
   }
@@ -629,7 +852,7 @@ private:
     curve = {};
     DeckDataLine line;
     std::optional<double> temperature;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       curve.stress.push_back(real(line, 0, "von Mises stress"));
       curve.plastic_strain.push_back(real(line, 1, "equivalent plastic strain"));
@@ -666,7 +889,7 @@ private:
     if (_in_step)
       throw Error(where() + " belongs to the model data, before the first *STEP");
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       const double value = temperature_value(line);
       for (const int32_t n : nodes(line, 0))
@@ -686,7 +909,7 @@ private:
       throw Error(where() + " belongs inside a *STEP");
     const std::string amplitude = begin_load(_data.state.temperature);
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       const double value = temperature_value(line);
       for (const int32_t n : nodes(line, 0))
@@ -708,7 +931,7 @@ private:
       throw Error(where() + " needs one of ADD and REMOVE");
     const bool remove = _keyword.has("REMOVE");
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       if (line.fields.size() < 2 || line.fields[0].empty() || line.fields[1].empty())
         fail_at(line.where, "a *MODEL CHANGE line names a pair: slave surface, master surface");
@@ -754,7 +977,7 @@ private:
 
   void solid_section()
   {
-    known_parameters({"ELSET", "MATERIAL", "ORIENTATION", "OFFSET"});
+    known_parameters({"ELSET", "MATERIAL", "ORIENTATION", "OFFSET", "CONTROLS"});
     if (_keyword.has("OFFSET") && real_parameter("OFFSET", 0) != 0)
       throw Error(where() + ": OFFSET (of a shell's reference surface) is not implemented by feticon");
     if (_keyword.has("ORIENTATION"))
@@ -763,7 +986,7 @@ private:
     // The data line: the thickness of plane strain and plane stress cells (meaningless for
     // 3D and axisymmetric ones).
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
       if (section.thickness == 0 && !line.fields.empty() && !line.fields[0].empty())
       {
         section.thickness = real(line, 0, "thickness");
@@ -814,7 +1037,7 @@ private:
         _data.model_boundary.clear();
     }
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       const std::vector<int32_t> targets = nodes(line, 0);
       int64_t first = 0, last = 0;
@@ -869,7 +1092,7 @@ private:
   {
     const std::string amplitude = begin_load(_data.state.cload);
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       const std::vector<int32_t> targets = nodes(line, 0);
       const int64_t dof = integer(line, 1, "degree of freedom");
@@ -929,7 +1152,7 @@ private:
     if (op_new())
       _data.state.body.clear();
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       const std::vector<int32_t> cells = elements(line, 0);
       if (line.fields.size() < 3)
@@ -946,7 +1169,7 @@ private:
   {
     const std::string amplitude = begin_load(_data.state.dload);
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       const std::string name = line.fields.empty() ? std::string() : name_of(line.fields[0]);
       const auto it = _data.surfaces.find(name);
@@ -995,7 +1218,7 @@ private:
     a.where = where() + " " + name;
     std::vector<double> numbers;
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       size_t n = line.fields.size();
       while (n > 0 && line.fields[n - 1].empty())
@@ -1016,7 +1239,7 @@ private:
   {
     known_parameters({});
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       const int64_t n = integer(line, 0, "number of terms");
       if (n < 1 || n > 1000)
@@ -1025,7 +1248,7 @@ private:
       const DeckPosition start = line.where;
       while (static_cast<int64_t>(eq.terms.size()) < n)
       {
-        if (!_tokens.next_data(line))
+        if (!next_data(line))
           fail_at(start, "the equation has fewer than its " + std::to_string(n) + " terms");
         if (line.fields.size() % 3 != 0)
           fail_at(line.where, "equation terms come in triples: node, degree of freedom, coefficient");
@@ -1055,7 +1278,17 @@ private:
     _interaction = required("NAME");
     _data.interactions.insert(_interaction);
     _in_interaction = true;
-    no_data();
+    // Abaqus's optional data line: the out-of-plane thickness of 2D surfaces (Abaqus/CAE writes
+    // "1.,"); feticon's 2D pressures are per the section's thickness already.
+    DeckDataLine line;
+    if (next_data(line))
+    {
+      if (!line.fields.empty() && !line.fields[0].empty() && real(line, 0, "out-of-plane thickness") != 1.0)
+        _data.warn(where() + ": the out-of-plane thickness " + text(line.fields[0]) +
+                   " is not used (2D contact pressures are per the *SOLID SECTION thickness)");
+      if (next_data(line))
+        fail_at(line.where, "takes at most one data line (the out-of-plane thickness)");
+    }
   }
 
   void surface_behavior()
@@ -1071,7 +1304,7 @@ private:
     const std::string law = required("PRESSURE-OVERCLOSURE");
     std::string parameters;
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
       for (size_t k = 0; k < line.fields.size(); ++k)
         parameters += (parameters.empty() ? "" : ", ") + text(line.fields[k]);
     if (law != "HARD" && law != "TIED" && law != "LINEAR" && law != "EXPONENTIAL" && law != "TABULAR")
@@ -1133,7 +1366,7 @@ private:
     // A tied interaction sticks whatever its *FRICTION says (CalculiX decks write mu = 1e30).
     if (_data.tied_interactions.count(interaction))
     {
-      for (DeckDataLine line; _tokens.next_data(line);)
+      for (DeckDataLine line; next_data(line);)
         ;
       return;
     }
@@ -1146,7 +1379,7 @@ private:
     DeckFriction friction;
     friction.where = _keyword.where;
     DeckDataLine line;
-    if (!_tokens.next_data(line))
+    if (!next_data(line))
       throw Error(where() + " needs a data line: friction coefficient mu [, stick slope]");
     friction.coefficient = real(line, 0, "friction coefficient mu");
     if (friction.coefficient < 0 || friction.coefficient > largest_friction_coefficient)
@@ -1163,7 +1396,7 @@ private:
       if (!(friction.stick_slope > 0))
         fail_at(line.at(1), "the stick slope " + slope + " must be positive");
     }
-    if (_tokens.next_data(line))
+    if (next_data(line))
       fail_at(line.where, "takes one data line (a table of coefficients is not implemented by feticon)");
     for (const char* p : {"LAGRANGE", "SLIP TOLERANCE", "ELASTIC SLIP"})
       if (_keyword.has(p))
@@ -1204,7 +1437,7 @@ private:
       _data.warn(where() + ": SMALL SLIDING is not used; feticon searches the contact in every outer iteration");
     DeckDataLine line;
     bool any = false;
-    while (_tokens.next_data(line))
+    while (next_data(line))
     {
       if (line.fields.size() != 2 || line.fields[0].empty() || line.fields[1].empty())
         fail_at(line.where, "a contact pair line is: slave surface, master surface");
@@ -1244,13 +1477,13 @@ private:
       tie.adjust = *adjust == "YES";
     }
     DeckDataLine line;
-    if (!_tokens.next_data(line))
+    if (!next_data(line))
       throw Error(where() + " needs a data line: slave surface, master surface");
     if (line.fields.size() != 2 || line.fields[0].empty() || line.fields[1].empty())
       fail_at(line.where, "a tie line is: slave surface, master surface");
     tie.slave = name_of(line.fields[0]);
     tie.master = name_of(line.fields[1]);
-    if (_tokens.next_data(line))
+    if (next_data(line))
       fail_at(line.where, "a *TIE has one line (slave surface, master surface); write one *TIE per pair of surfaces");
     _data.ties.push_back(std::move(tie));
   }
@@ -1258,9 +1491,12 @@ private:
   // ---- steps ----------------------------------------------------------------------------
   void step()
   {
-    known_parameters({"NLGEOM", "INC", "INCF", "AMPLITUDE", "PERTURBATION", "THERMAL NETWORK", "SHOCK SMOOTHING"});
+    known_parameters(
+        {"NAME", "NLGEOM", "INC", "INCF", "AMPLITUDE", "PERTURBATION", "THERMAL NETWORK", "SHOCK SMOOTHING"});
     if (_in_step)
       throw Error(where() + ": the *STEP at " + _step_where.str() + " has no *END STEP before this one");
+    if (_in_assembly)
+      throw Error(where() + ": the *ASSEMBLY at " + _assembly_where.str() + " has no *END ASSEMBLY before it");
     for (const char* p : {"PERTURBATION", "THERMAL NETWORK"})
       if (_keyword.has(p))
         throw Error(where() + ": " + p + " is not implemented by feticon");
@@ -1321,7 +1557,7 @@ private:
       _data.warn(where() + ": SOLVER=" + *solver + " is not used; feticon solves by FETI");
     _have_procedure = true;
     DeckDataLine line;
-    if (!_tokens.next_data(line))
+    if (!next_data(line))
       return; // one increment
     const double initial = line.fields.size() > 0 && !line.fields[0].empty() ? real(line, 0, "initial increment") : 1.0;
     const double total = line.fields.size() > 1 && !line.fields[1].empty() ? real(line, 1, "step time") : 1.0;
@@ -1339,7 +1575,7 @@ private:
     }
     else
       _step.automatic = automatic_increments(line, initial, total);
-    if (_tokens.next_data(line))
+    if (next_data(line))
       fail_at(line.where, "*STATIC takes one data line");
   }
 
@@ -1395,7 +1631,7 @@ private:
       if (_keyword.has(p))
         _data.warn(where() + ": " + p + " is not honoured; feticon writes every converged increment");
     DeckDataLine line;
-    while (_tokens.next_data(line))
+    while (next_data(line))
       for (const std::string_view v : line.fields)
         if (!v.empty())
           request.variables.push_back(name_of(v));
@@ -1408,6 +1644,19 @@ private:
   }
 
   DeckTokenizer _tokens;
+  /// Parts and assemblies (deck_parts.hpp): the parts by name, the part whose keywords are being
+  /// kept, the instances placed so far, the one whose *END INSTANCE is due.
+  std::map<std::string, DeckPart> _parts;
+  DeckPart* _recording = nullptr;
+  std::map<std::string, DeckInstance> _instances;
+  std::string _open_instance;
+  bool _in_assembly = false;
+  DeckPosition _assembly_where;
+  /// The names and labels of the lines being read, and the kept lines an instance reads.
+  DeckScope _scope;
+  const std::vector<RecordedLine>* _replay = nullptr;
+  size_t _replayed = 0;
+  int64_t _largest_node_label = 0, _largest_element_label = 0;
   std::string _path;
   DeckKeyword _keyword;
   DeckData _data;

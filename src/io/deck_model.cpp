@@ -817,12 +817,25 @@ DeckOutline deck_outline(const std::filesystem::path& path)
   DeckTokenizer tokens(path);
   DeckKeyword keyword;
   bool first_step = true;
+  // The nodes and elements of each *PART, counted once for each of its *INSTANCEs.
+  std::map<std::string, std::pair<int64_t, int64_t>> part_counts;
+  std::string part;
   while (tokens.next_keyword(keyword))
   {
-    if (keyword.name == "NODE")
-      out.nodes += tokens.count_data_lines();
-    else if (keyword.name == "ELEMENT")
-      out.elements += tokens.count_data_lines();
+    if (keyword.name == "NODE" || keyword.name == "ELEMENT")
+    {
+      const bool nodes = keyword.name == "NODE";
+      int64_t& count = part.empty() ? (nodes ? out.nodes : out.elements)
+                                    : (nodes ? part_counts[part].first : part_counts[part].second);
+      count += tokens.count_data_lines();
+    }
+    else if (keyword.name == "PART" || keyword.name == "END PART")
+      part = keyword.name == "PART" && keyword.value("NAME") ? *keyword.value("NAME") : std::string();
+    else if (const std::string* instance_of = keyword.value("PART"); keyword.name == "INSTANCE" && instance_of)
+    {
+      out.nodes += part_counts[*instance_of].first;
+      out.elements += part_counts[*instance_of].second;
+    }
     else if (keyword.name == "STEP")
     {
       const std::string* nlgeom = keyword.value("NLGEOM");

@@ -394,15 +394,17 @@ MM_MUTATORS = [number_replacer(EXTREMES), mm_header, mm_size]
 DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_friction.inp", "contactenergy_plastic.inp",
               "punch_tet10.inp",
               "punch_c3d20r.inp", "contactenergy_density.inp", "rings_cax4.inp", "tie_blocks.inp",
-              "change_friction.inp", "rubber_block.inp", "changesurfbeh.inp"]
+              "change_friction.inp", "rubber_block.inp", "changesurfbeh.inp", "assembly_two_blocks.inp"]
 # Seeds of our own (tests/data/fuzz/): a C3D10 deck, feticon's export of gmsh_tet10.yaml, and
 # a C3D20 / C3D20R one (reduced integration per cell), the same punch meshed with hex20; two
 # CAX4 rings shrink-fitted through a node-to-surface pair of element edges (issue 64). From
 # tests/data/calculix/: tie_blocks.inp, two blocks glued by a *TIE (issue 63),
 # change_friction.inp, a block pushed along a base over three steps, *CHANGE FRICTION in the last,
 # rubber_block.inp, a Neo-Hooke block compressed 30 % through contact (issue 66), and CalculiX's
-# changesurfbeh.inp, a tie turned into contact by *CHANGE SURFACE BEHAVIOR (issue 65).
+# changesurfbeh.inp, a tie turned into contact by *CHANGE SURFACE BEHAVIOR (issue 65). From
+# tests/data/abaqus/: assembly_two_blocks.inp, Abaqus/CAE's layout of parts and instances (issue 63).
 FUZZ_FOLDER_DECKS = {"punch_tet10.inp", "punch_c3d20r.inp", "rings_cax4.inp"}
+ABAQUS_FOLDER_DECKS = {"assembly_two_blocks.inp"}
 # Seeds made from another by an edit: contact1 with Coulomb friction (*FRICTION after the
 # pressure-overclosure law, as tests/cli/deck_friction.sh adds it to CalculiX's decks).
 # contactenergy with a density, for the body loads among the keyword mutations (*DLOAD GRAV,
@@ -456,6 +458,12 @@ DECK_KEYWORDS = [
     "*AMPLITUDE, NAME=A, SHIFTY=-1\n0,0,1,1,1,-1e30", "*STEP, AMPLITUDE=STEP", "*STEP, AMPLITUDE=@",
     "*BOUNDARY, AMPLITUDE=A\nNALL,1,3,1e-3", "*DLOAD, AMPLITUDE=@\nEALL,P1,1", "*DSLOAD, AMPLITUDE=A\nSMAST,P,1", "*CLOAD, OP=NEW",
     "*BOUNDARY, OP=NEW", "*DLOAD, OP=XYZ",
+    # Parts and assemblies (issue 63, item 7).
+    "*PART, NAME=P", "*PART, NAME=BLOCK", "*END PART", "*ASSEMBLY", "*END ASSEMBLY", "*END INSTANCE",
+    "*INSTANCE, NAME=I, PART=BLOCK", "*INSTANCE, NAME=I, PART=@\n0,0,1\n0,0,0,0,0,1,45\n*END INSTANCE",
+    "*INSTANCE, NAME=I, PART=PUNCH\n1e300,0,0\n0,0,0,0,0,0,1e300\n*END INSTANCE", "*NSET, NSET=X, INSTANCE=BASE\n1",
+    "*NSET, NSET=X, INSTANCE=@\n1", "*ELSET, ELSET=X, INSTANCE=TOP-1, GENERATE\n1,9,1", "*BOUNDARY\nTOP-1.1,1,3",
+    "*BOUNDARY\nBASE.99999,1,1", "*CLOAD\nTOP-1.20,3,-1", "*BOUNDARY\nTOP-1.9223372036854775807,1,1",
     # Temperatures (issue 65, item 4).
     "*EXPANSION\n1.2e-5", "*EXPANSION, ZERO=20\n1e300", "*EXPANSION, TYPE=ORTHO\n1,2,3", "*EXPANSION\n-1e-5\n1e-5,100",
     "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL,20", "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL,-1e300",
@@ -814,7 +822,8 @@ def make_case(kind, rng, source_dir):
     seed_dir = os.path.join(source_dir, "tests", "data", "fuzz")
     if kind == "deck":
         name = rng.choice(DECK_SEEDS)
-        folder = seed_dir if name in FUZZ_FOLDER_DECKS else os.path.join(source_dir, "tests", "data", "calculix")
+        folder = seed_dir if name in FUZZ_FOLDER_DECKS else os.path.join(
+            source_dir, "tests", "data", "abaqus" if name in ABAQUS_FOLDER_DECKS else "calculix")
         files = {name: deck_seed(folder, name)}
         return files, name, ["run", name, "--output", "out"] + RUN_OPTIONS
     if kind == "mm":

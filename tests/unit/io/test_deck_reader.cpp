@@ -487,7 +487,8 @@ TEST(DeckReader, BoundaryOpNewRemovesTheModelsSupports)
     return w.find("parameter FREQUENCY is not one of *NSET's; ignored") != std::string::npos;
   }));
   replace_first(text, "FREQUENCY=100", "INSTANCE=part-1");
-  EXPECT_NE(error_of(write(dir, "instance.inp", text)).find("INSTANCE is not implemented"), std::string::npos);
+  EXPECT_NE(error_of(write(dir, "instance.inp", text)).find("INSTANCE=PART-1 names no instance placed before it"),
+            std::string::npos);
 }
 
 // *CHANGE SURFACE BEHAVIOR (issue 65, item 6): a pair whose interaction is TIED in step 1 and
@@ -831,4 +832,83 @@ TEST(DeckReader, ProblemFileContactPairCarriesFriction)
   }
 }
 } // namespace
+} // namespace feticon::io
+
+namespace feticon::io
+{
+namespace
+{
+/// One hex8 cell as a part, instanced twice: as it is, and moved by (1, 0, 0) then turned 90
+/// degrees about the z axis through (1, 0, 0) (Abaqus's *INSTANCE: translation, then rotation).
+const char* const two_instances = R"(*PART, NAME=CUBE
+*NODE
+1, 0, 0, 0
+2, 1, 0, 0
+3, 1, 1, 0
+4, 0, 1, 0
+5, 0, 0, 1
+6, 1, 0, 1
+7, 1, 1, 1
+8, 0, 1, 1
+*ELEMENT, TYPE=C3D8, ELSET=ALL
+1, 1, 2, 3, 4, 5, 6, 7, 8
+*NSET, NSET=BOTTOM, GENERATE
+1, 4
+*SOLID SECTION, ELSET=ALL, MATERIAL=EL
+*END PART
+*ASSEMBLY, NAME=A
+*INSTANCE, NAME=I1, PART=CUBE
+*END INSTANCE
+*INSTANCE, NAME=I2, PART=CUBE
+1., 0., 0.
+1., 0., 0., 1., 0., 1., 90.
+*END INSTANCE
+*NSET, NSET=BASE, INSTANCE=I2
+BOTTOM
+*END ASSEMBLY
+*MATERIAL, NAME=EL
+*ELASTIC
+2e11, 0.3
+*STEP
+*STATIC
+*BOUNDARY
+I1.BOTTOM, 1, 3
+BASE, 3, 3
+*CLOAD
+I2.7, 1, 5.
+*END STEP
+)";
+} // namespace
+
+// The mesh and names an instance gives its part (io/deck_parts.hpp), and the outline's counts.
+TEST(DeckReader, InstancesPlaceTheirPartsUnderTheirNames)
+{
+  const auto dir = test::fresh_directory("deck_parts");
+  const auto path = write(dir, "parts.inp", two_instances);
+  const DeckOutline outline = deck_outline(path);
+  EXPECT_EQ(outline.nodes, 16); // 8 per instance, not per part
+  EXPECT_EQ(outline.elements, 2);
+  const Deck deck = read_deck(path);
+  const mesh::Mesh& m = deck.problem.mesh;
+  ASSERT_EQ(m.n_nodes(), 16);
+  ASSERT_EQ(m.n_cells(), 2);
+  // I1 keeps the part's labels; I2's are shifted past them: 9..16.
+  EXPECT_EQ(deck.info.node_labels[0], 1);
+  EXPECT_EQ(deck.info.node_labels[8], 9);
+  EXPECT_EQ(deck.info.element_labels[1], 2);
+  // I2's node 7, part (1, 1, 1): moved to (2, 1, 1), then turned about the z axis through
+  // (1, 0, 0): (2, 1) - (1, 0) = (1, 1) -> (-1, 1), so (0, 1, 1).
+  EXPECT_NEAR(m.nodes(14, 0), 0.0, 1e-15);
+  EXPECT_NEAR(m.nodes(14, 1), 1.0, 1e-15);
+  EXPECT_NEAR(m.nodes(14, 2), 1.0, 1e-15);
+  // Sets under the instance's names, and the assembly's set of I2's part set.
+  EXPECT_EQ(m.node_set("I1.BOTTOM").size(), 4u);
+  EXPECT_EQ(m.node_set("I2.BOTTOM"), m.node_set("BASE"));
+  EXPECT_EQ(m.node_set("BASE").front(), 8);
+  // The load on "I2.7" is on mesh node 14, component x.
+  const auto& forces = deck.problem.steps.front().nodal_forces;
+  ASSERT_EQ(forces.size(), 1u);
+  EXPECT_EQ(forces.front().node, 14);
+  EXPECT_EQ(forces.front().component, 0);
+}
 } // namespace feticon::io
