@@ -210,6 +210,7 @@ CalculixResults::CalculixResults(const std::filesystem::path& out_dir, const fem
     for (int32_t node : contact::slave_nodes(problem.mesh, {pair.slave, pair.master, pair.slave_nodes}))
       slaves.insert(node);
   model.contact_slave_nodes.assign(slaves.begin(), slaves.end());
+  model.frames = problem.frames;
   _dat = std::make_unique<io::DatWriter>(out_dir / (stem + ".dat"), std::move(model));
 }
 

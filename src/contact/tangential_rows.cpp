@@ -3,7 +3,6 @@
 #include "common/error.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <map>
 
@@ -30,43 +29,73 @@ std::vector<Eigen::Vector3d> unit_tangents(const Eigen::Vector3d& n, const std::
 
 namespace
 {
-/// The axes e (bit e set) of symmetry planes through the contact at this row: supports hold
-/// its slave node along e, n is nearly normal to e (|n_e| < 0.05), and the row's weight on
-/// nodes not held along e is below `spread` (5 %, 15 % for the transformed dual basis of
-/// quadratic faces) of its norm. By symmetry the friction traction across
-/// such a plane vanishes, whatever those remainders are; they are not zero because the dual
-/// mortar basis of a slave node on the plane reaches master nodes one cell row beside it (0.17 %
-/// of the row's norm on hertz3d's quarter model, and slivers of 1e-6), and because a plane
-/// node's normal in the current configuration averages the faces on one side of the plane only
-/// (|n_y| = 1.5e-3 on hertz3d's half model with large displacements). Kept in the QP, such a
-/// row is (nearly) a combination of the supports' rows: (B B')_CC had an eigenvalue of 4e-7
-/// (small displacements) and of 4e-16 (large) and its inverse, the preconditioner's scaling,
-/// stalled MPGP or was dropped (docs/friction.md).
-int supported_axes(const std::map<int64_t, double>& weight, int64_t slave, const Eigen::Vector3d& n,
-                   const std::vector<int64_t>& supported, double spread)
+/// The directions along which supports hold `node`: the global axes of its held DOFs, and the
+/// local axes of its local ones (fem/node_frames.hpp), in that order.
+std::vector<Eigen::Vector3d> held_directions(int64_t node, const std::vector<int64_t>& supported,
+                                             const fem::NodeFrames* frames, int32_t n_mesh_nodes)
 {
-  int axes = 0;
-  for (int e = 0; e < 3 && !supported.empty(); ++e)
+  std::vector<Eigen::Vector3d> out;
+  for (int e = 0; e < 3; ++e)
+    if (std::ranges::binary_search(supported, 3 * node + e))
+      out.push_back(Eigen::Vector3d::Unit(e));
+  const int32_t k = frames ? frames->index_of(static_cast<int32_t>(node)) : -1;
+  for (int c = 0; c < 3 && k >= 0; ++c)
   {
-    const auto held = [&](int64_t node) { return std::ranges::binary_search(supported, 3 * node + e); };
-    if (std::abs(n(e)) >= 0.05 || !held(slave))
+    const int64_t dof = fem::NodeFrames::local_dof(n_mesh_nodes, k, c);
+    if (std::ranges::binary_search(supported, dof))
+      out.push_back(frames->direction_of(n_mesh_nodes, dof));
+  }
+  return out;
+}
+
+/// The held directions d of symmetry planes through the contact at this row: supports hold its
+/// slave node along d, n is nearly normal to d (|n . d| < 0.05), and the row's weight on nodes
+/// not held along d (within 8 degrees: the nodes of a thin sector whose circumferential
+/// direction a cylindrical *TRANSFORM holds) is below `spread` (5 %, 15 % for the transformed
+/// dual basis of quadratic faces) of its norm. By symmetry the friction traction across such a
+/// plane vanishes, whatever those remainders are; they are not zero because the dual mortar
+/// basis of a slave node on the plane reaches master nodes one cell row beside it (0.17 % of the
+/// row's norm on hertz3d's quarter model, and slivers of 1e-6), and because a plane node's
+/// normal in the current configuration averages the faces on one side of the plane only (|n_y|
+/// = 1.5e-3 on hertz3d's half model with large displacements). Kept in the QP, such a row is
+/// (nearly) a combination of the supports' rows: (B B')_CC had an eigenvalue of 4e-7 (small
+/// displacements) and of 4e-16 (large) and its inverse, the preconditioner's scaling, stalled
+/// MPGP or was dropped (docs/friction.md).
+std::vector<Eigen::Vector3d> supported_directions(const std::map<int64_t, double>& weight, int64_t slave,
+                                                  const Eigen::Vector3d& n, const HeldDirections& held, double spread)
+{
+  std::vector<Eigen::Vector3d> out;
+  for (const Eigen::Vector3d& d : held(slave))
+  {
+    if (std::abs(n.dot(d)) >= 0.05)
       continue;
     double norm2 = 0, unheld2 = 0;
     for (const auto& [node, w] : weight)
     {
       norm2 += w * w;
-      unheld2 += held(node) ? 0.0 : w * w;
+      const std::vector<Eigen::Vector3d> other = held(node);
+      const bool along =
+          std::ranges::any_of(other, [&](const Eigen::Vector3d& e) { return std::abs(e.dot(d)) > 0.99; });
+      unheld2 += along ? 0.0 : w * w;
     }
     if (unheld2 < spread * spread * norm2)
-      axes |= 1 << e;
+      out.push_back(d);
   }
-  return axes;
+  return out;
 }
 } // namespace
 
 TangentialRows build_tangential_rows(const ContactConstraints& normal, const std::array<bool, 3>& eliminated,
-                                     const std::vector<int64_t>& supported)
+                                     const std::vector<int64_t>& supported, const fem::NodeFrames* frames)
 {
+  const auto n_mesh_nodes = static_cast<int32_t>(normal.B.cols() / 3);
+  std::map<int64_t, std::vector<Eigen::Vector3d>> directions; // of the nodes looked at so far
+  const HeldDirections held_along = [&](int64_t node) -> const std::vector<Eigen::Vector3d>& {
+    auto [it, added] = directions.try_emplace(node);
+    if (added)
+      it->second = held_directions(node, supported, frames, n_mesh_nodes);
+    return it->second;
+  };
   TangentialRows out;
   std::vector<Eigen::Triplet<double>> triplets;
   const bool plane_strain = eliminated[0] || eliminated[1] || eliminated[2];
@@ -83,18 +112,19 @@ TangentialRows build_tangential_rows(const ContactConstraints& normal, const std
     for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(normal.B, i); it; ++it)
       weight[it.col() / 3] += it.value() * n(it.col() % 3);
     std::vector<Eigen::Vector3d> tangents = unit_tangents(n, eliminated);
-    // Held tangents: t_2 along a supported axis; t_1 too where a second one holds it (the
+    // Held tangents: t_2 along a supported direction; t_1 too where a second one holds it (the
     // line where two symmetry planes meet).
-    const int axes = plane_strain ? 0 : supported_axes(weight, normal.slave_node[i], n, supported, spread);
+    const std::vector<Eigen::Vector3d> planes = plane_strain || supported.empty()
+        ? std::vector<Eigen::Vector3d>{}
+        : supported_directions(weight, normal.slave_node[i], n, held_along, spread);
     std::array<bool, 2> held{false, false};
-    if (axes != 0)
+    if (!planes.empty())
     {
-      const int axis = std::countr_zero(static_cast<unsigned>(axes));
-      const Eigen::Vector3d t1 = Eigen::Vector3d::Unit(axis).cross(n).normalized();
+      const Eigen::Vector3d t1 = planes.front().cross(n).normalized();
       tangents = {t1, n.cross(t1)};
       held[1] = true;
-      for (int e = axis + 1; e < 3; ++e)
-        held[0] = held[0] || ((axes >> e & 1) && std::abs(t1(e)) > 1 - 1e-3);
+      for (size_t e = 1; e < planes.size(); ++e)
+        held[0] = held[0] || std::abs(t1.dot(planes[e])) > 1 - 1e-3;
     }
     out.n_tangents = static_cast<int>(tangents.size());
     for (size_t k = 0; k < tangents.size(); ++k)
@@ -108,7 +138,7 @@ TangentialRows build_tangential_rows(const ContactConstraints& normal, const std
       out.tangent.push_back(t);
       out.slave_node.push_back(normal.slave_node[i]);
       out.pair.push_back(normal.pair[i]);
-      out.held.push_back(axes != 0 && held[k]);
+      out.held.push_back(held[k]);
     }
   }
   if (normal.n_rows() == 0)

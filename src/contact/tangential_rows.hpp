@@ -12,10 +12,10 @@
 /// |e_k x n|, in the model's plane; in 3D two, t_1 = e x n / |e x n| with e the coordinate axis
 /// least aligned with n, and t_2 = n x t_1 (an orthonormal basis of the tangent plane).
 ///
-/// A symmetry plane through the contact (3D): where supports hold a row's slave node along an
-/// axis e, n is nearly normal to e (|n_e| < 0.05) and the nodes not held along e carry under
-/// 5 % of its norm (mortar weights one cell row beside the plane), t_1 = e x n / |e x n| and
-/// t_2 = n x t_1 (= e where n_e = 0). The row of t_2 then nearly repeats the supports' rows (B
+/// A symmetry plane through the contact (3D): where supports hold a row's slave node along a
+/// direction e (a global axis, or a local one of a *TRANSFORM), n is nearly normal to e
+/// (|n . e| < 0.05) and the nodes not held along e carry under 5 % of its norm (mortar weights
+/// one cell row beside the plane), t_1 = e x n / |e x n| and t_2 = n x t_1 (= e where n . e = 0). The row of t_2 then nearly repeats the supports' rows (B
 /// nearly rank-deficient, the QP's solution along it nearly not unique); it is kept for the
 /// layout of two rows per node and marked `held`: its multiplier is fixed at 0 (by symmetry no
 /// friction acts across the plane) and only t_1 takes friction, |lambda_1| <= g.
@@ -25,8 +25,10 @@
 /// B_T du - c_T is the slip increment of the step.
 
 #include "contact/contact_constraints.hpp"
+#include "fem/node_frames.hpp"
 
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace feticon::contact
@@ -52,10 +54,15 @@ struct TangentialRows
 /// more than one component is eliminated.
 std::vector<Eigen::Vector3d> unit_tangents(const Eigen::Vector3d& n, const std::array<bool, 3>& eliminated);
 
+/// The directions along which supports hold a node (global axes, then local ones).
+using HeldDirections = std::function<const std::vector<Eigen::Vector3d>&(int64_t node)>;
+
 /// The tangential rows of `normal` (see file comment) over the same DOFs; `supported`: the
-/// global DOFs (3 node + component) that supports hold, sorted (none if empty).
+/// DOFs that supports hold, sorted (none if empty): global ones 3 node + component, and local
+/// ones of the nodes `frames` gives local axes (fem/node_frames.hpp).
 TangentialRows build_tangential_rows(const ContactConstraints& normal, const std::array<bool, 3>& eliminated,
-                                     const std::vector<int64_t>& supported = {});
+                                     const std::vector<int64_t>& supported = {},
+                                     const fem::NodeFrames* frames = nullptr);
 
 /// The rows of pair p alone (in their order) and, if `lambda` is not empty, their entries of
 /// `lambda` in `lambda_p`.

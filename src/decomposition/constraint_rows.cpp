@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 
 namespace feticon::decomposition
@@ -85,13 +86,51 @@ struct EquationRow
   double c = 0;
 };
 
-std::vector<EquationRow> orthonormal_equation_rows(const Decomposition& decomposition,
-                                                   const fem::ConstrainedDofs& dirichlet,
-                                                   const std::vector<fem::LinearEquation>& equations)
+/// The supports along local axes (fem/node_frames.hpp) as equations e . u = value over the
+/// node's global components: those prescribed (`prescribed`, NaN where free) move to the
+/// right-hand side, as an equation's terms on them do.
+std::vector<fem::ReducedEquation> local_support_equations(const mesh::Mesh& mesh, const fem::ConstrainedDofs& dirichlet,
+                                                          const fem::NodeFrames& frames,
+                                                          const std::array<bool, 3>& eliminated,
+                                                          const std::vector<double>& prescribed)
 {
-  const mesh::Mesh& mesh = decomposition.mesh();
-  const std::vector<fem::ReducedEquation> reduced = fem::reduce_equations(
-      equations, 3 * static_cast<int64_t>(mesh.n_nodes()), dirichlet, decomposition.eliminated(), &mesh);
+  std::vector<fem::ReducedEquation> out;
+  for (size_t k = 0; k < dirichlet.dofs.size(); ++k)
+  {
+    const int64_t dof = dirichlet.dofs[k];
+    if (!fem::NodeFrames::is_local(mesh.n_nodes(), dof))
+      continue;
+    const int32_t node = frames.node_of(mesh.n_nodes(), dof);
+    const Eigen::Vector3d e = frames.direction_of(mesh.n_nodes(), dof);
+    fem::ReducedEquation& eq = out.emplace_back();
+    eq.rhs = dirichlet.values(static_cast<la::Index>(k));
+    for (int g = 0; g < 3; ++g)
+    {
+      const int64_t global = 3 * int64_t{node} + g;
+      if (eliminated[g] || e(g) == 0)
+        continue;
+      if (!std::isnan(prescribed[global]))
+        eq.rhs -= e(g) * prescribed[global];
+      else
+      {
+        eq.dofs.push_back(global);
+        eq.coefficients.push_back(e(g));
+      }
+    }
+    FETICON_CHECK(!eq.dofs.empty(),
+                  "node " << node << " is held along its local axis " << dof % 3 + 1
+                          << " (*TRANSFORM) and in every global direction that axis has");
+  }
+  return out;
+}
+
+/// The equation rows, orthonormalized (build_equality_rows' comment): `reduced` as
+/// fem::reduce_equations gives them; `dependent(e)` is the message for row e, linearly
+/// dependent on the supports and the rows before it.
+std::vector<EquationRow> orthonormal_equation_rows(const Decomposition& decomposition,
+                                                   const std::vector<fem::ReducedEquation>& reduced,
+                                                   const std::function<std::string(size_t)>& dependent)
+{
   std::vector<EquationRow> out(reduced.size());
   for (const std::vector<size_t>& group : equation_groups(reduced))
   {
@@ -137,8 +176,7 @@ std::vector<EquationRow> orthonormal_equation_rows(const Decomposition& decompos
           R(i, j) += r;
         }
       R(j, j) = v.norm();
-      FETICON_CHECK(R(j, j) > fem::equation_dependence_tolerance * X.col(j).norm(),
-                    fem::dependent_equation_message(equations, group[j], &mesh));
+      FETICON_CHECK(R(j, j) > fem::equation_dependence_tolerance * X.col(j).norm(), dependent(group[j]));
       Q.col(j) = v / R(j, j);
     }
     const la::Vector c_orthonormal = R.transpose().triangularView<Eigen::Lower>().solve(c);
@@ -183,7 +221,8 @@ void add_tie_rows(const Decomposition& decomposition, const fem::ConstrainedDofs
   const mesh::Mesh& mesh = decomposition.mesh();
   std::vector<char> held(3 * static_cast<size_t>(mesh.n_nodes()), 0);
   for (const int64_t dof : dirichlet.dofs)
-    held[dof] = 1;
+    if (!fem::NodeFrames::is_local(mesh.n_nodes(), dof))
+      held[dof] = 1;
   std::vector<fem::LinearEquation> kept;
   for (const fem::LinearEquation& tie : ties)
     if (!held[3 * static_cast<size_t>(tie.terms.front().node) + tie.terms.front().component])
@@ -208,13 +247,14 @@ void add_tie_rows(const Decomposition& decomposition, const fem::ConstrainedDofs
 
 EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::ConstrainedDofs& dirichlet,
                                  const std::vector<fem::LinearEquation>& equations,
-                                 const std::vector<fem::LinearEquation>& ties)
+                                 const std::vector<fem::LinearEquation>& ties, const fem::NodeFrames& frames)
 {
   const mesh::Mesh& mesh = decomposition.mesh();
-  // Prescribed value per global DOF (NaN where free).
+  // Prescribed value per global DOF (NaN where free); the local ones become equation rows.
   std::vector<double> prescribed(3 * static_cast<size_t>(mesh.n_nodes()), std::numeric_limits<double>::quiet_NaN());
   for (size_t k = 0; k < dirichlet.dofs.size(); ++k)
-    prescribed[dirichlet.dofs[k]] = dirichlet.values(static_cast<la::Index>(k));
+    if (!fem::NodeFrames::is_local(mesh.n_nodes(), dirichlet.dofs[k]))
+      prescribed[dirichlet.dofs[k]] = dirichlet.values(static_cast<la::Index>(k));
 
   EqualityRows out;
   std::vector<RowEntry> entries;
@@ -263,7 +303,23 @@ EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::
   out.rows.append(dirichlet_rows, out.n_gluing);
 
   const int64_t first_equation_id = out.n_gluing + out.n_dirichlet;
-  for (const EquationRow& row : orthonormal_equation_rows(decomposition, dirichlet, equations))
+  std::vector<fem::ReducedEquation> reduced =
+      local_support_equations(mesh, dirichlet, frames, decomposition.eliminated(), prescribed);
+  const size_t n_local = reduced.size();
+  for (fem::ReducedEquation& eq : fem::reduce_equations(equations, 3 * static_cast<int64_t>(mesh.n_nodes()), dirichlet,
+                                                        decomposition.eliminated(), &mesh))
+    reduced.push_back(std::move(eq));
+  const auto dependent = [&](size_t e) {
+    if (e >= n_local)
+      return fem::dependent_equation_message(equations, e - n_local, &mesh);
+    size_t seen = 0; // the e-th local support
+    for (const int64_t dof : dirichlet.dofs)
+      if (fem::NodeFrames::is_local(mesh.n_nodes(), dof) && seen++ == e)
+        return "the support of node " + std::to_string(frames.node_of(mesh.n_nodes(), dof)) + " along its local axis " +
+            std::to_string(dof % 3 + 1) + " (*TRANSFORM) is linearly dependent on the supports and equations before it";
+    return std::string("a local support is linearly dependent");
+  };
+  for (const EquationRow& row : orthonormal_equation_rows(decomposition, reduced, dependent))
   {
     split_over_copies(decomposition, row.dofs, row.values, entries);
     if (touches_owned(decomposition, entries))

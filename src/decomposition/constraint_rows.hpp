@@ -70,6 +70,10 @@ private:
 /// cost O(n m^2) (ALGORITHMS.md section 10). B B' is then near I on them, not equal: the
 /// preconditioner's scaling takes it as I (dual/constraint_scaling.hpp says why).
 ///
+/// Supports along local axes (held DOFs beyond the global ones, fem/node_frames.hpp) are
+/// equation rows e . u = value, first among the equations (CalculiX makes them multi-point
+/// constraints likewise).
+///
 /// Ids: gluing rows in node order, then Dirichlet rows, then equation rows in equation order,
 /// then tie rows in their order; only rows touching owned subdomains are kept (every rank builds
 /// every row, the same way).
@@ -86,7 +90,7 @@ struct EqualityRows
 };
 EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::ConstrainedDofs& dirichlet,
                                  const std::vector<fem::LinearEquation>& equations = {},
-                                 const std::vector<fem::LinearEquation>& ties = {});
+                                 const std::vector<fem::LinearEquation>& ties = {}, const fem::NodeFrames& frames = {});
 
 /// Converts rows over global mesh DOFs (3*node + component; `B_global` row-major, one row
 /// per constraint) to subdomain rows. A DOF shared by several subdomains is put on its

@@ -9,8 +9,16 @@
 
 namespace feticon::fem
 {
+std::pair<int64_t, double> held_dof(const mesh::Mesh& mesh, const NodeFrames* frames, int32_t node, int component,
+                                    double value)
+{
+  if (frames && frames->index_of(node) >= 0)
+    return frames->held(mesh.n_nodes(), node, component, value);
+  return {3 * int64_t{node} + component, value};
+}
+
 ConstrainedDofs collect_dirichlet(const mesh::Mesh& mesh, const std::vector<DirichletCondition>& conditions,
-                                  double scale)
+                                  double scale, const NodeFrames* frames)
 {
   std::map<int64_t, double> prescribed;
   for (const DirichletCondition& condition : conditions)
@@ -22,12 +30,12 @@ ConstrainedDofs collect_dirichlet(const mesh::Mesh& mesh, const std::vector<Diri
       {
         if (!condition.value[i])
           continue;
-        const double v = *condition.value[i] * scale;
-        const int64_t dof = 3 * static_cast<int64_t>(node) + i;
+        const auto [dof, v] = held_dof(mesh, frames, node, i, *condition.value[i] * scale);
         auto [it, inserted] = prescribed.emplace(dof, v);
         FETICON_CHECK(inserted || std::abs(it->second - v) <= 1e-14 * (1 + std::abs(v)),
                       "node " << node << " of set '" << condition.set
-                              << "' has two different prescribed values for component " << i);
+                              << "' has two different prescribed values for component " << i
+                              << (frames && frames->index_of(node) >= 0 ? " (of its local axes)" : ""));
       }
   }
   return to_constrained_dofs(prescribed);
@@ -51,7 +59,11 @@ DirichletElimination::DirichletElimination(int64_t n_dofs, const ConstrainedDofs
   std::vector<char> is_constrained(n_dofs, 0);
   for (int64_t dof : constrained.dofs)
   {
-    FETICON_CHECK(dof >= 0 && dof < n_dofs, "constrained DOF " << dof << " out of range");
+    FETICON_CHECK(dof >= 0, "constrained DOF " << dof << " out of range");
+    // Held DOFs past the global ones are supports along local axes (fem/node_frames.hpp).
+    FETICON_CHECK(dof < n_dofs,
+                  "a support acts along a node's local axis (*TRANSFORM), which the direct "
+                  "solves do not take: use method smalbe or dual_penalty");
     is_constrained[dof] = 1;
   }
   for (int64_t dof = 0; dof < n_dofs; ++dof)

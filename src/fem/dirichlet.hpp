@@ -1,6 +1,7 @@
 #pragma once
 /// @file Dirichlet conditions on named node sets, per component.
 
+#include "fem/node_frames.hpp"
 #include "la/types.hpp"
 #include "mesh/mesh.hpp"
 
@@ -21,7 +22,8 @@ struct DirichletCondition
   std::string amplitude = {}; ///< fem::Problem::amplitudes name; empty: the step's ramp
 };
 
-/// Constrained global DOFs (3*node + component), sorted, with their prescribed values.
+/// Constrained DOFs, sorted, with their prescribed values: global ones 3 node + component, then
+/// local components of nodes with a frame (fem/node_frames.hpp: 3 N + 3 k + component).
 struct ConstrainedDofs
 {
   std::vector<int64_t> dofs;
@@ -31,10 +33,15 @@ struct ConstrainedDofs
 /// Sorted DOFs and values of a DOF -> value map.
 ConstrainedDofs to_constrained_dofs(const std::map<int64_t, double>& prescribed);
 
-/// Collects the DOFs of all conditions; throws if two conditions prescribe different
-/// values on one DOF.
+/// The held DOF and value of component `component` = `value` of `node`: global, or along the
+/// node's local axis if `frames` gives it one (fem/node_frames.hpp).
+std::pair<int64_t, double> held_dof(const mesh::Mesh& mesh, const NodeFrames* frames, int32_t node, int component,
+                                    double value);
+
+/// Collects the DOFs of all conditions (components along the local axes of the nodes `frames`
+/// gives frames); throws if two conditions prescribe different values on one DOF.
 ConstrainedDofs collect_dirichlet(const mesh::Mesh& mesh, const std::vector<DirichletCondition>& conditions,
-                                  double scale = 1.0);
+                                  double scale = 1.0, const NodeFrames* frames = nullptr);
 
 /// Elimination of constrained DOFs for direct solves of undecomposed problems:
 /// K_ff u_f = f_f - K_fc u_c.

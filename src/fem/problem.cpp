@@ -63,7 +63,7 @@ la::Vector Problem::external_force(size_t step, const std::string& amplitude) co
 ConstrainedDofs Problem::all_constrained_dofs(size_t step, const std::string& amplitude) const
 {
   FETICON_CHECK(step < steps.size(), "step " << step + 1 << " of " << steps.size());
-  const ConstrainedDofs prescribed = collect_dirichlet(mesh, steps[step].dirichlet);
+  const ConstrainedDofs prescribed = collect_dirichlet(mesh, steps[step].dirichlet, 1.0, &frames);
   std::map<int64_t, double> merged;
   for (size_t k = 0; k < prescribed.dofs.size(); ++k)
     merged[prescribed.dofs[k]] = prescribed.values(static_cast<la::Index>(k));
@@ -82,7 +82,7 @@ ConstrainedDofs Problem::all_constrained_dofs(size_t step, const std::string& am
       for (const int32_t n : mesh.node_set(d.set))
         for (int i = 0; i < 3; ++i)
           if (d.value[i])
-            merged[3 * static_cast<int64_t>(n) + i] = 0.0;
+            merged[held_dof(mesh, &frames, n, i, 0.0).first] = 0.0;
   return to_constrained_dofs(merged);
 }
 
@@ -152,6 +152,27 @@ void Problem::validate_planar() const
                                 << " in plane stress is not implemented (plane strain and axisymmetry are)");
 }
 
+void Problem::validate_frames() const
+{
+  FETICON_CHECK(frames.axes.size() == frames.nodes.size() && std::ranges::is_sorted(frames.nodes) &&
+                    std::ranges::adjacent_find(frames.nodes) == frames.nodes.end(),
+                "problem '" << name << "': node frames are not one per node, in node order");
+  for (size_t k = 0; k < frames.nodes.size(); ++k)
+  {
+    const int32_t n = frames.nodes[k];
+    FETICON_CHECK(n >= 0 && n < mesh.n_nodes(),
+                  "problem '" << name << "': a frame names node " << n << ", out of range");
+    const Eigen::Matrix3d& e = frames.axes[k];
+    FETICON_CHECK(e.allFinite() && (e * e.transpose() - Eigen::Matrix3d::Identity()).norm() < 1e-12 &&
+                      e.determinant() > 0,
+                  "problem '" << name << "': the frame of node " << n << " is not a right-handed orthonormal system");
+    // CalculiX: in a 2D model a local system keeps z (supports act in the plane).
+    FETICON_CHECK(mesh.planar.kind == mesh::PlanarKind::none || std::abs(e(2, 2) - 1) < 1e-12,
+                  "problem '" << name << "': the local system of node " << n
+                              << " turns the z axis; a 2D model takes rectangular systems about z only (as CalculiX)");
+  }
+}
+
 void Problem::validate() const
 {
   FETICON_CHECK(mesh.n_cells() > 0, "problem '" << name << "': the mesh has no cells");
@@ -165,6 +186,7 @@ void Problem::validate() const
                   "problem '" << name << "': cell " << c << " (" << mesh::cell_type(mesh.cells.kind(c)).name
                               << ") is marked for reduced integration, which only hex20 and quad8 offer");
   validate_planar();
+  validate_frames();
   FETICON_CHECK(static_cast<int32_t>(materials.size()) == mesh.n_bodies(),
                 "problem '" << name << "': " << mesh.n_bodies() << " bodies but " << materials.size() << " materials");
   for (size_t b = 0; b < materials.size(); ++b)
@@ -292,7 +314,7 @@ void Problem::validate_step(size_t step) const
       check_temperature(t.value, "the temperature of node " + std::to_string(t.node));
       amplitude_known(t.amplitude, "the temperature of node " + std::to_string(t.node));
     }
-    (void)collect_dirichlet(mesh, s.dirichlet); // two values for one DOF
+    (void)collect_dirichlet(mesh, s.dirichlet, 1.0, &frames); // two values for one DOF
   });
 }
 } // namespace feticon::fem

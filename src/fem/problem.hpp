@@ -92,6 +92,9 @@ struct Problem
   /// so FETI scales them row by row instead of orthonormalizing them.
   std::vector<LinearEquation> tie_equations;
   std::vector<int32_t> tie_of_equation; ///< the tie (index into ties) of each tie equation
+  /// Local coordinate systems of nodes (deck *TRANSFORM): their supports act along the local
+  /// axes (fem/node_frames.hpp; their forces are given in global components already).
+  NodeFrames frames;
   /// Components fixed to zero on every node and eliminated (plane strain: {0,0,1}; every 2D
   /// model, mesh::Planar).
   std::array<bool, 3> eliminated{false, false, false};
@@ -119,5 +122,7 @@ private:
   void validate_step(size_t step) const;
   /// 2D cells in a planar model only, u_z eliminated, nodes at z = 0 (and x >= 0 in axisymmetry).
   void validate_planar() const;
+  /// One orthonormal right-handed frame per listed node; in 2D, rotations about z only.
+  void validate_frames() const;
 };
 } // namespace feticon::fem

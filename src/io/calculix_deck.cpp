@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 #include <set>
+#include <tuple>
 
 namespace feticon::io
 {
@@ -381,6 +382,27 @@ void write_step_start(std::ostream& out, const fem::Step& step, const CalculixOp
   out << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
 }
 
+/// The *CLOAD lines of `force` (3 per node, global components; a node with a frame in its local
+/// ones, write_frames), its totals counted in `summary`.
+void write_cloads(std::ostream& out, const fem::Problem& problem, const la::Vector& force, CalculixDeckSummary& summary)
+{
+  for (int32_t n = 0; n < problem.mesh.n_nodes(); ++n)
+  {
+    const Eigen::Vector3d global = force.segment<3>(3 * la::Index{n});
+    const int32_t k = problem.frames.index_of(n);
+    const Eigen::Vector3d given =
+        k < 0 ? global : Eigen::Vector3d(problem.frames.axes[static_cast<size_t>(k)] * global);
+    for (int i = 0; i < 3; ++i)
+    {
+      summary.total_load[i] += global(i);
+      if (given(i) == 0)
+        continue;
+      out << n + 1 << ", " << i + 1 << ", " << number(given(i)) << '\n';
+      ++summary.n_cloads;
+    }
+  }
+}
+
 /// The static *STEP with its increments (write_step_start), *BOUNDARY (supports, plane strain) and *CLOAD (the
 /// external force, totals counted in `summary`).
 void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
@@ -398,25 +420,52 @@ void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOp
     if (problem.eliminated[i] && mesh.planar.kind == mesh::PlanarKind::none)
       out << "NALL, " << i + 1 << ", " << i + 1 << ", 0.0\n";
 
-  const la::Vector f = problem.external_force();
   out << "*CLOAD\n";
-  for (int32_t n = 0; n < mesh.n_nodes(); ++n)
-    for (int i = 0; i < 3; ++i)
-    {
-      const double value = f(3 * n + i);
-      if (value == 0)
-        continue;
-      out << n + 1 << ", " << i + 1 << ", " << number(value) << '\n';
-      summary.total_load[i] += value;
-      ++summary.n_cloads;
-    }
+  write_cloads(out, problem, problem.external_force(), summary);
 }
+/// The deck's node, component and value of held DOF `dof` = `value`: a node with a frame is
+/// held in its local components (write_frames), whether the history numbers the DOF as local or,
+/// along an axis that is a global one, as global (fem::NodeFrames::held).
+std::tuple<int32_t, int, double> deck_dof(const fem::Problem& problem, int64_t dof, double value)
+{
+  const int32_t n_nodes = problem.mesh.n_nodes();
+  if (fem::NodeFrames::is_local(n_nodes, dof))
+    return {problem.frames.node_of(n_nodes, dof), static_cast<int>(dof % 3), value};
+  const auto node = static_cast<int32_t>(dof / 3);
+  const int g = static_cast<int>(dof % 3);
+  if (const int32_t k = problem.frames.index_of(node); k >= 0)
+    for (int c = 0; c < 3; ++c)
+      if (const double e = problem.frames.axes[static_cast<size_t>(k)](c, g); std::abs(std::abs(e) - 1) < 1e-14)
+        return {node, c, e > 0 ? value : -value};
+  return {node, g, value};
+}
+
+/// A *TRANSFORM per node with a frame: TYPE=R with a on the local x axis and b on the local y
+/// axis is the frame exactly.
+void write_frames(std::ostream& out, const fem::Problem& problem)
+{
+  FETICON_CHECK(problem.frames.empty() || problem.mesh.planar.kind != mesh::PlanarKind::none ||
+                    !problem.eliminated[2] ||
+                    std::ranges::all_of(problem.frames.axes,
+                                        [](const Eigen::Matrix3d& e) { return std::abs(e(2, 2) - 1) < 1e-14; }),
+                "calculix export: a local system turns the z axis of a plane strain hex layer, whose u_z = 0 the deck "
+                "states as a support");
+  for (size_t k = 0; k < problem.frames.nodes.size(); ++k)
+  {
+    const Eigen::Matrix3d& e = problem.frames.axes[k];
+    out << "*NSET, NSET=FRAME_" << k + 1 << '\n'
+        << problem.frames.nodes[k] + 1 << "\n*TRANSFORM, NSET=FRAME_" << k + 1 << ", TYPE=R\n";
+    for (int i = 0; i < 6; ++i)
+      out << number(e(i / 3, i % 3)) << (i < 5 ? ", " : "\n");
+  }
+}
+
 /// A later load stage as the next *STEP: the prescribed values that changed since the last
 /// stage (*BOUNDARY keeps the others) and the stage's whole external force (*CLOAD, OP=NEW
 /// drops the last step's loads), reached linearly in its increments, as feticon's
 /// load history runs from one stage's end to the next.
-void write_later_step(std::ostream& out, const fem::LoadHistory& history, int stage, const fem::Step& step,
-                      const CalculixOptions& options, CalculixDeckSummary& summary)
+void write_later_step(std::ostream& out, const fem::Problem& problem, const fem::LoadHistory& history, int stage,
+                      const fem::Step& step, const CalculixOptions& options, CalculixDeckSummary& summary)
 {
   write_step_start(out, step, options);
   const int end = history.last_step(stage), before = history.last_step(stage - 1);
@@ -430,18 +479,15 @@ void write_later_step(std::ostream& out, const fem::LoadHistory& history, int st
   {
     const int64_t dof = history.dofs()[k];
     if (same ? values(k) != values_before(k) : std::binary_search(held.begin(), held.end(), dof))
-      out << dof / 3 + 1 << ", " << dof % 3 + 1 << ", " << dof % 3 + 1 << ", " << number(values(k)) << '\n';
+    {
+      const auto [node, component, value] = deck_dof(problem, dof, values(k));
+      out << node + 1 << ", " << component + 1 << ", " << component + 1 << ", " << number(value) << '\n';
+    }
   }
   const la::Vector force = history.external_force(end);
   out << "*CLOAD, OP=NEW\n";
   std::fill(std::begin(summary.total_load), std::end(summary.total_load), 0.0);
-  for (la::Index i = 0; i < force.size(); ++i)
-    if (force(i) != 0)
-    {
-      out << i / 3 + 1 << ", " << i % 3 + 1 << ", " << number(force(i)) << '\n';
-      summary.total_load[i % 3] += force(i);
-      ++summary.n_cloads;
-    }
+  write_cloads(out, problem, force, summary);
 }
 } // namespace
 
@@ -478,6 +524,7 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
     for (const fem::DirichletCondition& d : step.dirichlet)
       node_sets.insert(d.set);
   write_node_sets(out, mesh, node_sets);
+  write_frames(out, problem);
   write_materials(out, problem);
   write_contact(out, problem, options, pairs);
   write_ties(out, problem);
@@ -505,7 +552,7 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
     const fem::LoadHistory history(problem, {.default_steps = options.increments});
     for (int stage = 2; stage <= history.n_stages(); ++stage)
     {
-      write_later_step(out, history, stage, problem.steps[stage - 1], options, summary);
+      write_later_step(out, problem, history, stage, problem.steps[stage - 1], options, summary);
       write_temperatures(out, problem, problem.steps[stage - 1]);
       output_requests();
     }

@@ -134,6 +134,19 @@ const std::vector<int32_t>& DatWriter::sorted_set(bool nodes, const std::string&
   return _sorted_sets.emplace(key, std::move(members)).first->second;
 }
 
+void DatWriter::append_vector_row(std::string& out, int32_t node, const double* values, bool global) const
+{
+  const int32_t frame = global ? -1 : _model.frames.index_of(node);
+  if (frame < 0)
+  {
+    append_row(out, label_of(_model.node_labels, node), values, 3);
+    return;
+  }
+  const Eigen::Vector3d local = _model.frames.axes[static_cast<size_t>(frame)] * Eigen::Vector3d(values);
+  append_row(out, label_of(_model.node_labels, node), local.data(), 3);
+  out.insert(out.size() - 1, " L"); // printoutnode.f: (i10, 3(1x, e13.6), 1x, a1)
+}
+
 void DatWriter::print_nodal(TextFileBuffer& file, const DatStep& step, const DeckOutputRequest& request,
                             std::string& unavailable)
 {
@@ -142,12 +155,13 @@ void DatWriter::print_nodal(TextFileBuffer& file, const DatStep& step, const Dec
   const std::string set = request.set.empty() ? "NALL" : request.set;
   for (const std::string& variable : request.variables)
   {
+    const bool global = request.global.value_or(false);
     if (variable == "U" && !step.displacement.empty())
     {
       append_set_header(out, "displacements (vx,vy,vz)", set, step.time);
       for (const int32_t node : nodes)
       {
-        append_row(out, label_of(_model.node_labels, node), &step.displacement[3 * std::size_t(node)], 3);
+        append_vector_row(out, node, &step.displacement[3 * std::size_t(node)], global);
         file.flush_if_full();
       }
     }
@@ -158,7 +172,7 @@ void DatWriter::print_nodal(TextFileBuffer& file, const DatStep& step, const Dec
         append_set_header(out, "forces (fx,fy,fz)", set, step.time);
         for (const int32_t node : nodes)
         {
-          append_row(out, label_of(_model.node_labels, node), &step.reaction_force[3 * std::size_t(node)], 3);
+          append_vector_row(out, node, &step.reaction_force[3 * std::size_t(node)], global);
           file.flush_if_full();
         }
       }

@@ -32,6 +32,7 @@
 ///   for each load step: warnings += dat.add_step({.time = t, .displacement = u, ...},
 ///                                               deck.steps[s].outputs);
 
+#include "fem/node_frames.hpp"
 #include "io/deck.hpp"
 #include "io/fixed_width.hpp"
 #include "io/result_labels.hpp"
@@ -61,6 +62,9 @@ struct DatModel
   /// The rows of *CONTACT PRINT: slave nodes of all contact pairs (mesh node indices), as ccx
   /// lists the slave nodes that have a contact element.
   std::vector<int32_t> contact_slave_nodes;
+  /// Local systems of nodes (*TRANSFORM): *NODE PRINT gives their U and RF in local components
+  /// unless GLOBAL=YES, each such row marked " L" as ccx's printoutnode.f marks it.
+  fem::NodeFrames frames;
 };
 
 /// @brief Results of one output time, plain arrays in mesh order. An empty span means "not
@@ -111,6 +115,9 @@ public:
 private:
   void print_nodal(TextFileBuffer& file, const DatStep& step, const DeckOutputRequest& request,
                    std::string& unavailable);
+  /// A node's row of a vector (3 values at `values`): in its local components, marked " L",
+  /// if it has a frame and `global` is false.
+  void append_vector_row(std::string& out, int32_t node, const double* values, bool global) const;
   void print_integration_points(TextFileBuffer& file, const DatStep& step, const DeckOutputRequest& request,
                                 std::string& unavailable);
   void print_contact(TextFileBuffer& file, const DatStep& step, const DeckOutputRequest& request,

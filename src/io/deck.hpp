@@ -44,6 +44,9 @@ struct DeckOutputRequest
   std::vector<std::string> variables; ///< upper case: U, RF, S, E, CSTR, CDIS, ...
   Totals totals = Totals::no;
   std::string where; ///< "file:line" of the keyword, for messages
+  /// GLOBAL=: vectors of nodes with a *TRANSFORM in global (true) or local components; unset:
+  /// CalculiX's default, local in *NODE PRINT, global in *NODE FILE.
+  std::optional<bool> global = {};
 };
 
 /// A *STEP of the deck: its kinematics, increments and output requests.

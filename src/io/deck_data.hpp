@@ -113,11 +113,24 @@ struct DeckFace
   int face;
 };
 
+/// The key of the node surface NAME where an element surface has that name too (CalculiX keeps
+/// the two kinds apart: "*SURFACE, TYPE=NODE" and "TYPE=ELEMENT" may share a name).
+inline std::string node_surface_key(const std::string& name) { return name + " (NODE)"; }
+
 struct DeckSurface
 {
   bool node_based = false;
   std::vector<DeckFace> faces; ///< TYPE=ELEMENT
   std::vector<int32_t> nodes;  ///< TYPE=NODE
+  DeckPosition where;
+};
+
+/// *TRANSFORM (model data): a rectangular system (TYPE=R, the default) or a cylindrical one
+/// (TYPE=C) from points a and b, as CalculiX defines them (fem/node_frames.hpp).
+struct DeckTransform
+{
+  bool cylindrical = false;
+  Eigen::Vector3d a, b;
   DeckPosition where;
 };
 
@@ -205,6 +218,7 @@ struct DeckData
 
   std::map<std::string, IndexRuns> node_sets;    ///< node indices, may repeat
   std::map<std::string, IndexRuns> element_sets; ///< cell indices, may repeat
+  /// By name; a node surface whose name an element surface has too under node_surface_key.
   std::map<std::string, DeckSurface> surfaces;
   std::map<std::string, fem::Material> materials;
   std::vector<DeckSection> sections;
@@ -219,6 +233,9 @@ struct DeckData
   /// Interactions whose *SURFACE BEHAVIOR is PRESSURE-OVERCLOSURE=TIED: their pairs are ties.
   std::set<std::string> tied_interactions;
   std::vector<fem::LinearEquation> equations;
+  std::vector<DeckTransform> transforms;
+  /// Node -> its transform (index into `transforms`; the last one given wins, as in CalculiX).
+  std::map<int32_t, int32_t> node_transform;
 
   std::map<int32_t, double> initial_temperatures; ///< node -> *INITIAL CONDITIONS, TYPE=TEMPERATURE
   /// Supports given before the first *STEP (model data): in force in every step.

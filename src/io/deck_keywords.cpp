@@ -3,6 +3,7 @@
 /// CrunchiX user's manual, chapter "Input deck format".
 
 #include "common/error.hpp"
+#include "fem/node_frames.hpp"
 #include "io/deck_data.hpp"
 #include "io/deck_parts.hpp"
 
@@ -64,7 +65,6 @@ const std::map<std::string, std::string> unsupported_keywords = {
     {"DASHPOT", "dashpot elements"},
     {"MASS", "mass elements"},
     {"GAP", "gap elements"},
-    {"TRANSFORM", "local coordinate systems for supports and loads"},
     {"CFLUX", "heat fluxes"},
     {"DFLUX", "heat fluxes"},
     {"FILM", "heat transfer"},
@@ -119,6 +119,7 @@ public:
     while (have)
     {
       _keyword = keyword;
+      _keyword.name = canonical_name(_keyword.name);
       if (_recording)
         record();
       else
@@ -274,9 +275,11 @@ private:
   }
 
   // ---- dispatch -------------------------------------------------------------------------
-  void handle()
+  using Handler = void (KeywordReader::*)();
+  /// The handler of every keyword feticon reads.
+  static const std::map<std::string, Handler>& handlers()
   {
-    static const std::map<std::string, void (KeywordReader::*)()> handlers = {
+    static const std::map<std::string, Handler> table = {
         {"HEADING", &KeywordReader::heading},
         {"NODE", &KeywordReader::node_block},
         {"ELEMENT", &KeywordReader::element_block},
@@ -300,6 +303,7 @@ private:
         {"DLOAD", &KeywordReader::dload},
         {"DSLOAD", &KeywordReader::dsload},
         {"EQUATION", &KeywordReader::equation},
+        {"TRANSFORM", &KeywordReader::transform},
         {"AMPLITUDE", &KeywordReader::amplitude},
         {"SURFACE INTERACTION", &KeywordReader::surface_interaction},
         {"SURFACE BEHAVIOR", &KeywordReader::surface_behavior},
@@ -322,6 +326,35 @@ private:
         {"EL FILE", &KeywordReader::output_request},
         {"CONTACT FILE", &KeywordReader::output_request},
     };
+    return table;
+  }
+
+  /// The name feticon knows for `name` written without its blanks, as CalculiX reads keywords
+  /// (it removes every blank: "*ENDSTEP", "*NODEPRINT"); `name` itself if none.
+  static std::string canonical_name(const std::string& name)
+  {
+    const auto blank_free = [](const std::string& n) {
+      std::string out;
+      for (const char c : n)
+        if (c != ' ')
+          out += c;
+      return out;
+    };
+    static const std::map<std::string, std::string> known = [&] {
+      std::map<std::string, std::string> out;
+      for (const auto& entry : handlers())
+        out.emplace(blank_free(entry.first), entry.first);
+      for (const auto* table : {&inert_keywords, &unsupported_keywords})
+        for (const auto& entry : *table)
+          out.emplace(blank_free(entry.first), entry.first);
+      return out;
+    }();
+    const auto it = known.find(blank_free(name));
+    return it == known.end() ? name : it->second;
+  }
+
+  void handle()
+  {
     if (!_open_instance.empty() && _keyword.name != "END INSTANCE")
       throw Error(where() + ": the *INSTANCE at " + _instances.at(_open_instance).where.str() +
                   " has no *END INSTANCE before it (feticon reads instances of parts: no data inside an instance)");
@@ -332,7 +365,7 @@ private:
     if (!_changing_behavior.empty() && _keyword.name != "SURFACE BEHAVIOR")
       throw Error(where() + ": the *CHANGE SURFACE BEHAVIOR before it (" + _changing_behavior_where +
                   ") needs its *SURFACE BEHAVIOR next");
-    if (const auto it = handlers.find(_keyword.name); it != handlers.end())
+    if (const auto it = handlers().find(_keyword.name); it != handlers().end())
     {
       (this->*(it->second))();
       return;
@@ -703,9 +736,24 @@ private:
     const std::string* type = _keyword.value("TYPE");
     if (type && *type != "ELEMENT" && *type != "NODE")
       throw Error(where() + ": TYPE=" + *type + " is not implemented by feticon (ELEMENT or NODE)");
-    DeckSurface& s = _data.surfaces[name];
+    // A node surface and an element surface may share a name (CalculiX's surfaces.f keeps them
+    // apart): the node one moves to node_surface_key.
+    const bool node_based = type && *type == "NODE";
+    std::string key = name;
+    if (const auto other = _data.surfaces.find(name);
+        other != _data.surfaces.end() && other->second.node_based != node_based)
+    {
+      if (node_based)
+        key = node_surface_key(name);
+      else
+      {
+        _data.surfaces[node_surface_key(name)] = std::move(other->second);
+        _data.surfaces.erase(other);
+      }
+    }
+    DeckSurface& s = _data.surfaces[key];
     s.where = _keyword.where;
-    s.node_based = type && *type == "NODE";
+    s.node_based = node_based;
     DeckDataLine line;
     while (next_data(line))
     {
@@ -1271,6 +1319,47 @@ private:
     }
   }
 
+  /// *TRANSFORM, NSET=, TYPE=R|C (model data; CalculiX's "*TRANSFORM"): the supports and
+  /// concentrated forces of the set's nodes act along the local axes from points a and b.
+  void transform()
+  {
+    known_parameters({"NSET", "TYPE"});
+    if (_in_step)
+      throw Error(where() + " belongs to the model data, before the first *STEP");
+    const std::string& set = required("NSET");
+    const auto nodes = _data.node_sets.find(set);
+    if (nodes == _data.node_sets.end())
+      throw Error(where() + ": no node set '" + set + "' is defined");
+    const std::string* type = _keyword.value("TYPE");
+    if (type && *type != "R" && *type != "C")
+      throw Error(where() + ": TYPE=" + *type + " is not implemented by feticon (R: rectangular, C: cylindrical)");
+    DeckTransform t{type && *type == "C", {}, {}, _keyword.where};
+    DeckDataLine line;
+    if (!next_data(line))
+      throw Error(where() + " needs a data line: points a and b (x, y, z each)");
+    for (int k = 0; k < 3; ++k)
+    {
+      t.a[k] = real(line, k, "a coordinate of point a");
+      t.b[k] = real(line, k + 3, "a coordinate of point b");
+    }
+    try
+    {
+      if (t.cylindrical)
+        (void)fem::cylindrical_axes(t.a, t.b, t.a);
+      else
+        (void)fem::rectangular_axes(t.a, t.b);
+    }
+    catch (const Error& e)
+    {
+      fail_at(line.where, e.what());
+    }
+    if (next_data(line))
+      fail_at(line.where, "takes one data line (points a and b)");
+    const auto index = static_cast<int32_t>(_data.transforms.size());
+    _data.transforms.push_back(t);
+    nodes->second.for_each([&](int32_t n) { _data.node_transform[n] = index; });
+  }
+
   // ---- contact --------------------------------------------------------------------------
   void surface_interaction()
   {
@@ -1626,6 +1715,14 @@ private:
       request.totals = *t == "YES" ? DeckOutputRequest::Totals::yes
           : *t == "ONLY"           ? DeckOutputRequest::Totals::only
                                    : DeckOutputRequest::Totals::no;
+    }
+    if (const std::string* g = _keyword.value("GLOBAL"))
+    {
+      if (*g != "YES" && *g != "NO")
+        throw Error(where() + ": GLOBAL=" + *g + " must be YES or NO");
+      request.global = *g == "YES";
+      if (!*request.global && request.kind == Kind::node_file)
+        _data.warn(where() + ": GLOBAL=NO is not honoured; feticon writes the .frd in global components");
     }
     for (const char* p : {"FREQUENCY", "FREQUENCYF", "TIME POINTS", "LAST ITERATIONS", "CONTACT ELEMENTS"})
       if (_keyword.has(p))

@@ -3,6 +3,7 @@
 /// outward face sets, supports and loads per step as the stages of the load history.
 
 #include "common/error.hpp"
+#include "fem/node_frames.hpp"
 #include "io/deck.hpp"
 #include "io/deck_data.hpp"
 
@@ -114,6 +115,7 @@ public:
     sets_and_surfaces();
     contact_pairs();
     ties();
+    node_frames();
     load_stages();
     initial_temperatures();
     amplitudes();
@@ -237,13 +239,17 @@ private:
       {
         throw Error(section.where.str() + ": *SOLID SECTION: " + e.what());
       }
+      // CalculiX's solidsections.f: a later section of an element replaces the earlier one
+      // (metalforming.inp gives every C3D8 cell steel, then its sheet's cells another material).
+      std::map<int32_t, int64_t> replaced; // earlier section -> cells it loses
       set->second.for_each([&](int32_t c) {
-        FETICON_CHECK(section_of_cell[c] < 0 || section_of_cell[c] == static_cast<int32_t>(s),
-                      section.where.str()
-                          << ": *SOLID SECTION: element " << _deck.element_labels[c] << " has a section already ("
-                          << _d.sections[section_of_cell[c]].where.str() << ")");
+        if (section_of_cell[c] >= 0 && section_of_cell[c] != static_cast<int32_t>(s))
+          ++replaced[section_of_cell[c]];
         section_of_cell[c] = static_cast<int32_t>(s);
       });
+      for (const auto& [earlier, n] : replaced)
+        _d.warn(section.where.str() + ": *SOLID SECTION gives " + std::to_string(n) + " element(s) of the section at " +
+                _d.sections[earlier].where.str() + " another material; the later section holds, as in CalculiX");
     }
 
     planar_section();
@@ -417,13 +423,23 @@ private:
   /// Every *CONTACT PAIR with its interaction: Coulomb's mu of the interaction's *FRICTION
   /// (mu = 0: frictionless) and the pair's formulation (NODE TO SURFACE, CalculiX's default
   /// TYPE: node-to-segment; SURFACE TO SURFACE: mortar).
+  /// The surface a slave `name` names: its node surface for node-to-surface rows where an
+  /// element surface shares the name (CalculiX's allocont.f takes the node one first), else the
+  /// one of that name.
+  std::string slave_surface(const std::string& name, bool node_to_surface) const
+  {
+    return node_to_surface && _d.surfaces.count(node_surface_key(name)) ? node_surface_key(name) : name;
+  }
+
   void contact_pairs()
   {
     std::set<std::string> used;
-    for (const DeckContactPair& pair : _d.pairs)
+    for (const DeckContactPair& deck_pair : _d.pairs)
     {
       _contact_of_pair.push_back(-1);
       _tie_of_pair.push_back(-1);
+      DeckContactPair pair = deck_pair;
+      pair.slave = slave_surface(pair.slave, pair.node_to_surface);
       const std::string at = pair.where.str() + ": *CONTACT PAIR";
       FETICON_CHECK(_d.interactions.count(pair.interaction),
                     at << ": no *SURFACE INTERACTION '" << pair.interaction << "' is defined");
@@ -468,8 +484,10 @@ private:
   /// of element faces by mortar.
   void ties()
   {
-    for (const DeckTie& tie : _d.ties)
+    for (const DeckTie& deck_tie : _d.ties)
     {
+      DeckTie tie = deck_tie;
+      tie.slave = slave_surface(tie.slave, true);
       const std::string at = tie.where.str() + ": *TIE " + tie.name;
       for (const std::string& s : {tie.slave, tie.master})
         FETICON_CHECK(_d.surfaces.count(s), at << ": no *SURFACE '" << s << "' is defined");
@@ -510,13 +528,54 @@ private:
     return out;
   }
 
+  /// The forces in global components: a node with a frame (*TRANSFORM) has its force along
+  /// its local axis, which may have up to three global components.
   std::vector<fem::NodalForce> nodal_forces(const std::map<int64_t, DeckValue>& cload, const std::string& what)
   {
     std::vector<fem::NodalForce> out;
     for (const auto& [dof, value] : cload)
-      out.push_back({mesh_node(static_cast<int32_t>(dof / 3), what + ": *CLOAD"), static_cast<int>(dof % 3),
-                     value.value, value.amplitude});
+    {
+      const int32_t node = mesh_node(static_cast<int32_t>(dof / 3), what + ": *CLOAD");
+      const int component = static_cast<int>(dof % 3);
+      const int32_t frame = _p.frames.index_of(node);
+      if (frame < 0)
+      {
+        out.push_back({node, component, value.value, value.amplitude});
+        continue;
+      }
+      for (int g = 0; g < 3; ++g)
+        if (const double e = _p.frames.axes[static_cast<size_t>(frame)](component, g); e != 0)
+          out.push_back({node, g, value.value * e, value.amplitude});
+    }
     return out;
+  }
+
+  /// The local systems of the nodes a *TRANSFORM names (the ones elements use), in node order.
+  void node_frames()
+  {
+    std::vector<std::pair<int32_t, int32_t>> frames; // mesh node, transform
+    for (const auto& [node, t] : _d.node_transform)
+      if (const int32_t m = mesh_of(node); m >= 0)
+        frames.emplace_back(m, t);
+    std::ranges::sort(frames);
+    for (const auto& [node, t] : frames)
+    {
+      const DeckTransform& transform = _d.transforms[static_cast<size_t>(t)];
+      _p.frames.nodes.push_back(node);
+      _p.frames.axes.push_back(
+          transform.cylindrical ? fem::cylindrical_axes(transform.a, transform.b, _p.mesh.nodes.row(node).transpose())
+                                : fem::rectangular_axes(transform.a, transform.b));
+      FETICON_CHECK(_p.mesh.planar.kind == mesh::PlanarKind::none || std::abs(_p.frames.axes.back()(2, 2) - 1) < 1e-12,
+                    transform.where.str() << ": *TRANSFORM: a 2D model takes rectangular systems whose z axis is the "
+                                             "global z axis (as CalculiX)");
+    }
+  }
+
+  /// Whether local component 3 of deck node `node` is u_z (no frame, or one that keeps z).
+  bool third_component_is_z(int32_t node) const
+  {
+    const int32_t frame = _p.frames.index_of(mesh_of(node));
+    return frame < 0 || std::abs(_p.frames.axes[static_cast<size_t>(frame)](2, 2) - 1) < 1e-14;
   }
 
   /// Pressures as face sets grouped by value and amplitude.
@@ -667,7 +726,7 @@ private:
       std::vector<char> seen(_p.mesh.n_nodes(), 0);
       for (const auto& [dof, value] : state.boundary)
         if (dof % 3 == 2 && value.value == 0 && value.amplitude.empty() && mesh_of(dof / 3) >= 0 &&
-            !seen[mesh_of(dof / 3)])
+            !seen[mesh_of(dof / 3)] && third_component_is_z(static_cast<int32_t>(dof / 3)))
         {
           seen[mesh_of(dof / 3)] = 1;
           ++fixed;

@@ -41,6 +41,7 @@ ReducedBondedSystem reduce_bonded(const fem::Problem& problem, const SolverSetti
   FETICON_CHECK(problem.contacts.size() == 1, "the bonded direct solve handles one contact pair");
   FETICON_CHECK(!problem.has_temperatures(), "the bonded direct solve has no thermal strain");
   FETICON_CHECK(!problem.has_plastic_body(), "the bonded direct solve has no plasticity");
+  FETICON_CHECK(problem.frames.empty(), "the bonded direct solve has no supports along local axes (*TRANSFORM)");
   const int64_t n = 3 * static_cast<int64_t>(problem.mesh.n_nodes());
   const auto start = std::chrono::steady_clock::now();
   const fem::Assembler assembler(problem.mesh, fem::whole_mesh_domain(problem.mesh), problem.materials,

@@ -90,7 +90,13 @@ std::vector<char> schur_boundary_dofs(const fem::Problem& problem, const std::ve
 {
   std::vector<char> boundary(3 * static_cast<size_t>(problem.mesh.n_nodes()), 0);
   for (int64_t dof : held)
-    if (!problem.eliminated[dof % 3]) // plane strain's u_z = 0 is no row
+    if (fem::NodeFrames::is_local(problem.mesh.n_nodes(), dof)) // a row on every component of its node
+      for (int c = 0; c < 3; ++c)
+      {
+        if (!problem.eliminated[c])
+          boundary[3 * static_cast<size_t>(problem.frames.node_of(problem.mesh.n_nodes(), dof)) + c] = 1;
+      }
+    else if (!problem.eliminated[dof % 3]) // plane strain's u_z = 0 is no row
       boundary[dof] = 1;
   for (const auto* block : {&problem.equations, &problem.tie_equations}) // rows on every copy of these nodes
     for (const fem::LinearEquation& equation : *block)
@@ -678,7 +684,7 @@ void FetiContactSolve::begin_load_step(int step, double)
   set_pairs_in_force(step);
   _u_step_start = _decomp->gather_mean(_decomp->gather_stacked(_u));
   // A DOF the step holds and the step before left free ramps from its displacement here.
-  _history.start_stage(step, _u_step_start);
+  _history.start_stage(step, _problem.frames.extended(_u_step_start)); // local components too
   fem::ConstrainedDofs target = _history.prescribed(step);
   const size_t stage = _history.point(step).stage - 1;
   const std::vector<int32_t>& ties_out = _problem.steps[stage].removed_ties;
@@ -688,8 +694,8 @@ void FetiContactSolve::begin_load_step(int step, double)
   _ties_out = ties_out;
   _f_step = _history.combine(step, _f_terms_stacked);
   _f_step_norm = _history.external_force_norm(step);
-  _equality = std::make_unique<decomposition::EqualityRows>(
-      decomposition::build_equality_rows(*_decomp, target, _problem.equations, _problem.tie_equations_in_force(stage)));
+  _equality = std::make_unique<decomposition::EqualityRows>(decomposition::build_equality_rows(
+      *_decomp, target, _problem.equations, _problem.tie_equations_in_force(stage), _problem.frames));
   _n_equality = _equality->n_global();
   _forcing = !_linear && _settings.forcing > 0;
   _previous_residual = std::numeric_limits<double>::infinity();
@@ -886,7 +892,8 @@ contact::TangentialRows FetiContactSolve::friction_rows(const contact::ContactCo
 {
   if (!_friction)
     return {};
-  contact::TangentialRows tangential = contact::build_tangential_rows(contact_rows, _problem.eliminated, *_held);
+  contact::TangentialRows tangential =
+      contact::build_tangential_rows(contact_rows, _problem.eliminated, *_held, &_problem.frames);
   // c_T = -B_T (u - u_0): B_T du - c_T is then the slip since the last converged load step.
   const la::Vector c_T = -(tangential.B * (u_global - _u_step_start));
   rows.append(decomposition::rows_from_global(*_decomp, tangential.B, c_T), _n_equality + contact_rows.n_rows());

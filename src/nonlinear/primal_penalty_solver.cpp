@@ -223,6 +223,9 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
   FETICON_CHECK(!problem.has_plastic_body(),
                 "a body is plastic, which method = primal_penalty does not model: use "
                 "method smalbe or dual_penalty");
+  FETICON_CHECK(problem.frames.empty(),
+                "supports act along local axes (*TRANSFORM), which method = primal_penalty does not model: use "
+                "method smalbe or dual_penalty");
   const auto run_start = std::chrono::steady_clock::now();
   ContactSolution out;
   PrimalPenaltySolve solve(problem, settings, timers, out);

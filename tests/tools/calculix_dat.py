@@ -149,7 +149,10 @@ def parse_dat(path):
                 continue
             if cur is None:
                 continue
-            nums = _numeric_line(line)
+            # A node with a *TRANSFORM printed in its local system ends its row with " L"
+            # (printoutnode.f); the row is local, the numbers are read the same.
+            local = line.rstrip().endswith(" L")
+            nums = _numeric_line(line.rstrip()[:-2] if local else line)
             if nums is None:
                 if line.strip() and "sections" in cur:
                     sub = re.sub(r"\s+", " ", line.strip())

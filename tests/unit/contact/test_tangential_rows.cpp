@@ -147,3 +147,40 @@ TEST(TangentialRows, PlaneStrainHasOneTangentAndHoldsNone)
   EXPECT_NEAR(rows.tangent[0].dot(n), 0, 1e-14);
 }
 } // namespace feticon::contact
+
+namespace feticon::contact
+{
+// A symmetry plane whose normal d is no global axis: every node held along its local axis 2
+// (a *TRANSFORM, fem/node_frames.hpp), n normal to d. The same as for a global axis: t_2 = d,
+// held; t_1 = d x n free. Node 2's local axis is turned 3 degrees (the next node of a thin
+// sector whose circumferential direction a cylindrical system holds): still along d.
+TEST(TangentialRows, SymmetryPlaneAlongALocalAxisHoldsTheTangentAcrossIt)
+{
+  const double angle = 0.3, turned = angle + 3 * std::acos(-1.0) / 180;
+  const Eigen::Vector3d d(std::cos(angle), std::sin(angle), 0);
+  const Eigen::Vector3d n =
+      (Eigen::Vector3d(-std::sin(angle), std::cos(angle), 0) + 10 * Eigen::Vector3d::UnitZ()).normalized();
+  fem::NodeFrames frames;
+  frames.nodes = {0, 1, 2};
+  for (const double a : {angle, angle, turned})
+  {
+    Eigen::Matrix3d axes;
+    axes.row(0) = Eigen::Vector3d(-std::sin(a), std::cos(a), 0);
+    axes.row(1) = Eigen::Vector3d(std::cos(a), std::sin(a), 0);
+    axes.row(2) = Eigen::Vector3d(0, 0, -1);
+    frames.axes.push_back(axes);
+  }
+  // Local component 1 (0-based) of frames 0, 1, 2: DOFs 3 (3 + k) + 1 for 3 mesh nodes.
+  const std::vector<int64_t> supported = {10, 13, 16};
+  const TangentialRows rows = build_tangential_rows(one_row(n), {false, false, false}, supported, &frames);
+  ASSERT_EQ(rows.n_rows(), 2);
+  EXPECT_FALSE(rows.held[0]);
+  EXPECT_TRUE(rows.held[1]);
+  EXPECT_NEAR(std::abs(rows.tangent[1].dot(d)), 1, 1e-14);
+  EXPECT_NEAR(rows.tangent[0].dot(d), 0, 1e-14);
+  EXPECT_NEAR(rows.tangent[0].dot(n), 0, 1e-14);
+  // Node 2 held along another direction (its local axis 0): no symmetry plane.
+  const TangentialRows other = build_tangential_rows(one_row(n), {false, false, false}, {10, 13, 15}, &frames);
+  EXPECT_FALSE(other.held[0] || other.held[1]);
+}
+} // namespace feticon::contact
