@@ -40,6 +40,9 @@ ContactSolution pair_solution(const ContactSolution& solution, int32_t p)
 {
   ContactSolution out;
   out.u = solution.u;
+  // The stress column of the pressures needs the body's state as the whole solution has it.
+  out.temperature_change = solution.temperature_change;
+  out.plastic = solution.plastic;
   const contact::ContactConstraints& rows = solution.constraints;
   out.constraints = contact::pair_rows(rows, p);
   out.contact_lambda.resize(out.constraints.n_rows());
