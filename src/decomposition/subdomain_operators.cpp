@@ -76,10 +76,14 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
     }
     catch (const Error&)
     {
-      // A hyperelastic law beyond its convexity in E can make K_M indefinite: K_M again from
-      // the positive definite part of each point's tangent (fem/cell_element.cpp).
+      // A hyperelastic law beyond its convexity in E can make K_M indefinite, and so can finite-
+      // strain plasticity (dS/dE of a yielded point loses the shear stiffness that the stress's
+      // own terms then exceed): K_M again from the positive definite part of each point's
+      // tangent (fem/cell_element.cpp).
       const fem::Assembler& assembler = *_assemblers[s];
-      if (!assembler.has_hyperelastic_cells())
+      const bool finite_plastic =
+          assembler.has_plastic_cells() && assembler.kinematics() == fem::Kinematics::total_lagrangian;
+      if (!assembler.has_hyperelastic_cells() && !finite_plastic)
         throw;
       la::SparseMatrix K_active =
           la::principal_submatrix(assembler.stiffness(full_local(s, u_stacked), fem::StiffnessKind::material_definite),
@@ -87,8 +91,9 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
                                   la::Entries::lower_triangle);
       op.K.swap(K_active);
       op.K_plus.setup(op.K, op.R, fixing_candidates[s - first], _method, what, _precision);
-      log::warning("a hyperelastic subdomain's K_M was indefinite (the law is not convex in E there): factored "
-                   "from each point's nearest positive definite tangent, a quasi-Newton step (docs/materials.md)");
+      log::warning("a hyperelastic or finite-strain plastic subdomain's K_M was indefinite (dS/dE is not positive "
+                   "there): factored from each point's nearest positive definite tangent, a quasi-Newton step "
+                   "(docs/materials.md)");
     }
     owned_kernel_dims[s - first] = op.R.cols();
   });

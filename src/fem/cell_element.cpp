@@ -1,6 +1,7 @@
 #include "fem/cell_element.hpp"
 
 #include "common/error.hpp"
+#include "fem/finite_j2_plasticity.hpp"
 #include "fem/hyperelasticity.hpp"
 
 #include <cmath>
@@ -162,6 +163,21 @@ void add_geometric_stiffness(const PointGeometry& geo, const Voigt& S, Eigen::Ma
 }
 } // namespace
 
+namespace
+{
+/// The J2 update of a point: at small strain the radial return on eps less the thermal stress
+/// (fem/j2_plasticity.hpp), with total Lagrangian kinematics Simo's finite-strain model on E
+/// (fem/finite_j2_plasticity.hpp), which has no thermal strain (the assembler refuses one).
+J2Update plastic_update(const Material& material, Kinematics kinematics, const Voigt& strain, double thermal,
+                        const PlasticPointState& committed, Eigen::Matrix<double, 6, 6>* tangent)
+{
+  if (kinematics == Kinematics::linear)
+    return j2_return(material, strain, thermal, committed, tangent);
+  FETICON_ASSERT(thermal == 0, "a thermal strain at a finite-strain plastic point");
+  return finite_j2_return(material, strain, committed, tangent);
+}
+} // namespace
+
 void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, const Material& material,
                   Kinematics kinematics, StiffnessKind kind, Integration integration, Eigen::VectorXd& f,
                   Eigen::MatrixXd* K, int64_t cell, const Eigen::VectorXd* temperature_change,
@@ -192,15 +208,18 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
     Eigen::Matrix<double, 6, 6> tangent;
     if (material.is_plastic())
     {
-      FETICON_ASSERT(plastic && plastic->committed.size() == rule.points.size() && kinematics == Kinematics::linear,
-                     "a plastic cell needs a state per quadrature point and small strain");
+      FETICON_ASSERT(plastic && plastic->committed.size() == rule.points.size(),
+                     "a plastic cell needs a state per quadrature point");
       // The material part of K is the elasto-plastic tangent (small strain: all of K); at a
-      // point that does not yield it is D, so K_0 (u = 0) is the elastic stiffness.
+      // point that does not yield it is D (small strain), so K_0 (u = 0) is the elastic stiffness.
       const bool with_k = kind != StiffnessKind::none;
-      const J2Update update = j2_return(material, strain, thermal, plastic->committed[q], with_k ? &tangent : nullptr);
+      const J2Update update =
+          plastic_update(material, kinematics, strain, thermal, plastic->committed[q], with_k ? &tangent : nullptr);
       S = update.stress;
       if (!plastic->updated.empty())
         plastic->updated[q] = update.state;
+      if (with_k && kind == StiffnessKind::material_definite)
+        make_positive_definite(tangent);
       if (with_k)
         C = &tangent;
     }
@@ -254,7 +273,7 @@ CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d&
       FETICON_CHECK(plastic.size() == rule.points.size(),
                     "cell " << cell << " is plastic but has " << plastic.size() << " point states for "
                             << rule.points.size() << " quadrature points");
-      stress = j2_return(material, strain, thermal, plastic[q]).stress;
+      stress = plastic_update(material, kinematics, strain, thermal, plastic[q], nullptr).stress;
     }
     else if (material.is_hyperelastic())
       stress = hyperelastic_stress(material.hyperelastic, strain);

@@ -35,28 +35,6 @@ Trial trial_state(const Material& material, const Voigt& strain, double thermal_
   return t;
 }
 
-/// The increment d >= 0 of the equivalent plastic strain with q_tr - 3 G d = sigma_y(eqps + d):
-/// on one segment k of the piecewise-linear yield curve the equation is linear,
-///   d = (q_tr - sigma_k - H_k (eqps - p_k)) / (3 G + H_k),
-/// so the solution is the first segment from eqps's on which that d stays.
-double plastic_increment(const YieldCurve& curve, double shear_modulus, double q_trial, double eqps)
-{
-  const size_t last = curve.stress.size() - 1;
-  for (size_t k = curve.segment(eqps);; ++k)
-  {
-    const double hardening = k < last
-        ? (curve.stress[k + 1] - curve.stress[k]) / (curve.plastic_strain[k + 1] - curve.plastic_strain[k])
-        : 0.0;
-    const double denominator = 3 * shear_modulus + hardening;
-    FETICON_CHECK(denominator > 0,
-                  "the plastic table softens faster than 3 G = " << 3 * shear_modulus << " Pa (slope " << hardening
-                                                                 << " Pa): the radial return has no solution");
-    const double d = (q_trial - curve.stress[k] - hardening * (eqps - curve.plastic_strain[k])) / denominator;
-    if (k == last || eqps + d < curve.plastic_strain[k + 1])
-      return d;
-  }
-}
-
 /// The consistent tangent of a yielded point: trial state t, increment d from eqps d_0 + d.
 Eigen::Matrix<double, 6, 6> consistent_tangent(const Material& material, const Trial& t, double d, double eqps)
 {
@@ -75,6 +53,25 @@ Eigen::Matrix<double, 6, 6> consistent_tangent(const Material& material, const T
   return C;
 }
 } // namespace
+
+double plastic_increment(const YieldCurve& curve, double shear_modulus, double q_trial, double eqps, double scale)
+{
+  // On one segment k the equation is linear: d = (q_tr - s sigma_k - s H_k (eqps - p_k)) / (3 G + s H_k).
+  const size_t last = curve.stress.size() - 1;
+  for (size_t k = curve.segment(eqps);; ++k)
+  {
+    const double hardening = k < last
+        ? scale * (curve.stress[k + 1] - curve.stress[k]) / (curve.plastic_strain[k + 1] - curve.plastic_strain[k])
+        : 0.0;
+    const double denominator = 3 * shear_modulus + hardening;
+    FETICON_CHECK(denominator > 0,
+                  "the plastic table softens faster than 3 G = " << 3 * shear_modulus << " Pa (slope " << hardening
+                                                                 << " Pa): the radial return has no solution");
+    const double d = (q_trial - scale * curve.stress[k] - hardening * (eqps - curve.plastic_strain[k])) / denominator;
+    if (k == last || eqps + d < curve.plastic_strain[k + 1])
+      return d;
+  }
+}
 
 J2Update j2_return(const Material& material, const Voigt& strain, double thermal_stress,
                    const PlasticPointState& committed, Eigen::Matrix<double, 6, 6>* tangent)

@@ -25,7 +25,9 @@ using Voigt = Eigen::Matrix<double, 6, 1>;
 /// What a J2 material remembers at one integration point between increments.
 struct PlasticPointState
 {
-  Voigt plastic_strain = Voigt::Zero(); ///< eps_p, engineering shears
+  /// Small strain: eps_p, engineering shears. Total Lagrangian: C_p^-1 - I, plain shears
+  /// (fem/finite_j2_plasticity.hpp). Zero at first either way.
+  Voigt plastic_strain = Voigt::Zero();
   double equivalent_plastic_strain = 0; ///< eqps = integral of sqrt(2/3 deps_p : deps_p)
 };
 
@@ -35,6 +37,12 @@ struct J2Update
   PlasticPointState state; ///< the state at the end of the increment
   bool plastic = false;    ///< the point yielded in this increment
 };
+
+/// The increment d >= 0 of the equivalent plastic strain with q_tr - 3 G d = s sigma_y(eqps + d)
+/// (s = `scale`: J for the Kirchhoff stress at finite strain), exact on the piecewise-linear
+/// table: the first segment from eqps's on which its linear equation's d stays.
+/// @throws feticon::Error if a segment softens faster than 3 G (no solution)
+double plastic_increment(const YieldCurve& curve, double shear_modulus, double q_trial, double eqps, double scale = 1);
 
 /// The radial return from `committed` at total strain `strain` (engineering shears), less the
 /// normal stress `thermal_stress` (alpha E / (1 - 2 nu) Delta T) of a temperature change.

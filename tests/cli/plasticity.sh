@@ -15,7 +15,8 @@
 #    run's answer, bitwise (the J2 states are in the checkpoint);
 # 4. two MPI ranks give the one-rank answer;
 # 5. bad input: decreasing plastic strains, a first plastic strain that is not 0, kinematic
-#    hardening, a temperature-dependent table, plasticity with NLGEOM: one line each.
+#    hardening, a temperature-dependent table, thermal expansion of a plastic body with NLGEOM
+#    (finite-strain J2 has no thermal strain: tests/cli/plasticity_nlgeom.sh): one line each.
 # Usage: plasticity.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -139,6 +140,6 @@ sed 's/^\*PLASTIC$/*PLASTIC, HARDENING=KINEMATIC/' "$deck" >"$work/kinematic.inp
 expect_error kinematic "HARDENING=KINEMATIC is not implemented"
 sed 's/^\(2\.500000000000e+08, 0\.000000000000e+00\)$/\1, 20/; s/^\(1\.250000000000e+09, 1\.000000000000e+00\)$/\1, 100/' "$deck" >"$work/temperatures.inp"
 expect_error temperatures "temperature-dependent plastic tables"
-sed 's/^\*STEP, INC=100$/*STEP, NLGEOM, INC=100/' "$deck" >"$work/nlgeom.inp"
-expect_error nlgeom "J2 plasticity is implemented at small strain only"
+sed 's/^\*STEP, INC=100$/*STEP, NLGEOM, INC=100/; s/^\*PLASTIC$/*EXPANSION\n1.2e-5\n*PLASTIC/' "$deck" >"$work/nlgeom.inp"
+expect_error nlgeom "thermal strain in J2 plasticity is implemented at small strain only"
 echo "bad input: five one-line errors"

@@ -1,0 +1,134 @@
+#include "fem/finite_j2_plasticity.hpp"
+
+#include "common/error.hpp"
+
+#include <cmath>
+
+namespace feticon::fem
+{
+namespace
+{
+Eigen::Matrix3d tensor_of(const Voigt& v) // plain shears
+{
+  Eigen::Matrix3d A;
+  A << v(0), v(3), v(5), v(3), v(1), v(4), v(5), v(4), v(2);
+  return A;
+}
+
+Voigt voigt_of(const Eigen::Matrix3d& A)
+{
+  return (Voigt() << A(0, 0), A(1, 1), A(2, 2), A(0, 1), A(1, 2), A(2, 0)).finished();
+}
+
+/// What a yielded point's return leaves for the positive tangent (finite_j2_return).
+struct Yielded
+{
+  double mu_bar = 0, theta = 1, theta_bar = 0;
+  Voigt direction = Voigt::Zero(); ///< the trial deviator's, plain shears, unit in the Voigt contraction
+};
+
+/// The update without the tangent (file comment).
+J2Update update(const Material& material, const Voigt& strain, const PlasticPointState& committed,
+                Yielded* yielded = nullptr)
+{
+  Eigen::Matrix3d C;
+  C << 1 + 2 * strain(0), strain(3), strain(5), strain(3), 1 + 2 * strain(1), strain(4), strain(5), strain(4),
+      1 + 2 * strain(2);
+  const double det = C.determinant();
+  FETICON_CHECK(det > 0, "a plastic point is inverted: det C = " << det);
+  const double J = std::sqrt(det), j23 = std::cbrt(det); // J^(2/3)
+  const Eigen::Matrix3d Ci = C.inverse();
+  const double mu = material.lame_mu(), bulk = material.young / (3 * (1 - 2 * material.poisson));
+  const Eigen::Matrix3d Cb = (Eigen::Matrix3d::Identity() + tensor_of(committed.plastic_strain)) / j23;
+  const double Ie = (C.cwiseProduct(Cb)).sum() / 3;
+  Eigen::Matrix3d S_dev = mu * (Cb - Ie * Ci);
+  const Eigen::Matrix3d SC = S_dev * C;
+  const double q = std::sqrt(1.5 * std::max(0.0, (SC * SC).trace()));
+  const double eqps = committed.equivalent_plastic_strain;
+  J2Update out{Voigt::Zero(), committed, false};
+  // Within 1e-10 of the yield stress the point is elastic (j2_return says why).
+  if (q > J * material.plastic.yield_stress(eqps) * (1 + 1e-10))
+  {
+    const double mu_bar = mu * Ie;
+    const double d = plastic_increment(material.plastic, mu_bar, q, eqps, J);
+    if (yielded)
+    {
+      const double theta = 1 - 3 * mu_bar * d / q;
+      const Voigt n = voigt_of(S_dev);
+      *yielded = {mu_bar, theta, 1 / (1 + J * material.plastic.hardening(eqps + d) / (3 * mu_bar)) - (1 - theta),
+                  n / std::sqrt(n.head<3>().squaredNorm() + 2 * n.tail<3>().squaredNorm())};
+    }
+    S_dev *= 1 - 3 * mu_bar * d / q;
+    out.plastic = true;
+    out.state.equivalent_plastic_strain = eqps + d;
+    out.state.plastic_strain = voigt_of(j23 * (S_dev / mu + Ie * Ci) - Eigen::Matrix3d::Identity());
+  }
+  out.stress = voigt_of(bulk * (det - 1) / 2 * Ci + S_dev);
+  return out;
+}
+/// The pulled-back positive tangent of a yielded point (finite_j2_return's comment).
+Eigen::Matrix<double, 6, 6> positive_tangent(const Material& material, const Voigt& strain, const Yielded& yielded)
+{
+  Eigen::Matrix3d C;
+  C << 1 + 2 * strain(0), strain(3), strain(5), strain(3), 1 + 2 * strain(1), strain(4), strain(5), strain(4),
+      1 + 2 * strain(2);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(C);
+  const Eigen::Matrix3d Q = eigen.eigenvectors();
+  const Eigen::Vector3d stretch = eigen.eigenvalues().cwiseSqrt();
+  const Eigen::Matrix3d U = Q * stretch.asDiagonal() * Q.transpose();
+  const Eigen::Matrix3d Ui = Q * stretch.cwiseInverse().asDiagonal() * Q.transpose();
+  const double J = stretch.prod(), bulk = material.young / (3 * (1 - 2 * material.poisson)), G = yielded.mu_bar;
+  // The deviator's direction in the frame of U: U S_tr U, S_tr along yielded.direction.
+  const Voigt n = voigt_of(U * tensor_of(yielded.direction) * U);
+  const Voigt unit_n = n / std::sqrt(n.head<3>().squaredNorm() + 2 * n.tail<3>().squaredNorm());
+  Eigen::Matrix<double, 6, 6> c = Eigen::Matrix<double, 6, 6>::Zero(); // engineering shears in, plain out
+  c.topLeftCorner<3, 3>().setConstant(bulk * J * J - 2 * G * yielded.theta / 3);
+  c.topLeftCorner<3, 3>().diagonal().array() += 2 * G * yielded.theta;
+  c.bottomRightCorner<3, 3>().diagonal().setConstant(G * yielded.theta);
+  c -= 2 * G * yielded.theta_bar * unit_n * unit_n.transpose();
+  // L on stresses (plain shears: basis e_i e_j + e_j e_i for a shear) and on strains
+  // (engineering shears: basis (e_i e_j + e_j e_i) / 2, shears doubled on the way out).
+  Eigen::Matrix<double, 6, 6> L_stress, L_strain;
+  for (int k = 0; k < 6; ++k)
+  {
+    Voigt unit = Voigt::Zero();
+    unit(k) = 1;
+    L_stress.col(k) = voigt_of(Ui * tensor_of(unit) * Ui);
+    Voigt half = unit;
+    half.tail<3>() *= 0.5;
+    Voigt strain_out = voigt_of(Ui * tensor_of(half) * Ui);
+    strain_out.tail<3>() *= 2;
+    L_strain.col(k) = strain_out;
+  }
+  const Eigen::Matrix<double, 6, 6> out = L_stress * c * L_strain;
+  return 0.5 * (out + out.transpose());
+}
+} // namespace
+
+J2Update finite_j2_return(const Material& material, const Voigt& strain, const PlasticPointState& committed,
+                          Eigen::Matrix<double, 6, 6>* tangent)
+{
+  Yielded yielded;
+  const J2Update out = update(material, strain, committed, &yielded);
+  if (!tangent)
+    return out;
+  constexpr double h = 1e-6;
+  for (int k = 0; k < 6; ++k)
+  {
+    Voigt plus = strain, minus = strain;
+    plus(k) += h;
+    minus(k) -= h;
+    tangent->col(k) = (update(material, plus, committed).stress - update(material, minus, committed).stress) / (2 * h);
+  }
+  *tangent = 0.5 * (*tangent + tangent->transpose()).eval();
+  if (!out.plastic || Eigen::LLT<Eigen::Matrix<double, 6, 6>>(*tangent).info() == Eigen::Success)
+    return out;
+  // A yielded point whose exact dS/dE is not positive (the stress's own terms exceed what the
+  // hardening leaves of the shear stiffness): the consistent tangent of the Kirchhoff stress
+  // without those terms, K J^2 1 (x) 1 + 2 mu_bar theta I_dev - 2 mu_bar theta_bar n (x) n
+  // (positive for H >= 0), pulled back to the reference configuration through U = sqrt(C): dS/dE
+  // = L c L with L(X) = U^-1 X U^-1, n the trial deviator U S U / |U S U|.
+  *tangent = positive_tangent(material, strain, yielded);
+  return out;
+}
+} // namespace feticon::fem
