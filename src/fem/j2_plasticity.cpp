@@ -20,8 +20,8 @@ Voigt deviator(const Voigt& sigma)
 
 struct Trial
 {
-  Voigt stress, deviator;
-  double q = 0; ///< von Mises stress of the trial state
+  Voigt stress, deviator; ///< the deviator relative to the back stress
+  double q = 0;           ///< von Mises stress of that deviator
 };
 
 Trial trial_state(const Material& material, const Voigt& strain, double thermal_stress,
@@ -30,7 +30,7 @@ Trial trial_state(const Material& material, const Voigt& strain, double thermal_
   Trial t;
   t.stress = material.elasticity_matrix() * (strain - committed.plastic_strain);
   t.stress.head<3>().array() -= thermal_stress;
-  t.deviator = deviator(t.stress);
+  t.deviator = deviator(t.stress) - committed.back_stress;
   t.q = std::sqrt(1.5 * contract(t.deviator));
   return t;
 }
@@ -84,15 +84,21 @@ J2Update j2_return(const Material& material, const Voigt& strain, double thermal
   // its tangent is the elasto-plastic one for a step that may unload (a release diverged from
   // it: the block's tangent H, 200 times softer than E); within 1e-10 of sigma_y the point is
   // elastic (a stress error below 1e-10 sigma_y).
-  if (t.q <= material.plastic.yield_stress(eqps) * (1 + 1e-10))
+  const YieldCurve& curve = material.plastic;
+  const double radius = curve.kinematic ? curve.stress.front() : curve.yield_stress(eqps);
+  if (t.q <= radius * (1 + 1e-10))
   {
     if (tangent)
       *tangent = material.elasticity_matrix();
     return out;
   }
   const double G = material.lame_mu();
-  const double d = plastic_increment(material.plastic, G, t.q, eqps);
+  // Kinematic: the table's rise from eqps moves the centre, the radius stays (file comment).
+  const double shift = curve.kinematic ? curve.yield_stress(eqps) - radius : 0.0;
+  const double d = plastic_increment(curve, G, t.q + shift, eqps);
   out.plastic = true;
+  if (curve.kinematic)
+    out.state.back_stress += (curve.yield_stress(eqps + d) - curve.yield_stress(eqps)) / t.q * t.deviator;
   out.stress = t.stress - (3 * G * d / t.q) * t.deviator;
   // deps_p = 3/2 d s_tr / q_tr as a tensor; engineering shears double its shear entries.
   Voigt direction = 1.5 / t.q * t.deviator;

@@ -13,6 +13,12 @@
 ///   theta = 1 - 3 G d / q_tr,  theta_bar = 1 / (1 + H / (3 G)) - (1 - theta),
 /// H = d sigma_y / d eqps at the new eqps. Voigt [11,22,33,12,23,31]: engineering shears in the
 /// strains (plastic strain included), plain shears in the stress.
+///
+/// Kinematic hardening (YieldCurve::kinematic; Simo and Hughes box 3.1 with the table's slope
+/// as the kinematic modulus, as CalculiX's incplas_lin.f): s_tr is taken relative to the back
+/// stress alpha, the radius stays sigma_y(0), so d solves q_tr - 3 G d = sigma_y(0) +
+/// sigma_y(eqps + d) - sigma_y(eqps), and alpha moves by (sigma_y(eqps + d) - sigma_y(eqps))
+/// s_tr / q_tr; the same tangent with that H.
 
 #include "fem/material.hpp"
 
@@ -29,6 +35,7 @@ struct PlasticPointState
   /// (fem/finite_j2_plasticity.hpp). Zero at first either way.
   Voigt plastic_strain = Voigt::Zero();
   double equivalent_plastic_strain = 0; ///< eqps = integral of sqrt(2/3 deps_p : deps_p)
+  Voigt back_stress = Voigt::Zero();    ///< the yield surface's centre (kinematic hardening), plain shears
 };
 
 struct J2Update

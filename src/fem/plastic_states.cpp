@@ -73,11 +73,13 @@ std::vector<double> MeshPlasticStates::pack(const std::vector<int32_t>& cells) c
   {
     if (of(c).empty())
       continue;
-    out.push_back(c);
+    // -(c + 1): the layout with back stresses; an older one (7 doubles a point) wrote c >= 0.
+    out.push_back(-(c + 1.0));
     for (const PlasticPointState& s : of(c))
     {
       out.insert(out.end(), s.plastic_strain.data(), s.plastic_strain.data() + 6);
       out.push_back(s.equivalent_plastic_strain);
+      out.insert(out.end(), s.back_stress.data(), s.back_stress.data() + 6);
     }
   }
   return out;
@@ -87,14 +89,19 @@ void MeshPlasticStates::unpack(const std::vector<double>& packed)
 {
   for (size_t i = 0; i < packed.size();)
   {
-    const auto c = static_cast<int32_t>(packed[i++]);
-    FETICON_CHECK(c >= 0 && static_cast<size_t>(c) + 1 < offset.size() && i + 7 * of(c).size() <= packed.size(),
+    FETICON_CHECK(packed[i] < 0,
+                  "plastic states written by an older feticon (without back stresses): run the "
+                  "problem again from its start");
+    const auto c = static_cast<int32_t>(-packed[i++] - 1);
+    FETICON_CHECK(c >= 0 && static_cast<size_t>(c) + 1 < offset.size() &&
+                      i + packed_point_size * of(c).size() <= packed.size(),
                   "plastic states: cell " << c << " is not a plastic cell of this mesh, or its states are cut short");
     for (PlasticPointState& s : of(c))
     {
       s.plastic_strain = Eigen::Map<const Voigt>(&packed[i]);
       s.equivalent_plastic_strain = packed[i + 6];
-      i += 7;
+      s.back_stress = Eigen::Map<const Voigt>(&packed[i + 7]);
+      i += packed_point_size;
     }
   }
 }

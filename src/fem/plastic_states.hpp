@@ -30,7 +30,10 @@ struct MeshPlasticStates
   /// The states of `cells`, in that order, as a MeshPlasticStates of a piece of the mesh (its
   /// cell k is cells[k]: mesh::submesh's numbering).
   MeshPlasticStates subset(const std::vector<int32_t>& cells) const;
-  /// The states of `cells` as numbers: per cell its id, then 7 per point (eps_p, eqps).
+  /// Numbers per point in pack's layout: eps_p (6), eqps, back stress (6).
+  static constexpr size_t packed_point_size = 13;
+  /// The states of `cells` as numbers: per cell -(id + 1) (an older layout, without back
+  /// stresses, wrote id), then packed_point_size per point.
   std::vector<double> pack(const std::vector<int32_t>& cells) const;
   /// Sets the states of the cells in `packed` (pack's output, possibly several concatenated).
   void unpack(const std::vector<double>& packed);

@@ -1,9 +1,11 @@
 #pragma once
-/// @file The isotropic hardening of a J2 (von Mises) material: the yield stress as a function
-/// of the equivalent plastic strain, piecewise linear through the points of a `*PLASTIC` table
-/// (CalculiX's and Abaqus's definition: von Mises stress, equivalent plastic strain; the first
-/// point at zero plastic strain is the initial yield stress; beyond the last point the yield
-/// stress stays constant).
+/// @file The hardening of a J2 (von Mises) material: the yield stress in uniaxial loading as a
+/// function of the equivalent plastic strain, piecewise linear through the points of a
+/// `*PLASTIC` table (CalculiX's and Abaqus's definition: von Mises stress, equivalent plastic
+/// strain; the first point at zero plastic strain is the initial yield stress; beyond the last
+/// point the yield stress stays constant). Isotropic hardening grows the yield surface by the
+/// table; kinematic hardening (HARDENING=KINEMATIC) keeps its radius at the first stress and
+/// moves its centre, the back stress, by the table's rise (CalculiX's incplas_lin.f).
 
 #include <string>
 #include <vector>
@@ -14,6 +16,7 @@ struct YieldCurve
 {
   std::vector<double> stress;         ///< sigma_y at each point (Pa), from the initial yield stress
   std::vector<double> plastic_strain; ///< the equivalent plastic strain of each point, 0 first, increasing
+  bool kinematic = false;             ///< kinematic hardening (the file comment), else isotropic
 
   bool empty() const { return stress.empty(); }
   /// sigma_y at equivalent plastic strain `eqps` >= 0.

@@ -268,7 +268,7 @@ void write_materials(std::ostream& out, const fem::Problem& problem)
       out << "*EXPANSION\n" << number(m.expansion) << '\n';
     if (m.is_plastic())
     {
-      out << "*PLASTIC\n";
+      out << (m.plastic.kinematic ? "*PLASTIC, HARDENING=KINEMATIC\n" : "*PLASTIC\n");
       for (size_t k = 0; k < m.plastic.stress.size(); ++k)
         out << number(m.plastic.stress[k]) << ", " << number(m.plastic.plastic_strain[k]) << '\n';
     }

@@ -886,18 +886,21 @@ private:
               "temperature-dependent expansion coefficients are not implemented by feticon (one data line)");
   }
 
-  /// J2 plasticity with isotropic hardening: lines of von Mises stress, equivalent plastic
-  /// strain (and a temperature, which may be given if it is one for the whole table).
+  /// J2 plasticity with isotropic or kinematic hardening (fem/yield_curve.hpp): lines of von
+  /// Mises stress, equivalent plastic strain (and a temperature, which may be given if it is one
+  /// for the whole table).
   void plastic()
   {
     known_parameters({"HARDENING"});
     if (_material.empty())
       throw Error(where() + " comes before any *MATERIAL");
-    if (const std::string* hardening = _keyword.value("HARDENING"); hardening && *hardening != "ISOTROPIC")
+    const std::string* hardening = _keyword.value("HARDENING");
+    if (hardening && *hardening != "ISOTROPIC" && *hardening != "KINEMATIC")
       throw Error(where() + ": HARDENING=" + *hardening +
-                  " is not implemented by feticon (isotropic hardening, HARDENING=ISOTROPIC)");
+                  " is not implemented by feticon (HARDENING=ISOTROPIC or KINEMATIC)");
     fem::YieldCurve& curve = _data.materials[_material].plastic;
     curve = {};
+    curve.kinematic = hardening && *hardening == "KINEMATIC";
     DeckDataLine line;
     std::optional<double> temperature;
     while (next_data(line))

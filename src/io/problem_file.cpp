@@ -59,7 +59,7 @@ fem::Hyperelastic hyperelastic_law(const YAML::Node& node, const std::string& ke
 /// optional density, expansion and plastic table.
 fem::Material body_material(const YAML::Node& body, const std::string& key, const ProblemReader& r)
 {
-  r.only_keys(body, key, {"young", "poisson", "density", "expansion", "plastic", "hyperelastic"});
+  r.only_keys(body, key, {"young", "poisson", "density", "expansion", "plastic", "hardening", "hyperelastic"});
   fem::Material m;
   if (body["hyperelastic"])
   {
@@ -78,6 +78,15 @@ fem::Material body_material(const YAML::Node& body, const std::string& key, cons
     m.expansion = r.number(body["expansion"], key + ".expansion");
   if (body["plastic"])
     m.plastic = yield_curve(body["plastic"], key + ".plastic", r);
+  if (body["hardening"])
+  {
+    // CalculiX's HARDENING=: the table grows the yield surface or moves it (fem/yield_curve.hpp).
+    const std::string hardening = r.text(body["hardening"], key + ".hardening");
+    FETICON_CHECK(hardening == "isotropic" || hardening == "kinematic",
+                  r.source << ": " << key << ".hardening: '" << hardening << "' is not isotropic or kinematic");
+    FETICON_CHECK(body["plastic"], r.source << ": " << key << ".hardening needs a plastic: table");
+    m.plastic.kinematic = hardening == "kinematic";
+  }
   m.check(r.source + ": " + key);
   return m;
 }

@@ -14,7 +14,7 @@
 # 3. restart: the checkpoint after step 1 (of a one-step copy) continues to the uninterrupted
 #    run's answer, bitwise (the J2 states are in the checkpoint);
 # 4. two MPI ranks give the one-rank answer;
-# 5. bad input: decreasing plastic strains, a first plastic strain that is not 0, kinematic
+# 5. bad input: decreasing plastic strains, a first plastic strain that is not 0, combined
 #    hardening, a temperature-dependent table, thermal expansion of a plastic body with NLGEOM
 #    (finite-strain J2 has no thermal strain: tests/cli/plasticity_nlgeom.sh): one line each.
 # Usage: plasticity.sh FETICON SOURCE_DIR
@@ -136,8 +136,8 @@ sed 's/^1\.250000000000e+09, 1\.000000000000e+00$/1.25e9, 0/' "$deck" >"$work/de
 expect_error decreasing "equivalent plastic strains must increase"
 sed 's/^2\.500000000000e+08, 0\.000000000000e+00$/2.5e8, 0.01/' "$deck" >"$work/nonzero.inp"
 expect_error nonzero "first equivalent plastic strain is 0.01, not 0"
-sed 's/^\*PLASTIC$/*PLASTIC, HARDENING=KINEMATIC/' "$deck" >"$work/kinematic.inp"
-expect_error kinematic "HARDENING=KINEMATIC is not implemented"
+sed 's/^\*PLASTIC$/*PLASTIC, HARDENING=COMBINED/' "$deck" >"$work/combined.inp"
+expect_error combined "HARDENING=COMBINED is not implemented"
 sed 's/^\(2\.500000000000e+08, 0\.000000000000e+00\)$/\1, 20/; s/^\(1\.250000000000e+09, 1\.000000000000e+00\)$/\1, 100/' "$deck" >"$work/temperatures.inp"
 expect_error temperatures "temperature-dependent plastic tables"
 sed 's/^\*STEP, INC=100$/*STEP, NLGEOM, INC=100/; s/^\*PLASTIC$/*EXPANSION\n1.2e-5\n*PLASTIC/' "$deck" >"$work/nlgeom.inp"

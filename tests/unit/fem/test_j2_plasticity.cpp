@@ -87,6 +87,41 @@ TEST(J2Plasticity, UniaxialTensionUnloadingAndReversedYieldMatchTheClosedForm)
   j2_test::follow(m, path);
 }
 
+/// Reference: uniaxial stress with linear kinematic hardening, closed form (Simo and Hughes 1.4;
+/// the Bauschinger effect). Loading past yield, sigma = sigma_y + H eqps as with isotropic
+/// hardening; but the yield surface moves with the back stress alpha = H eqps and keeps its
+/// radius sigma_y, so the reversed yield comes at sigma_1 - 2 sigma_y (not at -sigma_1), and
+/// further compression follows sigma = alpha - sigma_y with alpha = H (eqps_1 - reversed plastic
+/// strain) while eqps grows. The back stress is a deviator: alpha_xx = 2/3 H ep.
+TEST(J2Plasticity, KinematicHardeningMovesTheYieldSurface)
+{
+  const double H = j2_test::young / 20;
+  fem::Material m = j2_test::hardening_steel(H);
+  m.plastic.kinematic = true;
+  std::vector<j2_test::UniaxialState> path;
+  const double sigma_1 = 1.6 * j2_test::yield, eqps_1 = (sigma_1 - j2_test::yield) / H;
+  for (int i = 1; i <= 8; ++i)
+  {
+    const double sigma = sigma_1 * i / 8;
+    const double eqps = std::max(0.0, (sigma - j2_test::yield) / H);
+    path.push_back({sigma, eqps, eqps});
+  }
+  const double reversed_yield = sigma_1 - 2 * j2_test::yield; // -0.4 sigma_y
+  for (int i = 1; i <= 12; ++i) // down to -1.0 sigma_y: elastic to sigma_1 - 2 sigma_y, then yield
+  {
+    const double sigma = sigma_1 - (sigma_1 + 1.0 * j2_test::yield) * i / 12;
+    const double reversed = std::max(0.0, (reversed_yield - sigma) / H);
+    path.push_back({sigma, eqps_1 - reversed, eqps_1 + reversed});
+  }
+  j2_test::follow(m, path);
+  fem::PlasticPointState state;
+  for (const j2_test::UniaxialState& s : path)
+    state = fem::j2_return(m, s.strain(), 0, state).state;
+  // alpha_xx = 2/3 H ep (deviatoric, its trace zero).
+  EXPECT_NEAR(state.back_stress(0), 2.0 / 3 * H * state.plastic_strain(0), 1e-8 * j2_test::yield);
+  EXPECT_NEAR(state.back_stress.head<3>().sum(), 0, 1e-8 * j2_test::yield);
+}
+
 /// Reference: the same closed form with a three-segment table walked in one increment (the
 /// return finds the segment its answer lies on), and perfect plasticity beyond the last point:
 /// sigma stays at the last yield stress however far the strain goes.
