@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <sstream>
 
@@ -47,8 +48,10 @@ Weights closest_point_weights(const ContactConstraints& closest, la::Index i,
   return out;
 }
 
-/// One row per free component of `node`: u(node) - sum w u(a) = 0.
-void add_rows(fem::Problem& problem, int32_t node, const Weights& weights, std::vector<char>& taken, TieReport& report)
+/// One row per free component of `node`: u(node) - R sum w u(a) = 0 (R the identity but in a
+/// cyclic symmetry tie).
+void add_rows(fem::Problem& problem, int32_t node, const Weights& weights, const Eigen::Matrix3d& R,
+              std::vector<char>& taken, TieReport& report)
 {
   for (int c = 0; c < 3; ++c)
   {
@@ -64,16 +67,48 @@ void add_rows(fem::Problem& problem, int32_t node, const Weights& weights, std::
     fem::LinearEquation row;
     row.terms.push_back({node, c, 1.0});
     for (const auto& [master, w] : weights)
-      row.terms.push_back({master, c, -w});
+      for (int d = 0; d < 3; ++d)
+        if (R(c, d) != 0 && !problem.eliminated[d])
+          row.terms.push_back({master, d, -w * R(c, d)});
     problem.tie_equations.push_back(std::move(row));
     ++report.rows;
   }
 }
 
+/// The turn by one sector of a cyclic symmetry tie that takes its master side onto its slave
+/// side: 2 pi / sectors about the axis, in the sense the two sides' centroids give.
+Eigen::Matrix3d sector_turn(const mesh::Mesh& mesh, const fem::Tie& tie, const ContactPair& pair)
+{
+  const fem::Tie::CyclicSymmetry& cyclic = *tie.cyclic;
+  const Eigen::Vector3d axis = (cyclic.axis_b - cyclic.axis_a).normalized();
+  const auto centroid = [&](const std::vector<int32_t>& nodes) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const int32_t n : nodes)
+      sum += mesh.nodes.row(n).transpose();
+    Eigen::Vector3d radial = sum / static_cast<double>(nodes.size()) - cyclic.axis_a;
+    return Eigen::Vector3d(radial - radial.dot(axis) * axis);
+  };
+  const Eigen::Vector3d slave = centroid(slave_nodes(mesh, pair)), master = centroid(mesh.face_set_nodes(tie.master));
+  const double sense = axis.dot(master.cross(slave)) >= 0 ? 1.0 : -1.0;
+  return Eigen::AngleAxisd(sense * 2 * std::numbers::pi / cyclic.sectors, axis).toRotationMatrix();
+}
+
 TieReport tie_surface(fem::Problem& problem, const fem::Tie& tie, std::vector<char>& taken)
 {
-  mesh::Mesh& mesh = problem.mesh;
   const ContactPair pair{tie.slave, tie.master, tie.slave_nodes};
+  // A cyclic symmetry tie searches the master side from its slave nodes turned back by a sector
+  // (on a copy of the mesh whose slave nodes are turned) and turns the master's displacement.
+  const Eigen::Matrix3d R = tie.cyclic ? sector_turn(problem.mesh, tie, pair) : Eigen::Matrix3d::Identity();
+  std::optional<mesh::Mesh> turned;
+  if (tie.cyclic)
+  {
+    turned = problem.mesh;
+    for (const int32_t n : slave_nodes(problem.mesh, pair))
+      turned->nodes.row(n) =
+          (tie.cyclic->axis_a + R.transpose() * (problem.mesh.nodes.row(n).transpose() - tie.cyclic->axis_a))
+              .transpose();
+  }
+  mesh::Mesh& mesh = turned ? *turned : problem.mesh;
   const std::vector<mesh::Face>& master_faces = mesh.face_set(tie.master);
   TieReport report;
   report.name = tie.name;
@@ -121,7 +156,8 @@ TieReport tie_surface(fem::Problem& problem, const fem::Tie& tie, std::vector<ch
       mortar = mortar_row_weights(*coupling, coupling->slave.index_of(node), ContactOptions{}.mortar_min_overlap);
     if (coupling && !mortar)
       ++report.closest_point_nodes;
-    add_rows(problem, node, mortar ? mortar->weights : closest_point_weights(closest, i, master_faces), taken, report);
+    add_rows(problem, node, mortar ? mortar->weights : closest_point_weights(closest, i, master_faces), R, taken,
+             report);
   }
   return report;
 }

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,17 @@ struct Tie
   /// mortar: w_a = M_ja / D_j (the dual mortar weights, exact for a constant stress across
   /// non-matching meshes); node_to_segment: w_a = N_a at the closest point (CalculiX's tie).
   ContactFormulation formulation = ContactFormulation::mortar;
+  /// A cyclic symmetry tie (deck *TIE, CYCLIC SYMMETRY with its *CYCLIC SYMMETRY MODEL): the
+  /// model is one of `sectors` equal sectors about the axis through a and b, the slave (dependent)
+  /// side the master (independent) side turned by one sector, and the static answer the same in
+  /// every sector: u_s = R sum_a w_a u_a, R that turn, the weights at the slave node turned back
+  /// onto the master side (node to segment). Unset: an ordinary tie.
+  struct CyclicSymmetry
+  {
+    Eigen::Vector3d axis_a = Eigen::Vector3d::Zero(), axis_b = Eigen::Vector3d::UnitZ();
+    double sectors = 0;
+  };
+  std::optional<CyclicSymmetry> cyclic = {};
 };
 
 struct Problem

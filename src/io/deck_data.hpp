@@ -164,6 +164,8 @@ struct DeckTie
   std::string name, slave, master;
   double position_tolerance = 0; ///< POSITION TOLERANCE= (m); 0: the default rule (fem::Tie)
   bool adjust = true;            ///< ADJUST=NO turns it off
+  bool cyclic = false;           ///< CYCLIC SYMMETRY: its *CYCLIC SYMMETRY MODEL gives `symmetry`
+  std::optional<fem::Tie::CyclicSymmetry> symmetry = {};
   DeckPosition where;
 };
 

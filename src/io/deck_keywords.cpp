@@ -310,6 +310,7 @@ private:
         {"FRICTION", &KeywordReader::friction},
         {"CONTACT PAIR", &KeywordReader::contact_pair},
         {"TIE", &KeywordReader::tie},
+        {"CYCLIC SYMMETRY MODEL", &KeywordReader::cyclic_symmetry_model},
         {"PART", &KeywordReader::part},
         {"END PART", &KeywordReader::end_part},
         {"ASSEMBLY", &KeywordReader::assembly},
@@ -1142,6 +1143,8 @@ private:
   void cload()
   {
     const std::string amplitude = begin_load(_data.state.cload);
+    if (op_new())
+      _cload_defined.clear();
     DeckDataLine line;
     while (next_data(line))
     {
@@ -1151,8 +1154,8 @@ private:
         fail_at(line.at(1),
                 "degree of freedom " + std::to_string(dof) + ": forces act on 1 to 3 (solid nodes have no moments)");
       const double value = real(line, 2, "force");
-      for (int32_t n : targets)
-        _data.state.cload[3 * int64_t{n} + dof - 1] = {value, amplitude};
+      for (int32_t n : unique(targets))
+        add_load(_data.state.cload, _cload_defined, 3 * int64_t{n} + dof - 1, {value, amplitude}, line.where);
     }
   }
 
@@ -1164,8 +1167,34 @@ private:
     if (kind.size() != 2 || kind[0] != 'P' || kind[1] < '1' || kind[1] > '6')
       fail_at(line.at(face_field),
               "load type '" + text(line.fields[face_field]) + "' is not implemented by feticon (pressure P1 to P6)");
-    for (int32_t c : cells)
-      _data.state.dload[{c, kind[1] - '0'}] = value;
+    for (int32_t c : unique(cells))
+      add_load(_data.state.dload, _dload_defined, std::pair{c, kind[1] - '0'}, value, line.where);
+  }
+
+  /// CalculiX's forcadd.f and loadadd.f: the first value a step gives a DOF or a face replaces
+  /// the one before the step; more values in the same step add to it (with the same amplitude).
+  template <class Key>
+  void add_load(std::map<Key, DeckValue>& loads, std::set<Key>& defined, const Key& key, const DeckValue& value,
+                const DeckPosition& at)
+  {
+    if (defined.insert(key).second)
+    {
+      loads[key] = value;
+      return;
+    }
+    DeckValue& sum = loads[key];
+    if (sum.amplitude != value.amplitude)
+      fail_at(at,
+              "a second load on one degree of freedom or face in one step with another amplitude (CalculiX "
+              "adds loads given twice in a step, and refuses that)");
+    sum.value += value.value;
+  }
+
+  static std::vector<int32_t> unique(std::vector<int32_t> v)
+  {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
   }
 
   /// GRAV (magnitude, direction) or CENTRIF (omega^2, a point of the axis, its direction) on
@@ -1201,6 +1230,8 @@ private:
   {
     const std::string amplitude = begin_load(_data.state.dload);
     if (op_new())
+      _dload_defined.clear();
+    if (op_new())
       _data.state.body.clear();
     DeckDataLine line;
     while (next_data(line))
@@ -1219,6 +1250,8 @@ private:
   void dsload()
   {
     const std::string amplitude = begin_load(_data.state.dload);
+    if (op_new())
+      _dload_defined.clear();
     DeckDataLine line;
     while (next_data(line))
     {
@@ -1229,8 +1262,11 @@ private:
       if (line.fields.size() < 3 || name_of(line.fields[1]) != "P")
         fail_at(line.where, "a *DSLOAD line is: surface, P, pressure");
       const double value = real(line, 2, "pressure");
+      std::set<std::pair<int32_t, int>> faces; // a surface lists a face once
       for (const DeckFace& f : it->second.faces)
-        _data.state.dload[{f.cell, f.face}] = {value, amplitude};
+        if (faces.insert({f.cell, f.face}).second)
+          add_load(_data.state.dload, _dload_defined, std::pair{f.cell, f.face}, DeckValue{value, amplitude},
+                   line.where);
     }
   }
 
@@ -1546,15 +1582,15 @@ private:
   /// cyclic symmetry and multistage ties are other constraints, refused.
   void tie()
   {
-    for (const char* other : {"CYCLIC SYMMETRY", "MULTISTAGE"})
-      if (_keyword.has(other))
-        throw Error(where() + ": " + other + " ties are not implemented by feticon (cyclic symmetry)");
-    known_parameters({"NAME", "POSITION TOLERANCE", "ADJUST"});
+    if (_keyword.has("MULTISTAGE"))
+      throw Error(where() + ": MULTISTAGE ties are not implemented by feticon (cyclic symmetry across stages)");
+    known_parameters({"NAME", "POSITION TOLERANCE", "ADJUST", "CYCLIC SYMMETRY"});
     if (_in_step)
       throw Error(where() + " belongs to the model data, before the first *STEP");
     DeckTie tie;
     tie.name = required("NAME");
     tie.where = _keyword.where;
+    tie.cyclic = _keyword.has("CYCLIC SYMMETRY");
     if (const std::string* tolerance = _keyword.value("POSITION TOLERANCE"))
     {
       const std::optional<double> value = parse_deck_real(*tolerance);
@@ -1580,6 +1616,51 @@ private:
     _data.ties.push_back(std::move(tie));
   }
 
+  /// *CYCLIC SYMMETRY MODEL, N=, TIE= (model data): the number of sectors and the axis (points a
+  /// and b) of a cyclic symmetry *TIE before it; a static run solves the datum sector with the
+  /// same answer in every sector (fem::Tie::CyclicSymmetry). NGRAPH, NPHYS, ELSET and CHECK only
+  /// shape CalculiX's plots and checks.
+  void cyclic_symmetry_model()
+  {
+    known_parameters({"N", "TIE", "NGRAPH", "NPHYS", "ELSET", "CHECK", "CONTACT", "MATRIX"});
+    for (const char* p : {"CONTACT", "MATRIX"})
+      if (_keyword.has(p))
+        throw Error(where() + ": " + p + " is not implemented by feticon");
+    if (_in_step)
+      throw Error(where() + " belongs to the model data, before the first *STEP");
+    const double sectors = real_parameter("N", 0);
+    if (!(sectors >= 2) || !std::isfinite(sectors))
+      throw Error(where() + " needs N=, the number of sectors (at least 2)");
+    DeckTie* tie = nullptr;
+    for (DeckTie& t : _data.ties)
+      if (t.cyclic && (!_keyword.has("TIE") ? true : t.name == required("TIE")))
+      {
+        if (tie && !_keyword.has("TIE"))
+          throw Error(where() + " needs TIE=: more than one cyclic symmetry *TIE is defined");
+        tie = &t;
+      }
+    if (!tie)
+      throw Error(where() + ": no cyclic symmetry *TIE" + (_keyword.has("TIE") ? " '" + required("TIE") + "'" : "") +
+                  " is defined before it");
+    DeckDataLine line;
+    if (!next_data(line))
+      throw Error(where() + " needs a data line: points a and b of the axis");
+    fem::Tie::CyclicSymmetry symmetry;
+    for (int k = 0; k < 3; ++k)
+    {
+      symmetry.axis_a[k] = real(line, k, "a coordinate of point a");
+      symmetry.axis_b[k] = real(line, k + 3, "a coordinate of point b");
+    }
+    if (!((symmetry.axis_b - symmetry.axis_a).norm() > 0))
+      fail_at(line.where, "the axis needs two different points a and b");
+    symmetry.sectors = sectors;
+    tie->symmetry = symmetry;
+    if (const std::string* n = _keyword.value("NGRAPH"); n && *n != "1")
+      _data.warn(where() + ": NGRAPH=" + *n + " is not used; feticon writes the datum sector");
+    if (next_data(line))
+      fail_at(line.where, "takes one data line (points a and b of the axis)");
+  }
+
   // ---- steps ----------------------------------------------------------------------------
   void step()
   {
@@ -1594,6 +1675,8 @@ private:
         throw Error(where() + ": " + p + " is not implemented by feticon");
     _in_step = true;
     _step_where = _keyword.where;
+    _cload_defined.clear();
+    _dload_defined.clear();
     _step = DeckStep{};
     _step.where = _keyword.where.str();
     if (const std::string* a = _keyword.value("AMPLITUDE"))
@@ -1757,6 +1840,9 @@ private:
   const std::vector<RecordedLine>* _replay = nullptr;
   size_t _replayed = 0;
   int64_t _largest_node_label = 0, _largest_element_label = 0;
+  /// The DOFs and faces this step gave a load so far (add_load: more values add up).
+  std::set<int64_t> _cload_defined;
+  std::set<std::pair<int32_t, int>> _dload_defined;
   std::string _path;
   DeckKeyword _keyword;
   DeckData _data;

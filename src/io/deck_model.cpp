@@ -492,13 +492,19 @@ private:
       for (const std::string& s : {tie.slave, tie.master})
         FETICON_CHECK(_d.surfaces.count(s), at << ": no *SURFACE '" << s << "' is defined");
       FETICON_CHECK(tie.slave != tie.master, at << ": slave and master are the same surface '" << tie.slave << "'");
-      FETICON_CHECK(!_d.surfaces.at(tie.master).node_based,
+      // A cyclic symmetry tie may name its master side by nodes: the boundary faces of those
+      // nodes are its faces (CalculiX triangulates them).
+      FETICON_CHECK(tie.cyclic || !_d.surfaces.at(tie.master).node_based,
                     at << ": master surface '" << tie.master << "' must be made of element faces (TYPE=ELEMENT)");
       const bool node_based = _d.surfaces.at(tie.slave).node_based;
-      _p.ties.push_back({tie.name, tie.slave, tie.master,
-                         _restricted_surfaces.count(tie.slave) ? "slave_nodes_" + tie.slave : "",
-                         tie.position_tolerance, tie.adjust,
-                         node_based ? fem::ContactFormulation::node_to_segment : fem::ContactFormulation::mortar});
+      FETICON_CHECK(!tie.cyclic || tie.symmetry,
+                    at << ": a CYCLIC SYMMETRY tie needs its *CYCLIC SYMMETRY MODEL (the sectors and the axis)");
+      // A cyclic tie's sides are turned copies of each other: no ADJUST, node to segment.
+      _p.ties.push_back(
+          {tie.name, tie.slave, tie.master, _restricted_surfaces.count(tie.slave) ? "slave_nodes_" + tie.slave : "",
+           tie.position_tolerance, tie.adjust && !tie.cyclic,
+           node_based || tie.cyclic ? fem::ContactFormulation::node_to_segment : fem::ContactFormulation::mortar,
+           tie.symmetry});
     }
   }
 

@@ -192,8 +192,14 @@ expect "deck friction negative stick slope" "stick slope -1e6 must be positive" 
   "$(friction_variant '*FRICTION\n0.3, -1e6' friction_slope)"
 # *TIE (issue 63, item 3) on the two tied blocks of tests/cli/deck_tie.sh.
 tie_variant() { sed "$1" "$src_dir/tests/data/calculix/tie_blocks.inp" > "$work/$2.inp"; echo "$work/$2.inp"; }
-expect "deck tie cyclic symmetry" "CYCLIC SYMMETRY ties are not implemented" -- \
+expect "deck tie cyclic symmetry without its model" "a CYCLIC SYMMETRY tie needs its \*CYCLIC SYMMETRY MODEL" -- \
   "$(tie_variant 's/^\*TIE, NAME=T1/&, CYCLIC SYMMETRY/' tie_cyclic)"
+expect "deck tie multistage" "MULTISTAGE ties are not implemented" -- \
+  "$(tie_variant 's/^\*TIE, NAME=T1/&, MULTISTAGE/' tie_multistage)"
+expect "deck cyclic symmetry model without its tie" "no cyclic symmetry \*TIE is defined before it" -- \
+  "$(tie_variant 's/^\*TIE, NAME=T1/*CYCLIC SYMMETRY MODEL, N=12\n0., 0., 0., 0., 0., 1.\n&/' cyclic_no_tie)"
+expect "deck cyclic symmetry model one sector" "needs N=, the number of sectors (at least 2)" -- \
+  "$(tie_variant 's/^Supper_bottom, Slower_top/&\n*CYCLIC SYMMETRY MODEL, N=1\n0., 0., 0., 0., 0., 1./;s/^\*TIE, NAME=T1/&, CYCLIC SYMMETRY/' cyclic_one)"
 expect "deck tie undefined surface" "no \*SURFACE 'SNOWHERE'" -- \
   "$(tie_variant 's/^Supper_bottom, Slower_top/Snowhere, Slower_top/' tie_undefined)"
 expect "deck tie beyond tolerance" "no node of slave surface 'SFAR' lies within the position tolerance" -- \

@@ -912,3 +912,56 @@ TEST(DeckReader, InstancesPlaceTheirPartsUnderTheirNames)
   EXPECT_EQ(forces.front().component, 0);
 }
 } // namespace feticon::io
+
+namespace feticon::io
+{
+// CalculiX's forcadd.f and loadadd.f: a *CLOAD or *DLOAD given twice in one step adds up; the
+// next step's first value replaces it. (CalculiX's scheibe2f2f deck lists its pressures twice.)
+TEST(DeckReader, LoadsGivenTwiceInAStepAddUp)
+{
+  const auto dir = test::fresh_directory("deck_load_sum");
+  const std::string text = R"(*NODE, NSET=NALL
+1, 0, 0, 0
+2, 1, 0, 0
+3, 1, 1, 0
+4, 0, 1, 0
+5, 0, 0, 1
+6, 1, 0, 1
+7, 1, 1, 1
+8, 0, 1, 1
+*ELEMENT, TYPE=C3D8, ELSET=EALL
+1, 1, 2, 3, 4, 5, 6, 7, 8
+*MATERIAL, NAME=EL
+*ELASTIC
+2e11, 0.3
+*SOLID SECTION, ELSET=EALL, MATERIAL=EL
+*BOUNDARY
+1, 1, 3
+2, 2, 3
+4, 3
+*STEP
+*STATIC
+*CLOAD
+7, 3, 1.
+7, 3, 2.
+*DLOAD
+1, P2, 10.
+*DLOAD
+1, P2, 5.
+*END STEP
+*STEP
+*STATIC
+*CLOAD
+7, 3, 4.
+*END STEP
+)";
+  const Deck deck = read_deck(write(dir, "twice.inp", text));
+  const auto& first = deck.problem.steps[0];
+  ASSERT_EQ(first.nodal_forces.size(), 1u);
+  EXPECT_EQ(first.nodal_forces.front().value, 3.0);
+  ASSERT_EQ(first.pressures.size(), 1u);
+  EXPECT_EQ(first.pressures.front().pressure, 15.0);
+  ASSERT_EQ(deck.problem.steps[1].nodal_forces.size(), 1u);
+  EXPECT_EQ(deck.problem.steps[1].nodal_forces.front().value, 4.0);
+}
+} // namespace feticon::io
