@@ -20,6 +20,14 @@ Voigt voigt_of(const Eigen::Matrix3d& A)
   return (Voigt() << A(0, 0), A(1, 1), A(2, 2), A(0, 1), A(1, 2), A(2, 0)).finished();
 }
 
+/// C = I + 2 E of a Green-Lagrange strain with engineering shears.
+Eigen::Matrix3d right_cauchy_green(const Voigt& E)
+{
+  Eigen::Matrix3d C;
+  C << 1 + 2 * E(0), E(3), E(5), E(3), 1 + 2 * E(1), E(4), E(5), E(4), 1 + 2 * E(2);
+  return C;
+}
+
 /// What a yielded point's return leaves for the positive tangent (finite_j2_return).
 struct Yielded
 {
@@ -31,9 +39,7 @@ struct Yielded
 J2Update update(const Material& material, const Voigt& strain, const PlasticPointState& committed,
                 Yielded* yielded = nullptr)
 {
-  Eigen::Matrix3d C;
-  C << 1 + 2 * strain(0), strain(3), strain(5), strain(3), 1 + 2 * strain(1), strain(4), strain(5), strain(4),
-      1 + 2 * strain(2);
+  const Eigen::Matrix3d C = right_cauchy_green(strain);
   const double det = C.determinant();
   FETICON_CHECK(det > 0, "a plastic point is inverted: det C = " << det);
   const double J = std::sqrt(det), j23 = std::cbrt(det); // J^(2/3)
@@ -66,13 +72,11 @@ J2Update update(const Material& material, const Voigt& strain, const PlasticPoin
   out.stress = voigt_of(bulk * (det - 1) / 2 * Ci + S_dev);
   return out;
 }
+
 /// The pulled-back positive tangent of a yielded point (finite_j2_return's comment).
 Eigen::Matrix<double, 6, 6> positive_tangent(const Material& material, const Voigt& strain, const Yielded& yielded)
 {
-  Eigen::Matrix3d C;
-  C << 1 + 2 * strain(0), strain(3), strain(5), strain(3), 1 + 2 * strain(1), strain(4), strain(5), strain(4),
-      1 + 2 * strain(2);
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(C);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(right_cauchy_green(strain));
   const Eigen::Matrix3d Q = eigen.eigenvectors();
   const Eigen::Vector3d stretch = eigen.eigenvalues().cwiseSqrt();
   const Eigen::Matrix3d U = Q * stretch.asDiagonal() * Q.transpose();

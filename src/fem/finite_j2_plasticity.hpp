@@ -18,7 +18,12 @@
 /// The stored state (PlasticPointState::plastic_strain) is C_p^-1 - I with plain shears. The
 /// tangent dS/dE is taken by central differences of the update (step 1e-6 in each strain
 /// component: truncation 1e-12, round-off 1e-10 of the stress scale) and symmetrized (the exact
-/// one is symmetric for this associative model); K uses it as the material part.
+/// one is symmetric for this associative model); K uses it as the material part. At a yielded
+/// point where it is not positive definite (the stress's own terms exceed the shear stiffness
+/// the hardening leaves, and FETI's K_M has no geometric stiffness to make up for them) the
+/// tangent is the Kirchhoff consistent one without those terms, K J^2 1 (x) 1 + 2 mu_bar theta
+/// I_dev - 2 mu_bar theta_bar n (x) n, pulled back through U = sqrt(C) (docs/materials.md has
+/// the measurements that chose it).
 
 #include "fem/j2_plasticity.hpp"
 

@@ -210,7 +210,8 @@ private:
       fail_at(at,
               kind + std::to_string(label) + " is not defined (by " + (is_node ? "a *NODE" : "an *ELEMENT") +
                   " before this line" +
-                  (scope.prefix.empty() ? std::string(")") : ", in instance " + scope.prefix + ")"));
+                  (scope.prefix.empty() ? std::string(")")
+                                        : ", in instance " + scope.prefix.substr(0, scope.prefix.size() - 1) + ")"));
     return index;
   }
 

@@ -169,7 +169,7 @@ expect_error undefined_part "undefined_part.inp:[0-9]*: \*INSTANCE: no \*PART 'N
 mutate plain_label 's/^TOP-1.20, 1, 1/20, 1, 1/'
 expect_error plain_label "plain_label.inp:[0-9]*:1: \*BOUNDARY: node 20: in a deck of parts and instances a node or element is named by its instance"
 mutate unknown_instance_label 's/^TOP-1.20, 1, 1/TOP-1.99, 1, 1/'
-expect_error unknown_instance_label "\*BOUNDARY: node 99 is not defined (by a \*NODE before this line, in instance TOP-1.)"
+expect_error unknown_instance_label "\*BOUNDARY: node 99 is not defined (by a \*NODE before this line, in instance TOP-1)"
 mutate no_end_part '0,/^\*End Part/{/^\*End Part/d}'
 expect_error no_end_part "no_end_part.inp:[0-9]*: \*PART: the \*PART at .*no_end_part.inp:17 has no \*END PART before it"
 mutate same_axis_points 's/0.5,          0.5,           1.,          90./0.5,          0.5,           0.,          90./'
