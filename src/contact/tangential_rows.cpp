@@ -62,8 +62,10 @@ std::vector<Eigen::Vector3d> held_directions(int64_t node, const std::vector<int
 /// displacements) and of 4e-16 (large) and its inverse, the preconditioner's scaling, stalled
 /// MPGP or was dropped (docs/friction.md).
 std::vector<Eigen::Vector3d> supported_directions(const std::map<int64_t, double>& weight, int64_t slave,
-                                                  const Eigen::Vector3d& n, const HeldDirections& held, double spread)
+                                                  const Eigen::Vector3d& n, const std::vector<int64_t>& supported,
+                                                  const fem::NodeFrames* frames, int32_t n_mesh_nodes, double spread)
 {
+  const auto held = [&](int64_t node) { return held_directions(node, supported, frames, n_mesh_nodes); };
   std::vector<Eigen::Vector3d> out;
   for (const Eigen::Vector3d& d : held(slave))
   {
@@ -89,13 +91,6 @@ TangentialRows build_tangential_rows(const ContactConstraints& normal, const std
                                      const std::vector<int64_t>& supported, const fem::NodeFrames* frames)
 {
   const auto n_mesh_nodes = static_cast<int32_t>(normal.B.cols() / 3);
-  std::map<int64_t, std::vector<Eigen::Vector3d>> directions; // of the nodes looked at so far
-  const HeldDirections held_along = [&](int64_t node) -> const std::vector<Eigen::Vector3d>& {
-    auto [it, added] = directions.try_emplace(node);
-    if (added)
-      it->second = held_directions(node, supported, frames, n_mesh_nodes);
-    return it->second;
-  };
   TangentialRows out;
   std::vector<Eigen::Triplet<double>> triplets;
   const bool plane_strain = eliminated[0] || eliminated[1] || eliminated[2];
@@ -116,7 +111,7 @@ TangentialRows build_tangential_rows(const ContactConstraints& normal, const std
     // line where two symmetry planes meet).
     const std::vector<Eigen::Vector3d> planes = plane_strain || supported.empty()
         ? std::vector<Eigen::Vector3d>{}
-        : supported_directions(weight, normal.slave_node[i], n, held_along, spread);
+        : supported_directions(weight, normal.slave_node[i], n, supported, frames, n_mesh_nodes, spread);
     std::array<bool, 2> held{false, false};
     if (!planes.empty())
     {

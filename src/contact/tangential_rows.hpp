@@ -28,7 +28,6 @@
 #include "fem/node_frames.hpp"
 
 #include <array>
-#include <functional>
 #include <vector>
 
 namespace feticon::contact
@@ -53,9 +52,6 @@ struct TangentialRows
 /// (eliminated[k] for exactly one k), else two (see file comment). Throws feticon::Error if
 /// more than one component is eliminated.
 std::vector<Eigen::Vector3d> unit_tangents(const Eigen::Vector3d& n, const std::array<bool, 3>& eliminated);
-
-/// The directions along which supports hold a node (global axes, then local ones).
-using HeldDirections = std::function<const std::vector<Eigen::Vector3d>&(int64_t node)>;
 
 /// The tangential rows of `normal` (see file comment) over the same DOFs; `supported`: the
 /// DOFs that supports hold, sorted (none if empty): global ones 3 node + component, and local

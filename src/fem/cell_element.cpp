@@ -10,8 +10,6 @@ namespace feticon::fem
 {
 namespace
 {
-using Voigt = Eigen::Matrix<double, 6, 1>;
-
 /// Gradients with respect to X and w det J at one quadrature point; an inverted or flat cell
 /// is an error naming it. A 2D cell's gradients have no z column, its w det J is times the
 /// out-of-plane measure (mesh::Planar::measure), and in axisymmetry `hoop` holds N_a / r, which
@@ -285,10 +283,7 @@ CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d&
     if (kinematics == Kinematics::total_lagrangian)
     {
       // sigma = F S F' / det F (det F > 0, checked in deformation).
-      Eigen::Matrix3d S;
-      S << stress(0), stress(3), stress(5), stress(3), stress(1), stress(4), stress(5), stress(4), stress(2);
-      const Eigen::Matrix3d sigma = Fd * S * Fd.transpose() / Fd.determinant();
-      stress << sigma(0, 0), sigma(1, 1), sigma(2, 2), sigma(0, 1), sigma(1, 2), sigma(2, 0);
+      stress = voigt_of(Fd * tensor_of(stress) * Fd.transpose() / Fd.determinant());
     }
     out.stress.push_back(stress);
     out.strain.push_back(strain);

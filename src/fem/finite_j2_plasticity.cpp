@@ -1,6 +1,7 @@
 #include "fem/finite_j2_plasticity.hpp"
 
 #include "common/error.hpp"
+#include "fem/voigt.hpp"
 
 #include <cmath>
 
@@ -8,26 +9,6 @@ namespace feticon::fem
 {
 namespace
 {
-Eigen::Matrix3d tensor_of(const Voigt& v) // plain shears
-{
-  Eigen::Matrix3d A;
-  A << v(0), v(3), v(5), v(3), v(1), v(4), v(5), v(4), v(2);
-  return A;
-}
-
-Voigt voigt_of(const Eigen::Matrix3d& A)
-{
-  return (Voigt() << A(0, 0), A(1, 1), A(2, 2), A(0, 1), A(1, 2), A(2, 0)).finished();
-}
-
-/// C = I + 2 E of a Green-Lagrange strain with engineering shears.
-Eigen::Matrix3d right_cauchy_green(const Voigt& E)
-{
-  Eigen::Matrix3d C;
-  C << 1 + 2 * E(0), E(3), E(5), E(3), 1 + 2 * E(1), E(4), E(5), E(4), 1 + 2 * E(2);
-  return C;
-}
-
 /// What a yielded point's return leaves for the positive tangent (finite_j2_return).
 struct Yielded
 {

@@ -1,6 +1,7 @@
 #include "fem/hyperelasticity.hpp"
 
 #include "common/error.hpp"
+#include "fem/voigt.hpp"
 
 #include <cmath>
 
@@ -8,21 +9,11 @@ namespace feticon::fem
 {
 namespace
 {
-using Voigt = Eigen::Matrix<double, 6, 1>;
 using Tangent = Eigen::Matrix<double, 6, 6>;
 
 /// Voigt index -> tensor indices, [11,22,33,12,23,31].
 constexpr int row_of[6] = {0, 1, 2, 0, 1, 2};
 constexpr int col_of[6] = {0, 1, 2, 1, 2, 0};
-
-/// A symmetric tensor's components in Voigt order (shears as they are, not doubled).
-Voigt voigt(const Eigen::Matrix3d& A)
-{
-  Voigt v;
-  for (int a = 0; a < 6; ++a)
-    v(a) = A(row_of[a], col_of[a]);
-  return v;
-}
 
 /// d(C^-1)/dC = -I_Ci with I_Ci,ijkl = (Ci_ik Ci_jl + Ci_il Ci_jk) / 2, in Voigt order; with
 /// engineering shears on the strain side a 4th-order tensor of minor symmetries maps to the
@@ -63,8 +54,7 @@ void Hyperelastic::check(const std::string& where) const
 
 Voigt hyperelastic_stress(const Hyperelastic& law, const Voigt& E, Tangent* tangent)
 {
-  Eigen::Matrix3d C;
-  C << 1 + 2 * E(0), E(3), E(5), E(3), 1 + 2 * E(1), E(4), E(5), E(4), 1 + 2 * E(2);
+  const Eigen::Matrix3d C = right_cauchy_green(E);
   const double det = C.determinant();
   FETICON_CHECK(det > 0, "a hyperelastic point is inverted: det C = " << det);
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
@@ -81,7 +71,7 @@ Voigt hyperelastic_stress(const Hyperelastic& law, const Voigt& E, Tangent* tang
       2 * c10 * j23 * (I - I1 / 3 * Ci) + 2 * c01 * j43 * (dI2 - 2.0 / 3.0 * I2 * Ci) + K * J * (J - 1) * Ci;
   if (tangent)
   {
-    const Voigt i = voigt(I), ci = voigt(Ci), d2 = voigt(dI2);
+    const Voigt i = voigt_of(I), ci = voigt_of(Ci), d2 = voigt_of(dI2);
     const Tangent Ici = symmetric_product(Ci);
     const Tangent II = Voigt(1, 1, 1, 0.5, 0.5, 0.5).asDiagonal(); // the symmetric identity
     // dS/dE = 2 dS/dC, term by term of S.
@@ -93,6 +83,6 @@ Voigt hyperelastic_stress(const Hyperelastic& law, const Voigt& E, Tangent* tang
     D += K * ((2 * J - 1) * J * ci * ci.transpose() - 2 * J * (J - 1) * Ici);
     D = 0.5 * (D + D.transpose()).eval(); // symmetric to round-off; made exactly so
   }
-  return voigt(S);
+  return voigt_of(S);
 }
 } // namespace feticon::fem

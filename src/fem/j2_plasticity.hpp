@@ -21,12 +21,12 @@
 /// s_tr / q_tr; the same tangent with that H.
 
 #include "fem/material.hpp"
+#include "fem/voigt.hpp"
 
 #include <Eigen/Dense>
 
 namespace feticon::fem
 {
-using Voigt = Eigen::Matrix<double, 6, 1>;
 
 /// What a J2 material remembers at one integration point between increments.
 struct PlasticPointState
