@@ -5,6 +5,7 @@
 /// (3) malformed decks, each a one-line error naming file and line.
 
 #include "io/calculix_deck.hpp"
+#include "io/deck_data.hpp"
 #include "io/deck.hpp"
 #include "io/problem_file.hpp"
 #include "fem/assembler.hpp"
@@ -963,5 +964,93 @@ TEST(DeckReader, LoadsGivenTwiceInAStepAddUp)
   EXPECT_EQ(first.pressures.front().pressure, 15.0);
   ASSERT_EQ(deck.problem.steps[1].nodal_forces.size(), 1u);
   EXPECT_EQ(deck.problem.steps[1].nodal_forces.front().value, 4.0);
+}
+} // namespace feticon::io
+
+namespace feticon::io
+{
+// CalculiX's reading where the manual is silent (its calinput.f, solidsections.f, surfaces.f
+// and allocont.f): a keyword written without its blanks, a later *SOLID SECTION replacing an
+// earlier one of the same element (with a warning), and a node surface and an element surface
+// under one name (a node-to-surface pair's slave takes the node one, its master the element one).
+TEST(DeckReader, ReadsDecksAsCalculixDoes)
+{
+  const auto dir = test::fresh_directory("deck_calculix_reading");
+  std::string text = R"(*NODE, NSET=NALL
+1, 0, 0, 0
+2, 1, 0, 0
+3, 1, 1, 0
+4, 0, 1, 0
+5, 0, 0, 1
+6, 1, 0, 1
+7, 1, 1, 1
+8, 0, 1, 1
+9, 0, 0, 1.001
+10, 1, 0, 1.001
+11, 1, 1, 1.001
+12, 0, 1, 1.001
+13, 0, 0, 2
+14, 1, 0, 2
+15, 1, 1, 2
+16, 0, 1, 2
+*ELEMENT, TYPE=C3D8, ELSET=EALL
+1, 1, 2, 3, 4, 5, 6, 7, 8
+2, 9, 10, 11, 12, 13, 14, 15, 16
+*ELSET, ELSET=TOP
+2
+*NSET, NSET=TOPNODES
+9, 10, 11, 12
+*MATERIAL, NAME=SOFT
+*ELASTIC
+1e9, 0.3
+*MATERIAL, NAME=STIFF
+*ELASTIC
+2e11, 0.3
+*SOLID SECTION, ELSET=EALL, MATERIAL=SOFT
+*SOLIDSECTION, ELSET=TOP, MATERIAL=STIFF
+*SURFACE, NAME=S, TYPE=NODE
+TOPNODES
+*SURFACE, NAME=S, TYPE=ELEMENT
+2, S1
+*SURFACE, NAME=M
+1, S2
+*SURFACE INTERACTION, NAME=I
+*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD
+*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE
+S, M
+*BOUNDARY
+1, 1, 3
+2, 2, 3
+3, 3
+4, 1, 1
+4, 3, 3
+13, 1, 2
+14, 2, 2
+*STEP
+*STATIC
+*CLOAD
+13, 3, -1.
+*ENDSTEP
+)";
+  const Deck deck = read_deck(write(dir, "calculix.inp", text));
+  const fem::Problem& p = deck.problem;
+  ASSERT_EQ(p.mesh.n_bodies(), 2); // the top cell took the later section's material
+  EXPECT_EQ(p.materials[static_cast<size_t>(p.mesh.cell_body[1])].young, 2e11);
+  EXPECT_EQ(p.materials[static_cast<size_t>(p.mesh.cell_body[0])].young, 1e9);
+  EXPECT_TRUE(std::any_of(deck.info.warnings.begin(), deck.info.warnings.end(), [](const std::string& w) {
+    return w.find("another material; the later section holds, as in CalculiX") != std::string::npos;
+  }));
+  ASSERT_EQ(p.contacts.size(), 1u);
+  EXPECT_EQ(p.contacts.front().slave, node_surface_key("S"));
+  EXPECT_EQ(p.contacts.front().master, "M");
+  EXPECT_EQ(p.mesh.face_set(node_surface_key("S")).size(), 1u);
+
+  // A load given twice in a step with two amplitudes: CalculiX refuses it, one line.
+  replace_first(text, "*CLOAD\n13, 3, -1.",
+                "*CLOAD\n13, 3, -1.\n*CLOAD, AMPLITUDE=A\n13, 3, -1.\n*AMPLITUDE, NAME=A\n0, 0, 1, 1");
+  EXPECT_NE(error_of(write(dir, "amplitudes.inp", text))
+                .find("a second load on one degree of freedom or face in one "
+                      "step with another amplitude"),
+            std::string::npos);
 }
 } // namespace feticon::io
