@@ -317,6 +317,25 @@ void compare_with_theory(RunContext& run, const nonlinear::ContactSolution& solu
 /// Post-processing: the contact figures of a completed run (the last iterate of a failed solve
 /// is no result; its accepted load steps are on disk as VTU and in "steps"), with a built-in
 /// problem's comparison with theory, and contact_pressure.csv.
+/// A penalty law's constants and the largest overclosure it gives pair `pair`'s rows at their
+/// pressures p = lambda_i / (|b_i| A_i) (contact_constraints.hpp).
+nlohmann::ordered_json law_figures(const fem::NormalLaw& law, const nonlinear::ContactSolution& solution, int32_t pair)
+{
+  const contact::ContactConstraints& rows = solution.constraints;
+  double overclosure = 0;
+  for (la::Index i = 0; i < solution.contact_lambda.size(); ++i)
+    if (rows.pair[i] == pair && solution.contact_lambda(i) > 0 && rows.slave_area[i] > 0)
+      overclosure = std::max(overclosure,
+                             law.overclosure_at(solution.contact_lambda(i) / (rows.row_norm[i] * rows.slave_area[i])));
+  nlohmann::ordered_json out = {{"model", fem::normal_law_name(law.kind)}};
+  if (law.kind == fem::NormalLawKind::linear)
+    out.update({{"slope", law.slope}, {"sigma_inf", law.sigma_inf}});
+  if (law.kind == fem::NormalLawKind::exponential)
+    out.update({{"c0", law.c0}, {"p0", law.p0}});
+  out["max_overclosure"] = overclosure;
+  return out;
+}
+
 void summarize_contact(RunContext& run, const nonlinear::ContactSolution& solution, nlohmann::ordered_json& summary)
 {
   if (!solution.completed || solution.contact_lambda.size() == 0)
@@ -359,6 +378,8 @@ void summarize_contact(RunContext& run, const nonlinear::ContactSolution& soluti
                                       {"peak_pressure", pair_peak},
                                       {"contact_area", pair_area},
                                       {"active_constraints", pair_active}};
+    if (interaction.law.kind != fem::NormalLawKind::hard)
+      figures["law"] = law_figures(interaction.law, solution, p);
     if (interaction.friction.model != nonlinear::FrictionModel::none)
     {
       figures["friction_force_magnitudes"] = friction_force; // sum over the slave nodes of |F_T| (N)

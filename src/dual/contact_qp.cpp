@@ -1,6 +1,7 @@
 #include "dual/contact_qp.hpp"
 
 #include "common/error.hpp"
+#include "common/log.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -48,7 +49,7 @@ la::Vector particular_solution(const FetiOperators& feti, const CoarseProjector&
 
 /// ||PFP||, the scale of the dual: the caller's last estimate, or power iterations.
 qp::NormEstimate pfp_norm_estimate(const FetiOperators& feti, const CoarseProjector& projector,
-                                   const DualPenaltyOptions& options, double known)
+                                   const DualPenaltyOptions& options, double known, const la::Vector* compliance)
 {
   // ||PFP|| changes little when only the contact rows change (ALGORITHMS.md section 8): the
   // caller passes the last estimate while F is the same, and the power iterations (6-7
@@ -56,7 +57,7 @@ qp::NormEstimate pfp_norm_estimate(const FetiOperators& feti, const CoarseProjec
   // expansion step too long, which MPRGP detects and halves.
   if (known > 0)
     return {known, 0};
-  const FOperator F_raw(feti);
+  const FOperator F_raw(feti, 1.0, compliance);
   const ProjectedOperator PFP_raw(F_raw, projector, 0.0);
   qp::NormEstimate norm = qp::estimate_norm(PFP_raw, options.power_iterations, 1e-3, 1);
   if (norm.value == 0)
@@ -136,24 +137,43 @@ std::vector<RowKind> row_kinds(const FetiOperators& feti, int64_t n_equality, co
 }
 
 ContactQp::ContactQp(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked, int64_t n_equality,
-                     const DualPenaltyOptions& options, double pfp_norm, const FrictionRows* friction)
-    : _feti(feti), _c(c), _f_stacked(f_stacked), _friction(friction), _kinds(row_kinds(feti, n_equality, friction)),
-      _projector(feti), _e(feti.apply_Rt(f_stacked)), _lambda_tilde(particular_solution(feti, _projector, _e, _kinds)),
-      _norm(pfp_norm_estimate(feti, _projector, options, pfp_norm)), _scale(1.0 / _norm.value), _F(feti, _scale),
+                     const DualPenaltyOptions& options, double pfp_norm, const FrictionRows* friction,
+                     const la::Vector* compliance)
+    : _feti(feti), _c(c), _f_stacked(f_stacked), _friction(friction), _compliance(compliance),
+      _kinds(row_kinds(feti, n_equality, friction)), _projector(feti), _e(feti.apply_Rt(f_stacked)),
+      _lambda_tilde(particular_solution(feti, _projector, _e, _kinds)),
+      _norm(pfp_norm_estimate(feti, _projector, options, pfp_norm, compliance)), _scale(1.0 / _norm.value),
+      _F(feti, _scale, compliance),
       // The dual penalty's A holds rho Q; SMALBE-M adds rho Q = rho G~'G~ itself (for the rho
       // it has at the time).
       _A_untimed(_F, _projector, options.method == DualMethod::smalbe ? 0.0 : options.rho), _A(_A_untimed),
       _set(constraint_set(feti, _kinds, _lambda_tilde, n_equality, friction)), _C(_projector)
 {
   FETICON_CHECK(c.size() == feti.n_dual() && n_equality <= feti.n_dual_global() &&
-                    (!friction || friction->slip_bound.size() == feti.n_dual()),
+                    (!friction || friction->slip_bound.size() == feti.n_dual()) &&
+                    (!compliance || compliance->size() == feti.n_dual()),
                 "dual problem: sizes do not match");
   const la::Vector d = feti.apply_B(feti.apply_K_plus(f_stacked)) - c;
-  _b = _projector.apply_P(_scale * (d - feti.apply_F(_lambda_tilde)));
+  la::Vector F_lambda_tilde = feti.apply_F(_lambda_tilde);
+  if (compliance)
+    F_lambda_tilde += compliance->cwiseProduct(_lambda_tilde);
+  _b = _projector.apply_P(_scale * (d - F_lambda_tilde));
   if (options.preconditioner != DualPreconditioner::none)
-    _timed_preconditioner.emplace(_preconditioner.emplace(feti, _projector, options, _norm.value, n_equality,
-                                                          options.method == DualMethod::smalbe ? 0.0 : options.rho,
-                                                          held_rows()));
+  {
+    _preconditioner.emplace(feti, _projector, options, _norm.value, n_equality,
+                            options.method == DualMethod::smalbe ? 0.0 : options.rho, held_rows());
+    // Penalty rows among dependent ones: the preconditioner would leave their difference
+    // unreduced (fricloop with its LINEAR law stalled at |g_P| 5e-5 for 20 000 steps); the QP
+    // is then solved without it.
+    if (compliance && !_preconditioner->scaled())
+    {
+      log::warning("penalty contact rows among linearly dependent constraint rows: the dual QP is solved without "
+                   "preconditioner");
+      _preconditioner.reset();
+    }
+    else
+      _timed_preconditioner.emplace(*_preconditioner);
+  }
 }
 
 la::Vector ContactQp::mu(const la::Vector& lambda) const
@@ -192,6 +212,9 @@ double ContactQp::feasibility_error(const la::Vector& lambda) const
 PrimalSolution ContactQp::recover(const la::Vector& lambda, const std::vector<char>& active,
                                   const std::string& unheld) const
 {
-  return recover_primal(_feti, _f_stacked, _c, lambda, active, unheld);
+  if (!_compliance)
+    return recover_primal(_feti, _f_stacked, _c, lambda, active, unheld);
+  // A penalty row holds at the penetration its law gives the multiplier: B_i u = c_i + C_i lambda_i.
+  return recover_primal(_feti, _f_stacked, _c + _compliance->cwiseProduct(lambda), lambda, active, unheld);
 }
 } // namespace feticon::dual

@@ -11,7 +11,13 @@
 ///          -g_i - lambda~_i <= mu_i <= g_i - lambda~_i on tangential rows (Tresca's box, 2D),
 ///          ||mu_d + lambda~_d|| <= g_d on the pair d of a node's tangential rows (disc, 3D).
 /// Scaling by ||PFP|| (power iterations) leaves the minimizer unchanged and makes rho and the
-/// tolerances dimensionless. Coordinates of SMALBE-M's multiplier omega of G~ mu = 0: inside
+/// tolerances dimensionless.
+/// Penalty contact laws (fem::NormalLaw linear: p = K max(d, 0)) enter as a compliance: F is
+/// F + C with C = diag(C_i), C_i = 1 / (K A_i |b_i|^2) on the normal rows of such a pair (A_i
+/// the slave node's area, |b_i| the row's norm, contact_constraints.hpp) and 0 elsewhere, so
+/// that at the minimizer B_i u - c_i = C_i lambda_i where lambda_i > 0 (the penetration the law
+/// allows) and B_i u <= c_i where lambda_i = 0: the KKT conditions of the law, with no new
+/// kind of constraint; primal recovery takes c_i + C_i lambda_i on the active rows. Coordinates of SMALBE-M's multiplier omega of G~ mu = 0: inside
 /// the QP it is scaled and in G~'s rows; outside (qp::QpState of a dual solve) it is the
 /// coarse vector beta by rigid modes, unscaled, which carries over to the next outer
 /// iteration's G (CoarseProjector::coarse_multiplier).
@@ -71,9 +77,11 @@ public:
   /// @param options   rho (dual penalty: in A), preconditioner, power iterations (referenced)
   /// @param pfp_norm  ||PFP|| of a solve with the same F, or 0 to estimate it here
   /// @param friction  the tangential rows and their slip bounds, or null without friction
-  /// Vectors are this rank's parts (FetiOperators); feti, c and f_stacked are referenced.
+  /// @param compliance C_i per owned row (see the file comment), or null for hard contact
+  /// Vectors are this rank's parts (FetiOperators); feti, c, f_stacked and compliance are referenced.
   ContactQp(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked, int64_t n_equality,
-            const DualPenaltyOptions& options, double pfp_norm, const FrictionRows* friction = nullptr);
+            const DualPenaltyOptions& options, double pfp_norm, const FrictionRows* friction = nullptr,
+            const la::Vector* compliance = nullptr);
 
   /// A = P F^ P, + rho Q for the dual penalty; timed.
   const la::TimedOperator& hessian() const { return _A; }
@@ -122,6 +130,7 @@ private:
   const la::Vector& _c;
   const la::Vector& _f_stacked;
   const FrictionRows* _friction;
+  const la::Vector* _compliance;
   std::vector<RowKind> _kinds;
   CoarseProjector _projector;
   la::Vector _e;

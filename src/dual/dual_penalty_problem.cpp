@@ -187,10 +187,10 @@ std::string unheld_body_message(const FetiOperators& feti, const la::Vector& b, 
 
 DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked,
                                 int64_t n_equality, const DualPenaltyOptions& options, const qp::QpState& warm,
-                                const FrictionRows* friction)
+                                const FrictionRows* friction, const la::Vector* compliance)
 {
   FETICON_CHECK(options.rho > 0, "rho = " << options.rho << " must be positive");
-  const ContactQp qp(feti, c, f_stacked, n_equality, options, warm.operator_norm, friction);
+  const ContactQp qp(feti, c, f_stacked, n_equality, options, warm.operator_norm, friction, compliance);
   la::Vector mu = qp.mu(warm.x);
   DualSolution out;
   qp::MprgpOptions mprgp = mprgp_options(options);

@@ -98,7 +98,9 @@ struct DualSolution
 ///                      previous outer iteration: only the contact rows, the gaps and the
 ///                      load have changed; its x has this solve's rows), or empty for mu = 0
 /// @param friction      tangential rows and slip bounds (contact_qp.hpp), or null
+/// @param compliance    per owned row, the compliance of a penalty contact law (contact_qp.hpp),
+///                      or null: hard contact
 DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, const la::Vector& f_stacked,
                                 int64_t n_equality, const DualPenaltyOptions& options, const qp::QpState& warm = {},
-                                const FrictionRows* friction = nullptr);
+                                const FrictionRows* friction = nullptr, const la::Vector* compliance = nullptr);
 } // namespace feticon::dual

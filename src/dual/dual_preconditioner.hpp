@@ -23,6 +23,10 @@ public:
   la::Index size() const override { return _feti.n_dual(); }
   const la::VectorSpace* space() const override { return &_feti.space(); }
   void apply(const la::Vector& x, la::Vector& y) const override;
+  /// Whether Y = (B B')^{-1} is applied (not where the rows are (nearly) dependent): without
+  /// it X is singular on the combinations of dependent rows, which F^ + C is not where those
+  /// rows have a compliance C (contact_qp.hpp), and a CG step could not reduce their gradient.
+  bool scaled() const { return _scaling && _scaling->factorized(); }
 
 private:
   la::Vector scale(const la::Vector& x) const { return _scaling ? _scaling->apply(x) : x; }

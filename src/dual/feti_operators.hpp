@@ -168,17 +168,30 @@ private:
   const decomposition::SchurComplements& _schur;
 };
 
-/// F as a LinearOperator, optionally scaled by `scale` (F / ||PFP|| in the dual penalty).
+/// F + C as a LinearOperator, optionally scaled by `scale` (F / ||PFP|| in the dual penalty),
+/// with C = diag(compliance) the compliance of the rows whose contact law is a penalty spring
+/// (B_i u - c_i = C_i lambda_i where lambda_i > 0; dual/contact_qp.hpp), or none.
 class FOperator : public la::LinearOperator
 {
 public:
-  explicit FOperator(const FetiOperators& feti, double scale = 1.0) : _feti(feti), _scale(scale) {}
+  /// @param compliance one value per owned row (referenced), or null for C = 0
+  explicit FOperator(const FetiOperators& feti, double scale = 1.0, const la::Vector* compliance = nullptr)
+      : _feti(feti), _scale(scale), _compliance(compliance)
+  {
+  }
   la::Index size() const override { return _feti.n_dual(); }
   const la::VectorSpace* space() const override { return &_feti.space(); }
-  void apply(const la::Vector& x, la::Vector& y) const override { y = _scale * _feti.apply_F(x); }
+  void apply(const la::Vector& x, la::Vector& y) const override
+  {
+    y = _feti.apply_F(x);
+    if (_compliance)
+      y += _compliance->cwiseProduct(x);
+    y *= _scale;
+  }
 
 private:
   const FetiOperators& _feti;
   double _scale;
+  const la::Vector* _compliance;
 };
 } // namespace feticon::dual

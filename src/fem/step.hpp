@@ -96,6 +96,9 @@ struct Step
   /// interaction's, with the friction in force (deck *CHANGE FRICTION, which holds until
   /// another changes it).
   std::vector<std::pair<int32_t, Friction>> changed_friction = {};
+  /// Contact pairs whose contact law in the step is not their interaction's, with the law in
+  /// force (deck *CHANGE SURFACE BEHAVIOR turning a tied pair into contact).
+  std::vector<std::pair<int32_t, NormalLaw>> changed_law = {};
   /// Load steps of the step, equal increments; unset: automatic ones if `automatic` is set,
   /// else the solver's (settings load_steps).
   std::optional<int> increments = {};

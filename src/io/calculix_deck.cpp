@@ -320,13 +320,24 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
         out << cell + 1 << ", S" << f << '\n';
     }
     const std::string interaction = "SI_" + std::to_string(p + 1);
-    out << "*SURFACE INTERACTION, NAME=" << interaction << "\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n"
-        << number(pairs[p].stiffness) << '\n';
+    // A pair's own law is written as it is; hard contact as CalculiX's penalty (above).
+    const fem::NormalLaw& law = names.interaction.law;
+    const double stiffness = law.kind == fem::NormalLawKind::linear ? law.slope : pairs[p].stiffness;
+    out << "*SURFACE INTERACTION, NAME=" << interaction << "\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=";
+    if (law.kind == fem::NormalLawKind::exponential)
+      out << "EXPONENTIAL\n" << number(law.c0) << ", " << number(law.p0) << '\n';
+    else if (law.kind == fem::NormalLawKind::tabular)
+    {
+      out << "TABULAR\n";
+      for (const auto& [overclosure, pressure] : law.table)
+        out << number(pressure) << ", " << number(overclosure) << '\n';
+    }
+    else
+      out << "LINEAR\n" << number(stiffness) << '\n';
     if (options.friction_coefficient > 0)
       out << "** Coulomb friction; the stick slope is the normal slope / " << options.stick_slope_ratio
           << " (src/io/calculix_deck.hpp)\n*FRICTION\n"
-          << number(options.friction_coefficient) << ", " << number(pairs[p].stiffness / options.stick_slope_ratio)
-          << '\n';
+          << number(options.friction_coefficient) << ", " << number(stiffness / options.stick_slope_ratio) << '\n';
     out << "*CONTACT PAIR, INTERACTION=" << interaction << ", TYPE=SURFACE TO SURFACE\n"
         << deck_name("S_", names.slave) << ", " << deck_name("S_", names.master) << '\n';
   }
@@ -515,10 +526,11 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   FETICON_CHECK(std::ranges::all_of(
                     problem.steps,
                     [](const fem::Step& step) {
-    return step.removed_contacts.empty() && step.removed_ties.empty() && step.changed_friction.empty();
+    return step.removed_contacts.empty() && step.removed_ties.empty() && step.changed_friction.empty() &&
+        step.changed_law.empty();
                     }),
-                "calculix export: contact pairs removed, tied or given another friction in a step (*MODEL CHANGE, "
-                "*CHANGE SURFACE BEHAVIOR, *CHANGE FRICTION) are not written by feticon export");
+                "calculix export: contact pairs removed, tied or given another friction or law in a step (*MODEL "
+                "CHANGE, *CHANGE SURFACE BEHAVIOR, *CHANGE FRICTION) are not written by feticon export");
   std::set<std::string> node_sets;
   for (const fem::Step& step : problem.steps)
     for (const fem::DirichletCondition& d : step.dirichlet)

@@ -204,6 +204,9 @@ struct DeckLoadState
   /// Interaction -> whether the law a *CHANGE SURFACE BEHAVIOR gave it is TIED (this step and
   /// the next ones; else the model's: DeckData::tied_interactions).
   std::map<std::string, bool> tied;
+  /// Interaction -> the contact law a *CHANGE SURFACE BEHAVIOR gave it (not TIED; this step and
+  /// the next ones).
+  std::map<std::string, fem::NormalLaw> laws;
 };
 
 struct DeckData
@@ -223,6 +226,7 @@ struct DeckData
   /// By name; a node surface whose name an element surface has too under node_surface_key.
   std::map<std::string, DeckSurface> surfaces;
   std::map<std::string, fem::Material> materials;
+  std::string first_material; ///< the name of the deck's first *MATERIAL (CalculiX's default K)
   std::vector<DeckSection> sections;
   /// The formulation of the 2D cells (CPE*: plane strain, CPS*: plane stress, CAX*:
   /// axisymmetric); none if the cells are 3D. Where the first cell block set it.
@@ -234,6 +238,9 @@ struct DeckData
   std::vector<DeckTie> ties;
   /// Interactions whose *SURFACE BEHAVIOR is PRESSURE-OVERCLOSURE=TIED: their pairs are ties.
   std::set<std::string> tied_interactions;
+  /// Interactions' contact laws (*SURFACE BEHAVIOR other than TIED; none given: hard). A linear
+  /// slope of 0 stands for CalculiX's default, 50 times the first material's E.
+  std::map<std::string, fem::NormalLaw> laws;
   std::vector<fem::LinearEquation> equations;
   std::vector<DeckTransform> transforms;
   /// Node -> its transform (index into `transforms`; the last one given wins, as in CalculiX).

@@ -781,6 +781,8 @@ private:
     known_parameters({"NAME"});
     _material = required("NAME");
     _data.materials[_material] = fem::Material{0.0, 0.0};
+    if (_data.first_material.empty())
+      _data.first_material = _material;
     no_data();
   }
 
@@ -1431,17 +1433,20 @@ private:
       throw Error(where() + " comes before any *SURFACE INTERACTION");
     const std::string interaction = changed.empty() ? _interaction : changed;
     const std::string law = required("PRESSURE-OVERCLOSURE");
-    std::string parameters;
-    DeckDataLine line;
-    while (next_data(line))
-      for (size_t k = 0; k < line.fields.size(); ++k)
-        parameters += (parameters.empty() ? "" : ", ") + text(line.fields[k]);
     if (law != "HARD" && law != "TIED" && law != "LINEAR" && law != "EXPONENTIAL" && law != "TABULAR")
       throw Error(where() + ": PRESSURE-OVERCLOSURE=" + law + " is not a law feticon knows");
+    std::string parameters;
+    const fem::NormalLaw normal_law = pressure_overclosure(law, parameters);
     if (!changed.empty())
+    {
       _data.state.tied[interaction] = law == "TIED";
+      if (law != "TIED")
+        _data.state.laws[interaction] = normal_law;
+    }
     else if (law == "TIED")
       _data.tied_interactions.insert(interaction);
+    else
+      _data.laws[interaction] = normal_law;
     if (law == "HARD")
       return; // what feticon enforces
     if (law == "TIED")
@@ -1459,8 +1464,74 @@ private:
     }
     _data.warn("interaction " + interaction + ": PRESSURE-OVERCLOSURE=" + law + " (" + parameters + ", " +
                _keyword.where.str() +
-               ") is a penalty law; feticon enforces non-penetration exactly, so its "
-               "answer differs from CalculiX's by the penetration the law allows (pressure / slope)");
+               ") is a penalty law; feticon solves it as hard contact (exact non-penetration: the answer differs "
+               "from CalculiX's by the penetration the law allows) unless contact.law=deck");
+  }
+
+  /// The data lines of a *SURFACE BEHAVIOR with law `law` as a normal law (TIED and HARD: hard),
+  /// their fields joined in `parameters` for the messages.
+  fem::NormalLaw pressure_overclosure(const std::string& law, std::string& parameters)
+  {
+    fem::NormalLaw out;
+    out.kind = law == "LINEAR" ? fem::NormalLawKind::linear
+        : law == "EXPONENTIAL" ? fem::NormalLawKind::exponential
+        : law == "TABULAR"     ? fem::NormalLawKind::tabular
+                               : fem::NormalLawKind::hard;
+    int64_t n_lines = 0;
+    for (DeckDataLine line; next_data(line); ++n_lines)
+    {
+      for (size_t k = 0; k < line.fields.size(); ++k)
+        parameters += (parameters.empty() ? "" : ", ") + text(line.fields[k]);
+      if (out.kind == fem::NormalLawKind::tabular)
+        tabular_line(line, out);
+      else if (n_lines == 0)
+        law_constants(line, out);
+    }
+    if (out.kind == fem::NormalLawKind::exponential && !(out.c0 > 0))
+      throw Error(where() + ": PRESSURE-OVERCLOSURE=EXPONENTIAL needs a data line: c0, p0");
+    if (out.kind == fem::NormalLawKind::tabular && out.table.empty())
+      throw Error(where() + ": PRESSURE-OVERCLOSURE=TABULAR needs data lines: pressure, overclosure");
+    return out;
+  }
+
+  /// The first data line of a linear (K, sigma_inf, c0) or exponential (c0, p0) law.
+  void law_constants(const DeckDataLine& line, fem::NormalLaw& out)
+  {
+    const auto given = [&](size_t field) { return line.fields.size() > field && !line.fields[field].empty(); };
+    if (out.kind == fem::NormalLawKind::linear)
+    {
+      // CalculiX: a slope K <= 0 or none takes 50 times the first material's E (deck_model).
+      out.slope = given(0) ? real(line, 0, "slope K") : 0.0;
+      out.sigma_inf = given(1) ? std::max(real(line, 1, "tension sigma_inf"), 0.0) : 0.0;
+      if (given(0) && !(out.slope > 0))
+        _data.warn(where() + ": the slope K " + text(line.fields[0]) +
+                   " is not positive; CalculiX's default, 50 times the first material's E, is used");
+      out.slope = std::max(out.slope, 0.0);
+    }
+    else if (out.kind == fem::NormalLawKind::exponential)
+    {
+      if (!given(0) || !given(1))
+        fail_at(line.where, "PRESSURE-OVERCLOSURE=EXPONENTIAL needs c0, p0");
+      out.c0 = real(line, 0, "clearance c0");
+      out.p0 = real(line, 1, "pressure p0");
+      if (!(out.c0 > 0))
+        fail_at(line.at(0), "the clearance c0 " + text(line.fields[0]) + " must be positive");
+      if (!(out.p0 >= 0))
+        fail_at(line.at(1), "the pressure p0 " + text(line.fields[1]) + " must not be negative");
+    }
+  }
+
+  /// A line "pressure, overclosure" (CalculiX's order) of a tabular law: increasing overclosure,
+  /// a pressure that does not decrease.
+  void tabular_line(const DeckDataLine& line, fem::NormalLaw& out)
+  {
+    if (line.fields.size() > 2 && !line.fields[2].empty())
+      fail_at(line.at(2), "a table per temperature is not implemented by feticon (pressure, overclosure)");
+    const double pressure = real(line, 0, "pressure");
+    const double overclosure = real(line, 1, "overclosure");
+    if (!out.table.empty() && !(overclosure > out.table.back().first && pressure >= out.table.back().second))
+      fail_at(line.where, "the table needs increasing overclosures with pressures that do not decrease");
+    out.table.emplace_back(overclosure, pressure);
   }
 
   /// *FRICTION (CalculiX: no parameters, one line "mu, stick slope"): Coulomb's law on the

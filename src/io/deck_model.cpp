@@ -466,7 +466,7 @@ private:
       if (!contact_somewhere)
         continue;
       _contact_of_pair.back() = static_cast<int32_t>(_p.contacts.size());
-      fem::ContactInteraction interaction{pair.interaction, {}, formulation};
+      fem::ContactInteraction interaction{pair.interaction, law_of(pair.interaction, formulation), {}, formulation};
       if (const auto it = _d.frictions.find(pair.interaction); it != _d.frictions.end() && it->second.coefficient > 0)
         interaction.friction = {fem::FrictionModel::coulomb, it->second.coefficient, 0};
       FETICON_CHECK(pair.adjust_set.empty() || _p.mesh.node_sets.count(pair.adjust_set),
@@ -674,6 +674,47 @@ private:
                                 step.removed_contacts.end());
   }
 
+  /// The contact law of `interaction` (hard if it has none): a linear law without a positive
+  /// slope takes CalculiX's default, 50 times the E of the deck's first material.
+  /// A node-to-face pair's law keeps its tension sigma_inf (fem::NormalLaw; none given: CalculiX's
+  /// default, the first material's E / 70 000); a face-to-face pair's law is bilinear, its
+  /// exponential law zero at contact (CalculiX's variants).
+  fem::NormalLaw resolved(fem::NormalLaw law, fem::ContactFormulation formulation) const
+  {
+    if (law.kind == fem::NormalLawKind::exponential)
+      law.zero_at_contact = formulation != fem::ContactFormulation::node_to_segment;
+    if (law.kind != fem::NormalLawKind::linear)
+      return law;
+    const bool defaults =
+        law.slope == 0 || (formulation == fem::ContactFormulation::node_to_segment && law.sigma_inf <= 0);
+    FETICON_CHECK(!defaults || !_d.first_material.empty(),
+                  "a linear contact law without its slope K or tension sigma_inf and no *MATERIAL for CalculiX's "
+                  "defaults (50 times and 1 / 70 000 of the first material's E)");
+    const double young = defaults ? _d.materials.at(_d.first_material).young : 0.0;
+    if (law.slope == 0)
+      law.slope = 50 * young;
+    if (formulation != fem::ContactFormulation::node_to_segment)
+      law.sigma_inf = 0;
+    else if (law.sigma_inf <= 0)
+      law.sigma_inf = young / 70000;
+    return law;
+  }
+  fem::NormalLaw law_of(const std::string& interaction, fem::ContactFormulation formulation) const
+  {
+    const auto it = _d.laws.find(interaction);
+    return it != _d.laws.end() ? resolved(it->second, formulation) : fem::NormalLaw{};
+  }
+
+  /// The pairs whose interaction a *CHANGE SURFACE BEHAVIOR gave a contact law, with that law.
+  std::vector<std::pair<int32_t, fem::NormalLaw>> changed_laws(const std::map<std::string, fem::NormalLaw>& laws) const
+  {
+    std::vector<std::pair<int32_t, fem::NormalLaw>> out;
+    for (size_t p = 0; p < _p.contacts.size(); ++p)
+      if (const auto it = laws.find(_p.contacts[p].interaction.name); it != laws.end())
+        out.emplace_back(static_cast<int32_t>(p), resolved(it->second, _p.contacts[p].interaction.formulation));
+    return out;
+  }
+
   /// The indices of the pairs *MODEL CHANGE took out (a name that is no pair is an error).
   /// The pairs whose interaction a *CHANGE FRICTION changed, with their friction (mu = 0:
   /// frictionless).
@@ -760,6 +801,7 @@ private:
       step.temperatures = temperatures(state.temperature);
       pairs_out_of_force(k, step);
       step.changed_friction = changed_friction(state.frictions);
+      step.changed_law = changed_laws(state.laws);
       step.time = _deck.steps[k].time;
       step.ramp = _deck.steps[k].ramp;
       // Step 1 takes the solver's load_steps, which a first *STATIC, DIRECT sets (--set may

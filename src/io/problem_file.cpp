@@ -270,6 +270,68 @@ fem::ContactFormulation formulation_of(const YAML::Node& node, const std::string
   return formulation == "mortar" ? fem::ContactFormulation::mortar : fem::ContactFormulation::node_to_segment;
 }
 
+/// A pair's `law:` (fem::NormalLaw): hard, {model: linear, slope: K}, {model: exponential, c0,
+/// p0} or {model: tabular, table: [[overclosure, pressure], ...]}; solved where the setting
+/// contact.law is deck.
+fem::NormalLaw pair_law(const YAML::Node& node, const std::string& key, const ProblemReader& r)
+{
+  fem::NormalLaw law;
+  if (node.IsScalar())
+  {
+    FETICON_CHECK(r.text(node, key) == "hard",
+                  r.source << ": " << key << " = '" << r.text(node, key)
+                           << "': give hard, or a map with model (linear, exponential, "
+                              "tabular) and its constants");
+    return law;
+  }
+  const std::string model = r.text(node["model"], key + ".model");
+  const auto positive = [&](const char* name) {
+    const double value = r.number(node[name], key + "." + name);
+    FETICON_CHECK(std::isfinite(value) && value > 0,
+                  r.source << ": " << key << "." << name << " = " << value << " must be positive");
+    return value;
+  };
+  if (model == "hard")
+    r.only_keys(node, key, {"model"});
+  else if (model == "linear")
+  {
+    r.only_keys(node, key, {"model", "slope"});
+    law = {fem::NormalLawKind::linear, positive("slope")};
+  }
+  else if (model == "exponential")
+  {
+    r.only_keys(node, key, {"model", "c0", "p0"});
+    law.kind = fem::NormalLawKind::exponential;
+    law.c0 = positive("c0");
+    law.p0 = positive("p0");
+  }
+  else if (model == "tabular")
+  {
+    r.only_keys(node, key, {"model", "table"});
+    law.kind = fem::NormalLawKind::tabular;
+    const YAML::Node table = node["table"];
+    FETICON_CHECK(table && table.IsSequence() && table.size() > 0,
+                  r.source << ": " << key << ".table must be a list of [overclosure, pressure] pairs");
+    for (size_t i = 0; i < table.size(); ++i)
+    {
+      const std::string at = key + ".table." + std::to_string(i);
+      FETICON_CHECK(table[i].IsSequence() && table[i].size() == 2,
+                    r.source << ": " << at << " must be [overclosure, pressure]");
+      const double overclosure = r.number(table[i][0], at), pressure = r.number(table[i][1], at);
+      FETICON_CHECK(
+          std::isfinite(overclosure) && std::isfinite(pressure) && pressure >= 0 &&
+              (law.table.empty() || (overclosure > law.table.back().first && pressure >= law.table.back().second)),
+          r.source << ": " << at
+                   << ": the table needs increasing overclosures with finite pressures >= 0 "
+                      "that do not decrease");
+      law.table.emplace_back(overclosure, pressure);
+    }
+  }
+  else
+    throw Error(r.source + ": " + key + ".model = '" + model + "' must be one of: hard, linear, exponential, tabular");
+  return law;
+}
+
 /// Slave and master of list entry `key` are two face sets of the mesh.
 void check_surfaces(const std::string& slave, const std::string& master, const std::string& key, const mesh::Mesh& mesh,
                     const ProblemReader& r)
@@ -291,7 +353,7 @@ std::vector<fem::ContactPairNames> contact_pairs(const YAML::Node& contact, cons
   {
     const YAML::Node c = contact[i];
     const std::string key = "contact." + std::to_string(i);
-    r.only_keys(c, key, {"slave", "master", "friction", "formulation", "adjust"});
+    r.only_keys(c, key, {"slave", "master", "friction", "formulation", "adjust", "law"});
     fem::ContactPairNames pair{r.text(c["slave"], key + ".slave"), r.text(c["master"], key + ".master")};
     pair.interaction.friction = pair_friction(c, key + ".friction", r);
     if (c["adjust"])
@@ -302,6 +364,8 @@ std::vector<fem::ContactPairNames> contact_pairs(const YAML::Node& contact, cons
     }
     if (c["formulation"])
       pair.interaction.formulation = formulation_of(c["formulation"], key + ".formulation", r);
+    if (c["law"])
+      pair.interaction.law = pair_law(c["law"], key + ".law", r);
     check_surfaces(pair.slave, pair.master, key, mesh, r);
     out.push_back(pair);
   }

@@ -24,6 +24,11 @@ std::vector<SettingSpec> contact_specs()
                                                  "given, for every pair, else each pair's own (a deck's "
                                                  "pair TYPE, a problem file pair's formulation; mortar)",
        Type::text, {"node_to_segment", "mortar"}, 0, 0, false},
+      {"contact.law", "hard", "the contact pairs' normal law: hard (exact non-penetration, whatever a pair's "
+       "own law) or deck (each pair's own: an input deck's *SURFACE BEHAVIOR, a problem file pair's law; a "
+       "linear pressure-overclosure law p = K max(overclosure, 0) becomes a compliance on the pair's dual "
+       "rows, FETI solver)",
+       Type::text, {"hard", "deck"}, 0, 0, false},
       {"contact.friction.model", "none", "friction on the contact pair (FETI solver): none, tresca (the "
        "tangential traction bounded by contact.friction.slip_bound) or coulomb (bounded by "
        "contact.friction.coefficient times the contact pressure); where given, for every pair, else each "

@@ -10,6 +10,22 @@ la::Vector row_penalties(const contact::ContactConstraints& rows, double eps_n)
   return area * (eps_n / mean);
 }
 
+la::Vector law_penalties(const contact::ContactConstraints& rows, double slope)
+{
+  la::Vector out(rows.n_rows());
+  for (la::Index i = 0; i < out.size(); ++i)
+    out(i) = slope * rows.slave_area[i] * rows.row_norm[i] * rows.row_norm[i];
+  return out;
+}
+
+la::Vector law_shifts(const contact::ContactConstraints& rows, const fem::NormalLaw& law)
+{
+  la::Vector out(rows.n_rows());
+  for (la::Index i = 0; i < out.size(); ++i)
+    out(i) = law.sigma_inf / (law.slope * rows.row_norm[i]);
+  return out;
+}
+
 void penalty_terms(const contact::ContactConstraints& rows, const std::vector<char>& active, const la::Vector& eps,
                    la::SparseMatrix& K_pen, la::Vector& f_pen)
 {

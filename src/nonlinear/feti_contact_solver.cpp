@@ -213,6 +213,28 @@ std::pair<bool, std::string> choose_explicit(const SolverSettings& settings,
   return {pays, reason};
 }
 
+/// The constants of a pair's law that contact.law = deck solves, checked (a deck's or problem
+/// file's reader checks most of them; a table the tangent cannot follow is refused here).
+void check_law(const fem::ContactInteraction& interaction, int32_t pair)
+{
+  const fem::NormalLaw& law = interaction.law;
+  const std::string which = "contact pair " + std::to_string(pair + 1) +
+      (interaction.name.empty() ? "" : " (interaction " + interaction.name + ")") + ": its " +
+      fem::normal_law_name(law.kind) + " law ";
+  FETICON_CHECK(law.kind != fem::NormalLawKind::linear || (std::isfinite(law.slope) && law.slope > 0),
+                which << "needs a positive slope K (" << law.slope << ")");
+  FETICON_CHECK(law.kind != fem::NormalLawKind::exponential || (law.c0 > 0 && law.p0 > 0),
+                which << "needs positive c0 and p0 (" << law.c0 << ", " << law.p0 << ")");
+  if (law.kind != fem::NormalLawKind::tabular)
+    return;
+  bool increasing = law.table.size() >= 2;
+  for (size_t j = 0; j + 1 < law.table.size(); ++j)
+    increasing = increasing && law.table[j + 1].second > law.table[j].second;
+  FETICON_CHECK(increasing,
+                which << "needs two points or more with increasing pressures (the outer loop follows its "
+                         "tangent, which a constant pressure does not have)");
+}
+
 std::string format_iteration(const OuterIteration& it)
 {
   char line[256];
@@ -335,6 +357,11 @@ private:
   std::optional<dual::FrictionRows> slip_bounds(const dual::FetiOperators& feti,
                                                 const contact::ContactConstraints& contact_rows,
                                                 const contact::TangentialRows& tangential) const;
+  /// The compliance of each owned normal row whose pair's law is a penalty spring (dual/contact_qp.hpp),
+  /// 0 on the others, and the overclosure at which its pressure starts added to its c (the law's
+  /// tangent at the row's gap, fem::NormalLaw::tangent); none (c unchanged) where every pair is hard.
+  std::optional<la::Vector> law_compliance(const dual::FetiOperators& feti,
+                                           const contact::ContactConstraints& contact_rows, la::Vector& c) const;
   /// Coulomb: whether the normal forces, and so the slip bounds, changed by at most the
   /// displacement tolerance in the last QP (always true otherwise).
   bool friction_settled(const std::map<int64_t, double>& normal_before,
@@ -717,7 +744,10 @@ void FetiContactSolve::set_pairs_in_force(int step)
   for (const int32_t p : _problem.steps[stage].removed_contacts)
     _pair_in_force[p] = 0;
   for (int32_t p = 0; p < std::ssize(_pairs); ++p)
+  {
     _interactions[p] = _settings.interaction(_problem, p, stage);
+    check_law(_interactions[p], p);
+  }
   if (_linear_rows)
     _linear_rows->set_pairs_in_force(_pair_in_force);
 }
@@ -822,8 +852,9 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   contact::TangentialRows tangential = friction_rows(contact_rows, u_global, rows);
 
   const std::unique_ptr<dual::FetiOperators> feti = coarse_problem(rows);
-  const la::Vector c = constraint_values(*feti, rows);
+  la::Vector c = constraint_values(*feti, rows);
   const std::optional<dual::FrictionRows> friction = slip_bounds(*feti, contact_rows, tangential);
+  const std::optional<la::Vector> compliance = law_compliance(*feti, contact_rows, c);
   const std::vector<int64_t> keys = contact_rows.keys();
   const qp::QpState warm = _multipliers.warm_start(*feti, _n_equality, keys, tangential.n_tangents);
   const dual::DualPenaltyOptions dual_options = qp_options(k);
@@ -831,8 +862,8 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   dual::DualSolution solution;
   {
     ScopedTimer t(_timers, "dual solve (MPRGP)");
-    solution =
-        dual::solve_contact_dual(*feti, c, residual, _n_equality, dual_options, warm, friction ? &*friction : nullptr);
+    solution = dual::solve_contact_dual(*feti, c, residual, _n_equality, dual_options, warm,
+                                        friction ? &*friction : nullptr, compliance ? &*compliance : nullptr);
   }
   _u += solution.u;
   const la::Vector contact_lambda =
@@ -937,6 +968,34 @@ std::optional<dual::FrictionRows> FetiContactSolve::slip_bounds(const dual::Feti
       out.slip_bound(i) = std::numeric_limits<double>::infinity();
     else if (const auto it = _multipliers.contact().find(contact_rows.key(row)); it != _multipliers.contact().end())
       out.slip_bound(i) = friction.coefficient * std::max(it->second, 0.0);
+  }
+  return out;
+}
+
+std::optional<la::Vector> FetiContactSolve::law_compliance(const dual::FetiOperators& feti,
+                                                           const contact::ContactConstraints& contact_rows,
+                                                           la::Vector& c) const
+{
+  if (std::ranges::all_of(_interactions, [](const fem::ContactInteraction& interaction) {
+        return interaction.law.kind == fem::NormalLawKind::hard;
+      }))
+    return std::nullopt;
+  // The law's tangent at the row's overclosure d = -|b_i| c_i, p = k (d' - d_0) with d' =
+  // |b_i| (B_i du - c_i) after the step and lambda_i = |b_i| A_i p (contact_constraints.hpp):
+  // B_i du - (c_i + d_0 / |b_i|) = lambda_i / (k A_i |b_i|^2). A linear law's tangent is the law.
+  la::Vector out = la::Vector::Zero(feti.n_dual());
+  for (la::Index i = 0; i < feti.n_dual(); ++i)
+  {
+    const int64_t row = feti.row_id(i) - _n_equality;
+    if (row < 0 || row >= contact_rows.n_rows())
+      continue;
+    const fem::NormalLaw& law = _interactions[contact_rows.pair[row]].law;
+    const double area = contact_rows.slave_area[row], norm = contact_rows.row_norm[row];
+    if (law.kind == fem::NormalLawKind::hard || !(area > 0))
+      continue;
+    const fem::NormalLaw::Tangent line = law.tangent(-norm * c(i));
+    out(i) = 1 / (line.stiffness * area * norm * norm);
+    c(i) += line.zero_overclosure / norm;
   }
   return out;
 }

@@ -117,6 +117,12 @@ IterationOutcome PrimalPenaltySolve::outer_iteration(int k, OuterIteration& it)
     rows =
         contact::build_contact_constraints(_problem.mesh, _linear ? la::Vector::Zero(_n) : _u, _pair, _contact_options);
   }
+  // contact.law = deck with a linear law: its springs K A_i |b_i|^2 (contact_penalty.hpp), pressed
+  // from the overclosure sigma_inf / K on (fem::NormalLaw), which the solve takes as a shifted c.
+  const fem::NormalLaw& law = _settings.interaction(_problem.contacts[0]).law;
+  const bool own_law = law.kind == fem::NormalLawKind::linear;
+  const la::Vector shift = own_law ? law_shifts(rows, law) : la::Vector::Zero(rows.c.size());
+  rows.c += shift;
   // Active set: violated rows (linear: v = B u - c at the current u; TL: current gap < 0).
   // The very first solve also takes touching rows (g = 0), or a body held only by
   // contact would have no spring at all.
@@ -136,7 +142,7 @@ IterationOutcome PrimalPenaltySolve::outer_iteration(int k, OuterIteration& it)
     if (_out.penalty == 0)
       _out.penalty = _settings.eps_n_factor * _K.diagonal().maxCoeff();
   }
-  const la::Vector eps = row_penalties(rows, _out.penalty);
+  const la::Vector eps = own_law ? law_penalties(rows, law.slope) : row_penalties(rows, _out.penalty);
   penalty_terms(rows, _active, eps, _K_pen, _f_pen);
   {
     ScopedTimer t(_timers, "factorization + solve");
@@ -146,6 +152,7 @@ IterationOutcome PrimalPenaltySolve::outer_iteration(int k, OuterIteration& it)
       solve_increment(rows, eps, f_int, it);
   }
   FETICON_CHECK(_u.allFinite(), "primal penalty: the solution is not finite");
+  rows.c -= shift; // the gaps of the outputs
   _out.constraints = std::move(rows);
   it.qp.iterations = 1;
   it.active_contacts = std::count(_active.begin(), _active.end(), 1);
@@ -211,6 +218,11 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
   FETICON_CHECK(problem.contacts.size() == 1,
                 "method = primal_penalty handles one contact pair, the problem has "
                     << problem.contacts.size() << ": use method smalbe or dual_penalty");
+  const fem::NormalLawKind law = settings.interaction(problem.contacts[0]).law.kind;
+  FETICON_CHECK(law == fem::NormalLawKind::hard || law == fem::NormalLawKind::linear,
+                "the contact pair's " << fem::normal_law_name(law)
+                                      << " pressure-overclosure law is not solved by feticon (contact.law=deck solves "
+                                         "linear laws; contact.law=hard solves the pair as hard contact)");
   FETICON_CHECK(!settings.has_friction(problem),
                 "the contact pair has friction, which method = primal_penalty does "
                 "not model: use method smalbe or dual_penalty");

@@ -65,6 +65,7 @@ SolverSettings::SolverSettings(const io::Settings& s) : dual(s)
                                                "penalty has no friction");
   linear_contact_band = s.number("contact.linear_band");
   first_rows_reached = s.text("contact.first_rows") == "reached";
+  pair_laws = s.text("contact.law") == "deck";
 }
 fem::ContactInteraction SolverSettings::interaction(const fem::ContactPairNames& pair) const
 {
@@ -73,6 +74,8 @@ fem::ContactInteraction SolverSettings::interaction(const fem::ContactPairNames&
   out.friction.coefficient = friction.coefficient.value_or(out.friction.coefficient);
   out.friction.slip_bound = friction.slip_bound.value_or(out.friction.slip_bound);
   out.formulation = formulation.value_or(out.formulation);
+  if (!pair_laws)
+    out.law = {};
   return out;
 }
 
@@ -82,7 +85,19 @@ fem::ContactInteraction SolverSettings::interaction(const fem::Problem& problem,
   for (const auto& [changed, friction] : problem.steps[step].changed_friction)
     if (changed == pair)
       names.interaction.friction = friction;
+  for (const auto& [changed, law] : problem.steps[step].changed_law)
+    if (changed == pair)
+      names.interaction.law = law;
   return interaction(names);
+}
+
+bool SolverSettings::has_nonlinear_law(const fem::Problem& problem) const
+{
+  for (size_t step = 0; step < problem.steps.size(); ++step)
+    for (int32_t pair = 0; pair < std::ssize(problem.contacts); ++pair)
+      if (interaction(problem, pair, step).law.is_nonlinear())
+        return true;
+  return false;
 }
 
 bool SolverSettings::has_friction(const fem::Problem& problem) const

@@ -82,8 +82,11 @@ struct SolverSettings
   /// its load steps' own business, LoadHistory).
   bool path_independent(const fem::Problem& problem) const
   {
-    return kinematics == fem::Kinematics::linear && !problem.has_plastic_body();
+    return kinematics == fem::Kinematics::linear && !problem.has_plastic_body() && !has_nonlinear_law(problem);
   }
+  /// Whether a pair of `problem` is solved with an exponential or tabular law in some step: its
+  /// outer loop follows the law's tangent (fem::NormalLaw::tangent), also with small displacements.
+  bool has_nonlinear_law(const fem::Problem& problem) const;
   /// The same for `problem`: load_steps = auto is two where a pair has friction or a body is
   /// plastic (both follow the path in its steps), else one.
   int steps_of(const fem::Problem& problem) const
@@ -180,11 +183,15 @@ struct SolverSettings
   std::optional<contact::ContactFormulation> formulation;
   double eps_n_factor;       ///< primal penalty eps_n = factor * max diag K
   FrictionOverride friction; ///< contact.friction.* where given
+  /// contact.law = deck: each pair's own normal law; false (hard): hard contact on every pair.
+  bool pair_laws = false;
 
-  /// The interaction `pair` is solved with: its own, with the given settings in its place.
+  /// The interaction `pair` is solved with: its own, with the given settings in its place (its
+  /// law hard unless pair_laws).
   fem::ContactInteraction interaction(const fem::ContactPairNames& pair) const;
   /// The interaction pair `pair` of `problem` is solved with in step `step` (0-based): as
-  /// above, with the friction the step gives it (fem::Step::changed_friction) in place of its own.
+  /// above, with the friction and law the step gives it (fem::Step::changed_friction,
+  /// changed_law) in place of its own.
   fem::ContactInteraction interaction(const fem::Problem& problem, int32_t pair, size_t step) const;
   /// Whether a pair of `problem` is solved with friction in some step.
   bool has_friction(const fem::Problem& problem) const;

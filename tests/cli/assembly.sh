@@ -17,33 +17,7 @@ export OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_mpi_yield_when_idl
 [[ -z ${FETICON_SANITIZED:-} ]] || export LSAN_OPTIONS="${LSAN_OPTIONS:-}:detect_leaks=0"
 quiet=(-q --set output.plots=false --set qp.rtol=1e-10 --set qp.force_rtol=0)
 
-cat > "$work/stack.yaml" <<'YAML'
-problem: custom
-mesh:
-  boxes:
-    - {name: a, origin: [0, 0, 0], lengths: [2, 1, 1], cells: [4, 2, 2]}
-    - {name: b, origin: [0, 0, 1], lengths: [2, 1, 1], cells: [6, 3, 3]}
-    - {name: c, origin: [0, 0, 2], lengths: [2, 1, 1], cells: [4, 2, 2]}
-bodies:
-  a: {young: 2e11, poisson: 0.3}
-  b: {young: 2e11, poisson: 0.3}
-  c: {young: 2e11, poisson: 0.3}
-supports:
-  - {set: a_zmin, z: 0}
-  - {set: a_xmin, x: 0}
-  - {set: b_xmin, x: 0}
-  - {set: c_xmin, x: 0}
-  - {set: a_ymin, y: 0}
-  - {set: b_ymin, y: 0}
-  - {set: c_ymin, y: 0}
-loads:
-  - {set: c_zmax, traction: [0, 0, -1e8]}
-contact:
-  - {slave: b_zmin, master: a_zmax}
-  - {slave: c_zmin, master: b_zmax, formulation: node_to_segment}
-displacements: small
-subdomains: 6
-YAML
+cp "$src/tests/data/stack_three_blocks.yaml" "$work/stack.yaml"
 
 # check RESULTS_DIR PAIRS: converged, PAIRS pairs each carrying 2e8 N, a pair column in the CSV.
 check() {
