@@ -1464,8 +1464,9 @@ private:
     }
     _data.warn("interaction " + interaction + ": PRESSURE-OVERCLOSURE=" + law + " (" + parameters + ", " +
                _keyword.where.str() +
-               ") is a penalty law; feticon solves it as hard contact (exact non-penetration: the answer differs "
-               "from CalculiX's by the penetration the law allows) unless contact.law=deck");
+               ") is a penalty law: contact.law=deck solves it, contact.law=hard (the default) solves hard contact "
+               "instead (exact non-penetration: the answer differs from CalculiX's by the penetration the law "
+               "allows)");
   }
 
   /// The data lines of a *SURFACE BEHAVIOR with law `law` as a normal law (TIED and HARD: hard),

@@ -458,6 +458,12 @@ DECK_KEYWORDS = [
     "*AMPLITUDE, NAME=A, SHIFTY=-1\n0,0,1,1,1,-1e30", "*STEP, AMPLITUDE=STEP", "*STEP, AMPLITUDE=@",
     "*BOUNDARY, AMPLITUDE=A\nNALL,1,3,1e-3", "*DLOAD, AMPLITUDE=@\nEALL,P1,1", "*DSLOAD, AMPLITUDE=A\nSMAST,P,1", "*CLOAD, OP=NEW",
     "*BOUNDARY, OP=NEW", "*DLOAD, OP=XYZ",
+    "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1e7,3", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n-1",
+    "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1e300,1e300,1e300", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",
+    "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL\n1e-7,6.7", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL\n0,0",
+    "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL\n1e-300,1e300", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR\n0,0\n1e6,1e-3",
+    "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR\n1,1\n0,0", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR\n5,0",
+    "*CHANGE SURFACE BEHAVIOR, INTERACTION=SI1\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1e6",
     # Parts and assemblies (issue 63, item 7).
     "*PART, NAME=P", "*PART, NAME=BLOCK", "*END PART", "*ASSEMBLY", "*END ASSEMBLY", "*END INSTANCE",
     "*INSTANCE, NAME=I, PART=BLOCK", "*INSTANCE, NAME=I, PART=@\n0,0,1\n0,0,0,0,0,1,45\n*END INSTANCE",
@@ -824,6 +830,11 @@ def mutate(data, suffix, rng):
 
 # ---- running and judging a mutant -----------------------------------------------------------------
 
+def law_option(rng):
+    """Half the runs solve the pairs' own contact laws (contact.law=deck), half hard contact."""
+    return ["--set", "contact.law=deck"] if rng.random() < 0.5 else []
+
+
 def make_case(kind, rng, source_dir):
     """Files of the case (name -> bytes), the mutated file's name, the command after FETICON."""
     seed_dir = os.path.join(source_dir, "tests", "data", "fuzz")
@@ -832,7 +843,7 @@ def make_case(kind, rng, source_dir):
         folder = seed_dir if name in FUZZ_FOLDER_DECKS else os.path.join(
             source_dir, "tests", "data", "abaqus" if name in ABAQUS_FOLDER_DECKS else "calculix")
         files = {name: deck_seed(folder, name)}
-        return files, name, ["run", name, "--output", "out"] + RUN_OPTIONS
+        return files, name, ["run", name, "--output", "out"] + RUN_OPTIONS + law_option(rng)
     if kind == "mm":
         files = {name: read(seed_dir, name) for name in MM_FILES}
         target = rng.choices(MM_FILES, weights=[2, 1, 1])[0]
@@ -840,7 +851,7 @@ def make_case(kind, rng, source_dir):
     names = rng.choice(PROBLEM_SEEDS if kind == "problem" else PROBLEM_SEEDS[2:])
     files = {name: read(seed_dir, name) for name in names}
     target = names[0] if kind == "problem" else names[1]
-    return files, target, ["run", names[0], "--output", "out"] + RUN_OPTIONS
+    return files, target, ["run", names[0], "--output", "out"] + RUN_OPTIONS + law_option(rng)
 
 
 def deck_seed(folder, name):
