@@ -44,7 +44,22 @@ struct ModelSize
   double resident = 0;    ///< bytes a rank holds already (0: the guard's model of the process)
   bool quadratic = false; ///< some cells are quadratic (tet10, hex20)
   int64_t mesh_nodes = 0; ///< the mesh's own node count where it differs from `nodes` (hex20)
+  /// 3D: the subdomains that cut every slender body (slender_subdomains) into pieces; 0: none.
+  int64_t slender_pieces = 0;
 };
+
+/// A 3D body is slender when its bounding box is over `slender_aspect` times longer than thick
+/// (a plate, a leaf, a beam). Its bending is then what the dual's coarse space must see: with
+/// one subdomain per body the QP of eight stacked 0.5 x 0.04 x 0.008 m plates (44k DOFs) ran
+/// out of 20 000 MPRGP steps; cut into pieces about slender_piece times as long as the body is
+/// thick along its longest extent, each piece's rigid modes span the body's bending at that
+/// length and the same QP took 1 904 steps (20.6 s; 7 630 steps and 66 s at a quarter of that
+/// count, 1 625 steps but 30 s at twice: docs/contact.md, "Slender bodies").
+constexpr double slender_aspect = 16;
+constexpr double slender_piece = 4;
+constexpr int64_t slender_piece_cells = 16; ///< and at least this many cells a subdomain
+/// The pieces of the slender bodies of `mesh` (0 if none, or for a 2D or one-layer model).
+int64_t slender_subdomains(const mesh::Mesh& mesh);
 
 /// The subdomain count and the preconditioner of a run, each with why.
 struct FetiChoice

@@ -95,4 +95,15 @@ run --output "$work/tighter" --set problem=hertz3d --set hertz3d.refinement=0.8 
 # 5. "auto" is no number elsewhere; a bad count names the key.
 if "$feticon" run -q --output "$work/bad" --set subdomains=many 2> "$work/err"; then fail "subdomains=many accepted"; fi
 grep -q "subdomains = 'many' is not a finite number or auto" "$work/err" || fail "message: $(cat "$work/err")"
+# 5. Slender bodies: eight stacked leaves 0.5 x 0.04 x 0.008 m (bench/leaf_spring.py, 1 120 cells,
+# 7 272 DOFs): one subdomain per leaf would be auto's rule (8), which took 16 773 MPRGP steps; the
+# slender rule cuts each leaf into pieces of about 4 thicknesses (16 a leaf, 128), at most one
+# per 16 cells (70: 64), and the QP takes 1 903 steps.
+src="$2"
+/usr/bin/python3 "$src/bench/leaf_spring.py" 0.5 > "$work/leaves.yaml"
+run "$work/leaves.yaml" --output "$work/leaves"
+[[ $(field "$work/leaves" subdomains) == 64 ]] || fail "leaves: $(field "$work/leaves" subdomains) subdomains, expected 64"
+[[ $(field "$work/leaves" subdomains_reason) == *"slender bodies"* ]] || fail "leaves: reason '$(field "$work/leaves" subdomains_reason)'"
+[[ $(field "$work/leaves" converged) == True ]] || fail "leaves did not converge"
+(( $(field "$work/leaves" qp.iterations) < 4000 )) || fail "leaves: $(field "$work/leaves" qp.iterations) MPRGP steps"
 echo "auto_settings: ok"
