@@ -28,6 +28,7 @@
 #include "dual/dual_penalty_problem.hpp"
 #include "fem/problem.hpp"
 #include "io/settings.hpp"
+#include "qp/mprgp.hpp"
 
 #include <cstdint>
 #include <string>
@@ -66,6 +67,10 @@ struct FetiChoice
 {
   int subdomains = 8;
   std::string subdomains_reason; ///< "given" for a value of the settings
+  /// MPRGP's expansion step (qp.expansion resolved) and why.
+  qp::MprgpExpansion expansion = qp::MprgpExpansion::standard;
+  std::string expansion_name = "std";
+  std::string expansion_reason;
   dual::DualPreconditioner preconditioner = dual::DualPreconditioner::dirichlet;
   std::string preconditioner_name = "dirichlet";
   std::string preconditioner_reason;

@@ -62,6 +62,7 @@ nonlinear::SolverSettings solver_settings(const io::Settings& s, const FetiChoic
   nonlinear::SolverSettings out(s);
   out.subdomains = feti.subdomains;
   out.dual.preconditioner = feti.preconditioner;
+  out.dual.expansion = feti.expansion;
   out.dirichlet_layers = feti.dirichlet_layers;
   out.factor_precision =
       feti.single_precision_factors ? la::FactorPrecision::single_precision : la::FactorPrecision::double_precision;

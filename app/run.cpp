@@ -154,6 +154,7 @@ void set_up(const RunOptions& options, RunContext& run)
     resolved.settings.set("subdomains", std::to_string(run.feti.subdomains), "the auto choice");
     resolved.settings.set("qp.preconditioner", run.feti.preconditioner_name, "the auto choice");
     resolved.settings.set("qp.dirichlet_layers", std::to_string(run.feti.dirichlet_layers), "the auto choice");
+    resolved.settings.set("qp.expansion", run.feti.expansion_name, "the auto choice");
     resolved.settings.set("dual.factor_precision", run.feti.single_precision_factors ? "single" : "double",
                           "the auto choice");
     char rho[32];
@@ -263,6 +264,7 @@ void summarize_problem(const RunContext& run, const nonlinear::ContactSolution& 
   summary["mesh_from_cache"] = problem.mesh_from_cache;
   summary["subdomains"] = solution.n_subdomains;
   summary["subdomains_reason"] = run.feti.subdomains_reason;
+  summary["expansion"] = {{"choice", run.feti.expansion_name}, {"reason", run.feti.expansion_reason}};
   summary["preconditioner"] = {{"choice", run.feti.preconditioner_name},
                                {"dirichlet_layers", run.feti.dirichlet_layers},
                                {"reason", run.feti.preconditioner_reason}};

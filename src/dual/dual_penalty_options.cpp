@@ -16,7 +16,9 @@ DualPenaltyOptions::DualPenaltyOptions(const io::Settings& s)
   rtol = s.number("qp.rtol");
   force_rtol = s.number("qp.force_rtol");
   max_iterations = s.integer("qp.max_iterations");
-  expansion = qp::expansion_from_name(s.text("qp.expansion"));
+  // auto: std unless app::choose_feti resolves it (SolverSettings).
+  expansion =
+      s.is_auto("qp.expansion") ? qp::MprgpExpansion::standard : qp::expansion_from_name(s.text("qp.expansion"));
   const std::string& name = s.text("qp.preconditioner");
   // auto: the Dirichlet one unless app::choose_feti resolves it (SolverSettings).
   preconditioner = name == "lumped" ? DualPreconditioner::lumped

@@ -119,9 +119,11 @@ std::vector<SettingSpec> make_specs()
        "scaled dual) are at most force_rtol max(||f_ext||, ||f_int||) and the subdomains' net forces at most a "
        "quarter of newton.residual_tolerance times that force (method dual_penalty: when ||g_P|| is): the QP to "
        "the accuracy the outer loop asks, where ||b|| is of the order of the load; 0: qp.rtol alone", Type::number, {}, 0, 1, false},
-      {"qp.expansion", "std", "MPRGP expansion step: std (feasible half step and projected gradient step, "
-       "ALGORITHMS.md 5) or projcg (the CG step projected, with std as fallback where it raises the cost)",
-       Type::text, {"std", "projcg"}, 0, 0, false},
+      {"qp.expansion", "auto", "MPRGP expansion step: std (feasible half step and projected gradient step, "
+       "ALGORITHMS.md 5), projcg (the CG step projected, with std as fallback where it raises the cost) or auto "
+       "(projcg where the model has slender bodies, whose contact opens and closes over their length, std "
+       "otherwise; summary.json expansion.reason)",
+       Type::text, {"auto", "std", "projcg"}, 0, 0, false},
       {"qp.preconditioner", "auto", "MPRGP preconditioning in the face: none, lumped (P B K B' P), "
        "dirichlet (P B S B' P, S the subdomain Schur complements on their boundary) or auto (dirichlet in plane "
        "strain; in 3D dirichlet on a band of one cell layer (qp.dirichlet_layers), lumped with quadratic cells; "

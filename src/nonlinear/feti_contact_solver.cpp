@@ -984,6 +984,7 @@ std::optional<la::Vector> FetiContactSolve::law_compliance(const dual::FetiOpera
   // |b_i| (B_i du - c_i) after the step and lambda_i = |b_i| A_i p (contact_constraints.hpp):
   // B_i du - (c_i + d_0 / |b_i|) = lambda_i / (k A_i |b_i|^2). A linear law's tangent is the law.
   la::Vector out = la::Vector::Zero(feti.n_dual());
+  double unusable = 0; // the pair (from 1) of a row whose law gives no finite compliance
   for (la::Index i = 0; i < feti.n_dual(); ++i)
   {
     const int64_t row = feti.row_id(i) - _n_equality;
@@ -996,7 +997,15 @@ std::optional<la::Vector> FetiContactSolve::law_compliance(const dual::FetiOpera
     const fem::NormalLaw::Tangent line = law.tangent(-norm * c(i));
     out(i) = 1 / (line.stiffness * area * norm * norm);
     c(i) += line.zero_overclosure / norm;
+    if (!std::isfinite(out(i)) || !std::isfinite(c(i)))
+      unusable = static_cast<double>(contact_rows.pair[row] + 1);
   }
+  // Decided on every rank together, before the QP's collectives.
+  unusable = feti.comm().max(unusable);
+  FETICON_CHECK(unusable == 0,
+                "contact pair " << unusable
+                                << ": its law's stiffness at a slave node's overclosure is zero or not "
+                                   "finite (a slope, c0 or p0 beyond what the rows can take)");
   return out;
 }
 

@@ -226,6 +226,9 @@ ContactSolution solve_primal_penalty(const fem::Problem& problem, const SolverSe
   FETICON_CHECK(!settings.has_friction(problem),
                 "the contact pair has friction, which method = primal_penalty does "
                 "not model: use method smalbe or dual_penalty");
+  FETICON_CHECK(std::ranges::none_of(problem.steps, [](const fem::Step& s) { return !s.changed_law.empty(); }),
+                "a step changes the contact law (*CHANGE SURFACE BEHAVIOR), which method = primal_penalty does not "
+                "model: use method smalbe or dual_penalty");
   FETICON_CHECK(std::ranges::none_of(problem.steps, [](const fem::Step& s) { return !s.removed_contacts.empty(); }),
                 "a step removes the contact pair (*MODEL CHANGE), which method = primal_penalty does not model: use "
                 "method smalbe or dual_penalty");
