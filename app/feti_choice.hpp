@@ -59,7 +59,8 @@ struct ModelSize
 constexpr double slender_aspect = 16;
 constexpr double slender_piece = 4;
 constexpr int64_t slender_piece_cells = 16; ///< and at least this many cells a subdomain
-/// The pieces of the slender bodies of `mesh` (0 if none, or for a 2D or one-layer model).
+/// The pieces of the slender bodies of `mesh` (0 if none, or for a 2D or one-layer model); a
+/// model with friction keeps the DOF rule (model_size, choose_feti).
 int64_t slender_subdomains(const mesh::Mesh& mesh);
 
 /// The subdomain count and the preconditioner of a run, each with why.
