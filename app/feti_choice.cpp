@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "mesh/cell_type.hpp"
+#include "nonlinear/solver_settings.hpp"
 
 #include <algorithm>
 #include <array>
@@ -201,21 +202,6 @@ std::string FetiChoice::preconditioner_label() const
       (dirichlet_layers == 1 ? " cell layer" : " cell layers");
 }
 
-/// Whether a pair of `problem` has friction in some step (its own interactions; the settings'
-/// overrides are checked where the choice is made).
-bool has_friction(const fem::Problem& problem)
-{
-  const auto rough = [](const fem::Friction& f) { return f.model != fem::FrictionModel::none; };
-  for (const fem::ContactPairNames& pair : problem.contacts)
-    if (rough(pair.interaction.friction))
-      return true;
-  for (const fem::Step& step : problem.steps)
-    for (const auto& [pair, friction] : step.changed_friction)
-      if (rough(friction))
-        return true;
-  return false;
-}
-
 int64_t slender_subdomains(const mesh::Mesh& mesh)
 {
   if (mesh.planar.kind != mesh::PlanarKind::none || mesh.n_cells() == 0)
@@ -253,7 +239,9 @@ ModelSize model_size(const fem::Problem& problem)
           0,
           quadratic,
           counted != problem.mesh.n_nodes() ? problem.mesh.n_nodes() : 0,
-          problem.eliminated[2] || has_friction(problem) ? 0 : slender_subdomains(problem.mesh)};
+          problem.eliminated[2] || nonlinear::SolverSettings().has_friction(problem)
+              ? 0
+              : slender_subdomains(problem.mesh)};
 }
 
 FetiChoice choose_feti(const io::Settings& settings, const ModelSize& size, const MemoryBudget& budget, int ranks)

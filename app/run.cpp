@@ -316,9 +316,6 @@ void compare_with_theory(RunContext& run, const nonlinear::ContactSolution& solu
     samples[i].shear_analytic = theory->analytic_shear[i];
 }
 
-/// Post-processing: the contact figures of a completed run (the last iterate of a failed solve
-/// is no result; its accepted load steps are on disk as VTU and in "steps"), with a built-in
-/// problem's comparison with theory, and contact_pressure.csv.
 /// A penalty law's constants and the largest overclosure it gives pair `pair`'s rows at their
 /// pressures p = lambda_i / (|b_i| A_i) (contact_constraints.hpp).
 nlohmann::ordered_json law_figures(const fem::NormalLaw& law, const nonlinear::ContactSolution& solution, int32_t pair)
@@ -338,6 +335,9 @@ nlohmann::ordered_json law_figures(const fem::NormalLaw& law, const nonlinear::C
   return out;
 }
 
+/// Post-processing: the contact figures of a completed run (the last iterate of a failed solve
+/// is no result; its accepted load steps are on disk as VTU and in "steps"), with a built-in
+/// problem's comparison with theory, and contact_pressure.csv.
 void summarize_contact(RunContext& run, const nonlinear::ContactSolution& solution, nlohmann::ordered_json& summary)
 {
   if (!solution.completed || solution.contact_lambda.size() == 0)

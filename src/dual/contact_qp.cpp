@@ -154,9 +154,8 @@ ContactQp::ContactQp(const FetiOperators& feti, const la::Vector& c, const la::V
                     (!compliance || compliance->size() == feti.n_dual()),
                 "dual problem: sizes do not match");
   const la::Vector d = feti.apply_B(feti.apply_K_plus(f_stacked)) - c;
-  la::Vector F_lambda_tilde = feti.apply_F(_lambda_tilde);
-  if (compliance)
-    F_lambda_tilde += compliance->cwiseProduct(_lambda_tilde);
+  la::Vector F_lambda_tilde;
+  FOperator(feti, 1.0, compliance).apply(_lambda_tilde, F_lambda_tilde); // (F + C) lambda~
   _b = _projector.apply_P(_scale * (d - F_lambda_tilde));
   if (options.preconditioner != DualPreconditioner::none)
   {

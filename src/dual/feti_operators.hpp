@@ -183,10 +183,10 @@ public:
   const la::VectorSpace* space() const override { return &_feti.space(); }
   void apply(const la::Vector& x, la::Vector& y) const override
   {
-    y = _feti.apply_F(x);
     if (_compliance)
-      y += _compliance->cwiseProduct(x);
-    y *= _scale;
+      y = _scale * (_feti.apply_F(x) + _compliance->cwiseProduct(x));
+    else
+      y = _scale * _feti.apply_F(x);
   }
 
 private:

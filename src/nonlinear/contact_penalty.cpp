@@ -10,20 +10,23 @@ la::Vector row_penalties(const contact::ContactConstraints& rows, double eps_n)
   return area * (eps_n / mean);
 }
 
-la::Vector law_penalties(const contact::ContactConstraints& rows, double slope)
+RowSpring row_spring(const fem::NormalLaw& law, double area, double row_norm, double c)
 {
-  la::Vector out(rows.n_rows());
-  for (la::Index i = 0; i < out.size(); ++i)
-    out(i) = slope * rows.slave_area[i] * rows.row_norm[i] * rows.row_norm[i];
-  return out;
+  const fem::NormalLaw::Tangent line = law.tangent(-row_norm * c);
+  return {line.stiffness * area * row_norm * row_norm, line.zero_overclosure / row_norm};
 }
 
-la::Vector law_shifts(const contact::ContactConstraints& rows, const fem::NormalLaw& law)
+void law_springs(const contact::ContactConstraints& rows, const fem::NormalLaw& law, la::Vector& stiffness,
+                 la::Vector& shift)
 {
-  la::Vector out(rows.n_rows());
-  for (la::Index i = 0; i < out.size(); ++i)
-    out(i) = law.sigma_inf / (law.slope * rows.row_norm[i]);
-  return out;
+  stiffness.resize(rows.n_rows());
+  shift.resize(rows.n_rows());
+  for (la::Index i = 0; i < stiffness.size(); ++i)
+  {
+    const RowSpring spring = row_spring(law, rows.slave_area[i], rows.row_norm[i], rows.c(i));
+    stiffness(i) = spring.stiffness;
+    shift(i) = spring.shift;
+  }
 }
 
 void penalty_terms(const contact::ContactConstraints& rows, const std::vector<char>& active, const la::Vector& eps,

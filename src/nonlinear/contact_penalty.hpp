@@ -4,7 +4,8 @@
 ///
 /// For normalized rows B u <= c the springs of an active set A add B_A' E B_A to K and
 /// B_A' E c_A to the load, E = diag(eps_i), eps_i = eps_n A_i / mean(A) with A_i the slave
-/// node's tributary area (a per-area penalty).
+/// node's tributary area (a per-area penalty). A contact law's springs (row_spring) serve the
+/// primal penalty and, as the compliance 1 / spring on the dual rows, the FETI solver.
 
 #include "contact/contact_constraints.hpp"
 #include "la/types.hpp"
@@ -18,13 +19,20 @@ namespace feticon::nonlinear
 /// would give the half-area node on a symmetry plane twice the pressure of its neighbours).
 la::Vector row_penalties(const contact::ContactConstraints& rows, double eps_n);
 
-/// @brief The springs of a linear pressure-overclosure law p = K d (contact.law = deck): K A_i
-/// |b_i|^2 (N/m) for the normalized row i, whose B_i u - c_i is the overclosure over |b_i|
-/// (contact_constraints.hpp), A_i its slave node's area.
-la::Vector law_penalties(const contact::ContactConstraints& rows, double slope);
-/// @brief The overclosure at which `law`'s pressure starts, sigma_inf / K, in the units of each
-/// normalized row's c (over |b_i|): the shift of c that makes the springs law_penalties its law.
-la::Vector law_shifts(const contact::ContactConstraints& rows, const fem::NormalLaw& law);
+/// @brief The spring of a contact law on one normalized row (contact.law = deck): the law's
+/// tangent p = k (d - d_0) at the row's overclosure d = -|b| c (fem::NormalLaw::tangent) is the
+/// spring k A |b|^2 (N/m; A the slave node's area) on B u - c, with c shifted by d_0 / |b|
+/// (contact_constraints.hpp: B u - c is the overclosure over |b|, lambda |b| A times the pressure).
+struct RowSpring
+{
+  double stiffness; ///< k A |b|^2
+  double shift;     ///< d_0 / |b|, added to c
+};
+RowSpring row_spring(const fem::NormalLaw& law, double area, double row_norm, double c);
+
+/// @brief The springs (and c's shifts) of `law` on every row of `rows` (row_spring).
+void law_springs(const contact::ContactConstraints& rows, const fem::NormalLaw& law, la::Vector& stiffness,
+                 la::Vector& shift);
 
 /// @brief B_A' E B_A and B_A' E c_A (E = diag of row penalties `eps`) for the rows flagged
 /// in `active` (one flag per row).

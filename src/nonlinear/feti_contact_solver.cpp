@@ -13,6 +13,7 @@
 #include "dual/dual_penalty_problem.hpp"
 #include "dual/multiplier_memory.hpp"
 #include "fem/temperature_history.hpp"
+#include "nonlinear/contact_penalty.hpp"
 #include "nonlinear/load_stepping.hpp"
 #include "nonlinear/outer_convergence.hpp"
 #include "la/vector_space.hpp"
@@ -980,9 +981,7 @@ std::optional<la::Vector> FetiContactSolve::law_compliance(const dual::FetiOpera
         return interaction.law.kind == fem::NormalLawKind::hard;
       }))
     return std::nullopt;
-  // The law's tangent at the row's overclosure d = -|b_i| c_i, p = k (d' - d_0) with d' =
-  // |b_i| (B_i du - c_i) after the step and lambda_i = |b_i| A_i p (contact_constraints.hpp):
-  // B_i du - (c_i + d_0 / |b_i|) = lambda_i / (k A_i |b_i|^2). A linear law's tangent is the law.
+  // The law's spring on the row (row_spring): B_i du - (c_i + shift_i) = lambda_i / stiffness_i.
   la::Vector out = la::Vector::Zero(feti.n_dual());
   double unusable = 0; // the pair (from 1) of a row whose law gives no finite compliance
   for (la::Index i = 0; i < feti.n_dual(); ++i)
@@ -994,9 +993,9 @@ std::optional<la::Vector> FetiContactSolve::law_compliance(const dual::FetiOpera
     const double area = contact_rows.slave_area[row], norm = contact_rows.row_norm[row];
     if (law.kind == fem::NormalLawKind::hard || !(area > 0))
       continue;
-    const fem::NormalLaw::Tangent line = law.tangent(-norm * c(i));
-    out(i) = 1 / (line.stiffness * area * norm * norm);
-    c(i) += line.zero_overclosure / norm;
+    const RowSpring spring = row_spring(law, area, norm, c(i));
+    out(i) = 1 / spring.stiffness;
+    c(i) += spring.shift;
     if (!std::isfinite(out(i)) || !std::isfinite(c(i)))
       unusable = static_cast<double>(contact_rows.pair[row] + 1);
   }

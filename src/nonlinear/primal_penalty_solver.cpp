@@ -121,7 +121,9 @@ IterationOutcome PrimalPenaltySolve::outer_iteration(int k, OuterIteration& it)
   // from the overclosure sigma_inf / K on (fem::NormalLaw), which the solve takes as a shifted c.
   const fem::NormalLaw& law = _settings.interaction(_problem.contacts[0]).law;
   const bool own_law = law.kind == fem::NormalLawKind::linear;
-  const la::Vector shift = own_law ? law_shifts(rows, law) : la::Vector::Zero(rows.c.size());
+  la::Vector law_stiffness, shift = la::Vector::Zero(rows.c.size());
+  if (own_law)
+    law_springs(rows, law, law_stiffness, shift);
   rows.c += shift;
   // Active set: violated rows (linear: v = B u - c at the current u; TL: current gap < 0).
   // The very first solve also takes touching rows (g = 0), or a body held only by
@@ -142,7 +144,7 @@ IterationOutcome PrimalPenaltySolve::outer_iteration(int k, OuterIteration& it)
     if (_out.penalty == 0)
       _out.penalty = _settings.eps_n_factor * _K.diagonal().maxCoeff();
   }
-  const la::Vector eps = own_law ? law_penalties(rows, law.slope) : row_penalties(rows, _out.penalty);
+  const la::Vector eps = own_law ? law_stiffness : row_penalties(rows, _out.penalty);
   penalty_terms(rows, _active, eps, _K_pen, _f_pen);
   {
     ScopedTimer t(_timers, "factorization + solve");
