@@ -131,6 +131,12 @@ one_line tabular_flat "increasing pressures" \
 behavior exponential_p0 EXPONENTIAL "1e-3, 0"
 one_line exponential_p0 "needs positive c0 and p0" \
   "$feticon" run -q "$work/exponential_p0.inp" -o "$work/bad1" --set contact.law=deck
+# contact3's slave starts 0.02 m inside its master: an exponential law with c0 = 1e-6 m has no
+# finite tangent there (exp(beta d) overflows), which stops every rank in one line.
+sed -e 's/^\*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=LINEAR$/*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=EXPONENTIAL/' \
+  -e 's/^1\.E7,3\.$/1e-6,1./' "$data/contact3.inp" > "$work/exp_overflow.inp"
+grep -q '^1e-6,1.$' "$work/exp_overflow.inp" || { echo "exp_overflow: the deck was not changed"; exit 1; }
+one_line exp_overflow "zero or not finite" "$feticon" run -q "$work/exp_overflow.inp" -o "$work/bad8" --set contact.law=deck
 n_bad=0
 # A slope K <= 0 takes CalculiX's default (50 E of the first material), with a warning.
 behavior slope_zero LINEAR "-1."
