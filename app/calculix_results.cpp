@@ -187,7 +187,36 @@ std::vector<double> nodal_plastic_strain(const mesh::Mesh& mesh, const fem::Mesh
     sum[n] = count[n] > 0 ? sum[n] / count[n] : 0.0;
   return sum;
 }
+/// The deck's cell-less reference nodes as nodes n_nodes, n_nodes + 1, ... of the .dat model,
+/// with their labels and in the node sets that name them (DeckInfo::reference_nodes).
+void add_reference_nodes(const io::DeckInfo& deck, io::DatModel& model)
+{
+  if (deck.reference_nodes.empty())
+    return;
+  if (model.node_labels.empty())
+    for (int32_t n = 0; n < model.n_nodes; ++n)
+      model.node_labels.push_back(n + 1);
+  for (const io::DeckInfo::ReferenceNode& r : deck.reference_nodes)
+    model.node_labels.push_back(static_cast<int32_t>(r.label));
+  for (const auto& [name, references] : deck.reference_node_sets)
+    for (const int32_t r : references)
+      model.node_sets[name].push_back(model.n_nodes + r);
+  model.n_nodes += static_cast<int32_t>(deck.reference_nodes.size());
+}
 } // namespace
+
+la::Vector calculix_reaction(const fem::Problem& problem, const nonlinear::ContactSolution& solution,
+                             fem::Kinematics kinematics)
+{
+  const mesh::Mesh& mesh = problem.mesh;
+  fem::Assembler assembler(mesh, fem::whole_mesh_domain(mesh), problem.materials, kinematics);
+  if (!solution.plastic.empty())
+    assembler.set_plastic_state(solution.plastic.points); // the whole mesh's cells in order
+  la::Vector reaction = assembler.internal_force(solution.u);
+  if (solution.constraints.n_rows() > 0)
+    reaction += solution.constraints.B.transpose() * solution.contact_lambda;
+  return reaction;
+}
 
 CalculixResults::CalculixResults(const std::filesystem::path& out_dir, const fem::Problem& problem,
                                  const io::DeckInfo& deck, fem::Kinematics kinematics)
@@ -204,6 +233,7 @@ CalculixResults::CalculixResults(const std::filesystem::path& out_dir, const fem
   model.node_labels = deck.node_labels;
   model.element_labels = deck.element_labels;
   model.node_sets = problem.mesh.node_sets;
+  add_reference_nodes(deck, model);
   model.element_sets = deck.element_sets;
   std::set<int32_t> slaves; // of every pair, as CalculiX prints the slave nodes of all its pairs
   for (const fem::ContactPairNames& pair : problem.contacts)
@@ -238,14 +268,7 @@ void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
       gap[node] = (rows.c(i) - Bu(i)) * rows.row_norm[i];
     }
   }
-  // CalculiX's RF: f_int(u) + B_I' lambda (internal force less the contact force on the body),
-  // the support reactions plus the applied nodal loads.
-  fem::Assembler assembler(mesh, fem::whole_mesh_domain(mesh), p.materials, _kinematics);
-  if (!solution.plastic.empty())
-    assembler.set_plastic_state(solution.plastic.points); // the whole mesh's cells in order
-  la::Vector reaction = assembler.internal_force(solution.u);
-  if (rows.n_rows() > 0)
-    reaction += rows.B.transpose() * solution.contact_lambda;
+  const la::Vector reaction = calculix_reaction(p, solution, _kinematics);
 
   const PointResults points = point_results(p, solution.u, solution.temperature_change, _kinematics, solution.plastic);
   const std::vector<double>& point_stress = points.stress;
@@ -263,6 +286,26 @@ void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
 
   const std::span<const double> u(solution.u.data(), static_cast<size_t>(solution.u.size()));
   const std::span<const double> rf(reaction.data(), static_cast<size_t>(reaction.size()));
+  // The .dat's reference nodes follow the mesh nodes (add_reference_nodes).
+  la::Vector u_dat = solution.u, rf_dat = reaction;
+  if (!_deck.reference_nodes.empty())
+  {
+    const std::vector<fem::ReferenceDofs> dofs = p.reference_dofs();
+    const auto n_mesh = u_dat.size();
+    u_dat.conservativeResize(n_mesh + 3 * std::ssize(_deck.reference_nodes));
+    rf_dat.conservativeResize(u_dat.size());
+    for (size_t r = 0; r < _deck.reference_nodes.size(); ++r)
+    {
+      const io::DeckInfo::ReferenceNode& node = _deck.reference_nodes[r];
+      const fem::ReferenceResult result =
+          fem::reference_result(dofs[static_cast<size_t>(node.coupling)], solution.u, reaction);
+      for (int c = 0; c < 3; ++c)
+      {
+        u_dat(n_mesh + 3 * static_cast<la::Index>(r) + c) = result.value[node.first_dof + c];
+        rf_dat(n_mesh + 3 * static_cast<la::Index>(r) + c) = result.reaction[node.first_dof + c];
+      }
+    }
+  }
   // The .frd always holds U, S and the contact (what feticon's VTU holds), RF if a request asks.
   std::vector<std::string> frd_warnings;
   const io::FrdFields fields = io::frd_fields(step.outputs, frd_warnings);
@@ -288,11 +331,13 @@ void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
     return;
   io::DatStep dat;
   dat.time = time;
-  dat.displacement = u;
-  dat.reaction_force = rf;
+  dat.displacement = std::span<const double>(u_dat.data(), static_cast<size_t>(u_dat.size()));
+  dat.reaction_force = std::span<const double>(rf_dat.data(), static_cast<size_t>(rf_dat.size()));
   dat.stress = point_stress;
   dat.strain = point_strain;
   dat.plastic_strain = points.plastic_strain;
+  pressure.resize(u_dat.size() / 3, 0.0); // no contact at the reference nodes
+  gap.resize(pressure.size(), 0.0);
   dat.contact_pressure = pressure;
   dat.contact_gap = gap;
   add_warnings(_warnings, _dat->add_step(dat, step.outputs));

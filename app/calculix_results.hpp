@@ -17,6 +17,11 @@
 
 namespace feticon::app
 {
+/// CalculiX's RF: f_int(u) + B_I' lambda (the internal force less the contact force on the
+/// body), the support reactions plus the applied nodal loads, 3 per mesh node.
+la::Vector calculix_reaction(const fem::Problem& problem, const nonlinear::ContactSolution& solution,
+                             fem::Kinematics kinematics);
+
 class CalculixResults
 {
 public:

@@ -2,6 +2,7 @@
 
 #include "common/log.hpp"
 #include "contact/adjust.hpp"
+#include "contact/coupling_rows.hpp"
 #include "contact/tie_rows.hpp"
 
 #include <chrono>
@@ -25,8 +26,9 @@ problems::MeshPrediction predict_mesh(const io::ProblemFile& file)
 
 namespace
 {
-/// The pairs' ADJUST applied (contact/adjust.hpp) and the ties' rows made (contact/tie_rows.hpp,
-/// their ADJUST included): the model CalculiX starts its first increment from.
+/// The pairs' ADJUST applied (contact/adjust.hpp), the ties' rows made (contact/tie_rows.hpp,
+/// their ADJUST included) and the kinematic couplings' (contact/coupling_rows.hpp): the model
+/// CalculiX starts its first increment from.
 fem::Problem adjusted(fem::Problem problem)
 {
   if (const int64_t moved = contact::adjust_slave_nodes(problem))
@@ -39,6 +41,8 @@ fem::Problem adjusted(fem::Problem problem)
   if (!ties.empty())
     log::info("ties: " + std::to_string(problem.tie_equations.size()) + " rows made in " +
               std::to_string(took.count()) + " s");
+  for (const contact::CouplingReport& report : contact::couple_surfaces(problem))
+    log::info(contact::describe(report));
   return problem;
 }
 } // namespace

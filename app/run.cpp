@@ -3,6 +3,7 @@
 #include "app/run.hpp"
 
 #include "app/calculix_results.hpp"
+#include "app/coupling_summary.hpp"
 #include "app/checkpoint.hpp"
 #include "app/memory_guard.hpp"
 #include "app/model_picture.hpp"
@@ -516,6 +517,8 @@ RunResult run_problem(const RunOptions& options)
   nlohmann::ordered_json summary;
   summarize_problem(run, solution, summary);
   summarize_contact(run, solution, summary);
+  if (!run.problem->couplings.empty())
+    summary["couplings"] = coupling_summary(*run.problem, solution, run.solver.kinematics);
   summary["qp"] = qp_json(solution);
   const std::vector<std::string> logged = log::take_warnings(); // already on stderr
   const nlohmann::ordered_json warnings = run_warnings(run, solution, summary, logged);

@@ -176,7 +176,7 @@ std::vector<TieReport> tie_surfaces(fem::Problem& problem)
   std::vector<int> holding(taken.size(), 0);
   for (size_t k = 0; k < problem.steps.size(); ++k)
     for (const int64_t dof : problem.all_constrained_dofs(k).dofs)
-      if (!fem::NodeFrames::is_local(problem.mesh.n_nodes(), dof) && // a local support leaves the tie its row
+      if (dof < 3 * int64_t{problem.mesh.n_nodes()} && // a held combination leaves the tie its row
           ++holding[dof] == static_cast<int>(problem.steps.size()))
         taken[dof] = 1;
   for (const fem::LinearEquation& equation : problem.equations)

@@ -77,6 +77,17 @@ std::vector<std::vector<size_t>> equation_groups(const std::vector<fem::ReducedE
   return out;
 }
 
+/// "the support of node 12 along a local axis (*TRANSFORM)" or "a support on a coupling's
+/// reference node": a held combination (all on one node: a frame's axis), for messages.
+std::string held_support_name(const fem::DofCombination& combination)
+{
+  const bool one_node =
+      std::ranges::all_of(combination.dofs, [&](int64_t d) { return d / 3 == combination.dofs.front() / 3; });
+  if (one_node && !combination.dofs.empty())
+    return "the support of node " + std::to_string(combination.dofs.front() / 3) + " along a local axis (*TRANSFORM)";
+  return "a support on a coupling's reference node";
+}
+
 /// The rows of the linear equations (build_equality_rows' comment): per equation, the global
 /// DOFs and coefficients of the orthonormalized row before the split over copies, and c.
 struct EquationRow
@@ -86,40 +97,40 @@ struct EquationRow
   double c = 0;
 };
 
-/// The supports along local axes (fem/node_frames.hpp) as equations e . u = value over the
-/// node's global components: those prescribed (`prescribed`, NaN where free) move to the
+/// The supports of held DOFs past the global ones (along local axes, fem/node_frames.hpp; on
+/// reference nodes, fem/coupling.hpp) as equations sum_k a_k u_k = value over the global DOFs
+/// of their combinations: those prescribed (`prescribed`, NaN where free) move to the
 /// right-hand side, as an equation's terms on them do.
-std::vector<fem::ReducedEquation> local_support_equations(const mesh::Mesh& mesh, const fem::ConstrainedDofs& dirichlet,
-                                                          const fem::NodeFrames& frames,
-                                                          const std::array<bool, 3>& eliminated,
-                                                          const std::vector<double>& prescribed)
+std::vector<fem::ReducedEquation> held_combination_equations(const mesh::Mesh& mesh,
+                                                             const fem::ConstrainedDofs& dirichlet,
+                                                             const std::vector<fem::DofCombination>& held,
+                                                             const std::array<bool, 3>& eliminated,
+                                                             const std::vector<double>& prescribed)
 {
   std::vector<fem::ReducedEquation> out;
   for (size_t k = 0; k < dirichlet.dofs.size(); ++k)
   {
     const int64_t dof = dirichlet.dofs[k];
-    if (!fem::NodeFrames::is_local(mesh.n_nodes(), dof))
+    if (dof < 3 * int64_t{mesh.n_nodes()})
       continue;
-    const int32_t node = frames.node_of(mesh.n_nodes(), dof);
-    const Eigen::Vector3d e = frames.direction_of(mesh.n_nodes(), dof);
+    const fem::DofCombination& combination = held.at(static_cast<size_t>(dof - 3 * int64_t{mesh.n_nodes()}));
     fem::ReducedEquation& eq = out.emplace_back();
     eq.rhs = dirichlet.values(static_cast<la::Index>(k));
-    for (int g = 0; g < 3; ++g)
+    for (size_t t = 0; t < combination.dofs.size(); ++t)
     {
-      const int64_t global = 3 * int64_t{node} + g;
-      if (eliminated[g] || e(g) == 0)
+      const int64_t global = combination.dofs[t];
+      if (eliminated[global % 3])
         continue;
       if (!std::isnan(prescribed[global]))
-        eq.rhs -= e(g) * prescribed[global];
+        eq.rhs -= combination.coefficients[t] * prescribed[global];
       else
       {
         eq.dofs.push_back(global);
-        eq.coefficients.push_back(e(g));
+        eq.coefficients.push_back(combination.coefficients[t]);
       }
     }
     FETICON_CHECK(!eq.dofs.empty(),
-                  "node " << node << " is held along its local axis " << dof % 3 + 1
-                          << " (*TRANSFORM) and in every global direction that axis has");
+                  held_support_name(combination) << " is held, and supports hold every global DOF it combines");
   }
   return out;
 }
@@ -221,7 +232,7 @@ void add_tie_rows(const Decomposition& decomposition, const fem::ConstrainedDofs
   const mesh::Mesh& mesh = decomposition.mesh();
   std::vector<char> held(3 * static_cast<size_t>(mesh.n_nodes()), 0);
   for (const int64_t dof : dirichlet.dofs)
-    if (!fem::NodeFrames::is_local(mesh.n_nodes(), dof))
+    if (dof < 3 * int64_t{mesh.n_nodes()})
       held[dof] = 1;
   std::vector<fem::LinearEquation> kept;
   for (const fem::LinearEquation& tie : ties)
@@ -247,13 +258,14 @@ void add_tie_rows(const Decomposition& decomposition, const fem::ConstrainedDofs
 
 EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::ConstrainedDofs& dirichlet,
                                  const std::vector<fem::LinearEquation>& equations,
-                                 const std::vector<fem::LinearEquation>& ties, const fem::NodeFrames& frames)
+                                 const std::vector<fem::LinearEquation>& ties,
+                                 const std::vector<fem::DofCombination>& held)
 {
   const mesh::Mesh& mesh = decomposition.mesh();
   // Prescribed value per global DOF (NaN where free); the local ones become equation rows.
   std::vector<double> prescribed(3 * static_cast<size_t>(mesh.n_nodes()), std::numeric_limits<double>::quiet_NaN());
   for (size_t k = 0; k < dirichlet.dofs.size(); ++k)
-    if (!fem::NodeFrames::is_local(mesh.n_nodes(), dirichlet.dofs[k]))
+    if (dirichlet.dofs[k] < 3 * int64_t{mesh.n_nodes()})
       prescribed[dirichlet.dofs[k]] = dirichlet.values(static_cast<la::Index>(k));
 
   EqualityRows out;
@@ -304,7 +316,7 @@ EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::
 
   const int64_t first_equation_id = out.n_gluing + out.n_dirichlet;
   std::vector<fem::ReducedEquation> reduced =
-      local_support_equations(mesh, dirichlet, frames, decomposition.eliminated(), prescribed);
+      held_combination_equations(mesh, dirichlet, held, decomposition.eliminated(), prescribed);
   const size_t n_local = reduced.size();
   for (fem::ReducedEquation& eq : fem::reduce_equations(equations, 3 * static_cast<int64_t>(mesh.n_nodes()), dirichlet,
                                                         decomposition.eliminated(), &mesh))
@@ -312,12 +324,12 @@ EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::
   const auto dependent = [&](size_t e) {
     if (e >= n_local)
       return fem::dependent_equation_message(equations, e - n_local, &mesh);
-    size_t seen = 0; // the e-th local support
+    size_t seen = 0; // the e-th held combination
     for (const int64_t dof : dirichlet.dofs)
-      if (fem::NodeFrames::is_local(mesh.n_nodes(), dof) && seen++ == e)
-        return "the support of node " + std::to_string(frames.node_of(mesh.n_nodes(), dof)) + " along its local axis " +
-            std::to_string(dof % 3 + 1) + " (*TRANSFORM) is linearly dependent on the supports and equations before it";
-    return std::string("a local support is linearly dependent");
+      if (dof >= 3 * int64_t{mesh.n_nodes()} && seen++ == e)
+        return held_support_name(held.at(static_cast<size_t>(dof - 3 * int64_t{mesh.n_nodes()}))) +
+            " is linearly dependent on the supports and equations before it";
+    return std::string("a held combination is linearly dependent");
   };
   for (const EquationRow& row : orthonormal_equation_rows(decomposition, reduced, dependent))
   {

@@ -70,9 +70,10 @@ private:
 /// cost O(n m^2) (ALGORITHMS.md section 10). B B' is then near I on them, not equal: the
 /// preconditioner's scaling takes it as I (dual/constraint_scaling.hpp says why).
 ///
-/// Supports along local axes (held DOFs beyond the global ones, fem/node_frames.hpp) are
-/// equation rows e . u = value, first among the equations (CalculiX makes them multi-point
-/// constraints likewise).
+/// Supports of held DOFs beyond the global ones, along local axes (fem/node_frames.hpp) and on
+/// reference nodes (fem/coupling.hpp), are equation rows sum_k a_k u_k = value with the
+/// combination `held` gives them (fem::Problem::held_combinations), first among the equations
+/// (CalculiX makes them multi-point constraints likewise).
 ///
 /// Ids: gluing rows in node order, then Dirichlet rows, then equation rows in equation order,
 /// then tie rows in their order; only rows touching owned subdomains are kept (every rank builds
@@ -90,7 +91,8 @@ struct EqualityRows
 };
 EqualityRows build_equality_rows(const Decomposition& decomposition, const fem::ConstrainedDofs& dirichlet,
                                  const std::vector<fem::LinearEquation>& equations = {},
-                                 const std::vector<fem::LinearEquation>& ties = {}, const fem::NodeFrames& frames = {});
+                                 const std::vector<fem::LinearEquation>& ties = {},
+                                 const std::vector<fem::DofCombination>& held = {});
 
 /// Converts rows over global mesh DOFs (3*node + component; `B_global` row-major, one row
 /// per constraint) to subdomain rows. A DOF shared by several subdomains is put on its

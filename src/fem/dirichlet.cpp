@@ -62,8 +62,8 @@ DirichletElimination::DirichletElimination(int64_t n_dofs, const ConstrainedDofs
     FETICON_CHECK(dof >= 0, "constrained DOF " << dof << " out of range");
     // Held DOFs past the global ones are supports along local axes (fem/node_frames.hpp).
     FETICON_CHECK(dof < n_dofs,
-                  "a support acts along a node's local axis (*TRANSFORM), which the direct "
-                  "solves do not take: use method smalbe or dual_penalty");
+                  "a support acts along a node's local axis (*TRANSFORM) or on a coupling's reference "
+                  "node, which the direct solves do not take: use method smalbe or dual_penalty");
     is_constrained[dof] = 1;
   }
   for (int64_t dof = 0; dof < n_dofs; ++dof)

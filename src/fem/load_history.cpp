@@ -12,15 +12,18 @@ namespace feticon::fem
 namespace
 {
 /// The DOFs of `step`'s supports that follow an amplitude, sorted.
-std::vector<int64_t> amplitude_dofs(const mesh::Mesh& mesh, const Step& step)
+std::vector<int64_t> amplitude_dofs(const Problem& problem, const Step& step)
 {
   std::set<int64_t> dofs;
   for (const DirichletCondition& d : step.dirichlet)
     if (!d.amplitude.empty())
-      for (const int32_t n : mesh.node_set(d.set))
+      for (const int32_t n : problem.mesh.node_set(d.set))
         for (int i = 0; i < 3; ++i)
           if (d.value[i])
             dofs.insert(3 * static_cast<int64_t>(n) + i);
+  for (const ReferenceValue& r : step.reference_supports)
+    if (!r.amplitude.empty())
+      dofs.insert(problem.reference_dof(r.coupling, r.dof));
   return {dofs.begin(), dofs.end()};
 }
 
@@ -60,6 +63,8 @@ std::set<std::string> amplitudes_of(const Step& step)
   add(step.pressures);
   add(step.nodal_forces);
   add(step.body_loads);
+  add(step.reference_supports);
+  add(step.reference_loads);
   add(step.temperatures); // no force, but the stage keeps its increments (fem/temperature_history.hpp)
   return names;
 }
@@ -100,7 +105,7 @@ LoadHistory::LoadHistory(const Problem& problem, const Rules& rules)
     stage.held = indices_in(_dofs, held[k].dofs);
     stage.ramp_start = k == 0 ? -1 : _stages.back().ramp_end;
     if (k > 0 && step.ramp)
-      start_new_dofs(stage, held[k - 1].dofs, held[k].dofs, amplitude_dofs(problem.mesh, step));
+      start_new_dofs(stage, held[k - 1].dofs, held[k].dofs, amplitude_dofs(problem, step));
     stage.ramp_end = static_cast<int>(_terms.size());
     _terms.push_back({problem.external_force(k), values_over(_dofs, held[k])});
     for (const std::string& name : amplitudes_of(step))

@@ -53,6 +53,17 @@ la::Vector Problem::external_force(size_t step, const std::string& amplitude) co
   for (const BodyLoad& b : s.body_loads)
     if (b.amplitude == amplitude)
       add_body_load(mesh, materials, b, f);
+  if (!s.reference_loads.empty())
+  {
+    const std::vector<ReferenceDofs> reference = reference_dofs();
+    for (const ReferenceValue& load : s.reference_loads)
+      if (load.amplitude == amplitude)
+      {
+        const DofCombination& unit = reference[static_cast<size_t>(load.coupling)].unit_load[load.dof];
+        for (size_t k = 0; k < unit.dofs.size(); ++k)
+          f(unit.dofs[k]) += load.value * unit.coefficients[k];
+      }
+  }
   for (int i = 0; i < 3; ++i)
     if (eliminated[i])
       for (int32_t n = 0; n < mesh.n_nodes(); ++n)
@@ -83,6 +94,14 @@ ConstrainedDofs Problem::all_constrained_dofs(size_t step, const std::string& am
         for (int i = 0; i < 3; ++i)
           if (d.value[i])
             merged[held_dof(mesh, &frames, n, i, 0.0).first] = 0.0;
+  // A support on a reference DOF the coupling does not drive holds nothing (validate_couplings).
+  if (!steps[step].reference_supports.empty())
+  {
+    const std::vector<ReferenceDofs> reference = reference_dofs();
+    for (const ReferenceValue& r : steps[step].reference_supports)
+      if (!reference[static_cast<size_t>(r.coupling)].value[r.dof].empty())
+        merged[reference_dof(r.coupling, r.dof)] = r.amplitude == amplitude ? r.value : 0.0;
+  }
   return to_constrained_dofs(merged);
 }
 
@@ -106,6 +125,50 @@ bool Problem::has_plastic_body() const
 bool Problem::has_inelastic_or_hyperelastic_body() const
 {
   return std::ranges::any_of(materials, [](const Material& m) { return !m.is_st_venant_kirchhoff(); });
+}
+
+int64_t Problem::reference_dof(int32_t coupling, int dof) const
+{
+  return 3 * (int64_t{mesh.n_nodes()} + std::ssize(frames.nodes)) + 6 * int64_t{coupling} + dof;
+}
+
+std::vector<ReferenceDofs> Problem::reference_dofs() const
+{
+  std::vector<ReferenceDofs> out;
+  for (const Coupling& c : couplings)
+    out.push_back(fem::reference_dofs(mesh, c, eliminated));
+  return out;
+}
+
+std::vector<DofCombination> Problem::held_combinations() const
+{
+  std::vector<DofCombination> out;
+  for (size_t k = 0; k < frames.nodes.size(); ++k)
+    for (int c = 0; c < 3; ++c)
+    {
+      DofCombination& axis = out.emplace_back();
+      for (int g = 0; g < 3; ++g)
+        if (!eliminated[g] && frames.axes[k](c, g) != 0)
+        {
+          axis.dofs.push_back(3 * int64_t{frames.nodes[k]} + g);
+          axis.coefficients.push_back(frames.axes[k](c, g));
+        }
+    }
+  for (const ReferenceDofs& r : reference_dofs())
+    out.insert(out.end(), r.value.begin(), r.value.end());
+  return out;
+}
+
+la::Vector Problem::extended(const la::Vector& u) const
+{
+  if (couplings.empty())
+    return frames.extended(u);
+  const std::vector<DofCombination> held = held_combinations();
+  la::Vector out(u.size() + std::ssize(held));
+  out.head(u.size()) = u;
+  for (size_t k = 0; k < held.size(); ++k)
+    out(u.size() + static_cast<la::Index>(k)) = held[k].of(u);
+  return out;
 }
 
 std::vector<LinearEquation> Problem::all_equations() const
@@ -152,6 +215,36 @@ void Problem::validate_planar() const
                                 << " in plane stress is not implemented (plane strain and axisymmetry are)");
 }
 
+void Problem::validate_couplings() const
+{
+  if (couplings.empty())
+    return;
+  FETICON_CHECK(mesh.planar.kind != mesh::PlanarKind::axisymmetric,
+                "problem '" << name << "': " << couplings.front().name
+                            << ": couplings in an axisymmetric model are not implemented");
+  const std::vector<ReferenceDofs> reference = reference_dofs(); // checks the sets and weights
+  for (size_t k = 0; k < steps.size(); ++k)
+  {
+    for (const ReferenceValue& r : steps[k].reference_supports)
+      FETICON_CHECK(r.coupling >= 0 && r.coupling < std::ssize(couplings) && r.dof >= 0 && r.dof < 6 &&
+                        std::isfinite(r.value),
+                    "step " << k + 1 << ": a reference support names coupling " << r.coupling << ", DOF " << r.dof
+                            << ", value " << r.value << " (of " << couplings.size() << " couplings, DOFs 0 to 5)");
+    for (const ReferenceValue& r : steps[k].reference_loads)
+    {
+      FETICON_CHECK(r.coupling >= 0 && r.coupling < std::ssize(couplings) && r.dof >= 0 && r.dof < 6 &&
+                        std::isfinite(r.value),
+                    "step " << k + 1 << ": a reference load names coupling " << r.coupling << ", DOF " << r.dof
+                            << ", value " << r.value << " (of " << couplings.size() << " couplings, DOFs 0 to 5)");
+      FETICON_CHECK(r.value == 0 || !reference[static_cast<size_t>(r.coupling)].unit_load[r.dof].empty(),
+                    "step " << k + 1 << ": a load on " << describe_reference_dof(r.dof) << " of the reference node of "
+                            << couplings[static_cast<size_t>(r.coupling)].name
+                            << ", which the coupling does not carry (a *KINEMATIC without that direction, a "
+                               "*DISTRIBUTING without that moment)");
+    }
+  }
+}
+
 void Problem::validate_frames() const
 {
   FETICON_CHECK(frames.axes.size() == frames.nodes.size() && std::ranges::is_sorted(frames.nodes) &&
@@ -187,6 +280,7 @@ void Problem::validate() const
                               << ") is marked for reduced integration, which only hex20 and quad8 offer");
   validate_planar();
   validate_frames();
+  validate_couplings();
   FETICON_CHECK(static_cast<int32_t>(materials.size()) == mesh.n_bodies(),
                 "problem '" << name << "': " << mesh.n_bodies() << " bodies but " << materials.size() << " materials");
   for (size_t b = 0; b < materials.size(); ++b)
@@ -296,6 +390,9 @@ void Problem::validate_step(size_t step) const
     }
     for (const auto& b : s.body_loads)
       amplitude_known(b.amplitude, b.where);
+    for (const auto* reference : {&s.reference_supports, &s.reference_loads})
+      for (const ReferenceValue& r : *reference)
+        amplitude_known(r.amplitude, "a load or support on a reference node");
     for (const int32_t tie : s.removed_ties)
       FETICON_CHECK(tie >= 0 && tie < std::ssize(ties),
                     "the step removes tie " << tie << ", the problem has " << ties.size());

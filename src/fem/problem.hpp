@@ -107,6 +107,9 @@ struct Problem
   /// Local coordinate systems of nodes (deck *TRANSFORM): their supports act along the local
   /// axes (fem/node_frames.hpp; their forces are given in global components already).
   NodeFrames frames;
+  /// Reference nodes and the nodes they drive (fem/coupling.hpp); their kinematic rows are
+  /// among `tie_equations` (contact::tie_surfaces makes them, after the ties').
+  std::vector<Coupling> couplings;
   /// Components fixed to zero on every node and eliminated (plane strain: {0,0,1}; every 2D
   /// model, mesh::Planar).
   std::array<bool, 3> eliminated{false, false, false};
@@ -121,6 +124,18 @@ struct Problem
   std::vector<LinearEquation> tie_equations_in_force(size_t step) const;
   /// `equations` then `tie_equations`: what the direct solves eliminate.
   std::vector<LinearEquation> all_equations() const;
+  /// The held DOF of reference DOF `dof` (0-5) of coupling `coupling`: past the global DOFs and
+  /// the frames' local ones, 3 N + 3 K + 6 coupling + dof.
+  int64_t reference_dof(int32_t coupling, int dof) const;
+  /// What each coupling's reference DOFs are (fem/coupling.hpp), in the order of `couplings`.
+  std::vector<ReferenceDofs> reference_dofs() const;
+  /// The combination of mesh DOFs each held DOF past the global ones holds, index dof - 3 N: a
+  /// frame's local axes (3 per frame node), then the couplings' reference DOFs (6 each; empty
+  /// where a coupling does not drive one).
+  std::vector<DofCombination> held_combinations() const;
+  /// u (3 per mesh node) followed by the values of held_combinations() (fem::LoadHistory's
+  /// start values).
+  la::Vector extended(const la::Vector& u) const;
   /// Some step gives temperatures (the thermal strain then enters the elements).
   bool has_temperatures() const;
   /// True if some body's material is plastic (Material::is_plastic).
@@ -136,5 +151,7 @@ private:
   void validate_planar() const;
   /// One orthonormal right-handed frame per listed node; in 2D, rotations about z only.
   void validate_frames() const;
+  /// Coupled node sets exist; supports and loads name couplings and DOFs they have.
+  void validate_couplings() const;
 };
 } // namespace feticon::fem

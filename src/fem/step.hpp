@@ -9,8 +9,9 @@
 /// AMPLITUDE=STEP); one with an amplitude is its value times a(t). fem::LoadHistory evaluates
 /// them at every increment.
 
-#include "fem/contact_interaction.hpp"
 #include "fem/body_loads.hpp"
+#include "fem/contact_interaction.hpp"
+#include "fem/coupling.hpp"
 #include "fem/dirichlet.hpp"
 
 #include <optional>
@@ -83,6 +84,9 @@ struct Step
   std::vector<FacePressure> pressures;
   std::vector<NodalForce> nodal_forces;
   std::vector<BodyLoad> body_loads; ///< gravity and centrifugal loads (fem/body_loads.hpp)
+  /// Supports and loads on the reference nodes of couplings (fem/coupling.hpp).
+  std::vector<ReferenceValue> reference_supports = {};
+  std::vector<ReferenceValue> reference_loads = {};
   /// Temperatures in force in the step; a node not named goes to (or stays at) its initial
   /// temperature (fem/temperature_history.hpp).
   std::vector<NodalTemperature> temperatures;

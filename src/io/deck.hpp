@@ -74,6 +74,18 @@ struct DeckInfo
   /// What the deck says that feticon reads but does not honour exactly, one line each.
   std::vector<std::string> warnings;
   std::filesystem::path path;
+  /// Reference nodes of couplings that no element uses (fem/coupling.hpp): printed by *NODE
+  /// PRINT as CalculiX prints them, U and RF of reference DOFs first_dof .. first_dof + 2 (a
+  /// *RIGID BODY's ROT NODE: the rotations and moments).
+  struct ReferenceNode
+  {
+    int64_t label;
+    int32_t coupling;
+    int first_dof; ///< 0 or 3
+  };
+  std::vector<ReferenceNode> reference_nodes;
+  /// Node sets by deck name -> the reference nodes (indices into reference_nodes) they hold.
+  std::map<std::string, std::vector<int32_t>> reference_node_sets;
 };
 
 struct Deck

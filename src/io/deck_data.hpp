@@ -169,6 +169,29 @@ struct DeckTie
   DeckPosition where;
 };
 
+/// *RIGID BODY, *COUPLING with *KINEMATIC or *DISTRIBUTING, *DISTRIBUTING COUPLING
+/// (fem/coupling.hpp), as the deck gives them; the model builder resolves the names.
+struct DeckCoupling
+{
+  fem::CouplingKind kind = fem::CouplingKind::kinematic;
+  std::string name;      ///< for messages: "*RIGID BODY (line 31)", "*COUPLING C1 (line 40)"
+  int32_t ref_node = -1; ///< node in reading order; -1: the origin (*RIGID BODY without REF NODE)
+  int32_t rot_node = -1; ///< *RIGID BODY's ROT NODE, whose DOFs 1-3 are the rotations; -1: none
+  /// What it couples: a node set or an element set (*RIGID BODY), a surface (*COUPLING)
+  std::string node_set, element_set, surface;
+  std::array<bool, 3> components{true, true, true}; ///< *KINEMATIC's DOFs
+  std::array<bool, 3> moments{false, false, false}; ///< *DISTRIBUTING's DOFs 4-6
+  /// *DISTRIBUTING COUPLING's lines: a node label or a node set name, and its weight
+  struct Weighted
+  {
+    std::string nodes;
+    double weight;
+    DeckPosition where;
+  };
+  std::vector<Weighted> weighted = {};
+  DeckPosition where;
+};
+
 /// A load or prescribed value with the amplitude its keyword names (AMPLITUDE=; empty: the
 /// step's ramp).
 struct DeckValue
@@ -193,6 +216,9 @@ struct DeckLoadState
 {
   std::map<int64_t, DeckValue> boundary;
   std::map<int64_t, DeckValue> cload;
+  /// DOFs 4 to 6 (3 node + dof - 4): reference nodes' rotations and moments (fem/coupling.hpp)
+  std::map<int64_t, DeckValue> boundary_rotation;
+  std::map<int64_t, DeckValue> cload_moment;
   std::map<std::pair<int32_t, int>, DeckValue> dload;
   /// (cell, 0 GRAV / 1 CENTRIF) -> the load.
   std::map<std::pair<int32_t, int>, DeckBodyLoad> body;
@@ -236,6 +262,9 @@ struct DeckData
   std::map<std::string, DeckFriction> frictions; ///< by interaction name
   std::vector<DeckContactPair> pairs;
   std::vector<DeckTie> ties;
+  std::vector<DeckCoupling> couplings;
+  /// The node label of each DCOUP3D element set (*ELEMENT, TYPE=DCOUP3D): a reference node
+  std::map<std::string, int64_t> coupling_elements;
   /// Interactions whose *SURFACE BEHAVIOR is PRESSURE-OVERCLOSURE=TIED: their pairs are ties.
   std::set<std::string> tied_interactions;
   /// Interactions' contact laws (*SURFACE BEHAVIOR other than TIED; none given: hard). A linear
@@ -249,9 +278,10 @@ struct DeckData
   std::map<int32_t, double> initial_temperatures; ///< node -> *INITIAL CONDITIONS, TYPE=TEMPERATURE
   /// Supports given before the first *STEP (model data): in force in every step.
   std::map<int64_t, DeckValue> model_boundary;
-  std::map<std::string, fem::Amplitude> amplitudes;  ///< *AMPLITUDE by name
-  std::map<std::string, std::string> amplitude_uses; ///< AMPLITUDE= name -> where first named
-  DeckLoadState state;                               ///< the current step's
+  std::map<int64_t, DeckValue> model_boundary_rotation; ///< DOFs 4-6, as DeckLoadState's
+  std::map<std::string, fem::Amplitude> amplitudes;     ///< *AMPLITUDE by name
+  std::map<std::string, std::string> amplitude_uses;    ///< AMPLITUDE= name -> where first named
+  DeckLoadState state;                                  ///< the current step's
   std::vector<DeckStep> steps;
   std::vector<DeckLoadState> step_states; ///< at the end of every step
 

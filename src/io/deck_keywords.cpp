@@ -58,8 +58,6 @@ const std::map<std::string, std::string> unsupported_keywords = {
     {"SHELL SECTION", "shell elements"},
     {"BEAM SECTION", "beam elements"},
     {"MEMBRANE SECTION", "membrane elements"},
-    {"RIGID BODY", "rigid bodies"},
-    {"COUPLING", "coupling constraints"},
     {"MPC", "nonlinear multi-point constraints (linear ones: *EQUATION)"},
     {"SPRING", "spring elements"},
     {"DASHPOT", "dashpot elements"},
@@ -70,7 +68,6 @@ const std::map<std::string, std::string> unsupported_keywords = {
     {"FILM", "heat transfer"},
     {"RADIATE", "heat transfer"},
     {"SUBMODEL", "submodels"},
-    {"DISTRIBUTING COUPLING", "coupling constraints"},
 };
 
 std::string text(std::string_view v) { return std::string(v); }
@@ -127,6 +124,8 @@ public:
       have = _tokens.next_keyword(keyword);
     }
     FETICON_CHECK(!_recording, _recording->where.str() << ": *PART has no *END PART");
+    FETICON_CHECK(!_pending_coupling,
+                  _pending_coupling->where.str() << ": *COUPLING needs its *KINEMATIC or *DISTRIBUTING next");
     FETICON_CHECK(_open_instance.empty(),
                   _instances.at(_open_instance).where.str() << ": *INSTANCE has no *END INSTANCE");
     FETICON_CHECK(!_in_assembly, _assembly_where.str() << ": *ASSEMBLY has no *END ASSEMBLY");
@@ -311,6 +310,11 @@ private:
         {"FRICTION", &KeywordReader::friction},
         {"CONTACT PAIR", &KeywordReader::contact_pair},
         {"TIE", &KeywordReader::tie},
+        {"RIGID BODY", &KeywordReader::rigid_body},
+        {"COUPLING", &KeywordReader::coupling},
+        {"KINEMATIC", &KeywordReader::kinematic},
+        {"DISTRIBUTING", &KeywordReader::distributing},
+        {"DISTRIBUTING COUPLING", &KeywordReader::distributing_coupling},
         {"CYCLIC SYMMETRY MODEL", &KeywordReader::cyclic_symmetry_model},
         {"PART", &KeywordReader::part},
         {"END PART", &KeywordReader::end_part},
@@ -364,6 +368,9 @@ private:
     if (!_changing_friction.empty() && _keyword.name != "FRICTION")
       throw Error(where() + ": the *CHANGE FRICTION before it (" + _changing_friction_where +
                   ") needs its *FRICTION next");
+    if (_pending_coupling && _keyword.name != "KINEMATIC" && _keyword.name != "DISTRIBUTING")
+      throw Error(where() + ": the *COUPLING before it (" + _pending_coupling->where.str() +
+                  ") needs its *KINEMATIC or *DISTRIBUTING next");
     if (!_changing_behavior.empty() && _keyword.name != "SURFACE BEHAVIOR")
       throw Error(where() + ": the *CHANGE SURFACE BEHAVIOR before it (" + _changing_behavior_where +
                   ") needs its *SURFACE BEHAVIOR next");
@@ -565,6 +572,8 @@ private:
   {
     known_parameters({"TYPE", "ELSET"});
     const std::string& type = required("TYPE");
+    if (type == "DCOUP3D")
+      return coupling_element_block();
     const mesh::CellType* cell_type = mesh::cell_type_of_calculix_name(type);
     if (!cell_type)
       throw Error(where() + ": element type " + type +
@@ -1038,6 +1047,8 @@ private:
     if (_keyword.has("ORIENTATION"))
       _data.warn(where() + ": ORIENTATION= changes nothing for the isotropic material, and is not used");
     DeckSection section{required("ELSET"), required("MATERIAL"), _keyword.where};
+    if (_data.coupling_elements.count(_scope.prefix + section.elset))
+      return skip_data(); // a DCOUP3D element's section: no cell, no material
     // The data line: the thickness of plane strain and plane stress cells (meaningless for
     // 3D and axisymmetric ones).
     DeckDataLine line;
@@ -1084,12 +1095,14 @@ private:
     if (const std::string* t = _keyword.value("TYPE"); t && *t != "DISPLACEMENT")
       throw Error(where() + ": TYPE=" + *t + " is not implemented by feticon (displacements)");
     auto& target = _in_step ? _data.state.boundary : _data.model_boundary;
+    auto& rotation_target = _in_step ? _data.state.boundary_rotation : _data.model_boundary_rotation;
     if (op_new())
     {
       // CalculiX removes every support, the model's included (boundarys.f), from this step on.
       _data.state.boundary.clear();
+      _data.state.boundary_rotation.clear();
       if (_in_step)
-        _data.model_boundary.clear();
+        _data.model_boundary.clear(), _data.model_boundary_rotation.clear();
     }
     DeckDataLine line;
     while (next_data(line))
@@ -1122,13 +1135,11 @@ private:
         fail_at(line.where,
                 "degrees of freedom " + std::to_string(first) + " to " + std::to_string(last) +
                     " are not within 1 to 6");
-      if (last > 3)
-        _data.warn(line.where.str() +
-                   ": *BOUNDARY on degrees of freedom 4 to 6 (rotations): solid elements "
-                   "have none, so they are not used");
-      for (int64_t dof = first; dof <= std::min<int64_t>(last, 3); ++dof)
+      // DOFs 4 to 6 are rotations: a reference node's (fem/coupling.hpp); the model builder
+      // drops them on solid nodes, which have none.
+      for (int64_t dof = first; dof <= last; ++dof)
         for (int32_t n : targets)
-          target[3 * int64_t{n} + dof - 1] = {value, amplitude};
+          (dof <= 3 ? target : rotation_target)[3 * int64_t{n} + (dof - 1) % 3] = {value, amplitude};
     }
   }
 
@@ -1147,18 +1158,22 @@ private:
   {
     const std::string amplitude = begin_load(_data.state.cload);
     if (op_new())
-      _cload_defined.clear();
+      _cload_defined.clear(), _data.state.cload_moment.clear(), _moment_defined.clear();
     DeckDataLine line;
     while (next_data(line))
     {
       const std::vector<int32_t> targets = nodes(line, 0);
       const int64_t dof = integer(line, 1, "degree of freedom");
-      if (dof < 1 || dof > 3)
+      if (dof < 1 || dof > 6)
         fail_at(line.at(1),
-                "degree of freedom " + std::to_string(dof) + ": forces act on 1 to 3 (solid nodes have no moments)");
+                "degree of freedom " + std::to_string(dof) +
+                    ": forces act on 1 to 3, moments on a reference node's 4 to 6");
       const double value = real(line, 2, "force");
       for (int32_t n : unique(targets))
-        add_load(_data.state.cload, _cload_defined, 3 * int64_t{n} + dof - 1, {value, amplitude}, line.where);
+        if (dof <= 3)
+          add_load(_data.state.cload, _cload_defined, 3 * int64_t{n} + dof - 1, {value, amplitude}, line.where);
+        else
+          add_load(_data.state.cload_moment, _moment_defined, 3 * int64_t{n} + dof - 4, {value, amplitude}, line.where);
     }
   }
 
@@ -1693,6 +1708,167 @@ private:
   /// and b) of a cyclic symmetry *TIE before it; a static run solves the datum sector with the
   /// same answer in every sector (fem::Tie::CyclicSymmetry). NGRAPH, NPHYS, ELSET and CHECK only
   /// shape CalculiX's plots and checks.
+  // ---- reference nodes and couplings (fem/coupling.hpp) ---------------------------------
+  /// The node of parameter `key` (a node number, or a node set of one node), or -1 if absent.
+  int32_t reference_node(std::initializer_list<std::string_view> keys) const
+  {
+    for (const std::string_view key : keys)
+      if (const std::string* v = _keyword.value(key); v && !v->empty())
+      {
+        if (!is_integer(*v))
+        {
+          const auto it = _data.node_sets.find(_scope.prefix + *v);
+          if (it == _data.node_sets.end() || it->second.expand().size() != 1)
+            throw Error(where() + ": " + std::string(key) + "=" + *v +
+                        " is neither a node number nor a node set of one node");
+          return it->second.expand().front();
+        }
+        return index_of(std::stoll(*v), true, _scope, _keyword.where);
+      }
+    return -1;
+  }
+
+  std::string coupling_name(const std::string& what) const
+  {
+    return "*" + _keyword.name + (what.empty() ? "" : " " + what) + " (" + _keyword.where.str() + ")";
+  }
+
+  void rigid_body()
+  {
+    known_parameters({"NSET", "ELSET", "REF NODE", "REFNODE", "ROT NODE", "ROTNODE"});
+    if (_keyword.has("NSET") == _keyword.has("ELSET"))
+      throw Error(where() + " needs one of NSET= and ELSET=");
+    DeckCoupling c;
+    c.name = coupling_name("");
+    c.where = _keyword.where;
+    if (_keyword.has("NSET"))
+      c.node_set = _scope.prefix + required("NSET");
+    else
+      c.element_set = _scope.prefix + required("ELSET");
+    c.ref_node = reference_node({"REF NODE", "REFNODE"});
+    c.rot_node = reference_node({"ROT NODE", "ROTNODE"});
+    if (c.ref_node >= 0 && c.ref_node == c.rot_node)
+      throw Error(where() + ": REF NODE and ROT NODE are the same node");
+    _data.couplings.push_back(std::move(c));
+    no_data();
+  }
+
+  void coupling()
+  {
+    known_parameters({"REF NODE", "REFNODE", "SURFACE", "CONSTRAINT NAME", "ORIENTATION"});
+    if (_keyword.has("ORIENTATION"))
+      throw Error(where() + ": ORIENTATION= (a coupling in a local system) is not implemented by feticon");
+    DeckCoupling c;
+    const std::string* name = _keyword.value("CONSTRAINT NAME");
+    c.name = coupling_name(name ? *name : "");
+    c.where = _keyword.where;
+    c.surface = _scope.prefix + required("SURFACE");
+    c.ref_node = reference_node({"REF NODE", "REFNODE"});
+    if (c.ref_node < 0)
+      throw Error(where() + " needs REF NODE=");
+    _pending_coupling = std::move(c);
+    no_data();
+  }
+
+  /// The DOF ranges of a *KINEMATIC or *DISTRIBUTING line, each within 1 to `largest`.
+  std::vector<int> coupling_dofs(int largest)
+  {
+    std::vector<int> out;
+    DeckDataLine line;
+    while (next_data(line))
+    {
+      const int64_t first = integer(line, 0, "first degree of freedom");
+      const int64_t last =
+          line.fields.size() > 1 && !line.fields[1].empty() ? integer(line, 1, "last degree of freedom") : first;
+      if (first < 1 || last < first || last > largest)
+        fail_at(line.where,
+                "degrees of freedom " + std::to_string(first) + " to " + std::to_string(last) +
+                    " are not within 1 to " + std::to_string(largest));
+      for (int64_t d = first; d <= last; ++d)
+        out.push_back(static_cast<int>(d));
+    }
+    if (out.empty())
+      throw Error(where() + " needs a line of degrees of freedom");
+    return out;
+  }
+
+  void kinematic()
+  {
+    known_parameters({});
+    if (!_pending_coupling)
+      throw Error(where() + " must follow a *COUPLING");
+    DeckCoupling c = *std::exchange(_pending_coupling, std::nullopt);
+    c.components = {false, false, false};
+    for (const int d : coupling_dofs(3))
+      c.components[d - 1] = true;
+    _data.couplings.push_back(std::move(c));
+  }
+
+  void distributing()
+  {
+    known_parameters({});
+    if (!_pending_coupling)
+      throw Error(where() + " must follow a *COUPLING");
+    DeckCoupling c = *std::exchange(_pending_coupling, std::nullopt);
+    c.kind = fem::CouplingKind::distributing;
+    for (const int d : coupling_dofs(6))
+      if (d > 3)
+        c.moments[d - 4] = true;
+    _data.couplings.push_back(std::move(c));
+  }
+
+  /// *DISTRIBUTING COUPLING, ELSET= (one DCOUP3D element, whose node is the reference node);
+  /// lines of a node or node set and its weight, resolved by the model builder (the sets may
+  /// come later).
+  void distributing_coupling()
+  {
+    known_parameters({"ELSET"});
+    const std::string set = _scope.prefix + required("ELSET");
+    const auto it = _data.coupling_elements.find(set);
+    if (it == _data.coupling_elements.end())
+      throw Error(where() + ": ELSET=" + set + " is no set of one DCOUP3D element");
+    DeckCoupling c;
+    c.kind = fem::CouplingKind::mean;
+    c.name = coupling_name(set);
+    c.where = _keyword.where;
+    c.ref_node = _data.node_index.find(it->second);
+    if (c.ref_node < 0)
+      throw Error(where() + ": node " + std::to_string(it->second - _scope.node_offset) + " of ELSET=" + set +
+                  " is not defined (by a *NODE before this line)");
+    DeckDataLine line;
+    while (next_data(line))
+    {
+      if (line.fields.empty() || line.fields[0].empty())
+        fail_at(line.where, "missing node or node set");
+      const std::string nodes =
+          is_integer(line.fields[0]) ? text(line.fields[0]) : _scope.prefix + name_of(line.fields[0]);
+      c.weighted.push_back({nodes, real(line, 1, "weight"), line.at(0)});
+    }
+    if (c.weighted.empty())
+      throw Error(where() + " needs lines of a node or node set and its weight");
+    _data.couplings.push_back(std::move(c));
+  }
+
+  /// *ELEMENT, TYPE=DCOUP3D: one node per element, the reference node of a *DISTRIBUTING
+  /// COUPLING naming the element set; no cell.
+  void coupling_element_block()
+  {
+    const std::string set = _scope.prefix + required("ELSET");
+    DeckDataLine line;
+    int count = 0;
+    while (next_data(line))
+    {
+      if (line.fields.size() != 2 || ++count > 1)
+        fail_at(line.where, "a DCOUP3D element set holds one element of one node: 'element, node'");
+      (void)model_label(line, "element", _scope.element_offset);
+      // CalculiX takes the node's *NODE after the element too: the label is resolved by the
+      // *DISTRIBUTING COUPLING.
+      _data.coupling_elements[set] = integer(line, 1, "node number") + _scope.node_offset;
+    }
+    if (count == 0)
+      throw Error(where() + ": a DCOUP3D element set needs its element line 'element, node'");
+  }
+
   void cyclic_symmetry_model()
   {
     known_parameters({"N", "TIE", "NGRAPH", "NPHYS", "ELSET", "CHECK", "CONTACT", "MATRIX"});
@@ -1749,6 +1925,7 @@ private:
     _in_step = true;
     _step_where = _keyword.where;
     _cload_defined.clear();
+    _moment_defined.clear();
     _dload_defined.clear();
     _step = DeckStep{};
     _step.where = _keyword.where.str();
@@ -1838,6 +2015,8 @@ private:
     DeckLoadState state = _data.state;
     for (const auto& [dof, value] : _data.model_boundary)
       state.boundary.emplace(dof, value); // a step's own value of a model support wins
+    for (const auto& [dof, value] : _data.model_boundary_rotation)
+      state.boundary_rotation.emplace(dof, value);
     _data.step_states.push_back(std::move(state));
     no_data();
   }
@@ -1914,7 +2093,7 @@ private:
   size_t _replayed = 0;
   int64_t _largest_node_label = 0, _largest_element_label = 0;
   /// The DOFs and faces this step gave a load so far (add_load: more values add up).
-  std::set<int64_t> _cload_defined;
+  std::set<int64_t> _cload_defined, _moment_defined;
   std::set<std::pair<int32_t, int>> _dload_defined;
   std::string _path;
   DeckKeyword _keyword;
@@ -1925,6 +2104,7 @@ private:
   bool _in_interaction = false;
   /// The interaction of a *CHANGE FRICTION whose *FRICTION comes next, and where it was.
   std::string _changing_friction, _changing_friction_where;
+  std::optional<DeckCoupling> _pending_coupling; ///< a *COUPLING waiting for *KINEMATIC or *DISTRIBUTING
   /// The interaction of a *CHANGE SURFACE BEHAVIOR whose *SURFACE BEHAVIOR comes next, and where.
   std::string _changing_behavior, _changing_behavior_where;
   int _step_max_increments = 100; ///< the current *STEP's INC= (automatic increments)

@@ -5,10 +5,12 @@
 #include "common/error.hpp"
 #include "fem/node_frames.hpp"
 #include "io/deck.hpp"
+#include "io/deck_couplings.hpp"
 #include "io/deck_data.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -110,13 +112,16 @@ public:
 
   void build()
   {
+    _reference = deck_reference_nodes(_d, label_of());
     nodes_and_cells();
     bodies_and_materials();
     sets_and_surfaces();
     contact_pairs();
     ties();
+    _p.couplings = deck_couplings(_d, _reference, _p.mesh, _deck.element_sets, mesh_of_fn(), label_of());
     node_frames();
     load_stages();
+    undriven_reference_supports();
     initial_temperatures();
     amplitudes();
     equations();
@@ -135,9 +140,11 @@ private:
     for (int32_t& m : _mesh_node)
       if (m == 0)
         m = count++;
-    if (count < n_read)
-      _d.warn(std::to_string(n_read - count) +
-              " nodes of the deck belong to no element; supports on them are "
+    const auto cell_less_references =
+        std::ranges::count_if(_reference.of_node, [&](const auto& entry) { return _mesh_node[entry.first] < 0; });
+    if (count + cell_less_references < n_read)
+      _d.warn(std::to_string(n_read - count - cell_less_references) +
+              " nodes of the deck belong to no element and are no reference node; supports on them are "
               "not used");
     mesh::Mesh& mesh = _p.mesh;
     // The label tables are done with: free them before the mesh arrays are formed.
@@ -199,6 +206,14 @@ private:
 
   /// The mesh node of a node in reading order, -1 if no element uses it.
   int32_t mesh_of(int32_t read_node) const { return _mesh_node.empty() ? read_node : _mesh_node[read_node]; }
+  std::function<int32_t(int32_t)> mesh_of_fn() const
+  {
+    return [this](int32_t n) { return mesh_of(n); };
+  }
+  std::function<int64_t(int32_t)> label_of() const
+  {
+    return [this](int32_t n) { return read_label(n); };
+  }
 
   int32_t mesh_node(int32_t read_node, const std::string& what) const
   {
@@ -322,6 +337,13 @@ private:
   void sets_and_surfaces()
   {
     mesh::Mesh& mesh = _p.mesh;
+    std::map<int32_t, int32_t> printed; // cell-less reference node -> index in reference_nodes
+    for (const auto& [node, of] : _reference.of_node)
+      if (mesh_of(node) < 0)
+      {
+        printed.emplace(node, static_cast<int32_t>(_deck.reference_nodes.size()));
+        _deck.reference_nodes.push_back({read_label(node), of.first, of.second});
+      }
     for (auto& [name, members] : _d.node_sets)
     {
       std::vector<int32_t> nodes;
@@ -329,6 +351,8 @@ private:
       members.for_each([&](int32_t n) {
         if (mesh_of(n) >= 0)
           nodes.push_back(mesh_of(n));
+        else if (const auto it = printed.find(n); it != printed.end())
+          _deck.reference_node_sets[name].push_back(it->second);
       });
       std::sort(nodes.begin(), nodes.end());
       nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
@@ -541,6 +565,8 @@ private:
     std::vector<fem::NodalForce> out;
     for (const auto& [dof, value] : cload)
     {
+      if (const int32_t read = static_cast<int32_t>(dof / 3); mesh_of(read) < 0 && _reference.of_node.count(read))
+        continue; // a reference node's (reference_values)
       const int32_t node = mesh_node(static_cast<int32_t>(dof / 3), what + ": *CLOAD");
       const int component = static_cast<int>(dof % 3);
       const int32_t frame = _p.frames.index_of(node);
@@ -796,6 +822,10 @@ private:
       fem::Step& step = k == 0 ? _p.steps.front() : _p.steps.emplace_back();
       step.dirichlet = supports(state.boundary, prefix + "support_");
       step.nodal_forces = nodal_forces(state.cload, name);
+      step.reference_supports =
+          reference_values(_d, _reference, state.boundary, state.boundary_rotation, true, mesh_of_fn(), label_of());
+      step.reference_loads =
+          reference_values(_d, _reference, state.cload, state.cload_moment, false, mesh_of_fn(), label_of());
       step.pressures = pressures(state.dload, prefix + "pressure_");
       step.body_loads = body_loads(state.body);
       step.temperatures = temperatures(state.temperature);
@@ -810,6 +840,21 @@ private:
         step.increments = _deck.steps[k].increments;
       step.automatic = _deck.steps[k].automatic;
     }
+  }
+
+  /// A support on a reference DOF its coupling does not drive holds nothing: say so once.
+  void undriven_reference_supports()
+  {
+    if (_p.couplings.empty())
+      return;
+    const std::vector<fem::ReferenceDofs> reference = _p.reference_dofs();
+    for (const fem::Step& step : _p.steps)
+      for (const fem::ReferenceValue& r : step.reference_supports)
+        if (reference[static_cast<size_t>(r.coupling)].value[r.dof].empty())
+          _d.warn("*BOUNDARY on " + fem::describe_reference_dof(r.dof) + " of the reference node of " +
+                  _p.couplings[static_cast<size_t>(r.coupling)].name +
+                  " holds nothing: the coupling does not move it (a *DISTRIBUTING reference node stays where it "
+                  "is, as in CalculiX; a *KINEMATIC one moves in the directions its coupled components see)");
   }
 
   static bool is_zero(const DeckValue& v) { return v.value == 0; }
@@ -877,6 +922,7 @@ private:
   /// none; a pair is one or the other, or both where *CHANGE SURFACE BEHAVIOR switches it).
   std::vector<int32_t> _contact_of_pair, _tie_of_pair;
   std::set<std::string> _restricted_surfaces; ///< node surfaces with a slave_nodes_NAME set
+  DeckReferenceNodes _reference;
 };
 } // namespace
 

@@ -90,13 +90,16 @@ std::vector<char> schur_boundary_dofs(const fem::Problem& problem, const std::ve
                                       const contact::ContactConstraints* contact_rows, bool all_components)
 {
   std::vector<char> boundary(3 * static_cast<size_t>(problem.mesh.n_nodes()), 0);
+  const int64_t n_global = 3 * int64_t{problem.mesh.n_nodes()};
+  const std::vector<fem::DofCombination> combinations = problem.held_combinations();
   for (int64_t dof : held)
-    if (fem::NodeFrames::is_local(problem.mesh.n_nodes(), dof)) // a row on every component of its node
-      for (int c = 0; c < 3; ++c)
-      {
-        if (!problem.eliminated[c])
-          boundary[3 * static_cast<size_t>(problem.frames.node_of(problem.mesh.n_nodes(), dof)) + c] = 1;
-      }
+    if (dof >= n_global) // a row on every component of the nodes it combines
+    {
+      for (const int64_t d : combinations.at(static_cast<size_t>(dof - n_global)).dofs)
+        for (int c = 0; c < 3; ++c)
+          if (!problem.eliminated[c])
+            boundary[3 * static_cast<size_t>(d / 3) + c] = 1;
+    }
     else if (!problem.eliminated[dof % 3]) // plane strain's u_z = 0 is no row
       boundary[dof] = 1;
   for (const auto* block : {&problem.equations, &problem.tie_equations}) // rows on every copy of these nodes
@@ -712,7 +715,7 @@ void FetiContactSolve::begin_load_step(int step, double)
   set_pairs_in_force(step);
   _u_step_start = _decomp->gather_mean(_decomp->gather_stacked(_u));
   // A DOF the step holds and the step before left free ramps from its displacement here.
-  _history.start_stage(step, _problem.frames.extended(_u_step_start)); // local components too
+  _history.start_stage(step, _problem.extended(_u_step_start)); // held combinations too
   fem::ConstrainedDofs target = _history.prescribed(step);
   const size_t stage = _history.point(step).stage - 1;
   const std::vector<int32_t>& ties_out = _problem.steps[stage].removed_ties;
@@ -723,7 +726,7 @@ void FetiContactSolve::begin_load_step(int step, double)
   _f_step = _history.combine(step, _f_terms_stacked);
   _f_step_norm = _history.external_force_norm(step);
   _equality = std::make_unique<decomposition::EqualityRows>(decomposition::build_equality_rows(
-      *_decomp, target, _problem.equations, _problem.tie_equations_in_force(stage), _problem.frames));
+      *_decomp, target, _problem.equations, _problem.tie_equations_in_force(stage), _problem.held_combinations()));
   _n_equality = _equality->n_global();
   _forcing = !_linear && _settings.forcing > 0;
   _previous_residual = std::numeric_limits<double>::infinity();

@@ -1,0 +1,285 @@
+#include "fem/coupling.hpp"
+
+#include "common/error.hpp"
+#include "fem/loads.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace feticon::fem
+{
+namespace
+{
+/// Relative size below which a pivot of the rigid motion counts as zero: a direction the
+/// coupled components do not see (collinear nodes, components left out). Far above round-off.
+constexpr double rank_tolerance = 1e-8;
+
+/// The coupled components of a kinematic coupling and their rigid motion, scaled: row i of
+/// `motion` is [e_c', (r x e_c)' / length] for component c of node n (dofs[i] = 3 n + c,
+/// r = X_n - X_ref), the generalized DOFs (t, length theta), so that the pivoting does not
+/// depend on the unit of length.
+struct RigidMotion
+{
+  std::vector<int64_t> dofs;
+  Eigen::MatrixXd motion; ///< dofs x 6
+  double length = 1;
+  std::vector<int32_t> anchors;  ///< rows of `motion` that carry it, rank of them
+  Eigen::MatrixXd anchor_motion; ///< rank x 6: those rows
+};
+
+std::vector<int32_t> unique_nodes(const mesh::Mesh& mesh, const Coupling& coupling)
+{
+  std::vector<int32_t> nodes = mesh.node_set(coupling.nodes);
+  std::ranges::sort(nodes);
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  FETICON_CHECK(!nodes.empty(), coupling.name << ": the coupled node set '" << coupling.nodes << "' is empty");
+  return nodes;
+}
+
+RigidMotion rigid_motion(const mesh::Mesh& mesh, const Coupling& coupling, const std::array<bool, 3>& eliminated)
+{
+  RigidMotion out;
+  const std::vector<int32_t> nodes = unique_nodes(mesh, coupling);
+  for (const int32_t n : nodes)
+    out.length = std::max(out.length, (mesh.nodes.row(n).transpose() - coupling.reference).norm());
+  std::vector<Eigen::Matrix<double, 1, 6>> rows;
+  for (const int32_t n : nodes)
+  {
+    const Eigen::Vector3d r = mesh.nodes.row(n).transpose() - coupling.reference;
+    for (int c = 0; c < 3; ++c)
+    {
+      if (!coupling.components[c] || eliminated[c])
+        continue;
+      Eigen::Matrix<double, 1, 6> row = Eigen::Matrix<double, 1, 6>::Zero();
+      row(c) = 1;
+      row.tail<3>() = r.cross(Eigen::Vector3d::Unit(c)).transpose() / out.length;
+      rows.push_back(row);
+      out.dofs.push_back(3 * int64_t{n} + c);
+    }
+  }
+  FETICON_CHECK(!rows.empty(), coupling.name << ": no component of its nodes is coupled");
+  out.motion.resize(static_cast<la::Index>(rows.size()), 6);
+  for (size_t i = 0; i < rows.size(); ++i)
+    out.motion.row(static_cast<la::Index>(i)) = rows[i];
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(out.motion.transpose());
+  qr.setThreshold(rank_tolerance);
+  const la::Index rank = qr.rank();
+  out.anchor_motion.resize(rank, 6);
+  for (la::Index k = 0; k < rank; ++k)
+  {
+    out.anchors.push_back(static_cast<int32_t>(qr.colsPermutation().indices()(k)));
+    out.anchor_motion.row(k) = out.motion.row(out.anchors.back());
+  }
+  return out;
+}
+
+/// x with G_A' x = rhs, if rhs lies in the rows of G_A (else empty).
+std::optional<Eigen::VectorXd> anchor_combination(const Eigen::ColPivHouseholderQR<Eigen::MatrixXd>& qr,
+                                                  const Eigen::MatrixXd& anchor_motion, const Eigen::VectorXd& rhs)
+{
+  const Eigen::VectorXd x = qr.solve(rhs);
+  if ((anchor_motion.transpose() * x - rhs).norm() > rank_tolerance * (1 + rhs.norm()))
+    return std::nullopt;
+  return x;
+}
+
+DofCombination combination(const std::vector<int64_t>& dofs, const Eigen::VectorXd& coefficients, double scale = 1)
+{
+  DofCombination out;
+  const double largest = coefficients.cwiseAbs().maxCoeff();
+  for (la::Index i = 0; i < coefficients.size(); ++i)
+    if (std::abs(coefficients(i)) > 1e-14 * largest)
+    {
+      out.dofs.push_back(dofs[static_cast<size_t>(i)]);
+      out.coefficients.push_back(coefficients(i) * scale);
+    }
+  return out;
+}
+
+ReferenceDofs kinematic_reference_dofs(const mesh::Mesh& mesh, const Coupling& coupling,
+                                       const std::array<bool, 3>& eliminated)
+{
+  const RigidMotion rigid = rigid_motion(mesh, coupling, eliminated);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(rigid.anchor_motion.transpose());
+  const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> gram(rigid.motion.transpose() * rigid.motion);
+  std::vector<int64_t> anchor_dofs;
+  for (const int32_t a : rigid.anchors)
+    anchor_dofs.push_back(rigid.dofs[static_cast<size_t>(a)]);
+  ReferenceDofs out;
+  for (int d = 0; d < 6; ++d)
+  {
+    const std::optional<Eigen::VectorXd> beta =
+        anchor_combination(qr, rigid.anchor_motion, Eigen::VectorXd(Eigen::VectorXd::Unit(6, d)));
+    if (!beta)
+      continue;
+    // Generalized DOF d is length theta for a rotation: theta = q_d / length, and a moment M
+    // does the work of a generalized force M / length.
+    const double scale = d < 3 ? 1 : 1 / rigid.length;
+    out.value[d] = combination(anchor_dofs, *beta, scale);
+    out.unit_load[d] = combination(rigid.dofs, rigid.motion * gram.solve(Eigen::VectorXd::Unit(6, d)), scale);
+    out.unit_motion[d] = combination(rigid.dofs, rigid.motion.col(d), 1 / scale);
+  }
+  return out;
+}
+
+/// Consistent nodal areas of the face set, normalized to sum 1, per node of `nodes`.
+std::vector<double> area_weights(const mesh::Mesh& mesh, const Coupling& coupling, const std::vector<int32_t>& nodes)
+{
+  la::Vector f = la::Vector::Zero(3 * mesh.n_nodes());
+  add_face_traction(mesh, mesh.face_set(coupling.faces), Eigen::Vector3d::UnitX(), f);
+  std::vector<double> out;
+  double total = 0;
+  for (const int32_t n : nodes)
+    total += out.emplace_back(f(3 * la::Index{n}));
+  FETICON_CHECK(total > 0, coupling.name << ": the surface '" << coupling.faces << "' has no area");
+  for (double& w : out)
+    w /= total;
+  return out;
+}
+
+ReferenceDofs distributing_reference_dofs(const mesh::Mesh& mesh, const Coupling& coupling,
+                                          const std::array<bool, 3>& eliminated)
+{
+  const std::vector<int32_t> nodes = unique_nodes(mesh, coupling);
+  const std::vector<double> w = area_weights(mesh, coupling, nodes);
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < nodes.size(); ++i)
+    centroid += w[i] * mesh.nodes.row(nodes[i]).transpose();
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+  for (size_t i = 0; i < nodes.size(); ++i)
+  {
+    const Eigen::Vector3d r = mesh.nodes.row(nodes[i]).transpose() - centroid;
+    inertia += w[i] * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
+  }
+  const Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix3d> polar(inertia);
+  // The nodal forces of a force `force` and a moment `moment` about the centroid.
+  const auto spread = [&](const Eigen::Vector3d& force, const Eigen::Vector3d& moment) {
+    const Eigen::Vector3d spin = polar.solve(moment);
+    FETICON_CHECK((inertia * spin - moment).norm() <= rank_tolerance * (1 + moment.norm()),
+                  coupling.name << ": its nodes lie on a line, so a moment about that line cannot be distributed");
+    DofCombination out;
+    for (size_t i = 0; i < nodes.size(); ++i)
+    {
+      const Eigen::Vector3d f = w[i] * (force + spin.cross(mesh.nodes.row(nodes[i]).transpose() - centroid));
+      for (int c = 0; c < 3; ++c)
+        if (!eliminated[c] && f(c) != 0)
+        {
+          out.dofs.push_back(3 * int64_t{nodes[i]} + c);
+          out.coefficients.push_back(f(c));
+        }
+    }
+    return out;
+  };
+  ReferenceDofs out;
+  for (int d = 0; d < 3; ++d)
+  {
+    const Eigen::Vector3d e = Eigen::Vector3d::Unit(d);
+    out.unit_load[d] = spread(e, (coupling.reference - centroid).cross(e));
+    if (coupling.moments[d])
+      out.unit_load[3 + d] = spread(Eigen::Vector3d::Zero(), e);
+  }
+  return out;
+}
+
+ReferenceDofs mean_reference_dofs(const mesh::Mesh& mesh, const Coupling& coupling,
+                                  const std::array<bool, 3>& eliminated)
+{
+  const std::vector<int32_t>& nodes = mesh.node_set(coupling.nodes);
+  FETICON_CHECK(coupling.weights.size() == nodes.size(),
+                coupling.name << ": " << coupling.weights.size() << " weights for " << nodes.size() << " nodes");
+  double total = 0;
+  for (const double w : coupling.weights)
+  {
+    FETICON_CHECK(std::isfinite(w), coupling.name << ": a weight is not finite");
+    total += w;
+  }
+  FETICON_CHECK(total != 0, coupling.name << ": its weights sum to zero");
+  ReferenceDofs out;
+  for (int d = 0; d < 3; ++d)
+  {
+    if (eliminated[d])
+      continue;
+    DofCombination mean, motion;
+    for (size_t i = 0; i < nodes.size(); ++i)
+    {
+      mean.dofs.push_back(3 * int64_t{nodes[i]} + d);
+      mean.coefficients.push_back(coupling.weights[i] / total);
+      motion.dofs.push_back(mean.dofs.back());
+      motion.coefficients.push_back(1);
+    }
+    out.value[d] = mean;
+    out.unit_load[d] = mean;
+    out.unit_motion[d] = motion;
+  }
+  return out;
+}
+} // namespace
+
+double DofCombination::of(const la::Vector& u) const
+{
+  double out = 0;
+  for (size_t k = 0; k < dofs.size(); ++k)
+    out += coefficients[k] * u(dofs[k]);
+  return out;
+}
+
+ReferenceDofs reference_dofs(const mesh::Mesh& mesh, const Coupling& coupling, const std::array<bool, 3>& eliminated)
+{
+  switch (coupling.kind)
+  {
+  case CouplingKind::kinematic:
+    return kinematic_reference_dofs(mesh, coupling, eliminated);
+  case CouplingKind::distributing:
+    return distributing_reference_dofs(mesh, coupling, eliminated);
+  case CouplingKind::mean:
+    return mean_reference_dofs(mesh, coupling, eliminated);
+  }
+  return {};
+}
+
+KinematicRows kinematic_rows(const mesh::Mesh& mesh, const Coupling& coupling, const std::array<bool, 3>& eliminated)
+{
+  if (coupling.kind != CouplingKind::kinematic)
+    return {};
+  const RigidMotion rigid = rigid_motion(mesh, coupling, eliminated);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(rigid.anchor_motion.transpose());
+  std::vector<int64_t> anchor_dofs;
+  for (const int32_t a : rigid.anchors)
+    anchor_dofs.push_back(rigid.dofs[static_cast<size_t>(a)]);
+  std::vector<char> is_anchor(rigid.dofs.size(), 0);
+  for (const int32_t a : rigid.anchors)
+    is_anchor[static_cast<size_t>(a)] = 1;
+  KinematicRows out;
+  out.rank = static_cast<int>(rigid.anchors.size());
+  for (size_t i = 0; i < rigid.dofs.size(); ++i)
+  {
+    if (is_anchor[i])
+      continue;
+    const std::optional<Eigen::VectorXd> alpha =
+        anchor_combination(qr, rigid.anchor_motion, rigid.motion.row(static_cast<la::Index>(i)).transpose());
+    FETICON_CHECK(alpha,
+                  coupling.name << ": the rigid motion of node " << rigid.dofs[i] / 3
+                                << " is not carried by the anchors (rank tolerance)");
+    out.rows.push_back({rigid.dofs[i], combination(anchor_dofs, *alpha)});
+  }
+  return out;
+}
+
+ReferenceResult reference_result(const ReferenceDofs& dofs, const la::Vector& u, const la::Vector& rho)
+{
+  ReferenceResult out;
+  for (int d = 0; d < 6; ++d)
+  {
+    out.value[d] = dofs.value[d].of(u);
+    out.reaction[d] = dofs.unit_motion[d].of(rho);
+  }
+  return out;
+}
+
+std::string describe_reference_dof(int dof)
+{
+  static constexpr const char* names[6] = {"translation x",    "translation y",    "translation z",
+                                           "rotation about x", "rotation about y", "rotation about z"};
+  return "DOF " + std::to_string(dof + 1) + " (" + names[dof] + ")";
+}
+} // namespace feticon::fem

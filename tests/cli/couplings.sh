@@ -1,0 +1,123 @@
+#!/usr/bin/env bash
+# Reference nodes and couplings (issue 63, item 5; fem/coupling.hpp): *COUPLING with *KINEMATIC
+# or *DISTRIBUTING, *RIGID BODY, *DISTRIBUTING COUPLING.
+# References:
+#  - Closed form (tests/tools/coupled_cantilever_deck.py): a 1 x 1 x 10 m bar of ten C3D20 cells,
+#    E = 1e9 Pa, nu = 0, clamped at x = 0, its end face coupled to a reference node at the face's
+#    centre. A moment M = 1e4 N m about y (a *KINEMATIC coupling's DOF 5, a *RIGID BODY's ROT
+#    NODE DOF 2): beam theory's end rotation M L / (E I) = 1.2e-3 rad and deflection
+#    -M L^2 / (2 E I) = -6e-3 m, which C3D20 holds exactly with nu = 0 (pure bending has a
+#    quadratic displacement and no anticlastic curvature): to 1e-6 (solver tolerance; measured
+#    1.7e-8); the reference node's printed RF is the moment. An axial force F = 1e6 N spread by a
+#    *DISTRIBUTING coupling (consistent nodal areas): the end face's u_x = F L / (E A) = 1e-2 m,
+#    uniform, to 1e-6. The kinematic bar on 2 MPI ranks with 4 subdomains: the same rotation.
+#  - CalculiX's own output (tests/data/calculix, calculix-ccx-test 2.11): beamprb (a *RIGID BODY
+#    tip of a C3D20R cantilever under a moment on its ROT NODE) against beamprb.frd.ref, every
+#    node, to 1e-5 of max |u| (the .frd's six digits; measured 5.4e-7); distcoup (a *DISTRIBUTING
+#    COUPLING spreading a force over nine nodes) against distcoup.dat.ref's reactions of the
+#    clamped nodes to 1e-5 of the largest (measured 2.2e-6).
+#  - Bad input, one line each: *COUPLING without *KINEMATIC or *DISTRIBUTING, an unknown surface,
+#    a ROT NODE that an element uses, a node that is the reference node of two couplings, a moment
+#    on a solid node, a moment a *KINEMATIC coupling of one direction cannot carry, a *DISTRIBUTING
+#    COUPLING set without a DCOUP3D element, ORIENTATION=.
+# Usage: couplings.sh FETICON SOURCE_DIR
+set -euo pipefail
+feticon="$1"
+src="$2"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_mpi_yield_when_idle=1 OPENBLAS_NUM_THREADS=1
+[[ -z ${FETICON_SANITIZED:-} ]] || export LSAN_OPTIONS="${LSAN_OPTIONS:-}:detect_leaks=0"
+quiet=(-q --set output.plots=false)
+data="$src/tests/data/calculix"
+deck() { /usr/bin/python3 "$src/tests/tools/coupled_cantilever_deck.py" "$work/$1.inp" "$1"; }
+
+# check FOLDER EXPRESSION BOUND LABEL: |EXPRESSION| <= BOUND, EXPRESSION over summary.json's s.
+check() {
+  /usr/bin/python3 - "$1/summary.json" "$2" "$3" "$4" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+c = s["couplings"][0]
+error = abs(eval(sys.argv[2]))
+print(f"{sys.argv[4]}: {error:.3g} (bound {sys.argv[3]})")
+sys.exit(0 if error <= float(sys.argv[3]) else 1)
+PY
+}
+EI=$(/usr/bin/python3 -c 'print(1e9 / 12)')
+
+for kind in kinematic-moment rigid-moment; do
+  deck $kind
+  "$feticon" run "$work/$kind.inp" -o "$work/$kind" "${quiet[@]}" 2> /dev/null
+  check "$work/$kind" "c['rotation'][1] / (1e4 * 10 / $EI) - 1" 1e-6 "$kind: end rotation vs M L / (E I)"
+  check "$work/$kind" "c['displacement'][2] / (-1e4 * 100 / (2 * $EI)) - 1" 1e-6 "$kind: deflection vs -M L^2 / (2 E I)"
+  check "$work/$kind" "c['moment'][1] / 1e4 - 1" 1e-9 "$kind: the reference node's moment vs M"
+done
+# The .dat prints the reference node (and the ROT NODE's rotation) as CalculiX does.
+grep -q "^     10001 .* 1.200000E-03 " "$work/rigid-moment/rigid-moment.dat"
+grep -q "^     10001 .* 1.000000E+04 " "$work/rigid-moment/rigid-moment.dat"
+
+mpirun --oversubscribe -np 2 "$feticon" run "$work/kinematic-moment.inp" -o "$work/mpi" "${quiet[@]}" \
+  --set subdomains=4 2> /dev/null
+check "$work/mpi" "c['rotation'][1] / (1e4 * 10 / $EI) - 1" 1e-6 "2 ranks, 4 subdomains: end rotation"
+
+deck distributing-force
+"$feticon" run "$work/distributing-force.inp" -o "$work/distributing" "${quiet[@]}" 2> /dev/null
+/usr/bin/python3 - "$work/distributing/distributing-force.dat" "$src/tests/tools" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[2])
+from calculix_dat import parse_dat
+block = [b for b in parse_dat(sys.argv[1])["blocks"] if b["kind"] == "displacements" and b["set"] == "END"][-1]
+error = max(abs(row[1] / 1e-2 - 1) for row in block["rows"])
+print(f"distributing force: end face u_x vs F L / (E A): {error:.3g} (bound 1e-6)")
+sys.exit(0 if error <= 1e-6 else 1)
+PY
+
+"$feticon" run "$data/beamprb.inp" -o "$work/beamprb" "${quiet[@]}" 2> /dev/null
+/usr/bin/python3 - "$("$src/tests/tools/calculix_reference_agreement.py" "$data/beamprb.inp" "$data/beamprb.frd.ref" \
+  "$work/beamprb")" <<'PY'
+import json, sys
+f = json.loads(sys.argv[1])
+print(f"beamprb: {f['relative']:.3g} of max |u| from CalculiX's .frd.ref ({f['nodes']} nodes, bound 1e-5)")
+sys.exit(0 if f["relative"] <= 1e-5 and f["nodes"] == 261 else 1)
+PY
+"$feticon" run "$data/distcoup.inp" -o "$work/distcoup" "${quiet[@]}" 2> /dev/null
+/usr/bin/python3 - "$work/distcoup/distcoup.dat" "$data/distcoup.dat.ref" "$src/tests/tools" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[3])
+from calculix_dat import parse_dat
+mine, ref = ({r[0]: r[1:] for r in parse_dat(p)["blocks"][0]["rows"]} for p in sys.argv[1:3])
+scale = max(abs(v) for row in ref.values() for v in row)
+error = max(abs(a - b) for n in ref for a, b in zip(mine[n], ref[n])) / scale
+print(f"distcoup: reactions {error:.3g} of the largest from CalculiX's .dat.ref (bound 1e-5)")
+sys.exit(0 if error <= 1e-5 and len(mine) == len(ref) == 21 else 1)
+PY
+
+# Bad input: one line naming what is wrong, non-zero exit.
+bad() {
+  local name="$1" pattern="$2"
+  if "$feticon" run "$work/$name.inp" -o "$work/bad_$name" "${quiet[@]}" 2> "$work/$name.err"; then
+    echo "$name: accepted"; exit 1
+  fi
+  [[ $(wc -l < "$work/$name.err") -eq 1 ]] || { echo "$name: not one line"; cat "$work/$name.err"; exit 1; }
+  grep -q "$pattern" "$work/$name.err" || { echo "$name: unexpected message"; cat "$work/$name.err"; exit 1; }
+  echo "$name: $(cat "$work/$name.err")"
+}
+base="$work/kinematic-moment.inp"
+sed -e '/^\*KINEMATIC/,+1d' "$base" > "$work/no_kinematic.inp"
+bad no_kinematic "needs its \*KINEMATIC or \*DISTRIBUTING next"
+sed -e 's/SURFACE=TIP,/SURFACE=NOSUCH,/' "$base" > "$work/unknown_surface.inp"
+bad unknown_surface "SURFACE=NOSUCH names no \*SURFACE"
+sed -e 's/ROT NODE=10001/ROT NODE=1/' "$work/rigid-moment.inp" > "$work/rot_node_in_cell.inp"
+bad rot_node_in_cell "ROT NODE 1 belongs to an element"
+sed -e '/^\*KINEMATIC/{n;s/$/\n*COUPLING, REF NODE=10000, SURFACE=TIP\n*KINEMATIC\n1, 3/}' "$base" > "$work/two_references.inp"
+bad two_references "node 10000 is a reference node of"
+sed -e 's/^10000, 5, /1, 5, /' "$base" > "$work/moment_on_solid.inp"
+bad moment_on_solid "which is no reference node"
+sed -e '/^\*KINEMATIC/{n;s/.*/1/}' -e 's/^10000, 5, /10000, 4, /' "$base" > "$work/moment_not_carried.inp"
+bad moment_not_carried "does not carry"
+printf '*DISTRIBUTING COUPLING, ELSET=BAR\n1, 1.\n' > "$work/insert.txt"
+sed -e "/^\*BOUNDARY/e cat $work/insert.txt" "$base" > "$work/no_dcoup3d.inp"
+bad no_dcoup3d "no set of one DCOUP3D element"
+sed -e 's/CONSTRAINT NAME=TIPC/CONSTRAINT NAME=TIPC, ORIENTATION=OR1/' "$base" > "$work/orientation.inp"
+bad orientation "ORIENTATION= (a coupling in a local system) is not implemented"
