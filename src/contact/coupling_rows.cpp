@@ -25,7 +25,7 @@ std::vector<CouplingReport> couple_surfaces(fem::Problem& problem)
       continue;
     CouplingReport& report = out.emplace_back();
     report.name = coupling.name;
-    report.nodes = std::ssize(problem.mesh.node_set(coupling.nodes));
+    report.nodes = std::ssize(fem::coupled_nodes(problem.mesh, coupling));
     const fem::KinematicRows rows = fem::kinematic_rows(problem.mesh, coupling, problem.eliminated);
     report.anchors = rows.rank;
     for (const fem::CouplingRow& row : rows.rows)

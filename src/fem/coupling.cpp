@@ -29,10 +29,10 @@ struct RigidMotion
 
 std::vector<int32_t> unique_nodes(const mesh::Mesh& mesh, const Coupling& coupling)
 {
-  std::vector<int32_t> nodes = mesh.node_set(coupling.nodes);
+  std::vector<int32_t> nodes = coupled_nodes(mesh, coupling);
   std::ranges::sort(nodes);
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-  FETICON_CHECK(!nodes.empty(), coupling.name << ": the coupled node set '" << coupling.nodes << "' is empty");
+  FETICON_CHECK(!nodes.empty(), coupling.name << ": it couples no node");
   return nodes;
 }
 
@@ -184,7 +184,7 @@ ReferenceDofs distributing_reference_dofs(const mesh::Mesh& mesh, const Coupling
 ReferenceDofs mean_reference_dofs(const mesh::Mesh& mesh, const Coupling& coupling,
                                   const std::array<bool, 3>& eliminated)
 {
-  const std::vector<int32_t>& nodes = mesh.node_set(coupling.nodes);
+  const std::vector<int32_t> nodes = coupled_nodes(mesh, coupling);
   FETICON_CHECK(coupling.weights.size() == nodes.size(),
                 coupling.name << ": " << coupling.weights.size() << " weights for " << nodes.size() << " nodes");
   double total = 0;
@@ -214,6 +214,11 @@ ReferenceDofs mean_reference_dofs(const mesh::Mesh& mesh, const Coupling& coupli
   return out;
 }
 } // namespace
+
+std::vector<int32_t> coupled_nodes(const mesh::Mesh& mesh, const Coupling& coupling)
+{
+  return coupling.nodes.empty() ? mesh.face_set_nodes(coupling.faces) : mesh.node_set(coupling.nodes);
+}
 
 double DofCombination::of(const la::Vector& u) const
 {

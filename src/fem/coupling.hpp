@@ -54,8 +54,10 @@ struct Coupling
   std::string name; ///< for messages: "*RIGID BODY at line 31", "coupling C1"
   CouplingKind kind = CouplingKind::kinematic;
   Eigen::Vector3d reference = Eigen::Vector3d::Zero(); ///< position of the reference node (m)
-  std::string nodes;                                   ///< node set of the coupled nodes
-  /// distributing: the face set whose consistent nodal areas weigh the nodes (`nodes` its nodes)
+  /// node set of the coupled nodes; empty: the nodes of `faces`
+  std::string nodes;
+  /// distributing: the face set whose consistent nodal areas weigh its nodes (a kinematic
+  /// coupling may name its nodes by a face set too)
   std::string faces = {};
   /// kinematic: the components of the coupled nodes that follow the rigid motion
   std::array<bool, 3> components{true, true, true};
@@ -64,6 +66,9 @@ struct Coupling
   /// mean: the weight of each node of `nodes`, in the set's order
   std::vector<double> weights = {};
 };
+
+/// The coupled nodes: `nodes`, or the nodes of `faces`.
+std::vector<int32_t> coupled_nodes(const mesh::Mesh& mesh, const Coupling& coupling);
 
 /// A support or a load on DOF `dof` of coupling `coupling`'s reference node: 0-2 translations
 /// (m, N), 3-5 rotations about x, y, z (rad, N m).

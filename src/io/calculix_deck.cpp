@@ -523,6 +523,9 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
 
   write_mesh(out, problem, x, summary);
   FETICON_CHECK(problem.amplitudes.empty(), "calculix export: amplitudes are not written by feticon export");
+  FETICON_CHECK(problem.couplings.empty(),
+                "calculix export: couplings (" << problem.couplings.front().name
+                                               << ") are not written by feticon export");
   FETICON_CHECK(std::ranges::all_of(
                     problem.steps,
                     [](const fem::Step& step) {

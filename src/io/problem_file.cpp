@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "io/problem_reader.hpp"
+#include "io/problem_couplings.hpp"
 #include "io/problem_steps.hpp"
 #include "mesh/box.hpp"
 #include "mesh/gmsh_precheck.hpp"
@@ -20,8 +21,8 @@ namespace feticon::io
 namespace
 {
 const std::set<std::string> structured_keys = {
-    "mesh",  "bodies",     "plane_strain", "supports", "loads", "temperatures", "initial_temperature",
-    "steps", "amplitudes", "contact",      "ties"};
+    "mesh",  "bodies",     "plane_strain", "supports", "loads",    "temperatures", "initial_temperature",
+    "steps", "amplitudes", "contact",      "ties",     "couplings"};
 
 /// A body's `plastic:` table [[von Mises stress, equivalent plastic strain], ...] (the rows of
 /// CalculiX's *PLASTIC).
@@ -545,7 +546,7 @@ ProblemFile with_overrides(ProblemFile file, const std::vector<std::string>& ove
     file.deck = std::filesystem::absolute(file.folder / file.root["mesh"]["file"].Scalar());
     file.deck_outline = deck_outline(file.deck);
     for (const char* section : {"bodies", "plane_strain", "supports", "loads", "temperatures", "initial_temperature",
-                                "steps", "amplitudes", "contact", "ties"})
+                                "steps", "amplitudes", "contact", "ties", "couplings"})
       FETICON_CHECK(!file.root[section],
                     file.source << ": section '" << section << "' is not read when mesh.file is "
                                 << "an input deck: the deck gives the whole model");
@@ -684,6 +685,8 @@ fem::Problem build_custom_problem(const ProblemFile& file)
     FETICON_CHECK(v == "true" || v == "false", file.source << ": plane_strain must be true or false");
     p.eliminated = {false, false, v == "true"};
   }
+  if (root["couplings"])
+    p.couplings = read_couplings(root["couplings"], p.mesh, r);
   read_steps(root, r, p);
   if (root["contact"])
     p.contacts = contact_pairs(root["contact"], p.mesh, r);

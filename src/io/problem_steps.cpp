@@ -1,5 +1,7 @@
 #include "io/problem_steps.hpp"
 
+#include "io/problem_couplings.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -108,6 +110,8 @@ std::vector<fem::DirichletCondition> supports(const YAML::Node& list, const std:
   for (size_t i = 0; i < list.size(); ++i)
   {
     const YAML::Node s = list[i];
+    if (s.IsMap() && s["coupling"])
+      continue; // a reference node's (problem_couplings.hpp)
     const std::string key = where + "." + std::to_string(i);
     r.only_keys(s, key, {"set", "x", "y", "z", "amplitude"});
     fem::DirichletCondition c{r.text(s["set"], key + ".set"), {}};
@@ -210,6 +214,8 @@ void loads(const YAML::Node& list, const std::string& where, const ProblemReader
   {
     const YAML::Node l = list[i];
     const std::string key = where + "." + std::to_string(i);
+    if (l.IsMap() && l["coupling"])
+      continue; // a reference node's (problem_couplings.hpp)
     if (l.IsMap() && (l["gravity"] || l["centrifugal"]))
     {
       YAML::Node body = YAML::Clone(l);
@@ -225,6 +231,7 @@ void loads(const YAML::Node& list, const std::string& where, const ProblemReader
                            << "' in the mesh; it has: " << names_of(p.mesh.face_sets));
     step.tractions.push_back({set, r.vector3(l["traction"], key + ".traction"), amplitude_of(l, key, r, p)});
   }
+  step.reference_loads = coupling_loads(list, where, r, p);
 }
 
 /// A step's `increment: {initial, minimum, maximum}` (in its time; the minimum defaults to the
@@ -301,7 +308,10 @@ void step_entry(const YAML::Node& entry, const std::string& key, const ProblemRe
   if (entry["contact"])
     contact_changes(entry["contact"], key + ".contact", r, n_pairs, step);
   if (entry["supports"])
+  {
     step.dirichlet = supports(entry["supports"], key + ".supports", r, p);
+    step.reference_supports = coupling_supports(entry["supports"], key + ".supports", r, p);
+  }
   if (entry["temperatures"])
     step.temperatures = temperatures(entry["temperatures"], key + ".temperatures", r, p);
   if (entry["loads"])
@@ -382,7 +392,10 @@ void read_steps(const YAML::Node& root, const ProblemReader& r, fem::Problem& p)
     initial_temperatures(root["initial_temperature"], r, p);
   fem::Step first;
   if (root["supports"])
+  {
     first.dirichlet = supports(root["supports"], "supports", r, p);
+    first.reference_supports = coupling_supports(root["supports"], "supports", r, p);
+  }
   if (root["temperatures"])
     first.temperatures = temperatures(root["temperatures"], "temperatures", r, p);
   if (root["loads"])

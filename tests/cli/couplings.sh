@@ -16,10 +16,15 @@
 #    node, to 1e-5 of max |u| (the .frd's six digits; measured 5.4e-7); distcoup (a *DISTRIBUTING
 #    COUPLING spreading a force over nine nodes) against distcoup.dat.ref's reactions of the
 #    clamped nodes to 1e-5 of the largest (measured 2.2e-6).
+#  - A problem file's couplings (hex8 bar, nu = 0: uniaxial fields exact): a kinematic coupling
+#    holding the end face's reference translation at 1e-3 m transmits E A u / L = 1e5 N to 1e-6
+#    (measured 3e-8); a distributing force F gives the end face F L / (E A) to 1e-6.
 #  - Bad input, one line each: *COUPLING without *KINEMATIC or *DISTRIBUTING, an unknown surface,
 #    a ROT NODE that an element uses, a node that is the reference node of two couplings, a moment
 #    on a solid node, a moment a *KINEMATIC coupling of one direction cannot carry, a *DISTRIBUTING
-#    COUPLING set without a DCOUP3D element, ORIENTATION=.
+#    COUPLING set without a DCOUP3D element, ORIENTATION=; in problem files an unknown coupling or
+#    kind, no reference point, both surface and nodes, a rotation of 1e300 rad; feticon export of a
+#    model with couplings.
 # Usage: couplings.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -93,6 +98,46 @@ print(f"distcoup: reactions {error:.3g} of the largest from CalculiX's .dat.ref 
 sys.exit(0 if error <= 1e-5 and len(mine) == len(ref) == 21 else 1)
 PY
 
+# A problem file's couplings: a 10 x 1 x 1 m hex8 bar (E = 1e9 Pa, nu = 0: uniaxial fields are
+# exact) whose end face a kinematic coupling pulls by a held reference translation of 1e-3 m:
+# the reference node's force E A u / L = 1e5 N to 1e-6; a distributing coupling's force 1e5 N:
+# the end face's u_x = F L / (E A) = 1e-3 m to 1e-6.
+cat > "$work/bar.yaml" <<'YAML'
+problem: custom
+mesh:
+  boxes:
+    - {name: bar, origin: [0, 0, 0], lengths: [10, 1, 1], cells: [10, 2, 2]}
+bodies:
+  bar: {young: 1e9, poisson: 0}
+couplings:
+  - {name: tip, kind: kinematic, surface: bar_xmax, reference: [10, 0.5, 0.5]}
+supports:
+  - {set: bar_xmin, x: 0, y: 0, z: 0}
+  - {coupling: tip, x: 1e-3}
+displacements: small
+YAML
+"$feticon" run "$work/bar.yaml" -o "$work/yaml_kinematic" "${quiet[@]}" 2> /dev/null
+check "$work/yaml_kinematic" "c['force'][0] / 1e5 - 1" 1e-6 "problem file, kinematic: force vs E A u / L"
+sed -e 's/kind: kinematic, surface/kind: distributing, surface/' -e '/coupling: tip, x:/d' "$work/bar.yaml" \
+  > "$work/bar_distributing.yaml"
+printf 'loads:\n  - {coupling: tip, force: [1e5, 0, 0]}\n' >> "$work/bar_distributing.yaml"
+"$feticon" run "$work/bar_distributing.yaml" -o "$work/yaml_distributing" "${quiet[@]}" 2> /dev/null
+/usr/bin/python3 - "$work/yaml_distributing/step_001.vtu" "$src/tests/tools" <<'PY'
+import sys
+from xml.etree import ElementTree
+import numpy
+sys.path.insert(0, sys.argv[2])
+import read_vtu
+root = ElementTree.parse(sys.argv[1]).getroot()
+header = numpy.dtype("<" + read_vtu.TYPES[root.get("header_type", "UInt32")])
+arrays = {e.get("Name"): e for e in root.findall("UnstructuredGrid/Piece/PointData/DataArray")}
+u = read_vtu.read_array(arrays["displacement"], "LittleEndian", header).reshape(-1, 3)
+end = read_vtu.read_array(arrays["set_bar_xmax"], "LittleEndian", header) > 0
+error = numpy.abs(u[end, 0] / 1e-3 - 1).max()
+print(f"problem file, distributing: end face u_x vs F L / (E A): {error:.3g} (bound 1e-6, {end.sum()} nodes)")
+sys.exit(0 if error <= 1e-6 and end.sum() == 9 else 1)
+PY
+
 # Bad input: one line naming what is wrong, non-zero exit.
 bad() {
   local name="$1" pattern="$2"
@@ -121,3 +166,27 @@ sed -e "/^\*BOUNDARY/e cat $work/insert.txt" "$base" > "$work/no_dcoup3d.inp"
 bad no_dcoup3d "no set of one DCOUP3D element"
 sed -e 's/CONSTRAINT NAME=TIPC/CONSTRAINT NAME=TIPC, ORIENTATION=OR1/' "$base" > "$work/orientation.inp"
 bad orientation "ORIENTATION= (a coupling in a local system) is not implemented"
+# ... and in problem files.
+bad_yaml() {
+  local name="$1" pattern="$2"
+  if "$feticon" run "$work/$name.yaml" -o "$work/bad_$name" "${quiet[@]}" 2> "$work/$name.err"; then
+    echo "$name: accepted"; exit 1
+  fi
+  [[ $(wc -l < "$work/$name.err") -eq 1 ]] || { echo "$name: not one line"; cat "$work/$name.err"; exit 1; }
+  grep -q "$pattern" "$work/$name.err" || { echo "$name: unexpected message"; cat "$work/$name.err"; exit 1; }
+  echo "$name: $(cat "$work/$name.err")"
+}
+sed -e 's/coupling: tip, x:/coupling: nosuch, x:/' "$work/bar.yaml" > "$work/unknown_coupling.yaml"
+bad_yaml unknown_coupling "no coupling 'nosuch'"
+sed -e 's/kind: kinematic/kind: rigid/' "$work/bar.yaml" > "$work/unknown_kind.yaml"
+bad_yaml unknown_kind "must be kinematic or distributing"
+sed -e 's/surface: bar_xmax, reference: \[10, 0.5, 0.5\]/surface: bar_xmax/' "$work/bar.yaml" > "$work/no_reference.yaml"
+bad_yaml no_reference "reference must be"
+sed -e 's/surface: bar_xmax,/surface: bar_xmax, nodes: bar_xmax,/' "$work/bar.yaml" > "$work/surface_and_nodes.yaml"
+bad_yaml surface_and_nodes "needs one of surface"
+sed -e 's/coupling: tip, x: 1e-3/coupling: tip, rx: 1e300/' "$work/bar.yaml" > "$work/huge_rotation.yaml"
+bad_yaml huge_rotation "non-finite residual"
+if "$feticon" export "$work/bar.yaml" --format calculix -o "$work/exported" 2> "$work/export.err"; then
+  echo "export of couplings: accepted"; exit 1
+fi
+grep -q "couplings (coupling tip) are not written by feticon export" "$work/export.err"

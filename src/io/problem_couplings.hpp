@@ -1,0 +1,34 @@
+#pragma once
+/// @file A problem file's `couplings:` (fem/coupling.hpp) and the supports and loads of its
+/// steps that name one (docs/usage.md, "Couplings in problem files"):
+///
+///   couplings:
+///     - {name: tip, kind: kinematic, surface: tip_face, reference: [10, 0.5, 0.5]}
+///     - {name: lug, kind: distributing, surface: lug_face, reference: [0, 0, 2], moments: [x, y, z]}
+///   supports: [{coupling: tip, x: 0, rz: 0}]             # translations x y z, rotations rx ry rz
+///   loads: [{coupling: tip, force: [0, 0, -1e3], moment: [0, 1e4, 0]}]
+///
+/// A kinematic coupling names a face set (`surface`) or a node set (`nodes`) and optionally the
+/// `components` of its nodes that follow the rigid motion (default x, y, z); a distributing one
+/// a face set, whose consistent nodal areas spread its loads, and the `moments` it spreads.
+
+#include "fem/problem.hpp"
+#include "io/problem_reader.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <vector>
+
+namespace feticon::io
+{
+/// @throws feticon::Error naming the file and key of what is wrong
+std::vector<fem::Coupling> read_couplings(const YAML::Node& list, const mesh::Mesh& mesh, const ProblemReader& r);
+
+/// The entries of a supports (loads) list that name a coupling, as reference values; the others
+/// are left to the list's own reader. `amplitude_of` names an entry's amplitude (checked).
+/// @throws feticon::Error naming the file and key of what is wrong
+std::vector<fem::ReferenceValue> coupling_supports(const YAML::Node& list, const std::string& where,
+                                                   const ProblemReader& r, const fem::Problem& p);
+std::vector<fem::ReferenceValue> coupling_loads(const YAML::Node& list, const std::string& where,
+                                                const ProblemReader& r, const fem::Problem& p);
+} // namespace feticon::io
