@@ -3,7 +3,7 @@
 #include "app/run.hpp"
 
 #include "app/calculix_results.hpp"
-#include "app/coupling_summary.hpp"
+#include "app/constraint_summary.hpp"
 #include "app/checkpoint.hpp"
 #include "app/memory_guard.hpp"
 #include "app/model_picture.hpp"
@@ -519,6 +519,8 @@ RunResult run_problem(const RunOptions& options)
   summarize_contact(run, solution, summary);
   if (!run.problem->couplings.empty())
     summary["couplings"] = coupling_summary(*run.problem, solution, run.solver.kinematics);
+  if (!run.problem->ties.empty())
+    summary["ties"] = tie_summary(*run.problem, solution, run.solver.kinematics);
   summary["qp"] = qp_json(solution);
   const std::vector<std::string> logged = log::take_warnings(); // already on stderr
   const nlohmann::ordered_json warnings = run_warnings(run, solution, summary, logged);

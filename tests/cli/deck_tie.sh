@@ -4,7 +4,8 @@
 # Reference: uniaxial tension, u = (-nu s x, -nu s y, s z) / E exactly (the dual mortar tie
 # passes the patch test; tests/verification/test_ties.cpp): the .dat's displacements within
 # 1e-6 of max |u| (measured 5e-8, its 7 printed digits), on 1 and 2 MPI ranks with the same
-# MPRGP steps. CalculiX 2.20's node-to-face tie on this deck is 2.8 % off (docs/contact.md).
+# MPRGP steps; summary.json's tie force is the pull s A to 1e-8 (measured 4e-14; qp.rtol 1e-10).
+# CalculiX 2.20's node-to-face tie on this deck is 2.8 % off (docs/contact.md).
 # Usage: deck_tie.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -56,6 +57,12 @@ for run in runs:
     print(f"tie_blocks on {run} rank(s): max |u - u_exact| / max |u_exact| = {error / scale:.2e}, "
           f"{steps[-1]} MPRGP steps")
     assert error <= 1e-6 * scale, "the tied blocks are not in uniaxial tension"
+    # The force the tie gives its slave side (the upper block's bottom): -s A, the pull.
+    area = (max(p[0] for p in nodes.values()) - min(p[0] for p in nodes.values())) * \
+        (max(p[1] for p in nodes.values()) - min(p[1] for p in nodes.values()))
+    tie_force = summary["ties"][0]["force"][2]
+    print(f"tie T1 carries {tie_force:.10g} N, -s A = {-s * area:.10g} N")
+    assert abs(tie_force / (-s * area) - 1) <= 1e-8, "the tie's force is not the pull"
 assert len(set(steps)) == 1, f"MPRGP steps differ between rank counts: {steps}"
 PY
 # The problem-file form (`ties:`) of a two-block tie pulled by s = 1e8 Pa, and the deck
