@@ -1,5 +1,7 @@
 #include "app/calculix_results.hpp"
 
+#include "app/constraint_summary.hpp"
+
 #include "fem/cell_element.hpp"
 
 #include "contact/contact_constraints.hpp"
@@ -290,15 +292,14 @@ void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
   la::Vector u_dat = solution.u, rf_dat = reaction;
   if (!_deck.reference_nodes.empty())
   {
-    const std::vector<fem::ReferenceDofs> dofs = p.reference_dofs();
+    const std::vector<fem::ReferenceResult> results = reference_results(p, solution.u, reaction, _kinematics);
     const auto n_mesh = u_dat.size();
     u_dat.conservativeResize(n_mesh + 3 * std::ssize(_deck.reference_nodes));
     rf_dat.conservativeResize(u_dat.size());
     for (size_t r = 0; r < _deck.reference_nodes.size(); ++r)
     {
       const io::DeckInfo::ReferenceNode& node = _deck.reference_nodes[r];
-      const fem::ReferenceResult result =
-          fem::reference_result(dofs[static_cast<size_t>(node.coupling)], solution.u, reaction);
+      const fem::ReferenceResult& result = results[static_cast<size_t>(node.coupling)];
       for (int c = 0; c < 3; ++c)
       {
         u_dat(n_mesh + 3 * static_cast<la::Index>(r) + c) = result.value[node.first_dof + c];

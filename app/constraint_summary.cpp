@@ -4,6 +4,22 @@
 
 namespace feticon::app
 {
+std::vector<fem::ReferenceResult> reference_results(const fem::Problem& problem, const la::Vector& u,
+                                                    const la::Vector& reaction, fem::Kinematics kinematics)
+{
+  std::vector<fem::ReferenceResult> out;
+  const std::vector<fem::ReferenceDofs> dofs = problem.reference_dofs();
+  for (size_t j = 0; j < problem.couplings.size(); ++j)
+  {
+    const fem::Coupling& c = problem.couplings[j];
+    out.push_back(kinematics != fem::Kinematics::linear &&
+                          fem::has_finite_kinematics(problem.mesh, c, problem.eliminated)
+                      ? fem::finite_reference_result(problem.mesh, c, problem.eliminated, u, reaction)
+                      : fem::reference_result(dofs[j], u, reaction));
+  }
+  return out;
+}
+
 nlohmann::ordered_json coupling_summary(const fem::Problem& problem, const nonlinear::ContactSolution& solution,
                                         fem::Kinematics kinematics)
 {
@@ -11,11 +27,11 @@ nlohmann::ordered_json coupling_summary(const fem::Problem& problem, const nonli
   if (problem.couplings.empty() || solution.u.size() != 3 * problem.mesh.n_nodes())
     return out;
   const la::Vector reaction = calculix_reaction(problem, solution, kinematics);
-  const std::vector<fem::ReferenceDofs> dofs = problem.reference_dofs();
+  const std::vector<fem::ReferenceResult> results = reference_results(problem, solution.u, reaction, kinematics);
   static constexpr const char* kinds[] = {"kinematic", "distributing", "mean"};
   for (size_t j = 0; j < problem.couplings.size(); ++j)
   {
-    const fem::ReferenceResult r = fem::reference_result(dofs[j], solution.u, reaction);
+    const fem::ReferenceResult& r = results[j];
     const auto part = [&](const std::array<double, 6>& v, int first) {
       return nlohmann::ordered_json::array({v[first], v[first + 1], v[first + 2]});
     };

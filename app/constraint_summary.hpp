@@ -11,6 +11,12 @@
 
 namespace feticon::app
 {
+/// Every coupling's reference values and reactions at displacement u with CalculiX's RF
+/// `reaction` (calculix_reaction): finite rotations where large displacements turn a rank-6
+/// kinematic coupling (fem::finite_reference_result), else fem::reference_result.
+std::vector<fem::ReferenceResult> reference_results(const fem::Problem& problem, const la::Vector& u,
+                                                    const la::Vector& reaction, fem::Kinematics kinematics);
+
 /// An array of {name, kind, displacement, rotation, force, moment} (m, rad, N, N m); empty if
 /// the problem has no coupling.
 nlohmann::ordered_json coupling_summary(const fem::Problem& problem, const nonlinear::ContactSolution& solution,

@@ -1,5 +1,7 @@
 #include "contact/coupling_rows.hpp"
 
+#include <algorithm>
+#include <map>
 #include <sstream>
 
 namespace feticon::contact
@@ -19,8 +21,9 @@ std::vector<CouplingReport> couple_surfaces(fem::Problem& problem)
         if (block == &problem.equations || &term == &equation.terms.front())
           taken[3 * static_cast<size_t>(term.node) + term.component] = 1;
   std::vector<CouplingReport> out;
-  for (const fem::Coupling& coupling : problem.couplings)
+  for (size_t j = 0; j < problem.couplings.size(); ++j)
   {
+    const fem::Coupling& coupling = problem.couplings[j];
     if (coupling.kind != fem::CouplingKind::kinematic)
       continue;
     CouplingReport& report = out.emplace_back();
@@ -42,8 +45,51 @@ std::vector<CouplingReport> couple_surfaces(fem::Problem& problem)
         equation.terms.push_back({static_cast<int32_t>(row.anchors.dofs[k] / 3),
                                   static_cast<int>(row.anchors.dofs[k] % 3), -row.anchors.coefficients[k]});
       problem.tie_equations.push_back(std::move(equation));
-      problem.tie_of_equation.push_back(-1);
+      problem.tie_of_equation.push_back(-1 - static_cast<int32_t>(j));
       ++report.rows;
+    }
+  }
+  return out;
+}
+
+bool has_finite_couplings(const fem::Problem& problem)
+{
+  return std::ranges::any_of(problem.couplings, [&](const fem::Coupling& c) {
+    return fem::has_finite_kinematics(problem.mesh, c, problem.eliminated);
+  });
+}
+
+CouplingLinearization linearize_couplings(const fem::Problem& problem, std::vector<fem::LinearEquation> ties,
+                                          const la::Vector& u)
+{
+  CouplingLinearization out{std::move(ties), problem.held_combinations()};
+  const size_t first_reference = out.held.size() - 6 * problem.couplings.size();
+  // The coupling rows close both lists in couple_surfaces' order (a step removes tie rows only,
+  // which come before them): row k of `ties` is row k + shift of problem.tie_equations.
+  const size_t shift = problem.tie_equations.size() - out.ties.size();
+  for (size_t j = 0; j < problem.couplings.size(); ++j)
+  {
+    const fem::Coupling& coupling = problem.couplings[j];
+    if (!fem::has_finite_kinematics(problem.mesh, coupling, problem.eliminated))
+      continue;
+    const fem::FiniteKinematics finite = fem::finite_kinematics(problem.mesh, coupling, problem.eliminated, u);
+    for (int d = 0; d < 6; ++d)
+      out.held[first_reference + 6 * j + static_cast<size_t>(d)] = finite.value[d];
+    std::map<int64_t, const fem::CouplingRow*> by_slave;
+    for (const fem::CouplingRow& r : finite.rows.rows)
+      by_slave.emplace(r.slave, &r);
+    for (size_t k = 0; k < out.ties.size(); ++k)
+    {
+      if (problem.tie_of_equation[k + shift] != -1 - static_cast<int32_t>(j))
+        continue;
+      fem::LinearEquation& equation = out.ties[k];
+      const fem::LinearEquation::Term slave = equation.terms.front();
+      const fem::CouplingRow& r = *by_slave.at(3 * int64_t{slave.node} + slave.component);
+      equation.terms.resize(1);
+      for (size_t a = 0; a < r.anchors.dofs.size(); ++a)
+        equation.terms.push_back({static_cast<int32_t>(r.anchors.dofs[a] / 3), static_cast<int>(r.anchors.dofs[a] % 3),
+                                  -r.anchors.coefficients[a]});
+      equation.rhs = r.rhs;
     }
   }
   return out;

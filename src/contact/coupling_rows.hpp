@@ -30,9 +30,27 @@ struct CouplingReport
   int64_t skipped_dofs = 0; ///< held by supports, named by an equation or slave of a row before
 };
 
-/// Appends the kinematic couplings' rows to problem.tie_equations (tie_of_equation -1) and
+/// Appends the kinematic couplings' rows to problem.tie_equations (tie_of_equation -1 - the
+/// coupling's index) and
 /// returns one report per kinematic coupling.
 std::vector<CouplingReport> couple_surfaces(fem::Problem& problem);
+
+/// Whether some kinematic coupling has a rigid motion of rank 6, which large displacements turn
+/// by finite rotations (fem::finite_kinematics).
+bool has_finite_couplings(const fem::Problem& problem);
+
+/// The rows and held combinations of a load step's equality block at displacement u with finite
+/// rotations: `ties` (problem.tie_equations_in_force of the step) with the rows of every rank-6
+/// kinematic coupling linearized at u (each with its rhs), and problem.held_combinations() with
+/// those couplings' reference DOFs linearized at u (with their offsets). Rebuilt every outer
+/// iteration, the rows hold x_i = X_ref + t + R (X_i - X_ref) once the iteration has converged.
+struct CouplingLinearization
+{
+  std::vector<fem::LinearEquation> ties;
+  std::vector<fem::DofCombination> held;
+};
+CouplingLinearization linearize_couplings(const fem::Problem& problem, std::vector<fem::LinearEquation> ties,
+                                          const la::Vector& u);
 
 /// "rigid body RB1: 25 nodes, 6 anchors, 69 rows".
 std::string describe(const CouplingReport& report);

@@ -115,7 +115,7 @@ std::vector<fem::ReducedEquation> held_combination_equations(const mesh::Mesh& m
       continue;
     const fem::DofCombination& combination = held.at(static_cast<size_t>(dof - 3 * int64_t{mesh.n_nodes()}));
     fem::ReducedEquation& eq = out.emplace_back();
-    eq.rhs = dirichlet.values(static_cast<la::Index>(k));
+    eq.rhs = dirichlet.values(static_cast<la::Index>(k)) + combination.offset;
     for (size_t t = 0; t < combination.dofs.size(); ++t)
     {
       const int64_t global = combination.dofs[t];

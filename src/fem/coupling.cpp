@@ -73,6 +73,37 @@ RigidMotion rigid_motion(const mesh::Mesh& mesh, const Coupling& coupling, const
   return out;
 }
 
+/// The rows of `rigid` with the arms turned by `rotation`: [e_c', ((R r) x e_c)' / length].
+Eigen::MatrixXd turned_motion(const mesh::Mesh& mesh, const Coupling& coupling, const RigidMotion& rigid,
+                              const Eigen::Matrix3d& rotation)
+{
+  Eigen::MatrixXd out(rigid.motion.rows(), 6);
+  for (size_t i = 0; i < rigid.dofs.size(); ++i)
+  {
+    const int64_t dof = rigid.dofs[i];
+    const int c = static_cast<int>(dof % 3);
+    const Eigen::Vector3d arm = rotation * (mesh.nodes.row(dof / 3).transpose() - coupling.reference);
+    out.row(static_cast<la::Index>(i)) << Eigen::RowVector3d::Unit(c),
+        arm.cross(Eigen::Vector3d::Unit(c)).transpose() / rigid.length;
+  }
+  return out;
+}
+
+/// exp of the spin w: Rodrigues' rotation by |w| about w.
+Eigen::Matrix3d rotation_of(const Eigen::Vector3d& w)
+{
+  const double angle = w.norm();
+  return angle == 0 ? Eigen::Matrix3d::Identity() : Eigen::AngleAxisd(angle, w / angle).toRotationMatrix();
+}
+
+/// Where the pose (t, R) puts component `dof`: (t + (R - I) r)_c, a displacement.
+double posed(const mesh::Mesh& mesh, const Coupling& coupling, const Eigen::Vector3d& t, const Eigen::Matrix3d& R,
+             int64_t dof)
+{
+  const Eigen::Vector3d arm = mesh.nodes.row(dof / 3).transpose() - coupling.reference;
+  return (t + R * arm - arm)(dof % 3);
+}
+
 /// x with G_A' x = rhs, if rhs lies in the rows of G_A (else empty).
 std::optional<Eigen::VectorXd> anchor_combination(const Eigen::ColPivHouseholderQR<Eigen::MatrixXd>& qr,
                                                   const Eigen::MatrixXd& anchor_motion, const Eigen::VectorXd& rhs)
@@ -270,6 +301,75 @@ KinematicRows kinematic_rows(const mesh::Mesh& mesh, const Coupling& coupling, c
   return out;
 }
 
+bool has_finite_kinematics(const mesh::Mesh& mesh, const Coupling& coupling, const std::array<bool, 3>& eliminated)
+{
+  return coupling.kind == CouplingKind::kinematic && rigid_motion(mesh, coupling, eliminated).anchors.size() == 6;
+}
+
+FiniteKinematics finite_kinematics(const mesh::Mesh& mesh, const Coupling& coupling,
+                                   const std::array<bool, 3>& eliminated, const la::Vector& u)
+{
+  const RigidMotion rigid = rigid_motion(mesh, coupling, eliminated);
+  FETICON_CHECK(rigid.anchors.size() == 6,
+                coupling.name << ": finite rotations need a rigid motion of rank 6, it has " << rigid.anchors.size());
+  std::vector<int64_t> anchor_dofs;
+  for (const int32_t a : rigid.anchors)
+    anchor_dofs.push_back(rigid.dofs[static_cast<size_t>(a)]);
+  FiniteKinematics out;
+  // The pose that puts the six anchor components where u has them (Newton; quadratic from the
+  // identity for any rotation below a half turn).
+  Eigen::Matrix<double, 6, 6> jacobian;
+  Eigen::Matrix<double, 6, 1> misfit;
+  double scale = rigid.length;
+  for (const int64_t dof : anchor_dofs)
+    scale = std::max(scale, std::abs(u(dof)));
+  for (int iteration = 0;; ++iteration)
+  {
+    const Eigen::MatrixXd turned = turned_motion(mesh, coupling, rigid, out.rotation);
+    for (int k = 0; k < 6; ++k)
+    {
+      misfit(k) = u(anchor_dofs[k]) - posed(mesh, coupling, out.translation, out.rotation, anchor_dofs[k]);
+      jacobian.row(k) = turned.row(rigid.anchors[k]);
+    }
+    if (misfit.norm() <= 1e-14 * scale)
+      break;
+    FETICON_CHECK(iteration < 50 && misfit.allFinite(),
+                  coupling.name << ": the rigid pose of its anchors does not converge (misfit " << misfit.norm()
+                                << " m)");
+    const Eigen::Matrix<double, 6, 1> step = jacobian.fullPivLu().solve(misfit);
+    out.translation += step.head<3>();
+    out.rotation = rotation_of(step.tail<3>() / rigid.length) * out.rotation;
+  }
+  const Eigen::MatrixXd turned = turned_motion(mesh, coupling, rigid, out.rotation);
+  Eigen::MatrixXd anchor_motion(6, 6);
+  for (int k = 0; k < 6; ++k)
+    anchor_motion.row(k) = turned.row(rigid.anchors[k]);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(anchor_motion.transpose());
+  std::vector<char> is_anchor(rigid.dofs.size(), 0);
+  for (const int32_t a : rigid.anchors)
+    is_anchor[static_cast<size_t>(a)] = 1;
+  out.rows.rank = 6;
+  for (size_t i = 0; i < rigid.dofs.size(); ++i)
+  {
+    if (is_anchor[i])
+      continue;
+    const Eigen::VectorXd alpha = qr.solve(Eigen::VectorXd(turned.row(static_cast<la::Index>(i)).transpose()));
+    CouplingRow row{rigid.dofs[i], combination(anchor_dofs, alpha)};
+    const double departure = u(rigid.dofs[i]) - posed(mesh, coupling, out.translation, out.rotation, rigid.dofs[i]);
+    row.rhs = u(row.slave) - row.anchors.of(u) - departure;
+    out.rows.rows.push_back(std::move(row));
+  }
+  const Eigen::AngleAxisd turn(out.rotation);
+  const Eigen::Vector3d rotation_vector = turn.angle() * turn.axis();
+  for (int d = 0; d < 6; ++d)
+  {
+    const Eigen::VectorXd beta = qr.solve(Eigen::VectorXd(Eigen::VectorXd::Unit(6, d)));
+    out.value[d] = combination(anchor_dofs, beta, d < 3 ? 1 : 1 / rigid.length);
+    out.value[d].offset = out.value[d].of(u) - (d < 3 ? out.translation(d) : rotation_vector(d - 3));
+  }
+  return out;
+}
+
 ReferenceResult reference_result(const ReferenceDofs& dofs, const la::Vector& u, const la::Vector& rho)
 {
   ReferenceResult out;
@@ -277,6 +377,30 @@ ReferenceResult reference_result(const ReferenceDofs& dofs, const la::Vector& u,
   {
     out.value[d] = dofs.value[d].of(u);
     out.reaction[d] = dofs.unit_motion[d].of(rho);
+  }
+  return out;
+}
+
+ReferenceResult finite_reference_result(const mesh::Mesh& mesh, const Coupling& coupling,
+                                        const std::array<bool, 3>& eliminated, const la::Vector& u,
+                                        const la::Vector& rho)
+{
+  const FiniteKinematics pose = finite_kinematics(mesh, coupling, eliminated, u);
+  const Eigen::AngleAxisd turn(pose.rotation);
+  ReferenceResult out;
+  for (int d = 0; d < 3; ++d)
+  {
+    out.value[d] = pose.translation(d);
+    out.value[3 + d] = turn.angle() * turn.axis()(d);
+  }
+  for (const int64_t dof : rigid_motion(mesh, coupling, eliminated).dofs)
+  {
+    const int c = static_cast<int>(dof % 3);
+    const Eigen::Vector3d arm = pose.rotation * (mesh.nodes.row(dof / 3).transpose() - coupling.reference);
+    out.reaction[c] += rho(dof);
+    const Eigen::Vector3d moment = arm.cross(rho(dof) * Eigen::Vector3d::Unit(c));
+    for (int d = 0; d < 3; ++d)
+      out.reaction[3 + d] += moment(d);
   }
   return out;
 }

@@ -8,7 +8,8 @@
 /// subdomain for it and every solver takes a coupling as rows, held combinations and forces:
 /// - kinematic (*RIGID BODY, *KINEMATIC): the coupled nodes' components c (all three, or those
 ///   *KINEMATIC lists) follow the rigid motion u_i = t + theta x (X_i - X_ref), linearized
-///   (small rotations; CalculiX's rigid-body MPCs turn the body by finite rotations under NLGEOM).
+///   (small rotations; large displacements turn a coupling of rank 6 by finite rotations,
+///   finite_kinematics, as CalculiX's rigid-body MPCs do under NLGEOM).
 ///   The motion G q (q = (t, theta)) of the coupled components has rank k <= 6: k anchor
 ///   components A (a column-pivoted QR of G' picks them, well spread) carry it, and every other
 ///   coupled component s gets the row u_s - alpha_s' u_A = 0, alpha_s solving G_A' alpha_s = G_s',
@@ -85,6 +86,9 @@ struct DofCombination
 {
   std::vector<int64_t> dofs;
   std::vector<double> coefficients;
+  /// Held as sum a_k u_k = value + offset: a combination linearized at a displacement (finite
+  /// rotations, finite_kinematics) moves its target by what the linearization misses there.
+  double offset = 0;
   bool empty() const { return dofs.empty(); }
   double of(const la::Vector& u) const;
 };
@@ -107,6 +111,7 @@ struct CouplingRow
 {
   int64_t slave;
   DofCombination anchors; ///< the alphas, on the anchor DOFs
+  double rhs = 0;         ///< u_s - alpha' u_A = rhs (0 but linearized at a displacement)
 };
 
 /// Reference DOFs and rows of `coupling` on `mesh` (reference configuration).
@@ -122,6 +127,28 @@ struct KinematicRows
 };
 KinematicRows kinematic_rows(const mesh::Mesh& mesh, const Coupling& coupling, const std::array<bool, 3>& eliminated);
 
+/// Finite rotations (large displacements): the pose of a kinematic coupling of rank 6 at
+/// displacement u, x_i = X_ref + t + R (X_i - X_ref), fitted to its anchors exactly (Newton from
+/// the identity, spin updates R <- exp(dw) R), and at that pose its rows and reference DOFs
+/// linearized: the motion's rows turned, [e_c', ((R r_i) x e_c)'], alpha from them, and each
+/// row's rhs u_s - alpha' u_A - g_s (g_s the slave's departure from the pose), so that the row
+/// holds the finite rigidity once the iteration is done; a reference DOF's combination the
+/// increment of t or of the spin, its offset what the increment misses of t or of the rotation
+/// vector log R. The same slaves and anchors as kinematic_rows (their order too).
+struct FiniteKinematics
+{
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  KinematicRows rows;
+  std::array<DofCombination, 6> value;
+};
+/// @throws feticon::Error naming the coupling if its rigid motion has rank below 6 (finite
+///         rotations need all six) or the anchors' fit does not converge
+FiniteKinematics finite_kinematics(const mesh::Mesh& mesh, const Coupling& coupling,
+                                   const std::array<bool, 3>& eliminated, const la::Vector& u);
+/// Whether finite_kinematics applies: kinematic, rank 6.
+bool has_finite_kinematics(const mesh::Mesh& mesh, const Coupling& coupling, const std::array<bool, 3>& eliminated);
+
 /// A reference node's six values and reactions at displacement u (3 per mesh node) with nodal
 /// forces rho (the forces the coupled nodes receive beyond their elements': f_int - f_ext, or
 /// CalculiX's RF, which adds the applied loads): value d from ReferenceDofs::value (0 where it is
@@ -132,6 +159,13 @@ struct ReferenceResult
   std::array<double, 6> reaction{};
 };
 ReferenceResult reference_result(const ReferenceDofs& dofs, const la::Vector& u, const la::Vector& rho);
+
+/// reference_result at finite rotations (has_finite_kinematics, large displacements): the pose's
+/// t and rotation vector (log R), the reactions on the turned arms (moments about the displaced
+/// reference point).
+ReferenceResult finite_reference_result(const mesh::Mesh& mesh, const Coupling& coupling,
+                                        const std::array<bool, 3>& eliminated, const la::Vector& u,
+                                        const la::Vector& rho);
 
 /// "DOF 4 (rotation about x)" for messages, dof 0-based.
 std::string describe_reference_dof(int dof);

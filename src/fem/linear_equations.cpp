@@ -20,6 +20,7 @@ std::vector<ReducedEquation> reduce_equations(const std::vector<LinearEquation>&
     // Summed per DOF, with the sum of magnitudes that decides whether a sum cancelled.
     std::map<int64_t, std::pair<double, double>> free_terms;
     ReducedEquation reduced;
+    reduced.rhs = equations[e].rhs;
     for (const LinearEquation::Term& term : equations[e].terms)
     {
       FETICON_CHECK(term.node >= 0 && 3 * static_cast<int64_t>(term.node) < n_dofs && term.component >= 0 &&

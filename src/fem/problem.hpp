@@ -27,6 +27,9 @@ struct LinearEquation
     double coefficient;
   };
   std::vector<Term> terms;
+  /// sum_k a_k u_k = rhs: 0 but for a coupling's row linearized at a displacement (finite
+  /// rotations, contact/coupling_rows.hpp)
+  double rhs = 0;
 };
 
 /// Slave and master face sets of one contact pair (node-to-segment: slave nodes against

@@ -8,6 +8,7 @@
 #include "decomposition/constraint_rows.hpp"
 #include "decomposition/explicit_boundary_operators.hpp"
 #include "decomposition/subdomain_operators.hpp"
+#include "contact/coupling_rows.hpp"
 #include "contact/tangential_rows.hpp"
 #include "dual/contact_qp.hpp"
 #include "dual/dual_penalty_problem.hpp"
@@ -394,7 +395,12 @@ private:
   /// and those the current load step's holds (unset before the first).
   const std::vector<int64_t> _ever_held;
   std::optional<std::vector<int64_t>> _held;
-  std::vector<int32_t> _ties_out;    ///< the ties out of force in the current load step's step
+  std::vector<int32_t> _ties_out; ///< the ties out of force in the current load step's step
+  /// The current load step's held DOFs and values (its equality rows' target).
+  fem::ConstrainedDofs _target;
+  /// Large displacements turn rank-6 kinematic couplings by finite rotations: their rows are
+  /// linearized again at every outer iteration (contact/coupling_rows.hpp).
+  bool _finite_couplings = false;
   std::vector<char> _schur_boundary; ///< empty without the Dirichlet preconditioner
   std::unique_ptr<decomposition::SchurComplements> _schur;
   std::unique_ptr<decomposition::ExplicitBoundaryOperators> _explicit_operators;
@@ -467,6 +473,7 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
       _ever_held(_history.dofs()), _temperatures(problem)
 {
   _out.n_subdomains = _decomp->n_subdomains();
+  _finite_couplings = !_small_displacements && contact::has_finite_couplings(problem);
   for (const int stage : _history.stages_in_one_step())
     log::info("step " + std::to_string(stage) +
               " asks for several increments and takes one: with small displacements, elastic bodies and no "
@@ -725,6 +732,7 @@ void FetiContactSolve::begin_load_step(int step, double)
   _ties_out = ties_out;
   _f_step = _history.combine(step, _f_terms_stacked);
   _f_step_norm = _history.external_force_norm(step);
+  _target = target;
   _equality = std::make_unique<decomposition::EqualityRows>(decomposition::build_equality_rows(
       *_decomp, target, _problem.equations, _problem.tie_equations_in_force(stage), _problem.held_combinations()));
   _n_equality = _equality->n_global();
@@ -844,6 +852,15 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
     _multipliers.forget_operator_norm();
   }
   const la::Vector u_global = _decomp->gather_mean(_decomp->gather_stacked(_u));
+  if (_finite_couplings)
+  {
+    // The couplings' rows at this iterate (the same rows, so the same ids and count).
+    const size_t stage = _history.point(_step).stage - 1;
+    contact::CouplingLinearization now =
+        contact::linearize_couplings(_problem, _problem.tie_equations_in_force(stage), u_global);
+    _equality = std::make_unique<decomposition::EqualityRows>(
+        decomposition::build_equality_rows(*_decomp, _target, _problem.equations, now.ties, now.held));
+  }
   contact::ContactConstraints contact_rows = search_contact(u_global);
   qp::QpCounters rough_counters;
   if (_settings.first_rows_reached && !_small_displacements && k == 1 && u_global.isZero(0.0) &&

@@ -9,6 +9,7 @@
 #include "fem/problem.hpp"
 #include "io/settings.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -139,10 +140,19 @@ struct SolverSettings
   /// The stiffness update on `problem`: `stiffness`, or for newton.stiffness = auto the
   /// consistent tangent at every outer iteration where a body is plastic (on the Hertz J2
   /// half-space 5 outer iterations and 4.0 s against K_0's 18, not converged, in 6.3 s:
-  /// docs/materials.md), K_0 otherwise.
+  /// docs/materials.md) or where large displacements turn a kinematic coupling by finite
+  /// rotations (a bar's rigid end turned 30 degrees in ten increments: 4-5 outer iterations each
+  /// against K_0's 12-15, which stalled at a twelfth of the way: docs/contact.md, "Couplings"),
+  /// K_0 otherwise.
   StiffnessUpdate stiffness_of(const fem::Problem& problem) const
   {
-    return stiffness_auto && problem.has_inelastic_or_hyperelastic_body() ? StiffnessUpdate::iteration : stiffness;
+    if (!stiffness_auto)
+      return stiffness;
+    const bool turned =
+        kinematics != fem::Kinematics::linear && std::ranges::any_of(problem.couplings, [&](const fem::Coupling& c) {
+          return fem::has_finite_kinematics(problem.mesh, c, problem.eliminated);
+        });
+    return problem.has_inelastic_or_hyperelastic_body() || turned ? StiffnessUpdate::iteration : stiffness;
   }
   /// Inexact outer iterations (large displacements): the QP of outer iteration k > 1 stops at
   /// rtol = max(dual.rtol, min(max_forcing_rtol, forcing * ||du_{k-1}|| / ||u||)), the

@@ -11,11 +11,14 @@
 #    1.7e-8); the reference node's printed RF is the moment. An axial force F = 1e6 N spread by a
 #    *DISTRIBUTING coupling (consistent nodal areas): the end face's u_x = F L / (E A) = 1e-2 m,
 #    uniform, to 1e-6. The kinematic bar on 2 MPI ranks with 4 subdomains: the same rotation.
+#    Finite rotations: the *RIGID BODY end turned 30 degrees under NLGEOM keeps its face rigid and
+#    gives CalculiX 2.20's answer on the same deck (below).
 #  - CalculiX's own output (tests/data/calculix, calculix-ccx-test 2.11): beamprb (a *RIGID BODY
 #    tip of a C3D20R cantilever under a moment on its ROT NODE) against beamprb.frd.ref, every
 #    node, to 1e-5 of max |u| (the .frd's six digits; measured 5.4e-7); distcoup (a *DISTRIBUTING
 #    COUPLING spreading a force over nine nodes) against distcoup.dat.ref's reactions of the
-#    clamped nodes to 1e-5 of the largest (measured 2.2e-6).
+#    clamped nodes to 1e-5 of the largest (measured 2.2e-6); beamrb (the tip turned 10 degrees
+#    under NLGEOM) against beamrb.dat.ref, reference nodes included, to 1e-6 (measured 1.1e-7).
 #  - A problem file's couplings (hex8 bar, nu = 0: uniaxial fields exact): a kinematic coupling
 #    holding the end face's reference translation at 1e-3 m transmits E A u / L = 1e5 N to 1e-6
 #    (measured 3e-8); a distributing force F gives the end face F L / (E A) to 1e-6.
@@ -62,6 +65,59 @@ done
 grep -q "^     10001 .* 1.200000E-03 " "$work/rigid-moment/rigid-moment.dat"
 grep -q "^     10001 .* 1.000000E+04 " "$work/rigid-moment/rigid-moment.dat"
 
+# Finite rotations: the rigid end turned 30 degrees about y under NLGEOM (ten increments). The
+# end face stays rigid (every distance between its nodes to 5e-6, the .dat's digits; linear rows
+# would stretch it by theta^2 / 2 = 0.137) and the reference node's
+# displacement and moment are CalculiX 2.20's on the same deck (-4.539797e-01, -2.557848e+00 m,
+# 4.358234e+06 N m, 2026-12-03) to 1e-6 (its seven digits; measured 1.3e-8); the arc of beam
+# theory, L (sin t / t - 1) = -0.4507 and -L (1 - cos t) / t = -2.5587, to 1 %.
+deck rigid-rotation
+"$feticon" run "$work/rigid-rotation.inp" -o "$work/rotation" "${quiet[@]}" 2> /dev/null
+/usr/bin/python3 - "$work/rotation/rigid-rotation.dat" "$work/rigid-rotation.inp" "$src/tests/tools" <<'PY'
+import itertools, math, sys
+sys.path.insert(0, sys.argv[3])
+from calculix_dat import parse_dat
+blocks = parse_dat(sys.argv[1])["blocks"]
+last = lambda kind, name: [b for b in blocks if b["kind"] == kind and b["set"] == name][-1]["rows"]
+ref = {r[0]: r[1:] for r in last("displacements", "REF")}
+moment = {r[0]: r[1:] for r in last("forces", "REF")}[10001][1]
+theta = math.radians(30)
+assert abs(ref[10001][1] - theta) <= 1e-7, ref[10001]  # the .dat's seven digits
+checks = [("u_x", ref[10000][0], -4.539797e-01), ("u_z", ref[10000][2], -2.557848e+00), ("moment", moment, 4.358234e+06)]
+for name, mine, ccx in checks:
+    print(f"rigid-rotation: reference {name} {mine:.7e} against CalculiX's {ccx:.7e}")
+    assert abs(mine / ccx - 1) <= 1e-6, name
+arc = (10 * (math.sin(theta) / theta - 1), -10 * (1 - math.cos(theta)) / theta)
+assert abs(ref[10000][0] / arc[0] - 1) <= 1e-2 and abs(ref[10000][2] / arc[1] - 1) <= 1e-2, arc
+nodes, reading = {}, False
+for line in open(sys.argv[2]):
+    if line.startswith("*"):
+        reading = line.upper().startswith("*NODE") and "PRINT" not in line.upper()
+        continue
+    if reading:
+        f = line.split(",")
+        nodes[int(f[0])] = [float(v) for v in f[1:4]]
+end = {r[0]: [x + u for x, u in zip(nodes[r[0]], r[1:])] for r in last("displacements", "END")}
+change = max(abs(math.dist(end[a], end[b]) / math.dist(nodes[a], nodes[b]) - 1)
+             for a, b in itertools.combinations(end, 2))
+# The .dat's seven digits: 5e-7 m on a coordinate, on distances of 0.5 m at least.
+print(f"rigid-rotation: the end face's distances change by {change:.2g} (bound 5e-6; linear rows: 0.137)")
+assert change <= 5e-6
+PY
+
+# ... and the same MPRGP steps and answer with 4 subdomains on 1 and 2 MPI ranks.
+for np in 1 2; do
+  mpirun --oversubscribe -np $np "$feticon" run "$work/rigid-rotation.inp" -o "$work/rotation_np$np" "${quiet[@]}" \
+    --set subdomains=4 2> /dev/null
+done
+/usr/bin/python3 - "$work/rotation_np1/summary.json" "$work/rotation_np2/summary.json" <<'PY'
+import json, sys
+one, two = (json.load(open(p)) for p in sys.argv[1:])
+print(f"rigid-rotation, 4 subdomains: {one['qp']['iterations']} and {two['qp']['iterations']} MPRGP steps on 1 and 2 ranks")
+assert one["qp"]["iterations"] == two["qp"]["iterations"]
+assert one["couplings"] == two["couplings"]
+PY
+
 mpirun --oversubscribe -np 2 "$feticon" run "$work/kinematic-moment.inp" -o "$work/mpi" "${quiet[@]}" \
   --set subdomains=4 2> /dev/null
 check "$work/mpi" "c['rotation'][1] / (1e4 * 10 / $EI) - 1" 1e-6 "2 ranks, 4 subdomains: end rotation"
@@ -85,6 +141,16 @@ import json, sys
 f = json.loads(sys.argv[1])
 print(f"beamprb: {f['relative']:.3g} of max |u| from CalculiX's .frd.ref ({f['nodes']} nodes, bound 1e-5)")
 sys.exit(0 if f["relative"] <= 1e-5 and f["nodes"] == 261 else 1)
+PY
+# beamrb: the *RIGID BODY tip turned 10 degrees about z by its ROT NODE under NLGEOM (finite
+# rotations): CalculiX's .dat.ref, every node and the reference nodes, to 1e-6 (measured 1.1e-7).
+"$feticon" run "$data/beamrb.inp" -o "$work/beamrb" "${quiet[@]}" 2> /dev/null
+/usr/bin/python3 - "$("$src/tests/tools/calculix_reference_agreement.py" "$data/beamrb.inp" "$data/beamrb.dat.ref" \
+  "$work/beamrb")" <<'PY'
+import json, sys
+f = json.loads(sys.argv[1])
+print(f"beamrb: {f['relative']:.3g} of max |u| from CalculiX's .dat.ref ({f['nodes']} nodes, bound 1e-6)")
+sys.exit(0 if f["relative"] <= 1e-6 and f["nodes"] == 263 else 1)
 PY
 "$feticon" run "$data/distcoup.inp" -o "$work/distcoup" "${quiet[@]}" 2> /dev/null
 /usr/bin/python3 - "$work/distcoup/distcoup.dat" "$data/distcoup.dat.ref" "$src/tests/tools" <<'PY'

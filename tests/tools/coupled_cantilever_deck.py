@@ -8,7 +8,9 @@ E = 1e9 Pa, nu = 0, clamped at x = 0; its end face x = L is the surface TIP, the
 KIND: kinematic-moment (*COUPLING + *KINEMATIC 1-3, a moment M = 1e4 N m about y on DOF 5),
       distributing-force (*COUPLING + *DISTRIBUTING 1-6, an axial force F = 1e6 N on DOF 1),
       rigid-moment (*RIGID BODY of the end face's nodes, REF NODE 10000, ROT NODE 10001, the
-      moment on the ROT NODE's DOF 2).
+      moment on the ROT NODE's DOF 2),
+      rigid-rotation (the same rigid body turned 30 degrees about y by its ROT NODE's DOF 2, held,
+      under NLGEOM in ten increments: finite rotations).
 
 With nu = 0 pure bending and pure tension have quadratic and linear displacements (no
 anticlastic curvature, no lateral contraction), which C3D20 holds exactly: the end rotation
@@ -42,7 +44,7 @@ def main(argv):
     for p in sorted(used, key=lambda p: label(*p)):
         lines.append(f"{label(*p)}, {p[0] * h / 2!r}, {p[1] / 2!r}, {p[2] / 2!r}")
     lines.append(f"10000, {length!r}, 0.5, 0.5")
-    if kind == "rigid-moment":
+    if kind.startswith("rigid"):
         lines.append("10001, 0., 0., 0.")
     lines.append("*ELEMENT, TYPE=C3D20, ELSET=BAR")
     for n, nodes in enumerate(cells):
@@ -53,7 +55,7 @@ def main(argv):
     lines.append("*NSET, NSET=END")
     lines += [str(label(*p)) for p in sorted(used) if p[0] == 2 * nx]
     lines.append("*NSET, NSET=REF")
-    lines.append("10000" + (", 10001" if kind == "rigid-moment" else ""))
+    lines.append("10000" + (", 10001" if kind.startswith("rigid") else ""))
     lines += ["*SURFACE, NAME=TIP, TYPE=ELEMENT", f"{nx}, S4"]
     lines += ["*MATERIAL, NAME=M", "*ELASTIC", f"{E!r}, 0.0", "*SOLID SECTION, ELSET=BAR, MATERIAL=M"]
     lines += ["*BOUNDARY", "CLAMP, 1, 3"]
@@ -63,13 +65,16 @@ def main(argv):
     elif kind == "distributing-force":
         lines += ["*COUPLING, REF NODE=10000, SURFACE=TIP, CONSTRAINT NAME=TIPC", "*DISTRIBUTING", "1, 6"]
         load = f"10000, 1, {F!r}"
-    elif kind == "rigid-moment":
+    elif kind.startswith("rigid"):
         lines += ["*RIGID BODY, NSET=END, REF NODE=10000, ROT NODE=10001"]
         load = f"10001, 2, {M!r}"
     else:
         sys.exit(f"unknown kind {kind}")
-    lines += ["*STEP", "*STATIC", "*CLOAD", load, "*NODE PRINT, NSET=REF", "U, RF", "*NODE PRINT, NSET=END", "U",
-              "*END STEP"]
+    if kind == "rigid-rotation":
+        lines += ["*STEP, NLGEOM", "*STATIC, DIRECT", "0.1, 1.", "*BOUNDARY", "10001, 2, 2, 0.5235987755982988"]
+    else:
+        lines += ["*STEP", "*STATIC", "*CLOAD", load]
+    lines += ["*NODE PRINT, NSET=REF", "U, RF", "*NODE PRINT, NSET=END", "U", "*END STEP"]
     with open(out, "w") as f:
         f.write("\n".join(lines) + "\n")
 
