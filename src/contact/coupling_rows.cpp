@@ -52,13 +52,6 @@ std::vector<CouplingReport> couple_surfaces(fem::Problem& problem)
   return out;
 }
 
-bool has_finite_couplings(const fem::Problem& problem)
-{
-  return std::ranges::any_of(problem.couplings, [&](const fem::Coupling& c) {
-    return fem::has_finite_kinematics(problem.mesh, c, problem.eliminated);
-  });
-}
-
 CouplingLinearization linearize_couplings(const fem::Problem& problem, std::vector<fem::LinearEquation> ties,
                                           const la::Vector& u)
 {

@@ -35,10 +35,6 @@ struct CouplingReport
 /// returns one report per kinematic coupling.
 std::vector<CouplingReport> couple_surfaces(fem::Problem& problem);
 
-/// Whether some kinematic coupling has a rigid motion of rank 6, which large displacements turn
-/// by finite rotations (fem::finite_kinematics).
-bool has_finite_couplings(const fem::Problem& problem);
-
 /// The rows and held combinations of a load step's equality block at displacement u with finite
 /// rotations: `ties` (problem.tie_equations_in_force of the step) with the rows of every rank-6
 /// kinematic coupling linearized at u (each with its rhs), and problem.held_combinations() with

@@ -117,6 +117,11 @@ std::vector<LinearEquation> Problem::tie_equations_in_force(size_t step) const
   return out;
 }
 
+bool Problem::has_finite_couplings() const
+{
+  return std::ranges::any_of(couplings, [&](const Coupling& c) { return has_finite_kinematics(mesh, c, eliminated); });
+}
+
 bool Problem::has_plastic_body() const
 {
   return std::ranges::any_of(materials, [](const Material& m) { return m.is_plastic(); });

@@ -141,6 +141,9 @@ struct Problem
   la::Vector extended(const la::Vector& u) const;
   /// Some step gives temperatures (the thermal strain then enters the elements).
   bool has_temperatures() const;
+  /// True if some kinematic coupling has a rigid motion of rank 6, which large displacements turn
+  /// by finite rotations (fem::finite_kinematics).
+  bool has_finite_couplings() const;
   /// True if some body's material is plastic (Material::is_plastic).
   bool has_plastic_body() const;
   /// True if some body is plastic or hyperelastic: its tangent drifts away from K_0.

@@ -473,7 +473,7 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
       _ever_held(_history.dofs()), _temperatures(problem)
 {
   _out.n_subdomains = _decomp->n_subdomains();
-  _finite_couplings = !_small_displacements && contact::has_finite_couplings(problem);
+  _finite_couplings = !_small_displacements && problem.has_finite_couplings();
   for (const int stage : _history.stages_in_one_step())
     log::info("step " + std::to_string(stage) +
               " asks for several increments and takes one: with small displacements, elastic bodies and no "

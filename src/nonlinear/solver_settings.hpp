@@ -9,7 +9,6 @@
 #include "fem/problem.hpp"
 #include "io/settings.hpp"
 
-#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -146,13 +145,9 @@ struct SolverSettings
   /// K_0 otherwise.
   StiffnessUpdate stiffness_of(const fem::Problem& problem) const
   {
-    if (!stiffness_auto)
-      return stiffness;
-    const bool turned =
-        kinematics != fem::Kinematics::linear && std::ranges::any_of(problem.couplings, [&](const fem::Coupling& c) {
-          return fem::has_finite_kinematics(problem.mesh, c, problem.eliminated);
-        });
-    return problem.has_inelastic_or_hyperelastic_body() || turned ? StiffnessUpdate::iteration : stiffness;
+    const bool turned = kinematics != fem::Kinematics::linear && problem.has_finite_couplings();
+    return stiffness_auto && (problem.has_inelastic_or_hyperelastic_body() || turned) ? StiffnessUpdate::iteration
+                                                                                      : stiffness;
   }
   /// Inexact outer iterations (large displacements): the QP of outer iteration k > 1 stops at
   /// rtol = max(dual.rtol, min(max_forcing_rtol, forcing * ||du_{k-1}|| / ||u||)), the
