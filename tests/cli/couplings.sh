@@ -204,6 +204,29 @@ print(f"problem file, distributing: end face u_x vs F L / (E A): {error:.3g} (bo
 sys.exit(0 if error <= 1e-6 and end.sum() == 9 else 1)
 PY
 
+# Plane strain: a 10 x 1 CPE4 strip (20 x 2 cells, nu = 0) clamped at x = 0, its end a *RIGID
+# BODY (rank 3 in the plane) under a moment of 1e3 N m on the ROT NODE's DOF 3: the end rotation
+# and the reference node's u_y of CalculiX 2.20 on the same deck (1.066667e-4 rad, 5.333333e-4 m,
+# 2026-12-03; CPE4's shear locking leaves beam theory's 1.2e-4 rad 11 % away) to 1e-6.
+/usr/bin/python3 - "$work/strip.inp" <<'PY'
+import sys
+nx, ny = 20, 2
+label = lambda i, j: j * (nx + 1) + i + 1
+lines = ["*NODE"] + [f"{label(i, j)}, {i * 0.5}, {j * 0.5}, 0.0" for j in range(ny + 1) for i in range(nx + 1)]
+lines += ["10000, 10.0, 0.5, 0.0", "10001, 0, 0, 0", "*ELEMENT, TYPE=CPE4, ELSET=EALL"]
+cells = [(i, j) for j in range(ny) for i in range(nx)]
+lines += [f"{e + 1}, {label(i, j)}, {label(i + 1, j)}, {label(i + 1, j + 1)}, {label(i, j + 1)}" for e, (i, j) in enumerate(cells)]
+lines += ["*NSET, NSET=CLAMP"] + [str(label(0, j)) for j in range(ny + 1)]
+lines += ["*NSET, NSET=END"] + [str(label(nx, j)) for j in range(ny + 1)] + ["*NSET, NSET=REF", "10000, 10001"]
+lines += ["*MATERIAL, NAME=M", "*ELASTIC", "1e9, 0.0", "*SOLID SECTION, ELSET=EALL, MATERIAL=M", "1.0", "*BOUNDARY",
+          "CLAMP, 1, 2", "*RIGID BODY, NSET=END, REF NODE=10000, ROT NODE=10001", "*STEP", "*STATIC", "*CLOAD",
+          "10001, 3, 1000.", "*NODE PRINT, NSET=REF", "U, RF", "*END STEP"]
+open(sys.argv[1], "w").write("\n".join(lines) + "\n")
+PY
+"$feticon" run "$work/strip.inp" -o "$work/strip" "${quiet[@]}" 2> /dev/null
+check "$work/strip" "c['rotation'][2] / 1.066667e-4 - 1" 1e-6 "plane strain rigid body: end rotation vs CalculiX's"
+check "$work/strip" "c['displacement'][1] / 5.333333e-4 - 1" 1e-6 "plane strain rigid body: u_y vs CalculiX's"
+
 # Bad input: one line naming what is wrong, non-zero exit.
 bad() {
   local name="$1" pattern="$2"
