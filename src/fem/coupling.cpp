@@ -23,8 +23,10 @@ struct RigidMotion
   std::vector<int64_t> dofs;
   Eigen::MatrixXd motion; ///< dofs x 6
   double length = 1;
-  std::vector<int32_t> anchors;  ///< rows of `motion` that carry it, rank of them
-  Eigen::MatrixXd anchor_motion; ///< rank x 6: those rows
+  std::vector<int32_t> anchors;     ///< rows of `motion` that carry it, rank of them
+  std::vector<int64_t> anchor_dofs; ///< their DOFs
+  std::vector<char> is_anchor;      ///< per row
+  Eigen::MatrixXd anchor_motion;    ///< rank x 6: those rows
 };
 
 std::vector<int32_t> unique_nodes(const mesh::Mesh& mesh, const Coupling& coupling)
@@ -36,48 +38,11 @@ std::vector<int32_t> unique_nodes(const mesh::Mesh& mesh, const Coupling& coupli
   return nodes;
 }
 
-RigidMotion rigid_motion(const mesh::Mesh& mesh, const Coupling& coupling, const std::array<bool, 3>& eliminated)
-{
-  RigidMotion out;
-  const std::vector<int32_t> nodes = unique_nodes(mesh, coupling);
-  for (const int32_t n : nodes)
-    out.length = std::max(out.length, (mesh.nodes.row(n).transpose() - coupling.reference).norm());
-  std::vector<Eigen::Matrix<double, 1, 6>> rows;
-  for (const int32_t n : nodes)
-  {
-    const Eigen::Vector3d r = mesh.nodes.row(n).transpose() - coupling.reference;
-    for (int c = 0; c < 3; ++c)
-    {
-      if (!coupling.components[c] || eliminated[c])
-        continue;
-      Eigen::Matrix<double, 1, 6> row = Eigen::Matrix<double, 1, 6>::Zero();
-      row(c) = 1;
-      row.tail<3>() = r.cross(Eigen::Vector3d::Unit(c)).transpose() / out.length;
-      rows.push_back(row);
-      out.dofs.push_back(3 * int64_t{n} + c);
-    }
-  }
-  FETICON_CHECK(!rows.empty(), coupling.name << ": no component of its nodes is coupled");
-  out.motion.resize(static_cast<la::Index>(rows.size()), 6);
-  for (size_t i = 0; i < rows.size(); ++i)
-    out.motion.row(static_cast<la::Index>(i)) = rows[i];
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(out.motion.transpose());
-  qr.setThreshold(rank_tolerance);
-  const la::Index rank = qr.rank();
-  out.anchor_motion.resize(rank, 6);
-  for (la::Index k = 0; k < rank; ++k)
-  {
-    out.anchors.push_back(static_cast<int32_t>(qr.colsPermutation().indices()(k)));
-    out.anchor_motion.row(k) = out.motion.row(out.anchors.back());
-  }
-  return out;
-}
-
 /// The rows of `rigid` with the arms turned by `rotation`: [e_c', ((R r) x e_c)' / length].
 Eigen::MatrixXd turned_motion(const mesh::Mesh& mesh, const Coupling& coupling, const RigidMotion& rigid,
                               const Eigen::Matrix3d& rotation)
 {
-  Eigen::MatrixXd out(rigid.motion.rows(), 6);
+  Eigen::MatrixXd out(std::ssize(rigid.dofs), 6);
   for (size_t i = 0; i < rigid.dofs.size(); ++i)
   {
     const int64_t dof = rigid.dofs[i];
@@ -85,6 +50,34 @@ Eigen::MatrixXd turned_motion(const mesh::Mesh& mesh, const Coupling& coupling, 
     const Eigen::Vector3d arm = rotation * (mesh.nodes.row(dof / 3).transpose() - coupling.reference);
     out.row(static_cast<la::Index>(i)) << Eigen::RowVector3d::Unit(c),
         arm.cross(Eigen::Vector3d::Unit(c)).transpose() / rigid.length;
+  }
+  return out;
+}
+
+RigidMotion rigid_motion(const mesh::Mesh& mesh, const Coupling& coupling, const std::array<bool, 3>& eliminated)
+{
+  RigidMotion out;
+  for (const int32_t n : unique_nodes(mesh, coupling))
+  {
+    out.length = std::max(out.length, (mesh.nodes.row(n).transpose() - coupling.reference).norm());
+    for (int c = 0; c < 3; ++c)
+      if (coupling.components[c] && !eliminated[c])
+        out.dofs.push_back(3 * int64_t{n} + c);
+  }
+  FETICON_CHECK(!out.dofs.empty(), coupling.name << ": no component of its nodes is coupled");
+  out.motion = turned_motion(mesh, coupling, out, Eigen::Matrix3d::Identity());
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(out.motion.transpose());
+  qr.setThreshold(rank_tolerance);
+  const la::Index rank = qr.rank();
+  out.anchor_motion.resize(rank, 6);
+  out.is_anchor.assign(out.dofs.size(), 0);
+  for (la::Index k = 0; k < rank; ++k)
+  {
+    const int32_t a = static_cast<int32_t>(qr.colsPermutation().indices()(k));
+    out.anchors.push_back(a);
+    out.anchor_dofs.push_back(out.dofs[static_cast<size_t>(a)]);
+    out.is_anchor[static_cast<size_t>(a)] = 1;
+    out.anchor_motion.row(k) = out.motion.row(a);
   }
   return out;
 }
@@ -127,15 +120,33 @@ DofCombination combination(const std::vector<int64_t>& dofs, const Eigen::Vector
   return out;
 }
 
+/// One row u_s - alpha' u_A = 0 per coupled component but the anchors, alpha from `motion` (the
+/// rows of `rigid`, turned or not) and its anchor rows `anchor_motion`.
+std::vector<CouplingRow> slave_rows(const Coupling& coupling, const RigidMotion& rigid, const Eigen::MatrixXd& motion,
+                                    const Eigen::MatrixXd& anchor_motion)
+{
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(anchor_motion.transpose());
+  std::vector<CouplingRow> out;
+  for (size_t i = 0; i < rigid.dofs.size(); ++i)
+  {
+    if (rigid.is_anchor[i])
+      continue;
+    const std::optional<Eigen::VectorXd> alpha =
+        anchor_combination(qr, anchor_motion, motion.row(static_cast<la::Index>(i)).transpose());
+    FETICON_CHECK(alpha,
+                  coupling.name << ": the rigid motion of node " << rigid.dofs[i] / 3
+                                << " is not carried by the anchors (rank tolerance)");
+    out.push_back({rigid.dofs[i], combination(rigid.anchor_dofs, *alpha)});
+  }
+  return out;
+}
+
 ReferenceDofs kinematic_reference_dofs(const mesh::Mesh& mesh, const Coupling& coupling,
                                        const std::array<bool, 3>& eliminated)
 {
   const RigidMotion rigid = rigid_motion(mesh, coupling, eliminated);
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(rigid.anchor_motion.transpose());
   const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> gram(rigid.motion.transpose() * rigid.motion);
-  std::vector<int64_t> anchor_dofs;
-  for (const int32_t a : rigid.anchors)
-    anchor_dofs.push_back(rigid.dofs[static_cast<size_t>(a)]);
   ReferenceDofs out;
   for (int d = 0; d < 6; ++d)
   {
@@ -146,7 +157,7 @@ ReferenceDofs kinematic_reference_dofs(const mesh::Mesh& mesh, const Coupling& c
     // Generalized DOF d is length theta for a rotation: theta = q_d / length, and a moment M
     // does the work of a generalized force M / length.
     const double scale = d < 3 ? 1 : 1 / rigid.length;
-    out.value[d] = combination(anchor_dofs, *beta, scale);
+    out.value[d] = combination(rigid.anchor_dofs, *beta, scale);
     out.unit_load[d] = combination(rigid.dofs, rigid.motion * gram.solve(Eigen::VectorXd::Unit(6, d)), scale);
     out.unit_motion[d] = combination(rigid.dofs, rigid.motion.col(d), 1 / scale);
   }
@@ -278,27 +289,7 @@ KinematicRows kinematic_rows(const mesh::Mesh& mesh, const Coupling& coupling, c
   if (coupling.kind != CouplingKind::kinematic)
     return {};
   const RigidMotion rigid = rigid_motion(mesh, coupling, eliminated);
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(rigid.anchor_motion.transpose());
-  std::vector<int64_t> anchor_dofs;
-  for (const int32_t a : rigid.anchors)
-    anchor_dofs.push_back(rigid.dofs[static_cast<size_t>(a)]);
-  std::vector<char> is_anchor(rigid.dofs.size(), 0);
-  for (const int32_t a : rigid.anchors)
-    is_anchor[static_cast<size_t>(a)] = 1;
-  KinematicRows out;
-  out.rank = static_cast<int>(rigid.anchors.size());
-  for (size_t i = 0; i < rigid.dofs.size(); ++i)
-  {
-    if (is_anchor[i])
-      continue;
-    const std::optional<Eigen::VectorXd> alpha =
-        anchor_combination(qr, rigid.anchor_motion, rigid.motion.row(static_cast<la::Index>(i)).transpose());
-    FETICON_CHECK(alpha,
-                  coupling.name << ": the rigid motion of node " << rigid.dofs[i] / 3
-                                << " is not carried by the anchors (rank tolerance)");
-    out.rows.push_back({rigid.dofs[i], combination(anchor_dofs, *alpha)});
-  }
-  return out;
+  return {slave_rows(coupling, rigid, rigid.motion, rigid.anchor_motion), static_cast<int>(rigid.anchors.size())};
 }
 
 bool has_finite_kinematics(const mesh::Mesh& mesh, const Coupling& coupling, const std::array<bool, 3>& eliminated)
@@ -312,9 +303,7 @@ FiniteKinematics finite_kinematics(const mesh::Mesh& mesh, const Coupling& coupl
   const RigidMotion rigid = rigid_motion(mesh, coupling, eliminated);
   FETICON_CHECK(rigid.anchors.size() == 6,
                 coupling.name << ": finite rotations need a rigid motion of rank 6, it has " << rigid.anchors.size());
-  std::vector<int64_t> anchor_dofs;
-  for (const int32_t a : rigid.anchors)
-    anchor_dofs.push_back(rigid.dofs[static_cast<size_t>(a)]);
+  const std::vector<int64_t>& anchor_dofs = rigid.anchor_dofs;
   FiniteKinematics out;
   // The pose that puts the six anchor components where u has them (Newton; quadratic from the
   // identity for any rotation below a half turn).
@@ -344,21 +333,13 @@ FiniteKinematics finite_kinematics(const mesh::Mesh& mesh, const Coupling& coupl
   Eigen::MatrixXd anchor_motion(6, 6);
   for (int k = 0; k < 6; ++k)
     anchor_motion.row(k) = turned.row(rigid.anchors[k]);
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(anchor_motion.transpose());
-  std::vector<char> is_anchor(rigid.dofs.size(), 0);
-  for (const int32_t a : rigid.anchors)
-    is_anchor[static_cast<size_t>(a)] = 1;
-  out.rows.rank = 6;
-  for (size_t i = 0; i < rigid.dofs.size(); ++i)
+  out.rows = {slave_rows(coupling, rigid, turned, anchor_motion), 6};
+  for (CouplingRow& row : out.rows.rows)
   {
-    if (is_anchor[i])
-      continue;
-    const Eigen::VectorXd alpha = qr.solve(Eigen::VectorXd(turned.row(static_cast<la::Index>(i)).transpose()));
-    CouplingRow row{rigid.dofs[i], combination(anchor_dofs, alpha)};
-    const double departure = u(rigid.dofs[i]) - posed(mesh, coupling, out.translation, out.rotation, rigid.dofs[i]);
+    const double departure = u(row.slave) - posed(mesh, coupling, out.translation, out.rotation, row.slave);
     row.rhs = u(row.slave) - row.anchors.of(u) - departure;
-    out.rows.rows.push_back(std::move(row));
   }
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(anchor_motion.transpose());
   const Eigen::AngleAxisd turn(out.rotation);
   const Eigen::Vector3d rotation_vector = turn.angle() * turn.axis();
   for (int d = 0; d < 6; ++d)

@@ -1,6 +1,7 @@
 #include "io/problem_couplings.hpp"
 
 #include "common/error.hpp"
+#include "io/problem_steps.hpp"
 
 #include <algorithm>
 #include <array>
@@ -35,15 +36,6 @@ int32_t coupling_of(const YAML::Node& entry, const std::string& key, const Probl
   return -1;
 }
 
-std::string amplitude_name(const YAML::Node& entry, const std::string& key, const ProblemReader& r,
-                           const fem::Problem& p)
-{
-  if (!entry["amplitude"])
-    return {};
-  const std::string name = r.text(entry["amplitude"], key + ".amplitude");
-  FETICON_CHECK(p.amplitudes.count(name), r.source << ": " << key << ".amplitude: no amplitude '" << name << "'");
-  return name;
-}
 } // namespace
 
 std::vector<fem::Coupling> read_couplings(const YAML::Node& list, const mesh::Mesh& mesh, const ProblemReader& r)
@@ -94,7 +86,7 @@ std::vector<fem::Coupling> read_couplings(const YAML::Node& list, const mesh::Me
 }
 
 std::vector<fem::ReferenceValue> coupling_supports(const YAML::Node& list, const std::string& where,
-                                                   const ProblemReader& r, const fem::Problem& p)
+                                                   const ProblemReader& r, fem::Problem& p)
 {
   std::vector<fem::ReferenceValue> out;
   static constexpr const char* names[6] = {"x", "y", "z", "rx", "ry", "rz"};
@@ -106,7 +98,7 @@ std::vector<fem::ReferenceValue> coupling_supports(const YAML::Node& list, const
     const std::string key = where + "." + std::to_string(i);
     r.only_keys(s, key, {"coupling", "x", "y", "z", "rx", "ry", "rz", "amplitude"});
     const int32_t j = coupling_of(s, key, r, p);
-    const std::string amplitude = amplitude_name(s, key, r, p);
+    const std::string amplitude = amplitude_of(s, key, r, p);
     const size_t before = out.size();
     for (int d = 0; d < 6; ++d)
       if (s[names[d]])
@@ -117,7 +109,7 @@ std::vector<fem::ReferenceValue> coupling_supports(const YAML::Node& list, const
 }
 
 std::vector<fem::ReferenceValue> coupling_loads(const YAML::Node& list, const std::string& where,
-                                                const ProblemReader& r, const fem::Problem& p)
+                                                const ProblemReader& r, fem::Problem& p)
 {
   std::vector<fem::ReferenceValue> out;
   for (size_t i = 0; list.IsSequence() && i < list.size(); ++i)
@@ -129,7 +121,7 @@ std::vector<fem::ReferenceValue> coupling_loads(const YAML::Node& list, const st
     r.only_keys(l, key, {"coupling", "force", "moment", "amplitude"});
     FETICON_CHECK(l["force"] || l["moment"], r.source << ": " << key << " needs a force or a moment");
     const int32_t j = coupling_of(l, key, r, p);
-    const std::string amplitude = amplitude_name(l, key, r, p);
+    const std::string amplitude = amplitude_of(l, key, r, p);
     for (const auto& [name, first] : {std::pair{"force", 0}, std::pair{"moment", 3}})
       if (l[name])
       {

@@ -25,10 +25,10 @@ namespace feticon::io
 std::vector<fem::Coupling> read_couplings(const YAML::Node& list, const mesh::Mesh& mesh, const ProblemReader& r);
 
 /// The entries of a supports (loads) list that name a coupling, as reference values; the others
-/// are left to the list's own reader. `amplitude_of` names an entry's amplitude (checked).
+/// are left to the list's own reader; an entry's amplitude as io::amplitude_of reads it.
 /// @throws feticon::Error naming the file and key of what is wrong
 std::vector<fem::ReferenceValue> coupling_supports(const YAML::Node& list, const std::string& where,
-                                                   const ProblemReader& r, const fem::Problem& p);
+                                                   const ProblemReader& r, fem::Problem& p);
 std::vector<fem::ReferenceValue> coupling_loads(const YAML::Node& list, const std::string& where,
-                                                const ProblemReader& r, const fem::Problem& p);
+                                                const ProblemReader& r, fem::Problem& p);
 } // namespace feticon::io

@@ -44,8 +44,8 @@ fem::Amplitude amplitude(const YAML::Node& node, const std::string& key, const P
   return a;
 }
 
-/// The amplitude a load or support names (`amplitude: NAME`) or gives as its own table (then
-/// kept under the entry's key); empty without one.
+} // namespace
+
 std::string amplitude_of(const YAML::Node& entry, const std::string& key, const ProblemReader& r, fem::Problem& p)
 {
   const YAML::Node a = entry["amplitude"];
@@ -63,6 +63,8 @@ std::string amplitude_of(const YAML::Node& entry, const std::string& key, const 
   return key;
 }
 
+namespace
+{
 /// The index of the body an entry's `body:` names.
 int32_t body_of(const YAML::Node& entry, const std::string& key, const ProblemReader& r, const mesh::Mesh& mesh)
 {

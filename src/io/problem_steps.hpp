@@ -14,6 +14,11 @@ namespace feticon::io
 /// coulomb, coefficient: 0.3}` (or tresca with slip_bound, or none); none if it has none.
 fem::Friction pair_friction(const YAML::Node& pair, const std::string& key, const ProblemReader& r);
 
+/// The amplitude a load or support names (`amplitude: NAME`) or gives as its own table (then
+/// kept in p.amplitudes under the entry's key); empty without one.
+/// @throws feticon::Error naming the file and key for an unknown name or a malformed table
+std::string amplitude_of(const YAML::Node& entry, const std::string& key, const ProblemReader& r, fem::Problem& p);
+
 /// Fills p.steps and p.amplitudes from `root` (p.mesh read already; a step's `contact:` names
 /// pairs of root's `contact:` list by index).
 /// @throws feticon::Error naming the file and key of what is wrong
