@@ -110,7 +110,7 @@ double outside_distance(FaceKind kind, const Eigen::Vector2d& xi)
   return std::max({-xi(0), -xi(1), xi(0) + xi(1) - 1});
 }
 
-Eigen::VectorXd face_weights(FaceKind kind, const Eigen::Vector2d& xi)
+fem::FaceValues face_weights(FaceKind kind, const Eigen::Vector2d& xi)
 {
   if (kind == FaceKind::quad4)
     return quad_shape_functions(xi);

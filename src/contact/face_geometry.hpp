@@ -20,6 +20,7 @@
 /// times the thickness (or 2 pi r, int N_a 2 pi r ds); a line3 lumps as its two halves.
 
 #include "contact/closest_point.hpp"
+#include "fem/reference_face.hpp"
 #include "la/types.hpp"
 #include "mesh/mesh.hpp"
 
@@ -59,7 +60,7 @@ double outside_distance(mesh::FaceKind kind, const Eigen::Vector2d& xi);
 /// Whether xi lies within `extension` (reference units) of the reference face.
 bool within_extension(mesh::FaceKind kind, const Eigen::Vector2d& xi, double extension);
 /// Shape functions of the face's nodes at xi (quad4: quad_shape_functions).
-Eigen::VectorXd face_weights(mesh::FaceKind kind, const Eigen::Vector2d& xi);
+fem::FaceValues face_weights(mesh::FaceKind kind, const Eigen::Vector2d& xi);
 /// The point x(xi) (m).
 Eigen::Vector3d face_point(const FaceGeometry& face, const Eigen::Vector2d& xi);
 /// Unit normal x_,xi x x_,eta / |.| at xi, outward of the face's body; zero if degenerate there.

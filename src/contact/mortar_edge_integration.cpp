@@ -4,6 +4,7 @@
 #include "fem/reference_face.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -31,19 +32,28 @@ struct Chord
   double stretch() const { return (x[1] - x[0]).norm() / std::abs(t[1] - t[0]); }
 };
 
-std::vector<Chord> chords(const FaceGeometry& edge, const Eigen::Vector3d& origin, const Eigen::Vector3d& axis)
+/// The one or two chords of an edge (line2, line3), without allocating.
+struct Chords
 {
-  std::vector<Chord> out;
+  std::array<Chord, 2> items;
+  size_t size = 0;
+  const Chord* begin() const { return items.data(); }
+  const Chord* end() const { return items.data() + size; }
+};
+
+Chords chords(const FaceGeometry& edge, const Eigen::Vector3d& origin, const Eigen::Vector3d& axis)
+{
+  Chords out;
   for (const std::vector<int>& ends : face_sub_facets(edge.kind))
   {
-    Chord chord{};
+    FETICON_ASSERT(out.size < out.items.size(), "an edge of more than two chords");
+    Chord& chord = out.items[out.size++];
     for (int k = 0; k < 2; ++k)
     {
       chord.x[k] = edge.x.row(ends[k]).transpose();
       chord.t[k] = axis.dot(chord.x[k] - origin);
       chord.xi[k] = face_node_xi(edge.kind, ends[k])(0);
     }
-    out.push_back(chord);
   }
   return out;
 }
@@ -67,8 +77,8 @@ std::optional<Eigen::MatrixXd> integrate_edge_segment(const FaceGeometry& slave,
   const Eigen::Vector3d origin = face_point(slave, centre);
   const Eigen::Vector3d axis =
       (slave.x.transpose() * fem::face_shape_gradients(slave.kind, centre).col(0)).normalized();
-  const std::vector<Chord> slave_chords = chords(slave, origin, axis);
-  const std::vector<Chord> master_chords = chords(master, origin, axis);
+  const Chords slave_chords = chords(slave, origin, axis);
+  const Chords master_chords = chords(master, origin, axis);
 
   double slave_length = 0;
   for (const Chord& s : slave_chords)
@@ -95,7 +105,7 @@ std::optional<Eigen::MatrixXd> integrate_edge_segment(const FaceGeometry& slave,
         const auto [xi_slave, x_slave] = s.at(t);
         const double xi_master = m.at(t).first;
         const double weight = rule.weights[q] * half * s.stretch() * slave.planar.measure(x_slave);
-        const Eigen::VectorXd phi = dual.coefficients * transformed_shape_values(slave.kind, {xi_slave, 0});
+        const fem::FaceValues phi = dual.coefficients * transformed_shape_values(slave.kind, {xi_slave, 0});
         coupling += weight * phi * fem::face_shape_values(master.kind, {xi_master, 0}).transpose();
       }
     }

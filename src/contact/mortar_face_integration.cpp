@@ -117,9 +117,9 @@ bool is_quadratic(FaceKind kind)
   return kind == FaceKind::tri6 || kind == FaceKind::quad8 || kind == FaceKind::line3;
 }
 
-Eigen::VectorXd transformed_shape_values(FaceKind kind, const Eigen::Vector2d& xi)
+fem::FaceValues transformed_shape_values(FaceKind kind, const Eigen::Vector2d& xi)
 {
-  Eigen::VectorXd N = fem::face_shape_values(kind, xi);
+  fem::FaceValues N = fem::face_shape_values(kind, xi);
   if (!is_quadratic(kind))
     return N;
   const int corners = mesh::face_corners(kind);
@@ -207,7 +207,7 @@ std::optional<Eigen::MatrixXd> integrate_face_segment(const FaceGeometry& slave,
         FETICON_CHECK(on_slave && on_master,
                       "mortar: a face map failed at plane point " << point.transpose() << "; check the mesh");
         const double area = weight * on_slave->second;
-        const Eigen::VectorXd phi = dual.coefficients * transformed_shape_values(slave.kind, on_slave->first);
+        const fem::FaceValues phi = dual.coefficients * transformed_shape_values(slave.kind, on_slave->first);
         coupling += area * phi * fem::face_shape_values(master.kind, on_master->first).transpose();
       });
     }

@@ -52,7 +52,7 @@ bool is_quadratic(mesh::FaceKind kind);
 
 /// The slave functions N~(xi): the standard ones for tri3, quad4 and line2, transformed for
 /// tri6, quad8 and line3 (file comment).
-Eigen::VectorXd transformed_shape_values(mesh::FaceKind kind, const Eigen::Vector2d& xi);
+fem::FaceValues transformed_shape_values(mesh::FaceKind kind, const Eigen::Vector2d& xi);
 
 /// Dual basis of one slave face of any type.
 struct FaceDualBasis

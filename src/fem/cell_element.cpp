@@ -10,21 +10,29 @@ namespace feticon::fem
 {
 namespace
 {
+/// Per-cell matrices sized at run time but bounded by the largest cell (hex20), so that the
+/// element loop allocates nothing: malloc and free were a fifth of a 2D Hertz run's profile.
+constexpr int max_nodes = 20;
+using CellGradients = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::ColMajor, max_nodes, 3>;
+using CellValues = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, max_nodes, 1>;
+using StrainDisplacement = Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, 3 * max_nodes>;
+
 /// Gradients with respect to X and w det J at one quadrature point; an inverted or flat cell
 /// is an error naming it. A 2D cell's gradients have no z column, its w det J is times the
 /// out-of-plane measure (mesh::Planar::measure), and in axisymmetry `hoop` holds N_a / r, which
 /// gives the hoop strain u_r / r.
 struct PointGeometry
 {
-  Eigen::MatrixX3d dN_dX;
+  CellGradients dN_dX;
   double weight_det_j = 0;
-  Eigen::VectorXd hoop;
+  CellValues hoop;
 };
 
-PointGeometry point_geometry(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::Vector3d& xi, double weight,
+PointGeometry point_geometry(mesh::CellKind type, const Eigen::MatrixX3d& X, const PointShapes& shapes, double weight,
                              int64_t cell, const mesh::Planar& planar)
 {
-  const Eigen::MatrixX3d dN = shape_gradients(type, xi);
+  const Eigen::MatrixX3d& dN = shapes.dN;
+  FETICON_ASSERT(dN.rows() <= max_nodes, "a cell of more than " << max_nodes << " nodes");
   if (!mesh::is_planar(type))
   {
     const Eigen::Matrix3d J = X.transpose() * dN; // dX_i / dxi_j
@@ -41,17 +49,16 @@ PointGeometry point_geometry(mesh::CellKind type, const Eigen::MatrixX3d& X, con
   FETICON_CHECK(det > 0,
                 "cell " << cell << " (" << mesh::cell_type(type).name << ") is inverted or flat: det(dX/dxi) = " << det
                         << " at a quadrature point (2D cells run counter-clockwise in the x-y plane)");
-  PointGeometry geo{Eigen::MatrixX3d::Zero(dN.rows(), 3), 0, {}};
+  PointGeometry geo{CellGradients::Zero(dN.rows(), 3), 0, {}};
   geo.dN_dX.leftCols<2>() = dN.leftCols<2>() * J.inverse();
-  const Eigen::VectorXd N = shape_values(type, xi);
-  const Eigen::Vector3d x = X.transpose() * N;
+  const Eigen::Vector3d x = X.transpose() * shapes.N;
   if (planar.kind == mesh::PlanarKind::axisymmetric)
   {
     FETICON_CHECK(x(0) > 0,
                   "cell " << cell << " (axisymmetric " << mesh::cell_type(type).name
                           << ") has a quadrature point at r = x = " << x(0)
                           << ": an axisymmetric model lies at x >= 0");
-    geo.hoop = N / x(0);
+    geo.hoop = shapes.N / x(0);
   }
   geo.weight_det_j = weight * det * planar.measure(x);
   return geo;
@@ -59,10 +66,9 @@ PointGeometry point_geometry(mesh::CellKind type, const Eigen::MatrixX3d& X, con
 
 /// B_NL for the deformation gradient Fd (Fd = I: the linear B); `hoop` (axisymmetry) adds the
 /// variation of E_33 = 1/2 (F_33^2 - 1), F_33 = 1 + u_r / r, with the radial displacements.
-Eigen::Matrix<double, 6, Eigen::Dynamic> strain_displacement(const Eigen::MatrixX3d& dN, const Eigen::Matrix3d& Fd,
-                                                             const Eigen::VectorXd& hoop)
+StrainDisplacement strain_displacement(const CellGradients& dN, const Eigen::Matrix3d& Fd, const CellValues& hoop)
 {
-  Eigen::Matrix<double, 6, Eigen::Dynamic> B(6, 3 * dN.rows());
+  StrainDisplacement B(6, 3 * dN.rows());
   for (Eigen::Index a = 0; a < dN.rows(); ++a)
     for (int i = 0; i < 3; ++i)
     {
@@ -136,13 +142,12 @@ void make_positive_definite(Eigen::Matrix<double, 6, 6>& tangent)
   tangent = eigen.eigenvectors() * values.asDiagonal() * eigen.eigenvectors().transpose();
 }
 
-/// alpha E / (1 - 2 nu) Delta T at reference point xi (0 without a temperature change).
-double thermal_stress_at(mesh::CellKind type, const Material& material, const Eigen::VectorXd* temperature_change,
-                         const Eigen::Vector3d& xi)
+/// alpha E / (1 - 2 nu) Delta T at a quadrature point (0 without a temperature change).
+double thermal_stress_at(const Material& material, const Eigen::VectorXd* temperature_change, const PointShapes& shapes)
 {
   if (!temperature_change || material.expansion == 0)
     return 0;
-  return material.thermal_stress() * shape_values(type, xi).dot(*temperature_change);
+  return material.thermal_stress() * shapes.N.dot(*temperature_change);
 }
 /// K_G(a, b) = (grad N_a' S grad N_b) I_3 w det J; in axisymmetry also S_33 N_a N_b / r^2 on
 /// the radial components (E_33 = 1/2 (F_33^2 - 1) is quadratic in u_r / r).
@@ -150,7 +155,8 @@ void add_geometric_stiffness(const PointGeometry& geo, const Voigt& S, Eigen::Ma
 {
   Eigen::Matrix3d St;
   St << S(0), S(3), S(5), S(3), S(1), S(4), S(5), S(4), S(2);
-  const Eigen::MatrixXd G = geo.dN_dX * St * geo.dN_dX.transpose() * geo.weight_det_j;
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, max_nodes, max_nodes> G =
+      geo.dN_dX * (St * geo.weight_det_j) * geo.dN_dX.transpose();
   for (Eigen::Index a = 0; a < G.rows(); ++a)
     for (Eigen::Index b = 0; b < G.rows(); ++b)
       for (int i = 0; i < 3; ++i)
@@ -192,13 +198,14 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
   if (kind != StiffnessKind::none)
     K->setZero(n, n);
   const QuadratureRule& rule = quadrature(type, integration);
+  const std::vector<PointShapes>& shapes = quadrature_shapes(type, integration);
   for (size_t q = 0; q < rule.points.size(); ++q)
   {
-    const PointGeometry geo = point_geometry(type, X, rule.points[q], rule.weights[q], cell, planar);
+    const PointGeometry geo = point_geometry(type, X, shapes[q], rule.weights[q], cell, planar);
     auto [Fd, strain] = deformation(geo, u, kinematics, cell);
     // S = D E is St Venant-Kirchhoff's S = lambda tr(E) I + 2 mu E in Voigt form (engineering
     // shears), of the strain less the thermal strain (and the plastic strain).
-    const double thermal = thermal_stress_at(type, material, temperature_change, rule.points[q]);
+    const double thermal = thermal_stress_at(material, temperature_change, shapes[q]);
     if (plane_stress)
       free_thickness_strain(D, thermal, strain);
     Voigt S;
@@ -235,11 +242,13 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
       S = D * strain;
       S.head<3>().array() -= thermal;
     }
-    const auto B = strain_displacement(geo.dN_dX, Fd, geo.hoop);
-    f.noalias() += B.transpose() * S * geo.weight_det_j;
+    const StrainDisplacement B = strain_displacement(geo.dN_dX, Fd, geo.hoop);
+    f.noalias() += B.transpose() * (S * geo.weight_det_j);
     if (kind == StiffnessKind::none)
       continue;
-    K->noalias() += B.transpose() * *C * B * geo.weight_det_j;
+    const Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::ColMajor, 3 * max_nodes, 6> BtC =
+        B.transpose() * (*C * geo.weight_det_j);
+    K->noalias() += BtC * B;
     if (kind == StiffnessKind::tangent && kinematics == Kinematics::total_lagrangian)
       add_geometric_stiffness(geo, S, *K);
   }
@@ -253,12 +262,13 @@ CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d&
   const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
   const bool plane_stress = mesh::is_planar(type) && planar.kind == mesh::PlanarKind::plane_stress;
   const QuadratureRule& rule = quadrature(type, integration);
+  const std::vector<PointShapes>& shapes = quadrature_shapes(type, integration);
   CellPointResults out;
   for (size_t q = 0; q < rule.points.size(); ++q)
   {
-    const PointGeometry geo = point_geometry(type, X, rule.points[q], rule.weights[q], cell, planar);
+    const PointGeometry geo = point_geometry(type, X, shapes[q], rule.weights[q], cell, planar);
     auto [Fd, strain] = deformation(geo, u, kinematics, cell);
-    const double thermal = thermal_stress_at(type, material, temperature_change, rule.points[q]);
+    const double thermal = thermal_stress_at(material, temperature_change, shapes[q]);
     if (plane_stress)
     {
       free_thickness_strain(D, thermal, strain);
@@ -315,10 +325,10 @@ std::vector<Voigt> cell_point_strains(mesh::CellKind type, const Eigen::MatrixX3
 {
   std::vector<Voigt> out;
   const QuadratureRule& rule = quadrature(type, integration);
+  const std::vector<PointShapes>& shapes = quadrature_shapes(type, integration);
   for (size_t q = 0; q < rule.points.size(); ++q)
     out.push_back(
-        deformation(point_geometry(type, X, rule.points[q], rule.weights[q], cell, planar), u, kinematics, cell)
-            .second);
+        deformation(point_geometry(type, X, shapes[q], rule.weights[q], cell, planar), u, kinematics, cell).second);
   return out;
 }
 } // namespace feticon::fem

@@ -242,4 +242,18 @@ const QuadratureRule& quadrature(mesh::CellKind kind, Integration integration)
   }
   return cube2;
 }
+
+const std::vector<PointShapes>& quadrature_shapes(mesh::CellKind kind, Integration integration)
+{
+  using Tables = std::array<std::array<std::vector<PointShapes>, 2>, mesh::all_cell_kinds.size()>;
+  static const Tables tables = [] {
+    Tables t;
+    for (const CellKind k : mesh::all_cell_kinds)
+      for (const Integration i : {Integration::full, Integration::reduced})
+        for (const Eigen::Vector3d& xi : quadrature(k, i).points)
+          t[static_cast<size_t>(k)][i == Integration::reduced].push_back({shape_values(k, xi), shape_gradients(k, xi)});
+    return t;
+  }();
+  return tables[static_cast<size_t>(kind)][integration == Integration::reduced];
+}
 } // namespace feticon::fem

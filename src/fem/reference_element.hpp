@@ -49,4 +49,14 @@ Eigen::VectorXd shape_values(mesh::CellKind kind, const Eigen::Vector3d& xi);
 Eigen::MatrixX3d shape_gradients(mesh::CellKind kind, const Eigen::Vector3d& xi);
 /// The rule of `kind`.
 const QuadratureRule& quadrature(mesh::CellKind kind, Integration integration = Integration::full);
+
+/// Shape function values and reference gradients at one quadrature point.
+struct PointShapes
+{
+  Eigen::VectorXd N;
+  Eigen::MatrixX3d dN;
+};
+/// shape_values and shape_gradients at each point of quadrature(kind, integration), computed
+/// once: element loops read them instead of evaluating the functions at every cell's points.
+const std::vector<PointShapes>& quadrature_shapes(mesh::CellKind kind, Integration integration = Integration::full);
 } // namespace feticon::fem

@@ -53,11 +53,11 @@ FaceQuadrature triangle_rule(bool degree4)
 }
 } // namespace
 
-Eigen::VectorXd face_shape_values(FaceKind kind, const Eigen::Vector2d& xi)
+FaceValues face_shape_values(FaceKind kind, const Eigen::Vector2d& xi)
 {
   const double r = xi(0), s = xi(1);
   const Eigen::Vector3d L(1 - r - s, r, s);
-  Eigen::VectorXd N(mesh::face_nodes(kind));
+  FaceValues N(mesh::face_nodes(kind));
   switch (kind)
   {
   case FaceKind::tri3:
@@ -92,14 +92,14 @@ Eigen::VectorXd face_shape_values(FaceKind kind, const Eigen::Vector2d& xi)
   return N;
 }
 
-Eigen::MatrixX2d face_shape_gradients(FaceKind kind, const Eigen::Vector2d& xi)
+FaceGradients face_shape_gradients(FaceKind kind, const Eigen::Vector2d& xi)
 {
   const double r = xi(0), s = xi(1);
   const Eigen::Vector3d L(1 - r - s, r, s);
   // dL_a / d(r, s)
   const std::array<Eigen::RowVector2d, 3> dL = {Eigen::RowVector2d(-1, -1), Eigen::RowVector2d(1, 0),
                                                 Eigen::RowVector2d(0, 1)};
-  Eigen::MatrixX2d dN = Eigen::MatrixX2d::Zero(mesh::face_nodes(kind), 2);
+  FaceGradients dN = FaceGradients::Zero(mesh::face_nodes(kind), 2);
   switch (kind)
   {
   case FaceKind::line2:

@@ -25,10 +25,16 @@ struct FaceQuadrature
   std::vector<double> weights;         ///< summing to the reference face's area (1/2, 4; a line's 2)
 };
 
+/// A face's vectors and matrices are sized at run time but bounded by the largest face (quad8):
+/// evaluating them allocates nothing (the contact search evaluates them at every segment point).
+constexpr int max_face_nodes = 8;
+using FaceValues = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, max_face_nodes, 1>;
+using FaceGradients = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::ColMajor, max_face_nodes, 2>;
+
 /// N_a(xi) for every face node a.
-Eigen::VectorXd face_shape_values(mesh::FaceKind kind, const Eigen::Vector2d& xi);
+FaceValues face_shape_values(mesh::FaceKind kind, const Eigen::Vector2d& xi);
 /// dN_a/dxi_j(xi): row a, column j.
-Eigen::MatrixX2d face_shape_gradients(mesh::FaceKind kind, const Eigen::Vector2d& xi);
+FaceGradients face_shape_gradients(mesh::FaceKind kind, const Eigen::Vector2d& xi);
 /// The rule of `kind`.
 const FaceQuadrature& face_quadrature(mesh::FaceKind kind);
 } // namespace feticon::fem
