@@ -48,4 +48,21 @@ la::Matrix rigid_body_modes(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen
   Eigen::HouseholderQR<la::Matrix> qr(R);
   return qr.householderQ() * la::Matrix::Identity(R.rows(), R.cols());
 }
+
+std::optional<la::Matrix> zero_energy_modes(const la::SparseMatrix& K_lower, la::Index rigid_modes)
+{
+  const la::Index n = K_lower.rows();
+  if (n == 0 || n > max_dense_kernel_dofs)
+    return std::nullopt;
+  const la::Matrix K = la::Matrix(K_lower).selfadjointView<Eigen::Lower>();
+  const Eigen::SelfAdjointEigenSolver<la::Matrix> eigen(K);
+  const la::Vector& values = eigen.eigenvalues(); // increasing
+  const double tolerance = 1e-10 * values.cwiseAbs().maxCoeff();
+  if (values(0) < -tolerance)
+    return std::nullopt;
+  const auto k = static_cast<la::Index>((values.array() <= tolerance).count());
+  if (k <= rigid_modes)
+    return std::nullopt;
+  return la::Matrix(eigen.eigenvectors().leftCols(k));
+}
 } // namespace feticon::decomposition

@@ -15,6 +15,7 @@
 #include "la/types.hpp"
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace feticon::decomposition
@@ -25,4 +26,16 @@ namespace feticon::decomposition
 /// @return n_active x k orthonormal basis of the kernel (k = 6 without eliminations)
 la::Matrix rigid_body_modes(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& coords,
                             const std::vector<int32_t>& full_of_active, bool axisymmetric = false);
+
+/// Largest subdomain (active DOFs) whose kernel zero_energy_modes computes densely.
+inline constexpr la::Index max_dense_kernel_dofs = 1500;
+
+/// The kernel of K itself where it is larger than the rigid-body modes': a cell with reduced
+/// integration alone in its subdomain (CalculiX's plate: one CPS8R a body) has zero-energy
+/// (hourglass) modes, which do not survive in a mesh of several cells. The eigenvectors of the
+/// dense K whose eigenvalues are below 1e-10 of the largest, orthonormal; none (nullopt) where
+/// there are no more than `rigid_modes` of them, K has a clearly negative eigenvalue, or K
+/// has more than max_dense_kernel_dofs rows.
+/// @param K_lower the lower triangle of the symmetric K (active DOFs)
+std::optional<la::Matrix> zero_energy_modes(const la::SparseMatrix& K_lower, la::Index rigid_modes);
 } // namespace feticon::decomposition

@@ -7,6 +7,8 @@
 #include "decomposition/rigid_body_modes.hpp"
 #include "la/submatrix.hpp"
 
+#include <numeric>
+
 namespace feticon::decomposition
 {
 SubdomainSystem::SubdomainSystem(const Decomposition& decomposition, std::vector<fem::Material> materials,
@@ -76,24 +78,10 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
     }
     catch (const Error&)
     {
-      // A hyperelastic law beyond its convexity in E can make K_M indefinite, and so can finite-
-      // strain plasticity (dS/dE of a yielded point loses the shear stiffness that the stress's
-      // own terms then exceed): K_M again from the positive definite part of each point's
-      // tangent (fem/cell_element.cpp).
-      const fem::Assembler& assembler = *_assemblers[s];
-      const bool finite_plastic =
-          assembler.has_plastic_cells() && assembler.kinematics() == fem::Kinematics::total_lagrangian;
-      if (!assembler.has_hyperelastic_cells() && !finite_plastic)
-        throw;
-      la::SparseMatrix K_active =
-          la::principal_submatrix(assembler.stiffness(full_local(s, u_stacked), fem::StiffnessKind::material_definite),
-                                  _decomposition.subdomain(s).active_of_full, _decomposition.subdomain(s).n_dofs(),
-                                  la::Entries::lower_triangle);
-      op.K.swap(K_active);
-      op.K_plus.setup(op.K, op.R, fixing_candidates[s - first], _method, what, _precision);
-      log::warning("a hyperelastic or finite-strain plastic subdomain's K_M was indefinite (dS/dE is not positive "
-                   "there): factored from each point's nearest positive definite tangent, a quasi-Newton step "
-                   "(docs/materials.md)");
+      if (auto modes = zero_energy_modes(op.K, op.R.cols()))
+        factor_with_zero_energy_modes(op, std::move(*modes), what);
+      else
+        factor_definite_part(s, u_stacked, fixing_candidates[s - first], what);
     }
     owned_kernel_dims[s - first] = op.R.cols();
   });
@@ -104,6 +92,43 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
     _kernel_offsets.push_back(_kernel_offsets.back() + k);
   if (timers)
     timers->add("factorization", seconds_since(start));
+}
+
+void SubdomainSystem::factor_with_zero_energy_modes(SubdomainOperators& op, la::Matrix modes, const std::string& what)
+{
+  const auto extra = modes.cols() - op.R.cols();
+  op.R = std::move(modes);
+  // The fixing DOFs among all of them: the zero-energy modes need not move the fixing nodes.
+  std::vector<int32_t> every_dof(static_cast<size_t>(op.K.rows()));
+  std::iota(every_dof.begin(), every_dof.end(), 0);
+  op.K_plus.setup(op.K, op.R, every_dof, _method, what, _precision);
+  log::warning("a subdomain's stiffness has " + std::to_string(extra) +
+               " zero-energy mode(s) besides its rigid-body motions (a cell with reduced integration alone in "
+               "its subdomain, or in its body: hourglass modes): its kernel is taken from the matrix, and the "
+               "model's constraints must hold those modes");
+}
+
+void SubdomainSystem::factor_definite_part(int32_t s, const la::Vector& u_stacked,
+                                           const std::vector<int32_t>& fixing_candidates, const std::string& what)
+{
+  // A hyperelastic law beyond its convexity in E can make K_M indefinite, and so can finite-
+  // strain plasticity (dS/dE of a yielded point loses the shear stiffness that the stress's
+  // own terms then exceed): K_M again from the positive definite part of each point's
+  // tangent (fem/cell_element.cpp).
+  const fem::Assembler& assembler = *_assemblers[s];
+  const bool finite_plastic =
+      assembler.has_plastic_cells() && assembler.kinematics() == fem::Kinematics::total_lagrangian;
+  if (!assembler.has_hyperelastic_cells() && !finite_plastic)
+    throw;
+  SubdomainOperators& op = _operators[s];
+  la::SparseMatrix K_active = la::principal_submatrix(
+      assembler.stiffness(full_local(s, u_stacked), fem::StiffnessKind::material_definite),
+      _decomposition.subdomain(s).active_of_full, _decomposition.subdomain(s).n_dofs(), la::Entries::lower_triangle);
+  op.K.swap(K_active);
+  op.K_plus.setup(op.K, op.R, fixing_candidates, _method, what, _precision);
+  log::warning("a hyperelastic or finite-strain plastic subdomain's K_M was indefinite (dS/dE is not positive "
+               "there): factored from each point's nearest positive definite tangent, a quasi-Newton step "
+               "(docs/materials.md)");
 }
 
 void SubdomainSystem::set_temperature_change(const la::Vector& mesh_temperature_change)

@@ -67,6 +67,13 @@ public:
 
 private:
   la::Vector full_local(int32_t s, const la::Vector& u_stacked) const;
+  /// K+ of a subdomain whose kernel is larger than its rigid-body modes (zero_energy_modes).
+  void factor_with_zero_energy_modes(SubdomainOperators& op, la::Matrix modes, const std::string& what);
+  /// Where K_M's factorization failed: K_M from each point's nearest positive definite tangent
+  /// (hyperelastic and finite-strain plastic subdomains), or the error rethrown (call only in a
+  /// handler).
+  void factor_definite_part(int32_t s, const la::Vector& u_stacked, const std::vector<int32_t>& fixing_candidates,
+                            const std::string& what);
 
   const Decomposition& _decomposition;
   GeneralizedInverseMethod _method;
