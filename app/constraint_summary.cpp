@@ -28,7 +28,7 @@ nlohmann::ordered_json coupling_summary(const fem::Problem& problem, const nonli
     return out;
   const la::Vector reaction = calculix_reaction(problem, solution, kinematics);
   const std::vector<fem::ReferenceResult> results = reference_results(problem, solution.u, reaction, kinematics);
-  static constexpr const char* kinds[] = {"kinematic", "distributing", "mean"};
+  static constexpr const char* kinds[] = {"kinematic", "distributing", "mean", "pretension"};
   for (size_t j = 0; j < problem.couplings.size(); ++j)
   {
     const fem::ReferenceResult& r = results[j];

@@ -24,10 +24,11 @@ std::vector<CouplingReport> couple_surfaces(fem::Problem& problem)
   for (size_t j = 0; j < problem.couplings.size(); ++j)
   {
     const fem::Coupling& coupling = problem.couplings[j];
-    if (coupling.kind != fem::CouplingKind::kinematic)
+    if (coupling.kind != fem::CouplingKind::kinematic && coupling.kind != fem::CouplingKind::pretension)
       continue;
     CouplingReport& report = out.emplace_back();
     report.name = coupling.name;
+    report.pretension = coupling.kind == fem::CouplingKind::pretension;
     report.nodes = std::ssize(fem::coupled_nodes(problem.mesh, coupling));
     const fem::KinematicRows rows = fem::kinematic_rows(problem.mesh, coupling, problem.eliminated);
     report.anchors = rows.rank;
@@ -91,7 +92,10 @@ CouplingLinearization linearize_couplings(const fem::Problem& problem, std::vect
 std::string describe(const CouplingReport& r)
 {
   std::ostringstream s;
-  s << r.name << ": " << r.nodes << " nodes, rigid motion of rank " << r.anchors << ", " << r.rows << " rows";
+  if (r.pretension)
+    s << r.name << ": " << r.nodes << " node pairs, " << r.rows << " rows";
+  else
+    s << r.name << ": " << r.nodes << " nodes, rigid motion of rank " << r.anchors << ", " << r.rows << " rows";
   if (r.skipped_dofs > 0)
     s << " (" << r.skipped_dofs << " coupled components left to supports, equations or rows before)";
   return s.str();

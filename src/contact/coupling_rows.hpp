@@ -24,13 +24,14 @@ namespace feticon::contact
 struct CouplingReport
 {
   std::string name;
+  bool pretension = false;  ///< a pretension section (its nodes are pairs, its rank the gap)
   int64_t nodes = 0;        ///< coupled nodes
   int64_t anchors = 0;      ///< components that carry the rigid motion (its rank)
   int64_t rows = 0;         ///< one per other coupled component
   int64_t skipped_dofs = 0; ///< held by supports, named by an equation or slave of a row before
 };
 
-/// Appends the kinematic couplings' rows to problem.tie_equations (tie_of_equation -1 - the
+/// Appends the kinematic couplings' and pretension sections' rows to problem.tie_equations (tie_of_equation -1 - the
 /// coupling's index) and
 /// returns one report per kinematic coupling.
 std::vector<CouplingReport> couple_surfaces(fem::Problem& problem);

@@ -16,14 +16,17 @@ namespace
 /// from the equality rows alone, when they fix every rigid mode; then the contact bounds
 /// are simply lambda_I >= 0 and mu = 0 is feasible. Otherwise (a body held only by
 /// contact, like the Hertz cylinder) variant A, the minimal-norm G'(GG')^{-1} e.
+/// @param load_scale  the largest nodal force (max |f|, on every rank)
 la::Vector particular_solution(const FetiOperators& feti, const CoarseProjector& projector, const la::Vector& e,
-                               const std::vector<RowKind>& kinds)
+                               const std::vector<RowKind>& kinds, double load_scale)
 {
   // Either variant must satisfy G lambda~ = e. The pivot test of G_E G_E' can miss a
   // mode that only contact holds once that matrix is large (a 1 025-subdomain punch: the
   // round-off pivot passed, lambda~ missed the punch's load and SMALBE-M "converged" to a
-  // zero contact force), so the equation itself decides.
-  const double tolerance = 1e-6 * std::max(e.norm(), 1e-300);
+  // zero contact force), so the equation itself decides. Relative to e, unless e is the
+  // round-off of loads that balance on every subdomain (a pretension section's pairs of forces
+  // within one subdomain: |e| = 1e-14 of the loads): then relative to the loads.
+  const double tolerance = 1e-6 * std::max({e.norm(), 1e-8 * load_scale, 1e-300});
   const int64_t local_contact_rows =
       std::count_if(kinds.begin(), kinds.end(), [](RowKind k) { return k != RowKind::equality; });
   if (feti.comm().sum(local_contact_rows) > 0)
@@ -141,7 +144,8 @@ ContactQp::ContactQp(const FetiOperators& feti, const la::Vector& c, const la::V
                      const la::Vector* compliance)
     : _feti(feti), _c(c), _f_stacked(f_stacked), _friction(friction), _compliance(compliance),
       _kinds(row_kinds(feti, n_equality, friction)), _projector(feti), _e(feti.apply_Rt(f_stacked)),
-      _lambda_tilde(particular_solution(feti, _projector, _e, _kinds)),
+      _lambda_tilde(
+          particular_solution(feti, _projector, _e, _kinds, feti.comm().max(f_stacked.lpNorm<Eigen::Infinity>()))),
       _norm(pfp_norm_estimate(feti, _projector, options, pfp_norm, compliance)), _scale(1.0 / _norm.value),
       _F(feti, _scale, compliance),
       // The dual penalty's A holds rho Q; SMALBE-M adds rho Q = rho G~'G~ itself (for the rho

@@ -255,6 +255,132 @@ ReferenceDofs mean_reference_dofs(const mesh::Mesh& mesh, const Coupling& coupli
   }
   return out;
 }
+
+/// A pretension section's node pairs, unit normal n and the tangents t, d (n x t) in the plane
+/// of the model's free components, as CalculiX builds them (pretensionsections.f).
+struct PretensionSection
+{
+  std::vector<int32_t> old_nodes, new_nodes;
+  std::vector<Eigen::Vector3d> directions; ///< n, then the tangents (one in 2D)
+  std::vector<int> slave_components;       ///< per direction: j_n, j_t (, j_d), distinct
+};
+
+PretensionSection pretension_section(const mesh::Mesh& mesh, const Coupling& coupling,
+                                     const std::array<bool, 3>& eliminated)
+{
+  PretensionSection out{mesh.node_set(coupling.nodes), mesh.node_set(coupling.partners), {}, {}};
+  FETICON_CHECK(!out.old_nodes.empty() && out.old_nodes.size() == out.new_nodes.size(),
+                coupling.name << ": " << out.old_nodes.size() << " nodes and " << out.new_nodes.size()
+                              << " partners; a pretension section needs one partner per node");
+  Eigen::Vector3d n = coupling.normal;
+  if (n.isZero())
+  {
+    // The faces' outward normals, area-weighted: a unit pressure's nodal forces are -n dA.
+    la::Vector f = la::Vector::Zero(3 * la::Index{mesh.n_nodes()});
+    add_face_pressure(mesh, mesh.face_set(coupling.faces), 1.0, f);
+    for (int32_t a = 0; a < mesh.n_nodes(); ++a)
+      n -= f.segment<3>(3 * la::Index{a});
+  }
+  for (int c = 0; c < 3; ++c)
+    if (eliminated[c])
+      n(c) = 0;
+  FETICON_CHECK(n.norm() > 0, coupling.name << ": its normal is zero (in the model's plane)");
+  n.normalize();
+  // A tangent from e_x, or from e_y where n is near x (CalculiX's choice).
+  Eigen::Vector3d t = std::abs(n.x()) < 0.95 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  t = (t - n.dot(t) * n).normalized();
+  out.directions = {n, t};
+  if (std::ranges::none_of(eliminated, [](bool e) { return e; }))
+    out.directions.push_back(n.cross(t));
+  // The slave components: the assignment of distinct components to the directions with the
+  // largest product of coefficients (every one nonzero).
+  std::array<int, 3> order{0, 1, 2};
+  double best = -1;
+  do
+  {
+    double product = 1;
+    for (size_t k = 0; k < out.directions.size(); ++k)
+      product *= eliminated[order[k]] ? 0.0 : std::abs(out.directions[k](order[k]));
+    if (product > best)
+    {
+      best = product;
+      out.slave_components.assign(order.begin(), order.begin() + std::ssize(out.directions));
+    }
+  } while (std::next_permutation(order.begin(), order.end()));
+  return out;
+}
+
+/// v . (u_new - u_old) of one pair, as a combination (free components only).
+DofCombination pair_gap(int32_t old_node, int32_t new_node, const Eigen::Vector3d& v,
+                        const std::array<bool, 3>& eliminated, double scale = 1)
+{
+  DofCombination out;
+  for (const auto& [node, sign] : {std::pair{new_node, 1.0}, std::pair{old_node, -1.0}})
+    for (int c = 0; c < 3; ++c)
+      if (!eliminated[c] && v(c) != 0)
+      {
+        out.dofs.push_back(3 * int64_t{node} + c);
+        out.coefficients.push_back(sign * scale * v(c));
+      }
+  return out;
+}
+
+/// The rows of a pretension section: per pair its tangential rows, and for every pair but the
+/// first its normal gap equal to the first's; each solved for its slave component.
+std::vector<CouplingRow> pretension_rows(const mesh::Mesh& mesh, const Coupling& coupling,
+                                         const std::array<bool, 3>& eliminated)
+{
+  const PretensionSection section = pretension_section(mesh, coupling, eliminated);
+  std::vector<CouplingRow> out;
+  for (size_t i = 0; i < section.old_nodes.size(); ++i)
+    for (size_t k = i == 0 ? 1 : 0; k < section.directions.size(); ++k)
+    {
+      const Eigen::Vector3d& v = section.directions[k];
+      const int j = section.slave_components[k];
+      // v . (u_new - u_old) [- n . (u_new_0 - u_old_0)] = 0, divided by v_j: u_s - alpha' u_A = 0.
+      DofCombination row = pair_gap(section.old_nodes[i], section.new_nodes[i], v, eliminated, -1 / v(j));
+      if (k == 0)
+      {
+        const DofCombination first = pair_gap(section.old_nodes[0], section.new_nodes[0], v, eliminated, 1 / v(j));
+        row.dofs.insert(row.dofs.end(), first.dofs.begin(), first.dofs.end());
+        row.coefficients.insert(row.coefficients.end(), first.coefficients.begin(), first.coefficients.end());
+      }
+      const int64_t slave = 3 * int64_t{section.new_nodes[i]} + j;
+      CouplingRow& r = out.emplace_back();
+      r.slave = slave;
+      for (size_t a = 0; a < row.dofs.size(); ++a)
+        if (row.dofs[a] != slave)
+        {
+          r.anchors.dofs.push_back(row.dofs[a]);
+          r.anchors.coefficients.push_back(row.coefficients[a]);
+        }
+    }
+  return out;
+}
+
+ReferenceDofs pretension_reference_dofs(const mesh::Mesh& mesh, const Coupling& coupling,
+                                        const std::array<bool, 3>& eliminated)
+{
+  const PretensionSection section = pretension_section(mesh, coupling, eliminated);
+  const Eigen::Vector3d& n = section.directions.front();
+  const std::vector<double> w = area_weights(mesh, coupling, section.new_nodes);
+  ReferenceDofs out;
+  out.value[0] = pair_gap(section.old_nodes[0], section.new_nodes[0], n, eliminated);
+  for (size_t i = 0; i < section.old_nodes.size(); ++i)
+  {
+    const DofCombination load = pair_gap(section.old_nodes[i], section.new_nodes[i], n, eliminated, w[i]);
+    out.unit_load[0].dofs.insert(out.unit_load[0].dofs.end(), load.dofs.begin(), load.dofs.end());
+    out.unit_load[0].coefficients.insert(out.unit_load[0].coefficients.end(), load.coefficients.begin(),
+                                         load.coefficients.end());
+    for (int c = 0; c < 3; ++c)
+      if (!eliminated[c] && n(c) != 0)
+      {
+        out.unit_motion[0].dofs.push_back(3 * int64_t{section.new_nodes[i]} + c);
+        out.unit_motion[0].coefficients.push_back(n(c));
+      }
+  }
+  return out;
+}
 } // namespace
 
 std::vector<int32_t> coupled_nodes(const mesh::Mesh& mesh, const Coupling& coupling)
@@ -280,12 +406,16 @@ ReferenceDofs reference_dofs(const mesh::Mesh& mesh, const Coupling& coupling, c
     return distributing_reference_dofs(mesh, coupling, eliminated);
   case CouplingKind::mean:
     return mean_reference_dofs(mesh, coupling, eliminated);
+  case CouplingKind::pretension:
+    return pretension_reference_dofs(mesh, coupling, eliminated);
   }
   return {};
 }
 
 KinematicRows kinematic_rows(const mesh::Mesh& mesh, const Coupling& coupling, const std::array<bool, 3>& eliminated)
 {
+  if (coupling.kind == CouplingKind::pretension)
+    return {pretension_rows(mesh, coupling, eliminated), 1};
   if (coupling.kind != CouplingKind::kinematic)
     return {};
   const RigidMotion rigid = rigid_motion(mesh, coupling, eliminated);

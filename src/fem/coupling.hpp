@@ -27,6 +27,16 @@
 /// - mean (*DISTRIBUTING COUPLING, a DCOUP3D element's node): t = sum w_i u_i / sum w_i with the
 ///   deck's weights, per translational component: a support holds that combination, a force F
 ///   on it is f_i = w_i F / sum w.
+/// - pretension (*PRE-TENSION SECTION): a cut through a bolt, its nodes doubled (the cells whose
+///   faces make the section take the new nodes, `partners`; the rest keep `nodes`). As
+///   CalculiX's pretensionsections.f: every pair moves apart by the same normal gap and not at all
+///   tangentially, (u_new - u_old) . t = 0 and (u_new_i - u_old_i) . n = (u_new_0 - u_old_0) . n,
+///   and reference DOF 1 is that gap q = (u_new_0 - u_old_0) . n, n pointing away from the cells
+///   that took the new nodes: q > 0 (the two sides overlap by q) or a force F > 0 on it puts the
+///   bolt in tension. A force F is the nodal forces +-w_i F n on the pairs (w_i the section's
+///   consistent nodal areas, sum 1); its reaction is the sum of the new nodes' residual forces
+///   along n. Each row has its own slave: component j_n, j_t, j_d of a new node, distinct with
+///   nonzero coefficients (the pair 0's j_n carries q).
 ///
 /// The reaction of a reference DOF (printed RF of the reference node) is the work of the coupled
 /// nodes' residual forces rho = f_int - f_ext on its unit motion: sum rho_i for a translation,
@@ -47,7 +57,8 @@ enum class CouplingKind
 {
   kinematic,
   distributing,
-  mean
+  mean,
+  pretension
 };
 
 struct Coupling
@@ -66,6 +77,10 @@ struct Coupling
   std::array<bool, 3> moments{false, false, false};
   /// mean: the weight of each node of `nodes`, in the set's order
   std::vector<double> weights = {};
+  /// pretension: the node set of the new nodes, the partners of `nodes` in the same order, and
+  /// the section's normal (zero: the mean outward normal of `faces`, whose cells took `partners`)
+  std::string partners = {};
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
 };
 
 /// The coupled nodes: `nodes`, or the nodes of `faces`.
@@ -119,7 +134,8 @@ struct CouplingRow
 /// @throws feticon::Error naming the coupling if its node set is empty or unknown, a weight is
 ///         not finite, or the weights sum to zero
 ReferenceDofs reference_dofs(const mesh::Mesh& mesh, const Coupling& coupling, const std::array<bool, 3>& eliminated);
-/// The rows of a kinematic coupling (none for the other kinds) and the rank of its rigid motion.
+/// The rows of a kinematic or pretension coupling (none for the other kinds) and the rank of its
+/// rigid motion (a pretension: 1, its gap).
 struct KinematicRows
 {
   std::vector<CouplingRow> rows;

@@ -224,9 +224,10 @@ void Problem::validate_couplings() const
 {
   if (couplings.empty())
     return;
-  FETICON_CHECK(mesh.planar.kind != mesh::PlanarKind::axisymmetric,
-                "problem '" << name << "': " << couplings.front().name
-                            << ": couplings in an axisymmetric model are not implemented");
+  for (const Coupling& c : couplings)
+    FETICON_CHECK(mesh.planar.kind != mesh::PlanarKind::axisymmetric || c.kind == CouplingKind::pretension,
+                  "problem '" << name << "': " << c.name
+                              << ": couplings in an axisymmetric model are not implemented (pretension sections are)");
   const std::vector<ReferenceDofs> reference = reference_dofs(); // checks the sets and weights
   for (size_t k = 0; k < steps.size(); ++k)
   {

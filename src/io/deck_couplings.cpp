@@ -97,6 +97,14 @@ std::vector<fem::Coupling> deck_couplings(const DeckData& data, const DeckRefere
     coupling.nodes = "coupling_" + std::to_string(j + 1) + "_nodes";
     coupling.components = c.components;
     coupling.moments = c.moments;
+    if (c.kind == fem::CouplingKind::pretension)
+    {
+      // The model builder doubled the section's nodes and named the pairs' sets.
+      coupling.partners = "coupling_" + std::to_string(j + 1) + "_partners";
+      coupling.faces = c.surface;
+      coupling.normal = c.normal;
+      continue;
+    }
     std::vector<int32_t>& nodes = mesh.node_sets[coupling.nodes];
     if (c.kind != fem::CouplingKind::mean)
     {

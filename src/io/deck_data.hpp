@@ -169,8 +169,8 @@ struct DeckTie
   DeckPosition where;
 };
 
-/// *RIGID BODY, *COUPLING with *KINEMATIC or *DISTRIBUTING, *DISTRIBUTING COUPLING
-/// (fem/coupling.hpp), as the deck gives them; the model builder resolves the names.
+/// *RIGID BODY, *COUPLING with *KINEMATIC or *DISTRIBUTING, *DISTRIBUTING COUPLING, *PRE-TENSION
+/// SECTION (fem/coupling.hpp), as the deck gives them; the model builder resolves the names.
 struct DeckCoupling
 {
   fem::CouplingKind kind = fem::CouplingKind::kinematic;
@@ -189,6 +189,8 @@ struct DeckCoupling
     DeckPosition where;
   };
   std::vector<Weighted> weighted = {};
+  /// *PRE-TENSION SECTION's normal (its data line); zero: the surface's mean outward normal
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
   DeckPosition where;
 };
 

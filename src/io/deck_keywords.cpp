@@ -315,6 +315,7 @@ private:
         {"KINEMATIC", &KeywordReader::kinematic},
         {"DISTRIBUTING", &KeywordReader::distributing},
         {"DISTRIBUTING COUPLING", &KeywordReader::distributing_coupling},
+        {"PRE-TENSION SECTION", &KeywordReader::pre_tension_section},
         {"CYCLIC SYMMETRY MODEL", &KeywordReader::cyclic_symmetry_model},
         {"PART", &KeywordReader::part},
         {"END PART", &KeywordReader::end_part},
@@ -1770,6 +1771,37 @@ private:
     no_data();
   }
 
+  /// *PRE-TENSION SECTION, SURFACE=, NODE= and an optional line with the normal (fem/coupling.hpp).
+  void pre_tension_section()
+  {
+    known_parameters({"SURFACE", "NODE", "ELEMENT"});
+    if (_keyword.has("ELEMENT"))
+      throw Error(where() +
+                  ": ELEMENT= (a pretension through a beam element) is not implemented by feticon, which "
+                  "has no beam elements; give SURFACE=, a cut through the solid bolt");
+    DeckCoupling c;
+    c.kind = fem::CouplingKind::pretension;
+    c.name = coupling_name("");
+    c.where = _keyword.where;
+    c.surface = _scope.prefix + required("SURFACE");
+    c.ref_node = reference_node({"NODE"});
+    if (c.ref_node < 0)
+      throw Error(where() + " needs NODE=");
+    DeckDataLine line;
+    if (next_data(line))
+    {
+      for (int k = 0; k < 3; ++k)
+        c.normal(k) = line.fields.size() > static_cast<size_t>(k) && !line.fields[k].empty()
+            ? real(line, static_cast<size_t>(k), "normal component")
+            : 0.0;
+      if (!(c.normal.norm() > 0) || !c.normal.allFinite())
+        fail_at(line.where, "the normal of a pretension section must be a nonzero vector");
+      if (next_data(line))
+        fail_at(line.where, "takes one data line (the normal)");
+    }
+    _data.couplings.push_back(std::move(c));
+  }
+
   /// The DOF ranges of a *KINEMATIC or *DISTRIBUTING line, each within 1 to `largest`.
   std::vector<int> coupling_dofs(int largest)
   {
@@ -2025,9 +2057,12 @@ private:
   {
     known_parameters({"NSET", "ELSET", "TOTALS", "FREQUENCY", "FREQUENCYF", "GLOBAL", "OUTPUT", "SLAVE", "MASTER",
                       "TIME POINTS", "LAST ITERATIONS", "CONTACT ELEMENTS", "SECTION FORCES", "OUTPUT ALL", "NSETF",
-                      "POSITION"});
+                      "POSITION", "SET"});
     if (!_in_step)
       throw Error(where() + " belongs inside a *STEP");
+    if (_keyword.has("SET")) // thread.inp's *CONTACT PRINT
+      _data.warn(where() + ": SET= is no parameter of *" + _keyword.name +
+                 "; CalculiX ignores it with a warning, and so does feticon");
     using Kind = DeckOutputRequest::Kind;
     static const std::map<std::string, Kind> kinds = {
         {"NODE PRINT", Kind::node_print}, {"EL PRINT", Kind::el_print}, {"CONTACT PRINT", Kind::contact_print},

@@ -114,6 +114,7 @@ public:
   {
     _reference = deck_reference_nodes(_d, label_of());
     nodes_and_cells();
+    pretension_sections();
     bodies_and_materials();
     sets_and_surfaces();
     contact_pairs();
@@ -196,6 +197,68 @@ private:
     if (count == n_read)
       _mesh_node =
           std::vector<int32_t>(); // the identity: mesh_of() needs no table (and "= {}" would keep the capacity)
+  }
+
+  /// *PRE-TENSION SECTION (fem/coupling.hpp): the nodes of each section's faces doubled and the
+  /// cells whose faces make it connected to the new nodes, as CalculiX's pretensionsections.f
+  /// does (new nodes numbered after the deck's largest); the pairs kept as the node sets
+  /// coupling_N_nodes and coupling_N_partners, in pair order, for deck_couplings. Before the
+  /// bodies are found: a section through a bolt makes it two bodies that its rows join.
+  void pretension_sections()
+  {
+    mesh::Mesh& mesh = _p.mesh;
+    for (size_t j = 0; j < _d.couplings.size(); ++j)
+    {
+      const DeckCoupling& c = _d.couplings[j];
+      if (c.kind != fem::CouplingKind::pretension)
+        continue;
+      const auto it = _d.surfaces.find(c.surface);
+      FETICON_CHECK(it != _d.surfaces.end(), c.name << ": SURFACE=" << c.surface << " names no *SURFACE");
+      FETICON_CHECK(!it->second.node_based,
+                    c.name << ": SURFACE=" << c.surface << " is a node surface; a pretension section is element faces");
+      FETICON_CHECK(mesh_of(c.ref_node) < 0,
+                    c.name << ": NODE " << read_label(c.ref_node)
+                           << " belongs to an element; the reference node must be its own");
+      std::vector<std::pair<int32_t, mesh::Face>> faces; // all of them before any cell changes
+      for (const DeckFace& f : it->second.faces)
+      {
+        FETICON_CHECK(f.face <= n_cell_faces(mesh, f.cell),
+                      c.name << ": face S" << f.face << " of element " << _deck.element_labels[f.cell] << " has "
+                             << n_cell_faces(mesh, f.cell) << " faces");
+        faces.emplace_back(f.cell, face_nodes(mesh, f.cell, f.face));
+      }
+      std::map<int32_t, int32_t> partner;
+      for (const auto& [cell, face] : faces)
+        for (const int32_t n : face)
+        {
+          const auto [p, added] = partner.emplace(n, mesh.n_nodes() + static_cast<int32_t>(partner.size()));
+          for (int32_t& m : mesh.cells.nodes_of(static_cast<size_t>(cell)))
+            if (m == n)
+              m = p->second;
+        }
+      add_partner_nodes(partner, j);
+    }
+  }
+
+  void add_partner_nodes(const std::map<int32_t, int32_t>& partner, size_t coupling)
+  {
+    mesh::Mesh& mesh = _p.mesh;
+    const int32_t first = mesh.n_nodes();
+    mesh.nodes.conservativeResize(first + std::ssize(partner), 3);
+    // After every deck label, cell-less nodes' included (CalculiX's nk + 1, ...).
+    const int64_t label = *std::ranges::max_element(_d.node_labels.empty() ? _deck.node_labels : _d.node_labels);
+    _deck.node_labels.resize(static_cast<size_t>(first) + partner.size());
+    std::vector<int32_t>& olds = mesh.node_sets["coupling_" + std::to_string(coupling + 1) + "_nodes"];
+    std::vector<int32_t>& news = mesh.node_sets["coupling_" + std::to_string(coupling + 1) + "_partners"];
+    for (const auto& [old_node, new_node] : partner)
+    {
+      mesh.nodes.row(new_node) = mesh.nodes.row(old_node);
+      // Labels in the order the faces met the nodes, as CalculiX numbers its new nodes.
+      _deck.node_labels[static_cast<size_t>(new_node)] = label + 1 + (new_node - first);
+      olds.push_back(old_node);
+      news.push_back(new_node);
+      _partner_of.emplace(old_node, new_node);
+    }
   }
 
   /// The deck label of a node in reading order.
@@ -669,7 +732,11 @@ private:
     std::vector<fem::NodalTemperature> out;
     for (const auto& [node, value] : given)
       if (const int32_t m = mesh_of(node); m >= 0)
+      {
         out.push_back({m, value.value, value.amplitude});
+        if (const auto p = _partner_of.find(m); p != _partner_of.end())
+          out.push_back({p->second, value.value, value.amplitude});
+      }
     return out;
   }
 
@@ -787,6 +854,8 @@ private:
     for (const auto& [node, value] : _d.initial_temperatures)
       if (const int32_t m = mesh_of(node); m >= 0)
         _p.initial_temperatures[m] = value;
+    for (const auto& [old_node, new_node] : _partner_of)
+      _p.initial_temperatures[static_cast<size_t>(new_node)] = _p.initial_temperatures[static_cast<size_t>(old_node)];
   }
 
   /// Plane strain as CalculiX decks state it (feticon export writes it so): u_z = 0 on every
@@ -923,6 +992,8 @@ private:
   std::vector<int32_t> _contact_of_pair, _tie_of_pair;
   std::set<std::string> _restricted_surfaces; ///< node surfaces with a slave_nodes_NAME set
   DeckReferenceNodes _reference;
+  /// Pretension sections' doubled nodes: old mesh node -> new (temperatures are copied).
+  std::map<int32_t, int32_t> _partner_of;
 };
 } // namespace
 
