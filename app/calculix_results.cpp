@@ -48,45 +48,117 @@ void add_warnings(std::vector<std::string>& to, const std::vector<std::string>& 
       to.push_back(line);
 }
 /// Gauss point stresses and strains (tensor shears) for the .dat, and their cell averages for
-/// the .frd's nodal values. The .dat's integration points are C3D8's: other cell types only get
-/// the nodal values (the .dat reports S and E as unavailable).
+/// the .frd's nodal values.
 struct PointResults
 {
-  std::vector<double> stress, strain; ///< cells x 8 points x 6, or empty
-  std::vector<double> plastic_strain; ///< cells x 8 points (PEEQ), or empty (no plastic body)
+  /// The .dat's points: those of cell c are offsets[c] to offsets[c + 1] (dat_points); all
+  /// empty where a cell has none that CalculiX's are (the .dat reports S and E unavailable).
+  std::vector<int64_t> offsets;
+  std::vector<double> stress, strain; ///< points x 6
+  std::vector<double> plastic_strain; ///< per point (PEEQ), or empty (no plastic body)
   std::vector<Eigen::Matrix<double, 6, 1>> cell_stress, cell_strain;
 };
 
 /// The point of hex8's 2x2x2 rule (x fastest, then y, then z) that is hex8_gauss_points()[a]
-/// (the corners' order, the .dat's).
+/// (the corners' order, hex8_point_results').
 size_t rule_point_of_gauss_point(int a)
 {
   const Eigen::Vector3d& xi = fem::hex8_gauss_points()[a];
   return (xi(0) > 0 ? 1 : 0) + (xi(1) > 0 ? 2 : 0) + (xi(2) > 0 ? 4 : 0);
 }
 
-/// The results of cell c at the points of its solve's rule (a plastic cell from its J2 states,
-/// or a hyperelastic one); hex8's in hex8_gauss_points() order, as hex8_point_results gives them.
+fem::Integration integration_of(const mesh::Mesh& mesh, int32_t c)
+{
+  return mesh.reduced(c) ? fem::Integration::reduced : fem::Integration::full;
+}
+
+/// The points at which CalculiX prints cell c's S, E and PEEQ, in its order, as indices into the
+/// points of the cell's own rule (fem::quadrature). CalculiX's rules (gauss.f: gauss3d2, gauss3d3
+/// for C3D8 and C3D20(R), x fastest; gauss3d4, gauss3d5 for C3D4 and C3D10) are feticon's, in the
+/// same order. A 2D cell CalculiX expands into a 3D one through the thickness, its in-plane axes
+/// kept: CPE4 into C3D8, CPE8R into C3D20R, CPE8 into C3D20, CPE6 into C3D15, so each in-plane
+/// point is printed once per layer of that rule (2, 2, 3, 3), x fastest (feticon's squares run y
+/// fastest). Empty where CalculiX's points are not feticon's: C3D6 (2 against 6), CPE3 (C3D6),
+/// CPE4R (C3D8R's one point; feticon integrates it fully).
+std::vector<int> dat_points(const mesh::Mesh& mesh, int32_t c)
+{
+  const mesh::CellKind kind = mesh.cells.kind(c);
+  const auto n = static_cast<int>(fem::quadrature(kind, integration_of(mesh, c)).points.size());
+  std::vector<int> out;
+  switch (kind)
+  {
+  case mesh::CellKind::hex8:
+  case mesh::CellKind::hex20:
+  case mesh::CellKind::tet4:
+  case mesh::CellKind::tet10:
+    for (int q = 0; q < n; ++q)
+      out.push_back(q);
+    break;
+  case mesh::CellKind::quad4:
+  case mesh::CellKind::quad8:
+  {
+    if (kind == mesh::CellKind::quad4 && mesh.reduced(c))
+      break;
+    const int side = n == 4 ? 2 : 3;
+    for (int layer = 0; layer < (n == 9 ? 3 : 2); ++layer)
+      for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i)
+          out.push_back(side * i + j);
+    break;
+  }
+  case mesh::CellKind::tri6:
+    for (int layer = 0; layer < 3; ++layer)
+      for (int q = 0; q < n; ++q)
+        out.push_back(q);
+    break;
+  case mesh::CellKind::tri3:
+  case mesh::CellKind::wedge6:
+    break;
+  }
+  return out;
+}
+
+/// The results of cell c at the points of its rule (a plastic cell from its J2 states, a
+/// hyperelastic one from its law); hex8_point_results's corner order put into the rule's.
 fem::CellPointResults rule_point_results(const mesh::Mesh& mesh, int32_t c, const Eigen::MatrixX3d& X,
                                          const Eigen::MatrixX3d& u, const fem::Material& material,
                                          fem::Kinematics kinematics, const Eigen::VectorXd* temperature_change,
                                          std::span<const fem::PlasticPointState> states)
 {
   const mesh::CellKind type = mesh.cells.kind(c);
-  const fem::CellPointResults r = fem::cell_point_results(
-      type, X, u, material, kinematics, mesh.reduced(c) ? fem::Integration::reduced : fem::Integration::full, c,
-      temperature_change, states, mesh.planar);
-  if (type != mesh::CellKind::hex8)
-    return r;
-  fem::CellPointResults out = r;
-  for (int a = 0; a < 8; ++a)
+  if (type == mesh::CellKind::hex8 && states.empty() && !material.is_hyperelastic())
   {
-    const size_t q = rule_point_of_gauss_point(a);
-    out.stress[a] = r.stress[q];
-    out.strain[a] = r.strain[q];
-    out.weight[a] = r.weight[q];
+    fem::NodeCoords X8 = X;
+    fem::NodeCoords u8 = u;
+    fem::NodeTemperatures dT = fem::NodeTemperatures::Zero();
+    if (temperature_change)
+      dT = *temperature_change;
+    const fem::Hex8PointResults h =
+        fem::hex8_point_results(X8, u8, material, kinematics, c, temperature_change ? &dT : nullptr);
+    fem::CellPointResults out;
+    out.stress.resize(8);
+    out.strain.resize(8);
+    out.weight.resize(8);
+    for (int a = 0; a < 8; ++a)
+    {
+      const size_t q = rule_point_of_gauss_point(a);
+      out.stress[q] = h.stress[a];
+      out.strain[q] = h.strain[a];
+      out.weight[q] = h.weight[a];
+    }
+    return out;
   }
-  return out;
+  return fem::cell_point_results(type, X, u, material, kinematics, integration_of(mesh, c), c, temperature_change,
+                                 states, mesh.planar);
+}
+
+/// Whether every cell has the .dat's points (dat_points).
+bool prints_points(const mesh::Mesh& mesh)
+{
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    if (dat_points(mesh, c).empty())
+      return false;
+  return true;
 }
 
 PointResults point_results(const fem::Problem& p, const la::Vector& u, const la::Vector& temperature_change,
@@ -95,81 +167,56 @@ PointResults point_results(const fem::Problem& p, const la::Vector& u, const la:
   const bool thermal = temperature_change.size() > 0;
   const mesh::Mesh& mesh = p.mesh;
   PointResults out;
-  const bool dat_points = mesh.cells.all_of_kind(mesh::CellKind::hex8);
-  std::vector<double>& point_stress = out.stress;
-  std::vector<double>& point_strain = out.strain;
-  point_stress.assign(dat_points ? static_cast<size_t>(mesh.n_cells()) * 48 : 0, 0.0);
-  point_strain.assign(point_stress.size(), 0.0);
-  std::vector<Eigen::Matrix<double, 6, 1>>& cell_stress = out.cell_stress;
-  std::vector<Eigen::Matrix<double, 6, 1>>& cell_strain = out.cell_strain;
-  cell_stress.resize(mesh.n_cells());
-  cell_strain.resize(mesh.n_cells());
-  fem::NodeCoords X, ue;
-  fem::NodeTemperatures dT = fem::NodeTemperatures::Zero();
-  Eigen::MatrixX3d X_any, u_any;
-  Eigen::VectorXd dT_any;
+  const bool print = prints_points(mesh);
+  if (print)
+    out.offsets.assign(1, 0);
+  out.cell_stress.resize(mesh.n_cells());
+  out.cell_strain.resize(mesh.n_cells());
+  Eigen::MatrixX3d X, ue;
+  Eigen::VectorXd dT;
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
   {
     const std::span<const int32_t> cell = mesh.cells[c];
     const fem::Material& material = p.materials[mesh.cell_body[c]];
-    fem::CellPointResults r;
-    if (mesh.cells.kind(c) == mesh::CellKind::hex8 && plastic.of(c).empty() && !material.is_hyperelastic())
+    X.resize(static_cast<Eigen::Index>(cell.size()), 3);
+    ue.resize(X.rows(), 3);
+    dT.setZero(X.rows());
+    for (size_t a = 0; a < cell.size(); ++a)
     {
-      for (int a = 0; a < 8; ++a)
-      {
-        X.row(a) = mesh.nodes.row(cell[a]);
-        ue.row(a) = u.segment<3>(3 * cell[a]).transpose();
-        if (thermal)
-          dT(a) = temperature_change(cell[a]);
-      }
-      const fem::Hex8PointResults h = fem::hex8_point_results(X, ue, material, kinematics, c, thermal ? &dT : nullptr);
-      r.stress.assign(h.stress.begin(), h.stress.end());
-      r.strain.assign(h.strain.begin(), h.strain.end());
-      r.weight.assign(h.weight.begin(), h.weight.end());
+      X.row(a) = mesh.nodes.row(cell[a]);
+      ue.row(a) = u.segment<3>(3 * cell[a]).transpose();
+      if (thermal)
+        dT(a) = temperature_change(cell[a]);
     }
-    else
-    {
-      X_any.resize(static_cast<Eigen::Index>(cell.size()), 3);
-      u_any.resize(X_any.rows(), 3);
-      dT_any.setZero(X_any.rows());
-      for (size_t a = 0; a < cell.size(); ++a)
-      {
-        X_any.row(a) = mesh.nodes.row(cell[a]);
-        u_any.row(a) = u.segment<3>(3 * cell[a]).transpose();
-        if (thermal)
-          dT_any(a) = temperature_change(cell[a]);
-      }
-      r = material.is_st_venant_kirchhoff()
-          ? fem::cell_point_results(mesh.cells.kind(c), X_any, u_any, material, kinematics, fem::Integration::full, c,
-                                    thermal ? &dT_any : nullptr, {}, mesh.planar)
-          : rule_point_results(mesh, c, X_any, u_any, material, kinematics, thermal ? &dT_any : nullptr, plastic.of(c));
-    }
+    const fem::CellPointResults r =
+        rule_point_results(mesh, c, X, ue, material, kinematics, thermal ? &dT : nullptr, plastic.of(c));
     Eigen::Matrix<double, 6, 1> s = Eigen::Matrix<double, 6, 1>::Zero(), e = s;
     double volume = 0;
     for (size_t g = 0; g < r.weight.size(); ++g)
     {
-      Eigen::Matrix<double, 6, 1> strain = r.strain[g];
-      strain.tail<3>() *= 0.5; // engineering to tensor shears
-      if (dat_points)
-        for (int j = 0; j < 6; ++j)
-        {
-          point_stress[48 * c + 6 * g + j] = r.stress[g](j);
-          point_strain[48 * c + 6 * g + j] = strain(j);
-        }
       s += r.weight[g] * r.stress[g];
-      e += r.weight[g] * strain;
+      e += r.weight[g] * r.strain[g];
       volume += r.weight[g];
     }
-    cell_stress[c] = s / volume;
-    cell_strain[c] = e / volume;
-  }
-  if (dat_points && !plastic.empty())
-  {
-    out.plastic_strain.assign(static_cast<size_t>(mesh.n_cells()) * 8, 0.0);
-    for (int32_t c = 0; c < mesh.n_cells(); ++c)
-      for (size_t a = 0; a < plastic.of(c).size(); ++a)
-        out.plastic_strain[8 * c + a] =
-            plastic.of(c)[rule_point_of_gauss_point(static_cast<int>(a))].equivalent_plastic_strain;
+    out.cell_stress[c] = s / volume;
+    out.cell_strain[c] = e / volume;
+    out.cell_strain[c].tail<3>() *= 0.5; // engineering to tensor shears
+    if (!print)
+      continue;
+    for (const int q : dat_points(mesh, c))
+    {
+      Eigen::Matrix<double, 6, 1> strain = r.strain[static_cast<size_t>(q)];
+      strain.tail<3>() *= 0.5;
+      for (int j = 0; j < 6; ++j)
+      {
+        out.stress.push_back(r.stress[static_cast<size_t>(q)](j));
+        out.strain.push_back(strain(j));
+      }
+      if (!plastic.empty())
+        out.plastic_strain.push_back(
+            plastic.of(c).empty() ? 0.0 : plastic.of(c)[static_cast<size_t>(q)].equivalent_plastic_strain);
+    }
+    out.offsets.push_back(static_cast<int64_t>(out.stress.size() / 6));
   }
   return out;
 }
@@ -334,6 +381,7 @@ void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
   dat.time = time;
   dat.displacement = std::span<const double>(u_dat.data(), static_cast<size_t>(u_dat.size()));
   dat.reaction_force = std::span<const double>(rf_dat.data(), static_cast<size_t>(rf_dat.size()));
+  dat.point_offsets = points.offsets;
   dat.stress = point_stress;
   dat.strain = point_strain;
   dat.plastic_strain = points.plastic_strain;

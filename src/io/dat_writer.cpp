@@ -16,11 +16,6 @@ using Totals = DeckOutputRequest::Totals;
 
 /// The I10 field of node and element labels.
 
-/// Integration point j of CalculiX's C3D8 (gauss3d2 in gauss.f: xi fastest, then eta, zeta)
-/// as an index into fem::hex8_gauss_points() (VTK corner order: 0 (-,-,-) 1 (+,-,-) 2 (+,+,-)
-/// 3 (-,+,-), then the same at zeta = +).
-constexpr std::array<int, 8> feticon_point_of_calculix = {0, 1, 3, 2, 4, 5, 7, 6};
-
 /// CalculiX prints tensors as xx yy zz xy xz yz; feticon's arrays hold xx yy zz xy yz zx.
 constexpr std::array<int, 6> feticon_component_of_calculix = {0, 1, 2, 3, 5, 4};
 
@@ -32,8 +27,8 @@ void check_members(const std::vector<int32_t>& ids, int32_t n, const std::string
                   "dat '" << path.string() << "': " << what << " holds index " << id << " outside [0, " << n << ")");
 }
 
-void check_size(std::span<const double> values, std::size_t expected, const char* name,
-                const std::filesystem::path& path)
+template <class T>
+void check_size(std::span<const T> values, std::size_t expected, const char* name, const std::filesystem::path& path)
 {
   FETICON_CHECK(values.empty() || values.size() == expected,
                 "dat '" << path.string() << "': " << name << " has " << values.size() << " values, expected "
@@ -235,13 +230,15 @@ void DatWriter::print_integration_points(TextFileBuffer& file, const DatStep& st
     for (const int32_t cell : cells)
     {
       const int64_t label = label_of(_model.element_labels, cell);
-      for (int j = 0; j < 8; ++j)
+      const auto first = static_cast<std::size_t>(step.point_offsets[static_cast<std::size_t>(cell)]);
+      const auto count = static_cast<std::size_t>(step.point_offsets[static_cast<std::size_t>(cell) + 1]) - first;
+      for (std::size_t j = 0; j < count; ++j)
       {
         // printoutint.f: I10, 1X, I3, 6 x (1X, 1PE13.6).
-        const double* point = &values[(std::size_t(cell) * 8 + feticon_point_of_calculix[j]) * components];
+        const double* point = &values[(first + j) * components];
         append_integer(out, label, 10);
         out += ' ';
-        append_integer(out, j + 1, 3);
+        append_integer(out, static_cast<int64_t>(j) + 1, 3);
         for (int k = 0; k < components; ++k)
         {
           out += ' ';
@@ -301,9 +298,15 @@ std::vector<std::string> DatWriter::add_step(const DatStep& step, const std::vec
   const std::size_t n_cells = static_cast<std::size_t>(_model.n_cells);
   check_size(step.displacement, 3 * n_nodes, "displacement", _path);
   check_size(step.reaction_force, 3 * n_nodes, "reaction_force", _path);
-  check_size(step.stress, 48 * n_cells, "stress (cells x 8 points x 6)", _path);
-  check_size(step.strain, 48 * n_cells, "strain (cells x 8 points x 6)", _path);
-  check_size(step.plastic_strain, 8 * n_cells, "plastic_strain (cells x 8 points)", _path);
+  check_size(step.point_offsets, n_cells + 1, "point_offsets (cells + 1)", _path);
+  const std::size_t n_points = step.point_offsets.empty() ? 0 : static_cast<std::size_t>(step.point_offsets.back());
+  FETICON_CHECK(
+      step.point_offsets.empty() ||
+          (step.point_offsets.front() == 0 && std::is_sorted(step.point_offsets.begin(), step.point_offsets.end())),
+      "dat '" << _path.string() << "': point_offsets do not start at 0 and increase");
+  check_size(step.stress, 6 * n_points, "stress (points x 6)", _path);
+  check_size(step.strain, 6 * n_points, "strain (points x 6)", _path);
+  check_size(step.plastic_strain, n_points, "plastic_strain (points)", _path);
   check_size(step.contact_pressure, n_nodes, "contact_pressure", _path);
   check_size(step.contact_gap, n_nodes, "contact_gap", _path);
 

@@ -77,12 +77,14 @@ struct DatStep
   /// minus the contact force on the body; ccx counts its contact springs as elements), i.e. the
   /// support reactions plus the nodal loads: ~0 at free nodes, contact nodes included.
   std::span<const double> reaction_force;
-  /// n_cells x 8 x 6 Cauchy stress (Pa) at the Gauss points in the order of
-  /// fem::hex8_gauss_points() (VTK corner order), components xx yy zz xy yz zx: S
+  /// The integration points: those of cell c are point_offsets[c] to point_offsets[c + 1], in
+  /// the order CalculiX prints them (n_cells + 1 entries; empty: no point output)
+  std::span<const int64_t> point_offsets;
+  /// points x 6 Cauchy stress (Pa), components xx yy zz xy yz zx: S
   std::span<const double> stress;
-  /// n_cells x 8 x 6 strain, tensor components (xy = gamma_xy / 2), same orders as stress: E
+  /// points x 6 strain, tensor components (xy = gamma_xy / 2): E
   std::span<const double> strain;
-  /// n_cells x 8 equivalent plastic strain, same order (empty: no plastic body): PEEQ
+  /// per point equivalent plastic strain (empty: no plastic body): PEEQ
   std::span<const double> plastic_strain;
   std::span<const double> contact_pressure; ///< n_nodes (Pa), >= 0: CSTR
   std::span<const double> contact_gap;      ///< n_nodes (m), normal gap, < 0 penetration: CDIS

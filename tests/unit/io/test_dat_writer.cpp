@@ -103,25 +103,6 @@ std::vector<DeckOutputRequest> two_blocks_requests(int line)
           {Kind::el_print, "ETOP", {"S", "E"}, Totals::no, where(line + 6)}};
 }
 
-/// CalculiX's gauss3d2 (ccx_2.20/src/gauss.f): the C3D8 integration points, xi fastest.
-const std::array<std::array<double, 3>, 8> calculix_gauss3d2 = {
-    {{-1, -1, -1}, {+1, -1, -1}, {-1, +1, -1}, {+1, +1, -1}, {-1, -1, +1}, {+1, -1, +1}, {-1, +1, +1}, {+1, +1, +1}}};
-
-/// feticon's Gauss point with the coordinates of CalculiX's point j (signs of +-1/sqrt(3)).
-int feticon_point(int j)
-{
-  const auto& points = fem::hex8_gauss_points();
-  for (int p = 0; p < 8; ++p)
-  {
-    bool same = true;
-    for (int k = 0; k < 3; ++k)
-      same = same && (points[p][k] > 0) == (calculix_gauss3d2[j][k] > 0);
-    if (same)
-      return p;
-  }
-  throw std::runtime_error("no feticon Gauss point for CalculiX point " + std::to_string(j + 1));
-}
-
 /// Reference: ccx 2.20's .dat for two_blocks_dat.inp. The writer gets the model of the deck and
 /// the values ccx printed and must write the same text, byte for byte: blank lines, headers
 /// with set names and times (E14.7), label columns (I10, I3), values (1PE13.6), the total line
@@ -159,8 +140,8 @@ TEST(DatWriter, ReproducesWhatCcxWrites)
       gap[node(row[0])] = row[1];
     for (const auto& row : b[4].rows)
       pressure[node(row[0])] = row[1];
-    // Element 11 (cell 0): CalculiX's point j and order xx yy zz xy xz yz into feticon's point
-    // (fem::hex8_gauss_points()) and order xx yy zz xy yz zx.
+    // Element 11 (cell 0): CalculiX's point j (stored in its order) and order xx yy zz xy xz yz
+    // into feticon's order xx yy zz xy yz zx.
     const std::array<int, 6> component = {0, 1, 2, 3, 5, 4};
     for (const auto& [block, values] : {std::pair{&b[7], &stress}, std::pair{&b[8], &strain}})
     {
@@ -168,15 +149,17 @@ TEST(DatWriter, ReproducesWhatCcxWrites)
       for (const auto& row : block->rows)
       {
         ASSERT_EQ(row[0], 11.0);
-        const int p = feticon_point(static_cast<int>(row[1]) - 1);
+        const int p = static_cast<int>(row[1]) - 1;
         for (int k = 0; k < 6; ++k)
           (*values)[6 * p + component[k]] = row[2 + k];
       }
     }
+    const std::vector<int64_t> offsets = {0, 8, 16};
     DatStep step;
     step.time = times[s];
     step.displacement = u;
     step.reaction_force = rf;
+    step.point_offsets = offsets;
     step.stress = stress;
     step.strain = strain;
     step.contact_pressure = pressure;
@@ -209,30 +192,28 @@ TEST(DatWriter, ReproducesWhatCcxWrites)
   }
 }
 
-TEST(DatWriter, IntegrationPointsInCalculixOrder)
+TEST(DatWriter, IntegrationPointsPerCellInStoredOrder)
 {
-  // Reference: gauss3d2 of ccx's gauss.f (above) for the point order, printout.f format 106 for
-  // the component order sxx syy szz sxy sxz syz. Feticon's point p carries the signs of its
-  // coordinates as xx, yy, zz and 4, 5, 6 as xy, yz, zx: CalculiX's row j must show the signs
-  // of its point j and sxy, sxz, syz = 4, 6, 5.
+  // Reference: printout.f format 106 for the component order sxx syy szz sxy sxz syz; the
+  // points are printed as stored (app/calculix_results.cpp puts them in CalculiX's order),
+  // numbered from 1 in each cell, as many as the offsets give it (a C3D10's 4, a C3D20R's 8).
+  // Point j of cell c carries 100 c + j, 10 + j, 20 + j as xx, yy, zz and 4, 5, 6 as xy, yz, zx.
   DatModel model;
   model.n_nodes = 8;
-  model.n_cells = 1;
-  model.element_labels = {42};
-  const auto& points = fem::hex8_gauss_points();
-  std::vector<double> stress(48);
-  for (int p = 0; p < 8; ++p)
-  {
-    for (int k = 0; k < 3; ++k)
-      stress[6 * p + k] = points[p][k] > 0 ? 1.0 : -1.0;
-    stress[6 * p + 3] = 4;
-    stress[6 * p + 4] = 5;
-    stress[6 * p + 5] = 6;
-  }
+  model.n_cells = 2;
+  model.element_labels = {42, 43};
+  const std::vector<int64_t> offsets = {0, 4, 12};
+  std::vector<double> stress;
+  for (int c = 0; c < 2; ++c)
+    for (int64_t j = 0; j < offsets[c + 1] - offsets[c]; ++j)
+      for (const double v : {100.0 * c + static_cast<double>(j), 10.0 + static_cast<double>(j),
+                             20.0 + static_cast<double>(j), 4.0, 5.0, 6.0})
+        stress.push_back(v);
   const fs::path path = fresh_directory("dat_points") / "points.dat";
   DatWriter writer(path, model);
   DatStep step;
   step.time = 1.0;
+  step.point_offsets = offsets;
   step.stress = stress;
   EXPECT_TRUE(writer.add_step(step, {{Kind::el_print, "", {"S"}, Totals::no, "m.inp:3"}}).empty());
   writer.close();
@@ -241,14 +222,17 @@ TEST(DatWriter, IntegrationPointsInCalculixOrder)
   EXPECT_EQ(blocks[0].header,
             " stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz) for set EALL "
             "and time  0.1000000E+01");
-  ASSERT_EQ(blocks[0].rows.size(), 8u);
-  for (int j = 0; j < 8; ++j)
+  ASSERT_EQ(blocks[0].rows.size(), 12u);
+  for (size_t r = 0; r < 12; ++r)
   {
-    const std::vector<double>& row = blocks[0].rows[j];
-    EXPECT_EQ(row[0], 42);
+    const std::vector<double>& row = blocks[0].rows[r];
+    const int c = r < 4 ? 0 : 1;
+    const auto j = static_cast<double>(r < 4 ? r : r - 4);
+    EXPECT_EQ(row[0], 42 + c);
     EXPECT_EQ(row[1], j + 1);
-    for (int k = 0; k < 3; ++k)
-      EXPECT_EQ(row[2 + k], calculix_gauss3d2[j][k]) << "point " << j + 1;
+    EXPECT_EQ(row[2], 100.0 * c + j);
+    EXPECT_EQ(row[3], 10 + j);
+    EXPECT_EQ(row[4], 20 + j);
     EXPECT_EQ(row[5], 4);
     EXPECT_EQ(row[6], 6);
     EXPECT_EQ(row[7], 5);
@@ -371,7 +355,9 @@ TEST(DatWriter, RejectsUnknownSetsAndWrongSizes)
               std::string::npos)
         << error.what();
   }
+  const std::vector<int64_t> offsets = {0, 8, 16};
   const std::vector<double> short_stress(95);
+  step.point_offsets = offsets;
   step.stress = short_stress;
   EXPECT_THROW(writer.add_step(step, {}), Error);
   model.node_sets["BAD"] = {16};
