@@ -73,7 +73,8 @@ void choose_preconditioner(const io::Settings& settings, const ModelSize& size, 
     set_preconditioner(out, name, "given", layers);
   else if (size.plane_strain)
     set_preconditioner(out, "dirichlet",
-                       "plane strain: its small boundary blocks make its steps cheap, and it needs the fewest of them",
+                       "a plane model (2D cells, or the plane-strain layer): its small boundary blocks make its "
+                       "steps cheap, and it needs the fewest of them",
                        layers);
   else if (settings.text("dual.operator") == "explicit") // whose blocks hold the whole S_s
     set_preconditioner(out, "dirichlet", "dual.operator = explicit forms it", layers);
@@ -160,6 +161,10 @@ void choose_count(const io::Settings& settings, const ModelSize& size, const Mem
   out.subdomains_reason = size.mesh_nodes > 0
       ? format("%.0f DOFs, counted as %.0f for hex20's denser factors, at about %.0f DOFs a subdomain",
                3.0 * static_cast<double>(size.mesh_nodes), dofs, target)
+      : size.plane_strain
+      ? format("%.0f nodes, %.0f units at 3 a node (the rule's unit, measured on the plane-strain layer; it "
+               "holds for 2D cells, which have 2 DOFs a node: docs/benchmarks.md), at about %.0f a subdomain",
+               static_cast<double>(size.nodes), dofs, target)
       : format("%.0f DOFs at about %.0f DOFs a subdomain", dofs, target);
   if (n == cap && n < dofs / target)
     out.subdomains_reason += ": one subdomain per cell";
