@@ -254,16 +254,21 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
   }
 }
 
-CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
-                                    const Material& material, Kinematics kinematics, Integration integration,
-                                    int64_t cell, const Eigen::VectorXd* temperature_change,
-                                    std::span<const PlasticPointState> plastic, const mesh::Planar& planar)
+namespace
+{
+/// Cauchy stress, strain and w det J at every quadrature point of a cell, each handed to
+/// `visit(stress, strain, weight)` as it is computed (cell_point_results keeps them,
+/// cell_cauchy_stress averages them without storing).
+template <class Visit>
+void for_each_point_result(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
+                           const Material& material, Kinematics kinematics, Integration integration, int64_t cell,
+                           const Eigen::VectorXd* temperature_change, std::span<const PlasticPointState> plastic,
+                           const mesh::Planar& planar, Visit visit)
 {
   const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
   const bool plane_stress = mesh::is_planar(type) && planar.kind == mesh::PlanarKind::plane_stress;
   const QuadratureRule& rule = quadrature(type, integration);
   const std::vector<PointShapes>& shapes = quadrature_shapes(type, integration);
-  CellPointResults out;
   for (size_t q = 0; q < rule.points.size(); ++q)
   {
     const PointGeometry geo = point_geometry(type, X, shapes[q], rule.weights[q], cell, planar);
@@ -295,10 +300,23 @@ CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d&
       // sigma = F S F' / det F (det F > 0, checked in deformation).
       stress = voigt_of(Fd * tensor_of(stress) * Fd.transpose() / Fd.determinant());
     }
+    visit(stress, strain, geo.weight_det_j);
+  }
+}
+} // namespace
+
+CellPointResults cell_point_results(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u,
+                                    const Material& material, Kinematics kinematics, Integration integration,
+                                    int64_t cell, const Eigen::VectorXd* temperature_change,
+                                    std::span<const PlasticPointState> plastic, const mesh::Planar& planar)
+{
+  CellPointResults out;
+  for_each_point_result(type, X, u, material, kinematics, integration, cell, temperature_change, plastic, planar,
+                        [&](const Voigt& stress, const Voigt& strain, double weight) {
     out.stress.push_back(stress);
     out.strain.push_back(strain);
-    out.weight.push_back(geo.weight_det_j);
-  }
+    out.weight.push_back(weight);
+  });
   return out;
 }
 
@@ -307,15 +325,13 @@ Voigt cell_cauchy_stress(mesh::CellKind type, const Eigen::MatrixX3d& X, const E
                          const Eigen::VectorXd* temperature_change, std::span<const PlasticPointState> plastic,
                          const mesh::Planar& planar)
 {
-  const CellPointResults points =
-      cell_point_results(type, X, u, material, kinematics, integration, cell, temperature_change, plastic, planar);
   Voigt sum = Voigt::Zero();
   double volume = 0;
-  for (size_t q = 0; q < points.weight.size(); ++q)
-  {
-    sum += points.stress[q] * points.weight[q];
-    volume += points.weight[q];
-  }
+  for_each_point_result(type, X, u, material, kinematics, integration, cell, temperature_change, plastic, planar,
+                        [&](const Voigt& stress, const Voigt&, double weight) {
+    sum += stress * weight;
+    volume += weight;
+  });
   return sum / volume;
 }
 
