@@ -20,25 +20,14 @@ export OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_mpi_yield_when_idl
 quiet=(-q --set output.plots=false)
 data="$src/tests/data/calculix"
 
-# agreement FOLDER BOUND [beyond]: plate.dat.ref's displacements within BOUND of max |u|.
-agreement() {
-  local figures
-  figures=$(/usr/bin/python3 "$src/tests/tools/calculix_reference_agreement.py" "$data/plate.inp" \
-    "$data/plate.dat.ref" "$1")
-  /usr/bin/python3 - "$figures" "$2" "${3:-within}" <<'PY'
-import json, sys
-f, bound, kind = json.loads(sys.argv[1]), float(sys.argv[2]), sys.argv[3]
-ok = f["relative"] <= bound if kind == "within" else f["relative"] > bound
-print(f"plate: {f['relative']:.3g} of max |u| from CalculiX ({kind} {bound:g}, {f['nodes']} nodes)")
-sys.exit(0 if ok else 1)
-PY
-}
+source "$src/tests/tools/expect_agreement.sh"
+check() { agreement "$data/plate.inp" "$data/plate.dat.ref" "$@"; }
 
 "$feticon" run "$data/plate.inp" -o "$work/hard" "${quiet[@]}" 2> /dev/null
-agreement "$work/hard" 1e-3
-agreement "$work/hard" 1e-4 beyond
+check "$work/hard" 1e-3
+check "$work/hard" 1e-4 beyond
 "$feticon" run "$data/plate.inp" -o "$work/law" "${quiet[@]}" --set contact.law=deck 2> /dev/null
-agreement "$work/law" 3e-4
+check "$work/law" 3e-4
 grep -q "1 zero-energy mode(s) besides its rigid-body motions" "$work/hard/summary.json" ||
   { echo "deck_plate.sh: the warning naming the zero-energy modes is missing" >&2; exit 1; }
 mpirun --oversubscribe -np 2 "$feticon" run "$data/plate.inp" -o "$work/np2" "${quiet[@]}" 2> /dev/null

@@ -17,7 +17,11 @@ anticlastic curvature, no lateral contraction), which C3D20 holds exactly: the e
 M L / (E I) (I = 1/12 m^4) and the elongation F L / (E A) are the discrete answers too, to the
 solver's tolerance.
 """
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from c3d20_bar import c3d20_bar  # noqa: E402
 
 E, M, F = 1e9, 1e4, 1e6
 
@@ -26,30 +30,12 @@ def main(argv):
     out, kind = argv[1], argv[2]
     length = float(argv[3]) if len(argv) > 3 else 10.0
     nx = int(argv[4]) if len(argv) > 4 else 10
-    h = length / nx
-
-    def label(i, j, k):  # lattice of half-cells, i along x, j along y, k along z
-        return i * 9 + j * 3 + k + 1
-
-    corners = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (0, 0, 2), (2, 0, 2), (2, 2, 2), (0, 2, 2)]
-    edges = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7)]
-    cells, used = [], set()
-    for e in range(nx):
-        local = [(2 * e + a, b, c) for a, b, c in corners]
-        mids = [tuple((p + q) // 2 for p, q in zip(local[s], local[t])) for s, t in edges]
-        nodes = [label(*p) for p in local + mids]
-        cells.append(nodes)
-        used.update(local + mids)
-    lines = ["** coupled cantilever (tests/tools/coupled_cantilever_deck.py " + kind + ")", "*NODE"]
-    for p in sorted(used, key=lambda p: label(*p)):
-        lines.append(f"{label(*p)}, {p[0] * h / 2!r}, {p[1] / 2!r}, {p[2] / 2!r}")
+    nodes, elements, used, label = c3d20_bar(length, nx)
+    lines = ["** coupled cantilever (tests/tools/coupled_cantilever_deck.py " + kind + ")", "*NODE"] + nodes
     lines.append(f"10000, {length!r}, 0.5, 0.5")
     if kind.startswith("rigid"):
         lines.append("10001, 0., 0., 0.")
-    lines.append("*ELEMENT, TYPE=C3D20, ELSET=BAR")
-    for n, nodes in enumerate(cells):
-        lines.append(f"{n + 1}, " + ", ".join(map(str, nodes[:15])) + ",")
-        lines.append(", ".join(map(str, nodes[15:])))
+    lines += elements
     lines.append("*NSET, NSET=CLAMP")
     lines += [str(label(*p)) for p in sorted(used) if p[0] == 0]
     lines.append("*NSET, NSET=END")

@@ -13,7 +13,11 @@ Both ends held in x, the bar carries the pretension as uniform tension: sigma_xx
 the gap q = F L / (E A) (0.01 m for F = 1e6 N), or the reaction E A q / L for a held gap; with
 nu = 0 the stress is uniaxial and C3D20 holds the linear displacement exactly.
 """
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from c3d20_bar import c3d20_bar  # noqa: E402
 
 E, F, Q = 1e9, 1e6, 0.01
 
@@ -21,27 +25,10 @@ E, F, Q = 1e9, 1e6, 0.01
 def main(argv):
     out, kind = argv[1], argv[2]
     length, nx = 10.0, 10
-    h = length / nx
-
-    def label(i, j, k):  # lattice of half-cells, i along x, j along y, k along z
-        return i * 9 + j * 3 + k + 1
-
-    corners = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (0, 0, 2), (2, 0, 2), (2, 2, 2), (0, 2, 2)]
-    edges = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7)]
-    cells, used = [], set()
-    for e in range(nx):
-        local = [(2 * e + a, b, c) for a, b, c in corners]
-        mids = [tuple((p + q) // 2 for p, q in zip(local[s], local[t])) for s, t in edges]
-        cells.append([label(*p) for p in local + mids])
-        used.update(local + mids)
-    lines = ["** bar with a pretension section (tests/tools/pretension_bar_deck.py " + kind + ")", "*NODE"]
-    for p in sorted(used, key=lambda p: label(*p)):
-        lines.append(f"{label(*p)}, {p[0] * h / 2!r}, {p[1] / 2!r}, {p[2] / 2!r}")
+    nodes, elements, used, label = c3d20_bar(length, nx)
+    lines = ["** bar with a pretension section (tests/tools/pretension_bar_deck.py " + kind + ")", "*NODE"] + nodes
     lines.append("10000, 0., 0., 0.")
-    lines.append("*ELEMENT, TYPE=C3D20, ELSET=BAR")
-    for n, nodes in enumerate(cells):
-        lines.append(f"{n + 1}, " + ", ".join(map(str, nodes[:15])) + ",")
-        lines.append(", ".join(map(str, nodes[15:])))
+    lines += elements
     lines.append("*NSET, NSET=LEFT")
     lines += [str(label(*p)) for p in sorted(used) if p[0] == 0]
     lines.append("*NSET, NSET=RIGHT")
