@@ -78,8 +78,9 @@ fem::Integration integration_of(const mesh::Mesh& mesh, int32_t c)
 /// same order. A 2D cell CalculiX expands into a 3D one through the thickness, its in-plane axes
 /// kept: CPE4 into C3D8, CPE8R into C3D20R, CPE8 into C3D20, CPE6 into C3D15, so each in-plane
 /// point is printed once per layer of that rule (2, 2, 3, 3), x fastest (feticon's squares run y
-/// fastest). Empty where CalculiX's points are not feticon's: C3D6 (2 against 6), CPE3 (C3D6),
-/// CPE4R (C3D8R's one point; feticon integrates it fully).
+/// fastest). Empty where CalculiX's points are not feticon's: C3D6 (2 against 6), CPE3 (C3D6).
+/// C3D8R and CPE4R cells, which feticon integrates fully (a warning says so when the deck is
+/// read), print the 8 points of that rule where CalculiX prints its one reduced point.
 std::vector<int> dat_points(const mesh::Mesh& mesh, int32_t c)
 {
   const mesh::CellKind kind = mesh.cells.kind(c);
@@ -97,8 +98,6 @@ std::vector<int> dat_points(const mesh::Mesh& mesh, int32_t c)
   case mesh::CellKind::quad4:
   case mesh::CellKind::quad8:
   {
-    if (kind == mesh::CellKind::quad4 && mesh.reduced(c))
-      break;
     const int side = n == 4 ? 2 : 3;
     for (int layer = 0; layer < (n == 9 ? 3 : 2); ++layer)
       for (int j = 0; j < side; ++j)
