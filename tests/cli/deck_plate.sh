@@ -7,7 +7,7 @@
 # |u| with hard contact (measured 2.9e-4: the penetration of the deck's law K = 1e8 that hard
 # contact leaves out) and 3e-4 with contact.law=deck (measured 1.1e-4); hard contact is
 # beyond 1e-4, so the deck's law is what closes the gap. The same iterations and displacement
-# on 2 MPI ranks, and the warning that names the modes.
+# on 2 MPI ranks, and the warning that names the modes; SET= on an output request warns.
 # Usage: deck_plate.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -32,3 +32,9 @@ grep -q "1 zero-energy mode(s) besides its rigid-body motions" "$work/hard/summa
   { echo "deck_plate.sh: the warning naming the zero-energy modes is missing" >&2; exit 1; }
 mpirun --oversubscribe -np 2 "$feticon" run "$data/plate.inp" -o "$work/np2" "${quiet[@]}" 2> /dev/null
 /usr/bin/python3 "$src/tests/tools/compare_runs.py" 1e-10 "$work/hard" "$work/np2"
+# SET= on an output request (thread.inp's *CONTACT PRINT) is no CalculiX parameter: a warning,
+# as CalculiX gives, not a refusal.
+sed 's/^\*NODE PRINT,NSET=Nall,/*NODE PRINT,NSET=Nall,SET=Nall,/' "$data/plate.inp" > "$work/plate_set.inp"
+"$feticon" run "$work/plate_set.inp" -o "$work/set" "${quiet[@]}" 2> /dev/null
+grep -q "SET= is no parameter of \*NODE PRINT" "$work/set/summary.json" ||
+  { echo "deck_plate.sh: SET= on *NODE PRINT did not warn" >&2; exit 1; }
