@@ -69,6 +69,7 @@ nlohmann::json records(const nonlinear::ContactSolution& s)
           {"smalbe_M", s.restart.dual.M},
           {"smalbe_rho", s.restart.dual.rho},
           {"pfp_norm", s.restart.dual.operator_norm},
+          {"escalated", s.restart.escalated},
           {"warnings", s.warnings}};
 }
 /// One outer iteration of the records' history, as records() wrote it (rows of older
@@ -166,6 +167,7 @@ void read_checkpoint(const std::filesystem::path& path, nonlinear::ContactSoluti
     r.dual.M = json.value("smalbe_M", 0.0);
     r.dual.rho = json.value("smalbe_rho", 0.0);
     r.dual.operator_norm = json.value("pfp_norm", 0.0);
+    r.escalated = json.value("escalated", false);
     solution.steps.clear();
     for (const auto& st : json.at("steps"))
     {

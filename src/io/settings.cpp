@@ -81,7 +81,8 @@ std::vector<SettingSpec> make_specs()
       {"newton.stiffness", "auto", "FETI outer-loop stiffness: initial (K_0 kept, Vondrák et al.'s "
                                    "modified Newton), step or iteration (K_M(u) refreshed); auto: initial, "
                                    "iteration where a body is plastic (docs/materials.md) or a coupling turns by finite "
-                                   "rotations (docs/contact.md)",
+                                   "rotations (docs/contact.md), and from the first load step that fails under K_0 on "
+                                   "(with QPs to qp.rtol alone; docs/contact.md)",
        Type::text, {"auto", "initial", "step", "iteration"}, 0, 0, false},
       {"newton.max_iterations", "15", "outer iterations per load step", Type::integer, {}, 1, 10000, false},
       {"newton.cutbacks", "5", "a load step whose outer loop diverges or does not converge is solved again from "

@@ -75,6 +75,9 @@ struct RestartState
   /// The start values of the DOFs the last completed step's stage holds and the stage before
   /// left free (fem::LoadHistory::start_values); empty: none.
   std::vector<double> stage_start;
+  /// The run had switched from K_0 to K_M(u) refreshed at every outer iteration with QPs to
+  /// qp.rtol (FetiContactSolve::escalate): a restart continues so.
+  bool escalated = false;
 };
 
 struct ContactSolution

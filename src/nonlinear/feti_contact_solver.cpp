@@ -270,6 +270,14 @@ public:
   fem::LoadHistory& history() { return _history; }
 
 private:
+  /// newton.stiffness = auto, the first load step that fails under K_0: the rest of the run
+  /// refreshes K_M(u) at every outer iteration and solves each QP to qp.rtol, without the
+  /// force tolerance (qp.force_rtol). On a slender body (beamcontact's, contact2's and
+  /// friction1's C3D20(R) beams) K_0's modified Newton contracts slowly once the beam turns,
+  /// and a QP error of force_rtol times the load, multiplied by the beam's compliance, is a
+  /// correction |du|/|u| of 1e-6 to 1e-5 that no outer iteration goes below: with both the
+  /// three run (docs/calculix_decks.md). Runs that converge under K_0 are unchanged.
+  void escalate(int step);
   /// K, R and their factors at the current u; the preconditioner and explicit blocks with them.
   void update_stiffness();
   /// The Schur complements' boundaries from _schur_boundary, and the K_ii factors or the
@@ -386,8 +394,11 @@ private:
   /// loop the contact set's (linear_verdict). A plastic body's f_int is nonlinear in u even at
   /// small strain: its outer loop is the modified Newton loop of large displacements.
   const bool _linear;
-  const StiffnessUpdate _stiffness; ///< SolverSettings::stiffness_of the problem
-  fem::LoadHistory _history;        ///< split where a load step is cut back
+  StiffnessUpdate _stiffness; ///< SolverSettings::stiffness_of the problem, until escalate()
+  /// The run left K_0 for K_M(u) refreshed at every outer iteration and QPs to qp.rtol alone
+  /// (escalate).
+  bool _escalated = false;
+  fem::LoadHistory _history; ///< split where a load step is cut back
   std::unique_ptr<decomposition::Decomposition> _decomp;
   par::BlockSpace _primal_space;
   std::unique_ptr<decomposition::SubdomainSystem> _system;
@@ -709,6 +720,8 @@ int FetiContactSolve::restore(const ContactSolution& previous)
     _system->set_plastic_states(_out.plastic);
   }
   set_temperatures(r.completed_steps);
+  if (r.escalated)
+    escalate(0);
   ScopedTimer t(_timers, "internal forces");
   update_internal_force();
   // A refreshed K_M(u) is rebuilt at the first outer iteration of the step, as it would
@@ -778,6 +791,7 @@ bool FetiContactSolve::cut_back(int step)
 {
   if (_linear)
     return false; // one load step, whose outer loop is the contact set's: a smaller one is no easier
+  escalate(step);
   _u = _step_start.u;
   _multipliers = _step_start.multipliers;
   _previous_active = _step_start.active;
@@ -787,6 +801,23 @@ bool FetiContactSolve::cut_back(int step)
   ScopedTimer t(_timers, "internal forces");
   update_internal_force();
   return true;
+}
+
+void FetiContactSolve::escalate(int step)
+{
+  if (!_settings.stiffness_auto || _escalated || _stiffness == StiffnessUpdate::iteration)
+    return;
+  _escalated = true;
+  _stiffness = StiffnessUpdate::iteration;
+  _stiffness_stale = true;
+  if (step == 0)
+    return; // a restart: the run's warnings hold the first run's line
+  const std::string warning = "load step " + std::to_string(step) +
+      " failed with K_0 (the cutback below says why): from here on K_M(u) is refreshed at every outer iteration and "
+      "each QP is "
+      "solved to qp.rtol (newton.stiffness = auto)";
+  log::warning(warning);
+  _out.warnings.push_back(warning);
 }
 
 void FetiContactSolve::update_internal_force()
@@ -1119,7 +1150,7 @@ dual::DualPenaltyOptions FetiContactSolve::qp_options(int k)
   // of the order of the load, rtol ||b|| asked about two decades more than the answer shows
   // (docs/benchmarks.md); where the initial gaps make ||b|| many times the load, rtol ||b|| is
   // the smaller bound and holds.
-  if (dual_options.force_rtol > 0)
+  if (dual_options.force_rtol > 0 && !_escalated)
     dual_options.force_tolerance = dual_options.force_rtol * force_scale();
   // The rigid-body part of the force residual is G lambda - e, which SMALBE-M's own test
   // (relative to ||b||, dominated by the gaps of inactive contact rows) leaves growing with
@@ -1232,6 +1263,7 @@ void FetiContactSolve::end_load_step(const LoadStep& record)
       _out.plastic.unpack(_decomp->comm().all_gather(_out.plastic.pack(_out.owned_cells)));
   }
   RestartState& r = _out.restart;
+  r.escalated = _escalated;
   if (!_out.plastic.empty())
   {
     std::vector<int32_t> cells(static_cast<size_t>(_problem.mesh.n_cells()));
