@@ -110,25 +110,26 @@ std::optional<ClosestPoint> closest_face_projection(const std::vector<FaceGeomet
   std::optional<ClosestPoint> best;
   for (const auto& [box_distance, f] : order)
   {
-    if (best && box_distance > std::abs(best->gap))
+    // A face whose box is farther than the best gap cannot be closer, but one a round-off
+    // farther may tie with it (a node on the side two faces share lies on both boxes' rims).
+    if (best && box_distance > std::abs(best->gap) + 1e-6 * face_size(geometries[best->face]))
       break;
     const FaceGeometry& face = geometries[f];
     const QuadProjection p = project_to_face(face, x_s);
-    if (face.kind == mesh::FaceKind::quad4)
-    {
-      if (p.accepted() && (!best || std::abs(p.gap) < std::abs(best->gap)))
-        best = ClosestPoint{f, p.xi, p.normal, p.gap, ProjectionKind::face};
-      continue;
-    }
-    // Other faces (triangles, quadratic faces) accept a projection up to side_tolerance outside
-    // and give a node on a common side, whose gaps there agree to round-off, to the smaller
-    // face id. With the 1e-6 of quad4, a node on the side of two triangles that meet at an
-    // angle crossed it from one outer iteration to the next (each face's normal pushing it
-    // over to the other), and hertz3d with tet4, tet10 or wedge6 cells and large
-    // displacements stalled at |du|/|u| ~ 1e-5. quad4 faces keep their rule: hex8 runs are
-    // unchanged.
+    // A node on a common side, whose gaps to the two faces agree to round-off, goes to the
+    // smaller face id: chosen by the round-off, it crossed from one face to the other at every
+    // outer iteration. quad4 faces accept a projection up to 1e-6 outside (QuadProjection),
+    // other faces (triangles, quadratic faces) up to side_tolerance: with 1e-6, a node on the
+    // side of two triangles that meet at an angle crossed it each iteration (each face's
+    // normal pushing it over to the other), and hertz3d with tet4, tet10 or wedge6 cells and
+    // large displacements stalled at |du|/|u| ~ 1e-5. On quad4 faces the tie alone was missing:
+    // CalculiX's friction1 (hard contact, matching meshes: every slave node on a master edge)
+    // alternated between two iterates 6e-6 apart (relative) for any number of outer iterations.
     constexpr double side_tolerance = 1e-4;
-    if (!p.converged || outside_distance(face.kind, p.xi) > side_tolerance)
+    const bool accepted = face.kind == mesh::FaceKind::quad4
+        ? p.accepted()
+        : p.converged && outside_distance(face.kind, p.xi) <= side_tolerance;
+    if (!accepted)
       continue;
     const double tie = 1e-9 * face_size(face);
     if (!best || std::abs(p.gap) < std::abs(best->gap) - tie ||

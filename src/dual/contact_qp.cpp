@@ -212,12 +212,12 @@ double ContactQp::feasibility_error(const la::Vector& lambda) const
   return (_feti.apply_G(lambda) - _e).norm() / (scale > 0 ? scale : 1.0);
 }
 
-PrimalSolution ContactQp::recover(const la::Vector& lambda, const std::vector<char>& active,
-                                  const std::string& unheld) const
+PrimalSolution ContactQp::recover(const la::Vector& lambda, const std::vector<char>& active, const std::string& unheld,
+                                  const SlidingRows& sliding) const
 {
   if (!_compliance)
-    return recover_primal(_feti, _f_stacked, _c, lambda, active, unheld);
+    return recover_primal(_feti, _f_stacked, _c, lambda, active, unheld, sliding);
   // A penalty row holds at the penetration its law gives the multiplier: B_i u = c_i + C_i lambda_i.
-  return recover_primal(_feti, _f_stacked, _c + _compliance->cwiseProduct(lambda), lambda, active, unheld);
+  return recover_primal(_feti, _f_stacked, _c + _compliance->cwiseProduct(lambda), lambda, active, unheld, sliding);
 }
 } // namespace feticon::dual

@@ -123,7 +123,8 @@ public:
   double load_norm() const { return _e.norm(); }
   /// u from lambda and its active rows (primal_recovery.hpp); `unheld` explains a body the
   /// active rows leave free.
-  PrimalSolution recover(const la::Vector& lambda, const std::vector<char>& active, const std::string& unheld) const;
+  PrimalSolution recover(const la::Vector& lambda, const std::vector<char>& active, const std::string& unheld,
+                         const SlidingRows& sliding = {}) const;
 
 private:
   const FetiOperators& _feti;

@@ -147,6 +147,29 @@ std::vector<char> active_rows(const FetiOperators& feti, const ContactQp& qp, co
   return active;
 }
 
+/// The owned friction rows at their bound (primal_recovery.hpp): discs with the direction
+/// across their slide, and single rows.
+SlidingRows sliding_rows(const ContactQp& qp, const la::Vector& lambda, const std::vector<char>& active)
+{
+  SlidingRows out;
+  std::vector<char> in_disc(active.size(), 0);
+  for (const qp::Disc& disc : qp.constraints().discs)
+  {
+    in_disc[disc.i] = in_disc[disc.j] = 1;
+    const double t_i = lambda(disc.i), t_j = lambda(disc.j); // the disc's centre is 0 in lambda
+    const double size = std::hypot(t_i, t_j);
+    if (!active[disc.i] && size > 0)
+      out.discs.push_back({disc.i, disc.j, -t_j / size, t_i / size});
+  }
+  for (size_t i = 0; i < active.size(); ++i)
+  {
+    const auto row = static_cast<la::Index>(i);
+    if (qp.kinds()[i] == RowKind::tangential && !in_disc[i] && !active[i] && !qp.held(row))
+      out.boxes.push_back(row);
+  }
+  return out;
+}
+
 /// Whether friction rows exist on some rank and none of them sticks.
 bool sliding_only(const FetiOperators& feti, const ContactQp& qp, const std::vector<char>& active)
 {
@@ -252,7 +275,7 @@ DualSolution solve_contact_dual(const FetiOperators& feti, const la::Vector& c, 
   if (options.spectrum_steps > 0)
     measure_solution_face(feti, qp.projector(), qp.scaled_F(), options, qp.pfp_norm(), n_equality,
                           smalbe_method ? smalbe_report.final_rho : options.rho, active, qp.held_rows(), out.report);
-  PrimalSolution primal = qp.recover(lambda, active, unheld);
+  PrimalSolution primal = qp.recover(lambda, active, unheld, sliding_rows(qp, lambda, active));
   out.u = std::move(primal.u);
   out.alpha = std::move(primal.alpha);
   if (smalbe_method)

@@ -8,15 +8,17 @@ namespace
 {
 /// Factorizes G G' and tells whether G has full row rank: dependent rows show up as a
 /// (nearly) zero pivot of the factor.
-bool factorize_full_rank(const la::SparseMatrix& GGt, Eigen::SimplicialLLT<la::SparseMatrix>& llt)
+/// Factorizes G G' into `llt`; returns the pivot ratio (CoarseProjector::pivot_ratio), 1 for an
+/// empty coarse space, 0 where the factorization failed.
+double factorize(const la::SparseMatrix& GGt, Eigen::SimplicialLLT<la::SparseMatrix>& llt)
 {
   llt.compute(GGt);
   if (llt.info() != Eigen::Success)
-    return false;
+    return 0;
   if (GGt.rows() == 0)
-    return true;
+    return 1;
   const la::Vector d = llt.matrixL().nestedExpression().diagonal().cwiseAbs();
-  return d.minCoeff() > 1e-7 * d.maxCoeff();
+  return d.minCoeff() / d.maxCoeff();
 }
 } // namespace
 
@@ -24,7 +26,8 @@ CoarseProjector::CoarseProjector(const FetiOperators& feti, std::nothrow_t, std:
     : _feti(feti), _mask(std::move(mask))
 {
   FETICON_ASSERT(_mask.empty() || static_cast<int64_t>(_mask.size()) == feti.n_dual(), "mask size");
-  _full_rank = factorize_full_rank(feti.coarse_matrix(_mask.empty() ? nullptr : &_mask), _llt);
+  _pivot_ratio = factorize(feti.coarse_matrix(_mask.empty() ? nullptr : &_mask), _llt);
+  _full_rank = _pivot_ratio > 1e-7;
 }
 
 CoarseProjector::CoarseProjector(const FetiOperators& feti, std::vector<char> mask)

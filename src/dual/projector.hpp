@@ -27,6 +27,9 @@ public:
   CoarseProjector(const FetiOperators& feti, std::nothrow_t, std::vector<char> mask = {});
   /// True if G has full row rank (G G' factorized with no vanishing pivot).
   bool full_rank() const { return _full_rank; }
+  /// Smallest over largest pivot of the Cholesky factor of G G' (0 where it failed): its square
+  /// is about the ratio of G G''s extreme eigenvalues.
+  double pivot_ratio() const { return _pivot_ratio; }
 
   la::Vector apply_Q(const la::Vector& lambda) const;
   la::Vector apply_P(const la::Vector& lambda) const { return lambda - apply_Q(lambda); }
@@ -53,6 +56,7 @@ private:
   std::vector<char> _mask; ///< empty: all rows
   Eigen::SimplicialLLT<la::SparseMatrix> _llt;
   bool _full_rank = false;
+  double _pivot_ratio = 0;
 };
 
 /// P as a LinearOperator.
