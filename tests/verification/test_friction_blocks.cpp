@@ -27,8 +27,9 @@ constexpr double pressure = 1e8; // Pa; the interface is 1 x 1 (plane strain: 1 
 /// Lower block [0,1] x [0,1] x [0,1] clamped at z = 0, upper block [0,1] x [0,1] x [1,1.25] on
 /// top of it (non-matching: 4 against 5 cells along x), in plane strain one cell thick in y with
 /// u_y eliminated (box friction), else 4 against 5 cells along y too (disc friction). Top face: traction
-/// (q, 0, -p), or, with `drag` > 0, the pressure and u_x = drag prescribed.
-fem::Problem sheared_blocks(double q, double drag, bool plane_strain = true)
+/// (q, 0, -p), or, with `drag` > 0, the pressure and u_x = drag prescribed (and u_y = 0 in 3D
+/// where `hold_across`).
+fem::Problem sheared_blocks(double q, double drag, bool plane_strain = true, bool hold_across = true)
 {
   mesh::BoxParameters lower;
   lower.nx = lower.nz = 4;
@@ -48,12 +49,9 @@ fem::Problem sheared_blocks(double q, double drag, bool plane_strain = true)
   p.materials.assign(2, fem::Material{2e11, 0.3});
   p.eliminated = {false, plane_strain, false};
   p.steps.front().dirichlet = {{"zmin", {0.0, plane_strain ? std::nullopt : std::optional<double>(0.0), 0.0}}};
-  // Dragged in 3D, the top face is held in y too: a block sliding at every node is held across
-  // the slip by no row that primal recovery sees (the slip's component normal to the friction
-  // force vanishes, a constraint the disc rows do not state; docs/friction.md).
   if (drag > 0)
     p.steps.front().dirichlet.push_back(
-        {"upper_zmax", {drag, plane_strain ? std::nullopt : std::optional<double>(0.0), std::nullopt}});
+        {"upper_zmax", {drag, plane_strain || !hold_across ? std::nullopt : std::optional<double>(0.0), std::nullopt}});
   p.steps.front().tractions = {{"upper_zmax", Eigen::Vector3d(drag > 0 ? 0.0 : q, 0, -pressure)}};
   p.contacts = {{"upper_zmin", "zmax"}};
   p.validate();
@@ -277,5 +275,46 @@ TEST(FrictionBlocks, BlockOnAnInclinedPlaneSticksOrSlidesByMuAgainstTanAlpha)
         EXPECT_NE(std::string(e.what()).find("slides"), std::string::npos) << e.what();
       }
     }
+  }
+}
+
+// 3D, dragged along x with the top free along y: every node slides, and nothing but the slip
+// direction holds the block across it. Primal recovery takes that from the discs at their bound
+// (the slip across lambda_T is zero: dual/primal_recovery.hpp); before, the run stopped at
+// "every tangential row slides". Reference: Coulomb's and Tresca's law, as with the top held
+// in y (DiscsHoldAndSlideIn3D): the friction force's magnitudes sum to the bound, along x;
+// across, the block moves by the Poisson expansion's share only.
+TEST(FrictionBlocks, BlockDraggedWithItsTopFreeAcrossSlidesAlongTheDrag)
+{
+  for (const auto model : {nonlinear::FrictionModel::tresca, nonlinear::FrictionModel::coulomb})
+  {
+    const bool tresca = model == nonlinear::FrictionModel::tresca;
+    const auto s = settings(model, tresca ? 0.4 * pressure : 0.3);
+    const fem::Problem problem = sheared_blocks(0, 1e-2, false, false);
+    TimerTable timers;
+    const auto solution = nonlinear::solve_feti_contact(problem, s, timers);
+    ASSERT_TRUE(solution.converged) << solution.reason;
+    const FrictionFigures r = friction_figures(problem, solution, s.interaction(problem.contacts[0]).friction);
+    const double expected = tresca ? 0.4 * pressure : 0.3 * nonlinear::total_normal_force(solution);
+    double shift = 0, spread = 0; // mean and largest |u_y| of the upper block's top face
+    const std::vector<int32_t>& top = problem.mesh.node_set("upper_zmax");
+    for (const int32_t node : top)
+    {
+      shift += solution.u(3 * node + 1) / static_cast<double>(top.size());
+      spread = std::max(spread, std::abs(solution.u(3 * node + 1)));
+    }
+    std::printf("3D %s slide, top free across: sum |t_T| %.9e (bound %.9e), friction force (%.9e, %.2e), %d of %d "
+                "nodes at the bound; the top's u_y: mean %.2e m, largest %.2e m against the 1e-2 m drag\n",
+                tresca ? "Tresca" : "Coulomb", r.magnitudes, expected, r.force_x, r.force_y, r.sliding, r.nodes, shift,
+                spread);
+    EXPECT_EQ(r.sliding, r.nodes);
+    EXPECT_NEAR(r.magnitudes, expected, 1e-6 * expected);
+    EXPECT_NEAR(r.force_x, -expected, 1e-4 * expected);
+    EXPECT_NEAR(r.force_y, 0, 1e-6 * expected);
+    // The problem is symmetric about y = 0.5: the block does not drift across the drag (its
+    // top's mean u_y at most 1e-4 of the drag), and its top spreads by the Poisson expansion's
+    // order (nu p / E = 1.5e-4 of its 1 m width).
+    EXPECT_LT(std::abs(shift), 1e-6);
+    EXPECT_LT(spread, 1.5e-4);
   }
 }
