@@ -11,16 +11,26 @@
 
 namespace feticon::problems
 {
-double CattaneoMindlin::shear(double x) const
+namespace
 {
-  const double r = x / half_width;
+/// Cattaneo's traction magnitude at x with stick half-width c (Pa).
+double cattaneo_traction(const CattaneoMindlin& t, double x, double c)
+{
+  const double r = x / t.half_width;
   if (std::abs(r) >= 1)
     return 0;
-  double q = coefficient * peak_pressure * std::sqrt(1 - r * r);
-  if (std::abs(x) < stick_half_width)
-    q -= coefficient * peak_pressure * (stick_half_width / half_width) *
-        std::sqrt(1 - std::pow(x / stick_half_width, 2));
-  return -q;
+  double q = t.coefficient * t.peak_pressure * std::sqrt(1 - r * r);
+  if (std::abs(x) < c)
+    q -= t.coefficient * t.peak_pressure * (c / t.half_width) * std::sqrt(1 - std::pow(x / c, 2));
+  return q;
+}
+} // namespace
+
+double CattaneoMindlin::shear(double x) const
+{
+  if (peak_stick_half_width)
+    return -(cattaneo_traction(*this, x, *peak_stick_half_width) - 2 * cattaneo_traction(*this, x, stick_half_width));
+  return -cattaneo_traction(*this, x, stick_half_width);
 }
 
 CattaneoMindlin cattaneo_mindlin(double coefficient, double peak_pressure, double half_width, double line_load,
@@ -30,7 +40,19 @@ CattaneoMindlin cattaneo_mindlin(double coefficient, double peak_pressure, doubl
                 "Cattaneo-Mindlin: need mu > 0, P > 0 and Q >= 0");
   const double ratio = std::min(tangential_load / (coefficient * line_load), 1.0);
   const double c = contact == HertzContact::cylinder ? std::sqrt(1 - ratio) : std::cbrt(1 - ratio);
-  return {coefficient, peak_pressure, half_width, half_width * c};
+  return {coefficient, peak_pressure, half_width, half_width * c, std::nullopt};
+}
+
+CattaneoMindlin mindlin_deresiewicz(double coefficient, double peak_pressure, double half_width, double line_load,
+                                    double peak_load, double tangential_load)
+{
+  FETICON_CHECK(coefficient > 0 && line_load > 0 && peak_load < coefficient * line_load && tangential_load > 0 &&
+                    tangential_load < peak_load,
+                "Mindlin-Deresiewicz: need mu > 0, P > 0 and 0 < Q < Q* < mu P");
+  CattaneoMindlin out = cattaneo_mindlin(coefficient, peak_pressure, half_width, line_load, peak_load);
+  out.peak_stick_half_width = out.stick_half_width;
+  out.stick_half_width = half_width * std::sqrt(1 - (peak_load - tangential_load) / (2 * coefficient * line_load));
+  return out;
 }
 
 namespace
@@ -208,9 +230,10 @@ std::string cattaneo_mindlin_line(const nlohmann::ordered_json& f, const Cattane
     return line;
   }
   std::snprintf(line, sizeof line,
-                "\nCattaneo-Mindlin: stick %s c %.3f mm (analytic %.3f mm, %+.2f%%), shear RMS error %.2f%% of mu p0, "
+                "\n%s: stick %s c %.3f mm (analytic %.3f mm, %+.2f%%), shear RMS error %.2f%% of mu p0, "
                 "friction force %.6g N, tangential reaction %.9g N (applied %.6g N)",
-                zone.c_str(), 1e3 * c, 1e3 * theory.stick_half_width, 100 * (c / theory.stick_half_width - 1),
+                theory.peak_stick_half_width ? "Mindlin-Deresiewicz, unloaded" : "Cattaneo-Mindlin", zone.c_str(),
+                1e3 * c, 1e3 * theory.stick_half_width, 100 * (c / theory.stick_half_width - 1),
                 100 * f["shear_rms_error_over_mu_p0"].get<double>(), f["tangential_force"].get<double>(),
                 f["tangential_reaction"].get<double>(), applied);
   return line;

@@ -8,6 +8,11 @@
 /// The friction traction on the cylinder opposes Q: -q(x) along x. The comparison with a run
 /// fills summary.json's `friction` block.
 ///
+/// Unloaded from Q* to Q (0 < Q < Q*: Mindlin and Deresiewicz 1953; Johnson section 7.2 and
+/// fig. 7.9), the cylinder slips back on c' < |x| < a, c' = a sqrt(1 - (Q* - Q) / (2 mu P)), and
+///   q(x) = q*(x) - 2 q'(x),
+/// q* the loaded traction above and q' the same form with c' for c; inside c' nothing moved.
+///
 /// The sphere (Mindlin 1949; Johnson section 7.2, eqs. 7.49-7.51): pressed by P (N), pulled
 /// by Q (N), it sticks on r < c = a (1 - Q / (mu P))^(1/3), with the same q(r) as above in the
 /// distance r from the axis and the traction along x. (In the slip annulus the theory takes the
@@ -16,6 +21,7 @@
 
 #include "problems/built_in_problem.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,7 +32,9 @@ struct CattaneoMindlin
   double coefficient = 0;      ///< mu
   double peak_pressure = 0;    ///< p0 (Pa)
   double half_width = 0;       ///< a (m)
-  double stick_half_width = 0; ///< c (m)
+  double stick_half_width = 0; ///< c (m); unloaded: c'
+  /// Unloaded (mindlin_deresiewicz): the stick half-width c* at the peak load Q*.
+  std::optional<double> peak_stick_half_width;
   /// The friction traction on the cylinder along x at x (Pa): -q(x).
   double shear(double x) const;
 };
@@ -41,6 +49,10 @@ enum class HertzContact
 /// @param half_width  a: the half-width (cylinder) or contact radius (sphere)
 CattaneoMindlin cattaneo_mindlin(double coefficient, double peak_pressure, double half_width, double line_load,
                                  double tangential_load, HertzContact contact = HertzContact::cylinder);
+
+/// The cylinder pressed by P, pulled by peak_load Q* < mu P and unloaded to Q in (0, Q*).
+CattaneoMindlin mindlin_deresiewicz(double coefficient, double peak_pressure, double half_width, double line_load,
+                                    double peak_load, double tangential_load);
 
 /// The friction and normal contact forces on the slave body along x, summed over the samples
 /// (N): the tangential reaction, which balances Q (with large displacements the contact

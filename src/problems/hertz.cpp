@@ -72,6 +72,10 @@ fem::Problem hertz_problem(const HertzParameters& parameters)
                 "hertz: tangential_couple = " << parameters.tangential_couple
                                               << " N/m exceeds what friction can carry, mu line_load = "
                                               << parameters.friction_coefficient * parameters.line_load << " N/m");
+  if (const std::optional<double> unloaded = parameters.unloaded_tangential_load)
+    FETICON_CHECK(pulled && *unloaded > 0 && *unloaded < parameters.tangential_load,
+                  "hertz: tangential_unload = " << *unloaded << " N/m must lie in (0, tangential_load = "
+                                                << parameters.tangential_load << " N/m)");
   FETICON_CHECK(!slid || parameters.friction_coefficient > 0,
                 "hertz: a tangential displacement needs Coulomb friction (its couple balances the full "
                 "slide's force mu P)");
@@ -103,6 +107,13 @@ fem::Problem hertz_problem(const HertzParameters& parameters)
     pulling.nodal_forces = moment_free_couple(p.mesh, parameters.tangential_load * thickness, radius);
     pulling.increments = 1;
     p.steps.push_back(std::move(pulling));
+  }
+  if (const std::optional<double> unloaded = parameters.unloaded_tangential_load) // a third step
+  {
+    fem::Step unloading = p.steps.back();
+    unloading.tractions = {{"load", normal + Eigen::Vector3d(*unloaded / width, 0, 0)}};
+    unloading.nodal_forces = moment_free_couple(p.mesh, *unloaded * thickness, radius);
+    p.steps.push_back(std::move(unloading));
   }
   if (slid)
   {

@@ -39,17 +39,21 @@ struct HertzParameters
   /// displacements force control leaves the cylinder free to roll on its contact (neutral:
   /// docs/friction.md), the moved face holds it.
   double tangential_couple = 0;
+  /// With tangential_load: a third load stage lowers the tangential load to this (N/m), in
+  /// (0, tangential_load): Mindlin-Deresiewicz unloading, whose answer is the path's.
+  std::optional<double> unloaded_tangential_load;
   double friction_coefficient = 0;             ///< Coulomb's mu (contact.friction), for Cattaneo-Mindlin; 0: none
   fem::Material material{2.0e11, 0.3};         ///< the cylinder's, and the block's if not given
   std::optional<fem::Material> block_material; ///< the block's if it differs
   fem::Material block() const { return block_material.value_or(material); }
-  /// The Q (N/m) applied, or expected of a tangential displacement: tangential_load, or
-  /// tangential_couple (mu P for the full slide if not given); 0 without either.
+  /// The Q (N/m) applied at the end, or expected of a tangential displacement: tangential_load
+  /// (unloaded_tangential_load where given), or tangential_couple (mu P for the full slide if
+  /// not given); 0 without either.
   double compared_tangential_load() const
   {
     if (tangential_displacement > 0)
       return tangential_couple > 0 ? tangential_couple : friction_coefficient * line_load;
-    return tangential_load;
+    return unloaded_tangential_load.value_or(tangential_load);
   }
 };
 

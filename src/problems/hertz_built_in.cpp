@@ -72,8 +72,11 @@ private:
                             TheoryComparison& out) const
   {
     const double Q = _parameters.compared_tangential_load();
-    const CattaneoMindlin theory = cattaneo_mindlin(_parameters.friction_coefficient, h.p0_analytic, h.a_analytic,
-                                                    _parameters.line_load, theory_load(samples, Q));
+    const CattaneoMindlin theory = _parameters.unloaded_tangential_load
+        ? mindlin_deresiewicz(_parameters.friction_coefficient, h.p0_analytic, h.a_analytic, _parameters.line_load,
+                              _parameters.tangential_load, Q)
+        : cattaneo_mindlin(_parameters.friction_coefficient, h.p0_analytic, h.a_analytic, _parameters.line_load,
+                           theory_load(samples, Q));
     std::vector<double> x;
     for (const ProfilePoint& p : pressure_profile(samples, false, large))
     {
@@ -112,6 +115,9 @@ std::vector<io::SettingSpec> hertz_setting_specs()
       {"hertz.tangential_load", "0", "tangential line load along +x on the cylinder (N/m), applied after the "
        "normal load in a second load stage (needs contact.friction; the full model is meshed: the load "
        "breaks the symmetry)", Type::number, {}, 0, inf, false},
+      {"hertz.tangential_unload", "", "with hertz.tangential_load: a third load stage lowers the tangential "
+       "load to this (N/m, between 0 and tangential_load, exclusive), compared with Mindlin and Deresiewicz's "
+       "unloading (docs/friction.md)", Type::number, {}, 0, inf, true},
       {"hertz.tangential_displacement", "0", "instead of hertz.tangential_load: the load face held along x "
        "while pressed, then moved along +x by this much (m) in a second load stage, with the couple of the "
        "full slide's force mu P (Q >= mu P: every node slides; needs Coulomb friction)", Type::number, {}, 0, inf, false},
@@ -149,6 +155,7 @@ HertzParameters hertz_parameters(const io::Settings& s)
   p.tangential_load = s.number("hertz.tangential_load");
   p.tangential_displacement = s.number("hertz.tangential_displacement");
   p.tangential_couple = s.number("hertz.tangential_couple");
+  p.unloaded_tangential_load = s.optional_number("hertz.tangential_unload");
   p.mesh.full = p.tangential_load > 0 || p.tangential_displacement > 0;
   p.friction_coefficient = p.tangential_displacement > 0
       ? cattaneo_mindlin_coefficient(s, "hertz.tangential_displacement", p.tangential_displacement, "m", "cylinder")

@@ -263,3 +263,43 @@ TEST(CattaneoMindlin, RestartKeepsTheTangentialMultipliers)
   EXPECT_EQ(steps, steps_full);
   EXPECT_EQ(difference, 0.0) << "the same state should give the same arithmetic";
 }
+
+// Mindlin and Deresiewicz's unloading (1953; Johnson 1985, section 7.2): pulled to Q* = 0.6 mu P
+// and then unloaded to Q = 0.3 mu P in a third load stage, the cylinder slips back on
+// c' < |x| < a, c' = a sqrt(1 - (Q* - Q) / (2 mu P)), with the shear q* - 2 q' (q' Cattaneo's
+// with c' for c; problems::mindlin_deresiewicz). The answer is the path's: pulled to Q alone
+// (Cattaneo: c = a sqrt(1 - Q / (mu P)), 9 % smaller here) the shear differs, which the test
+// tells apart. Tolerances as above: c' within 3 %, the symmetric shear's RMS within 3 % of mu
+// p0, the friction force equal to Q to 1e-6; against the loaded-alone profile the symmetric RMS
+// at least three times that.
+TEST(CattaneoMindlin, UnloadedCylinderSlipsBackAtTheEdges)
+{
+  const double mu = 0.3;
+  problems::HertzParameters parameters;
+  parameters.tangential_load = 0.6 * mu * parameters.line_load;
+  parameters.unloaded_tangential_load = 0.3 * mu * parameters.line_load;
+  const auto [surface, x] = solve_and_sample(parameters, mu);
+  ASSERT_FALSE(surface.empty());
+  const problems::HertzAnalytic hertz = problems::hertz_analytic(parameters);
+  const double Q = *parameters.unloaded_tangential_load;
+  const problems::CattaneoMindlin theory = problems::mindlin_deresiewicz(
+      mu, hertz.peak_pressure, hertz.half_width, parameters.line_load, parameters.tangential_load, Q);
+  const problems::CattaneoMindlin loaded_to_Q =
+      problems::cattaneo_mindlin(mu, hertz.peak_pressure, hertz.half_width, parameters.line_load, Q);
+  const double applied = Q * parameters.mesh.thickness;
+  const auto f = problems::cattaneo_mindlin_figures(theory, surface, x, applied);
+  const auto alone = problems::cattaneo_mindlin_figures(loaded_to_Q, surface, x, applied);
+  const double c = f["stick_half_width_computed"].get<double>();
+  const double symmetric = f["shear_symmetric_rms_error_over_mu_p0"].get<double>();
+  const double symmetric_alone = alone["shear_symmetric_rms_error_over_mu_p0"].get<double>();
+  std::printf("unloaded to Q/(mu P) 0.3 from 0.6: c' %.3f mm (analytic %.3f, %+.2f%%; pulled to Q alone %.3f), shear "
+              "RMS %.2f%% (symmetric part %.2f%%; against the pulled-alone profile %.2f%%) of mu p0, friction force "
+              "error %.1e\n",
+              1e3 * c, 1e3 * theory.stick_half_width, 100 * (c / theory.stick_half_width - 1),
+              1e3 * loaded_to_Q.stick_half_width, 100 * f["shear_rms_error_over_mu_p0"].get<double>(), 100 * symmetric,
+              100 * symmetric_alone, f["tangential_force_error"].get<double>());
+  EXPECT_NEAR(c, theory.stick_half_width, 0.03 * theory.stick_half_width);
+  EXPECT_LT(symmetric, 0.03);
+  EXPECT_GT(symmetric_alone, 3 * symmetric);
+  EXPECT_LT(f["tangential_force_error"].get<double>(), 1e-6);
+}
