@@ -121,6 +121,12 @@ expect "tangential couple without displacement" "give tangential_displacement" -
 expect "tangential couple beyond friction" "exceeds what friction can carry" -- \
   --set hertz.tangential_displacement=5e-3 --set hertz.tangential_couple=1.8e8 \
   --set contact.friction.model=coulomb --set contact.friction.coefficient=0.3
+coulomb=(--set contact.friction.model=coulomb --set contact.friction.coefficient=0.3)
+expect "unload above the load" "tangential_unload = 8e+07 N/m must lie in (0, tangential_load" -- \
+  --set hertz.tangential_load=7.2e7 --set hertz.tangential_unload=8e7 "${coulomb[@]}"
+expect "unload without a load" "must lie in (0, tangential_load = 0" -- --set hertz.tangential_unload=1e7 "${coulomb[@]}"
+expect "unload from a full slide" "needs partial slip at the peak" -- --set hertz.tangential_load=1.3e8 \
+  --set hertz.tangential_unload=1e7 "${coulomb[@]}"
 expect "tangential load and displacement" "not both" -- --set hertz.tangential_displacement=5e-3 \
   --set hertz.tangential_load=1e7 --set contact.friction.model=coulomb --set contact.friction.coefficient=0.3
 expect "3D tangential load without friction" "needs friction to hold the sphere" -- --set problem=hertz3d \
