@@ -85,9 +85,8 @@ ConstraintScaling::ConstraintScaling(const FetiOperators& feti, int64_t n_equali
   _factorized = _llt.info() == Eigen::Success;
   if (!_factorized)
   {
-    log::warning("constraint rows are linearly dependent ((B B')_CC of " + std::to_string(n) +
-                 " rows is singular): the FETI preconditioner is used without the (B B')^-1 "
-                 "scaling");
+    log::warning("constraint rows are linearly dependent ((B B')_CC is singular): the FETI preconditioner is used "
+                 "without the (B B')^-1 scaling");
     _ids.clear();
     return;
   }
@@ -98,10 +97,12 @@ ConstraintScaling::ConstraintScaling(const FetiOperators& feti, int64_t n_equali
   const double amplification = largest_eigenvalue_of_inverse(_llt, n);
   if (amplification > max_amplification)
   {
+    // One line for every outer iteration that meets it (log::warning counts a repeated line):
+    // the figures that change from one to the next (hertz_axi with friction: 13 lines, the
+    // eigenvalue from 8e-10 to 6e-17) stay out of it.
     std::ostringstream line;
-    line.precision(2);
-    line << "constraint rows are nearly dependent (the smallest eigenvalue of (B B')_CC of " << n << " rows is "
-         << 1 / amplification << "): the FETI preconditioner is used without the (B B')^-1 scaling";
+    line << "constraint rows are nearly dependent (an eigenvalue of (B B')_CC below " << 1 / max_amplification
+         << "): the FETI preconditioner is used without the (B B')^-1 scaling";
     log::warning(line.str());
     _factorized = false;
     _ids.clear();
