@@ -92,14 +92,15 @@ PrimalSolution recover_primal(const FetiOperators& feti, const la::Vector& f, co
 {
   const la::Vector K_plus_r = feti.apply_K_plus_refined(f - feti.apply_Bt(lambda));
   // F lambda - d = B K+ (B' lambda - f) + c = c - B K+ (f - B' lambda).
-  const la::Vector full_residual = c - feti.apply_B(K_plus_r);
-  la::Vector residual = full_residual;
-  for (la::Index i = 0; i < residual.size(); ++i)
-    if (!active[i])
-      residual(i) = 0;
+  const la::Vector residual = c - feti.apply_B(K_plus_r);
   PrimalSolution out;
   if (feti.n_kernel() > 0)
   {
+    const std::string free_mode = !unheld.empty()
+        ? unheld
+        : "no active contact holds a body that only contact can hold (the active constraints leave a rigid-body "
+          "motion free): is the load zero, too small to press the bodies together, or pulling them apart? Check "
+          "loads and the contact pairs";
     const CoarseProjector active_coarse(feti, std::nothrow, active);
     // Rows at their bound can leave a mode held only by the small tilt of deformed normals: G_A
     // G_A' then passes the rank test but alpha is huge (friction2's block, 4e6 times its
@@ -107,18 +108,19 @@ PrimalSolution recover_primal(const FetiOperators& feti, const la::Vector& f, co
     const bool any_sliding = feti.comm().max(sliding.empty() ? 0.0 : 1.0) > 0; // a collective
     if (active_coarse.pivot_ratio() < weakly_held && any_sliding)
     {
-      const std::optional<la::Vector> alpha = sliding_coarse_solve(feti, full_residual, active, sliding);
-      FETICON_CHECK(alpha, (unheld.empty() ? "the active constraints leave a rigid-body motion free" : unheld));
-      out.alpha = *alpha;
-      out.u = K_plus_r + feti.apply_R(out.alpha);
-      return out;
+      std::optional<la::Vector> alpha = sliding_coarse_solve(feti, residual, active, sliding);
+      FETICON_CHECK(alpha, free_mode);
+      out.alpha = std::move(*alpha);
     }
-    FETICON_CHECK(active_coarse.full_rank() || unheld.empty(), unheld);
-    FETICON_CHECK(active_coarse.full_rank(),
-                  "no active contact holds a body that only contact can hold (the active constraints leave a "
-                  "rigid-body motion free): is the load zero, too small to press the bodies together, or "
-                  "pulling them apart? Check loads and the contact pairs");
-    out.alpha = active_coarse.coarse_solve(feti.apply_G(residual, &active));
+    else
+    {
+      FETICON_CHECK(active_coarse.full_rank(), free_mode);
+      la::Vector active_residual = residual;
+      for (la::Index i = 0; i < active_residual.size(); ++i)
+        if (!active[i])
+          active_residual(i) = 0;
+      out.alpha = active_coarse.coarse_solve(feti.apply_G(active_residual, &active));
+    }
   }
   else
     out.alpha.resize(0);
