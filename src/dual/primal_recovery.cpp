@@ -115,11 +115,7 @@ PrimalSolution recover_primal(const FetiOperators& feti, const la::Vector& f, co
     else
     {
       FETICON_CHECK(active_coarse.full_rank(), free_mode);
-      la::Vector active_residual = residual;
-      for (la::Index i = 0; i < active_residual.size(); ++i)
-        if (!active[i])
-          active_residual(i) = 0;
-      out.alpha = active_coarse.coarse_solve(feti.apply_G(active_residual, &active));
+      out.alpha = active_coarse.coarse_solve(feti.apply_G(held_part(residual, active, {}), &active));
     }
   }
   else

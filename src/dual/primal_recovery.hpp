@@ -49,7 +49,7 @@ struct SlidingRows
 /// @param active  one flag per owned dual row: 1 for rows that hold with equality
 /// @param unheld  the error if the active rows leave a rigid-body motion free, where the caller
 ///                knows the cause (empty: a message listing the usual ones)
-/// @param sliding the owned disc pairs at their bound (file comment)
+/// @param sliding the owned friction rows at their bound (file comment)
 PrimalSolution recover_primal(const FetiOperators& feti, const la::Vector& f_stacked, const la::Vector& c,
                               const la::Vector& lambda, const std::vector<char>& active, const std::string& unheld = {},
                               const SlidingRows& sliding = {});

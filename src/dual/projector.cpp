@@ -6,10 +6,9 @@ namespace feticon::dual
 {
 namespace
 {
-/// Factorizes G G' and tells whether G has full row rank: dependent rows show up as a
-/// (nearly) zero pivot of the factor.
 /// Factorizes G G' into `llt`; returns the pivot ratio (CoarseProjector::pivot_ratio), 1 for an
-/// empty coarse space, 0 where the factorization failed.
+/// empty coarse space, 0 where the factorization failed: dependent rows of G show up as a
+/// (nearly) zero pivot.
 double factorize(const la::SparseMatrix& GGt, Eigen::SimplicialLLT<la::SparseMatrix>& llt)
 {
   llt.compute(GGt);
@@ -27,13 +26,12 @@ CoarseProjector::CoarseProjector(const FetiOperators& feti, std::nothrow_t, std:
 {
   FETICON_ASSERT(_mask.empty() || static_cast<int64_t>(_mask.size()) == feti.n_dual(), "mask size");
   _pivot_ratio = factorize(feti.coarse_matrix(_mask.empty() ? nullptr : &_mask), _llt);
-  _full_rank = _pivot_ratio > 1e-7;
 }
 
 CoarseProjector::CoarseProjector(const FetiOperators& feti, std::vector<char> mask)
     : CoarseProjector(feti, std::nothrow, std::move(mask))
 {
-  FETICON_CHECK(_full_rank,
+  FETICON_CHECK(full_rank(),
                 "the constraints do not suppress every rigid-body motion (G G' is "
                 "singular): a body is free to move; add supports or symmetry conditions");
 }

@@ -26,7 +26,7 @@ public:
   /// may the other members be used.
   CoarseProjector(const FetiOperators& feti, std::nothrow_t, std::vector<char> mask = {});
   /// True if G has full row rank (G G' factorized with no vanishing pivot).
-  bool full_rank() const { return _full_rank; }
+  bool full_rank() const { return _pivot_ratio > 1e-7; }
   /// Smallest over largest pivot of the Cholesky factor of G G' (0 where it failed): its square
   /// is about the ratio of G G''s extreme eigenvalues.
   double pivot_ratio() const { return _pivot_ratio; }
@@ -55,7 +55,6 @@ private:
   const FetiOperators& _feti;
   std::vector<char> _mask; ///< empty: all rows
   Eigen::SimplicialLLT<la::SparseMatrix> _llt;
-  bool _full_rank = false;
   double _pivot_ratio = 0;
 };
 

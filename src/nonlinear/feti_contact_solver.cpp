@@ -272,11 +272,11 @@ public:
 private:
   /// newton.stiffness = auto, the first load step that fails under K_0: the rest of the run
   /// refreshes K_M(u) at every outer iteration and solves each QP to qp.rtol, without the
-  /// force tolerance (qp.force_rtol). On a slender body (beamcontact's, contact2's and
-  /// friction1's C3D20(R) beams) K_0's modified Newton contracts slowly once the beam turns,
-  /// and a QP error of force_rtol times the load, multiplied by the beam's compliance, is a
-  /// correction |du|/|u| of 1e-6 to 1e-5 that no outer iteration goes below: with both the
-  /// three run (docs/calculix_decks.md). Runs that converge under K_0 are unchanged.
+  /// force tolerance (qp.force_rtol). On a slender body (beamcontact's and contact2's C3D20(R)
+  /// beams) K_0's modified Newton contracts slowly once the beam turns, and a QP error of
+  /// force_rtol times the load, multiplied by the beam's compliance, is a correction |du|/|u|
+  /// of 1e-6 to 1e-5 that no outer iteration goes below: with both changes the two run
+  /// (docs/contact.md, "When K_0 fails"). Runs that converge under K_0 are unchanged.
   void escalate(int step);
   /// K, R and their factors at the current u; the preconditioner and explicit blocks with them.
   void update_stiffness();
@@ -813,9 +813,8 @@ void FetiContactSolve::escalate(int step)
   if (step == 0)
     return; // a restart: the run's warnings hold the first run's line
   const std::string warning = "load step " + std::to_string(step) +
-      " failed with K_0 (the cutback below says why): from here on K_M(u) is refreshed at every outer iteration and "
-      "each QP is "
-      "solved to qp.rtol (newton.stiffness = auto)";
+      " failed with K_0 (the cutback below says why): from here on K_M(u) is refreshed at every outer iteration "
+      "and each QP is solved to qp.rtol (newton.stiffness = auto)";
   log::warning(warning);
   _out.warnings.push_back(warning);
 }

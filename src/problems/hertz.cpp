@@ -73,14 +73,15 @@ fem::Problem hertz_problem(const HertzParameters& parameters)
                                               << " N/m exceeds what friction can carry, mu line_load = "
                                               << parameters.friction_coefficient * parameters.line_load << " N/m");
   if (const std::optional<double> unloaded = parameters.unloaded_tangential_load)
+  {
     FETICON_CHECK(pulled && *unloaded > 0 && *unloaded < parameters.tangential_load,
                   "hertz: tangential_unload = " << *unloaded << " N/m must lie in (0, tangential_load = "
                                                 << parameters.tangential_load << " N/m)");
-  FETICON_CHECK(!parameters.unloaded_tangential_load ||
-                    parameters.tangential_load < parameters.friction_coefficient * parameters.line_load,
-                "hertz: tangential_unload needs partial slip at the peak: tangential_load = "
-                    << parameters.tangential_load << " N/m must be below mu line_load = "
-                    << parameters.friction_coefficient * parameters.line_load << " N/m");
+    FETICON_CHECK(parameters.tangential_load < parameters.friction_coefficient * parameters.line_load,
+                  "hertz: tangential_unload needs partial slip at the peak: tangential_load = "
+                      << parameters.tangential_load << " N/m must be below mu line_load = "
+                      << parameters.friction_coefficient * parameters.line_load << " N/m");
+  }
   FETICON_CHECK(!slid || parameters.friction_coefficient > 0,
                 "hertz: a tangential displacement needs Coulomb friction (its couple balances the full "
                 "slide's force mu P)");
