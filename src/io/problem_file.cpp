@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 #include <algorithm>
 #include <array>
 #include <set>
@@ -21,8 +22,8 @@ namespace feticon::io
 namespace
 {
 const std::set<std::string> structured_keys = {
-    "mesh",  "bodies",     "plane_strain", "supports", "loads",    "temperatures", "initial_temperature",
-    "steps", "amplitudes", "contact",      "ties",     "couplings"};
+    "mesh",  "materials",  "bodies",  "plane_strain", "supports", "loads", "temperatures", "initial_temperature",
+    "steps", "amplitudes", "contact", "ties",         "couplings"};
 
 /// A body's `plastic:` table [[von Mises stress, equivalent plastic strain], ...] (the rows of
 /// CalculiX's *PLASTIC).
@@ -56,11 +57,14 @@ fem::Hyperelastic hyperelastic_law(const YAML::Node& node, const std::string& ke
   return law;
 }
 
-/// The material of body `key` (bodies.NAME): young and poisson, or a hyperelastic law, and the
-/// optional density, expansion and plastic table.
-fem::Material body_material(const YAML::Node& body, const std::string& key, const ProblemReader& r)
+/// The material properties at `key` (materials.NAME, or a body's or section's own): young and
+/// poisson, or a hyperelastic law, and the optional density, expansion and plastic table.
+/// `other_keys` are the keys beside them (a section's cells).
+fem::Material material_properties(const YAML::Node& body, const std::string& key, const ProblemReader& r,
+                                  std::set<std::string> other_keys = {})
 {
-  r.only_keys(body, key, {"young", "poisson", "density", "expansion", "plastic", "hardening", "hyperelastic"});
+  other_keys.insert({"young", "poisson", "density", "expansion", "plastic", "hardening", "hyperelastic"});
+  r.only_keys(body, key, other_keys);
   fem::Material m;
   if (body["hyperelastic"])
   {
@@ -90,6 +94,124 @@ fem::Material body_material(const YAML::Node& body, const std::string& key, cons
   }
   m.check(r.source + ": " + key);
   return m;
+}
+
+/// The named materials of the top-level `materials:` map (none without one).
+std::map<std::string, fem::Material> named_materials(const YAML::Node& node, const ProblemReader& r)
+{
+  std::map<std::string, fem::Material> materials;
+  if (!node)
+    return materials;
+  FETICON_CHECK(node.IsMap() && node.size() > 0,
+                r.source << ": materials must be a map of names to properties, e.g. {steel: {young: 2.1e11, "
+                            "poisson: 0.3}}");
+  for (const auto& kv : node)
+  {
+    const std::string name = kv.first.as<std::string>();
+    materials.emplace(name, material_properties(kv.second, "materials." + name, r));
+  }
+  return materials;
+}
+
+/// The material at `key`: `material: NAME` of `materials`, or properties of its own.
+fem::Material material_entry(const YAML::Node& entry, const std::string& key,
+                             const std::map<std::string, fem::Material>& materials, const ProblemReader& r,
+                             std::set<std::string> other_keys = {})
+{
+  FETICON_CHECK(entry.IsMap(),
+                r.source << ": " << key
+                         << " must be a map: young and poisson (or a hyperelastic law), or material: "
+                            "a name of materials:");
+  if (!entry["material"])
+    return material_properties(entry, key, r, other_keys);
+  other_keys.insert("material");
+  r.only_keys(entry, key + " (a named material: its properties are under materials:)", other_keys);
+  const std::string name = r.text(entry["material"], key + ".material");
+  const auto material = materials.find(name);
+  FETICON_CHECK(
+      material != materials.end(),
+      r.source << ": " << key << ".material: no material '" << name << "' under materials:"
+               << (materials.empty() ? " (the file has no materials: section)" : "; it has: " + names_of(materials)));
+  return material->second;
+}
+
+/// The material of every body of `p.mesh` from the problem file's `bodies:` (and `materials:`).
+/// A body entry names a body of the mesh and gives its material, or gives `sections:`, each
+/// naming a body of the mesh as its cells and its material: one connected mesh of several
+/// materials (Gmsh volumes fragmented together), whose bodies share the nodes of their
+/// interfaces and are glued there as subdomains are. Bodies that share nodes must be sections
+/// of one body entry: two bodies meant to touch are separate meshes, and a shared node between
+/// them is a meshing mistake that would glue them silently.
+void body_materials(const YAML::Node& root, const ProblemReader& r, fem::Problem& p)
+{
+  const mesh::Mesh& mesh = p.mesh;
+  const auto materials = named_materials(root["materials"], r);
+  FETICON_CHECK(root["bodies"] && root["bodies"].IsMap(),
+                r.source << ": 'bodies' must give the material of every body (young and poisson, or material: NAME)");
+  std::map<std::string, int32_t> body_index;
+  for (int32_t b = 0; b < mesh.n_bodies(); ++b)
+    body_index.emplace(mesh.body_names[b], b);
+  const auto mesh_body = [&](const std::string& name, const std::string& key) {
+    const auto it = body_index.find(name);
+    FETICON_CHECK(it != body_index.end(),
+                  r.source << ": " << key << ": the mesh has no body '" << name
+                           << "'; it has: " << names_of(body_index));
+    return it->second;
+  };
+  std::vector<std::optional<fem::Material>> material(mesh.n_bodies());
+  std::vector<std::string> entry_of(mesh.n_bodies()); // the bodies: entry that gives each its material
+  const auto assign = [&](int32_t body, fem::Material m, const std::string& entry, const std::string& key) {
+    FETICON_CHECK(!material[body],
+                  r.source << ": " << key << ": body '" << mesh.body_names[body]
+                           << "' already has its material from bodies." << entry_of[body]);
+    material[body] = std::move(m);
+    entry_of[body] = entry;
+  };
+  for (const auto& kv : root["bodies"])
+  {
+    const std::string name = kv.first.as<std::string>();
+    const std::string key = "bodies." + name;
+    const YAML::Node& entry = kv.second;
+    if (!entry.IsMap() || !entry["sections"])
+    {
+      assign(mesh_body(name, key), material_entry(entry, key, materials, r), name, key);
+      continue;
+    }
+    r.only_keys(entry, key, {"sections"});
+    FETICON_CHECK(!body_index.count(name),
+                  r.source << ": " << key << " has sections, so it names no body of the mesh, but the mesh has a body '"
+                           << name << "': give it as the cells of a section and the entry another name");
+    const YAML::Node& sections = entry["sections"];
+    FETICON_CHECK(sections.IsSequence() && sections.size() > 0,
+                  r.source << ": " << key << ".sections must be a list of {cells: BODY, material: NAME}");
+    for (size_t i = 0; i < sections.size(); ++i)
+    {
+      const std::string at = key + ".sections[" + std::to_string(i) + "]";
+      FETICON_CHECK(sections[i].IsMap() && sections[i]["cells"],
+                    r.source << ": " << at << " needs cells: (a body of the mesh) and its material");
+      const int32_t body = mesh_body(r.text(sections[i]["cells"], at + ".cells"), at + ".cells");
+      assign(body, material_entry(sections[i], at, materials, r, {"cells"}), name, at);
+    }
+  }
+  for (int32_t b = 0; b < mesh.n_bodies(); ++b)
+    FETICON_CHECK(material[b],
+                  r.source << ": bodies." << mesh.body_names[b]
+                           << " is missing (young and poisson, material: NAME, or a section's cells)");
+  for (const mesh::SharedBodies& shared : mesh::bodies_sharing_nodes(mesh))
+  {
+    const std::string& first = mesh.body_names[shared.first_body];
+    const std::string& second = mesh.body_names[shared.second_body];
+    // Two bodies of one entry are its sections (a plain entry gives one body).
+    FETICON_CHECK(entry_of[shared.first_body] == entry_of[shared.second_body],
+                  r.source << ": bodies '" << first << "' and '" << second << "' share the node at ("
+                           << mesh.nodes(shared.node, 0) << ", " << mesh.nodes(shared.node, 1) << ", "
+                           << mesh.nodes(shared.node, 2)
+                           << "): bodies meant to touch must be separate meshes (do not fragment or "
+                              "Coherence their volumes); one connected mesh of several materials is one "
+                              "body of sections (bodies.NAME.sections)");
+  }
+  for (auto& m : material)
+    p.materials.push_back(std::move(*m));
 }
 
 std::vector<std::string> split_path(const std::string& path)
@@ -545,9 +667,8 @@ ProblemFile with_overrides(ProblemFile file, const std::vector<std::string>& ove
   {
     file.deck = std::filesystem::absolute(file.folder / file.root["mesh"]["file"].Scalar());
     file.deck_outline = deck_outline(file.deck);
-    for (const char* section : {"bodies", "plane_strain", "supports", "loads", "temperatures", "initial_temperature",
-                                "steps", "amplitudes", "contact", "ties", "couplings"})
-      FETICON_CHECK(!file.root[section],
+    for (const std::string& section : structured_keys)
+      FETICON_CHECK(section == "mesh" || !file.root[section],
                     file.source << ": section '" << section << "' is not read when mesh.file is "
                                 << "an input deck: the deck gives the whole model");
   }
@@ -659,26 +780,7 @@ fem::Problem build_custom_problem(const ProblemFile& file)
     p.mesh = boxes_mesh(root["mesh"]["boxes"], r);
   set_planar_formulation(root["mesh"], r, p);
 
-  // Materials: one entry per body.
-  FETICON_CHECK(root["bodies"] && root["bodies"].IsMap(),
-                file.source << ": 'bodies' must give young and poisson for every body");
-  for (const auto& kv : root["bodies"])
-  {
-    const std::string name = kv.first.as<std::string>();
-    bool known = false;
-    for (const auto& b : p.mesh.body_names)
-      known = known || b == name;
-    std::string list;
-    for (const auto& b : p.mesh.body_names)
-      list += (list.empty() ? "" : ", ") + b;
-    FETICON_CHECK(known, file.source << ": bodies." << name << ": the mesh has no body of that name; it has: " << list);
-  }
-  for (const auto& name : p.mesh.body_names)
-  {
-    const YAML::Node body = root["bodies"][name];
-    FETICON_CHECK(body, file.source << ": bodies." << name << " is missing (young, poisson)");
-    p.materials.push_back(body_material(body, "bodies." + name, r));
-  }
+  body_materials(root, r, p);
   if (root["plane_strain"])
   {
     const std::string v = r.text(root["plane_strain"], "plane_strain");

@@ -67,7 +67,7 @@ std::vector<SettingSpec> make_specs()
   // One key per entry, as the help lists them.
   // clang-format off
   std::vector<SettingSpec> specs = {
-      {"problem", "custom", "custom (mesh, bodies, supports, loads, contact sections of the problem file, "
+      {"problem", "custom", "custom (mesh, materials, bodies, supports, loads, contact sections of the problem file, "
                             "or an input deck)", Type::text, {"custom"}, 0, 0, false},
       {"method", "smalbe", "contact solver: smalbe (SMALBE-M, exact G lambda = e), dual_penalty "
                            "(problem (9) of Vondrák et al.), primal_penalty (undecomposed, CHOLMOD)",

@@ -11,8 +11,10 @@
 ///     pyramids, 27-node hexahedra and higher orders are rejected. A volume entity may belong
 ///     to one 3D group only, and every volume entity with elements must belong to one (Gmsh
 ///     only writes elements without a physical group when Mesh.SaveAll = 1).
-///   - Bodies share no nodes: two bodies meant to touch (contact) must be separate volumes with
-///     their own surface meshes, i.e. not fragmented / not `Coherence`d together.
+///   - Bodies may share nodes (volumes fragmented or `Coherence`d together: a connected mesh of
+///     several materials); mesh::bodies_sharing_nodes finds them, and the problem file accepts
+///     them only as the sections of one body. Two bodies meant to touch (contact) must be
+///     separate volumes with their own surface meshes.
 ///   - 2D physical groups are face sets and node sets of the same name. Each element must be a
 ///     3- or 6-node triangle or a 4- or 8-node quadrangle that is the face of exactly one cell
 ///     (a boundary face) and of its type; it is stored with that cell's nodes in the outward
@@ -58,7 +60,7 @@ namespace feticon::mesh
 /// @throws feticon::Error naming the file and the problem: missing, unreadable or corrupt file,
 ///         no 3D or 2D physical group, unnamed, duplicate or empty groups, element types feticon does
 ///         not know, a surface element that is not a boundary face of a cell of its type,
-///         bodies sharing nodes, inverted or degenerate cells.
+///         inverted or degenerate cells.
 /// @param[out] from_cache whether the mesh came from the mesh cache (may be null)
 Mesh read_gmsh(const std::filesystem::path& path, bool* from_cache = nullptr);
 } // namespace feticon::mesh

@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 
 #include <algorithm>
+#include <map>
 #include <numbers>
 
 namespace feticon::mesh
@@ -64,6 +65,38 @@ std::string_view planar_name(PlanarKind kind)
 {
   constexpr std::array<std::string_view, 4> names = {"3D", "plane strain", "plane stress", "axisymmetric"};
   return names[static_cast<size_t>(kind)];
+}
+
+std::vector<SharedBodies> bodies_sharing_nodes(const Mesh& mesh)
+{
+  // The body of every node's first cell, and the other bodies of the few nodes that have some.
+  std::vector<int32_t> first_body(mesh.n_nodes(), -1);
+  std::map<int32_t, std::vector<int32_t>> other_bodies;
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    for (const int32_t n : mesh.cells[c])
+    {
+      const int32_t body = mesh.cell_body[c];
+      if (first_body[n] < 0)
+        first_body[n] = body;
+      else if (first_body[n] != body)
+      {
+        std::vector<int32_t>& others = other_bodies[n];
+        if (std::find(others.begin(), others.end(), body) == others.end())
+          others.push_back(body);
+      }
+    }
+  std::map<std::pair<int32_t, int32_t>, int32_t> first_node;
+  for (auto& [n, bodies] : other_bodies)
+  {
+    bodies.push_back(first_body[n]);
+    for (size_t i = 0; i < bodies.size(); ++i)
+      for (size_t j = i + 1; j < bodies.size(); ++j)
+        first_node.emplace(std::minmax(bodies[i], bodies[j]), n); // n increases: the first stays
+  }
+  std::vector<SharedBodies> shared;
+  for (const auto& [bodies, node] : first_node)
+    shared.push_back({bodies.first, bodies.second, node});
+  return shared;
 }
 
 double centre_jacobian_determinant(const Mesh& mesh, int32_t c)

@@ -166,7 +166,9 @@ struct Mesh
   /// Reference coordinates, one row per node (m).
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> nodes;
   CellList cells;
-  /// Body index of every cell (into body_names). Bodies share no nodes.
+  /// Body index of every cell (into body_names). Bodies may share nodes: a connected mesh of
+  /// several materials is several bodies glued at the nodes of their interfaces, as subdomains
+  /// are (a deck's sections; a problem file's bodies of sections).
   std::vector<int32_t> cell_body;
   std::vector<std::string> body_names;
   /// Named node sets (sorted, unique node ids).
@@ -203,6 +205,16 @@ struct Mesh
 /// renumbered in increasing mesh order; node sets are restricted to it, face sets dropped.
 /// @param[out] node_of_local mesh node of every node of the piece
 Mesh submesh(const Mesh& mesh, const std::vector<int32_t>& cells, std::vector<int32_t>& node_of_local);
+
+/// Two bodies that share nodes, and the first (lowest) node they share.
+struct SharedBodies
+{
+  int32_t first_body;
+  int32_t second_body; ///< > first_body
+  int32_t node;
+};
+/// Every pair of bodies that share nodes, ordered by (first_body, second_body).
+std::vector<SharedBodies> bodies_sharing_nodes(const Mesh& mesh);
 
 /// Jacobian determinant of a cell's map at the centre of its reference cell; positive when the
 /// node order keeps the orientation (for hex8, 8 times the volume of a parallelepiped). Mesh

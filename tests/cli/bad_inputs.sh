@@ -154,6 +154,24 @@ expect "material for an unknown body" "bodies.lid" -- "$(variant 's/^bodies:/bod
 expect "moduli beyond double precision" "differ by more than 1e15" -- \
   "$(variant 's/punch: {young: 2e11/punch: {young: 2e41/' contrast)"
 expect "negative Young's modulus" "bodies.base" -- "$(variant 's/base: {young: 2e11/base: {young: -2e11/' negyoung)"
+# Named materials and bodies of sections (materials:, bodies.NAME.sections).
+named='s/^bodies:/materials:\n  steel: {young: 2e11, poisson: 0.3}\nbodies:/'
+expect "unknown named material" "bodies.base.material: no material 'iron'" -- \
+  "$(variant "$named; s/base: {young: 2e11, poisson: 0.3}/base: {material: iron}/" ironmaterial)"
+expect "named material without materials:" "no materials: section" -- \
+  "$(variant 's/base: {young: 2e11, poisson: 0.3}/base: {material: steel}/' nomaterials)"
+expect "named material and properties" "unknown key 'young' in bodies.base" -- \
+  "$(variant "$named; s/base: {young: 2e11, poisson: 0.3}/base: {material: steel, young: 1e9}/" namedandown)"
+expect "negative modulus of a named material" "materials.steel" -- \
+  "$(variant 's/^bodies:/materials:\n  steel: {young: -2e11, poisson: 0.3}\nbodies:/' negnamed)"
+expect "section on an unknown body" "the mesh has no body 'lid'" -- \
+  "$(variant 's/^  punch: .*/  tool:\n    sections: [{cells: lid, young: 1e9, poisson: 0.2}]/' sectionlid)"
+expect "body in a section and an entry" "already has its material from bodies.punch" -- \
+  "$(variant 's/^  punch: .*/  punch: {young: 2e11, poisson: 0.3}\n  tool:\n    sections: [{cells: punch, young: 1e9, poisson: 0.2}]/' twice)"
+expect "sections under a body's name" "has sections, so it names no body" -- \
+  "$(variant 's/^  punch: .*/  punch:\n    sections: [{cells: punch, young: 1e9, poisson: 0.2}]/' sectionname)"
+expect "section without cells" "needs cells:" -- \
+  "$(variant 's/^  punch: .*/  tool:\n    sections: [{young: 1e9, poisson: 0.2}]/' nocells)"
 expect "support on an unknown set" "supports.0.set" -- "$(variant 's/set: base_ymin/set: floor/' unknownsupport)"
 expect "support without components" "prescribes no component" -- "$(variant 's/{set: base_xmin, x: 0}/{set: base_xmin}/' nocomponent)"
 expect "load on an unknown set" "loads.0.set" -- "$(variant 's/set: punch_ymax/set: lid/' unknownload)"

@@ -179,15 +179,11 @@ printf 'loads:\n  - {coupling: tip, force: [1e5, 0, 0]}\n' >> "$work/bar_distrib
 "$feticon" run "$work/bar_distributing.yaml" -o "$work/yaml_distributing" "${quiet[@]}" 2> /dev/null
 /usr/bin/python3 - "$work/yaml_distributing/step_001.vtu" "$src/tests/tools" <<'PY'
 import sys
-from xml.etree import ElementTree
 import numpy
 sys.path.insert(0, sys.argv[2])
 import read_vtu
-root = ElementTree.parse(sys.argv[1]).getroot()
-header = numpy.dtype("<" + read_vtu.TYPES[root.get("header_type", "UInt32")])
-arrays = {e.get("Name"): e for e in root.findall("UnstructuredGrid/Piece/PointData/DataArray")}
-u = read_vtu.read_array(arrays["displacement"], "LittleEndian", header).reshape(-1, 3)
-end = read_vtu.read_array(arrays["set_bar_xmax"], "LittleEndian", header) > 0
+arrays = read_vtu.point_data(sys.argv[1])
+u, end = arrays["displacement"], arrays["set_bar_xmax"] > 0
 error = numpy.abs(u[end, 0] / 1e-3 - 1).max()
 print(f"problem file, distributing: end face u_x vs F L / (E A): {error:.3g} (bound 1e-6, {end.sum()} nodes)")
 sys.exit(0 if error <= 1e-6 and end.sum() == 9 else 1)

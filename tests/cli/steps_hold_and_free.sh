@@ -56,7 +56,6 @@ mpirun --oversubscribe -np 2 "$feticon" run -q "$work/three.yaml" --output "$wor
 /usr/bin/python3 - "$work" <<'PY'
 import json
 import sys
-import xml.etree.ElementTree as ElementTree
 
 import numpy
 import read_vtu
@@ -69,11 +68,8 @@ assert [round(s["load_factor"], 12) for s in three["steps"]] == [0.5, 1, 1.5, 2,
 
 
 def top_uz(path):
-    root = ElementTree.parse(path).getroot()
-    header = numpy.dtype("<" + read_vtu.TYPES[root.get("header_type", "UInt32")])
-    arrays = {e.get("Name"): e for e in root.findall("UnstructuredGrid/Piece/PointData/DataArray")}
-    u = read_vtu.read_array(arrays["displacement"], "LittleEndian", header).reshape(-1, 3)
-    top = read_vtu.read_array(arrays["set_block_zmax"], "LittleEndian", header) > 0
+    arrays = read_vtu.point_data(path)
+    u, top = arrays["displacement"], arrays["set_block_zmax"] > 0
     assert top.sum() == 9, top.sum()
     return u[top, 2]
 

@@ -6,9 +6,7 @@
     frd_vs_vtu.py RUN.frd step_001.vtu       exit 1 if a value differs
 """
 import sys
-from xml.etree import ElementTree
 
-import numpy
 
 import read_vtu
 
@@ -30,12 +28,10 @@ def frd_displacements(path):
 
 
 def vtu_displacements(path):
-    root = ElementTree.parse(path).getroot()
-    header = numpy.dtype("<" + read_vtu.TYPES[root.get("header_type", "UInt32")])
-    for element in root.find("UnstructuredGrid/Piece").findall("PointData/DataArray"):
-        if element.get("Name") == "displacement":
-            return read_vtu.read_array(element, root.get("byte_order", "LittleEndian"), header).reshape(-1, 3)
-    sys.exit(f"{path}: no displacement array")
+    arrays = read_vtu.point_data(path)
+    if "displacement" not in arrays:
+        sys.exit(f"{path}: no displacement array")
+    return arrays["displacement"]
 
 
 def main(frd, vtu):

@@ -36,7 +36,7 @@ import time
 # problem file first (the one `feticon run` gets), then the mesh it names.
 PROBLEM_SEEDS = [["two_boxes.yaml"], ["hertz_small.yaml"], ["gmsh41.yaml", "punch41.msh"],
                  ["gmsh22.yaml", "punch22.msh"], ["gmsh_tet10.yaml", "punch_tet10.msh"],
-                 ["gmsh_2d.yaml", "blocks_2d.msh"]]
+                 ["gmsh_2d.yaml", "blocks_2d.msh"], ["sections.yaml", "sections_bar.msh"]]
 MM_FILES = ["A.mtx", "b.mtx", "l.mtx"]
 
 # Work bound: the machine running the fuzzer is shared, so a mutant whose model legitimately

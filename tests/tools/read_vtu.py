@@ -53,6 +53,20 @@ def read_array(element, byte_order, header_dtype):
     return values
 
 
+def point_data(path):
+    """Every PointData array of the .vtu at `path` by name, vectors as (points, components)."""
+    root = ElementTree.parse(path).getroot()
+    byte_order = root.get("byte_order", "LittleEndian")
+    header_dtype = numpy.dtype(("<" if byte_order == "LittleEndian" else ">") +
+                               TYPES[root.get("header_type", "UInt32")])
+    arrays = {}
+    for element in root.findall("UnstructuredGrid/Piece/PointData/DataArray"):
+        values = read_array(element, byte_order, header_dtype)
+        components = int(element.get("NumberOfComponents", "1"))
+        arrays[element.get("Name")] = values.reshape(-1, components) if components > 1 else values
+    return arrays
+
+
 def describe(element, values):
     summary = {
         "type": element.get("type"),

@@ -295,22 +295,14 @@ std::unordered_map<std::size_t, int32_t> read_cells(const std::vector<PhysicalGr
       mesh.cell_body.resize(gmsh_cells.size(), mesh.n_bodies() - 1);
     }
 
-  // Node ids body by body, by increasing Gmsh tag, so each body's nodes are one range.
+  // Node ids body by body, by increasing Gmsh tag, so each body's nodes are one range (a node
+  // bodies share, the sections of one connected mesh, in the range of the first body).
   std::unordered_map<std::size_t, int32_t> body_of_node;
   std::vector<std::vector<std::size_t>> body_nodes(mesh.body_names.size());
   for (std::size_t c = 0; c < gmsh_cells.size(); ++c)
     for (const std::size_t tag : gmsh_cells[c].nodes())
-    {
-      const int32_t body = mesh.cell_body[c];
-      const auto [it, inserted] = body_of_node.emplace(tag, body);
-      FETICON_CHECK(it->second == body,
-                    where << ": bodies '" << mesh.body_names[it->second] << "' and '" << mesh.body_names[body]
-                          << "' share Gmsh node " << tag
-                          << "; bodies must be separate meshes (do not fragment or Coherence "
-                             "volumes of different bodies)");
-      if (inserted)
-        body_nodes[body].push_back(tag);
-    }
+      if (body_of_node.emplace(tag, mesh.cell_body[c]).second)
+        body_nodes[mesh.cell_body[c]].push_back(tag);
   const std::size_t n_nodes = body_of_node.size();
   constexpr auto max_local_id = static_cast<std::size_t>(std::numeric_limits<int32_t>::max());
   FETICON_CHECK(n_nodes <= max_local_id && gmsh_cells.size() <= max_local_id,
