@@ -353,6 +353,11 @@ void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
       }
     }
   }
+  // CalculiX's .dat prints the reactions of an axisymmetric model for the 2-degree wedge it
+  // expands CAX cells into, 1/180 of the full circle (its .frd, its *CLOAD and feticon's other
+  // outputs are per full circle): the .dat's lines then compare with CalculiX's.
+  if (mesh.planar.kind == mesh::PlanarKind::axisymmetric)
+    rf_dat /= 180.0;
   // The .frd always holds U, S and the contact (what feticon's VTU holds), RF if a request asks.
   std::vector<std::string> frd_warnings;
   const io::FrdFields fields = io::frd_fields(step.outputs, frd_warnings);

@@ -8,6 +8,7 @@
 # contact.law=deck) to 5e-3 (measured 2.4e-3: CalculiX's expanded plane stress element has
 # szz 9e-3 and the deck's penalty contact). Every point of every element is compared, so a
 # wrong order, count or component fails.
+# And the reactions of an axisymmetric model per 2-degree wedge, as CalculiX prints them (below).
 # Usage: dat_points.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -41,3 +42,21 @@ print(f"{reference.split('/')[-1]}: {len(ref)} points, stresses within {diff / s
 sys.exit(0 if diff <= bound * scale else 1)
 PY
 done
+
+# An axisymmetric model's reactions in the .dat are CalculiX's, those of the 2-degree wedge it
+# expands CAX cells into: 1/180 of the full circle. tests/data/calculix/cax_ring.inp is a ring
+# in uniaxial stress, so its held face carries E eps pi (r_o^2 - r_i^2) = 1.8849556e8 N on the
+# full circle (closed form; linear cells reproduce it), 1.0471976e6 N printed, to the printed
+# 7 digits. CalculiX 2.20 prints 1.046985e6 on the same deck (2.0e-4 lower: its wedge's
+# discretization; 2026-12-04).
+"$feticon" run "$data/cax_ring.inp" -o "$work/cax_ring" -q --set output.plots=false 2> /dev/null
+/usr/bin/python3 - "$work/cax_ring/cax_ring.dat" "$src/tests/tools" <<'PY'
+import math, sys
+sys.path.insert(0, sys.argv[2])
+from calculix_dat import parse_dat
+totals = [b for b in parse_dat(sys.argv[1])["blocks"] if b["kind"] == "total force"]
+printed = totals[-1]["rows"][0][1]
+sector = 2e11 * 1e-4 * math.pi * (2 ** 2 - 1 ** 2) / 180
+print(f"cax_ring.dat: total reaction {printed:.7e} N, the closed form's 2-degree wedge {sector:.7e} N")
+sys.exit(0 if abs(printed / sector - 1) <= 5e-7 else 1)
+PY
