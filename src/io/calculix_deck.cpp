@@ -371,6 +371,62 @@ void write_ties(std::ostream& out, const fem::Problem& problem)
   }
 }
 
+/// Per coupling (fem/coupling.hpp): its reference node, labelled after the mesh nodes (its DOFs
+/// 1-3 the translations, 4-6 the rotations, as CalculiX's *COUPLING REF NODE), the surface it
+/// drives (its faces, or its node set as a node surface) and the *COUPLING with *KINEMATIC (the
+/// components that follow the rigid motion) or *DISTRIBUTING (forces, and the moments it spreads).
+/// Mean couplings and pretension sections are refused.
+void write_couplings(std::ostream& out, const fem::Problem& problem)
+{
+  if (problem.couplings.empty())
+    return;
+  const mesh::Mesh& mesh = problem.mesh;
+  out << "*NODE, NSET=REFERENCE_NODES\n";
+  for (size_t k = 0; k < problem.couplings.size(); ++k)
+  {
+    const Eigen::Vector3d& x = problem.couplings[k].reference;
+    out << mesh.n_nodes() + k + 1 << ", " << number(x(0)) << ", " << number(x(1)) << ", " << number(x(2)) << '\n';
+  }
+  const std::vector<std::vector<int32_t>> cells_of_node = cells_of_nodes(mesh);
+  for (size_t k = 0; k < problem.couplings.size(); ++k)
+  {
+    const fem::Coupling& c = problem.couplings[k];
+    FETICON_CHECK(
+        c.kind == fem::CouplingKind::kinematic || c.kind == fem::CouplingKind::distributing,
+        "calculix export: " << c.name << ": "
+                            << (c.kind == fem::CouplingKind::mean ? "a mean coupling (*DISTRIBUTING COUPLING)"
+                                                                  : "a pretension section")
+                            << " is not written by feticon export (kinematic and distributing couplings are)");
+    const std::string surface = "COUPLING_" + std::to_string(k + 1);
+    if (!c.faces.empty())
+    {
+      out << "*SURFACE, NAME=" << surface << ", TYPE=ELEMENT\n";
+      for (const auto& [cell, f] : element_faces(mesh, c.faces, cells_of_node))
+        out << cell + 1 << ", S" << f << '\n';
+    }
+    else
+    {
+      out << "*SURFACE, NAME=" << surface << ", TYPE=NODE\n";
+      for (const int32_t n : mesh.node_set(c.nodes))
+        out << n + 1 << '\n';
+    }
+    out << "*COUPLING, REF NODE=" << mesh.n_nodes() + k + 1 << ", SURFACE=" << surface
+        << ", CONSTRAINT NAME=" << deck_name("C_", c.name) << '\n';
+    if (c.kind == fem::CouplingKind::kinematic)
+    {
+      out << "*KINEMATIC\n";
+      for (int i = 0; i < 3; ++i)
+        if (c.components[i])
+          out << i + 1 << ", " << i + 1 << '\n';
+      continue;
+    }
+    out << "*DISTRIBUTING\n1, 3\n";
+    for (int i = 0; i < 3; ++i)
+      if (c.moments[i])
+        out << i + 4 << ", " << i + 4 << '\n';
+  }
+}
+
 /// *STEP and *STATIC of `step` in a time of 1: its automatic increments (as fractions of its
 /// time), or its fixed ones (the step's own, else `options`') as automatic ones whose maximum is
 /// the initial (CalculiX may cut them back, as feticon does, but not grow them).
@@ -394,9 +450,29 @@ void write_step_start(std::ostream& out, const fem::Step& step, const CalculixOp
 }
 
 /// The *CLOAD lines of `force` (3 per node, global components; a node with a frame in its local
-/// ones, write_frames), its totals counted in `summary`.
-void write_cloads(std::ostream& out, const fem::Problem& problem, const la::Vector& force, CalculixDeckSummary& summary)
+/// ones, write_frames) and of the loads on reference nodes in step `step` (fem::Problem's
+/// external force holds their nodal forces, which are left out here: the deck loads the reference
+/// node), its totals counted in `summary`.
+void write_cloads(std::ostream& out, const fem::Problem& problem, la::Vector force, size_t step,
+                  CalculixDeckSummary& summary)
 {
+  if (!problem.steps[step].reference_loads.empty())
+  {
+    // What the subtraction leaves of the reference loads' nodal forces is round-off, no load.
+    const double round_off = 1e-13 * force.lpNorm<Eigen::Infinity>();
+    const std::vector<fem::ReferenceDofs> reference = problem.reference_dofs();
+    for (const fem::ReferenceValue& load : problem.steps[step].reference_loads)
+    {
+      const fem::DofCombination& unit = reference[static_cast<size_t>(load.coupling)].unit_load[load.dof];
+      for (size_t k = 0; k < unit.dofs.size(); ++k)
+        force(unit.dofs[k]) -= load.value * unit.coefficients[k];
+      out << problem.mesh.n_nodes() + load.coupling + 1 << ", " << load.dof + 1 << ", " << number(load.value) << '\n';
+      if (load.dof < 3)
+        summary.total_load[load.dof] += load.value;
+      ++summary.n_cloads;
+    }
+    force = force.unaryExpr([round_off](double f) { return std::abs(f) <= round_off ? 0.0 : f; });
+  }
   for (int32_t n = 0; n < problem.mesh.n_nodes(); ++n)
   {
     const Eigen::Vector3d global = force.segment<3>(3 * la::Index{n});
@@ -431,15 +507,23 @@ void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOp
     if (problem.eliminated[i] && mesh.planar.kind == mesh::PlanarKind::none)
       out << "NALL, " << i + 1 << ", " << i + 1 << ", 0.0\n";
 
+  for (const fem::ReferenceValue& r : problem.steps.front().reference_supports)
+    out << mesh.n_nodes() + r.coupling + 1 << ", " << r.dof + 1 << ", " << r.dof + 1 << ", " << number(r.value) << '\n';
   out << "*CLOAD\n";
-  write_cloads(out, problem, problem.external_force(), summary);
+  write_cloads(out, problem, problem.external_force(), 0, summary);
 }
 /// The deck's node, component and value of held DOF `dof` = `value`: a node with a frame is
 /// held in its local components (write_frames), whether the history numbers the DOF as local or,
-/// along an axis that is a global one, as global (fem::NodeFrames::held).
+/// along an axis that is a global one, as global (fem::NodeFrames::held); a coupling's reference
+/// DOF is its reference node's (write_couplings), component 0-5.
 std::tuple<int32_t, int, double> deck_dof(const fem::Problem& problem, int64_t dof, double value)
 {
   const int32_t n_nodes = problem.mesh.n_nodes();
+  if (!problem.couplings.empty() && dof >= problem.reference_dof(0, 0)) // a reference node's DOF 1-6
+  {
+    const int64_t k = dof - problem.reference_dof(0, 0);
+    return {n_nodes + static_cast<int32_t>(k / 6), static_cast<int>(k % 6), value};
+  }
   if (fem::NodeFrames::is_local(n_nodes, dof))
     return {problem.frames.node_of(n_nodes, dof), static_cast<int>(dof % 3), value};
   const auto node = static_cast<int32_t>(dof / 3);
@@ -498,7 +582,7 @@ void write_later_step(std::ostream& out, const fem::Problem& problem, const fem:
   const la::Vector force = history.external_force(end);
   out << "*CLOAD, OP=NEW\n";
   std::fill(std::begin(summary.total_load), std::end(summary.total_load), 0.0);
-  write_cloads(out, problem, force, summary);
+  write_cloads(out, problem, force, static_cast<size_t>(stage - 1), summary);
 }
 } // namespace
 
@@ -523,9 +607,6 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
 
   write_mesh(out, problem, x, summary);
   FETICON_CHECK(problem.amplitudes.empty(), "calculix export: amplitudes are not written by feticon export");
-  FETICON_CHECK(problem.couplings.empty(),
-                "calculix export: couplings (" << problem.couplings.front().name
-                                               << ") are not written by feticon export");
   FETICON_CHECK(std::ranges::all_of(
                     problem.steps,
                     [](const fem::Step& step) {
@@ -543,8 +624,11 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   write_materials(out, problem);
   write_contact(out, problem, options, pairs);
   write_ties(out, problem);
+  write_couplings(out, problem);
   const auto output_requests = [&] {
     out << "*NODE FILE\nU, RF\n";
+    if (!problem.couplings.empty())
+      out << "*NODE PRINT, NSET=REFERENCE_NODES\nU, RF\n";
     if (!pairs.empty())
       out << "*CONTACT FILE\nCSTR\n";
     for (const std::string& name : node_sets)

@@ -24,6 +24,10 @@
 ///    mu and CalculiX's stick slope lambda = K / stick_slope_ratio (Pa/m: shear stress per
 ///    elastic slip of the face-to-face penalty; see stick_slope_ratio). Tresca's law has no
 ///    CalculiX keyword, so feticon export refuses it (app/export_command.cpp);
+///  - kinematic and distributing couplings as a reference node each (labelled after the mesh
+///    nodes), its surface and *COUPLING with *KINEMATIC or *DISTRIBUTING; the supports and loads
+///    on its DOFs 1-6 as *BOUNDARY and *CLOAD on it (the loads' nodal forces, which the external
+///    force holds, left out); mean couplings and pretension sections are refused;
 ///  - a slave body held only by contact in the direction of the master normal (no Dirichlet
 ///    component there, like the Hertz cylinder) has no stiffness in CalculiX's first iteration
 ///    when the bodies touch at a line or point, and floats away; its nodes are shifted by

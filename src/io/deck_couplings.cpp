@@ -26,9 +26,11 @@ std::vector<int32_t> weighted_nodes(const DeckData& data, const DeckCoupling& c,
   return it->second.expand();
 }
 
-/// The mesh nodes of what a kinematic or distributing coupling names.
-std::vector<int32_t> coupled_nodes(const DeckCoupling& c, const mesh::Mesh& mesh,
-                                   const std::map<std::string, std::vector<int32_t>>& element_sets)
+/// The mesh nodes of what a kinematic or distributing coupling names: a node surface's own
+/// nodes (CalculiX couples those, not the faces they span), an element surface's faces' nodes.
+std::vector<int32_t> coupled_nodes(const DeckData& data, const DeckCoupling& c, const mesh::Mesh& mesh,
+                                   const std::map<std::string, std::vector<int32_t>>& element_sets,
+                                   const std::function<int32_t(int32_t)>& mesh_of)
 {
   if (!c.node_set.empty())
   {
@@ -46,6 +48,17 @@ std::vector<int32_t> coupled_nodes(const DeckCoupling& c, const mesh::Mesh& mesh
         out.push_back(n);
     std::ranges::sort(out);
     out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+  if (const auto surface = data.surfaces.find(c.surface); surface != data.surfaces.end() && surface->second.node_based)
+  {
+    std::vector<int32_t> out;
+    for (const int32_t node : surface->second.nodes)
+      if (mesh_of(node) >= 0)
+        out.push_back(mesh_of(node));
+    std::ranges::sort(out);
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    FETICON_CHECK(!out.empty(), c.name << ": SURFACE=" << c.surface << " has no node of an element");
     return out;
   }
   FETICON_CHECK(mesh.face_sets.count(c.surface), c.name << ": SURFACE=" << c.surface << " names no *SURFACE");
@@ -108,7 +121,7 @@ std::vector<fem::Coupling> deck_couplings(const DeckData& data, const DeckRefere
     std::vector<int32_t>& nodes = mesh.node_sets[coupling.nodes];
     if (c.kind != fem::CouplingKind::mean)
     {
-      nodes = coupled_nodes(c, mesh, element_sets);
+      nodes = coupled_nodes(data, c, mesh, element_sets, mesh_of);
       if (c.kind == fem::CouplingKind::distributing)
         coupling.faces = c.surface;
       continue;
