@@ -6,13 +6,11 @@
 
 #include "common/error.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <optional>
 #include <sstream>
-#include <unordered_map>
 
 namespace feticon::contact
 {
@@ -191,71 +189,6 @@ std::vector<TieReport> tie_surfaces(fem::Problem& problem)
     problem.tie_of_equation.resize(problem.tie_equations.size(), static_cast<int32_t>(out.size()) - 1);
   }
   return out;
-}
-
-void check_no_tie_cycle(const fem::Problem& problem)
-{
-  const std::vector<fem::LinearEquation>& rows = problem.tie_equations;
-  std::unordered_map<int64_t, size_t> row_of_slave; // each row's own slave DOF (its first term)
-  for (size_t k = 0; k < rows.size(); ++k)
-    row_of_slave.emplace(3 * int64_t{rows[k].terms.front().node} + rows[k].terms.front().component, k);
-  // Row k -> the rows whose slave DOF k's masters hold; Kahn's order removes every row that is
-  // on no cycle.
-  std::vector<std::vector<size_t>> next(rows.size());
-  std::vector<int64_t> incoming(rows.size(), 0);
-  for (size_t k = 0; k < rows.size(); ++k)
-    for (size_t t = 1; t < rows[k].terms.size(); ++t)
-      if (const auto it = row_of_slave.find(3 * int64_t{rows[k].terms[t].node} + rows[k].terms[t].component);
-          it != row_of_slave.end())
-      {
-        next[k].push_back(it->second);
-        ++incoming[it->second];
-      }
-  std::vector<size_t> ready;
-  for (size_t k = 0; k < rows.size(); ++k)
-    if (incoming[k] == 0)
-      ready.push_back(k);
-  size_t removed = 0;
-  while (!ready.empty())
-  {
-    const size_t k = ready.back();
-    ready.pop_back();
-    ++removed;
-    for (const size_t j : next[k])
-      if (--incoming[j] == 0)
-        ready.push_back(j);
-  }
-  if (removed == rows.size())
-    return;
-  // Every remaining row has a remaining successor: walk until a row repeats, then that cycle.
-  size_t k = 0;
-  while (incoming[k] == 0)
-    ++k;
-  std::vector<size_t> seen(rows.size(), rows.size()), walk;
-  while (seen[k] == rows.size())
-  {
-    seen[k] = walk.size();
-    walk.push_back(k);
-    k = *std::ranges::find_if(next[k], [&](size_t j) { return incoming[j] > 0; });
-  }
-  std::vector<std::string> names;
-  for (size_t w = seen[k]; w < walk.size(); ++w)
-  {
-    const int32_t owner = problem.tie_of_equation[walk[w]];
-    const std::string name = owner >= 0 ? "tie " + problem.ties[static_cast<size_t>(owner)].name
-                                        : problem.couplings[static_cast<size_t>(-1 - owner)].name;
-    if (std::ranges::find(names, name) == names.end())
-      names.push_back(name);
-  }
-  std::string list;
-  for (const std::string& name : names)
-    list += (list.empty() ? "" : " and ") + name;
-  const int32_t node = rows[k].terms.front().node;
-  FETICON_CHECK(false,
-                list << " tie nodes to each other in a cycle (node at (" << problem.mesh.nodes(node, 0) << ", "
-                     << problem.mesh.nodes(node, 1) << ", " << problem.mesh.nodes(node, 2)
-                     << ") is a slave whose master surface leads back to it), so their rows are dependent; "
-                        "tie each interface once, one side the slave");
 }
 
 std::string describe(const TieReport& r)

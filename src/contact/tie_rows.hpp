@@ -58,14 +58,6 @@ inline constexpr double default_tie_tolerance = 0.025;
 /// @throws feticon::Error naming the tie if no slave node lies within its position tolerance
 std::vector<TieReport> tie_surfaces(fem::Problem& problem);
 
-/// Checks that no tie or kinematic coupling row depends on itself through the others: a row's
-/// master DOFs may hold other rows' slave DOFs (a chain, which the FETI rows take as it is),
-/// but not in a cycle (tie A's slave nodes on tie B's master surface and B's slave nodes on A's:
-/// two surfaces tied both ways), whose rows are dependent (on matching meshes the same row
-/// twice) or define the slaves by each other.
-/// @throws feticon::Error naming the ties and couplings of one cycle and a node on it
-void check_no_tie_cycle(const fem::Problem& problem);
-
 /// "tie T1: 121 of 125 slave nodes tied (position tolerance 2.5e-4 m; 4 beyond it), 363 rows".
 std::string describe(const TieReport& report);
 } // namespace feticon::contact

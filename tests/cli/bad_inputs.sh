@@ -154,8 +154,6 @@ expect "material for an unknown body" "bodies.lid" -- "$(variant 's/^bodies:/bod
 expect "moduli beyond double precision" "differ by more than 1e15" -- \
   "$(variant 's/punch: {young: 2e11/punch: {young: 2e41/' contrast)"
 expect "negative Young's modulus" "bodies.base" -- "$(variant 's/base: {young: 2e11/base: {young: -2e11/' negyoung)"
-expect "ties in a cycle" "tie each interface once" -- \
-  "$(variant 's/^contact:/ties:\n  - {name: down, slave: punch_ymin, master: base_ymax}\n  - {name: up, slave: base_ymax, master: punch_ymin}\ncontact:/' tiecycle)"
 # Named materials and bodies of sections (materials:, bodies.NAME.sections).
 named='s/^bodies:/materials:\n  steel: {young: 2e11, poisson: 0.3}\nbodies:/'
 expect "unknown named material" "bodies.base.material: no material 'iron'" -- \
