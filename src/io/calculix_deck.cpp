@@ -427,7 +427,8 @@ void write_couplings(std::ostream& out, const fem::Problem& problem)
   }
 }
 
-/// *STEP and *STATIC of `step` in a time of 1: its automatic increments (as fractions of its
+/// *STEP (AMPLITUDE=STEP where the step's loads take their values at once) and *STATIC of
+/// `step` in a time of 1: its automatic increments (as fractions of its
 /// time), or its fixed ones (the step's own, else `options`') as automatic ones whose maximum is
 /// the initial (CalculiX may cut them back, as feticon does, but not grow them).
 void write_step_start(std::ostream& out, const fem::Step& step, const CalculixOptions& options)
@@ -436,7 +437,7 @@ void write_step_start(std::ostream& out, const fem::Step& step, const CalculixOp
   // the count, at least CalculiX's default 100), not so much that a failing model creeps on.
   const bool automatic = step.automatic && !step.increments;
   const int fixed = step.increments.value_or(options.increments);
-  out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "")
+  out << "*STEP" << (options.nlgeom ? ", NLGEOM" : "") << (step.ramp ? "" : ", AMPLITUDE=STEP")
       << ", INC=" << (automatic ? step.automatic->max_increments : std::max(100, 2 * fixed)) << "\n*STATIC\n";
   if (automatic)
   {

@@ -33,6 +33,8 @@
 ///    when the bodies touch at a line or point, and floats away; its nodes are shifted by
 ///    `overclosure` against the master's mean outward normal, so the first iteration finds
 ///    springs. The body is free in that direction, so the equilibrium only translates it back;
+///  - a step whose loads take their values at once (fem::Step::ramp false) as *STEP,
+///    AMPLITUDE=STEP (else CalculiX ramps them, a different path);
 ///  - *STEP with NLGEOM for large displacements, `increments` increments of equal size
 ///    (feticon's load steps) as the initial and largest increment, so CalculiX takes that many
 ///    unless its own convergence control cuts one back; output of U, RF and the contact

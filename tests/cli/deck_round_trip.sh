@@ -41,3 +41,42 @@ check punch "$src/examples/flat_punch/problem.yaml"
 check punch-coulomb "$src/examples/flat_punch/problem.yaml" --set contact.friction.model=coulomb \
   --set contact.friction.coefficient=0.3
 check sphere "$src/examples/sphere_on_block/problem.yaml" --set displacements=small
+
+# A step whose loads take their values at once (`ramp: false`, *STEP, AMPLITUDE=STEP): a J2 bar
+# pulled beyond yield in two increments, then unloaded to a third of the load at once in two
+# more. Reference: the problem file's run, every increment's displacement to 1e-9 of the largest
+# (measured 4e-15). Before, the deck ramped that step (its first increment 1 % of max u apart).
+cat > "$work/at_once.yaml" <<'YAML'
+problem: custom
+mesh:
+  boxes:
+    - {name: bar, origin: [0, 0, 0], lengths: [1, 0.2, 0.2], cells: [4, 1, 1]}
+bodies:
+  bar: {young: 2e11, poisson: 0.3, plastic: [[2.5e8, 0], [1.25e9, 1]]}
+supports:
+  - {set: bar_xmin, x: 0}
+  - {set: bar_ymin, y: 0}
+  - {set: bar_zmin, z: 0}
+steps:
+  - loads: [{set: bar_xmax, traction: [3e8, 0, 0]}]
+    increments: 2
+  - loads: [{set: bar_xmax, traction: [1e8, 0, 0]}]
+    increments: 2
+    ramp: false
+displacements: small
+YAML
+"$feticon" run "$work/at_once.yaml" -o "$work/at_once" -q --set output.plots=false
+"$feticon" export "$work/at_once.yaml" --format calculix -o "$work/at_once-deck" > /dev/null
+grep -q '^\*STEP, AMPLITUDE=STEP' "$work/at_once-deck/feticon.inp"
+"$feticon" run "$work/at_once-deck/feticon.inp" -o "$work/at_once-from-deck" -q --set output.plots=false 2> /dev/null
+/usr/bin/python3 - "$work/at_once" "$work/at_once-from-deck" "$src/tests/tools" <<'PY'
+import sys
+import numpy
+sys.path.insert(0, sys.argv[3])
+import read_vtu
+for step in range(1, 5):
+    a, b = (read_vtu.point_data(f"{d}/step_{step:03d}.vtu")["displacement"] for d in sys.argv[1:3])
+    difference = numpy.abs(a - b).max() / numpy.abs(a).max()
+    print(f"at once, increment {step}: max u {numpy.abs(a).max():.6e} m, the deck's {difference:.2g} apart")
+    assert difference <= 1e-9, "the deck's step is not the problem file's"
+PY
