@@ -56,7 +56,9 @@ void export_model(const ExportOptions& options)
   {
     // CalculiX's *FRICTION is Coulomb's law; a slip bound independent of the pressure has no
     // keyword there, and writing Coulomb instead would compare two different models.
-    const nonlinear::Friction friction = solver.interaction(problem.contacts[p]).friction;
+    const fem::ContactInteraction interaction = solver.interaction(problem.contacts[p]);
+    deck.node_to_segment.push_back(interaction.formulation == fem::ContactFormulation::node_to_segment);
+    const nonlinear::Friction friction = interaction.friction;
     FETICON_CHECK(friction.model != nonlinear::FrictionModel::tresca,
                   "export: Tresca friction (contact pair " << p
                                                            << ") has no CalculiX equivalent: ccx's *FRICTION is "

@@ -305,7 +305,8 @@ void write_temperatures(std::ostream& out, const fem::Problem& problem, const fe
 }
 
 /// Per contact pair: its two *SURFACEs, a linear pressure-overclosure interaction (with
-/// *FRICTION for Coulomb friction) and the surface-to-surface *CONTACT PAIR.
+/// *FRICTION for Coulomb friction) and the *CONTACT PAIR (node to surface for node-to-segment
+/// rows, else surface to surface).
 void write_contact(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
                    const std::vector<ContactPairFaces>& pairs)
 {
@@ -320,6 +321,9 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
         out << cell + 1 << ", S" << f << '\n';
     }
     const std::string interaction = "SI_" + std::to_string(p + 1);
+    // A node-to-surface pair's LINEAR law has CalculiX's tension sigma_inf (E / 70 000 where the
+    // line gives none): 0 keeps it p = K d, the law feticon solves.
+    const bool node_to_segment = p < options.node_to_segment.size() && options.node_to_segment[p];
     // A pair's own law is written as it is; hard contact as CalculiX's penalty (above).
     const fem::NormalLaw& law = names.interaction.law;
     const double stiffness = law.kind == fem::NormalLawKind::linear ? law.slope : pairs[p].stiffness;
@@ -333,12 +337,13 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
         out << number(pressure) << ", " << number(overclosure) << '\n';
     }
     else
-      out << "LINEAR\n" << number(stiffness) << '\n';
+      out << "LINEAR\n" << number(stiffness) << (node_to_segment ? ", 0.0" : "") << '\n';
     if (options.friction_coefficient > 0)
       out << "** Coulomb friction; the stick slope is the normal slope / " << options.stick_slope_ratio
           << " (src/io/calculix_deck.hpp)\n*FRICTION\n"
           << number(options.friction_coefficient) << ", " << number(stiffness / options.stick_slope_ratio) << '\n';
-    out << "*CONTACT PAIR, INTERACTION=" << interaction << ", TYPE=SURFACE TO SURFACE\n"
+    out << "*CONTACT PAIR, INTERACTION=" << interaction
+        << (node_to_segment ? ", TYPE=NODE TO SURFACE\n" : ", TYPE=SURFACE TO SURFACE\n")
         << deck_name("S_", names.slave) << ", " << deck_name("S_", names.master) << '\n';
   }
 }

@@ -13,8 +13,8 @@
 ///  - tractions as their consistent nodal forces (fem::Problem::external_force) in *CLOAD:
 ///    feticon's tractions are dead loads per reference area, and *CLOAD keeps its direction
 ///    under NLGEOM, whereas *DLOAD pressure would follow the deformed face;
-///  - each contact pair as a surface-to-surface *CONTACT PAIR (slave and master as in
-///    feticon) with a frictionless linear pressure-overclosure *SURFACE INTERACTION of slope
+///  - each contact pair as a surface-to-surface *CONTACT PAIR (node-to-surface where its rows
+///    are node-to-segment; slave and master as in feticon) with a frictionless linear pressure-overclosure *SURFACE INTERACTION of slope
 ///    K = contact_stiffness_factor * E / h (Pa/m), h the shortest slave face edge, E the larger
 ///    Young's modulus of the two bodies: a penalty layer 1/factor of an element thick, so the
 ///    factor, not the mesh, sets its share of the compliance. The default 5 is CalculiX's most
@@ -44,6 +44,7 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace feticon::io
 {
@@ -62,6 +63,9 @@ struct CalculixOptions
   /// constant; 50 sits between. With K = 5 E / h the stick then allows an elastic slip of
   /// tau / lambda = 10 (tau / E) h before sliding, a small fraction of h for stresses far below E.
   double stick_slope_ratio = 50.0;
+  /// Per contact pair, whether its rows are node-to-segment (written TYPE=NODE TO SURFACE, its
+  /// LINEAR law with sigma_inf = 0 so that the law stays p = K d); missing: SURFACE TO SURFACE.
+  std::vector<bool> node_to_segment = {};
 };
 
 /// What the deck holds, for messages and for the deck test.

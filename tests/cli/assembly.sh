@@ -45,6 +45,13 @@ grep -q 'Name="contact_pair"' "$work/yaml/step_001.vtu" || { echo "FAIL: no cont
 [[ $(grep -c '^\*CONTACT PAIR' "$work/deck/feticon.inp") -eq 2 ]] || { echo "FAIL: the deck has not two pairs"; exit 1; }
 "$feticon" run "$work/deck/feticon.inp" -o "$work/deck1" "${quiet[@]}" --set subdomains=6 2> /dev/null
 check "$work/deck1" 2
+# The node-to-segment pair comes back as one (TYPE=NODE TO SURFACE, its law's sigma_inf 0).
+/usr/bin/python3 - "$work/yaml/summary.json" "$work/deck1/summary.json" <<'PY'
+import json, sys
+a, b = ([p["formulation"] for p in json.load(open(f))["contact"]["pairs"]] for f in sys.argv[1:3])
+print(f"formulations: problem file {a}, exported deck {b}")
+assert a == b == ["mortar", "node_to_segment"], "the export changed a pair's formulation"
+PY
 
 # Two ranks: the same iterations and answer as one.
 mpirun --oversubscribe -np 2 "$feticon" run "$work/stack.yaml" -o "$work/np2" "${quiet[@]}"
