@@ -14,9 +14,10 @@ discretizations differ by in both runs.
 Usage: hertz_plastic_profile.py DECK FETICON.frd CALCULIX.frd A P0 [FETICON_ELASTIC.frd CALCULIX_ELASTIC.frd]
 """
 import math
+import os
 import sys
 
-sys.path.insert(0, __import__("os").path.dirname(__file__))
+sys.path.insert(0, os.path.dirname(__file__))
 from calculix_compare import read_frd_last  # noqa: E402
 
 

@@ -36,7 +36,7 @@ void check_temperature(double value, const std::string& what)
                      << " degrees Celsius)");
 }
 
-la::Vector Problem::external_force(size_t step, const std::string& amplitude) const
+la::Vector Problem::external_force(size_t step, const std::string& amplitude, bool reference_loads) const
 {
   FETICON_CHECK(step < steps.size(), "step " << step + 1 << " of " << steps.size());
   const Step& s = steps[step];
@@ -53,7 +53,7 @@ la::Vector Problem::external_force(size_t step, const std::string& amplitude) co
   for (const BodyLoad& b : s.body_loads)
     if (b.amplitude == amplitude)
       add_body_load(mesh, materials, b, f);
-  if (!s.reference_loads.empty())
+  if (reference_loads && !s.reference_loads.empty())
   {
     const std::vector<ReferenceDofs> reference = reference_dofs();
     for (const ReferenceValue& load : s.reference_loads)

@@ -118,8 +118,10 @@ struct Problem
   std::array<bool, 3> eliminated{false, false, false};
 
   /// Consistent nodal forces (3 per node) of the loads of step `step` (0-based) whose
-  /// amplitude is `amplitude` (empty: those without one), at their full values.
-  la::Vector external_force(size_t step = 0, const std::string& amplitude = {}) const;
+  /// amplitude is `amplitude` (empty: those without one), at their full values; the loads on
+  /// reference nodes as their nodal forces unless `reference_loads` is false (a deck writes
+  /// them on the reference node).
+  la::Vector external_force(size_t step = 0, const std::string& amplitude = {}, bool reference_loads = true) const;
   /// The DOFs step `step` prescribes, with the eliminated components, and the values of the
   /// supports whose amplitude is `amplitude` (0 for the others).
   ConstrainedDofs all_constrained_dofs(size_t step = 0, const std::string& amplitude = {}) const;

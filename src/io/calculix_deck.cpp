@@ -455,30 +455,19 @@ void write_step_start(std::ostream& out, const fem::Step& step, const CalculixOp
   out << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
 }
 
-/// The *CLOAD lines of `force` (3 per node, global components; a node with a frame in its local
-/// ones, write_frames) and of the loads on reference nodes in step `step` (fem::Problem's
-/// external force holds their nodal forces, which are left out here: the deck loads the reference
-/// node), its totals counted in `summary`.
-void write_cloads(std::ostream& out, const fem::Problem& problem, la::Vector force, size_t step,
-                  CalculixDeckSummary& summary)
+/// The *CLOAD lines of step `step`'s loads (0-based): the loads on reference nodes on them
+/// (write_couplings), the others as their nodal forces (3 per node, global components; a node
+/// with a frame in its local ones, write_frames); their totals counted in `summary`.
+void write_cloads(std::ostream& out, const fem::Problem& problem, size_t step, CalculixDeckSummary& summary)
 {
-  if (!problem.steps[step].reference_loads.empty())
+  for (const fem::ReferenceValue& load : problem.steps[step].reference_loads)
   {
-    // What the subtraction leaves of the reference loads' nodal forces is round-off, no load.
-    const double round_off = 1e-13 * force.lpNorm<Eigen::Infinity>();
-    const std::vector<fem::ReferenceDofs> reference = problem.reference_dofs();
-    for (const fem::ReferenceValue& load : problem.steps[step].reference_loads)
-    {
-      const fem::DofCombination& unit = reference[static_cast<size_t>(load.coupling)].unit_load[load.dof];
-      for (size_t k = 0; k < unit.dofs.size(); ++k)
-        force(unit.dofs[k]) -= load.value * unit.coefficients[k];
-      out << problem.mesh.n_nodes() + load.coupling + 1 << ", " << load.dof + 1 << ", " << number(load.value) << '\n';
-      if (load.dof < 3)
-        summary.total_load[load.dof] += load.value;
-      ++summary.n_cloads;
-    }
-    force = force.unaryExpr([round_off](double f) { return std::abs(f) <= round_off ? 0.0 : f; });
+    out << problem.mesh.n_nodes() + load.coupling + 1 << ", " << load.dof + 1 << ", " << number(load.value) << '\n';
+    if (load.dof < 3)
+      summary.total_load[load.dof] += load.value;
+    ++summary.n_cloads;
   }
+  const la::Vector force = problem.external_force(step, {}, false);
   for (int32_t n = 0; n < problem.mesh.n_nodes(); ++n)
   {
     const Eigen::Vector3d global = force.segment<3>(3 * la::Index{n});
@@ -516,7 +505,7 @@ void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOp
   for (const fem::ReferenceValue& r : problem.steps.front().reference_supports)
     out << mesh.n_nodes() + r.coupling + 1 << ", " << r.dof + 1 << ", " << r.dof + 1 << ", " << number(r.value) << '\n';
   out << "*CLOAD\n";
-  write_cloads(out, problem, problem.external_force(), 0, summary);
+  write_cloads(out, problem, 0, summary);
 }
 /// The deck's node, component and value of held DOF `dof` = `value`: a node with a frame is
 /// held in its local components (write_frames), whether the history numbers the DOF as local or,
@@ -585,10 +574,9 @@ void write_later_step(std::ostream& out, const fem::Problem& problem, const fem:
       out << node + 1 << ", " << component + 1 << ", " << component + 1 << ", " << number(value) << '\n';
     }
   }
-  const la::Vector force = history.external_force(end);
   out << "*CLOAD, OP=NEW\n";
   std::fill(std::begin(summary.total_load), std::end(summary.total_load), 0.0);
-  write_cloads(out, problem, force, static_cast<size_t>(stage - 1), summary);
+  write_cloads(out, problem, static_cast<size_t>(stage - 1), summary);
 }
 } // namespace
 

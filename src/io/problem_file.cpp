@@ -60,36 +60,36 @@ fem::Hyperelastic hyperelastic_law(const YAML::Node& node, const std::string& ke
 /// The material properties at `key` (materials.NAME, or a body's or section's own): young and
 /// poisson, or a hyperelastic law, and the optional density, expansion and plastic table.
 /// `other_keys` are the keys beside them (a section's cells).
-fem::Material material_properties(const YAML::Node& body, const std::string& key, const ProblemReader& r,
+fem::Material material_properties(const YAML::Node& entry, const std::string& key, const ProblemReader& r,
                                   std::set<std::string> other_keys = {})
 {
   other_keys.insert({"young", "poisson", "density", "expansion", "plastic", "hardening", "hyperelastic"});
-  r.only_keys(body, key, other_keys);
+  r.only_keys(entry, key, other_keys);
   fem::Material m;
-  if (body["hyperelastic"])
+  if (entry["hyperelastic"])
   {
-    FETICON_CHECK(!body["young"] && !body["poisson"],
+    FETICON_CHECK(!entry["young"] && !entry["poisson"],
                   r.source << ": " << key << " gives young / poisson and a hyperelastic law: one or the other");
-    m.set_hyperelastic(hyperelastic_law(body["hyperelastic"], key + ".hyperelastic", r));
+    m.set_hyperelastic(hyperelastic_law(entry["hyperelastic"], key + ".hyperelastic", r));
   }
   else
   {
-    m.young = r.number(body["young"], key + ".young");
-    m.poisson = r.number(body["poisson"], key + ".poisson");
+    m.young = r.number(entry["young"], key + ".young");
+    m.poisson = r.number(entry["poisson"], key + ".poisson");
   }
-  if (body["density"])
-    m.density = r.number(body["density"], key + ".density");
-  if (body["expansion"])
-    m.expansion = r.number(body["expansion"], key + ".expansion");
-  if (body["plastic"])
-    m.plastic = yield_curve(body["plastic"], key + ".plastic", r);
-  if (body["hardening"])
+  if (entry["density"])
+    m.density = r.number(entry["density"], key + ".density");
+  if (entry["expansion"])
+    m.expansion = r.number(entry["expansion"], key + ".expansion");
+  if (entry["plastic"])
+    m.plastic = yield_curve(entry["plastic"], key + ".plastic", r);
+  if (entry["hardening"])
   {
     // CalculiX's HARDENING=: the table grows the yield surface or moves it (fem/yield_curve.hpp).
-    const std::string hardening = r.text(body["hardening"], key + ".hardening");
+    const std::string hardening = r.text(entry["hardening"], key + ".hardening");
     FETICON_CHECK(hardening == "isotropic" || hardening == "kinematic",
                   r.source << ": " << key << ".hardening: '" << hardening << "' is not isotropic or kinematic");
-    FETICON_CHECK(body["plastic"], r.source << ": " << key << ".hardening needs a plastic: table");
+    FETICON_CHECK(entry["plastic"], r.source << ": " << key << ".hardening needs a plastic: table");
     m.plastic.kinematic = hardening == "kinematic";
   }
   m.check(r.source + ": " + key);

@@ -217,7 +217,7 @@ check "$work/strip" "c['displacement'][1] / 5.333333e-4 - 1" 1e-6 "plane strain 
 # kinematic coupling loads by a force and a moment and whose side a distributing coupling loads
 # by a force and a moment, then in a second step the end's reference translation and rotation
 # held. The exported deck's run gives the problem file's reference motions and forces to 1e-9
-# (the same model: measured 1e-13 at qp.rtol 1e-12), and CalculiX 2.20's printed U of the end's
+# (the same model: measured 0 apart at qp.rtol 1e-12), and CalculiX 2.20's printed U of the end's
 # reference node on that deck agrees with feticon's to 1e-5 of its largest component (its six
 # digits).
 cat > "$work/exported.yaml" <<'YAML'
