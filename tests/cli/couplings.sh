@@ -23,6 +23,7 @@
 #    holding the end face's reference translation at 1e-3 m transmits E A u / L = 1e5 N to 1e-6
 #    (measured 3e-8); a distributing force F gives the end face F L / (E A) to 1e-6.
 #  - Bad input, one line each: *COUPLING without *KINEMATIC or *DISTRIBUTING, an unknown surface,
+#    a node surface of no element's node,
 #    a ROT NODE that an element uses, a node that is the reference node of two couplings, a moment
 #    on a solid node, a moment a *KINEMATIC coupling of one direction cannot carry, a *DISTRIBUTING
 #    COUPLING set without a DCOUP3D element, ORIENTATION=; in problem files an unknown coupling or
@@ -283,6 +284,9 @@ sed -e '/^\*KINEMATIC/,+1d' "$base" > "$work/no_kinematic.inp"
 bad no_kinematic.inp "needs its \*KINEMATIC or \*DISTRIBUTING next"
 sed -e 's/SURFACE=TIP,/SURFACE=NOSUCH,/' "$base" > "$work/unknown_surface.inp"
 bad unknown_surface.inp "SURFACE=NOSUCH names no \*SURFACE"
+sed -e 's/SURFACE=TIP,/SURFACE=LONELY,/' -e 's/^\*SURFACE, NAME=TIP, TYPE=ELEMENT$/*SURFACE, NAME=LONELY, TYPE=NODE\n10000\n&/' \
+  "$base" > "$work/lonely_node_surface.inp"
+bad lonely_node_surface.inp "\*SURFACE LONELY has no faces"
 sed -e 's/ROT NODE=10001/ROT NODE=1/' "$work/rigid-moment.inp" > "$work/rot_node_in_cell.inp"
 bad rot_node_in_cell.inp "ROT NODE 1 belongs to an element"
 sed -e '/^\*KINEMATIC/{n;s/$/\n*COUPLING, REF NODE=10000, SURFACE=TIP\n*KINEMATIC\n1, 3/}' "$base" > "$work/two_references.inp"
