@@ -148,7 +148,7 @@ fem::CellPointResults rule_point_results(const mesh::Mesh& mesh, int32_t c, cons
     return out;
   }
   return fem::cell_point_results(type, X, u, material, kinematics, integration_of(mesh, c), c, temperature_change,
-                                 states, mesh.planar);
+                                 states, mesh.planar_of_cell(c));
 }
 
 /// Whether every cell has the .dat's points (dat_points).
@@ -353,10 +353,10 @@ void CalculixResults::add_step(const nonlinear::ContactSolution& solution)
       }
     }
   }
-  // CalculiX's .dat prints the reactions of an axisymmetric model for the 2-degree wedge it
-  // expands CAX cells into, 1/180 of the full circle (its .frd, its *CLOAD and feticon's other
+  // CalculiX's .dat prints a model with CAX cells per 2-degree wedge, 1/180 of the full circle
+  // (plane sections' thickness too, solidsections.f; its .frd, its *CLOAD and feticon's other
   // outputs are per full circle): the .dat's lines then compare with CalculiX's.
-  if (mesh.planar.kind == mesh::PlanarKind::axisymmetric)
+  if (mesh.any_axisymmetric())
     rf_dat /= 180.0;
   // The .frd always holds U, S and the contact (what feticon's VTU holds), RF if a request asks.
   std::vector<std::string> frd_warnings;

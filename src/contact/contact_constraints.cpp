@@ -386,6 +386,15 @@ ContactConstraints build_node_to_segment_constraints(const mesh::Mesh& mesh, con
   };
 
   const SlaveNodalAreas areas = slave_nodal_areas(mesh, u, pair.slave);
+  // CalculiX gives a node of a node surface the area of the faces it is a corner of, and a node
+  // that is a corner of none (an edge node of quadratic faces; every node of a 2D model, which
+  // it expands into 3D cells with the node in their mid-plane) the master face's
+  // (fem::NormalLaw::on_master_face): the rows of such nodes carry it.
+  std::vector<char> corner(static_cast<size_t>(mesh.n_nodes()), 0);
+  if (mesh.planar.kind == mesh::PlanarKind::none)
+    for (const mesh::Face& face : mesh.face_set(pair.slave))
+      for (int a = 0; a < face.n_corners(); ++a)
+        corner[face[a]] = 1;
   ContactRowBuilder rows;
   std::vector<std::pair<int32_t, double>> weights;
   for (size_t i = 0; i < slave_nodes.size(); ++i)
@@ -399,7 +408,9 @@ ContactConstraints build_node_to_segment_constraints(const mesh::Mesh& mesh, con
     weights.resize(face.size());
     for (int a = 0; a < face.size(); ++a)
       weights[a] = {face[a], shape(a)};
-    rows.add({s, closest->normal, closest->gap, areas.of(s), closest->face, closest->xi, closest->kind}, weights);
+    rows.add({s, closest->normal, closest->gap, areas.of(s), closest->face, closest->xi, closest->kind, 1, 0,
+              corner[s] ? 0.0 : face_area_estimate(geometries[closest->face], closest->xi)},
+             weights);
   }
   rows.finish(n_dofs, out);
   return out;

@@ -176,6 +176,11 @@ struct ContactConstraints
   /// faces in mortar, 1 - 2 alpha: their rows put the rest on their edge's corners
   /// (mortar_face_integration.hpp).
   std::vector<double> master_share;
+  /// Node-to-segment rows of a slave node that is a corner of no slave face (an edge node of
+  /// quadratic faces, any node of a 2D model): the master face's area at the closest point
+  /// (face_area_estimate), the area of a law that acts on it (fem::NormalLaw::on_master_face);
+  /// 0 for other rows and mortar rows.
+  std::vector<double> master_face_area;
   /// How the rows were made: mortar rows' force over slave_area is the nodal pressure of the
   /// dual traction at every node, quadratic faces included.
   ContactFormulation formulation = ContactFormulation::node_to_segment;

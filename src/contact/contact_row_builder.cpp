@@ -16,6 +16,7 @@ void ContactRowBuilder::append_fields(const ContactRowFields& fields, double nor
   _out.kind.push_back(fields.kind);
   _out.master_share.push_back(fields.master_share);
   _out.pair.push_back(fields.pair);
+  _out.master_face_area.push_back(fields.master_face_area);
 }
 
 void ContactRowBuilder::add(const ContactRowFields& fields,
@@ -45,7 +46,7 @@ void ContactRowBuilder::copy(const ContactConstraints& from, la::Index i, double
   for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(from.B, i); it; ++it)
     _triplets.emplace_back(row, static_cast<int>(it.col()), it.value());
   append_fields({from.slave_node[i], from.normal[i], gap, from.slave_area[i], from.master_face[i], from.xi[i],
-                 from.kind[i], from.master_share[i], pair},
+                 from.kind[i], from.master_share[i], pair, from.master_face_area[i]},
                 from.row_norm[i]);
 }
 
@@ -68,6 +69,7 @@ void ContactRowBuilder::finish(la::Index n_dofs, ContactConstraints& into)
   into.xi = std::move(_out.xi);
   into.kind = std::move(_out.kind);
   into.master_share = std::move(_out.master_share);
+  into.master_face_area = std::move(_out.master_face_area);
   into.pair = std::move(_out.pair);
   _out = {};
   _triplets.clear();

@@ -24,8 +24,9 @@ struct ContactRowFields
   int32_t master_face = 0;
   Eigen::Vector2d xi = Eigen::Vector2d::Zero();
   ProjectionKind kind = ProjectionKind::face;
-  double master_share = 1; ///< ContactConstraints::master_share
-  int32_t pair = 0;        ///< ContactConstraints::pair
+  double master_share = 1;     ///< ContactConstraints::master_share
+  int32_t pair = 0;            ///< ContactConstraints::pair
+  double master_face_area = 0; ///< ContactConstraints::master_face_area
 };
 
 class ContactRowBuilder

@@ -70,7 +70,7 @@ FaceGeometry current_face_geometry(const mesh::Mesh& mesh, const la::Vector& u, 
 {
   FaceGeometry out;
   out.kind = face.kind;
-  out.planar = mesh.planar;
+  out.planar = mesh.planar_of_node(face[0]);
   out.x.resize(face.size(), 3);
   for (int a = 0; a < face.size(); ++a)
   {
@@ -132,6 +132,15 @@ Eigen::Vector3d face_normal(const FaceGeometry& face, const Eigen::Vector2d& xi)
   const Eigen::Vector3d cross = t.col(0).cross(t.col(1));
   const double length = cross.norm();
   return length > 0 ? Eigen::Vector3d(cross / length) : Eigen::Vector3d::Zero();
+}
+
+double face_area_estimate(const FaceGeometry& face, const Eigen::Vector2d& xi)
+{
+  const Eigen::Matrix<double, 3, 2> t = tangents(face, xi);
+  if (mesh::is_line(face.kind))
+    return 2 * t.col(0).norm() * face.planar.measure(face_point(face, xi));
+  const double dm = t.col(0).cross(t.col(1)).norm();
+  return mesh::face_corners(face.kind) == 3 ? dm / 2 : 4 * dm;
 }
 
 double face_diagonal(const QuadCoordinates& quad)

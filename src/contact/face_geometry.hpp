@@ -73,6 +73,12 @@ double face_size(const FaceGeometry& face);
 /// shares; `inside` means outside_distance <= options.inside_tolerance).
 QuadProjection project_to_face(const FaceGeometry& face, const Eigen::Vector3d& point,
                                const ProjectionOptions& options = {});
+/// The master face's area as CalculiX's node-to-face springs estimate it for a slave node
+/// without an area (springforc_n2f.f) from dm = |x_,xi x x_,eta| at the closest point xi: 4 dm
+/// on a quadrilateral, dm / 2 on a triangle (the area of a parallelogram or a flat triangle);
+/// an edge's 2 |x_,xi| times the out-of-plane measure (its quadrilateral face in CalculiX's 3D
+/// expansion). CalculiX takes 4 dm on a tri6 face too, 8 times its area: not followed.
+double face_area_estimate(const FaceGeometry& face, const Eigen::Vector2d& xi);
 /// Lumped slave nodal areas of the face's nodes (m^2), positive (see file comment).
 Eigen::VectorXd face_lumped_areas(const FaceGeometry& face);
 } // namespace feticon::contact

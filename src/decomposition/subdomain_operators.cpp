@@ -7,6 +7,7 @@
 #include "decomposition/rigid_body_modes.hpp"
 #include "la/submatrix.hpp"
 
+#include <algorithm>
 #include <numeric>
 
 namespace feticon::decomposition
@@ -58,7 +59,13 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
     if (assembler.kinematics() == fem::Kinematics::total_lagrangian)
       for (int32_t n = 0; n < sub.domain.n_nodes(); ++n)
         x.row(n) += u_full.segment<3>(3 * n).transpose();
-    op.R = rigid_body_modes(x, sub.full_of_active, assembler.mesh().planar.kind == mesh::PlanarKind::axisymmetric);
+    // A subdomain with an axisymmetric cell keeps the axial translation only (a plane body
+    // glued to it moves with it).
+    const mesh::Mesh& mesh = assembler.mesh();
+    const bool axisymmetric = mesh.any_axisymmetric() && std::ranges::any_of(sub.domain.cells, [&](int32_t c) {
+                                return mesh.planar_of_cell(c).kind == mesh::PlanarKind::axisymmetric;
+                              });
+    op.R = rigid_body_modes(x, sub.full_of_active, axisymmetric);
     for (int32_t node : choose_fixing_nodes(x))
       for (int i = 0; i < 3; ++i)
         if (sub.active_of_full[3 * node + i] >= 0)

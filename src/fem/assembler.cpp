@@ -273,7 +273,7 @@ void Assembler::assemble_cells(const la::Vector& u, StiffnessKind kind, la::Spar
       plastic.updated = std::span<PlasticPointState>(*updated).subspan(static_cast<size_t>(_plastic_offset[k]),
                                                                        plastic.committed.size());
     cell_element(type, X_any, u_any, material, _kinematics, element_kind, integration, fe_any, &Ke_any, c,
-                 thermal ? &dT_any : nullptr, &plastic, _mesh.planar);
+                 thermal ? &dT_any : nullptr, &plastic, _mesh.planar_of_cell(c));
     add_cell(local, fe_any, Ke_any, f_int, K);
   }
 }

@@ -63,9 +63,9 @@ void add_cell(const mesh::Mesh& mesh, double rho, const BodyLoad& load, size_t c
     const Eigen::MatrixX3d dN = shape_gradients(kind, rule.points[q]);
     const Eigen::Vector3d x = X.transpose() * N;
     // A 2D cell's volume is its area times the out-of-plane measure (thickness, 2 pi r).
-    const double det = mesh::is_planar(kind)
-        ? (X.leftCols<2>().transpose() * dN.leftCols<2>()).determinant() * mesh.planar.measure(x)
-        : (X.transpose() * dN).determinant();
+    const double det = mesh::is_planar(kind) ? (X.leftCols<2>().transpose() * dN.leftCols<2>()).determinant() *
+            mesh.planar_of_cell(static_cast<int32_t>(c)).measure(x)
+                                             : (X.transpose() * dN).determinant();
     const Eigen::Vector3d b = rho * rule.weights[q] * std::abs(det) * acceleration(load, x);
     for (Eigen::Index a = 0; a < n; ++a)
       f.segment<3>(3 * static_cast<la::Index>(nodes[a])) += N[a] * b;

@@ -65,6 +65,12 @@ struct NormalLaw
   /// tabular: (overclosure m, pressure Pa) in increasing overclosure, the pressure constant
   /// beyond both ends (CalculiX)
   std::vector<std::pair<double, double>> table = {};
+  /// At a slave node that is a corner of no face, the pressure acts on the master face's area
+  /// at its closest point, not on the slave node's area: CalculiX's node-to-face springs on a
+  /// node surface (TYPE=NODE), which give a node the area of the faces it is a corner of
+  /// (tiefaccont.f), and one without any the master face's (springforc_n2f.f): the edge nodes
+  /// of quadratic faces, every node of a 2D model (contact::ContactConstraints::master_face_area).
+  bool on_master_face = false;
   bool operator==(const NormalLaw&) const = default;
 
   /// The law's tangent line at overclosure d, p ~ stiffness (d' - zero_overclosure) near d:

@@ -31,7 +31,7 @@ void integrate_face(const mesh::Mesh& mesh, const mesh::Face& face, Visit&& visi
       // The edge of a 2D cell is swept through the out-of-plane measure (thickness, 2 pi r):
       // x_,eta = measure e_z, so dA = |x_,xi| measure and the normal x_,xi x e_z is outward.
       if (mesh::is_line(face.kind))
-        deta = mesh.planar.measure(x) * Eigen::Vector3d::UnitZ();
+        deta = mesh.planar_of_node(face[0]).measure(x) * Eigen::Vector3d::UnitZ();
       const Eigen::Vector3d normal = dxi.cross(deta);
       const double dA = normal.norm();
       FETICON_CHECK(dA > 0,

@@ -201,23 +201,40 @@ void Problem::validate_planar() const
   FETICON_CHECK(eliminated == (std::array<bool, 3>{false, false, true}),
                 "problem '" << name << "': a " << mesh::planar_name(mesh.planar.kind)
                             << " model has u_z eliminated, and only u_z");
-  FETICON_CHECK(std::isfinite(mesh.planar.thickness) && mesh.planar.thickness > 0,
-                "problem '" << name << "': thickness " << mesh.planar.thickness << " m is not positive");
+  FETICON_CHECK(
+      mesh.body_planar.empty() ||
+          (std::ssize(mesh.body_planar) == mesh.n_bodies() && std::ssize(mesh.planar_body_of_node) == mesh.n_nodes()),
+      "problem '" << name << "': formulations for " << mesh.body_planar.size() << " bodies and "
+                  << mesh.planar_body_of_node.size() << " nodes, the mesh has " << mesh.n_bodies() << " and "
+                  << mesh.n_nodes());
+  for (int32_t b = 0; b < mesh.n_bodies(); ++b)
+  {
+    const mesh::Planar& planar = mesh.planar_of_body(b);
+    FETICON_CHECK(planar.kind != mesh::PlanarKind::none,
+                  "problem '" << name << "': body '" << mesh.body_names[b] << "' has no 2D formulation in a 2D model");
+    FETICON_CHECK(std::isfinite(planar.thickness) && planar.thickness > 0,
+                  "problem '" << name << "': body '" << mesh.body_names[b] << "': thickness " << planar.thickness
+                              << " m is not positive");
+    FETICON_CHECK(planar.kind != mesh::PlanarKind::plane_stress || b >= std::ssize(materials) ||
+                      materials[b].is_st_venant_kirchhoff(),
+                  "problem '" << name << "': body '" << mesh.body_names[b] << "' is "
+                              << (materials[b].is_plastic() ? "plastic: plasticity" : "hyperelastic: hyperelasticity")
+                              << " in plane stress is not implemented (plane strain and axisymmetry are)");
+  }
+  std::vector<char> axisymmetric_node(static_cast<size_t>(mesh.n_nodes()), 0);
+  for (int32_t c = 0; c < mesh.n_cells(); ++c)
+    if (mesh.planar_of_cell(c).kind == mesh::PlanarKind::axisymmetric)
+      for (const int32_t n : mesh.cells[c])
+        axisymmetric_node[n] = 1;
   for (int32_t n = 0; n < mesh.n_nodes(); ++n)
   {
     FETICON_CHECK(mesh.nodes(n, 2) == 0,
                   "problem '" << name << "': node " << n << " of a 2D model lies at z = " << mesh.nodes(n, 2)
                               << ", not in the x-y plane");
-    FETICON_CHECK(mesh.planar.kind != mesh::PlanarKind::axisymmetric || mesh.nodes(n, 0) >= 0,
+    FETICON_CHECK(!axisymmetric_node[n] || mesh.nodes(n, 0) >= 0,
                   "problem '" << name << "': node " << n
-                              << " of an axisymmetric model lies at r = x = " << mesh.nodes(n, 0) << " < 0");
+                              << " of an axisymmetric cell lies at r = x = " << mesh.nodes(n, 0) << " < 0");
   }
-  if (mesh.planar.kind == mesh::PlanarKind::plane_stress)
-    for (size_t b = 0; b < materials.size(); ++b)
-      FETICON_CHECK(materials[b].is_st_venant_kirchhoff(),
-                    "problem '" << name << "': body '" << mesh.body_names[b] << "' is "
-                                << (materials[b].is_plastic() ? "plastic: plasticity" : "hyperelastic: hyperelasticity")
-                                << " in plane stress is not implemented (plane strain and axisymmetry are)");
 }
 
 void Problem::validate_couplings() const
@@ -225,7 +242,7 @@ void Problem::validate_couplings() const
   if (couplings.empty())
     return;
   for (const Coupling& c : couplings)
-    FETICON_CHECK(mesh.planar.kind != mesh::PlanarKind::axisymmetric || c.kind == CouplingKind::pretension,
+    FETICON_CHECK(!mesh.any_axisymmetric() || c.kind == CouplingKind::pretension,
                   "problem '" << name << "': " << c.name
                               << ": couplings in an axisymmetric model are not implemented (pretension sections are)");
   const std::vector<ReferenceDofs> reference = reference_dofs(); // checks the sets and weights

@@ -36,7 +36,7 @@ std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& 
       }
       stresses[c] = cell_cauchy_stress(type, X_any, u_any, body_materials[mesh.cell_body[c]], kinematics, c,
                                        mesh.reduced(c) ? Integration::reduced : Integration::full,
-                                       thermal ? &dT_any : nullptr, states, mesh.planar);
+                                       thermal ? &dT_any : nullptr, states, mesh.planar_of_cell(c));
       continue;
     }
     for (int a = 0; a < 8; ++a)

@@ -222,7 +222,7 @@ void write_mesh(std::ostream& out, const fem::Problem& problem, const Coordinate
           if (mesh.cell_body[c] == b && mesh.cells.kind(c) == kind && mesh.reduced(c) == reduced)
           {
             if (!any)
-              out << "*ELEMENT, TYPE=" << calculix_element_name(kind, reduced, mesh.planar.kind)
+              out << "*ELEMENT, TYPE=" << calculix_element_name(kind, reduced, mesh.planar_of_body(b).kind)
                   << ", ELSET=" << deck_name("B_", mesh.body_names[b]) << '\n';
             any = true;
             out << c + 1;
@@ -274,8 +274,9 @@ void write_materials(std::ostream& out, const fem::Problem& problem)
     }
     out << "*SOLID SECTION, ELSET=" << deck_name("B_", mesh.body_names[b])
         << ", MATERIAL=" << deck_name("M_", mesh.body_names[b]) << '\n';
-    if (mesh.planar.kind == mesh::PlanarKind::plane_strain || mesh.planar.kind == mesh::PlanarKind::plane_stress)
-      out << number(mesh.planar.thickness) << '\n';
+    if (const mesh::Planar& planar = mesh.planar_of_body(b);
+        planar.kind == mesh::PlanarKind::plane_strain || planar.kind == mesh::PlanarKind::plane_stress)
+      out << number(planar.thickness) << '\n';
   }
 }
 

@@ -257,9 +257,11 @@ struct DeckData
   std::string first_material; ///< the name of the deck's first *MATERIAL (CalculiX's default K)
   std::vector<DeckSection> sections;
   /// The formulation of the 2D cells (CPE*: plane strain, CPS*: plane stress, CAX*:
-  /// axisymmetric); none if the cells are 3D. Where the first cell block set it.
+  /// axisymmetric) of the first cell block; none if the cells are 3D.
   mesh::PlanarKind planar = mesh::PlanarKind::none;
   DeckPosition first_cells;
+  /// Per cell, its element type's formulation (2D decks may mix them as CalculiX allows).
+  std::vector<mesh::PlanarKind> cell_planar;
   std::set<std::string> interactions;
   std::map<std::string, DeckFriction> frictions; ///< by interaction name
   std::vector<DeckContactPair> pairs;

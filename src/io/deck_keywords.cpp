@@ -590,7 +590,7 @@ private:
       _data.warn("element type " + type + " (" + _keyword.where.str() + ") is solved as " + type.substr(0, 4) +
                  " (full 2x2 integration, not reduced with hourglass control)");
     outside_parts_check();
-    planar_formulation(type, *cell_type);
+    const mesh::PlanarKind planar = planar_formulation(type, *cell_type);
     // 2x2x2 (C3D20R) or 2x2 (CPE8R, CPS8R, CAX8R) Gauss points, as CalculiX.
     const char reduced = type == "C3D20R" || (cell_type->kind == mesh::CellKind::quad8 && type.back() == 'R') ? 1 : 0;
     const size_t n_nodes = static_cast<size_t>(cell_type->n_nodes);
@@ -629,6 +629,7 @@ private:
         fail_at(start, "element " + std::to_string(label - _scope.element_offset) + " is defined twice");
       _data.cells.add(cell_type->kind, nodes_of_element);
       _data.reduced_integration.push_back(reduced);
+      _data.cell_planar.push_back(planar);
       _data.element_labels.push_back(static_cast<int32_t>(label));
       _largest_element_label = std::max(_largest_element_label, label);
       if (set)
@@ -663,8 +664,9 @@ private:
   }
 
   /// The 2D formulation an element type names (CPE: plane strain, CPS: plane stress, CAX:
-  /// axisymmetric): one per deck, and no 3D cells beside 2D ones.
-  void planar_formulation(const std::string& type, const mesh::CellType& cell_type)
+  /// axisymmetric; none for 3D cells). 2D formulations mix in one deck (CalculiX expands each
+  /// into 3D cells; mesh::Mesh::body_planar), 2D and 3D cells do not.
+  mesh::PlanarKind planar_formulation(const std::string& type, const mesh::CellType& cell_type)
   {
     mesh::PlanarKind kind = mesh::PlanarKind::none;
     if (cell_type.dimension == 2)
@@ -675,15 +677,12 @@ private:
     {
       _data.planar = kind;
       _data.first_cells = _keyword.where;
-      return;
     }
-    if (kind != _data.planar)
+    else if ((kind == mesh::PlanarKind::none) != (_data.planar == mesh::PlanarKind::none))
       throw Error(where() + ": " + type + " elements (" + std::string(mesh::planar_name(kind)) + ") in a " +
                   std::string(mesh::planar_name(_data.planar)) + " model (its first elements at " +
-                  _data.first_cells.str() + "): one formulation per model" +
-                  (kind == mesh::PlanarKind::none || _data.planar == mesh::PlanarKind::none
-                       ? ", 2D and 3D cells do not mix"
-                       : ""));
+                  _data.first_cells.str() + "): 2D and 3D cells do not mix");
+    return kind;
   }
 
   /// *NSET and *ELSET: numbers, names of sets of the same kind, or GENERATE triples.

@@ -330,24 +330,29 @@ private:
                 _d.sections[earlier].where.str() + " another material; the later section holds, as in CalculiX");
     }
 
-    planar_section();
-    // A body is the cells of one material in one connected set of cells: a connected set of
-    // several materials is several bodies that share the nodes of their interfaces (glued
-    // there as subdomains are).
+    // A body is the cells of one material and one 2D formulation (kind and thickness) in one
+    // connected set of cells: a connected set of several is several bodies that share the
+    // nodes of their interfaces (glued there as subdomains are).
     std::map<std::string, int64_t> material_index;
     for (const auto& [name, material] : _d.materials)
       material_index.emplace(name, static_cast<int64_t>(material_index.size()));
-    std::unordered_map<int64_t, int32_t> body_of_part; // component root x materials + material
+    std::vector<mesh::Planar> formulations;
+    std::vector<int32_t> formulation_of_body;
+    std::map<std::tuple<int32_t, int64_t, int32_t>, int32_t> body_of_part; // (component root, material, formulation)
     std::vector<int32_t> body_section;
     for (int32_t c = 0; c < mesh.n_cells(); ++c)
     {
       const int32_t section = section_of_cell[c];
       FETICON_CHECK(section >= 0, "element " << _deck.element_labels[c] << " has no *SOLID SECTION (no material)");
-      const int64_t part = static_cast<int64_t>(components.find(mesh.cells[c][0])) * std::ssize(material_index) +
-          material_index.at(_d.sections[section].material);
+      const int32_t formulation = cell_formulation(c, _d.sections[section], formulations);
+      const auto part =
+          std::tuple(components.find(mesh.cells[c][0]), material_index.at(_d.sections[section].material), formulation);
       const auto [it, added] = body_of_part.emplace(part, static_cast<int32_t>(body_section.size()));
       if (added)
+      {
         body_section.push_back(section);
+        formulation_of_body.push_back(formulation);
+      }
       const int32_t body = it->second;
       mesh.cell_body[c] = body; // section_of_cell[c] is read above, not after
       // body_section holds -1 - s once the body spans several sections (s its first).
@@ -366,35 +371,48 @@ private:
     }
     for (size_t b = 0; b < names.size(); ++b)
       mesh.body_names.push_back(uses[names[b]] > 1 ? names[b] + "_" + std::to_string(b + 1) : names[b]);
+    planar_bodies(formulations, formulation_of_body);
   }
 
-  /// The 2D formulation of the cells and the thickness of their sections (CalculiX's default
-  /// 1 where a section gives none); feticon takes one thickness per model.
-  void planar_section()
+  /// The index in `formulations` of cell c's 2D formulation: its element type's kind and, in
+  /// plane strain and plane stress, its section's thickness (CalculiX's default 1 where the
+  /// section gives none); the 3D formulation for 3D cells.
+  int32_t cell_formulation(int32_t c, const DeckSection& section, std::vector<mesh::Planar>& formulations) const
   {
-    mesh::Planar& planar = _p.mesh.planar;
-    planar.kind = _d.planar;
-    if (planar.kind == mesh::PlanarKind::axisymmetric)
-      for (int32_t n = 0; n < _p.mesh.n_nodes(); ++n)
-        FETICON_CHECK(_p.mesh.nodes(n, 0) >= 0,
-                      "node " << _deck.node_labels[n] << " of a CAX element lies at r = x = " << _p.mesh.nodes(n, 0)
-                              << " < 0 (" << _d.first_cells.str() << "): an axisymmetric model lies at x >= 0");
-    if (planar.kind != mesh::PlanarKind::plane_strain && planar.kind != mesh::PlanarKind::plane_stress)
-      return;
-    const DeckSection* first = nullptr;
-    for (const DeckSection& section : _d.sections)
+    mesh::Planar planar{_d.cell_planar[static_cast<size_t>(c)], 1.0};
+    if (planar.kind == mesh::PlanarKind::plane_strain || planar.kind == mesh::PlanarKind::plane_stress)
+      planar.thickness = section.thickness > 0 ? section.thickness : 1.0;
+    const auto found = std::ranges::find(formulations, planar);
+    if (found != formulations.end())
+      return static_cast<int32_t>(found - formulations.begin());
+    formulations.push_back(planar);
+    return static_cast<int32_t>(formulations.size() - 1);
+  }
+
+  /// The bodies' 2D formulations: one for the model where all bodies have the same, else one per
+  /// body (mesh::Mesh::body_planar; a plane section's thickness beside CAX cells is per full
+  /// circle, as CalculiX's solidsections.f has it).
+  void planar_bodies(const std::vector<mesh::Planar>& formulations, const std::vector<int32_t>& formulation_of_body)
+  {
+    mesh::Mesh& mesh = _p.mesh;
+    if (std::ranges::any_of(formulations,
+                            [](const mesh::Planar& f) { return f.kind == mesh::PlanarKind::axisymmetric; }))
+      for (int32_t c = 0; c < mesh.n_cells(); ++c)
+        if (_d.cell_planar[static_cast<size_t>(c)] == mesh::PlanarKind::axisymmetric)
+          for (const int32_t n : mesh.cells[c])
+            FETICON_CHECK(mesh.nodes(n, 0) >= 0,
+                          "node " << _deck.node_labels[n] << " of CAX element " << _deck.element_labels[c]
+                                  << " lies at r = x = " << mesh.nodes(n, 0)
+                                  << " < 0: an axisymmetric body lies at x >= 0");
+    if (formulations.size() == 1)
     {
-      const double thickness = section.thickness > 0 ? section.thickness : 1.0;
-      if (!first)
-      {
-        first = &section;
-        planar.thickness = thickness;
-      }
-      FETICON_CHECK(thickness == planar.thickness,
-                    section.where.str() << ": *SOLID SECTION: thickness " << thickness << " m, the section at "
-                                        << first->where.str() << " has " << planar.thickness
-                                        << " m: feticon takes one thickness per model");
+      mesh.planar = formulations.front();
+      return;
     }
+    std::vector<mesh::Planar> per_body;
+    for (const int32_t f : formulation_of_body)
+      per_body.push_back(formulations[static_cast<size_t>(f)]);
+    mesh.set_body_planar(std::move(per_body));
   }
 
   void sets_and_surfaces()
@@ -553,7 +571,8 @@ private:
       if (!contact_somewhere)
         continue;
       _contact_of_pair.back() = static_cast<int32_t>(_p.contacts.size());
-      fem::ContactInteraction interaction{pair.interaction, law_of(pair.interaction, formulation), {}, formulation};
+      fem::ContactInteraction interaction{
+          pair.interaction, law_of(pair.interaction, formulation, pair.slave), {}, formulation};
       if (const auto it = _d.frictions.find(pair.interaction); it != _d.frictions.end() && it->second.coefficient > 0)
         interaction.friction = {fem::FrictionModel::coulomb, it->second.coefficient, 0};
       FETICON_CHECK(pair.adjust_set.empty() || _p.mesh.node_sets.count(pair.adjust_set),
@@ -771,9 +790,12 @@ private:
   /// slope takes CalculiX's default, 50 times the E of the deck's first material.
   /// A node-to-face pair's law keeps its tension sigma_inf (fem::NormalLaw; none given: CalculiX's
   /// default, the first material's E / 70 000); a face-to-face pair's law is bilinear, its
-  /// exponential law zero at contact (CalculiX's variants).
-  fem::NormalLaw resolved(fem::NormalLaw law, fem::ContactFormulation formulation) const
+  /// exponential law zero at contact (CalculiX's variants); on a node surface a node-to-face
+  /// pair's pressure acts on the master face's area (fem::NormalLaw::on_master_face).
+  fem::NormalLaw resolved(fem::NormalLaw law, fem::ContactFormulation formulation, const std::string& slave) const
   {
+    law.on_master_face = law.kind != fem::NormalLawKind::hard &&
+        formulation == fem::ContactFormulation::node_to_segment && _d.surfaces.at(slave).node_based;
     if (law.kind == fem::NormalLawKind::exponential)
       law.zero_at_contact = formulation != fem::ContactFormulation::node_to_segment;
     if (law.kind != fem::NormalLawKind::linear)
@@ -792,10 +814,11 @@ private:
       law.sigma_inf = young / 70000;
     return law;
   }
-  fem::NormalLaw law_of(const std::string& interaction, fem::ContactFormulation formulation) const
+  fem::NormalLaw law_of(const std::string& interaction, fem::ContactFormulation formulation,
+                        const std::string& slave) const
   {
     const auto it = _d.laws.find(interaction);
-    return it != _d.laws.end() ? resolved(it->second, formulation) : fem::NormalLaw{};
+    return it != _d.laws.end() ? resolved(it->second, formulation, slave) : fem::NormalLaw{};
   }
 
   /// The pairs whose interaction a *CHANGE SURFACE BEHAVIOR gave a contact law, with that law.
@@ -804,7 +827,8 @@ private:
     std::vector<std::pair<int32_t, fem::NormalLaw>> out;
     for (size_t p = 0; p < _p.contacts.size(); ++p)
       if (const auto it = laws.find(_p.contacts[p].interaction.name); it != laws.end())
-        out.emplace_back(static_cast<int32_t>(p), resolved(it->second, _p.contacts[p].interaction.formulation));
+        out.emplace_back(static_cast<int32_t>(p),
+                         resolved(it->second, _p.contacts[p].interaction.formulation, _p.contacts[p].slave));
     return out;
   }
 

@@ -61,6 +61,28 @@ double Planar::measure(const Eigen::Vector3d& x) const
   return 1;
 }
 
+bool Mesh::any_axisymmetric() const
+{
+  if (body_planar.empty())
+    return planar.kind == PlanarKind::axisymmetric;
+  return std::ranges::any_of(body_planar, [](const Planar& p) { return p.kind == PlanarKind::axisymmetric; });
+}
+
+void Mesh::set_body_planar(std::vector<Planar> per_body)
+{
+  FETICON_CHECK(std::ssize(per_body) == n_bodies() && !per_body.empty(),
+                "set_body_planar: " << per_body.size() << " formulations for " << n_bodies() << " bodies");
+  planar = per_body.front();
+  body_planar = std::move(per_body);
+  planar_body_of_node.assign(static_cast<size_t>(n_nodes()), -1);
+  for (int32_t c = 0; c < n_cells(); ++c)
+    for (const int32_t n : cells[c])
+      if (planar_body_of_node[n] < 0)
+        planar_body_of_node[n] = cell_body[c];
+  for (int32_t& body : planar_body_of_node)
+    body = std::max(body, 0); // a node without cells (a reference node) takes the first body's
+}
+
 std::string_view planar_name(PlanarKind kind)
 {
   constexpr std::array<std::string_view, 4> names = {"3D", "plane strain", "plane stress", "axisymmetric"};
@@ -218,9 +240,13 @@ Mesh submesh(const Mesh& mesh, const std::vector<int32_t>& cells, std::vector<in
   Mesh piece;
   piece.body_names = mesh.body_names;
   piece.planar = mesh.planar;
+  piece.body_planar = mesh.body_planar;
   piece.nodes.resize(static_cast<Eigen::Index>(node_of_local.size()), 3);
   for (size_t k = 0; k < node_of_local.size(); ++k)
     piece.nodes.row(static_cast<Eigen::Index>(k)) = mesh.nodes.row(node_of_local[k]);
+  if (!mesh.body_planar.empty())
+    for (const int32_t n : node_of_local)
+      piece.planar_body_of_node.push_back(mesh.planar_body_of_node[n]);
   std::vector<int32_t> cell;
   for (const int32_t c : cells)
   {

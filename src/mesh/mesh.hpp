@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <iterator>
 #include <map>
+#include <numbers>
 #include <span>
 #include <string>
 #include <vector>
@@ -178,8 +179,18 @@ struct Mesh
   /// Per cell: integrated with the reduced rule (hex20: CalculiX's C3D20R, 2x2x2 Gauss points;
   /// fem/reference_element.hpp). Empty when no cell is.
   std::vector<char> reduced_integration;
-  /// The formulation of the 2D cells (all cells are 2D when kind != none, none are otherwise).
+  /// The formulation of the 2D cells (all cells are 2D when kind != none, none are otherwise);
+  /// every body's unless body_planar says otherwise.
   Planar planar = {};
+  /// Per body, when the bodies of a 2D model differ (a deck mixing CPS or CPE cells with CAX
+  /// cells, or sections of several thicknesses); empty when every body is `planar`. Plane and
+  /// axisymmetric bodies in one model exchange forces as in CalculiX (solidsections.f: beside
+  /// CAX cells a plane section's thickness is that of the full circle, as the axisymmetric
+  /// bodies' forces are), so nothing is scaled.
+  std::vector<Planar> body_planar;
+  /// With body_planar: per node, the body whose formulation its edges and nodal loads take (that
+  /// of its first cell). Set with body_planar by set_body_planar.
+  std::vector<int32_t> planar_body_of_node;
 
   /// Whether cell `cell` is integrated with the reduced rule.
   bool reduced(int32_t cell) const { return !reduced_integration.empty() && reduced_integration[cell] != 0; }
@@ -190,6 +201,18 @@ struct Mesh
   int dofs_per_node() const { return planar.kind == PlanarKind::none ? 3 : 2; }
   int32_t n_cells() const { return static_cast<int32_t>(cells.size()); }
   int32_t n_bodies() const { return static_cast<int32_t>(body_names.size()); }
+  const Planar& planar_of_body(int32_t body) const { return body_planar.empty() ? planar : body_planar[body]; }
+  const Planar& planar_of_cell(int32_t cell) const { return planar_of_body(cell_body[cell]); }
+  const Planar& planar_of_node(int32_t node) const
+  {
+    return body_planar.empty() ? planar : body_planar[planar_body_of_node[node]];
+  }
+  /// Whether some body is axisymmetric (a subdomain or model with one keeps the axial
+  /// translation of its rigid motions only).
+  bool any_axisymmetric() const;
+  /// Sets body_planar (one per body, all 2D) and planar_body_of_node from the cells; `planar`
+  /// becomes the first body's.
+  void set_body_planar(std::vector<Planar> per_body);
 
   /// Node set by name; throws feticon::Error listing the available names if absent.
   const std::vector<int32_t>& node_set(const std::string& name) const;

@@ -179,6 +179,8 @@ std::string serialize(const Mesh& mesh)
     put_string(out, name);
     put_vector(out, cached_faces(faces));
   }
+  // Generated and Gmsh meshes have one formulation (only decks mix them).
+  FETICON_CHECK(mesh.body_planar.empty(), "mesh cache: a mesh of several 2D formulations is not cached");
   put<uint8_t>(out, static_cast<uint8_t>(mesh.planar.kind));
   put<double>(out, mesh.planar.thickness);
   return out;

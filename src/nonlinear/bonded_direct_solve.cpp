@@ -98,8 +98,9 @@ la::Matrix free_rigid_body_modes(const fem::Problem& problem, const fem::Constra
     R(3 * i + 0, 5) = r.z(), R(3 * i + 2, 5) = -r.x();
   }
   std::vector<la::Vector> kept;
-  // In axisymmetry only the axial translation strains nothing (rigid_body_modes.hpp).
-  const bool axisymmetric = problem.mesh.planar.kind == mesh::PlanarKind::axisymmetric;
+  // In axisymmetry only the axial translation strains nothing (rigid_body_modes.hpp); with an
+  // axisymmetric body beside plane ones, the plane bodies' rotations are left out too.
+  const bool axisymmetric = problem.mesh.any_axisymmetric();
   for (int k = 0; k < 6; ++k)
   {
     if (axisymmetric && k != 1)

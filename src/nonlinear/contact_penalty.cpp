@@ -16,6 +16,12 @@ RowSpring row_spring(const fem::NormalLaw& law, double area, double row_norm, do
   return {line.stiffness * area * row_norm * row_norm, line.zero_overclosure / row_norm};
 }
 
+double law_area(const contact::ContactConstraints& rows, la::Index i, const fem::NormalLaw& law)
+{
+  const auto row = static_cast<size_t>(i);
+  return law.on_master_face && rows.master_face_area[row] > 0 ? rows.master_face_area[row] : rows.slave_area[row];
+}
+
 void law_springs(const contact::ContactConstraints& rows, const fem::NormalLaw& law, la::Vector& stiffness,
                  la::Vector& shift)
 {
@@ -23,7 +29,7 @@ void law_springs(const contact::ContactConstraints& rows, const fem::NormalLaw& 
   shift.resize(rows.n_rows());
   for (la::Index i = 0; i < stiffness.size(); ++i)
   {
-    const RowSpring spring = row_spring(law, rows.slave_area[i], rows.row_norm[i], rows.c(i));
+    const RowSpring spring = row_spring(law, law_area(rows, i, law), rows.row_norm[i], rows.c(i));
     stiffness(i) = spring.stiffness;
     shift(i) = spring.shift;
   }

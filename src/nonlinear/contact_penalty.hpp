@@ -30,6 +30,10 @@ struct RowSpring
 };
 RowSpring row_spring(const fem::NormalLaw& law, double area, double row_norm, double c);
 
+/// @brief The area row i's law acts on: the slave node's, or where the law says so
+/// (fem::NormalLaw::on_master_face) and the row has one, the master face's.
+double law_area(const contact::ContactConstraints& rows, la::Index i, const fem::NormalLaw& law);
+
 /// @brief The springs (and c's shifts) of `law` on every row of `rows` (row_spring).
 void law_springs(const contact::ContactConstraints& rows, const fem::NormalLaw& law, la::Vector& stiffness,
                  la::Vector& shift);

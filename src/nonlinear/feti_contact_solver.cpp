@@ -1040,7 +1040,7 @@ std::optional<la::Vector> FetiContactSolve::law_compliance(const dual::FetiOpera
     if (row < 0 || row >= contact_rows.n_rows())
       continue;
     const fem::NormalLaw& law = _interactions[contact_rows.pair[row]].law;
-    const double area = contact_rows.slave_area[row], norm = contact_rows.row_norm[row];
+    const double area = law_area(contact_rows, row, law), norm = contact_rows.row_norm[row];
     if (law.kind == fem::NormalLawKind::hard || !(area > 0))
       continue;
     const RowSpring spring = row_spring(law, area, norm, c(i));

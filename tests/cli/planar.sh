@@ -10,8 +10,8 @@
 #    u_y at the top = sigma L / E (plane stress) and (1 - nu^2) sigma L / E (plane strain, u_x
 #    free), to 1e-9 relative; the reaction at the bottom = sigma * width * thickness;
 # 3. the export writes CAX4 / CPS4 again (feticon export of the deck's problem file);
-# 4. bad input, one line each: CPE4 beside C3D8, CPE4 beside CAX4, a clockwise CPE4, a CAX4 at
-#    x < 0, a thickness of 0;
+# 4. bad input, one line each: CPE4 beside C3D8, a plastic CPS4 body beside CAX4, a clockwise
+#    CPE4, a CAX4 at x < 0, a thickness of 0;
 # 5. a body across two sections of one material (a fuzz mutant that aborted the reader);
 # 6. Coulomb friction on edges: converged, the multipliers balanced.
 # Usage: planar.sh FETICON SOURCE_DIR
@@ -175,8 +175,11 @@ expect_error() { # NAME PATTERN FILE [ARGS...]
 }
 plate CPE4 0.01 | sed 's/^2, 2, 3, 6, 5$/2, 2, 3, 6, 5\n*ELEMENT, TYPE=C3D8, ELSET=PLATE\n3, 1, 2, 5, 4, 1, 2, 5, 4/' >"$work/mixed.inp"
 expect_error mixed_3d "2D and 3D cells do not mix" "$work/mixed.inp"
-plate CPE4 0.01 | sed 's/^2, 2, 3, 6, 5$/*ELEMENT, TYPE=CAX4, ELSET=PLATE\n2, 2, 3, 6, 5/' >"$work/mixed2.inp"
-expect_error mixed_formulation "one formulation per model" "$work/mixed2.inp"
+# CPS4 beside CAX4 is a model (tests/cli/planar_mixed.sh); its plane-stress body is checked
+# as one: J2 plasticity in plane stress is refused there too.
+plate CPS4 0.01 | sed 's/^2, 2, 3, 6, 5$/*ELEMENT, TYPE=CAX4, ELSET=PLATE\n2, 2, 3, 6, 5/; s/^2e11, 0.3$/2e11, 0.3\n*PLASTIC\n3e8, 0/' \
+  >"$work/mixed2.inp"
+expect_error mixed_plastic_plane_stress "plasticity in plane stress is not implemented" "$work/mixed2.inp"
 plate CPE4 0.01 | sed 's/^1, 1, 2, 5, 4$/1, 1, 4, 5, 2/' >"$work/clockwise.inp"
 expect_error clockwise "inverted or degenerate" "$work/clockwise.inp"
 plate CAX4 "" | sed 's/^1, 0, 0, 0$/1, -0.5, 0, 0/; s/^4, 0, 2, 0$/4, -0.5, 2, 0/' >"$work/negative_r.inp"
