@@ -9,24 +9,28 @@
 # (nu_0 = 0.490, 0.499, 0.4999) on the quad4 mesh, the quad4 mesh halved (gmsh -clscale 0.5) and
 # the quad8 mesh (gmsh -order 2, serendipity): the plate's final force and the run's wall time.
 #
-#   bench/rubber_seal.sh [--reps N] [--feticon build/feticon] [--locking]
+# --set KEY=VALUE goes to feticon's runs (--locking --set hyperelastic.fbar=true: F-bar).
+#
+#   bench/rubber_seal.sh [--reps N] [--feticon build/feticon] [--locking] [--set KEY=VALUE ...]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 feticon=$root/build/feticon
 reps=3
 locking=false
+extra=()
 while [[ $# -gt 0 ]]; do
   case $1 in
     --reps) reps=$2; shift 2 ;;
     --feticon) feticon=$2; shift 2 ;;
     --locking) locking=true; shift ;;
-    *) echo "usage: $0 [--reps N] [--feticon PATH] [--locking]" >&2; exit 2 ;;
+    --set) extra+=(--set "$2"); shift 2 ;;
+    *) echo "usage: $0 [--reps N] [--feticon PATH] [--locking] [--set KEY=VALUE ...]" >&2; exit 2 ;;
   esac
 done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 example=$root/examples/rubber_seal
-options=(--overwrite --set output.plots=false --set output.vtu=false)
+options=(--overwrite --set output.plots=false --set output.vtu=false "${extra[@]}")
 if $locking; then
   echo "mesh           K0/mu0  plate force (N)  wall (s)"
   for mesh in quad4 quad4_half quad8; do

@@ -108,6 +108,116 @@ std::pair<Eigen::Matrix3d, Voigt> deformation(const PointGeometry& geo, const Ei
   strain << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(1, 2), 2 * E(2, 0);
   return {Fd, strain};
 }
+/// F-bar (de Souza Neto, Peric, Dutko and Owen 1996, Int. J. Solids Struct. 33) on the linear
+/// cells of a hyperelastic body (Material::fbar): each point's volume change is replaced by the
+/// cell's, F_bar = (J_0 / J)^(1/d) F with d the dimensions whose stretch is free (3; 2 in plane
+/// strain, whose F_33 = 1 stays), so that a nearly incompressible law holds one volume per cell
+/// instead of one per point (full-integration quad4 and hex8 lock otherwise: docs/materials.md).
+/// J_0 is the cell's mean of J over its reference volume, not J at its centre: the mean passes
+/// the patch test on any cell shape and in axisymmetry (a homogeneous F gives F_bar = F and the
+/// forces of the standard cell), the centre's does not (the mean dilatation of Simo, Taylor and
+/// Pister 1985). S = S(E(F_bar)); the internal force is the derivative of the energy of F_bar,
+/// f = int B_bar' S with B_bar = dE(F_bar)/du, and K = int B_bar' C B_bar is its material part:
+/// symmetric, with the rigid motions as its kernel, as FETI needs (the exact tangent is not
+/// symmetric; the outer loop, which already leaves out the geometric stiffness of hyperelastic
+/// bodies, converges linearly).
+struct CellVolume
+{
+  double J = 1; ///< J_0 = int J dV / V
+  /// d(ln J_0)/du_ai = int J tr(F^-1 dF/du_ai) dV / int J dV, one row per node
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::ColMajor, max_nodes, 3> log_derivative;
+  int dimensions = 3;
+};
+
+bool uses_fbar(mesh::CellKind type, const Material& material, Kinematics kinematics)
+{
+  return material.fbar && material.is_hyperelastic() && kinematics == Kinematics::total_lagrangian &&
+      (type == mesh::CellKind::hex8 || type == mesh::CellKind::quad4);
+}
+
+/// tr(F^-1 dF/du_ai) of every node a and component i at a point: dF/du_ai = e_i g_a' (g_a the
+/// gradient of N_a), and N_a / r at 33 for u_r in axisymmetry.
+Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::ColMajor, max_nodes, 3> log_volume_derivative(
+    const PointGeometry& geo, const Eigen::Matrix3d& F_inverse)
+{
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::ColMajor, max_nodes, 3> t = geo.dN_dX * F_inverse;
+  if (geo.hoop.size() > 0)
+    t.col(0) += F_inverse(2, 2) * geo.hoop;
+  return t;
+}
+
+/// The cell's J_0 and its derivative (CellVolume).
+CellVolume cell_volume(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, int64_t cell,
+                       const mesh::Planar& planar, Integration integration)
+{
+  const QuadratureRule& rule = quadrature(type, integration);
+  const std::vector<PointShapes>& shapes = quadrature_shapes(type, integration);
+  CellVolume out;
+  out.dimensions = planar.kind == mesh::PlanarKind::plane_strain ? 2 : 3;
+  out.log_derivative.setZero(X.rows(), 3);
+  double volume = 0, deformed = 0;
+  for (size_t q = 0; q < rule.points.size(); ++q)
+  {
+    const PointGeometry geo = point_geometry(type, X, shapes[q], rule.weights[q], cell, planar);
+    const Eigen::Matrix3d F = deformation(geo, u, Kinematics::total_lagrangian, cell).first;
+    const double J = F.determinant();
+    volume += geo.weight_det_j;
+    deformed += geo.weight_det_j * J;
+    out.log_derivative += (geo.weight_det_j * J) * log_volume_derivative(geo, F.inverse());
+  }
+  out.J = deformed / volume;
+  out.log_derivative /= deformed;
+  return out;
+}
+
+/// F_bar of a point whose deformation gradient is F, and the factor (J_0 / J)^(1/d).
+std::pair<Eigen::Matrix3d, double> fbar_gradient(const CellVolume& volume, const Eigen::Matrix3d& F)
+{
+  const double alpha = std::pow(volume.J / F.determinant(), 1.0 / volume.dimensions);
+  Eigen::Matrix3d F_bar = F;
+  if (volume.dimensions == 3)
+    F_bar *= alpha;
+  else
+    F_bar.topLeftCorner<2, 2>() *= alpha;
+  return {F_bar, alpha};
+}
+
+/// E(F_bar), Voigt with engineering shears.
+Voigt green_lagrange(const Eigen::Matrix3d& F)
+{
+  const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
+  return (Voigt() << E(0, 0), E(1, 1), E(2, 2), 2 * E(0, 1), 2 * E(1, 2), 2 * E(2, 0)).finished();
+}
+
+/// B_bar = dE(F_bar)/du: with G = dF/du_ai, dF_bar = alpha (G + (d ln J_0 - tr(F^-1 G)) / d F_v),
+/// F_v the part of F that F_bar scales; dE = sym(F_bar' dF_bar).
+StrainDisplacement fbar_strain_displacement(const PointGeometry& geo, const CellVolume& volume,
+                                            const Eigen::Matrix3d& F, const Eigen::Matrix3d& F_bar, double alpha)
+{
+  const auto trace = log_volume_derivative(geo, F.inverse());
+  Eigen::Matrix3d F_v = F;
+  if (volume.dimensions == 2)
+  {
+    F_v.row(2).setZero();
+    F_v.col(2).setZero();
+  }
+  const Eigen::Index n = geo.dN_dX.rows();
+  StrainDisplacement B(6, 3 * n);
+  for (Eigen::Index a = 0; a < n; ++a)
+    for (int i = 0; i < 3; ++i)
+    {
+      Eigen::Matrix3d G = Eigen::Matrix3d::Zero();
+      G.row(i) = geo.dN_dX.row(a);
+      if (i == 0 && geo.hoop.size() > 0)
+        G(2, 2) = geo.hoop(a);
+      const Eigen::Matrix3d dF_bar =
+          alpha * (G + (volume.log_derivative(a, i) - trace(a, i)) / volume.dimensions * F_v);
+      const Eigen::Matrix3d dE = 0.5 * (F_bar.transpose() * dF_bar + dF_bar.transpose() * F_bar);
+      B.col(3 * a + i) << dE(0, 0), dE(1, 1), dE(2, 2), 2 * dE(0, 1), 2 * dE(1, 2), 2 * dE(2, 0);
+    }
+  return B;
+}
+
 /// Plane stress (sigma_33 = 0 at every point): the material tangent of the in-plane strains,
 /// D - D e_3 e_3' D / D_33.
 Eigen::Matrix<double, 6, 6> plane_stress_tangent(const Eigen::Matrix<double, 6, 6>& D)
@@ -199,10 +309,27 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
     K->setZero(n, n);
   const QuadratureRule& rule = quadrature(type, integration);
   const std::vector<PointShapes>& shapes = quadrature_shapes(type, integration);
+  const bool fbar = uses_fbar(type, material, kinematics);
+  const CellVolume volume = fbar ? cell_volume(type, X, u, cell, planar, integration) : CellVolume{};
   for (size_t q = 0; q < rule.points.size(); ++q)
   {
     const PointGeometry geo = point_geometry(type, X, shapes[q], rule.weights[q], cell, planar);
     auto [Fd, strain] = deformation(geo, u, kinematics, cell);
+    if (fbar)
+    {
+      const auto [F_bar, alpha] = fbar_gradient(volume, Fd);
+      Eigen::Matrix<double, 6, 6> C;
+      const Voigt S =
+          hyperelastic_stress(material.hyperelastic, green_lagrange(F_bar), kind != StiffnessKind::none ? &C : nullptr);
+      const StrainDisplacement B = fbar_strain_displacement(geo, volume, Fd, F_bar, alpha);
+      f.noalias() += B.transpose() * (S * geo.weight_det_j);
+      if (kind == StiffnessKind::none)
+        continue;
+      if (kind == StiffnessKind::material_definite)
+        make_positive_definite(C);
+      K->noalias() += B.transpose() * (C * geo.weight_det_j) * B;
+      continue;
+    }
     // S = D E is St Venant-Kirchhoff's S = lambda tr(E) I + 2 mu E in Voigt form (engineering
     // shears), of the strain less the thermal strain (and the plastic strain).
     const double thermal = thermal_stress_at(material, temperature_change, shapes[q]);
@@ -269,10 +396,20 @@ void for_each_point_result(mesh::CellKind type, const Eigen::MatrixX3d& X, const
   const bool plane_stress = mesh::is_planar(type) && planar.kind == mesh::PlanarKind::plane_stress;
   const QuadratureRule& rule = quadrature(type, integration);
   const std::vector<PointShapes>& shapes = quadrature_shapes(type, integration);
+  const bool fbar = uses_fbar(type, material, kinematics);
+  const CellVolume volume = fbar ? cell_volume(type, X, u, cell, planar, integration) : CellVolume{};
   for (size_t q = 0; q < rule.points.size(); ++q)
   {
     const PointGeometry geo = point_geometry(type, X, shapes[q], rule.weights[q], cell, planar);
     auto [Fd, strain] = deformation(geo, u, kinematics, cell);
+    if (fbar)
+    {
+      const Eigen::Matrix3d F_bar = fbar_gradient(volume, Fd).first;
+      const Voigt E_bar = green_lagrange(F_bar);
+      const Voigt S = hyperelastic_stress(material.hyperelastic, E_bar);
+      visit(voigt_of(F_bar * tensor_of(S) * F_bar.transpose() / F_bar.determinant()), E_bar, geo.weight_det_j);
+      continue;
+    }
     const double thermal = thermal_stress_at(material, temperature_change, shapes[q]);
     if (plane_stress)
     {
