@@ -1723,7 +1723,11 @@ private:
                         " is neither a node number nor a node set of one node");
           return it->second.expand().front();
         }
-        return index_of(std::stoll(*v), true, _scope, _keyword.where);
+        int64_t label = 0;
+        const std::string_view digits = v->front() == '+' ? std::string_view(*v).substr(1) : std::string_view(*v);
+        if (std::from_chars(digits.data(), digits.data() + digits.size(), label).ec != std::errc())
+          throw Error(where() + ": " + std::string(key) + "=" + *v + " is not a node number");
+        return index_of(label, true, _scope, _keyword.where);
       }
     return -1;
   }

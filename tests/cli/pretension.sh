@@ -12,7 +12,8 @@
 #    |u| (measured 5e-5: CalculiX solves CAX8 as expanded C3D20R cells), the new nodes numbered
 #    as CalculiX numbers them.
 #  - Bad input, one line each: ELEMENT= (a beam pretension), a node surface, no NODE=, a
-#    reference node that an element uses, a zero normal.
+#    reference node that an element uses, a NODE= beyond 64-bit integers (a fuzz mutant's
+#    "stoll"), a zero normal.
 # Usage: pretension.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -80,5 +81,6 @@ bad node_surface "is a node surface; a pretension section is element faces" \
   -e 's/^\*SURFACE, NAME=CUT, TYPE=ELEMENT/*SURFACE, NAME=CUT, TYPE=NODE/' -e 's/^5, S4$/1/'
 bad no_node "needs NODE=" -e 's/^\*PRE-TENSION SECTION, SURFACE=CUT, NODE=10000/*PRE-TENSION SECTION, SURFACE=CUT/'
 bad element_node "NODE 1 belongs to an element" -e 's/NODE=10000/NODE=1/'
+bad huge_node "NODE=9223372036854775808 is not a node number" -e 's/NODE=10000/NODE=9223372036854775808/'
 bad zero_normal "the normal of a pretension section must be a nonzero vector" \
   -e 's/^\*PRE-TENSION SECTION, SURFACE=CUT, NODE=10000/&\n0., 0., 0./'

@@ -395,7 +395,7 @@ DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_f
               "punch_tet10.inp",
               "punch_c3d20r.inp", "contactenergy_density.inp", "rings_cax4.inp", "tie_blocks.inp",
               "change_friction.inp", "rubber_block.inp", "changesurfbeh.inp", "assembly_two_blocks.inp",
-              "pret2.inp", "plate.inp", "friction2.inp"]
+              "pret2.inp", "plate.inp", "friction2.inp", "bolt.inp"]
 # Seeds of our own (tests/data/fuzz/): a C3D10 deck, feticon's export of gmsh_tet10.yaml, and
 # a C3D20 / C3D20R one (reduced integration per cell), the same punch meshed with hex20; two
 # CAX4 rings shrink-fitted through a node-to-surface pair of element edges (issue 64). From
@@ -405,7 +405,9 @@ DECK_SEEDS = ["contact1.inp", "contactenergy.inp", "cubespring.inp", "contact1_f
 # changesurfbeh.inp, a tie turned into contact by *CHANGE SURFACE BEHAVIOR (issue 65), pret2.inp,
 # two CAX8 cells cut by a *PRE-TENSION SECTION, and plate.inp, two CPS8R cells each with an
 # hourglass mode (its kernel from the matrix) pressed together, friction2.inp, a pressed block
-# dragged back and forth over four steps until every friction row slides. From tests/data/abaqus/: assembly_two_blocks.inp, Abaqus/CAE's layout of parts and instances (issue 63).
+# dragged back and forth over four steps until every friction row slides, bolt.inp, a CPS8R bolt
+# through two CAX8R plates (bodies of mixed 2D formulations) by node surfaces under an
+# exponential law. From tests/data/abaqus/: assembly_two_blocks.inp, Abaqus/CAE's layout of parts and instances (issue 63).
 FUZZ_FOLDER_DECKS = {"punch_tet10.inp", "punch_c3d20r.inp", "rings_cax4.inp"}
 ABAQUS_FOLDER_DECKS = {"assembly_two_blocks.inp"}
 # Seeds made from another by an edit: contact1 with Coulomb friction (*FRICTION after the
