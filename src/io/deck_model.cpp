@@ -395,15 +395,13 @@ private:
   void planar_bodies(const std::vector<mesh::Planar>& formulations, const std::vector<int32_t>& formulation_of_body)
   {
     mesh::Mesh& mesh = _p.mesh;
-    if (std::ranges::any_of(formulations,
-                            [](const mesh::Planar& f) { return f.kind == mesh::PlanarKind::axisymmetric; }))
-      for (int32_t c = 0; c < mesh.n_cells(); ++c)
-        if (_d.cell_planar[static_cast<size_t>(c)] == mesh::PlanarKind::axisymmetric)
-          for (const int32_t n : mesh.cells[c])
-            FETICON_CHECK(mesh.nodes(n, 0) >= 0,
-                          "node " << _deck.node_labels[n] << " of CAX element " << _deck.element_labels[c]
-                                  << " lies at r = x = " << mesh.nodes(n, 0)
-                                  << " < 0: an axisymmetric body lies at x >= 0");
+    for (int32_t c = 0; c < mesh.n_cells(); ++c)
+      if (_d.cell_planar[static_cast<size_t>(c)] == mesh::PlanarKind::axisymmetric)
+        for (const int32_t n : mesh.cells[c])
+          FETICON_CHECK(mesh.nodes(n, 0) >= 0,
+                        "node " << _deck.node_labels[n] << " of CAX element " << _deck.element_labels[c]
+                                << " lies at r = x = " << mesh.nodes(n, 0)
+                                << " < 0: an axisymmetric body lies at x >= 0");
     if (formulations.size() == 1)
     {
       mesh.planar = formulations.front();

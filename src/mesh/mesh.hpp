@@ -20,7 +20,6 @@
 #include <cstdint>
 #include <iterator>
 #include <map>
-#include <numbers>
 #include <span>
 #include <string>
 #include <vector>
@@ -188,8 +187,8 @@ struct Mesh
   /// CAX cells a plane section's thickness is that of the full circle, as the axisymmetric
   /// bodies' forces are), so nothing is scaled.
   std::vector<Planar> body_planar;
-  /// With body_planar: per node, the body whose formulation its edges and nodal loads take (that
-  /// of its first cell). Set with body_planar by set_body_planar.
+  /// With body_planar: per node, the body whose formulation the edges through it take (that of
+  /// its first cell). Set with body_planar by set_body_planar.
   std::vector<int32_t> planar_body_of_node;
 
   /// Whether cell `cell` is integrated with the reduced rule.
