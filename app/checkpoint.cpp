@@ -3,7 +3,6 @@
 #include "common/error.hpp"
 #include "common/atomic_file.hpp"
 
-#include <array>
 #include <fstream>
 #include <span>
 #include <type_traits>
@@ -34,37 +33,39 @@ std::vector<T> read_block(std::istream& is, const std::filesystem::path& path)
   return values;
 }
 
-/// The fields of one outer iteration of the history, in their order in a checkpoint's row (the
-/// rows of older checkpoints are shorter: what they lack stays 0).
-constexpr size_t history_fields = 25;
-std::array<double, history_fields> history_row(const nonlinear::OuterIteration& it)
+/// Visits the fields of one outer iteration of the history in their order in a checkpoint's row,
+/// the one list both the writer and the reader follow (the rows of older checkpoints end after
+/// field 13, 16, 18 or 24: what they lack stays 0).
+template <class Iteration, class Visit>
+void for_each_history_field(Iteration& it, Visit&& visit)
 {
-  return {static_cast<double>(it.load_step),
-          static_cast<double>(it.iteration),
-          static_cast<double>(it.qp.iterations),
-          static_cast<double>(it.qp.cg_steps),
-          static_cast<double>(it.qp.expansion_steps),
-          static_cast<double>(it.qp.proportioning_steps),
-          static_cast<double>(it.qp.hessian_multiplications),
-          static_cast<double>(it.qp.outer_iterations),
-          it.residual_norm,
-          it.displacement_change,
-          static_cast<double>(it.active_contacts),
-          it.feasibility_error,
-          it.seconds,
-          it.qp.ritz.min,
-          it.qp.ritz.max,
-          static_cast<double>(it.qp.ritz.cg_steps),
-          static_cast<double>(it.qp.rho_updates),
-          it.final_rho,
-          static_cast<double>(it.qp.expansion_fallbacks),
-          static_cast<double>(it.qp.operator_applications),
-          it.qp.operator_seconds,
-          static_cast<double>(it.qp.preconditioner_applications),
-          it.qp.preconditioner_seconds,
-          it.qp.seconds,
-          static_cast<double>(it.qp.feasibility_corrections)};
+  visit(it.load_step);
+  visit(it.iteration);
+  visit(it.qp.iterations);
+  visit(it.qp.cg_steps);
+  visit(it.qp.expansion_steps);
+  visit(it.qp.proportioning_steps);
+  visit(it.qp.hessian_multiplications);
+  visit(it.qp.outer_iterations);
+  visit(it.residual_norm);
+  visit(it.displacement_change);
+  visit(it.active_contacts);
+  visit(it.feasibility_error);
+  visit(it.seconds);
+  visit(it.qp.ritz.min);
+  visit(it.qp.ritz.max);
+  visit(it.qp.ritz.cg_steps);
+  visit(it.qp.rho_updates);
+  visit(it.final_rho);
+  visit(it.qp.expansion_fallbacks);
+  visit(it.qp.operator_applications);
+  visit(it.qp.operator_seconds);
+  visit(it.qp.preconditioner_applications);
+  visit(it.qp.preconditioner_seconds);
+  visit(it.qp.seconds);
+  visit(it.qp.feasibility_corrections);
 }
+constexpr size_t history_fields = 25; ///< for_each_history_field's count
 
 /// The history as one block of history_fields doubles a row: written as JSON (as older
 /// checkpoints have it) it was the cost of a run of many small load steps, the whole history
@@ -74,10 +75,8 @@ std::vector<double> history_block(const nonlinear::ContactSolution& s)
   std::vector<double> out;
   out.reserve(s.history.size() * history_fields);
   for (const nonlinear::OuterIteration& it : s.history)
-  {
-    const auto row = history_row(it);
-    out.insert(out.end(), row.begin(), row.end());
-  }
+    for_each_history_field(it, [&](const auto& field) { out.push_back(static_cast<double>(field)); });
+  FETICON_ASSERT(out.size() == s.history.size() * history_fields, "history_fields is not the fields' count");
   return out;
 }
 
@@ -97,48 +96,17 @@ nlohmann::json records(const nonlinear::ContactSolution& s)
           {"warnings", s.warnings}};
 }
 
-/// One outer iteration from its row (history_row's order; a shorter row of an older checkpoint
-/// leaves the rest 0).
+/// One outer iteration from its row (for_each_history_field's order; a shorter row of an older
+/// checkpoint leaves the rest 0).
 nonlinear::OuterIteration outer_iteration_record(std::span<const double> h)
 {
   nonlinear::OuterIteration it;
   size_t k = 0;
-  const auto set = [&](auto& field) {
+  for_each_history_field(it, [&](auto& field) {
     if (k < h.size())
       field = static_cast<std::remove_reference_t<decltype(field)>>(h[k]);
     ++k;
-  };
-  set(it.load_step);
-  set(it.iteration);
-  set(it.qp.iterations);
-  set(it.qp.cg_steps);
-  set(it.qp.expansion_steps);
-  set(it.qp.proportioning_steps);
-  set(it.qp.hessian_multiplications);
-  set(it.qp.outer_iterations);
-  set(it.residual_norm);
-  set(it.displacement_change);
-  set(it.active_contacts);
-  set(it.feasibility_error);
-  set(it.seconds);
-  if (h.size() <= 15) // written before the spectrum estimate existed
-    return it;
-  set(it.qp.ritz.min);
-  set(it.qp.ritz.max);
-  set(it.qp.ritz.cg_steps);
-  if (h.size() <= 17) // before SMALBE-M reported its rho
-    return it;
-  set(it.qp.rho_updates);
-  set(it.final_rho);
-  if (h.size() <= 23) // before the counters were one type
-    return it;
-  set(it.qp.expansion_fallbacks);
-  set(it.qp.operator_applications);
-  set(it.qp.operator_seconds);
-  set(it.qp.preconditioner_applications);
-  set(it.qp.preconditioner_seconds);
-  set(it.qp.seconds);
-  set(it.qp.feasibility_corrections);
+  });
   return it;
 }
 } // namespace

@@ -390,11 +390,11 @@ ContactConstraints build_node_to_segment_constraints(const mesh::Mesh& mesh, con
   // that is a corner of none (an edge node of quadratic faces; every node of a 2D model, which
   // it expands into 3D cells with the node in their mid-plane) the master face's
   // (fem::NormalLaw::on_master_face): the rows of such nodes carry it.
-  std::vector<char> corner(static_cast<size_t>(mesh.n_nodes()), 0);
+  std::vector<char> corner(areas.nodes.size(), 0); // by slave index
   if (mesh.planar.kind == mesh::PlanarKind::none)
     for (const mesh::Face& face : mesh.face_set(pair.slave))
       for (int a = 0; a < face.n_corners(); ++a)
-        corner[face[a]] = 1;
+        corner[static_cast<size_t>(areas.index_of(face[a]))] = 1;
   ContactRowBuilder rows;
   std::vector<std::pair<int32_t, double>> weights;
   for (size_t i = 0; i < slave_nodes.size(); ++i)
@@ -409,7 +409,9 @@ ContactConstraints build_node_to_segment_constraints(const mesh::Mesh& mesh, con
     for (int a = 0; a < face.size(); ++a)
       weights[a] = {face[a], shape(a)};
     rows.add({s, closest->normal, closest->gap, areas.of(s), closest->face, closest->xi, closest->kind, 1, 0,
-              corner[s] ? 0.0 : face_area_estimate(geometries[closest->face], closest->xi)},
+              corner[static_cast<size_t>(areas.index_of(s))]
+                  ? 0.0
+                  : face_area_estimate(geometries[closest->face], closest->xi)},
              weights);
   }
   rows.finish(n_dofs, out);

@@ -4,6 +4,7 @@
 #include "fem/finite_j2_plasticity.hpp"
 #include "fem/hyperelasticity.hpp"
 
+#include <array>
 #include <cmath>
 
 namespace feticon::fem
@@ -146,27 +147,39 @@ Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::ColMajor, max_nodes, 3> log_volu
   return t;
 }
 
-/// The cell's J_0 and its derivative (CellVolume).
-CellVolume cell_volume(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, int64_t cell,
-                       const mesh::Planar& planar, Integration integration)
+/// A quad4 or hex8 cell's points (their geometry and F, computed once) and its J_0.
+struct FbarCell
+{
+  static constexpr size_t max_points = 8; // hex8's 2 x 2 x 2
+  std::array<PointGeometry, max_points> geo;
+  std::array<Eigen::Matrix3d, max_points> F;
+  size_t n_points = 0;
+  CellVolume volume;
+};
+
+FbarCell fbar_cell(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, int64_t cell,
+                   const mesh::Planar& planar, Integration integration)
 {
   const QuadratureRule& rule = quadrature(type, integration);
   const std::vector<PointShapes>& shapes = quadrature_shapes(type, integration);
-  CellVolume out;
-  out.dimensions = planar.kind == mesh::PlanarKind::plane_strain ? 2 : 3;
-  out.log_derivative.setZero(X.rows(), 3);
-  double volume = 0, deformed = 0;
-  for (size_t q = 0; q < rule.points.size(); ++q)
+  FETICON_ASSERT(rule.points.size() <= FbarCell::max_points, "F-bar on a cell of more than 8 points");
+  FbarCell out;
+  out.n_points = rule.points.size();
+  CellVolume& volume = out.volume;
+  volume.dimensions = planar.kind == mesh::PlanarKind::plane_strain ? 2 : 3;
+  volume.log_derivative.setZero(X.rows(), 3);
+  double reference = 0, deformed = 0;
+  for (size_t q = 0; q < out.n_points; ++q)
   {
-    const PointGeometry geo = point_geometry(type, X, shapes[q], rule.weights[q], cell, planar);
-    const Eigen::Matrix3d F = deformation(geo, u, Kinematics::total_lagrangian, cell).first;
-    const double J = F.determinant();
-    volume += geo.weight_det_j;
-    deformed += geo.weight_det_j * J;
-    out.log_derivative += (geo.weight_det_j * J) * log_volume_derivative(geo, F.inverse());
+    out.geo[q] = point_geometry(type, X, shapes[q], rule.weights[q], cell, planar);
+    out.F[q] = deformation(out.geo[q], u, Kinematics::total_lagrangian, cell).first;
+    const double J = out.F[q].determinant(), w = out.geo[q].weight_det_j;
+    reference += w;
+    deformed += w * J;
+    volume.log_derivative += (w * J) * log_volume_derivative(out.geo[q], out.F[q].inverse());
   }
-  out.J = deformed / volume;
-  out.log_derivative /= deformed;
+  volume.J = deformed / reference;
+  volume.log_derivative /= deformed;
   return out;
 }
 
@@ -307,29 +320,32 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
   f.setZero(n);
   if (kind != StiffnessKind::none)
     K->setZero(n, n);
-  const QuadratureRule& rule = quadrature(type, integration);
-  const std::vector<PointShapes>& shapes = quadrature_shapes(type, integration);
-  const bool fbar = uses_fbar(type, material, kinematics);
-  const CellVolume volume = fbar ? cell_volume(type, X, u, cell, planar, integration) : CellVolume{};
-  for (size_t q = 0; q < rule.points.size(); ++q)
+  if (uses_fbar(type, material, kinematics))
   {
-    const PointGeometry geo = point_geometry(type, X, shapes[q], rule.weights[q], cell, planar);
-    auto [Fd, strain] = deformation(geo, u, kinematics, cell);
-    if (fbar)
+    const FbarCell points = fbar_cell(type, X, u, cell, planar, integration);
+    for (size_t q = 0; q < points.n_points; ++q)
     {
-      const auto [F_bar, alpha] = fbar_gradient(volume, Fd);
+      const PointGeometry& geo = points.geo[q];
+      const auto [F_bar, alpha] = fbar_gradient(points.volume, points.F[q]);
       Eigen::Matrix<double, 6, 6> C;
       const Voigt S =
           hyperelastic_stress(material.hyperelastic, green_lagrange(F_bar), kind != StiffnessKind::none ? &C : nullptr);
-      const StrainDisplacement B = fbar_strain_displacement(geo, volume, Fd, F_bar, alpha);
+      const StrainDisplacement B = fbar_strain_displacement(geo, points.volume, points.F[q], F_bar, alpha);
       f.noalias() += B.transpose() * (S * geo.weight_det_j);
       if (kind == StiffnessKind::none)
         continue;
       if (kind == StiffnessKind::material_definite)
         make_positive_definite(C);
       K->noalias() += B.transpose() * (C * geo.weight_det_j) * B;
-      continue;
     }
+    return;
+  }
+  const QuadratureRule& rule = quadrature(type, integration);
+  const std::vector<PointShapes>& shapes = quadrature_shapes(type, integration);
+  for (size_t q = 0; q < rule.points.size(); ++q)
+  {
+    const PointGeometry geo = point_geometry(type, X, shapes[q], rule.weights[q], cell, planar);
+    auto [Fd, strain] = deformation(geo, u, kinematics, cell);
     // S = D E is St Venant-Kirchhoff's S = lambda tr(E) I + 2 mu E in Voigt form (engineering
     // shears), of the strain less the thermal strain (and the plastic strain).
     const double thermal = thermal_stress_at(material, temperature_change, shapes[q]);
@@ -394,22 +410,25 @@ void for_each_point_result(mesh::CellKind type, const Eigen::MatrixX3d& X, const
 {
   const Eigen::Matrix<double, 6, 6> D = material.elasticity_matrix();
   const bool plane_stress = mesh::is_planar(type) && planar.kind == mesh::PlanarKind::plane_stress;
+  if (uses_fbar(type, material, kinematics))
+  {
+    const FbarCell points = fbar_cell(type, X, u, cell, planar, integration);
+    for (size_t q = 0; q < points.n_points; ++q)
+    {
+      const Eigen::Matrix3d F_bar = fbar_gradient(points.volume, points.F[q]).first;
+      const Voigt E_bar = green_lagrange(F_bar);
+      const Voigt S = hyperelastic_stress(material.hyperelastic, E_bar);
+      visit(voigt_of(F_bar * tensor_of(S) * F_bar.transpose() / F_bar.determinant()), E_bar,
+            points.geo[q].weight_det_j);
+    }
+    return;
+  }
   const QuadratureRule& rule = quadrature(type, integration);
   const std::vector<PointShapes>& shapes = quadrature_shapes(type, integration);
-  const bool fbar = uses_fbar(type, material, kinematics);
-  const CellVolume volume = fbar ? cell_volume(type, X, u, cell, planar, integration) : CellVolume{};
   for (size_t q = 0; q < rule.points.size(); ++q)
   {
     const PointGeometry geo = point_geometry(type, X, shapes[q], rule.weights[q], cell, planar);
     auto [Fd, strain] = deformation(geo, u, kinematics, cell);
-    if (fbar)
-    {
-      const Eigen::Matrix3d F_bar = fbar_gradient(volume, Fd).first;
-      const Voigt E_bar = green_lagrange(F_bar);
-      const Voigt S = hyperelastic_stress(material.hyperelastic, E_bar);
-      visit(voigt_of(F_bar * tensor_of(S) * F_bar.transpose() / F_bar.determinant()), E_bar, geo.weight_det_j);
-      continue;
-    }
     const double thermal = thermal_stress_at(material, temperature_change, shapes[q]);
     if (plane_stress)
     {

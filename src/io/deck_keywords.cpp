@@ -12,6 +12,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace feticon::io
@@ -92,6 +93,18 @@ bool is_integer(std::string_view v)
     if (v[i] < '0' || v[i] > '9')
       return false;
   return true;
+}
+
+/// The integer of a whole field (a leading '+' allowed), none if it is not one or exceeds int64_t.
+std::optional<int64_t> parse_integer(std::string_view v)
+{
+  if (!v.empty() && v.front() == '+')
+    v.remove_prefix(1);
+  int64_t out = 0;
+  const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
+  if (v.empty() || ec != std::errc() || end != v.data() + v.size())
+    return std::nullopt;
+  return out;
 }
 
 class KeywordReader
@@ -175,14 +188,10 @@ private:
   {
     if (i >= line.fields.size() || line.fields[i].empty())
       fail_at(line.at(i), std::string("missing ") + what);
-    std::string_view v = line.fields[i];
-    if (v.front() == '+')
-      v.remove_prefix(1);
-    int64_t out = 0;
-    auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
-    if (ec != std::errc() || end != v.data() + v.size())
+    const std::optional<int64_t> out = parse_integer(line.fields[i]);
+    if (!out)
       fail_at(line.at(i), "'" + text(line.fields[i]) + "' is not an integer (" + what + ")");
-    return out;
+    return *out;
   }
 
   /// The mesh index of the node or element labelled by field i.
@@ -1723,11 +1732,10 @@ private:
                         " is neither a node number nor a node set of one node");
           return it->second.expand().front();
         }
-        int64_t label = 0;
-        const std::string_view digits = v->front() == '+' ? std::string_view(*v).substr(1) : std::string_view(*v);
-        if (std::from_chars(digits.data(), digits.data() + digits.size(), label).ec != std::errc())
+        const std::optional<int64_t> label = parse_integer(*v);
+        if (!label)
           throw Error(where() + ": " + std::string(key) + "=" + *v + " is not a node number");
-        return index_of(label, true, _scope, _keyword.where);
+        return index_of(*label, true, _scope, _keyword.where);
       }
     return -1;
   }

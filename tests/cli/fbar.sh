@@ -78,6 +78,7 @@ fi
 head -n 1 "$work/locked.txt"
 grep -q "K_0 / mu_0 = 5000 on hex8 / quad4 cells, which lock" "$work/nearly_incompressible.log" ||
   { echo "no locking warning"; cat "$work/nearly_incompressible.log"; exit 1; }
+grep -q "which lock" "$work/nearly_incompressible/summary.json" || { echo "no locking warning in summary.json"; exit 1; }
 ! grep -q "which lock" "$work/nearly_incompressible_fbar.log" || { echo "a warning with F-bar on"; exit 1; }
 
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
