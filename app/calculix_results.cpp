@@ -260,6 +260,9 @@ la::Vector calculix_reaction(const fem::Problem& problem, const nonlinear::Conta
   fem::Assembler assembler(mesh, fem::whole_mesh_domain(mesh), problem.materials, kinematics);
   if (!solution.plastic.empty())
     assembler.set_plastic_state(solution.plastic.points); // the whole mesh's cells in order
+  // The thermal strain's stress is in the internal force too: without it a heated bar held at
+  // both ends printed a reaction of the wrong sign (K u alone).
+  assembler.set_temperature_change(solution.temperature_change);
   la::Vector reaction = assembler.internal_force(solution.u);
   if (solution.constraints.n_rows() > 0)
     reaction += solution.constraints.B.transpose() * solution.contact_lambda;

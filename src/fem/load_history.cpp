@@ -49,7 +49,19 @@ std::vector<la::Index> indices_in(const std::vector<int64_t>& all, const std::ve
   return out;
 }
 
-/// The amplitude names the loads and supports of `step` give, each once, sorted.
+/// sum_k c_k term(k) over the (term, coefficient) pairs `c`, term by term, so that t f and
+/// (1 - t) f_0 + t f_1 round as one-stage and two-stage runs did before amplitudes (c f in one
+/// product; each element a x + b y).
+template <class Term>
+la::Vector linear_combination(const std::vector<std::pair<int, double>>& c, Term term)
+{
+  la::Vector out = c.front().second * term(c.front().first);
+  for (size_t k = 1; k < c.size(); ++k)
+    out += c[k].second * term(c[k].first);
+  return out;
+}
+} // namespace
+
 std::set<std::string> amplitudes_of(const Step& step)
 {
   std::set<std::string> names;
@@ -68,19 +80,6 @@ std::set<std::string> amplitudes_of(const Step& step)
   add(step.temperatures); // no force, but the stage keeps its increments (fem/temperature_history.hpp)
   return names;
 }
-
-/// sum_k c_k term(k) over the (term, coefficient) pairs `c`, term by term, so that t f and
-/// (1 - t) f_0 + t f_1 round as one-stage and two-stage runs did before amplitudes (c f in one
-/// product; each element a x + b y).
-template <class Term>
-la::Vector linear_combination(const std::vector<std::pair<int, double>>& c, Term term)
-{
-  la::Vector out = c.front().second * term(c.front().first);
-  for (size_t k = 1; k < c.size(); ++k)
-    out += c[k].second * term(c[k].first);
-  return out;
-}
-} // namespace
 
 LoadHistory::LoadHistory(const Problem& problem, const Rules& rules)
 {
@@ -192,6 +191,8 @@ double LoadHistory::increment_of(int step) const
   const int j = step - last_step(p.stage - 1);
   return p.fraction - (j == 1 ? 0.0 : _fractions[p.stage - 1][j - 2]);
 }
+
+la::Vector LoadHistory::values_of(const ConstrainedDofs& held) const { return values_over(_dofs, held); }
 
 std::vector<int64_t> LoadHistory::held_dofs(int stage) const { return dofs_at(_stages[stage_index(stage)].held); }
 

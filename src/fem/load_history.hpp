@@ -48,11 +48,15 @@
 
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 namespace feticon::fem
 {
+/// The amplitude names the loads, supports and temperatures of `step` give, each once, sorted.
+std::set<std::string> amplitudes_of(const Step& step);
+
 /// Where a load step stands in the history.
 struct LoadPoint
 {
@@ -120,6 +124,9 @@ public:
 
   /// The prescribed DOFs (the union of every stage's).
   const std::vector<int64_t>& dofs() const { return _dofs; }
+  /// `held`'s values (a subset of dofs(), e.g. Problem::all_constrained_dofs of one amplitude)
+  /// in the order of dofs(), 0 at the DOFs it does not hold.
+  la::Vector values_of(const ConstrainedDofs& held) const;
   /// The DOFs stage `stage` (1-based) holds, sorted.
   std::vector<int64_t> held_dofs(int stage) const;
   /// The DOFs whose values ramp from the displacement at stage `stage`'s start (held there,

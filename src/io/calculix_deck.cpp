@@ -280,10 +280,48 @@ void write_materials(std::ostream& out, const fem::Problem& problem)
   }
 }
 
-/// *INITIAL CONDITIONS, TYPE=TEMPERATURE of the nodes whose T_0 is not 0 (CalculiX's default).
+/// The AMPLITUDE= parameter of loads that follow amplitude `name` (none for "": the step's ramp).
+std::string amplitude_parameter(const std::string& name)
+{
+  return name.empty() ? std::string() : ", AMPLITUDE=" + deck_name("A_", name);
+}
+
+/// The groups of a step's loads and supports: "" (those without amplitude) first, then each
+/// amplitude the step names.
+std::vector<std::string> amplitude_groups(const fem::Step& step)
+{
+  std::vector<std::string> groups{""};
+  for (const std::string& name : fem::amplitudes_of(step))
+    groups.push_back(name);
+  return groups;
+}
+
+/// Every *AMPLITUDE (tabular, its TIME=, SHIFTX and SHIFTY), four (time, value) pairs a line.
+void write_amplitudes(std::ostream& out, const fem::Problem& problem)
+{
+  for (const auto& [name, a] : problem.amplitudes)
+  {
+    out << "*AMPLITUDE, NAME=" << deck_name("A_", name) << (a.total_time ? ", TIME=TOTAL TIME" : "");
+    if (a.shift_x != 0)
+      out << ", SHIFTX=" << number(a.shift_x);
+    if (a.shift_y != 0)
+      out << ", SHIFTY=" << number(a.shift_y);
+    out << '\n';
+    for (size_t k = 0; k < a.points.size(); ++k)
+      out << number(a.points[k].first) << ", " << number(a.points[k].second)
+          << (k % 4 == 3 || k + 1 == a.points.size() ? "\n" : ", ");
+  }
+}
+
+/// *INITIAL CONDITIONS, TYPE=TEMPERATURE: every node where the model has temperatures, and the
+/// nodes whose T_0 is not 0.
 void write_initial_temperatures(std::ostream& out, const fem::Problem& problem)
 {
-  bool header = false;
+  // CalculiX refuses a *TEMPERATURE without thermal *INITIAL CONDITIONS (temperatures.f): a
+  // model with temperatures gets them for every node, 0 (feticon's default T_0) first.
+  if (problem.has_temperatures())
+    out << "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 0.0\n";
+  bool header = problem.has_temperatures();
   for (size_t n = 0; n < problem.initial_temperatures.size(); ++n)
     if (problem.initial_temperatures[n] != 0)
     {
@@ -295,14 +333,23 @@ void write_initial_temperatures(std::ostream& out, const fem::Problem& problem)
 }
 
 /// A step's *TEMPERATURE, OP=NEW (the nodes it does not name go back to T_0, as in
-/// fem::TemperatureHistory); nothing for a problem without temperatures.
+/// fem::TemperatureHistory), then a *TEMPERATURE, AMPLITUDE= per amplitude; nothing for a
+/// problem without temperatures.
 void write_temperatures(std::ostream& out, const fem::Problem& problem, const fem::Step& step)
 {
   if (!problem.has_temperatures())
     return;
-  out << "*TEMPERATURE, OP=NEW\n";
-  for (const fem::NodalTemperature& t : step.temperatures)
-    out << t.node + 1 << ", " << number(t.value) << '\n';
+  for (const std::string& group : amplitude_groups(step))
+  {
+    const bool any =
+        std::ranges::any_of(step.temperatures, [&](const fem::NodalTemperature& t) { return t.amplitude == group; });
+    if (!group.empty() && !any)
+      continue;
+    out << "*TEMPERATURE" << (group.empty() ? ", OP=NEW" : amplitude_parameter(group)) << '\n';
+    for (const fem::NodalTemperature& t : step.temperatures)
+      if (t.amplitude == group)
+        out << t.node + 1 << ", " << number(t.value) << '\n';
+  }
 }
 
 /// Per contact pair: its two *SURFACEs, a linear pressure-overclosure interaction (with
@@ -434,9 +481,9 @@ void write_couplings(std::ostream& out, const fem::Problem& problem)
 }
 
 /// *STEP (AMPLITUDE=STEP where the step's loads take their values at once) and *STATIC of
-/// `step` in a time of 1: its automatic increments (as fractions of its
-/// time), or its fixed ones (the step's own, else `options`') as automatic ones whose maximum is
-/// the initial (CalculiX may cut them back, as feticon does, but not grow them).
+/// `step` in its time (the amplitudes run on it): its automatic increments, or its fixed ones
+/// (the step's own, else `options`') as automatic ones whose maximum is the initial (CalculiX
+/// may cut them back, as feticon does, but not grow them).
 void write_step_start(std::ostream& out, const fem::Step& step, const CalculixOptions& options)
 {
   // INC=: the step's own count for automatic increments; for fixed ones room for cutbacks (twice
@@ -448,64 +495,134 @@ void write_step_start(std::ostream& out, const fem::Step& step, const CalculixOp
   if (automatic)
   {
     const fem::IncrementControl& a = *step.automatic;
-    out << number(a.initial / step.time) << ", 1.0, " << number(a.minimum / step.time) << ", "
-        << number(a.maximum / step.time) << '\n';
+    out << number(a.initial) << ", " << number(step.time) << ", " << number(a.minimum) << ", " << number(a.maximum)
+        << '\n';
     return;
   }
-  const double increment = 1.0 / fixed;
-  out << number(increment) << ", 1.0, " << number(increment * 1e-5) << ", " << number(increment) << '\n';
+  const double increment = step.time / fixed;
+  out << number(increment) << ", " << number(step.time) << ", " << number(increment * 1e-5) << ", " << number(increment)
+      << '\n';
 }
 
-/// The *CLOAD lines of step `step`'s loads (0-based): the loads on reference nodes on them
-/// (write_couplings), the others as their nodal forces (3 per node, global components; a node
-/// with a frame in its local ones, write_frames); their totals counted in `summary`.
+/// The nodal forces of step `step`'s (0-based) loads, one vector per amplitude group
+/// (amplitude_groups), the loads on reference nodes left out (write_cloads writes them).
+/// @throws feticon::Error for a node direction loaded in two groups in one step, which a deck
+///         cannot say (CalculiX's forcadd.f: one amplitude per node and direction in a step), or
+///         loaded with an amplitude in one step and without in the next (or the reverse), whose
+///         ramp CalculiX starts from the old value and feticon from the loads without amplitude
+///         (the deck reader refuses it too)
+std::vector<la::Vector> group_forces(const fem::Problem& problem, size_t step)
+{
+  const auto forces_of = [&](size_t k) {
+    std::vector<la::Vector> out;
+    for (const std::string& group : amplitude_groups(problem.steps[k]))
+      out.push_back(problem.external_force(k, group, false));
+    return out;
+  };
+  const std::vector<la::Vector> now = forces_of(step);
+  const auto group_at = [](const std::vector<la::Vector>& forces, la::Index i, size_t k) {
+    int found = -1;
+    for (size_t g = 0; g < forces.size(); ++g)
+      if (forces[g](i) != 0)
+      {
+        FETICON_CHECK(found < 0,
+                      "calculix export: step "
+                          << k + 1 << ": node " << i / 3 + 1 << ", direction " << i % 3 + 1
+                          << " is loaded by loads of two amplitudes (or with and without one), which a deck's *CLOAD "
+                             "cannot say (CalculiX: one amplitude per node and direction in a step)");
+        found = static_cast<int>(g);
+      }
+    return found;
+  };
+  const std::vector<la::Vector> before = step > 0 ? forces_of(step - 1) : std::vector<la::Vector>{};
+  for (la::Index i = 0; i < now.front().size(); ++i)
+  {
+    const int g = group_at(now, i, step);
+    const int g_before = before.empty() ? -1 : group_at(before, i, step - 1);
+    FETICON_CHECK(g < 0 || g_before < 0 || (g == 0) == (g_before == 0),
+                  "calculix export: step " << step + 1 << ": node " << i / 3 + 1 << ", direction " << i % 3 + 1
+                                           << " is loaded " << (g == 0 ? "without" : "with") << " amplitude, in step "
+                                           << step << " " << (g_before == 0 ? "without" : "with")
+                                           << ": CalculiX ramps it from its last value there, feticon from the loads "
+                                              "without amplitude");
+  }
+  return now;
+}
+
+/// The *CLOAD blocks of step `step` (0-based): its loads without amplitude (OP=NEW after the
+/// first step: the whole external force, reached linearly in the step's increments), then a
+/// block per amplitude; the loads on reference nodes on them (write_couplings), the others as
+/// their nodal forces (3 per node, global components; a node with a frame in its local ones,
+/// write_frames); their totals counted in `summary`.
 void write_cloads(std::ostream& out, const fem::Problem& problem, size_t step, CalculixDeckSummary& summary)
 {
-  for (const fem::ReferenceValue& load : problem.steps[step].reference_loads)
+  const fem::Step& s = problem.steps[step];
+  const std::vector<std::string> groups = amplitude_groups(s);
+  const std::vector<la::Vector> forces = group_forces(problem, step);
+  for (size_t g = 0; g < groups.size(); ++g)
   {
-    out << problem.mesh.n_nodes() + load.coupling + 1 << ", " << load.dof + 1 << ", " << number(load.value) << '\n';
-    if (load.dof < 3)
-      summary.total_load[load.dof] += load.value;
-    ++summary.n_cloads;
-  }
-  const la::Vector force = problem.external_force(step, {}, false);
-  for (int32_t n = 0; n < problem.mesh.n_nodes(); ++n)
-  {
-    const Eigen::Vector3d global = force.segment<3>(3 * la::Index{n});
-    const int32_t k = problem.frames.index_of(n);
-    const Eigen::Vector3d given =
-        k < 0 ? global : Eigen::Vector3d(problem.frames.axes[static_cast<size_t>(k)] * global);
-    for (int i = 0; i < 3; ++i)
+    const bool on_reference = std::ranges::any_of(
+        s.reference_loads, [&](const fem::ReferenceValue& load) { return load.amplitude == groups[g]; });
+    if (g > 0 && !on_reference && forces[g].isZero(0))
+      continue;
+    out << "*CLOAD" << (g == 0 ? (step == 0 ? "" : ", OP=NEW") : amplitude_parameter(groups[g])) << '\n';
+    for (const fem::ReferenceValue& load : s.reference_loads)
     {
-      summary.total_load[i] += global(i);
-      if (given(i) == 0)
+      if (load.amplitude != groups[g])
         continue;
-      out << n + 1 << ", " << i + 1 << ", " << number(given(i)) << '\n';
+      out << problem.mesh.n_nodes() + load.coupling + 1 << ", " << load.dof + 1 << ", " << number(load.value) << '\n';
+      if (load.dof < 3)
+        summary.total_load[load.dof] += load.value;
       ++summary.n_cloads;
+    }
+    for (int32_t n = 0; n < problem.mesh.n_nodes(); ++n)
+    {
+      const Eigen::Vector3d global = forces[g].segment<3>(3 * la::Index{n});
+      const int32_t k = problem.frames.index_of(n);
+      const Eigen::Vector3d given =
+          k < 0 ? global : Eigen::Vector3d(problem.frames.axes[static_cast<size_t>(k)] * global);
+      for (int i = 0; i < 3; ++i)
+      {
+        summary.total_load[i] += global(i);
+        if (given(i) == 0)
+          continue;
+        out << n + 1 << ", " << i + 1 << ", " << number(given(i)) << '\n';
+        ++summary.n_cloads;
+      }
     }
   }
 }
 
-/// The static *STEP with its increments (write_step_start), *BOUNDARY (supports, plane strain) and *CLOAD (the
-/// external force, totals counted in `summary`).
+/// The first *STEP with its increments (write_step_start), *BOUNDARY (supports, plane strain;
+/// a block per amplitude) and *CLOAD (write_cloads).
 void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
                 CalculixDeckSummary& summary)
 {
   const mesh::Mesh& mesh = problem.mesh;
-  write_step_start(out, problem.steps.front(), options);
-  out << "*BOUNDARY\n";
-  for (const fem::DirichletCondition& d : problem.steps.front().dirichlet)
+  const fem::Step& step = problem.steps.front();
+  write_step_start(out, step, options);
+  for (const std::string& group : amplitude_groups(step))
+  {
+    const bool any =
+        std::ranges::any_of(step.dirichlet, [&](const fem::DirichletCondition& d) { return d.amplitude == group; }) ||
+        std::ranges::any_of(step.reference_supports,
+                            [&](const fem::ReferenceValue& r) { return r.amplitude == group; });
+    if (!group.empty() && !any)
+      continue;
+    out << "*BOUNDARY" << amplitude_parameter(group) << '\n';
+    for (const fem::DirichletCondition& d : step.dirichlet)
+      for (int i = 0; i < 3; ++i)
+        if (d.value[i] && d.amplitude == group)
+          out << deck_name("N_", d.set) << ", " << i + 1 << ", " << i + 1 << ", " << number(*d.value[i]) << '\n';
+    // A hex layer's eliminated u_z is a support in the deck (2D cells have no u_z).
     for (int i = 0; i < 3; ++i)
-      if (d.value[i])
-        out << deck_name("N_", d.set) << ", " << i + 1 << ", " << i + 1 << ", " << number(*d.value[i]) << '\n';
-  // A hex layer's eliminated u_z is a support in the deck (2D cells have no u_z).
-  for (int i = 0; i < 3; ++i)
-    if (problem.eliminated[i] && mesh.planar.kind == mesh::PlanarKind::none)
-      out << "NALL, " << i + 1 << ", " << i + 1 << ", 0.0\n";
-
-  for (const fem::ReferenceValue& r : problem.steps.front().reference_supports)
-    out << mesh.n_nodes() + r.coupling + 1 << ", " << r.dof + 1 << ", " << r.dof + 1 << ", " << number(r.value) << '\n';
-  out << "*CLOAD\n";
+      if (group.empty() && problem.eliminated[i] && mesh.planar.kind == mesh::PlanarKind::none)
+        out << "NALL, " << i + 1 << ", " << i + 1 << ", 0.0\n";
+    for (const fem::ReferenceValue& r : step.reference_supports)
+      if (r.amplitude == group)
+        out << mesh.n_nodes() + r.coupling + 1 << ", " << r.dof + 1 << ", " << r.dof + 1 << ", " << number(r.value)
+            << '\n';
+  }
   write_cloads(out, problem, 0, summary);
 }
 /// The deck's node, component and value of held DOF `dof` = `value`: a node with a frame is
@@ -551,33 +668,50 @@ void write_frames(std::ostream& out, const fem::Problem& problem)
   }
 }
 
-/// A later load stage as the next *STEP: the prescribed values that changed since the last
-/// stage (*BOUNDARY keeps the others) and the stage's whole external force (*CLOAD, OP=NEW
-/// drops the last step's loads), reached linearly in its increments, as feticon's
-/// load history runs from one stage's end to the next.
+/// A later load stage as the next *STEP: its supports (write_later_supports) and the stage's
+/// whole external force (write_cloads; *CLOAD, OP=NEW drops the last step's loads), reached
+/// linearly in its increments, as feticon's load history runs from one stage's end to the next.
 void write_later_step(std::ostream& out, const fem::Problem& problem, const fem::LoadHistory& history, int stage,
-                      const fem::Step& step, const CalculixOptions& options, CalculixDeckSummary& summary)
+                      const CalculixOptions& options, CalculixDeckSummary& summary)
 {
-  write_step_start(out, step, options);
-  const int end = history.last_step(stage), before = history.last_step(stage - 1);
-  const la::Vector values = history.prescribed_values(end), values_before = history.prescribed_values(before);
-  // The same held DOFs: the values that changed (*BOUNDARY keeps the others); others: all of
-  // them anew (a DOF held from here on ramps from its displacement in both codes).
+  const auto k = static_cast<size_t>(stage - 1);
+  write_step_start(out, problem.steps[k], options);
+  // The same held DOFs and no amplitude in this step or the one before: the values that
+  // changed (*BOUNDARY keeps the others). Otherwise all of them anew, a block per amplitude (a
+  // DOF held from here on without amplitude ramps from its displacement in both codes).
   const std::vector<int64_t> held = history.held_dofs(stage);
-  const bool same = held == history.held_dofs(stage - 1);
-  out << (same ? "*BOUNDARY\n" : "*BOUNDARY, OP=NEW\n");
-  for (size_t k = 0; k < history.dofs().size(); ++k)
+  const std::vector<std::string> groups = amplitude_groups(problem.steps[k]);
+  const bool same =
+      held == history.held_dofs(stage - 1) && groups.size() == 1 && amplitude_groups(problem.steps[k - 1]).size() == 1;
+  std::vector<la::Vector> values;
+  for (const std::string& group : groups)
+    values.push_back(history.values_of(problem.all_constrained_dofs(k, group)));
+  const la::Vector values_before = history.prescribed_values(history.last_step(stage - 1));
+  // The group of each DOF: the amplitude whose value it has (a DOF at 0 goes without one).
+  std::vector<size_t> group_of(history.dofs().size(), 0);
+  for (size_t g = 1; g < groups.size(); ++g)
+    for (size_t i = 0; i < group_of.size(); ++i)
+      if (values[g](static_cast<la::Index>(i)) != 0)
+        group_of[i] = g;
+  for (size_t g = 0; g < groups.size(); ++g)
   {
-    const int64_t dof = history.dofs()[k];
-    if (same ? values(k) != values_before(k) : std::binary_search(held.begin(), held.end(), dof))
+    if (g > 0 && std::ranges::find(group_of, g) == group_of.end())
+      continue;
+    out << "*BOUNDARY" << (g == 0 && !same ? ", OP=NEW" : amplitude_parameter(groups[g])) << '\n';
+    for (size_t i = 0; i < history.dofs().size(); ++i)
     {
-      const auto [node, component, value] = deck_dof(problem, dof, values(k));
-      out << node + 1 << ", " << component + 1 << ", " << component + 1 << ", " << number(value) << '\n';
+      const int64_t dof = history.dofs()[i];
+      const double value = values[g](static_cast<la::Index>(i));
+      const bool write = same ? value != values_before(static_cast<la::Index>(i))
+                              : group_of[i] == g && std::binary_search(held.begin(), held.end(), dof);
+      if (!write)
+        continue;
+      const auto [node, component, deck_value] = deck_dof(problem, dof, value);
+      out << node + 1 << ", " << component + 1 << ", " << component + 1 << ", " << number(deck_value) << '\n';
     }
   }
-  out << "*CLOAD, OP=NEW\n";
   std::fill(std::begin(summary.total_load), std::end(summary.total_load), 0.0);
-  write_cloads(out, problem, static_cast<size_t>(stage - 1), summary);
+  write_cloads(out, problem, k, summary);
 }
 } // namespace
 
@@ -601,7 +735,6 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   const std::vector<ContactPairFaces> pairs = contact_pairs(problem, options, x, summary);
 
   write_mesh(out, problem, x, summary);
-  FETICON_CHECK(problem.amplitudes.empty(), "calculix export: amplitudes are not written by feticon export");
   FETICON_CHECK(std::ranges::all_of(
                     problem.steps,
                     [](const fem::Step& step) {
@@ -638,6 +771,7 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
     out << "*END STEP\n";
   };
   write_initial_temperatures(out, problem);
+  write_amplitudes(out, problem);
   write_step(out, problem, options, summary);
   write_temperatures(out, problem, problem.steps.front());
   output_requests();
@@ -646,7 +780,7 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
     const fem::LoadHistory history(problem, {.default_steps = options.increments});
     for (int stage = 2; stage <= history.n_stages(); ++stage)
     {
-      write_later_step(out, problem, history, stage, problem.steps[stage - 1], options, summary);
+      write_later_step(out, problem, history, stage, options, summary);
       write_temperatures(out, problem, problem.steps[stage - 1]);
       output_requests();
     }

@@ -16,11 +16,12 @@ fem::Amplitude amplitude(const YAML::Node& node, const std::string& key, const P
 {
   fem::Amplitude a;
   a.where = r.source + ": " + key;
-  YAML::Node table = node;
+  // Not `table = node["points"]` on a copy of `node`: yaml-cpp's assignment writes through to
+  // the node it refers to, which then lost its time and shifts.
+  const YAML::Node table = node.IsMap() ? node["points"] : node;
   if (node.IsMap())
   {
     r.only_keys(node, key, {"points", "time", "shift_x", "shift_y"});
-    table = node["points"];
     if (node["time"])
     {
       const std::string time = r.text(node["time"], key + ".time");
