@@ -427,8 +427,9 @@ void write_ties(std::ostream& out, const fem::Problem& problem)
 /// Per coupling (fem/coupling.hpp): its reference node, labelled after the mesh nodes (its DOFs
 /// 1-3 the translations, 4-6 the rotations, as CalculiX's *COUPLING REF NODE), the surface it
 /// drives (its faces, or its node set as a node surface) and the *COUPLING with *KINEMATIC (the
-/// components that follow the rigid motion) or *DISTRIBUTING (forces, and the moments it spreads).
-/// Mean couplings and pretension sections are refused.
+/// components that follow the rigid motion) or *DISTRIBUTING (forces, and the moments it spreads);
+/// a mean coupling as its DCOUP3D element and *DISTRIBUTING COUPLING with the nodes' weights.
+/// Pretension sections are refused.
 void write_couplings(std::ostream& out, const fem::Problem& problem)
 {
   if (problem.couplings.empty())
@@ -444,12 +445,24 @@ void write_couplings(std::ostream& out, const fem::Problem& problem)
   for (size_t k = 0; k < problem.couplings.size(); ++k)
   {
     const fem::Coupling& c = problem.couplings[k];
-    FETICON_CHECK(
-        c.kind == fem::CouplingKind::kinematic || c.kind == fem::CouplingKind::distributing,
-        "calculix export: " << c.name << ": "
-                            << (c.kind == fem::CouplingKind::mean ? "a mean coupling (*DISTRIBUTING COUPLING)"
-                                                                  : "a pretension section")
-                            << " is not written by feticon export (kinematic and distributing couplings are)");
+    FETICON_CHECK(c.kind != fem::CouplingKind::pretension,
+                  "calculix export: " << c.name
+                                      << ": a pretension section is not written by feticon export (kinematic, "
+                                         "distributing and mean couplings are)");
+    if (c.kind == fem::CouplingKind::mean)
+    {
+      // CalculiX's *DISTRIBUTING COUPLING takes its reference node from a DCOUP3D element
+      // (labelled after the cells), whose *SOLID SECTION CalculiX asks for (any material).
+      const std::string elset = "MEAN_" + std::to_string(k + 1);
+      out << "*ELEMENT, TYPE=DCOUP3D, ELSET=" << elset << '\n'
+          << mesh.n_cells() + k + 1 << ", " << mesh.n_nodes() + k + 1 << "\n*SOLID SECTION, ELSET=" << elset
+          << ", MATERIAL=" << deck_name("M_", mesh.body_names.front()) << "\n*DISTRIBUTING COUPLING, ELSET=" << elset
+          << '\n';
+      const std::vector<int32_t>& nodes = mesh.node_set(c.nodes);
+      for (size_t i = 0; i < nodes.size(); ++i)
+        out << nodes[i] + 1 << ", " << number(c.weights[i]) << '\n';
+      continue;
+    }
     const std::string surface = "COUPLING_" + std::to_string(k + 1);
     if (!c.faces.empty())
     {
