@@ -60,16 +60,13 @@ std::vector<std::pair<int32_t, int>> element_faces(const mesh::Mesh& mesh, const
   return out;
 }
 
-/// The one body the cells of a face set belong to.
-int32_t body_of_faces(const mesh::Mesh& mesh, const std::string& set, const std::vector<std::pair<int32_t, int>>& faces)
+/// The bodies the cells of faces belong to.
+std::set<int32_t> bodies_of(const mesh::Mesh& mesh, const std::vector<std::pair<int32_t, int>>& faces)
 {
   std::set<int32_t> bodies;
   for (const auto& [cell, f] : faces)
     bodies.insert(mesh.cell_body[cell]);
-  FETICON_CHECK(bodies.size() == 1,
-                "calculix export: contact surface '" << set << "' spans " << bodies.size()
-                                                     << " bodies; it must lie on one");
-  return *bodies.begin();
+  return bodies;
 }
 
 /// Area-weighted mean outward normal of a face set (unit), and its shortest face edge: the
@@ -153,15 +150,20 @@ std::vector<ContactPairFaces> contact_pairs(const fem::Problem& problem, const C
     ContactPairFaces pair;
     pair.slave = element_faces(mesh, names.slave, cells_of_node);
     pair.master = element_faces(mesh, names.master, cells_of_node);
-    const int32_t slave_body = body_of_faces(mesh, names.slave, pair.slave);
-    const int32_t master_body = body_of_faces(mesh, names.master, pair.master);
-    FETICON_CHECK(slave_body != master_body,
+    // A surface may span bodies (a deck's plate of two sections; a node surface's faces around
+    // a node of it that is a corner of none of its own).
+    const std::set<int32_t> slave_bodies = bodies_of(mesh, pair.slave), master_bodies = bodies_of(mesh, pair.master);
+    FETICON_CHECK(slave_bodies.size() != 1 || slave_bodies != master_bodies,
                   "calculix export: contact pair " << names.slave << " / " << names.master << " lies on one body");
     const double slave_size = mean_normal_and_size(mesh, names.slave).second;
     const Eigen::Vector3d master_normal = mean_normal_and_size(mesh, names.master).first;
-    const double young = std::max(problem.materials[slave_body].young, problem.materials[master_body].young);
+    double young = 0;
+    for (const std::set<int32_t>* bodies : {&slave_bodies, &master_bodies})
+      for (const int32_t b : *bodies)
+        young = std::max(young, problem.materials[b].young);
     pair.stiffness = options.contact_stiffness_factor * young / slave_size;
-    if (floats_along(problem, slave_body, master_normal) && !shifted_body[slave_body])
+    const int32_t slave_body = slave_bodies.size() == 1 ? *slave_bodies.begin() : -1;
+    if (slave_body >= 0 && floats_along(problem, slave_body, master_normal) && !shifted_body[slave_body])
     {
       const double shift = options.overclosure >= 0 ? options.overclosure : 0.02 * slave_size;
       for (int32_t c = 0; c < mesh.n_cells(); ++c)
@@ -364,6 +366,17 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
     for (const auto& [set, faces] :
          {std::pair{names.slave, &pairs[p].slave}, std::pair{names.master, &pairs[p].master}})
     {
+      // A deck's node surface stays one (its nodes, or those of its faces): CalculiX's law acts
+      // on the master face's area at a node that is a corner of none of its faces
+      // (fem::NormalLaw::on_master_face), and the nodes may be fewer than its faces'.
+      if (set == names.slave && (!names.slave_nodes.empty() || names.interaction.law.on_master_face))
+      {
+        out << "*SURFACE, NAME=" << deck_name("S_", set) << ", TYPE=NODE\n";
+        for (const int32_t n :
+             names.slave_nodes.empty() ? problem.mesh.face_set_nodes(set) : problem.mesh.node_set(names.slave_nodes))
+          out << n + 1 << '\n';
+        continue;
+      }
       out << "*SURFACE, NAME=" << deck_name("S_", set) << ", TYPE=ELEMENT\n";
       for (const auto& [cell, f] : *faces)
         out << cell + 1 << ", S" << f << '\n';
