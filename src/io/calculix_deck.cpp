@@ -437,6 +437,21 @@ void write_ties(std::ostream& out, const fem::Problem& problem)
   }
 }
 
+/// The deck's *EQUATIONs (Problem::equations) as they were read: the number of terms, then
+/// four (node, DOF, coefficient) triples a line.
+void write_equations(std::ostream& out, const fem::Problem& problem)
+{
+  for (const fem::LinearEquation& eq : problem.equations)
+  {
+    FETICON_CHECK(eq.rhs == 0,
+                  "calculix export: an equation with a right-hand side (" << eq.rhs << ") has no *EQUATION");
+    out << "*EQUATION\n" << eq.terms.size() << '\n';
+    for (size_t k = 0; k < eq.terms.size(); ++k)
+      out << eq.terms[k].node + 1 << ", " << eq.terms[k].component + 1 << ", " << number(eq.terms[k].coefficient)
+          << (k % 4 == 3 || k + 1 == eq.terms.size() ? "\n" : ", ");
+  }
+}
+
 /// Per coupling (fem/coupling.hpp): its reference node, labelled after the mesh nodes (its DOFs
 /// 1-3 the translations, 4-6 the rotations, as CalculiX's *COUPLING REF NODE), the surface it
 /// drives (its faces, or its node set as a node surface) and the *COUPLING with *KINEMATIC (the
@@ -778,6 +793,7 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   write_materials(out, problem);
   write_contact(out, problem, options, pairs);
   write_ties(out, problem);
+  write_equations(out, problem);
   write_couplings(out, problem);
   const auto output_requests = [&] {
     out << "*NODE FILE\nU, RF\n";
