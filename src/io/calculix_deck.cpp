@@ -403,15 +403,22 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
       out << "** Coulomb friction; the stick slope is the normal slope / " << options.stick_slope_ratio
           << " (src/io/calculix_deck.hpp)\n*FRICTION\n"
           << number(options.friction_coefficient) << ", " << number(stiffness / options.stick_slope_ratio) << '\n';
-    out << "*CONTACT PAIR, INTERACTION=" << interaction
-        << (node_to_segment ? ", TYPE=NODE TO SURFACE\n" : ", TYPE=SURFACE TO SURFACE\n")
+    out << "*CONTACT PAIR, INTERACTION=" << interaction;
+    // ADJUST by a distance or a node set (write_node_sets writes it): the slave nodes moved onto
+    // the master before the first increment, in both codes.
+    if (!names.adjust_nodes.empty())
+      out << ", ADJUST=" << deck_name("N_", names.adjust_nodes);
+    else if (names.adjust > 0)
+      out << ", ADJUST=" << number(names.adjust);
+    out << (node_to_segment ? ", TYPE=NODE TO SURFACE\n" : ", TYPE=SURFACE TO SURFACE\n")
         << deck_name("S_", names.slave) << ", " << deck_name("S_", names.master) << '\n';
   }
 }
 
-/// Per tie: its two *SURFACEs (named T_ apart from the contact pairs' S_) and the *TIE. A tie's
-/// formulation is not written: CalculiX ties node to face, and feticon reads the *TIE of a
-/// face-based slave surface back as mortar.
+/// Per tie: its two *SURFACEs (named T_ apart from the contact pairs' S_) and the *TIE; a cyclic
+/// symmetry tie with its *CYCLIC SYMMETRY MODEL. The formulation is the slave surface's kind, as
+/// the deck reader takes it: node to segment is a node surface (the tie's slave nodes, or its
+/// faces' nodes), mortar element faces.
 void write_ties(std::ostream& out, const fem::Problem& problem)
 {
   if (problem.ties.empty())
@@ -420,20 +427,35 @@ void write_ties(std::ostream& out, const fem::Problem& problem)
   const std::vector<std::vector<int32_t>> cells_of_node = cells_of_nodes(mesh);
   for (const fem::Tie& tie : problem.ties)
   {
-    FETICON_CHECK(tie.slave_nodes.empty(),
-                  "calculix export: tie " << tie.name << " ties the nodes of set '" << tie.slave_nodes
-                                          << "' only, which a deck's *TIE cannot say");
     for (const std::string& set : {tie.slave, tie.master})
     {
+      if (set == tie.slave && tie.formulation == fem::ContactFormulation::node_to_segment)
+      {
+        out << "*SURFACE, NAME=" << deck_name("T_", set) << ", TYPE=NODE\n";
+        for (const int32_t n : tie.slave_nodes.empty() ? mesh.face_set_nodes(set) : mesh.node_set(tie.slave_nodes))
+          out << n + 1 << '\n';
+        continue;
+      }
       out << "*SURFACE, NAME=" << deck_name("T_", set) << ", TYPE=ELEMENT\n";
       for (const auto& [cell, f] : element_faces(mesh, set, cells_of_node))
         out << cell + 1 << ", S" << f << '\n';
     }
-    out << "*TIE, NAME=" << deck_name("TIE_", tie.name);
+    const std::string name = deck_name("TIE_", tie.name);
+    out << "*TIE, NAME=" << name << (tie.cyclic ? ", CYCLIC SYMMETRY" : "");
     if (tie.position_tolerance > 0)
       out << ", POSITION TOLERANCE=" << number(tie.position_tolerance);
-    out << (tie.adjust ? "" : ", ADJUST=NO") << '\n'
+    out << (tie.adjust || tie.cyclic ? "" : ", ADJUST=NO") << '\n'
         << deck_name("T_", tie.slave) << ", " << deck_name("T_", tie.master) << '\n';
+    if (!tie.cyclic)
+      continue;
+    const fem::Tie::CyclicSymmetry& c = *tie.cyclic;
+    // N= as an integer where it is one (CalculiX reads the sectors that way).
+    const std::string sectors = c.sectors == std::round(c.sectors) && std::abs(c.sectors) < 1e9
+        ? std::to_string(static_cast<int64_t>(c.sectors))
+        : number(c.sectors);
+    out << "*CYCLIC SYMMETRY MODEL, N=" << sectors << ", TIE=" << name << '\n';
+    for (int k = 0; k < 6; ++k)
+      out << number(k < 3 ? c.axis_a(k) : c.axis_b(k - 3)) << (k < 5 ? ", " : "\n");
   }
 }
 
@@ -788,7 +810,11 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   for (const fem::Step& step : problem.steps)
     for (const fem::DirichletCondition& d : step.dirichlet)
       node_sets.insert(d.set);
-  write_node_sets(out, mesh, node_sets);
+  std::set<std::string> written_sets = node_sets; // the supports' (printed below) and ADJUST's
+  for (const fem::ContactPairNames& pair : problem.contacts)
+    if (!pair.adjust_nodes.empty())
+      written_sets.insert(pair.adjust_nodes);
+  write_node_sets(out, mesh, written_sets);
   write_frames(out, problem);
   write_materials(out, problem);
   write_contact(out, problem, options, pairs);

@@ -150,6 +150,12 @@ fi
 run ring4 "$work/ring4.inp"
 run ring8 "$work/ring8.inp"
 run cyclic8 "$work/cyclic8.inp"
+# The cyclic symmetry tie exported (*TIE, CYCLIC SYMMETRY and its *CYCLIC SYMMETRY MODEL; the export
+# wrote a plain tie before 2026-12-04): the exported deck's run is cyclic8's, the same iterations, to 1e-9.
+"$feticon" export "$work/cyclic8.inp" --format calculix --overclosure 0 -o "$work/cyclic8-deck" > /dev/null
+grep -q '^\*CYCLIC SYMMETRY MODEL, N=12, TIE=TIE_CS$' "$work/cyclic8-deck/feticon.inp"
+run cyclic8x "$work/cyclic8-deck/feticon.inp"
+/usr/bin/python3 "$src/tests/tools/compare_runs.py" 1e-9 "$work/cyclic8" "$work/cyclic8x"
 
 /usr/bin/python3 - "$src" "$work" "${runs[@]}" <<'PY'
 import json, math, sys
