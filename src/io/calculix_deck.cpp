@@ -382,8 +382,9 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
         out << cell + 1 << ", S" << f << '\n';
     }
     const std::string interaction = "SI_" + std::to_string(p + 1);
-    // A node-to-surface pair's LINEAR law has CalculiX's tension sigma_inf (E / 70 000 where the
-    // line gives none): 0 keeps it p = K d, the law feticon solves.
+    // A node-to-surface pair's LINEAR law has a tension sigma_inf, E / 70 000 where the line gives
+    // none or one <= 0 (CalculiX's surfacebehaviors.f, and the deck reader): a deck's own law
+    // keeps its value, hard contact written as a penalty gets that default.
     const bool node_to_segment = p < options.node_to_segment.size() && options.node_to_segment[p];
     // A pair's own law is written as it is; hard contact as CalculiX's penalty (above).
     const fem::NormalLaw& law = names.interaction.law;
@@ -397,8 +398,11 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
       for (const auto& [overclosure, pressure] : law.table)
         out << number(pressure) << ", " << number(overclosure) << '\n';
     }
+    else if (node_to_segment)
+      out << "LINEAR\n"
+          << number(stiffness) << ", " << number(law.kind == fem::NormalLawKind::linear ? law.sigma_inf : 0.0) << '\n';
     else
-      out << "LINEAR\n" << number(stiffness) << (node_to_segment ? ", 0.0" : "") << '\n';
+      out << "LINEAR\n" << number(stiffness) << '\n';
     if (options.friction_coefficient > 0)
       out << "** Coulomb friction; the stick slope is the normal slope / " << options.stick_slope_ratio
           << " (src/io/calculix_deck.hpp)\n*FRICTION\n"

@@ -100,3 +100,14 @@ grep -q '^\*CONTACT PAIR, INTERACTION=SI_1, ADJUST=5.000000000000e-03, TYPE=SURF
 "$feticon" run "$src/tests/data/calculix/punch1.inp" -o "$work/punch1" -q --set output.plots=false 2> /dev/null
 "$feticon" run "$work/punch1-deck/feticon.inp" -o "$work/punch1-from-deck" -q --set output.plots=false 2> /dev/null
 /usr/bin/python3 "$src/tests/tools/compare_runs.py" 1e-9 "$work/punch1" "$work/punch1-from-deck"
+
+# A node-to-surface LINEAR law keeps its tension sigma_inf (the export wrote 0, which the reader
+# takes for CalculiX's default E / 70 000): contact6 with sigma_inf = 30 (its 3 is that default),
+# contact.law=deck: the exported deck's run is the deck's, difference 0 (with 0 written: 3.2e-4).
+sed 's/^1.E9,3.$/1.E9,30./' "$src/tests/data/calculix/contact6.inp" > "$work/contact6.inp"
+"$feticon" export "$work/contact6.inp" --format calculix --overclosure 0 -o "$work/contact6-deck" > /dev/null
+grep -A1 'PRESSURE-OVERCLOSURE=LINEAR' "$work/contact6-deck/feticon.inp" | grep -q '^1.000000000000e+09, 3.000000000000e+01$'
+"$feticon" run "$work/contact6.inp" -o "$work/contact6" -q --set output.plots=false --set contact.law=deck 2> /dev/null
+"$feticon" run "$work/contact6-deck/feticon.inp" -o "$work/contact6-from-deck" -q --set output.plots=false \
+  --set contact.law=deck 2> /dev/null
+/usr/bin/python3 "$src/tests/tools/compare_runs.py" 1e-9 "$work/contact6" "$work/contact6-from-deck"
