@@ -52,24 +52,24 @@ void export_model(const ExportOptions& options)
   deck.increments = solver.steps_of(problem);
   deck.contact_stiffness_factor = options.contact_stiffness_factor;
   deck.overclosure = options.overclosure;
-  for (size_t p = 0; p < problem.contacts.size(); ++p)
+  deck.friction.assign(problem.steps.size(), std::vector<double>(problem.contacts.size(), 0.0));
+  for (int32_t p = 0; p < std::ssize(problem.contacts); ++p)
   {
+    deck.node_to_segment.push_back(solver.interaction(problem.contacts[p]).formulation ==
+                                   fem::ContactFormulation::node_to_segment);
     // CalculiX's *FRICTION is Coulomb's law; a slip bound independent of the pressure has no
     // keyword there, and writing Coulomb instead would compare two different models.
-    const fem::ContactInteraction interaction = solver.interaction(problem.contacts[p]);
-    deck.node_to_segment.push_back(interaction.formulation == fem::ContactFormulation::node_to_segment);
-    const nonlinear::Friction friction = interaction.friction;
-    FETICON_CHECK(friction.model != nonlinear::FrictionModel::tresca,
-                  "export: Tresca friction (contact pair " << p
-                                                           << ") has no CalculiX equivalent: ccx's *FRICTION is "
-                                                              "Coulomb's law (mu times the pressure); export with "
-                                                              "coulomb or none");
-    const double mu = friction.model == nonlinear::FrictionModel::coulomb ? friction.coefficient : 0.0;
-    FETICON_CHECK(p == 0 || mu == deck.friction_coefficient,
-                  "export: contact pair " << p << " has friction coefficient " << mu << ", pair 0 "
-                                          << deck.friction_coefficient
-                                          << "; the export writes one interaction for every pair");
-    deck.friction_coefficient = mu;
+    for (size_t k = 0; k < problem.steps.size(); ++k)
+    {
+      const nonlinear::Friction friction = solver.interaction(problem, p, k).friction;
+      FETICON_CHECK(friction.model != nonlinear::FrictionModel::tresca,
+                    "export: Tresca friction (contact pair " << p
+                                                             << ") has no CalculiX equivalent: ccx's *FRICTION is "
+                                                                "Coulomb's law (mu times the pressure); export with "
+                                                                "coulomb or none");
+      deck.friction[k][static_cast<size_t>(p)] =
+          friction.model == nonlinear::FrictionModel::coulomb ? friction.coefficient : 0.0;
+    }
   }
 
   std::ostringstream text;
@@ -87,7 +87,7 @@ void export_model(const ExportOptions& options)
           << " nodal loads, total (" << s.total_load[0] << ", " << s.total_load[1] << ", " << s.total_load[2] << ") N, "
           << deck.increments << " increment(s)" << (deck.nlgeom ? ", NLGEOM" : "");
   if (s.stick_slope > 0)
-    message << ", Coulomb friction mu = " << deck.friction_coefficient << " (stick slope " << s.stick_slope << " Pa/m)";
+    message << ", Coulomb friction mu = " << s.friction_coefficient << " (stick slope " << s.stick_slope << " Pa/m)";
   if (s.overclosure > 0)
     message << ", floating slave body shifted " << s.overclosure << " m into its master";
   log::info(message.str());

@@ -129,6 +129,12 @@ std::vector<std::vector<int32_t>> cells_of_nodes(const mesh::Mesh& mesh)
   return out;
 }
 
+/// Coulomb's mu of pair `pair` in step `step` (CalculixOptions::friction; 0 where not given).
+double friction_of(const CalculixOptions& options, size_t step, size_t pair)
+{
+  return step < options.friction.size() && pair < options.friction[step].size() ? options.friction[step][pair] : 0.0;
+}
+
 /// The faces of a contact pair and its penalty stiffness.
 struct ContactPairFaces
 {
@@ -180,8 +186,11 @@ std::vector<ContactPairFaces> contact_pairs(const fem::Problem& problem, const C
   summary.n_contact_pairs = static_cast<int64_t>(pairs.size());
   if (!pairs.empty())
     summary.contact_stiffness = pairs.front().stiffness;
-  if (!pairs.empty() && options.friction_coefficient > 0)
+  if (!pairs.empty() && friction_of(options, 0, 0) > 0)
+  {
+    summary.friction_coefficient = friction_of(options, 0, 0);
     summary.stick_slope = pairs.front().stiffness / options.stick_slope_ratio;
+  }
   return pairs;
 }
 
@@ -354,6 +363,12 @@ void write_temperatures(std::ostream& out, const fem::Problem& problem, const fe
   }
 }
 
+/// The slope K of a pair's LINEAR law as written: its own law's, else the penalty of hard contact.
+double normal_slope(const fem::ContactPairNames& names, const ContactPairFaces& pair)
+{
+  return names.interaction.law.kind == fem::NormalLawKind::linear ? names.interaction.law.slope : pair.stiffness;
+}
+
 /// Per contact pair: its two *SURFACEs, a linear pressure-overclosure interaction (with
 /// *FRICTION for Coulomb friction) and the *CONTACT PAIR (node to surface for node-to-segment
 /// rows, else surface to surface).
@@ -388,7 +403,7 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
     const bool node_to_segment = p < options.node_to_segment.size() && options.node_to_segment[p];
     // A pair's own law is written as it is; hard contact as CalculiX's penalty (above).
     const fem::NormalLaw& law = names.interaction.law;
-    const double stiffness = law.kind == fem::NormalLawKind::linear ? law.slope : pairs[p].stiffness;
+    const double stiffness = normal_slope(names, pairs[p]);
     out << "*SURFACE INTERACTION, NAME=" << interaction << "\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=";
     if (law.kind == fem::NormalLawKind::exponential)
       out << "EXPONENTIAL\n" << number(law.c0) << ", " << number(law.p0) << '\n';
@@ -403,10 +418,19 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
           << number(stiffness) << ", " << number(law.kind == fem::NormalLawKind::linear ? law.sigma_inf : 0.0) << '\n';
     else
       out << "LINEAR\n" << number(stiffness) << '\n';
-    if (options.friction_coefficient > 0)
+    // Friction in some step: *FRICTION from the first (CalculiX asks mu > 0 there), changed
+    // by the steps (write_model_changes).
+    bool friction = false;
+    for (size_t k = 0; k < problem.steps.size(); ++k)
+      friction = friction || friction_of(options, k, p) > 0;
+    FETICON_CHECK(!friction || friction_of(options, 0, p) > 0,
+                  "calculix export: contact pair " << names.slave << " / " << names.master
+                                                   << " has friction in a later step but none in the first, which "
+                                                      "CalculiX cannot say (its *FRICTION asks mu > 0)");
+    if (friction)
       out << "** Coulomb friction; the stick slope is the normal slope / " << options.stick_slope_ratio
           << " (src/io/calculix_deck.hpp)\n*FRICTION\n"
-          << number(options.friction_coefficient) << ", " << number(stiffness / options.stick_slope_ratio) << '\n';
+          << number(friction_of(options, 0, p)) << ", " << number(stiffness / options.stick_slope_ratio) << '\n';
     out << "*CONTACT PAIR, INTERACTION=" << interaction;
     // ADJUST by a distance or a node set (write_node_sets writes it): the slave nodes moved onto
     // the master before the first increment, in both codes.
@@ -660,14 +684,53 @@ void write_cloads(std::ostream& out, const fem::Problem& problem, size_t step, C
   }
 }
 
+/// The changes of step `step` (0-based) to the contact pairs: *MODEL CHANGE, TYPE=CONTACT PAIR,
+/// REMOVE or ADD where a pair leaves or comes back into force (fem::Step::removed_contacts), and
+/// *CHANGE FRICTION with its *FRICTION where a pair's mu changes (CalculixOptions::friction).
+void write_model_changes(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
+                         const std::vector<ContactPairFaces>& pairs, size_t step)
+{
+  const auto in_force = [&](size_t k, int32_t p) {
+    return std::ranges::find(problem.steps[k].removed_contacts, p) == problem.steps[k].removed_contacts.end();
+  };
+  for (const bool add : {false, true})
+  {
+    std::vector<int32_t> changed;
+    for (int32_t p = 0; p < std::ssize(problem.contacts); ++p)
+      if (in_force(step, p) == add && (step == 0 ? !add : in_force(step - 1, p) != add))
+        changed.push_back(p);
+    if (changed.empty())
+      continue;
+    out << "*MODEL CHANGE, TYPE=CONTACT PAIR, " << (add ? "ADD" : "REMOVE") << '\n';
+    for (const int32_t p : changed)
+      out << deck_name("S_", problem.contacts[p].slave) << ", " << deck_name("S_", problem.contacts[p].master) << '\n';
+  }
+  if (step == 0)
+    return;
+  for (size_t p = 0; p < problem.contacts.size(); ++p)
+  {
+    const double mu = friction_of(options, step, p);
+    if (mu == friction_of(options, step - 1, p))
+      continue;
+    FETICON_CHECK(mu > 0,
+                  "calculix export: step " << step + 1 << " takes the friction of contact pair "
+                                           << problem.contacts[p].slave << " / " << problem.contacts[p].master
+                                           << " away, which CalculiX cannot say (its *FRICTION asks mu > 0)");
+    out << "*CHANGE FRICTION, INTERACTION=SI_" << p + 1 << "\n*FRICTION\n"
+        << number(mu) << ", " << number(normal_slope(problem.contacts[p], pairs[p]) / options.stick_slope_ratio)
+        << '\n';
+  }
+}
+
 /// The first *STEP with its increments (write_step_start), *BOUNDARY (supports, plane strain;
 /// a block per amplitude) and *CLOAD (write_cloads).
 void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
-                CalculixDeckSummary& summary)
+                const std::vector<ContactPairFaces>& pairs, CalculixDeckSummary& summary)
 {
   const mesh::Mesh& mesh = problem.mesh;
   const fem::Step& step = problem.steps.front();
   write_step_start(out, step, options);
+  write_model_changes(out, problem, options, pairs, 0);
   for (const std::string& group : amplitude_groups(step))
   {
     const bool any =
@@ -739,10 +802,12 @@ void write_frames(std::ostream& out, const fem::Problem& problem)
 /// whole external force (write_cloads; *CLOAD, OP=NEW drops the last step's loads), reached
 /// linearly in its increments, as feticon's load history runs from one stage's end to the next.
 void write_later_step(std::ostream& out, const fem::Problem& problem, const fem::LoadHistory& history, int stage,
-                      const CalculixOptions& options, CalculixDeckSummary& summary)
+                      const CalculixOptions& options, const std::vector<ContactPairFaces>& pairs,
+                      CalculixDeckSummary& summary)
 {
   const auto k = static_cast<size_t>(stage - 1);
   write_step_start(out, problem.steps[k], options);
+  write_model_changes(out, problem, options, pairs, k);
   // The same held DOFs and no amplitude in this step or the one before: the values that
   // changed (*BOUNDARY keeps the others). Otherwise all of them anew, a block per amplitude (a
   // DOF held from here on without amplitude ramps from its displacement in both codes).
@@ -788,8 +853,9 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   FETICON_CHECK(std::isfinite(options.contact_stiffness_factor) && options.contact_stiffness_factor > 0,
                 "calculix export: contact stiffness factor " << options.contact_stiffness_factor
                                                              << " must be positive");
-  FETICON_CHECK(std::isfinite(options.friction_coefficient) && options.friction_coefficient >= 0,
-                "calculix export: friction coefficient " << options.friction_coefficient << " must be >= 0");
+  for (const std::vector<double>& step : options.friction)
+    for (const double mu : step)
+      FETICON_CHECK(std::isfinite(mu) && mu >= 0, "calculix export: friction coefficient " << mu << " must be >= 0");
   FETICON_CHECK(std::isfinite(options.stick_slope_ratio) && options.stick_slope_ratio > 0,
                 "calculix export: stick slope ratio " << options.stick_slope_ratio << " must be positive");
   const mesh::Mesh& mesh = problem.mesh;
@@ -802,14 +868,11 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   const std::vector<ContactPairFaces> pairs = contact_pairs(problem, options, x, summary);
 
   write_mesh(out, problem, x, summary);
-  FETICON_CHECK(std::ranges::all_of(
-                    problem.steps,
-                    [](const fem::Step& step) {
-    return step.removed_contacts.empty() && step.removed_ties.empty() && step.changed_friction.empty() &&
-        step.changed_law.empty();
-                    }),
-                "calculix export: contact pairs removed, tied or given another friction or law in a step (*MODEL "
-                "CHANGE, *CHANGE SURFACE BEHAVIOR, *CHANGE FRICTION) are not written by feticon export");
+  FETICON_CHECK(
+      std::ranges::all_of(problem.steps,
+                          [](const fem::Step& step) { return step.removed_ties.empty() && step.changed_law.empty(); }),
+      "calculix export: a tie taken out of force or a contact law changed in a step (*CHANGE SURFACE "
+      "BEHAVIOR) is not written by feticon export (*MODEL CHANGE and *CHANGE FRICTION are)");
   std::set<std::string> node_sets;
   for (const fem::Step& step : problem.steps)
     for (const fem::DirichletCondition& d : step.dirichlet)
@@ -844,7 +907,7 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   };
   write_initial_temperatures(out, problem);
   write_amplitudes(out, problem);
-  write_step(out, problem, options, summary);
+  write_step(out, problem, options, pairs, summary);
   write_temperatures(out, problem, problem.steps.front());
   output_requests();
   if (problem.steps.size() > 1)
@@ -852,7 +915,7 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
     const fem::LoadHistory history(problem, {.default_steps = options.increments});
     for (int stage = 2; stage <= history.n_stages(); ++stage)
     {
-      write_later_step(out, problem, history, stage, options, summary);
+      write_later_step(out, problem, history, stage, options, pairs, summary);
       write_temperatures(out, problem, problem.steps[stage - 1]);
       output_requests();
     }

@@ -20,7 +20,7 @@
 ///    factor, not the mesh, sets its share of the compliance. The default 5 is CalculiX's most
 ///    accurate choice on Hertz (docs/measurements.md); stiffer springs make CalculiX's nodal
 ///    pressures oscillate between neighbouring nodes and slow its Newton loop;
-///  - with Coulomb friction (friction_coefficient mu > 0), *FRICTION under each interaction:
+///  - with Coulomb friction (`friction`, mu > 0), *FRICTION under each interaction:
 ///    mu and CalculiX's stick slope lambda = K / stick_slope_ratio (Pa/m: shear stress per
 ///    elastic slip of the face-to-face penalty; see stick_slope_ratio). Tresca's law has no
 ///    CalculiX keyword, so feticon export refuses it (app/export_command.cpp);
@@ -56,8 +56,10 @@ struct CalculixOptions
   double contact_stiffness_factor = 5.0;
   /// Shift (m) of a floating slave body into its master; < 0: 2 % of the shortest slave face edge.
   double overclosure = -1.0;
-  /// Coulomb's mu of every pair; 0: frictionless (no *FRICTION).
-  double friction_coefficient = 0.0;
+  /// Coulomb's mu of each pair in each step, friction[step][pair] (0: frictionless); empty:
+  /// every pair frictionless. A pair with friction has *FRICTION in its interaction (CalculiX
+  /// asks mu > 0 there), and a step where its mu changes *CHANGE FRICTION.
+  std::vector<std::vector<double>> friction = {};
   /// CalculiX's stick slope lambda as K / this ratio. The ccx 2.11 manual asks for lambda about
   /// 10 times (*FRICTION) or 100 times (its contact chapter) smaller than the normal spring
   /// constant; 50 sits between. With K = 5 E / h the stick then allows an elastic slip of
@@ -76,6 +78,7 @@ struct CalculixDeckSummary
   double total_load[3] = {0, 0, 0}; ///< sum of the *CLOAD forces (N) of the last step
   double contact_stiffness = 0;     ///< K of the first pair (Pa/m)
   double stick_slope = 0;           ///< lambda of the first pair's *FRICTION (Pa/m), 0 if none
+  double friction_coefficient = 0;  ///< mu of the first pair's *FRICTION, 0 if none
   double overclosure = 0;           ///< shift applied to floating slave bodies (m), 0 if none
 };
 

@@ -62,6 +62,15 @@ removed = json.load(open(f"{work}/removed/summary.json"))
 assert removed["converged"] and removed["contact"]["total_normal_force"] == 0, removed["contact"]
 print("removed: no contact force")
 PY
+# Both exported (*CHANGE FRICTION with its *FRICTION, *MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE;
+# refused before 2026-12-04) and run again: the problem file's answer (1e-8; measured 4.9e-14 and 1.7e-14).
+for run in changed removed; do
+  "$feticon" export "$work/$run.yaml" --format calculix --overclosure 0 -o "$work/$run-deck" >/dev/null
+  "$feticon" run -q "$work/$run-deck/feticon.inp" --output "$work/$run-from-deck" "${settings[@]}" --set subdomains=4 2>/dev/null
+  /usr/bin/python3 "$(dirname "$0")/../tools/compare_runs.py" 1e-8 "$work/$run" "$work/$run-from-deck" --answer
+done
+grep -q '^\*CHANGE FRICTION, INTERACTION=SI_1$' "$work/changed-deck/feticon.inp"
+grep -q '^\*MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE$' "$work/removed-deck/feticon.inp"
 sed 's/contact: \[{pair: 0,/contact: [{pair: 3,/' "$work/changed.yaml" >"$work/bad.yaml"
 if "$feticon" run -q "$work/bad.yaml" --output "$work/bad" >"$work/bad.log" 2>&1; then echo "pair 3 accepted"; exit 1; fi
 grep -q "steps.2.contact.0.pair = 3 is not an index into the contact list (1 pairs)" "$work/bad.log" || { cat "$work/bad.log"; exit 1; }

@@ -203,7 +203,7 @@ TEST(CalculixDeck, CoulombFrictionGoesUnderTheInteraction)
   EXPECT_EQ(plain.str().find("*FRICTION"), std::string::npos);
 
   CalculixOptions options;
-  options.friction_coefficient = 0.3;
+  options.friction = {{0.3}};
   std::ostringstream text;
   const CalculixDeckSummary summary = write_calculix_deck(punch_problem(false), options, text);
   const auto deck = blocks(text.str());
@@ -228,24 +228,35 @@ TEST(CalculixDeck, CoulombFrictionGoesUnderTheInteraction)
   EXPECT_NEAR(std::stod(friction[1]), 5 * 2e11 / 0.1 / 50, 1e-12 * 2e11);
   EXPECT_NEAR(summary.stick_slope, std::stod(friction[1]), 1e-12 * 2e11);
 
-  options.friction_coefficient = -0.1;
+  options.friction = {{-0.1}};
   EXPECT_THROW(write_calculix_deck(punch_problem(false), options, text), Error);
 }
 
-TEST(CalculixDeck, RefusesAContactSurfaceOnTwoBodies)
+// A contact surface may span bodies (CalculiX's bolt: a plate of two sections); a pair whose two
+// surfaces lie on one body is refused.
+TEST(CalculixDeck, ContactSurfacesMaySpanBodiesButAPairNotLieOnOne)
 {
   fem::Problem problem = punch_problem(false);
   auto& slave = problem.mesh.face_sets["punch_ymin"];
   slave.push_back(problem.mesh.face_set("base_ymin").front());
   std::ostringstream text;
+  write_calculix_deck(problem, CalculixOptions{}, text);
+  const auto deck = blocks(text.str());
+  const auto surface =
+      std::ranges::find_if(deck, [](const auto& b) { return b.first.starts_with("*SURFACE, NAME=S_punch_ymin"); });
+  ASSERT_NE(surface, deck.end());
+  EXPECT_EQ(surface->second.size(), problem.mesh.face_set("punch_ymin").size());
+
+  fem::Problem one_body = punch_problem(false);
+  one_body.contacts.front().master = "punch_ymax";
   try
   {
-    write_calculix_deck(problem, CalculixOptions{}, text);
+    write_calculix_deck(one_body, CalculixOptions{}, text);
     FAIL() << "expected an error";
   }
   catch (const Error& e)
   {
-    EXPECT_NE(std::string(e.what()).find("'punch_ymin' spans 2 bodies"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("lies on one body"), std::string::npos) << e.what();
   }
 }
 } // namespace

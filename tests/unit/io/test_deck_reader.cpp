@@ -333,7 +333,7 @@ TEST(DeckReader, ExportedFrictionReadsBackAsCoulombsMu)
 {
   CalculixOptions options;
   options.overclosure = 0;
-  options.friction_coefficient = 0.35;
+  options.friction = {{0.35}};
   const auto dir = test::fresh_directory("deck_friction_round_trip");
   std::ostringstream text;
   write_calculix_deck(punch_problem(), options, text);
