@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <set>
 #include <tuple>
 
@@ -119,6 +120,43 @@ bool floats_along(const fem::Problem& problem, int32_t body, const Eigen::Vector
 /// Node coordinates as the deck writes them (slave bodies shifted, see contact_pairs).
 using Coordinates = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
+/// Deck labels of the mesh nodes, n + 1, but for a pretension section's doubled nodes
+/// (fem::Coupling::partners): CalculiX makes them again when it reads the section, so the deck
+/// has no such node, its cells name the originals, and anything else that would name one is
+/// refused in one line.
+class DeckNodes
+{
+public:
+  explicit DeckNodes(const fem::Problem& problem) : _original(problem.mesh.n_nodes(), -1)
+  {
+    for (const fem::Coupling& c : problem.couplings)
+      if (c.kind == fem::CouplingKind::pretension)
+      {
+        const std::vector<int32_t>& olds = problem.mesh.node_set(c.nodes);
+        const std::vector<int32_t>& news = problem.mesh.node_set(c.partners);
+        for (size_t i = 0; i < news.size(); ++i)
+          _original[news[i]] = olds[i];
+      }
+  }
+  bool doubled(int32_t n) const { return _original[n] >= 0; }
+  /// The label a cell names node n by: its original's for a doubled node.
+  int64_t cell_label(int32_t n) const { return (doubled(n) ? _original[n] : n) + int64_t{1}; }
+  /// @throws feticon::Error naming `what` for a doubled node
+  int64_t label(int32_t n, const std::string& what) const
+  {
+    FETICON_CHECK(!doubled(n),
+                  "calculix export: " << what << " names node " << n + 1
+                                      << ", which a pretension section doubled; CalculiX doubles the "
+                                         "section's nodes when it reads the deck, so a deck cannot name it");
+    return n + int64_t{1};
+  }
+  /// The original of a doubled node (itself for the others).
+  int32_t original(int32_t n) const { return doubled(n) ? _original[n] : n; }
+
+private:
+  std::vector<int32_t> _original; ///< per mesh node, -1 where it is no doubled node
+};
+
 /// The cells of every node (element_faces' lookup).
 std::vector<std::vector<int32_t>> cells_of_nodes(const mesh::Mesh& mesh)
 {
@@ -209,7 +247,7 @@ std::string calculix_element_name(mesh::CellKind kind, bool reduced, mesh::Plana
 
 /// The deck's heading, *NODE (coordinates x) and one *ELEMENT block per body.
 void write_mesh(std::ostream& out, const fem::Problem& problem, const Coordinates& x,
-                const CalculixDeckSummary& summary)
+                const CalculixDeckSummary& summary, const DeckNodes& nodes)
 {
   const mesh::Mesh& mesh = problem.mesh;
   out << "** CalculiX deck of the feticon problem '" << problem.name << "' (feticon export --format calculix)\n"
@@ -219,7 +257,8 @@ void write_mesh(std::ostream& out, const fem::Problem& problem, const Coordinate
         << " m into their master (see src/io/calculix_deck.hpp).\n";
   out << "*HEADING\nfeticon " << problem.name << "\n*NODE, NSET=NALL\n";
   for (int32_t n = 0; n < mesh.n_nodes(); ++n)
-    out << n + 1 << ", " << number(x(n, 0)) << ", " << number(x(n, 1)) << ", " << number(x(n, 2)) << '\n';
+    if (!nodes.doubled(n))
+      out << n + 1 << ", " << number(x(n, 0)) << ", " << number(x(n, 1)) << ", " << number(x(n, 2)) << '\n';
   for (int32_t b = 0; b < mesh.n_bodies(); ++b)
   {
     // One *ELEMENT block per cell type of the body, and integration (C3D20 and C3D20R).
@@ -240,7 +279,7 @@ void write_mesh(std::ostream& out, const fem::Problem& problem, const Coordinate
             // CalculiX reads at most 16 entries a line: the label and 15 nodes, then the rest.
             const std::span<const int32_t> cell = mesh.cells[c];
             for (size_t k = 0; k < cell.size(); ++k)
-              out << (k == 15 ? ",\n" : ", ") << cell[k] + 1;
+              out << (k == 15 ? ",\n" : ", ") << nodes.cell_label(cell[k]);
             out << '\n';
           }
       }
@@ -248,14 +287,15 @@ void write_mesh(std::ostream& out, const fem::Problem& problem, const Coordinate
 }
 
 /// One *NSET per node set that a support names, 16 nodes a line.
-void write_node_sets(std::ostream& out, const mesh::Mesh& mesh, const std::set<std::string>& node_sets)
+void write_node_sets(std::ostream& out, const mesh::Mesh& mesh, const std::set<std::string>& node_sets,
+                     const DeckNodes& nodes)
 {
   for (const std::string& name : node_sets)
   {
     out << "*NSET, NSET=" << deck_name("N_", name) << '\n';
     int k = 0;
     for (int32_t n : mesh.node_set(name))
-      out << n + 1 << (++k % 16 == 0 ? ",\n" : ", ");
+      out << nodes.label(n, "node set " + name) << (++k % 16 == 0 ? ",\n" : ", ");
     out << '\n';
   }
 }
@@ -326,30 +366,40 @@ void write_amplitudes(std::ostream& out, const fem::Problem& problem)
 
 /// *INITIAL CONDITIONS, TYPE=TEMPERATURE: every node where the model has temperatures, and the
 /// nodes whose T_0 is not 0.
-void write_initial_temperatures(std::ostream& out, const fem::Problem& problem)
+void write_initial_temperatures(std::ostream& out, const fem::Problem& problem, const DeckNodes& nodes)
 {
   // CalculiX refuses a *TEMPERATURE without thermal *INITIAL CONDITIONS (temperatures.f): a
   // model with temperatures gets them for every node, 0 (feticon's default T_0) first.
   if (problem.has_temperatures())
     out << "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 0.0\n";
   bool header = problem.has_temperatures();
-  for (size_t n = 0; n < problem.initial_temperatures.size(); ++n)
-    if (problem.initial_temperatures[n] != 0)
+  const std::vector<double>& t0 = problem.initial_temperatures;
+  for (int32_t n = 0; n < std::ssize(t0); ++n)
+    // A doubled node takes its original's T_0 when CalculiX doubles it again.
+    if (t0[n] != 0 && !(nodes.doubled(n) && t0[n] == t0[nodes.original(n)]))
     {
       if (!header)
         out << "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n";
       header = true;
-      out << n + 1 << ", " << number(problem.initial_temperatures[n]) << '\n';
+      out << nodes.label(n, "an initial temperature") << ", " << number(t0[n]) << '\n';
     }
 }
 
 /// A step's *TEMPERATURE, OP=NEW (the nodes it does not name go back to T_0, as in
 /// fem::TemperatureHistory), then a *TEMPERATURE, AMPLITUDE= per amplitude; nothing for a
 /// problem without temperatures.
-void write_temperatures(std::ostream& out, const fem::Problem& problem, const fem::Step& step)
+void write_temperatures(std::ostream& out, const fem::Problem& problem, const fem::Step& step, const DeckNodes& nodes)
 {
   if (!problem.has_temperatures())
     return;
+  // A doubled node takes its original's temperature when CalculiX doubles it again.
+  std::map<int32_t, std::pair<double, std::string>> given;
+  for (const fem::NodalTemperature& t : step.temperatures)
+    given[t.node] = {t.value, t.amplitude};
+  const auto as_original = [&](const fem::NodalTemperature& t) {
+    const auto original = given.find(nodes.original(t.node));
+    return nodes.doubled(t.node) && original != given.end() && original->second == given[t.node];
+  };
   for (const std::string& group : amplitude_groups(step))
   {
     const bool any =
@@ -358,8 +408,8 @@ void write_temperatures(std::ostream& out, const fem::Problem& problem, const fe
       continue;
     out << "*TEMPERATURE" << (group.empty() ? ", OP=NEW" : amplitude_parameter(group)) << '\n';
     for (const fem::NodalTemperature& t : step.temperatures)
-      if (t.amplitude == group)
-        out << t.node + 1 << ", " << number(t.value) << '\n';
+      if (t.amplitude == group && !as_original(t))
+        out << nodes.label(t.node, "a temperature") << ", " << number(t.value) << '\n';
   }
 }
 
@@ -373,7 +423,7 @@ double normal_slope(const fem::ContactPairNames& names, const ContactPairFaces& 
 /// *FRICTION for Coulomb friction) and the *CONTACT PAIR (node to surface for node-to-segment
 /// rows, else surface to surface).
 void write_contact(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
-                   const std::vector<ContactPairFaces>& pairs)
+                   const std::vector<ContactPairFaces>& pairs, const DeckNodes& nodes)
 {
   for (size_t p = 0; p < pairs.size(); ++p)
   {
@@ -389,7 +439,7 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
         out << "*SURFACE, NAME=" << deck_name("S_", set) << ", TYPE=NODE\n";
         for (const int32_t n :
              names.slave_nodes.empty() ? problem.mesh.face_set_nodes(set) : problem.mesh.node_set(names.slave_nodes))
-          out << n + 1 << '\n';
+          out << nodes.label(n, "contact surface " + set) << '\n';
         continue;
       }
       out << "*SURFACE, NAME=" << deck_name("S_", set) << ", TYPE=ELEMENT\n";
@@ -447,7 +497,7 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
 /// symmetry tie with its *CYCLIC SYMMETRY MODEL. The formulation is the slave surface's kind, as
 /// the deck reader takes it: node to segment is a node surface (the tie's slave nodes, or its
 /// faces' nodes), mortar element faces.
-void write_ties(std::ostream& out, const fem::Problem& problem)
+void write_ties(std::ostream& out, const fem::Problem& problem, const DeckNodes& nodes)
 {
   if (problem.ties.empty())
     return;
@@ -461,7 +511,7 @@ void write_ties(std::ostream& out, const fem::Problem& problem)
       {
         out << "*SURFACE, NAME=" << deck_name("T_", set) << ", TYPE=NODE\n";
         for (const int32_t n : tie.slave_nodes.empty() ? mesh.face_set_nodes(set) : mesh.node_set(tie.slave_nodes))
-          out << n + 1 << '\n';
+          out << nodes.label(n, "tie surface " + set) << '\n';
         continue;
       }
       out << "*SURFACE, NAME=" << deck_name("T_", set) << ", TYPE=ELEMENT\n";
@@ -489,7 +539,7 @@ void write_ties(std::ostream& out, const fem::Problem& problem)
 
 /// The deck's *EQUATIONs (Problem::equations) as they were read: the number of terms, then
 /// four (node, DOF, coefficient) triples a line.
-void write_equations(std::ostream& out, const fem::Problem& problem)
+void write_equations(std::ostream& out, const fem::Problem& problem, const DeckNodes& nodes)
 {
   for (const fem::LinearEquation& eq : problem.equations)
   {
@@ -497,8 +547,8 @@ void write_equations(std::ostream& out, const fem::Problem& problem)
                   "calculix export: an equation with a right-hand side (" << eq.rhs << ") has no *EQUATION");
     out << "*EQUATION\n" << eq.terms.size() << '\n';
     for (size_t k = 0; k < eq.terms.size(); ++k)
-      out << eq.terms[k].node + 1 << ", " << eq.terms[k].component + 1 << ", " << number(eq.terms[k].coefficient)
-          << (k % 4 == 3 || k + 1 == eq.terms.size() ? "\n" : ", ");
+      out << nodes.label(eq.terms[k].node, "an *EQUATION") << ", " << eq.terms[k].component + 1 << ", "
+          << number(eq.terms[k].coefficient) << (k % 4 == 3 || k + 1 == eq.terms.size() ? "\n" : ", ");
   }
 }
 
@@ -506,9 +556,9 @@ void write_equations(std::ostream& out, const fem::Problem& problem)
 /// 1-3 the translations, 4-6 the rotations, as CalculiX's *COUPLING REF NODE), the surface it
 /// drives (its faces, or its node set as a node surface) and the *COUPLING with *KINEMATIC (the
 /// components that follow the rigid motion) or *DISTRIBUTING (forces, and the moments it spreads);
-/// a mean coupling as its DCOUP3D element and *DISTRIBUTING COUPLING with the nodes' weights.
-/// Pretension sections are refused.
-void write_couplings(std::ostream& out, const fem::Problem& problem)
+/// a mean coupling as its DCOUP3D element and *DISTRIBUTING COUPLING with the nodes' weights; a
+/// pretension section as its faces and *PRE-TENSION SECTION.
+void write_couplings(std::ostream& out, const fem::Problem& problem, const DeckNodes& nodes)
 {
   if (problem.couplings.empty())
     return;
@@ -523,10 +573,19 @@ void write_couplings(std::ostream& out, const fem::Problem& problem)
   for (size_t k = 0; k < problem.couplings.size(); ++k)
   {
     const fem::Coupling& c = problem.couplings[k];
-    FETICON_CHECK(c.kind != fem::CouplingKind::pretension,
-                  "calculix export: " << c.name
-                                      << ": a pretension section is not written by feticon export (kinematic, "
-                                         "distributing and mean couplings are)");
+    if (c.kind == fem::CouplingKind::pretension)
+    {
+      // The section's faces, of the cells that took the doubled nodes (DeckNodes): CalculiX
+      // doubles the nodes again when it reads them (pretensionsections.f, as the deck reader).
+      const std::string surface = "PRETENSION_" + std::to_string(k + 1);
+      out << "*SURFACE, NAME=" << surface << ", TYPE=ELEMENT\n";
+      for (const auto& [cell, f] : element_faces(mesh, c.faces, cells_of_node))
+        out << cell + 1 << ", S" << f << '\n';
+      out << "*PRE-TENSION SECTION, SURFACE=" << surface << ", NODE=" << mesh.n_nodes() + k + 1 << '\n';
+      if (c.normal.norm() > 0)
+        out << number(c.normal(0)) << ", " << number(c.normal(1)) << ", " << number(c.normal(2)) << '\n';
+      continue;
+    }
     if (c.kind == fem::CouplingKind::mean)
     {
       // CalculiX's *DISTRIBUTING COUPLING takes its reference node from a DCOUP3D element
@@ -536,9 +595,9 @@ void write_couplings(std::ostream& out, const fem::Problem& problem)
           << mesh.n_cells() + k + 1 << ", " << mesh.n_nodes() + k + 1 << "\n*SOLID SECTION, ELSET=" << elset
           << ", MATERIAL=" << deck_name("M_", mesh.body_names.front()) << "\n*DISTRIBUTING COUPLING, ELSET=" << elset
           << '\n';
-      const std::vector<int32_t>& nodes = mesh.node_set(c.nodes);
-      for (size_t i = 0; i < nodes.size(); ++i)
-        out << nodes[i] + 1 << ", " << number(c.weights[i]) << '\n';
+      const std::vector<int32_t>& coupled = mesh.node_set(c.nodes);
+      for (size_t i = 0; i < coupled.size(); ++i)
+        out << nodes.label(coupled[i], c.name) << ", " << number(c.weights[i]) << '\n';
       continue;
     }
     const std::string surface = "COUPLING_" + std::to_string(k + 1);
@@ -552,7 +611,7 @@ void write_couplings(std::ostream& out, const fem::Problem& problem)
     {
       out << "*SURFACE, NAME=" << surface << ", TYPE=NODE\n";
       for (const int32_t n : mesh.node_set(c.nodes))
-        out << n + 1 << '\n';
+        out << nodes.label(n, c.name) << '\n';
     }
     out << "*COUPLING, REF NODE=" << mesh.n_nodes() + k + 1 << ", SURFACE=" << surface
         << ", CONSTRAINT NAME=" << deck_name("C_", c.name) << '\n';
@@ -645,7 +704,8 @@ std::vector<la::Vector> group_forces(const fem::Problem& problem, size_t step)
 /// block per amplitude; the loads on reference nodes on them (write_couplings), the others as
 /// their nodal forces (3 per node, global components; a node with a frame in its local ones,
 /// write_frames); their totals counted in `summary`.
-void write_cloads(std::ostream& out, const fem::Problem& problem, size_t step, CalculixDeckSummary& summary)
+void write_cloads(std::ostream& out, const fem::Problem& problem, size_t step, const DeckNodes& nodes,
+                  CalculixDeckSummary& summary)
 {
   const fem::Step& s = problem.steps[step];
   const std::vector<std::string> groups = amplitude_groups(s);
@@ -677,7 +737,7 @@ void write_cloads(std::ostream& out, const fem::Problem& problem, size_t step, C
         summary.total_load[i] += global(i);
         if (given(i) == 0)
           continue;
-        out << n + 1 << ", " << i + 1 << ", " << number(given(i)) << '\n';
+        out << nodes.label(n, "a load") << ", " << i + 1 << ", " << number(given(i)) << '\n';
         ++summary.n_cloads;
       }
     }
@@ -725,7 +785,7 @@ void write_model_changes(std::ostream& out, const fem::Problem& problem, const C
 /// The first *STEP with its increments (write_step_start), *BOUNDARY (supports, plane strain;
 /// a block per amplitude) and *CLOAD (write_cloads).
 void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
-                const std::vector<ContactPairFaces>& pairs, CalculixDeckSummary& summary)
+                const std::vector<ContactPairFaces>& pairs, const DeckNodes& nodes, CalculixDeckSummary& summary)
 {
   const mesh::Mesh& mesh = problem.mesh;
   const fem::Step& step = problem.steps.front();
@@ -753,7 +813,7 @@ void write_step(std::ostream& out, const fem::Problem& problem, const CalculixOp
         out << mesh.n_nodes() + r.coupling + 1 << ", " << r.dof + 1 << ", " << r.dof + 1 << ", " << number(r.value)
             << '\n';
   }
-  write_cloads(out, problem, 0, summary);
+  write_cloads(out, problem, 0, nodes, summary);
 }
 /// The deck's node, component and value of held DOF `dof` = `value`: a node with a frame is
 /// held in its local components (write_frames), whether the history numbers the DOF as local or,
@@ -803,7 +863,7 @@ void write_frames(std::ostream& out, const fem::Problem& problem)
 /// linearly in its increments, as feticon's load history runs from one stage's end to the next.
 void write_later_step(std::ostream& out, const fem::Problem& problem, const fem::LoadHistory& history, int stage,
                       const CalculixOptions& options, const std::vector<ContactPairFaces>& pairs,
-                      CalculixDeckSummary& summary)
+                      const DeckNodes& nodes, CalculixDeckSummary& summary)
 {
   const auto k = static_cast<size_t>(stage - 1);
   write_step_start(out, problem.steps[k], options);
@@ -839,11 +899,12 @@ void write_later_step(std::ostream& out, const fem::Problem& problem, const fem:
       if (!write)
         continue;
       const auto [node, component, deck_value] = deck_dof(problem, dof, value);
-      out << node + 1 << ", " << component + 1 << ", " << component + 1 << ", " << number(deck_value) << '\n';
+      out << (node < problem.mesh.n_nodes() ? nodes.label(node, "a support") : node + int64_t{1}) << ", "
+          << component + 1 << ", " << component + 1 << ", " << number(deck_value) << '\n';
     }
   }
   std::fill(std::begin(summary.total_load), std::end(summary.total_load), 0.0);
-  write_cloads(out, problem, k, summary);
+  write_cloads(out, problem, k, nodes, summary);
 }
 } // namespace
 
@@ -867,7 +928,8 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   Coordinates x = mesh.nodes;
   const std::vector<ContactPairFaces> pairs = contact_pairs(problem, options, x, summary);
 
-  write_mesh(out, problem, x, summary);
+  const DeckNodes nodes(problem);
+  write_mesh(out, problem, x, summary, nodes);
   FETICON_CHECK(
       std::ranges::all_of(problem.steps,
                           [](const fem::Step& step) { return step.removed_ties.empty() && step.changed_law.empty(); }),
@@ -881,13 +943,13 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   for (const fem::ContactPairNames& pair : problem.contacts)
     if (!pair.adjust_nodes.empty())
       written_sets.insert(pair.adjust_nodes);
-  write_node_sets(out, mesh, written_sets);
+  write_node_sets(out, mesh, written_sets, nodes);
   write_frames(out, problem);
   write_materials(out, problem);
-  write_contact(out, problem, options, pairs);
-  write_ties(out, problem);
-  write_equations(out, problem);
-  write_couplings(out, problem);
+  write_contact(out, problem, options, pairs, nodes);
+  write_ties(out, problem, nodes);
+  write_equations(out, problem, nodes);
+  write_couplings(out, problem, nodes);
   const auto output_requests = [&] {
     out << "*NODE FILE\nU, RF\n";
     if (!problem.couplings.empty())
@@ -905,18 +967,18 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
     }
     out << "*END STEP\n";
   };
-  write_initial_temperatures(out, problem);
+  write_initial_temperatures(out, problem, nodes);
   write_amplitudes(out, problem);
-  write_step(out, problem, options, pairs, summary);
-  write_temperatures(out, problem, problem.steps.front());
+  write_step(out, problem, options, pairs, nodes, summary);
+  write_temperatures(out, problem, problem.steps.front(), nodes);
   output_requests();
   if (problem.steps.size() > 1)
   {
     const fem::LoadHistory history(problem, {.default_steps = options.increments});
     for (int stage = 2; stage <= history.n_stages(); ++stage)
     {
-      write_later_step(out, problem, history, stage, options, pairs, summary);
-      write_temperatures(out, problem, problem.steps[stage - 1]);
+      write_later_step(out, problem, history, stage, options, pairs, nodes, summary);
+      write_temperatures(out, problem, problem.steps[stage - 1], nodes);
       output_requests();
     }
   }

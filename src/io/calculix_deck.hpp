@@ -27,7 +27,11 @@
 ///  - kinematic and distributing couplings as a reference node each (labelled after the mesh
 ///    nodes), its surface and *COUPLING with *KINEMATIC or *DISTRIBUTING; the supports and loads
 ///    on its DOFs 1-6 as *BOUNDARY and *CLOAD on it (the loads' nodal forces, which the external
-///    force holds, left out); mean couplings and pretension sections are refused;
+///    force holds, left out); a mean coupling as its DCOUP3D element and *DISTRIBUTING COUPLING;
+///    a pretension section as its faces and *PRE-TENSION SECTION, without the nodes it doubled
+///    (CalculiX doubles them again; a load or set on one of them is refused);
+///  - the deck's *EQUATIONs, ADJUST, cyclic symmetry ties, node surfaces (a pair's TYPE=NODE
+///    slave), amplitudes (*AMPLITUDE, AMPLITUDE= blocks), *MODEL CHANGE and *CHANGE FRICTION;
 ///  - a slave body held only by contact in the direction of the master normal (no Dirichlet
 ///    component there, like the Hertz cylinder) has no stiffness in CalculiX's first iteration
 ///    when the bodies touch at a line or point, and floats away; its nodes are shifted by

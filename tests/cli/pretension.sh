@@ -11,6 +11,8 @@
 #    *NODE FILE added): ccx 2.20's displacements of every node (pret2.frd.ref) within 2e-4 of max
 #    |u| (measured 5e-5: CalculiX solves CAX8 as expanded C3D20R cells), the new nodes numbered
 #    as CalculiX numbers them.
+#  - feticon export of the bar (normal given) and of pret2, run again: their decks' answers
+#    (difference 0); a load on a doubled node (the bar's weight) is refused in one line.
 #  - Bad input, one line each: ELEMENT= (a beam pretension), a node surface, no NODE=, a
 #    reference node that an element uses, a NODE= beyond 64-bit integers (a fuzz mutant's
 #    "stoll"), a zero normal.
@@ -66,6 +68,26 @@ PY
 "$feticon" run "$src/tests/data/calculix/pret2.inp" -o "$work/pret2" "${quiet[@]}" 2> /dev/null
 source "$tools/expect_agreement.sh"
 agreement "$src/tests/data/calculix/pret2.inp" "$src/tests/data/calculix/pret2.frd.ref" "$work/pret2" 2e-4 within 16
+
+# feticon export writes a pretension section as its faces (of the cells that took the doubled
+# nodes) and *PRE-TENSION SECTION, the deck's nodes without the doubled ones (CalculiX doubles them
+# again): the exported bar (3D, its normal given) and pret2 (CAX8) run to their decks' answers.
+for deck in "$work/normal.inp" "$src/tests/data/calculix/pret2.inp"; do
+  name=$(basename "$deck" .inp)
+  "$feticon" export "$deck" --format calculix -o "$work/$name-deck" > /dev/null
+  grep -q '^\*PRE-TENSION SECTION, SURFACE=PRETENSION_1, NODE=' "$work/$name-deck/feticon.inp"
+  "$feticon" run "$work/$name-deck/feticon.inp" -o "$work/$name-exported" "${quiet[@]}" 2> /dev/null
+  /usr/bin/python3 "$tools/compare_runs.py" 1e-9 "$work/$name" "$work/$name-exported" --answer
+done
+# ... and refuses a load on a doubled node (the bar's weight: GRAV's nodal forces), which a deck
+# cannot name.
+sed -e 's/^\*ELASTIC$/*DENSITY\n7800.\n&/' -e 's/^\*CLOAD$/*DLOAD\nBAR, GRAV, 9.81, 0., 0., -1.\n&/' \
+  "$work/force.inp" > "$work/weight.inp"
+if "$feticon" export "$work/weight.inp" --format calculix -o "$work/weight-deck" 2> "$work/weight.err" > /dev/null; then
+  echo "a load on a doubled node was exported"; exit 1
+fi
+[ "$(wc -l < "$work/weight.err")" -eq 1 ]
+grep -q "calculix export: a load names node [0-9]*, which a pretension section doubled" "$work/weight.err"
 
 # Bad input: one line naming what is wrong, exit 1.
 source "$tools/expect_deck_error.sh"
