@@ -11,6 +11,17 @@
 /// A kinematic coupling names a face set (`surface`) or a node set (`nodes`) and optionally the
 /// `components` of its nodes that follow the rigid motion (default x, y, z); a distributing one
 /// a face set, whose consistent nodal areas spread its loads, and the `moments` it spreads.
+///
+/// A pretension section (a bolt load; CalculiX's *PRE-TENSION SECTION) joins two bodies that meet
+/// at the section with matching meshes (a bolt modelled as two parts):
+///
+///   couplings: [{name: preload, kind: pretension, surface: shank_top, partner: head_bottom}]
+///   supports: [{coupling: preload, gap: 1e-4}]      # the two sides overlap by the gap (m), or
+///   loads: [{coupling: preload, tension: 2e4}]      # the section carries the tension (N)
+///
+/// Each node of the `partner` face set is paired with the node of `surface` at its position; the
+/// normal n (`normal:`, else the partner faces' mean outward normal) points away from the partner's
+/// cells, as CalculiX's points away from the cells that took the doubled nodes.
 
 #include "fem/problem.hpp"
 #include "io/problem_reader.hpp"
@@ -22,7 +33,8 @@
 namespace feticon::io
 {
 /// @throws feticon::Error naming the file and key of what is wrong
-std::vector<fem::Coupling> read_couplings(const YAML::Node& list, const mesh::Mesh& mesh, const ProblemReader& r);
+/// A pretension section's node pairs become the node sets coupling_N_nodes and coupling_N_partners.
+std::vector<fem::Coupling> read_couplings(const YAML::Node& list, mesh::Mesh& mesh, const ProblemReader& r);
 
 /// The entries of a supports (loads) list that name a coupling, as reference values; the others
 /// are left to the list's own reader; an entry's amplitude as io::amplitude_of reads it.

@@ -34,7 +34,7 @@ import time
 
 # Seeds, each run well under 2 s unmutated. A problem or gmsh case lists its files: the
 # problem file first (the one `feticon run` gets), then the mesh it names.
-PROBLEM_SEEDS = [["two_boxes.yaml"], ["hertz_small.yaml"], ["gmsh41.yaml", "punch41.msh"],
+PROBLEM_SEEDS = [["two_boxes.yaml"], ["pretension_bar.yaml"], ["hertz_small.yaml"], ["gmsh41.yaml", "punch41.msh"],
                  ["gmsh22.yaml", "punch22.msh"], ["gmsh_tet10.yaml", "punch_tet10.msh"],
                  ["gmsh_2d.yaml", "blocks_2d.msh"], ["sections.yaml", "sections_bar.msh"]]
 MM_FILES = ["A.mtx", "b.mtx", "l.mtx"]
@@ -864,7 +864,7 @@ def make_case(kind, rng, source_dir):
         files = {name: read(seed_dir, name) for name in MM_FILES}
         target = rng.choices(MM_FILES, weights=[2, 1, 1])[0]
         return files, target, QP_COMMAND
-    names = rng.choice(PROBLEM_SEEDS if kind == "problem" else PROBLEM_SEEDS[2:])
+    names = rng.choice(PROBLEM_SEEDS if kind == "problem" else PROBLEM_SEEDS[3:])
     files = {name: read(seed_dir, name) for name in names}
     target = names[0] if kind == "problem" else names[1]
     return files, target, ["run", names[0], "--output", "out"] + RUN_OPTIONS + law_option(rng)

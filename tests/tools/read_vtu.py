@@ -67,6 +67,16 @@ def point_data(path):
     return arrays
 
 
+def points(path):
+    """The point coordinates of the .vtu at `path`, (points, 3)."""
+    root = ElementTree.parse(path).getroot()
+    byte_order = root.get("byte_order", "LittleEndian")
+    header_dtype = numpy.dtype(("<" if byte_order == "LittleEndian" else ">") +
+                               TYPES[root.get("header_type", "UInt32")])
+    element = root.find("UnstructuredGrid/Piece/Points/DataArray")
+    return read_array(element, byte_order, header_dtype).reshape(-1, 3)
+
+
 def describe(element, values):
     summary = {
         "type": element.get("type"),
