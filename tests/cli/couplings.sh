@@ -304,7 +304,7 @@ bad orientation.inp "ORIENTATION= (a coupling in a local system) is not implemen
 sed -e 's/coupling: tip, x:/coupling: nosuch, x:/' "$work/bar.yaml" > "$work/unknown_coupling.yaml"
 bad unknown_coupling.yaml "no coupling 'nosuch'"
 sed -e 's/kind: kinematic/kind: rigid/' "$work/bar.yaml" > "$work/unknown_kind.yaml"
-bad unknown_kind.yaml "must be kinematic or distributing"
+bad unknown_kind.yaml "must be kinematic, distributing or pretension"
 sed -e 's/surface: bar_xmax, reference: \[10, 0.5, 0.5\]/surface: bar_xmax/' "$work/bar.yaml" > "$work/no_reference.yaml"
 bad no_reference.yaml "reference must be"
 sed -e 's/surface: bar_xmax,/surface: bar_xmax, nodes: bar_xmax,/' "$work/bar.yaml" > "$work/surface_and_nodes.yaml"
