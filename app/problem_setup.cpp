@@ -48,8 +48,9 @@ fem::Problem adjusted(fem::Problem problem)
 
 /// hyperelastic.fbar: F-bar on the linear cells of every hyperelastic body; without it, a
 /// warning where such a body's linear cells lock (K_0 / mu_0 >= 100: +0.6 % of a seal's force at
-/// 50, +5 % at 500, +29 % at 5000 on quad4, docs/materials.md).
-void volumetric_locking(fem::Problem& problem, bool fbar)
+/// 50, +5 % at 500, +29 % at 5000 on quad4, docs/materials.md). plasticity.fbar: F-bar on those
+/// of every plastic body (with large displacements: fem::Material::fbar).
+void volumetric_locking(fem::Problem& problem, bool fbar, bool plastic_fbar)
 {
   std::vector<char> linear_cells(problem.materials.size(), 0);
   for (int32_t c = 0; c < problem.mesh.n_cells(); ++c)
@@ -59,6 +60,8 @@ void volumetric_locking(fem::Problem& problem, bool fbar)
   for (size_t b = 0; b < problem.materials.size(); ++b)
   {
     fem::Material& material = problem.materials[b];
+    if (material.is_plastic())
+      material.fbar = plastic_fbar;
     if (!material.is_hyperelastic())
       continue;
     material.fbar = fbar;
@@ -86,7 +89,7 @@ fem::Problem build_problem(const io::ProblemFile& file, io::DeckInfo* deck)
     problem = built_in->build();
   else
     problem = adjusted(io::build_custom_problem(file));
-  volumetric_locking(problem, file.settings.flag("hyperelastic.fbar"));
+  volumetric_locking(problem, file.settings.flag("hyperelastic.fbar"), file.settings.flag("plasticity.fbar"));
   return problem;
 }
 

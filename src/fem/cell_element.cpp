@@ -132,8 +132,8 @@ struct CellVolume
 
 bool uses_fbar(mesh::CellKind type, const Material& material, Kinematics kinematics)
 {
-  return material.fbar && material.is_hyperelastic() && kinematics == Kinematics::total_lagrangian &&
-      (type == mesh::CellKind::hex8 || type == mesh::CellKind::quad4);
+  return material.fbar && (material.is_hyperelastic() || material.is_plastic()) &&
+      kinematics == Kinematics::total_lagrangian && (type == mesh::CellKind::hex8 || type == mesh::CellKind::quad4);
 }
 
 /// tr(F^-1 dF/du_ai) of every node a and component i at a point: dF/du_ai = e_i g_a' (g_a the
@@ -303,6 +303,20 @@ J2Update plastic_update(const Material& material, Kinematics kinematics, const V
   FETICON_ASSERT(thermal == 0, "a thermal strain at a finite-strain plastic point");
   return finite_j2_return(material, strain, committed, tangent);
 }
+
+/// S(E(F_bar)) of point q of an F-bar cell and its tangent dS/dE (where `tangent`): the
+/// hyperelastic law, or Simo's finite-strain J2 return from the point's committed state (its
+/// updated state written where the caller asks for it), on the strain of F_bar.
+Voigt fbar_stress(const Material& material, const Voigt& strain, size_t q, const CellPlasticState* plastic,
+                  Eigen::Matrix<double, 6, 6>* tangent)
+{
+  if (!material.is_plastic())
+    return hyperelastic_stress(material.hyperelastic, strain, tangent);
+  const J2Update update = finite_j2_return(material, strain, plastic->committed[q], tangent);
+  if (!plastic->updated.empty())
+    plastic->updated[q] = update.state;
+  return update.stress;
+}
 } // namespace
 
 void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, const Material& material,
@@ -323,13 +337,15 @@ void cell_element(mesh::CellKind type, const Eigen::MatrixX3d& X, const Eigen::M
   if (uses_fbar(type, material, kinematics))
   {
     const FbarCell points = fbar_cell(type, X, u, cell, planar, integration);
+    FETICON_ASSERT(!material.is_plastic() || (plastic && plastic->committed.size() == points.n_points),
+                   "a plastic cell needs a state per quadrature point");
     for (size_t q = 0; q < points.n_points; ++q)
     {
       const PointGeometry& geo = points.geo[q];
       const auto [F_bar, alpha] = fbar_gradient(points.volume, points.F[q]);
       Eigen::Matrix<double, 6, 6> C;
       const Voigt S =
-          hyperelastic_stress(material.hyperelastic, green_lagrange(F_bar), kind != StiffnessKind::none ? &C : nullptr);
+          fbar_stress(material, green_lagrange(F_bar), q, plastic, kind != StiffnessKind::none ? &C : nullptr);
       const StrainDisplacement B = fbar_strain_displacement(geo, points.volume, points.F[q], F_bar, alpha);
       f.noalias() += B.transpose() * (S * geo.weight_det_j);
       if (kind == StiffnessKind::none)
@@ -417,7 +433,11 @@ void for_each_point_result(mesh::CellKind type, const Eigen::MatrixX3d& X, const
     {
       const Eigen::Matrix3d F_bar = fbar_gradient(points.volume, points.F[q]).first;
       const Voigt E_bar = green_lagrange(F_bar);
-      const Voigt S = hyperelastic_stress(material.hyperelastic, E_bar);
+      FETICON_CHECK(!material.is_plastic() || plastic.size() == points.n_points,
+                    "cell " << cell << " is plastic but has " << plastic.size() << " point states for "
+                            << points.n_points << " quadrature points");
+      const Voigt S = material.is_plastic() ? finite_j2_return(material, E_bar, plastic[q], nullptr).stress
+                                            : hyperelastic_stress(material.hyperelastic, E_bar);
       visit(voigt_of(F_bar * tensor_of(S) * F_bar.transpose() / F_bar.determinant()), E_bar,
             points.geo[q].weight_det_j);
     }

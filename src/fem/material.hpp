@@ -27,8 +27,9 @@ struct Material
   /// empty: none. young and poisson are then its moduli at E = 0 (set_hyperelastic), which K_0
   /// and the solver's scalings use. Total Lagrangian only (the Assembler refuses small strain).
   Hyperelastic hyperelastic = {};
-  /// A hyperelastic body's linear cells (quad4, hex8) take F-bar (fem/cell_element.hpp), which
-  /// keeps nearly incompressible laws from locking them; the setting hyperelastic.fbar.
+  /// A hyperelastic or (large displacements) plastic body's linear cells (quad4, hex8) take
+  /// F-bar (fem/cell_element.hpp), which keeps nearly incompressible laws and isochoric plastic
+  /// flow from locking them; the settings hyperelastic.fbar and plasticity.fbar.
   bool fbar = false;
 
   bool is_plastic() const { return !plastic.empty(); }

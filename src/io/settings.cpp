@@ -88,6 +88,9 @@ std::vector<SettingSpec> make_specs()
       {"hyperelastic.fbar", "false", "F-bar on the linear cells (quad4, hex8) of hyperelastic bodies: one volume "
        "change per cell, so that a nearly incompressible law does not lock them (docs/materials.md; CalculiX's "
        "C3D8 and CAX4 have none)", Type::boolean, {}, 0, 0, false},
+      {"plasticity.fbar", "false", "F-bar on the linear cells (quad4, hex8) of plastic bodies with large "
+       "displacements: one volume change per cell, so that isochoric plastic flow does not lock them "
+       "(docs/materials.md; CalculiX's C3D8 and CAX4 have none)", Type::boolean, {}, 0, 0, false},
       {"newton.cutbacks", "5", "a load step whose outer loop diverges or does not converge is solved again from "
        "its start with half the increment, up to this many times in a row (CalculiX's and Abaqus's cutbacks); "
        "0 stops the run", Type::integer, {}, 0, 50, false},

@@ -212,3 +212,42 @@ TEST(FBar, MaterialStiffnessIsSymmetricWithTheRigidMotionsAsKernel)
       EXPECT_LE((K * mode).norm(), 1e-9 * K.norm() * mode.norm()) << name(c);
   }
 }
+
+// F-bar on a finite-strain J2 cell (plasticity.fbar): a homogeneous deformation beyond yield
+// (the distorted cell stretched 15 %, sigma_y = 250 MPa against stresses of GPa) has F_bar = F, so
+// the force and every point's returned state are the standard cell's (to round-off); a
+// non-homogeneous one differs (the test compares two different things).
+TEST(FBar, PlasticCellOfAHomogeneousDeformationIsTheStandardCell)
+{
+  for (const Case& c : cases)
+  {
+    fem::Material steel(210e9, 0.3);
+    steel.plastic.stress = {250e6, 450e6};
+    steel.plastic.plastic_strain = {0., 0.5};
+    const size_t n_points = fem::quadrature(c.kind).points.size();
+    const std::vector<fem::PlasticPointState> committed(n_points);
+    const auto run = [&](const Eigen::MatrixX3d& X, const Eigen::MatrixX3d& u, bool fbar,
+                         std::vector<fem::PlasticPointState>& updated) {
+      steel.fbar = fbar;
+      updated.assign(n_points, {});
+      const fem::CellPlasticState plastic{committed, updated};
+      Eigen::VectorXd f;
+      fem::cell_element(c.kind, X, u, steel, fem::Kinematics::total_lagrangian, fem::StiffnessKind::none,
+                        fem::Integration::full, f, nullptr, 0, nullptr, &plastic, {c.planar, 1.0});
+      return f;
+    };
+    std::vector<fem::PlasticPointState> standard_states, fbar_states;
+    const auto [X, u] = deformed_cell(c, 0);
+    const Eigen::VectorXd standard = run(X, u, false, standard_states);
+    EXPECT_LE((run(X, u, true, fbar_states) - standard).norm(), 1e-10 * standard.norm()) << name(c);
+    for (size_t q = 0; q < n_points; ++q)
+    {
+      EXPECT_GT(standard_states[q].equivalent_plastic_strain, 0.01) << name(c) << ": the point should yield";
+      EXPECT_NEAR(fbar_states[q].equivalent_plastic_strain, standard_states[q].equivalent_plastic_strain, 1e-12)
+          << name(c);
+    }
+    const auto [Xw, uw] = deformed_cell(c, 2e-4);
+    EXPECT_GT((run(Xw, uw, true, fbar_states) - run(Xw, uw, false, standard_states)).norm(), 1e-4 * standard.norm())
+        << name(c);
+  }
+}
