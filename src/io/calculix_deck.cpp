@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <ranges>
 #include <set>
 #include <tuple>
 
@@ -47,6 +48,53 @@ double friction_of(const CalculixOptions& options, size_t step, size_t pair)
 double normal_slope(const fem::ContactPairNames& names, const ContactPairFaces& pair)
 {
   return names.interaction.law.kind == fem::NormalLawKind::linear ? names.interaction.law.slope : pair.stiffness;
+}
+int32_t tie_of_pair(const fem::Problem& problem, int32_t pair)
+{
+  const fem::ContactPairNames& names = problem.contacts[pair];
+  for (int32_t t = 0; t < std::ssize(problem.ties); ++t)
+    if (const fem::Tie& tie = problem.ties[t]; !tie.cyclic && tie.slave == names.slave && tie.master == names.master)
+      return t;
+  return -1;
+}
+
+bool tied_in_step(const fem::Problem& problem, int32_t pair, size_t step)
+{
+  const int32_t t = tie_of_pair(problem, pair);
+  return t >= 0 && std::ranges::find(problem.steps[step].removed_ties, t) == problem.steps[step].removed_ties.end();
+}
+
+fem::NormalLaw law_in_step(const fem::Problem& problem, int32_t pair, size_t step)
+{
+  for (const auto& [changed, law] : problem.steps[step].changed_law)
+    if (changed == pair)
+      return law;
+  return problem.contacts[pair].interaction.law;
+}
+
+void write_surface_behavior(std::ostream& out, const fem::NormalLaw& law, bool tied, const ContactPairFaces& pair,
+                            bool node_to_segment)
+{
+  out << "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=";
+  // A node-to-surface pair's LINEAR law has a tension sigma_inf, E / 70 000 where the line gives
+  // none or one <= 0 (CalculiX's surfacebehaviors.f, and the deck reader): a deck's own law
+  // keeps its value, hard contact written as a penalty gets that default.
+  const double stiffness = law.kind == fem::NormalLawKind::linear ? law.slope : pair.stiffness;
+  if (tied)
+    out << "TIED\n";
+  else if (law.kind == fem::NormalLawKind::exponential)
+    out << "EXPONENTIAL\n" << number(law.c0) << ", " << number(law.p0) << '\n';
+  else if (law.kind == fem::NormalLawKind::tabular)
+  {
+    out << "TABULAR\n";
+    for (const auto& [overclosure, pressure] : law.table)
+      out << number(pressure) << ", " << number(overclosure) << '\n';
+  }
+  else if (node_to_segment)
+    out << "LINEAR\n"
+        << number(stiffness) << ", " << number(law.kind == fem::NormalLawKind::linear ? law.sigma_inf : 0.0) << '\n';
+  else
+    out << "LINEAR\n" << number(stiffness) << '\n';
 }
 } // namespace deck_writer
 
@@ -365,27 +413,14 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
         out << cell + 1 << ", S" << f << '\n';
     }
     const std::string interaction = "SI_" + std::to_string(p + 1);
-    // A node-to-surface pair's LINEAR law has a tension sigma_inf, E / 70 000 where the line gives
-    // none or one <= 0 (CalculiX's surfacebehaviors.f, and the deck reader): a deck's own law
-    // keeps its value, hard contact written as a penalty gets that default.
     const bool node_to_segment = p < options.node_to_segment.size() && options.node_to_segment[p];
-    // A pair's own law is written as it is; hard contact as CalculiX's penalty (above).
-    const fem::NormalLaw& law = names.interaction.law;
     const double stiffness = normal_slope(names, pairs[p]);
-    out << "*SURFACE INTERACTION, NAME=" << interaction << "\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=";
-    if (law.kind == fem::NormalLawKind::exponential)
-      out << "EXPONENTIAL\n" << number(law.c0) << ", " << number(law.p0) << '\n';
-    else if (law.kind == fem::NormalLawKind::tabular)
-    {
-      out << "TABULAR\n";
-      for (const auto& [overclosure, pressure] : law.table)
-        out << number(pressure) << ", " << number(overclosure) << '\n';
-    }
-    else if (node_to_segment)
-      out << "LINEAR\n"
-          << number(stiffness) << ", " << number(law.kind == fem::NormalLawKind::linear ? law.sigma_inf : 0.0) << '\n';
-    else
-      out << "LINEAR\n" << number(stiffness) << '\n';
+    // The pair's law in the first step (TIED where *CHANGE SURFACE BEHAVIOR makes it contact
+    // later: write_model_changes writes the changes).
+    out << "*SURFACE INTERACTION, NAME=" << interaction << '\n';
+    const auto pair = static_cast<int32_t>(p);
+    write_surface_behavior(out, law_in_step(problem, pair, 0), tied_in_step(problem, pair, 0), pairs[p],
+                           node_to_segment);
     // Friction in some step: *FRICTION from the first (CalculiX asks mu > 0 there), changed
     // by the steps (write_model_changes).
     bool friction = false;
@@ -421,8 +456,13 @@ void write_ties(std::ostream& out, const fem::Problem& problem, const DeckNodes&
     return;
   const mesh::Mesh& mesh = problem.mesh;
   const std::vector<std::vector<int32_t>> cells_of_node = cells_of_nodes(mesh);
-  for (const fem::Tie& tie : problem.ties)
+  for (int32_t t = 0; t < std::ssize(problem.ties); ++t)
   {
+    const fem::Tie& tie = problem.ties[t];
+    // A contact pair's tied steps are its own (write_contact, write_model_changes).
+    if (std::ranges::any_of(std::views::iota(0, static_cast<int32_t>(problem.contacts.size())),
+                            [&](int32_t p) { return tie_of_pair(problem, p) == t; }))
+      continue;
     for (const std::string& set : {tie.slave, tie.master})
     {
       if (set == tie.slave && tie.formulation == fem::ContactFormulation::node_to_segment)
@@ -592,11 +632,14 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
 
   const DeckNodes nodes(problem);
   write_mesh(out, problem, x, summary, nodes);
-  FETICON_CHECK(
-      std::ranges::all_of(problem.steps,
-                          [](const fem::Step& step) { return step.removed_ties.empty() && step.changed_law.empty(); }),
-      "calculix export: a tie taken out of force or a contact law changed in a step (*CHANGE SURFACE "
-      "BEHAVIOR) is not written by feticon export (*MODEL CHANGE and *CHANGE FRICTION are)");
+  // A tie out of force in a step is a contact pair's tied state (*CHANGE SURFACE BEHAVIOR).
+  for (const fem::Step& step : problem.steps)
+    for (const int32_t t : step.removed_ties)
+      FETICON_CHECK(std::ranges::any_of(std::views::iota(0, static_cast<int32_t>(problem.contacts.size())),
+                                        [&](int32_t p) { return tie_of_pair(problem, p) == t; }),
+                    "calculix export: tie " << problem.ties[t].name
+                                            << " is taken out of force in a step, which a deck's *TIE cannot say (a "
+                                               "tied contact pair's *CHANGE SURFACE BEHAVIOR can)");
   std::set<std::string> node_sets;
   for (const fem::Step& step : problem.steps)
     for (const fem::DirichletCondition& d : step.dirichlet)

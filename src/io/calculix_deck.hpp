@@ -31,7 +31,8 @@
 ///    a pretension section as its faces and *PRE-TENSION SECTION, without the nodes it doubled
 ///    (CalculiX doubles them again; a load or set on one of them is refused);
 ///  - the deck's *EQUATIONs, ADJUST, cyclic symmetry ties, node surfaces (a pair's TYPE=NODE
-///    slave), amplitudes (*AMPLITUDE, AMPLITUDE= blocks), *MODEL CHANGE and *CHANGE FRICTION;
+///    slave), amplitudes (*AMPLITUDE, AMPLITUDE= blocks), *MODEL CHANGE, *CHANGE FRICTION and
+///    *CHANGE SURFACE BEHAVIOR (a tie and a pair each in force where the other is not: one pair);
 ///  - a slave body held only by contact in the direction of the master normal (no Dirichlet
 ///    component there, like the Hertz cylinder) has no stiffness in CalculiX's first iteration
 ///    when the bodies touch at a line or point, and floats away; its nodes are shifted by

@@ -142,13 +142,17 @@ void write_cloads(std::ostream& out, const fem::Problem& problem, size_t step, c
 }
 
 /// The changes of step `step` (0-based) to the contact pairs: *MODEL CHANGE, TYPE=CONTACT PAIR,
-/// REMOVE or ADD where a pair leaves or comes back into force (fem::Step::removed_contacts), and
+/// REMOVE or ADD where a pair leaves or comes back into force (fem::Step::removed_contacts),
+/// *CHANGE SURFACE BEHAVIOR where its law changes or it turns from tied to contact or back, and
 /// *CHANGE FRICTION with its *FRICTION where a pair's mu changes (CalculixOptions::friction).
 void write_model_changes(std::ostream& out, const fem::Problem& problem, const CalculixOptions& options,
                          const std::vector<ContactPairFaces>& pairs, size_t step)
 {
+  // A pair out of force where it is tied is the same pair in the deck (its surface behavior
+  // TIED, below).
   const auto in_force = [&](size_t k, int32_t p) {
-    return std::ranges::find(problem.steps[k].removed_contacts, p) == problem.steps[k].removed_contacts.end();
+    return std::ranges::find(problem.steps[k].removed_contacts, p) == problem.steps[k].removed_contacts.end() ||
+        tied_in_step(problem, p, k);
   };
   for (const bool add : {false, true})
   {
@@ -164,6 +168,16 @@ void write_model_changes(std::ostream& out, const fem::Problem& problem, const C
   }
   if (step == 0)
     return;
+  for (int32_t p = 0; p < std::ssize(problem.contacts); ++p)
+  {
+    const bool tied = tied_in_step(problem, p, step);
+    const fem::NormalLaw law = law_in_step(problem, p, step);
+    if (tied == tied_in_step(problem, p, step - 1) && (tied || law == law_in_step(problem, p, step - 1)))
+      continue;
+    out << "*CHANGE SURFACE BEHAVIOR, INTERACTION=SI_" << p + 1 << '\n';
+    write_surface_behavior(out, law, tied, pairs[p],
+                           static_cast<size_t>(p) < options.node_to_segment.size() && options.node_to_segment[p]);
+  }
   for (size_t p = 0; p < problem.contacts.size(); ++p)
   {
     const double mu = friction_of(options, step, p);

@@ -71,6 +71,20 @@ double friction_of(const CalculixOptions& options, size_t step, size_t pair);
 /// The slope K of a pair's LINEAR law as written: its own law's, else the penalty of hard contact.
 double normal_slope(const fem::ContactPairNames& names, const ContactPairFaces& pair);
 
+/// The tie (index into fem::Problem::ties) of contact pair `pair` in the steps where it is tied:
+/// a deck's pair that *CHANGE SURFACE BEHAVIOR turns between TIED and a contact law is a tie
+/// and a pair, each out of force where the other is in (fem::Step::removed_ties,
+/// removed_contacts). -1: the pair is never tied.
+int32_t tie_of_pair(const fem::Problem& problem, int32_t pair);
+/// Whether pair `pair` is tied in step `step` (0-based): its tie in force there.
+bool tied_in_step(const fem::Problem& problem, int32_t pair, size_t step);
+/// Pair `pair`'s normal law in step `step`: the step's fem::Step::changed_law, else its own.
+fem::NormalLaw law_in_step(const fem::Problem& problem, int32_t pair, size_t step);
+/// *SURFACE BEHAVIOR of a pair: TIED, or its law's pressure-overclosure (hard contact as the
+/// penalty of `pair`'s slope; a node-to-surface LINEAR law with its tension sigma_inf).
+void write_surface_behavior(std::ostream& out, const fem::NormalLaw& law, bool tied, const ContactPairFaces& pair,
+                            bool node_to_segment);
+
 /// A step's *TEMPERATURE, OP=NEW and its *TEMPERATURE, AMPLITUDE= blocks (calculix_deck_steps.cpp).
 void write_temperatures(std::ostream& out, const fem::Problem& problem, const fem::Step& step, const DeckNodes& nodes);
 /// The first *STEP: its increments, model changes, *BOUNDARY and *CLOAD blocks.

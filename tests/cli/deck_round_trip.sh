@@ -111,3 +111,18 @@ grep -A1 'PRESSURE-OVERCLOSURE=LINEAR' "$work/contact6-deck/feticon.inp" | grep 
 "$feticon" run "$work/contact6-deck/feticon.inp" -o "$work/contact6-from-deck" -q --set output.plots=false \
   --set contact.law=deck 2> /dev/null
 /usr/bin/python3 "$src/tests/tools/compare_runs.py" 1e-9 "$work/contact6" "$work/contact6-from-deck"
+
+# A pair that *CHANGE SURFACE BEHAVIOR turns from TIED to contact (CalculiX's changesurfbeh; a tie
+# and a pair inside feticon, each out of force where the other is in) is one *CONTACT PAIR again,
+# TIED in step 1 and LINEAR from step 2 (the export refused it before 2026-12-04): the exported
+# deck's run is the deck's (difference 0; CalculiX 2.20 on the exported deck reproduces
+# changesurfbeh.frd.ref to 8.5e-14).
+"$feticon" export "$src/tests/data/calculix/changesurfbeh.inp" --format calculix --overclosure 0 \
+  -o "$work/changesurfbeh-deck" > /dev/null
+grep -q '^\*CHANGE SURFACE BEHAVIOR, INTERACTION=SI_1$' "$work/changesurfbeh-deck/feticon.inp"
+! grep -q '^\*TIE' "$work/changesurfbeh-deck/feticon.inp"
+for deck in "$src/tests/data/calculix/changesurfbeh.inp" "$work/changesurfbeh-deck/feticon.inp"; do
+  "$feticon" run "$deck" -o "$work/csb-$(basename "$(dirname "$deck")")" -q --set output.plots=false \
+    --set contact.law=deck --set subdomains=2 2> /dev/null
+done
+/usr/bin/python3 "$src/tests/tools/compare_runs.py" 1e-9 "$work/csb-calculix" "$work/csb-changesurfbeh-deck" --answer
