@@ -8,6 +8,7 @@
 #   bench/fuzz.sh --minutes 60 --seed 7
 #   bench/fuzz.sh --feticon build-asan/feticon --kinds gmsh --keep /tmp/gmsh-failures
 #   bench/fuzz.sh --kinds deck --timeout 10  # decks only (each runs in well under 1 s)
+#   bench/fuzz.sh --kinds export             # decks and problem files through feticon export
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)

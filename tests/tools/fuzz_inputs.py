@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Mutation fuzzing of feticon's four input kinds (issue 21, item 7): problem files (YAML) of
 `feticon run`, Gmsh MSH meshes a custom problem file names, the Matrix Market files of
-`feticon qp`, and CalculiX / Abaqus input decks of `feticon run model.inp`. Each mutant is a
+`feticon qp`, and CalculiX / Abaqus input decks of `feticon run model.inp`; and (kind export)
+decks and problem files through `feticon export --format calculix`, whose deck must not hold a
+non-finite number. Each mutant is a
 seed of tests/data/fuzz/ (decks: tests/data/calculix/) with one to three mutations, run in a
 fresh folder under a time limit. A mutant fails when feticon dies of a signal, hangs (timeout),
 exits with another status than 0 or 1 (or 3, "not converged", for `feticon qp`), writes a
@@ -10,7 +12,7 @@ a deck run's .dat and .frd), ends an exit 1
 with more or less than one line on stderr, or reports success without its report.
 
 Usage: fuzz_inputs.py FETICON SOURCE_DIR [--mutants N | --minutes M] [--seed S]
-                      [--kinds problem,gmsh,mm,deck] [--timeout SECONDS] [--keep DIR]
+                      [--kinds problem,gmsh,mm,deck,export] [--timeout SECONDS] [--keep DIR]
 The mutants are a function of the seed: mutant i of seed S is the same in every run, so
 --minutes M runs a prefix of the same sequence. Failing mutants are saved in --keep DIR
 (default: a new temporary folder) with their inputs, diff.txt against the seed, the output
@@ -854,6 +856,10 @@ def law_option(rng):
 def make_case(kind, rng, source_dir):
     """Files of the case (name -> bytes), the mutated file's name, the command after FETICON."""
     seed_dir = os.path.join(source_dir, "tests", "data", "fuzz")
+    if kind == "export":  # a deck or a problem file's case, exported instead of run
+        files, target, command = make_case(rng.choice(["deck", "problem"]), rng, source_dir)
+        return files, target, ["export", command[1], "--format", "calculix", "--output", "out",
+                               "--set", "memory_limit=2e9"]
     if kind == "deck":
         name = rng.choice(DECK_SEEDS)
         folder = seed_dir if name in FUZZ_FOLDER_DECKS else os.path.join(
@@ -972,6 +978,11 @@ def judge(kind, folder, status, stdout, stderr):
         if ((report is not None and non_finite_json(report)) or non_finite_text(stdout)
                 or (os.path.exists(x) and non_finite_text(read_text(x)))):
             return "non-finite"
+    elif kind == "export":
+        deck = os.path.join(folder, "out", "feticon.inp")
+        report = read_text(deck) if os.path.exists(deck) else None
+        if report is not None and non_finite_text(report):
+            return "non-finite"
     else:
         out = os.path.join(folder, "out")
         summary = os.path.join(out, "summary.json")
@@ -987,7 +998,7 @@ def judge(kind, folder, status, stdout, stderr):
     # describe the model, and the error itself must still be one line.
     if status == 1 and sum(1 for line in stderr.split("\n")[:-1] if not line.startswith("warning: ")) != 1:
         return "multi-line error"
-    if status != 1 and not isinstance(report, dict):
+    if status != 1 and not isinstance(report, str if kind == "export" else dict):
         return "bad output"
     return f"exit {status}"
 
@@ -1023,7 +1034,7 @@ def main():
     parser.add_argument("--keep")
     args = parser.parse_args()
     kinds = args.kinds.split(",")
-    unknown = set(kinds) - {"problem", "gmsh", "mm", "deck"}
+    unknown = set(kinds) - {"problem", "gmsh", "mm", "deck", "export"}
     if unknown:
         parser.error(f"unknown kinds {sorted(unknown)}")
     feticon = os.path.abspath(args.feticon)
@@ -1039,7 +1050,7 @@ def main():
             kind = kinds[index % len(kinds)]
             rng = random.Random(f"{args.seed}/{index}")
             seed_files, target, command = make_case(kind, rng, args.source_dir)
-            if kind == "deck":
+            if target.endswith(".inp"):
                 files, what = mutate_deck(seed_files, target, rng)
             else:
                 files = dict(seed_files)
