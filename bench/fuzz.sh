@@ -4,7 +4,7 @@
 # CalculiX input decks for a number of minutes; prints the outcome counts per kind and saves
 # failing mutants with a command.sh to reproduce them.
 #
-#   bench/fuzz.sh                          # 10 minutes, seed 1, build/feticon, all kinds
+#   bench/fuzz.sh                          # 10 minutes, seed 1, build/feticon, the run kinds
 #   bench/fuzz.sh --minutes 60 --seed 7
 #   bench/fuzz.sh --feticon build-asan/feticon --kinds gmsh --keep /tmp/gmsh-failures
 #   bench/fuzz.sh --kinds deck --timeout 10  # decks only (each runs in well under 1 s)
