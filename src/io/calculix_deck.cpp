@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <limits>
 #include <map>
-#include <ranges>
 #include <set>
 #include <tuple>
 
@@ -44,10 +43,9 @@ double friction_of(const CalculixOptions& options, size_t step, size_t pair)
   return step < options.friction.size() && pair < options.friction[step].size() ? options.friction[step][pair] : 0.0;
 }
 
-/// The slope K of a pair's LINEAR law as written: its own law's, else the penalty of hard contact.
-double normal_slope(const fem::ContactPairNames& names, const ContactPairFaces& pair)
+double normal_slope(const fem::NormalLaw& law, const ContactPairFaces& pair)
 {
-  return names.interaction.law.kind == fem::NormalLawKind::linear ? names.interaction.law.slope : pair.stiffness;
+  return law.kind == fem::NormalLawKind::linear ? law.slope : pair.stiffness;
 }
 int32_t tie_of_pair(const fem::Problem& problem, int32_t pair)
 {
@@ -56,6 +54,14 @@ int32_t tie_of_pair(const fem::Problem& problem, int32_t pair)
     if (const fem::Tie& tie = problem.ties[t]; !tie.cyclic && tie.slave == names.slave && tie.master == names.master)
       return t;
   return -1;
+}
+
+bool is_pair_tie(const fem::Problem& problem, int32_t tie)
+{
+  for (int32_t p = 0; p < std::ssize(problem.contacts); ++p)
+    if (tie_of_pair(problem, p) == tie)
+      return true;
+  return false;
 }
 
 bool tied_in_step(const fem::Problem& problem, int32_t pair, size_t step)
@@ -79,7 +85,7 @@ void write_surface_behavior(std::ostream& out, const fem::NormalLaw& law, bool t
   // A node-to-surface pair's LINEAR law has a tension sigma_inf, E / 70 000 where the line gives
   // none or one <= 0 (CalculiX's surfacebehaviors.f, and the deck reader): a deck's own law
   // keeps its value, hard contact written as a penalty gets that default.
-  const double stiffness = law.kind == fem::NormalLawKind::linear ? law.slope : pair.stiffness;
+  const double stiffness = normal_slope(law, pair);
   if (tied)
     out << "TIED\n";
   else if (law.kind == fem::NormalLawKind::exponential)
@@ -414,7 +420,7 @@ void write_contact(std::ostream& out, const fem::Problem& problem, const Calculi
     }
     const std::string interaction = "SI_" + std::to_string(p + 1);
     const bool node_to_segment = p < options.node_to_segment.size() && options.node_to_segment[p];
-    const double stiffness = normal_slope(names, pairs[p]);
+    const double stiffness = normal_slope(names.interaction.law, pairs[p]);
     // The pair's law in the first step (TIED where *CHANGE SURFACE BEHAVIOR makes it contact
     // later: write_model_changes writes the changes).
     out << "*SURFACE INTERACTION, NAME=" << interaction << '\n';
@@ -460,8 +466,7 @@ void write_ties(std::ostream& out, const fem::Problem& problem, const DeckNodes&
   {
     const fem::Tie& tie = problem.ties[t];
     // A contact pair's tied steps are its own (write_contact, write_model_changes).
-    if (std::ranges::any_of(std::views::iota(0, static_cast<int32_t>(problem.contacts.size())),
-                            [&](int32_t p) { return tie_of_pair(problem, p) == t; }))
+    if (is_pair_tie(problem, t))
       continue;
     for (const std::string& set : {tie.slave, tie.master})
     {
@@ -635,8 +640,7 @@ CalculixDeckSummary write_calculix_deck(const fem::Problem& problem, const Calcu
   // A tie out of force in a step is a contact pair's tied state (*CHANGE SURFACE BEHAVIOR).
   for (const fem::Step& step : problem.steps)
     for (const int32_t t : step.removed_ties)
-      FETICON_CHECK(std::ranges::any_of(std::views::iota(0, static_cast<int32_t>(problem.contacts.size())),
-                                        [&](int32_t p) { return tie_of_pair(problem, p) == t; }),
+      FETICON_CHECK(is_pair_tie(problem, t),
                     "calculix export: tie " << problem.ties[t].name
                                             << " is taken out of force in a step, which a deck's *TIE cannot say (a "
                                                "tied contact pair's *CHANGE SURFACE BEHAVIOR can)");

@@ -188,8 +188,8 @@ void write_model_changes(std::ostream& out, const fem::Problem& problem, const C
                                            << problem.contacts[p].slave << " / " << problem.contacts[p].master
                                            << " away, which CalculiX cannot say (its *FRICTION asks mu > 0)");
     out << "*CHANGE FRICTION, INTERACTION=SI_" << p + 1 << "\n*FRICTION\n"
-        << number(mu) << ", " << number(normal_slope(problem.contacts[p], pairs[p]) / options.stick_slope_ratio)
-        << '\n';
+        << number(mu) << ", "
+        << number(normal_slope(problem.contacts[p].interaction.law, pairs[p]) / options.stick_slope_ratio) << '\n';
   }
 }
 

@@ -68,14 +68,17 @@ struct ContactPairFaces
 /// Coulomb's mu of pair `pair` in step `step` (CalculixOptions::friction; 0 where not given).
 double friction_of(const CalculixOptions& options, size_t step, size_t pair);
 
-/// The slope K of a pair's LINEAR law as written: its own law's, else the penalty of hard contact.
-double normal_slope(const fem::ContactPairNames& names, const ContactPairFaces& pair);
+/// The slope K of `law` as a LINEAR law is written: its own where it is linear, else the penalty
+/// of hard contact on `pair`.
+double normal_slope(const fem::NormalLaw& law, const ContactPairFaces& pair);
 
 /// The tie (index into fem::Problem::ties) of contact pair `pair` in the steps where it is tied:
 /// a deck's pair that *CHANGE SURFACE BEHAVIOR turns between TIED and a contact law is a tie
 /// and a pair, each out of force where the other is in (fem::Step::removed_ties,
 /// removed_contacts). -1: the pair is never tied.
 int32_t tie_of_pair(const fem::Problem& problem, int32_t pair);
+/// Whether tie `tie` is a contact pair's tied state (tie_of_pair of some pair).
+bool is_pair_tie(const fem::Problem& problem, int32_t tie);
 /// Whether pair `pair` is tied in step `step` (0-based): its tie in force there.
 bool tied_in_step(const fem::Problem& problem, int32_t pair, size_t step);
 /// Pair `pair`'s normal law in step `step`: the step's fem::Step::changed_law, else its own.

@@ -11,34 +11,24 @@
 # Usage: fbar.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
+source_dir="$2"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 py=/usr/bin/python3
 
-"$py" - "$work" <<'PY'
-import math, sys
+"$py" - "$work" "$source_dir/tests/tools" <<'PY'
+import sys
 work = sys.argv[1]
+sys.path.insert(0, sys.argv[2])
+import quarter_ring_deck as ring
 a, b, nr, nt, p, c10 = 1.0, 2.0, 4, 8, 1e3, 5e5
 for name, ratio in (("nearly_incompressible", 5000), ("compressible", 5)):
     d1 = 2 / (ratio * 2 * c10)  # K_0 = 2 / D1 = ratio mu_0
-    lines = ["*NODE, NSET=NALL"]
-    nid = lambda i, j: 1 + j * (nr + 1) + i
-    for j in range(nt + 1):
-        t = 0.5 * math.pi * j / nt
-        for i in range(nr + 1):
-            r = a + (b - a) * i / nr
-            lines.append(f"{nid(i, j)}, {r * math.cos(t):.15g}, {r * math.sin(t):.15g}, 0")
-    lines.append("*ELEMENT, TYPE=CPE4, ELSET=RUBBER")
-    for j in range(nt):
-        for i in range(nr):
-            lines.append(f"{1 + j * nr + i}, {nid(i, j)}, {nid(i + 1, j)}, {nid(i + 1, j + 1)}, {nid(i, j + 1)}")
-    lines += ["*NSET, NSET=XAXIS"] + [f"{nid(i, 0)}," for i in range(nr + 1)]
-    lines += ["*NSET, NSET=YAXIS"] + [f"{nid(i, nt)}," for i in range(nr + 1)]
-    lines += ["*NSET, NSET=INNER"] + [f"{nid(0, j)}," for j in range(nt + 1)]
+    lines = ring.mesh_lines(a, b, nr, nt)
     lines += ["*MATERIAL, NAME=RUBBER", "*HYPERELASTIC, NEO HOOKE", f"{c10}, {d1}",
-              "*SOLID SECTION, ELSET=RUBBER, MATERIAL=RUBBER",
+              "*SOLID SECTION, ELSET=RING, MATERIAL=RUBBER",
               "*STEP, NLGEOM", "*STATIC", "*BOUNDARY", "XAXIS, 2, 2, 0", "YAXIS, 1, 1, 0", "*DLOAD"]
-    lines += [f"{1 + j * nr}, P4, {p}" for j in range(nt)]  # P4: the edge 4-1, at r = a
+    lines += ring.inner_pressure(nr, nt, p)
     lines += ["*NODE PRINT, NSET=INNER", "U", "*END STEP"]
     open(f"{work}/{name}.inp", "w").write("\n".join(lines) + "\n")
 PY

@@ -18,31 +18,20 @@ trap 'rm -rf "$work"' EXIT
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_mpi_yield_when_idle=1 OPENBLAS_NUM_THREADS=1
 py=/usr/bin/python3
-"$py" - "$work" <<'PY'
+"$py" - "$work" "$src/tests/tools" <<'PY'
 import math, sys
 work = sys.argv[1]
+sys.path.insert(0, sys.argv[2])
+import quarter_ring_deck as ring
 a, b, E, nu, sy, c = 1.0, 2.0, 200e9, 0.4999, 200e6, 1.3
 k = sy / math.sqrt(3)
 p = k * (2 * math.log(c / a) + 1 - c * c / (b * b))
 for n in (4, 8):
-    nid = lambda i, j: 1 + j * (n + 1) + i
-    lines = ["*NODE, NSET=NALL"]
-    for j in range(n + 1):
-        t = 0.5 * math.pi * j / n
-        for i in range(n + 1):
-            r = a + (b - a) * i / n
-            lines.append(f"{nid(i, j)}, {r * math.cos(t):.15g}, {r * math.sin(t):.15g}, 0")
-    lines.append("*ELEMENT, TYPE=CPE4, ELSET=RING")
-    for j in range(n):
-        for i in range(n):
-            lines.append(f"{1 + j * n + i}, {nid(i, j)}, {nid(i + 1, j)}, {nid(i + 1, j + 1)}, {nid(i, j + 1)}")
-    lines += ["*NSET, NSET=XAXIS"] + [f"{nid(i, 0)}," for i in range(n + 1)]
-    lines += ["*NSET, NSET=YAXIS"] + [f"{nid(i, n)}," for i in range(n + 1)]
-    lines += ["*NSET, NSET=OUTER", f"{nid(n, 0)},"]  # at (b, 0): u_x is u_r
+    lines = ring.mesh_lines(a, b, n, n)
     lines += ["*MATERIAL, NAME=STEEL", "*ELASTIC", f"{E}, {nu}", "*PLASTIC", f"{sy}, 0.",
               "*SOLID SECTION, ELSET=RING, MATERIAL=STEEL", "*STEP, NLGEOM, INC=100", "*STATIC, DIRECT",
               "0.1, 1.", "*BOUNDARY", "XAXIS, 2, 2, 0", "YAXIS, 1, 1, 0", "*DLOAD"]
-    lines += [f"{1 + j * n}, P4, {p}" for j in range(n)]  # P4: the edge at r = a
+    lines += ring.inner_pressure(n, n, p)
     lines += ["*NODE PRINT, NSET=OUTER", "U", "*END STEP"]
     open(f"{work}/ring{n}.inp", "w").write("\n".join(lines) + "\n")
 PY
@@ -63,7 +52,8 @@ hill = sy / math.sqrt(3) * c * c / (2 * E / (2 * (1 + nu)) * b)
 def u_b(run, n):
     assert json.load(open(f"{work}/{run}/summary.json"))["converged"], run
     blocks = [blk for blk in parse_dat(f"{work}/{run}/ring{n}.dat")["blocks"] if blk["kind"] == "displacements"]
-    return blocks[-1]["rows"][0][1] / hill - 1
+    row = next(r for r in blocks[-1]["rows"] if r[0] == n + 1)  # node (n, 0) at (b, 0): u_x is u_r
+    return row[1] / hill - 1
 errors = {run: u_b(run, n) for run, n in (("standard", 8), ("fbar4", 4), ("fbar8", 8))}
 for run, e in errors.items():
     print(f"{run}: u(b) {e:+.2%} from Hill's {hill:.6e} m")

@@ -53,12 +53,18 @@ def read_array(element, byte_order, header_dtype):
     return values
 
 
-def point_data(path):
-    """Every PointData array of the .vtu at `path` by name, vectors as (points, components)."""
+def parse(path):
+    """The root of the .vtu at `path`, its byte order and the dtype of its binary headers."""
     root = ElementTree.parse(path).getroot()
     byte_order = root.get("byte_order", "LittleEndian")
     header_dtype = numpy.dtype(("<" if byte_order == "LittleEndian" else ">") +
                                TYPES[root.get("header_type", "UInt32")])
+    return root, byte_order, header_dtype
+
+
+def point_data(path):
+    """Every PointData array of the .vtu at `path` by name, vectors as (points, components)."""
+    root, byte_order, header_dtype = parse(path)
     arrays = {}
     for element in root.findall("UnstructuredGrid/Piece/PointData/DataArray"):
         values = read_array(element, byte_order, header_dtype)
@@ -69,10 +75,7 @@ def point_data(path):
 
 def points(path):
     """The point coordinates of the .vtu at `path`, (points, 3)."""
-    root = ElementTree.parse(path).getroot()
-    byte_order = root.get("byte_order", "LittleEndian")
-    header_dtype = numpy.dtype(("<" if byte_order == "LittleEndian" else ">") +
-                               TYPES[root.get("header_type", "UInt32")])
+    root, byte_order, header_dtype = parse(path)
     element = root.find("UnstructuredGrid/Piece/Points/DataArray")
     return read_array(element, byte_order, header_dtype).reshape(-1, 3)
 
@@ -90,14 +93,11 @@ def describe(element, values):
 
 
 def main(path):
-    root = ElementTree.parse(path).getroot()
+    root, byte_order, header_dtype = parse(path)
     if root.get("type") != "UnstructuredGrid":
         raise ValueError(f"not an UnstructuredGrid file: type={root.get('type')!r}")
     if root.get("compressor"):
         raise ValueError("compressed data are not supported by this reader")
-    byte_order = root.get("byte_order", "LittleEndian")
-    prefix = "<" if byte_order == "LittleEndian" else ">"
-    header_dtype = numpy.dtype(prefix + TYPES[root.get("header_type", "UInt32")])
     piece = root.find("UnstructuredGrid/Piece")
     result = {
         "NumberOfPoints": int(piece.get("NumberOfPoints")),
