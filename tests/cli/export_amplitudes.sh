@@ -12,7 +12,8 @@
 #    state A (E (u / L - alpha T) + nu sigma_y) (7 digits); the deck run equals the problem file's.
 #    CalculiX 2.20 on this deck prints -4.000000E+06 and -1.215500E+05 N at the two step ends.
 # 3. a load that goes from an amplitude to a ramp between steps (CalculiX ramps from its last
-#    value, feticon from the loads without amplitude): one line.
+#    value, feticon from the loads without amplitude), and a node direction loaded by two amplitude
+#    groups in one step (CalculiX's forcadd.f refuses it): one line each.
 # Usage: export_amplitudes.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -152,3 +153,15 @@ fi
 [ "$(wc -l <"$work/err.txt")" -eq 1 ]
 grep -q "calculix export: step 2: node [0-9]*, direction 3 is loaded without amplitude, in step 1 with" "$work/err.txt"
 echo "bad input: $(cat "$work/err.txt")"
+# Loads of two groups on one node direction (the top's traction follows an amplitude, a shear on
+# the side without one shares the top edge's nodes in z): one line, which a deck cannot say.
+sed 's/^  - loads: \[{set: block_zmax, traction: \[0, 0, -4e6\], amplitude: updown}\]$/  - loads: [{set: block_zmax, traction: [0, 0, -4e6], amplitude: updown}, {set: block_xmax, traction: [0, 0, -1e5]}]/' \
+  "$work/block.yaml" >"$work/two_groups.yaml"
+grep -q 'block_xmax, traction: \[0, 0, -1e5\]' "$work/two_groups.yaml"
+if "$feticon" export "$work/two_groups.yaml" --format calculix -o "$work/two_groups" 2>"$work/err2.txt" >/dev/null; then
+  echo "a node direction loaded by two amplitude groups was exported"
+  exit 1
+fi
+[ "$(wc -l <"$work/err2.txt")" -eq 1 ]
+grep -q "calculix export: step 1: node [0-9]*, direction 3 is loaded by loads of two amplitudes" "$work/err2.txt"
+echo "bad input: $(cat "$work/err2.txt")"

@@ -71,6 +71,20 @@ for run in changed removed; do
 done
 grep -q '^\*CHANGE FRICTION, INTERACTION=SI_1$' "$work/changed-deck/feticon.inp"
 grep -q '^\*MODEL CHANGE, TYPE=CONTACT PAIR, REMOVE$' "$work/removed-deck/feticon.inp"
+# What a deck cannot say, one line each: friction that starts after the first step (the pair
+# frictionless, step 3 gives mu = 0.1) and friction taken away (step 3 model none).
+sed 's/friction: {model: coulomb, coefficient: 0.3}}$/friction: {model: none}}/' "$work/changed.yaml" >"$work/late.yaml"
+sed 's/contact: \[{pair: 0, friction: {model: coulomb, coefficient: 0.1}}\]/contact: [{pair: 0, friction: {model: none}}]/' \
+  "$work/changed.yaml" >"$work/taken.yaml"
+for case in "late:has friction in a later step but none in the first" "taken:takes the friction of contact pair"; do
+  name=${case%%:*}
+  ! cmp -s "$work/$name.yaml" "$work/changed.yaml"
+  if "$feticon" export "$work/$name.yaml" --format calculix -o "$work/$name-deck" >/dev/null 2>"$work/$name.err"; then
+    echo "$name: exported"; exit 1
+  fi
+  [ "$(wc -l <"$work/$name.err")" -eq 1 ] && grep -q "calculix export: .*${case#*:}" "$work/$name.err" || { cat "$work/$name.err"; exit 1; }
+  echo "$name: $(cat "$work/$name.err")"
+done
 sed 's/contact: \[{pair: 0,/contact: [{pair: 3,/' "$work/changed.yaml" >"$work/bad.yaml"
 if "$feticon" run -q "$work/bad.yaml" --output "$work/bad" >"$work/bad.log" 2>&1; then echo "pair 3 accepted"; exit 1; fi
 grep -q "steps.2.contact.0.pair = 3 is not an index into the contact list (1 pairs)" "$work/bad.log" || { cat "$work/bad.log"; exit 1; }
