@@ -22,6 +22,9 @@ class Decomposition : public Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lo
 {
 public:
   const cholmod_factor& factor() const { return *m_cholmodFactor; }
+  /// Whether the analysis gave a factor: Eigen's analyzePattern reports success whatever
+  /// cholmod_analyze returned, and its factorize then reads a null factor.
+  bool analyzed() const { return m_cholmodFactor != nullptr; }
 
   /// analyzePattern with the ordering `perm` (CHOLMOD's Perm), postordered by CHOLMOD.
   void analyze_given(const SparseMatrix& A, std::vector<int>& perm)
@@ -83,11 +86,12 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what, FactorPre
     else
       solver.analyzePattern(A);
   }
-  if (solver.info() != Eigen::Success)
+  if (solver.info() != Eigen::Success || !solver.analyzed())
   {
     const int status = solver.cholmod().status;
     _impl.reset();
-    FETICON_CHECK(false, "CHOLMOD could not analyze " << what << " (status " << status << ")");
+    FETICON_CHECK(
+        false, "CHOLMOD could not analyze " << what << " (status " << status << "; -4: an input it takes for invalid)");
   }
   solver.factorize(A);
   if (solver.info() != Eigen::Success)
