@@ -163,9 +163,10 @@ FaceSegments integrate_slave_face(const mesh::Face& face, const FaceGeometry& sl
     dual = face_dual_basis(slave);
     out.nodal_area = dual->nodal_area;
   }
+  const SlaveFootprint footprint(slave);
   for (const int32_t f : candidates)
   {
-    if (share_a_node(face, master_faces[f]))
+    if (share_a_node(face, master_faces[f]) || !footprint.may_overlap(master_geometry[f]))
       continue;
     if (quad_dual && master_faces[f].kind == mesh::FaceKind::quad4)
     {

@@ -6,6 +6,7 @@
 #include "fem/reference_face.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace feticon::contact
 {
@@ -163,6 +164,35 @@ FaceDualBasis face_dual_basis(const FaceGeometry& slave)
   }
   dual.coefficients = dual_coefficients(dual.nodal_area, mass);
   return dual;
+}
+
+SlaveFootprint::SlaveFootprint(const FaceGeometry& slave)
+{
+  const FacePlane plane = face_plane(slave);
+  _origin = plane.origin;
+  _axis_1 = plane.axis_1;
+  _axis_2 = plane.axis_2;
+  _low = _high = plane.project(slave.x.row(0).transpose());
+  for (Eigen::Index k = 1; k < slave.x.rows(); ++k)
+  {
+    const Eigen::Vector2d p = plane.project(slave.x.row(k).transpose());
+    _low = _low.cwiseMin(p);
+    _high = _high.cwiseMax(p);
+  }
+  _margin = 1e-9 * (_high - _low).maxCoeff();
+}
+
+bool SlaveFootprint::may_overlap(const FaceGeometry& master) const
+{
+  Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (Eigen::Index k = 0; k < master.x.rows(); ++k)
+  {
+    const Eigen::Vector3d d = master.x.row(k).transpose() - _origin;
+    const Eigen::Vector2d p(_axis_1.dot(d), _axis_2.dot(d));
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  return (low.array() <= _high.array() + _margin).all() && (high.array() >= _low.array() - _margin).all();
 }
 
 std::optional<Eigen::MatrixXd> integrate_face_segment(const FaceGeometry& slave, const FaceDualBasis& dual,

@@ -135,6 +135,68 @@ TEST(MortarFaces, FacesApartDoNotCouple)
   EXPECT_FALSE(integrate_face_segment(slave, face_dual_basis(slave), master).has_value());
 }
 
+// SlaveFootprint only sorts out masters the segment routines would not integrate: the master
+// face slid across the slave in its plane, in steps of 0.2, couples
+// (integrate_face_segment, and mortar_integration.hpp's integrate_segment for quad4) only where
+// the footprint keeps it, and the footprint drops it once it lies wholly beside the slave
+// (the faces span at most 1.8 along x; the shifts reach 3).
+TEST_P(MortarFaces, FootprintKeepsEveryMasterThatCouples)
+{
+  const FaceKind kind = GetParam();
+  const FaceGeometry slave = flat_face(kind);
+  const SlaveFootprint footprint(slave);
+  const FaceDualBasis dual = face_dual_basis(slave);
+  const Eigen::Vector3d along(1.0, 0.0, 0.0); // in the face's tilted plane
+  int coupled = 0, dropped = 0;
+  for (int step = -15; step <= 15; ++step)
+  {
+    FaceGeometry master = reversed(slave);
+    master.x.rowwise() += (0.2 * step * along).transpose();
+    const bool couples = integrate_face_segment(slave, dual, master).has_value();
+    const bool quad_couples =
+        kind == FaceKind::quad4 && integrate_segment(slave.quad(), dual_basis(slave.quad()), master.quad()).has_value();
+    if (couples || quad_couples)
+    {
+      EXPECT_TRUE(footprint.may_overlap(master)) << "shift " << 0.2 * step;
+      ++coupled;
+    }
+    if (!footprint.may_overlap(master))
+      ++dropped;
+  }
+  EXPECT_GT(coupled, 0);
+  EXPECT_GT(dropped, 0);
+}
+
+// The same for an edge of a 2D cell (integrate_edge_segment): a line2 master slid along the
+// slave's line.
+TEST(MortarFaces, FootprintKeepsEveryMasterEdgeThatCouples)
+{
+  FaceGeometry slave;
+  slave.kind = FaceKind::line2;
+  slave.planar = {mesh::PlanarKind::plane_strain, 1.0};
+  slave.x.resize(2, 3);
+  slave.x << 0.0, 0.0, 0.0, 1.0, 0.1, 0.0;
+  const SlaveFootprint footprint(slave);
+  const FaceDualBasis dual = face_dual_basis(slave);
+  int coupled = 0, dropped = 0;
+  for (int step = -15; step <= 15; ++step)
+  {
+    FaceGeometry master = slave;
+    master.x.row(0) = slave.x.row(1);
+    master.x.row(1) = slave.x.row(0); // the other body's edge: reversed
+    master.x.col(0).array() += 0.1 * step;
+    if (integrate_face_segment(slave, dual, master).has_value())
+    {
+      EXPECT_TRUE(footprint.may_overlap(master)) << "shift " << 0.1 * step;
+      ++coupled;
+    }
+    if (!footprint.may_overlap(master))
+      ++dropped;
+  }
+  EXPECT_GT(coupled, 0);
+  EXPECT_GT(dropped, 0);
+}
+
 std::string face_name(const ::testing::TestParamInfo<FaceKind>& info)
 {
   constexpr std::array<const char*, 4> names = {"tri3", "tri6", "quad4", "quad8"};
