@@ -7,6 +7,12 @@
 
 namespace feticon::decomposition
 {
+namespace
+{
+/// Below it a factor's reciprocal condition estimate (la::CholmodFactor) calls K singular.
+constexpr double singular_reciprocal_condition = 1e-12;
+} // namespace
+
 std::vector<int32_t> choose_fixing_nodes(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& coords)
 {
   const la::Index n = coords.rows();
@@ -75,6 +81,16 @@ void GeneralizedInverse::setup(const la::SparseMatrix& K, const la::Matrix& R,
       }
     _factor.factorize(la::principal_submatrix(K, position, static_cast<int32_t>(_kept.size())), what.c_str(),
                       precision);
+    // K without the fixing DOFs is positive definite where the kernel is R's; where K has
+    // another zero-energy mode its Cholesky factorization may still pass on a pivot at round-off
+    // (CalculiX's plate: one CPS8R cell a body, reciprocal condition 5.5e-15), and K+ is then
+    // garbage (displacements of 1e8 m). The smallest reciprocal condition of a subdomain of the
+    // test decks and examples is 3.4e-6 (bolt): below 1e-12 K is singular, as a failed
+    // factorization says (SubdomainSystem then takes the kernel from K itself).
+    FETICON_CHECK(_factor.reciprocal_condition() > singular_reciprocal_condition,
+                  what << ": the stiffness without its fixing DOFs is singular to round-off (reciprocal condition "
+                       << _factor.reciprocal_condition()
+                       << "): a zero-energy mode besides the rigid-body motions, or stiffnesses 1e12 apart");
     return;
   }
 

@@ -49,7 +49,7 @@ la::Matrix rigid_body_modes(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen
   return qr.householderQ() * la::Matrix::Identity(R.rows(), R.cols());
 }
 
-std::optional<la::Matrix> zero_energy_modes(const la::SparseMatrix& K_lower, la::Index rigid_modes)
+std::optional<la::Matrix> zero_energy_modes(const la::SparseMatrix& K_lower, const la::Matrix& rigid)
 {
   const la::Index n = K_lower.rows();
   if (n == 0 || n > max_dense_kernel_dofs)
@@ -61,8 +61,25 @@ std::optional<la::Matrix> zero_energy_modes(const la::SparseMatrix& K_lower, la:
   if (values(0) < -tolerance)
     return std::nullopt;
   const auto k = static_cast<la::Index>((values.array() <= tolerance).count());
-  if (k <= rigid_modes)
+  const la::Index extra = k - rigid.cols();
+  if (extra <= 0)
     return std::nullopt;
-  return la::Matrix(eigen.eigenvectors().leftCols(k));
+  // The eigenvectors are one orthonormal basis of the kernel, turned by the round-off of K
+  // (the element arithmetic's order turned CalculiX's plate from a run into "G G' is singular",
+  // whose pivot test depends on the basis). The kernel in a basis of its own: the rigid motions
+  // as every subdomain has them, then the part W = (I - R R') V beyond them (rank `extra`),
+  // written as W W_P^+ on the `extra` DOFs P that a pivoted QR of W' picks (by norms that no
+  // turn of V changes, and so is the basis: the identity on P), orthonormalized.
+  const la::Matrix V = eigen.eigenvectors().leftCols(k);
+  const la::Matrix W = V - rigid * (rigid.transpose() * V);
+  const Eigen::ColPivHouseholderQR<la::Matrix> pivots(W.transpose());
+  la::Matrix W_P(extra, k);
+  for (la::Index j = 0; j < extra; ++j)
+    W_P.row(j) = W.row(pivots.colsPermutation().indices()(j));
+  const la::Matrix E = W * W_P.completeOrthogonalDecomposition().pseudoInverse();
+  const la::Matrix E_orthonormal = E.householderQr().householderQ() * la::Matrix::Identity(n, extra);
+  la::Matrix kernel(n, k);
+  kernel << rigid, E_orthonormal;
+  return kernel;
 }
 } // namespace feticon::decomposition

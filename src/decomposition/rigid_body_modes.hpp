@@ -32,10 +32,12 @@ inline constexpr la::Index max_dense_kernel_dofs = 1500;
 
 /// The kernel of K itself where it is larger than the rigid-body modes': a cell with reduced
 /// integration alone in its subdomain (CalculiX's plate: one CPS8R a body) has zero-energy
-/// (hourglass) modes, which do not survive in a mesh of several cells. The eigenvectors of the
-/// dense K whose eigenvalues are below 1e-10 of the largest, orthonormal; none (nullopt) where
-/// there are no more than `rigid_modes` of them, K has a clearly negative eigenvalue, or K
-/// has more than max_dense_kernel_dofs rows.
+/// (hourglass) modes, which do not survive in a mesh of several cells. The space of the
+/// eigenvectors of the dense K whose eigenvalues are below 1e-10 of the largest, as `rigid`
+/// followed by an orthonormal basis of the rest that does not depend on the round-off of K;
+/// none (nullopt) where that space is no larger than rigid's, K has a clearly negative
+/// eigenvalue, or K has more than max_dense_kernel_dofs rows.
 /// @param K_lower the lower triangle of the symmetric K (active DOFs)
-std::optional<la::Matrix> zero_energy_modes(const la::SparseMatrix& K_lower, la::Index rigid_modes);
+/// @param rigid   the rigid-body modes (rigid_body_modes: orthonormal)
+std::optional<la::Matrix> zero_energy_modes(const la::SparseMatrix& K_lower, const la::Matrix& rigid);
 } // namespace feticon::decomposition

@@ -85,7 +85,7 @@ void SubdomainSystem::update(const la::Vector& u_stacked, TimerTable* timers)
     }
     catch (const Error&)
     {
-      if (auto modes = zero_energy_modes(op.K, op.R.cols()))
+      if (auto modes = zero_energy_modes(op.K, op.R))
         factor_with_zero_energy_modes(op, std::move(*modes), what);
       else
         factor_definite_part(s, u_stacked, fixing_candidates[s - first], what);

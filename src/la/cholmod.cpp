@@ -51,6 +51,7 @@ struct CholmodFactor::Impl
   std::unique_ptr<Decomposition> solver;         ///< null once copied to `single`
   std::unique_ptr<SinglePrecisionFactor> single; ///< FactorPrecision::single_precision
   long nonzeros = 0;
+  double reciprocal_condition = 0;
 };
 
 CholmodFactor::CholmodFactor() = default;
@@ -123,6 +124,7 @@ void CholmodFactor::factorize(const SparseMatrix& A, const char* what, FactorPre
   }
   // For a supernodal factor CHOLMOD's lnz counts the entries.
   _impl->nonzeros = static_cast<long>(solver.cholmod().lnz);
+  _impl->reciprocal_condition = cholmod_rcond(const_cast<cholmod_factor*>(&solver.factor()), &solver.cholmod());
   if (precision == FactorPrecision::single_precision && solver.factor().is_super)
   {
     _impl->single = std::make_unique<SinglePrecisionFactor>(solver.factor());
@@ -153,6 +155,8 @@ Matrix CholmodFactor::solve(const Matrix& B) const
   }
   return X;
 }
+
+double CholmodFactor::reciprocal_condition() const { return _impl ? _impl->reciprocal_condition : 0.0; }
 
 long CholmodFactor::factor_nonzeros() const { return _impl ? _impl->nonzeros : 0; }
 } // namespace feticon::la

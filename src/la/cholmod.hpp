@@ -43,6 +43,10 @@ public:
   bool single_precision() const;
   /// Nonzeros in the Cholesky factor (memory and cost indicator).
   long factor_nonzeros() const;
+  /// CHOLMOD's estimate of the reciprocal condition number, (min L_jj / max L_jj)^2 (LL') or
+  /// min |D_jj| / max |D_jj| (LDL'): of the order of machine epsilon where A is singular and
+  /// the factorization passed on a pivot at round-off.
+  double reciprocal_condition() const;
 
 private:
   struct Impl;
