@@ -4,6 +4,7 @@
 #include "contact/mortar_constraints.hpp"
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -356,27 +357,36 @@ ContactConstraints build_node_to_segment_constraints(const mesh::Mesh& mesh, con
   const SurfaceSearch search(std::move(search_boxes));
   const SurfaceBoundary boundary(faces);
 
+  // Each slave node's closest point on its own (chunks of nodes on the threads; the outer
+  // loop searches every slave node at every iteration).
   std::vector<std::optional<ClosestPoint>> closest_points(slave_nodes.size());
-  std::vector<int32_t> candidates;
-  double smallest_gap = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < slave_nodes.size(); ++i)
-  {
-    const int32_t s = slave_nodes[i];
-    Eigen::Vector3d x_s = mesh.nodes.row(s).transpose();
-    if (u.size() > 0)
-      x_s += u.segment<3>(3 * static_cast<la::Index>(s));
-    search.candidates(x_s, candidates);
-    std::optional<ClosestPoint>& closest = closest_points[i];
-    closest = closest_face_projection(geometries, face_boxes, faces, candidates, s, x_s);
-    if (!closest && !candidates.empty())
+  std::vector<char> overhanging(slave_nodes.size(), 0);
+  constexpr int32_t nodes_per_chunk = 64;
+  const auto n_chunks = static_cast<int32_t>((slave_nodes.size() + nodes_per_chunk - 1) / nodes_per_chunk);
+  parallel_for(0, n_chunks, setup_work, [&](int32_t chunk) {
+    std::vector<int32_t> candidates;
+    const size_t end = std::min(slave_nodes.size(), static_cast<size_t>(chunk + 1) * nodes_per_chunk);
+    for (size_t i = static_cast<size_t>(chunk) * nodes_per_chunk; i < end; ++i)
     {
-      closest = outside_point(geometries, faces, candidates, boundary, s, x_s, options.rim_extension);
-      if (!closest)
-        ++out.n_overhanging;
+      const int32_t s = slave_nodes[i];
+      Eigen::Vector3d x_s = mesh.nodes.row(s).transpose();
+      if (u.size() > 0)
+        x_s += u.segment<3>(3 * static_cast<la::Index>(s));
+      search.candidates(x_s, candidates);
+      std::optional<ClosestPoint>& closest = closest_points[i];
+      closest = closest_face_projection(geometries, face_boxes, faces, candidates, s, x_s);
+      if (!closest && !candidates.empty())
+      {
+        closest = outside_point(geometries, faces, candidates, boundary, s, x_s, options.rim_extension);
+        overhanging[i] = !closest;
+      }
     }
+  });
+  out.n_overhanging += static_cast<int32_t>(std::ranges::count(overhanging, 1));
+  double smallest_gap = std::numeric_limits<double>::infinity();
+  for (const std::optional<ClosestPoint>& closest : closest_points)
     if (closest)
       smallest_gap = std::min(smallest_gap, closest->gap);
-  }
   // Near contact (options.near_contact_fraction): the bodies touch where the gap is at most
   // the smallest one, or 0 once they touch.
   const double contact_level = std::max(smallest_gap, 0.0);
