@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # feticon and CalculiX on the identical model (issue 16): exports the problem of the given
 # feticon arguments (`feticon export --format calculix`), solves the deck with ccx on 2
-# threads and the problem with `feticon run`, each --reps times one after the other, under
+# threads and the problem with `feticon run`, --reps times each, alternately, under
 # GNU time (ccx writes its .frd and .dat, feticon its results folder with VTU but no PNG
 # plots, which have no counterpart in ccx), then bench/calculix_compare.py computes every
 # figure with the same code for both and writes CASE/comparison.json. ccx reads its mesh from
@@ -99,6 +99,8 @@ printf '%s\n' "$@" > "$case_dir/arguments"
 export FETICON_MESH_CACHE=$case_dir/mesh-cache
 "$feticon" export "$@" --format calculix --output "$case_dir/deck" 2>&1 | tee "$case_dir/export.log"
 
+# The two alternately, rep by rep: this machine's speed drifts by 10 % over minutes, which runs
+# in blocks (all ccx, then all feticon) put on one side of the ratio (docs/benchmarks.md).
 for ((i = 1; i <= reps; ++i)); do
   d=$case_dir/ccx.rep$i
   mkdir -p "$d"
@@ -110,8 +112,6 @@ for ((i = 1; i <= reps; ++i)); do
     echo "bench/calculix.sh: $name: ccx failed, see $d/stdout" >&2
   wall_since "$start" > "$d/wall"
   rm -f "$d/feticon.inp"
-done
-for ((i = 1; i <= reps; ++i)); do
   d=$case_dir/feticon.rep$i
   echo "bench/calculix.sh: $name: feticon run $i of $reps"
   mkdir -p "$d"
