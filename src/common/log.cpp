@@ -38,8 +38,14 @@ void write(Level l, const std::string& line)
   if (current_rank != 0 || !enabled(l))
     return;
   // Progress goes to stdout; warnings to stderr so that they survive redirection of output.
+  // One write of the whole line under a lock: the subdomain loops log from their threads, and
+  // two warnings written piece by piece ran together into one line and an empty one (a fuzz
+  // mutant of CalculiX's plate, whose two one-cell bodies both take their kernel from K).
+  static std::mutex write_mutex;
+  const std::string text = line + '\n';
   std::ostream& os = (l == Level::warning) ? std::cerr : std::cout;
-  os << line << '\n' << std::flush;
+  const std::lock_guard lock(write_mutex);
+  os << text << std::flush;
 }
 
 void warning(const std::string& line)

@@ -15,6 +15,9 @@
 /// is E_33 = 0; plane stress takes E_33 where S_33 = 0 (the in-plane tangent
 /// D - D e3 e3' D / D_33; exact for St Venant-Kirchhoff, linear in E); axisymmetry (x = r) has
 /// F_33 = 1 + u_r / r, so E_33 = u_r / r + (u_r / r)^2 / 2, with its terms in B and in K_G.
+/// u_z is no unknown of a 2D model: of a 2D cell's f and K only the x and y entries are
+/// computed (the products on B's rows 11, 22, 33, 12 and its x and y columns), the z entries
+/// are to be ignored.
 
 #include "fem/hex8_element.hpp"
 #include "fem/j2_plasticity.hpp"

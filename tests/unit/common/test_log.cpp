@@ -8,6 +8,9 @@
 
 #include <iostream>
 #include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
 
 using namespace feticon;
 
@@ -52,4 +55,35 @@ TEST(Log, ARepeatedWarningIsWrittenOnceAndCountedOnce)
             "warning: rows are dependent (100 times, first at load step 1, outer iteration 1, "
             "last at load step 100, outer iteration 1)\n");
   ASSERT_EQ(taken.size(), 1u);
+}
+
+// Warnings logged from the threads of a subdomain loop at once each stay one line on stderr:
+// written piece by piece, two ran together into one line and an empty one (a fuzz mutant of
+// CalculiX's plate, two one-cell bodies taking their kernels from K on the two threads).
+TEST(Log, WarningsFromThreadsStayWholeLines)
+{
+  log::take_warnings();
+  const log::Level level = log::level();
+  log::set_level(log::Level::warning);
+  std::ostringstream captured;
+  std::streambuf* saved = std::cerr.rdbuf(captured.rdbuf());
+  constexpr int per_thread = 2000;
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([t] {
+      for (int k = 0; k < per_thread; ++k)
+        log::warning("thread " + std::to_string(t) + " warning " + std::to_string(k) + std::string(60, 'x'));
+    });
+  for (std::thread& thread : threads)
+    thread.join();
+  std::cerr.rdbuf(saved);
+  log::take_warnings();
+  log::set_level(level);
+  std::istringstream lines(captured.str());
+  int count = 0;
+  for (std::string line; std::getline(lines, line); ++count)
+    ASSERT_TRUE(line.starts_with("warning: thread ") && line.ends_with(std::string(60, 'x')) &&
+                line.find("warning:", 1) == std::string::npos)
+        << "line " << count << ": " << line;
+  EXPECT_EQ(count, 4 * per_thread);
 }
