@@ -202,4 +202,12 @@ void parallel_for(int32_t first, int32_t end, int64_t work, const std::function<
 ScopedBlasThreads::ScopedBlasThreads(int threads) { set_blas_threads(std::max(1, threads)); }
 
 ScopedBlasThreads::~ScopedBlasThreads() { set_blas_threads(1); }
+void parallel_for_chunks(size_t n, size_t chunk, const std::function<void(size_t, size_t)>& body)
+{
+  const auto n_chunks = static_cast<int32_t>((n + chunk - 1) / chunk);
+  parallel_for(0, n_chunks, setup_work, [&](int32_t k) {
+    const size_t begin = static_cast<size_t>(k) * chunk;
+    body(begin, std::min(n, begin + chunk));
+  });
+}
 } // namespace feticon

@@ -57,4 +57,9 @@ constexpr int64_t setup_work = std::numeric_limits<int64_t>::max();
 /// one whatever the threads' timing). A parallel_for inside a
 /// body runs serially.
 void parallel_for(int32_t first, int32_t end, int64_t work, const std::function<void(int32_t)>& body);
+
+/// body(begin, end) for the consecutive ranges of at most `chunk` indices that [0, n) splits
+/// into, on the threads (as parallel_for with setup_work): for loops over faces, nodes or
+/// cells whose items cost microseconds each and write their own results.
+void parallel_for_chunks(size_t n, size_t chunk, const std::function<void(size_t, size_t)>& body);
 } // namespace feticon

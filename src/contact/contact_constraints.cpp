@@ -361,12 +361,9 @@ ContactConstraints build_node_to_segment_constraints(const mesh::Mesh& mesh, con
   // loop searches every slave node at every iteration).
   std::vector<std::optional<ClosestPoint>> closest_points(slave_nodes.size());
   std::vector<char> overhanging(slave_nodes.size(), 0);
-  constexpr int32_t nodes_per_chunk = 64;
-  const auto n_chunks = static_cast<int32_t>((slave_nodes.size() + nodes_per_chunk - 1) / nodes_per_chunk);
-  parallel_for(0, n_chunks, setup_work, [&](int32_t chunk) {
+  parallel_for_chunks(slave_nodes.size(), 64, [&](size_t begin, size_t end) {
     std::vector<int32_t> candidates;
-    const size_t end = std::min(slave_nodes.size(), static_cast<size_t>(chunk + 1) * nodes_per_chunk);
-    for (size_t i = static_cast<size_t>(chunk) * nodes_per_chunk; i < end; ++i)
+    for (size_t i = begin; i < end; ++i)
     {
       const int32_t s = slave_nodes[i];
       Eigen::Vector3d x_s = mesh.nodes.row(s).transpose();

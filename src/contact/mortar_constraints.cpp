@@ -253,12 +253,9 @@ MortarCoupling compute_mortar_coupling(const mesh::Mesh& mesh, const la::Vector&
   const auto integrated = [&](const mesh::Face& face) {
     return !row_nodes || std::ranges::any_of(face, [&](int32_t node) { return is_row_node[node] != 0; });
   };
-  constexpr int32_t faces_per_chunk = 64;
-  const auto n_chunks = static_cast<int32_t>((slave_faces.size() + faces_per_chunk - 1) / faces_per_chunk);
-  parallel_for(0, n_chunks, setup_work, [&](int32_t chunk) {
+  parallel_for_chunks(slave_faces.size(), 64, [&](size_t begin, size_t end) {
     std::vector<int32_t> candidates;
-    const size_t end = std::min(slave_faces.size(), static_cast<size_t>(chunk + 1) * faces_per_chunk);
-    for (size_t i = static_cast<size_t>(chunk) * faces_per_chunk; i < end; ++i)
+    for (size_t i = begin; i < end; ++i)
       if (integrated(slave_faces[i]))
         per_face[i] = integrate_slave_face(slave_faces[i], current_face_geometry(mesh, u, slave_faces[i]), master_faces,
                                            master_geometry, search, options, candidates);

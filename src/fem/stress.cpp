@@ -5,8 +5,6 @@
 
 #include "common/parallel.hpp"
 
-#include <algorithm>
-
 namespace feticon::fem
 {
 std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& mesh, const la::Vector& u,
@@ -19,14 +17,12 @@ std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& 
   const bool thermal = temperature_change.size() > 0;
   // Cells in chunks on the threads (each writes its own cells' stresses): the stresses are
   // taken twice in a run (contact pressures and the VTU), a twentieth of the 2D Hertz run.
-  constexpr int32_t cells_per_chunk = 256;
-  const int32_t n_chunks = (mesh.n_cells() + cells_per_chunk - 1) / cells_per_chunk;
-  parallel_for(0, n_chunks, setup_work, [&](int32_t chunk) {
+  parallel_for_chunks(static_cast<size_t>(mesh.n_cells()), 256, [&](size_t begin, size_t end) {
     NodeCoords X, ue;
     NodeTemperatures dT = NodeTemperatures::Zero();
     Eigen::MatrixX3d X_any, u_any;
     Eigen::VectorXd dT_any;
-    for (int32_t c = chunk * cells_per_chunk; c < std::min(mesh.n_cells(), (chunk + 1) * cells_per_chunk); ++c)
+    for (auto c = static_cast<int32_t>(begin); c < static_cast<int32_t>(end); ++c)
     {
       const mesh::CellKind type = mesh.cells.kind(c);
       const std::span<const PlasticPointState> states = plastic ? plastic->of(c) : std::span<const PlasticPointState>{};
