@@ -210,6 +210,49 @@ std::optional<ClosestPoint> outside_point(const std::vector<FaceGeometry>& geome
   point.gap = side * distance.norm();
   return point;
 }
+
+/// Each slave node's closest point on the master faces (closest_face_projection, else
+/// outside_point), in chunks of nodes on the threads (the outer loop searches every slave node
+/// at every iteration); `overhanging` grows by the nodes that have candidates but no point.
+std::vector<std::optional<ClosestPoint>> closest_points_of(const mesh::Mesh& mesh, const la::Vector& u,
+                                                           const std::vector<int32_t>& slave_nodes,
+                                                           const std::vector<mesh::Face>& faces,
+                                                           const std::vector<FaceGeometry>& geometries,
+                                                           double search_distance, double rim_extension,
+                                                           int32_t& overhanging)
+{
+  std::vector<BoundingBox> face_boxes(faces.size());
+  for (size_t f = 0; f < faces.size(); ++f)
+    for (Eigen::Index a = 0; a < geometries[f].x.rows(); ++a)
+      face_boxes[f].extend(geometries[f].x.row(a).transpose());
+  std::vector<BoundingBox> search_boxes = face_boxes;
+  for (BoundingBox& box : search_boxes)
+    box.inflate(search_distance);
+  const SurfaceSearch search(std::move(search_boxes));
+  const SurfaceBoundary boundary(faces);
+  std::vector<std::optional<ClosestPoint>> closest_points(slave_nodes.size());
+  std::vector<char> beyond(slave_nodes.size(), 0);
+  parallel_for_chunks(slave_nodes.size(), 64, [&](size_t begin, size_t end) {
+    std::vector<int32_t> candidates;
+    for (size_t i = begin; i < end; ++i)
+    {
+      const int32_t s = slave_nodes[i];
+      Eigen::Vector3d x_s = mesh.nodes.row(s).transpose();
+      if (u.size() > 0)
+        x_s += u.segment<3>(3 * static_cast<la::Index>(s));
+      search.candidates(x_s, candidates);
+      std::optional<ClosestPoint>& closest = closest_points[i];
+      closest = closest_face_projection(geometries, face_boxes, faces, candidates, s, x_s);
+      if (!closest && !candidates.empty())
+      {
+        closest = outside_point(geometries, faces, candidates, boundary, s, x_s, rim_extension);
+        beyond[i] = !closest;
+      }
+    }
+  });
+  overhanging += static_cast<int32_t>(std::ranges::count(beyond, 1));
+  return closest_points;
+}
 } // namespace
 
 QuadCoordinates current_face_coordinates(const mesh::Mesh& mesh, const la::Vector& u, const mesh::Face& face)
@@ -347,39 +390,8 @@ ContactConstraints build_node_to_segment_constraints(const mesh::Mesh& mesh, con
   out.search_distance = options.search_distance > 0 ? options.search_distance : largest_face_diagonal(mesh, u, faces);
   FETICON_CHECK(out.search_distance > 0, "contact: master face set '" << pair.master << "' has only degenerate faces");
 
-  std::vector<BoundingBox> face_boxes(faces.size());
-  for (size_t f = 0; f < faces.size(); ++f)
-    for (Eigen::Index a = 0; a < geometries[f].x.rows(); ++a)
-      face_boxes[f].extend(geometries[f].x.row(a).transpose());
-  std::vector<BoundingBox> search_boxes = face_boxes;
-  for (BoundingBox& box : search_boxes)
-    box.inflate(out.search_distance);
-  const SurfaceSearch search(std::move(search_boxes));
-  const SurfaceBoundary boundary(faces);
-
-  // Each slave node's closest point on its own (chunks of nodes on the threads; the outer
-  // loop searches every slave node at every iteration).
-  std::vector<std::optional<ClosestPoint>> closest_points(slave_nodes.size());
-  std::vector<char> overhanging(slave_nodes.size(), 0);
-  parallel_for_chunks(slave_nodes.size(), 64, [&](size_t begin, size_t end) {
-    std::vector<int32_t> candidates;
-    for (size_t i = begin; i < end; ++i)
-    {
-      const int32_t s = slave_nodes[i];
-      Eigen::Vector3d x_s = mesh.nodes.row(s).transpose();
-      if (u.size() > 0)
-        x_s += u.segment<3>(3 * static_cast<la::Index>(s));
-      search.candidates(x_s, candidates);
-      std::optional<ClosestPoint>& closest = closest_points[i];
-      closest = closest_face_projection(geometries, face_boxes, faces, candidates, s, x_s);
-      if (!closest && !candidates.empty())
-      {
-        closest = outside_point(geometries, faces, candidates, boundary, s, x_s, options.rim_extension);
-        overhanging[i] = !closest;
-      }
-    }
-  });
-  out.n_overhanging += static_cast<int32_t>(std::ranges::count(overhanging, 1));
+  const std::vector<std::optional<ClosestPoint>> closest_points = closest_points_of(
+      mesh, u, slave_nodes, faces, geometries, out.search_distance, options.rim_extension, out.n_overhanging);
   double smallest_gap = std::numeric_limits<double>::infinity();
   for (const std::optional<ClosestPoint>& closest : closest_points)
     if (closest)
