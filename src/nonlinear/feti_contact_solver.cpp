@@ -951,9 +951,10 @@ IterationOutcome FetiContactSolve::outer_iteration(int k, OuterIteration& it)
   // peak pressure 14 % high). So a step ends only after a QP solved to qp.rtol; if the
   // test passes after a forced one, the next QP, warm-started at the answer, is exact.
   const bool exact_qp = dual_options.rtol <= _settings.dual.rtol;
-  const OuterVerdict verdict = _linear ? linear_verdict(more_rows, it.residual_norm)
-                                       : _convergence.verdict(correction.du_norm, correction.u_norm, correction.du_max,
-                                                              it.residual_norm, active, _previous_active);
+  const OuterVerdict verdict = _linear
+      ? linear_verdict(more_rows, it.residual_norm)
+      : _convergence.verdict(correction.du_norm, correction.u_norm, correction.du_max, it.residual_norm, active,
+                             _previous_active, std::exchange(_previous_residual, it.residual_norm));
   _previous_active = std::move(active);
   if (verdict == OuterVerdict::iterate || !slip_bound_settled || more_rows)
     return IterationOutcome::next();

@@ -34,6 +34,10 @@ TEST(OuterConvergence, RoundOffCorrectionIsNoShortcutPastTheResidual)
   EXPECT_EQ(test.verdict(1e-12, 1.0, 1e-12, 0.9, active, active), OuterVerdict::floor);
   // A correction above round-off never stops at the floor.
   EXPECT_EQ(test.verdict(1e-6, 1.0, 3e-9, 0.9, active, active), OuterVerdict::iterate);
+  // Nor does a residual that still at least halved since the iteration before (modified
+  // Newton on K_0, contracting linearly: its corrections fall below 1e-9 L first).
+  EXPECT_EQ(test.verdict(1e-12, 1.0, 1e-12, 0.9, active, active, 2.0), OuterVerdict::iterate);
+  EXPECT_EQ(test.verdict(1e-12, 1.0, 1e-12, 0.9, active, active, 1.0), OuterVerdict::floor);
 }
 } // namespace
 } // namespace feticon::nonlinear
