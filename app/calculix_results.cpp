@@ -175,18 +175,8 @@ PointResults point_results(const fem::Problem& p, const la::Vector& u, const la:
   Eigen::VectorXd dT;
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
   {
-    const std::span<const int32_t> cell = mesh.cells[c];
     const fem::Material& material = p.materials[mesh.cell_body[c]];
-    X.resize(static_cast<Eigen::Index>(cell.size()), 3);
-    ue.resize(X.rows(), 3);
-    dT.setZero(X.rows());
-    for (size_t a = 0; a < cell.size(); ++a)
-    {
-      X.row(a) = mesh.nodes.row(cell[a]);
-      ue.row(a) = u.segment<3>(3 * cell[a]).transpose();
-      if (thermal)
-        dT(a) = temperature_change(cell[a]);
-    }
+    fem::gather_cell(mesh, c, u, temperature_change, X, ue, dT);
     const fem::CellPointResults r =
         rule_point_results(mesh, c, X, ue, material, kinematics, thermal ? &dT : nullptr, plastic.of(c));
     Eigen::Matrix<double, 6, 1> s = Eigen::Matrix<double, 6, 1>::Zero(), e = s;

@@ -7,6 +7,22 @@
 
 namespace feticon::fem
 {
+void gather_cell(const mesh::Mesh& mesh, int32_t c, const la::Vector& u, const la::Vector& temperature_change,
+                 Eigen::MatrixX3d& X, Eigen::MatrixX3d& u_cell, Eigen::VectorXd& dT)
+{
+  const std::span<const int32_t> cell = mesh.cells[c];
+  X.resize(static_cast<Eigen::Index>(cell.size()), 3);
+  u_cell.resize(X.rows(), 3);
+  dT.setZero(X.rows());
+  for (size_t a = 0; a < cell.size(); ++a)
+  {
+    X.row(a) = mesh.nodes.row(cell[a]);
+    u_cell.row(a) = u.segment<3>(3 * cell[a]).transpose();
+    if (temperature_change.size() > 0)
+      dT(a) = temperature_change(cell[a]);
+  }
+}
+
 std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& mesh, const la::Vector& u,
                                                               const std::vector<Material>& body_materials,
                                                               Kinematics kinematics,
@@ -28,17 +44,7 @@ std::vector<Eigen::Matrix<double, 6, 1>> cell_cauchy_stresses(const mesh::Mesh& 
       const std::span<const PlasticPointState> states = plastic ? plastic->of(c) : std::span<const PlasticPointState>{};
       if (type != mesh::CellKind::hex8 || !states.empty() || body_materials[mesh.cell_body[c]].is_hyperelastic())
       {
-        const std::span<const int32_t> cell = mesh.cells[c];
-        X_any.resize(static_cast<Eigen::Index>(cell.size()), 3);
-        u_any.resize(X_any.rows(), 3);
-        dT_any.setZero(X_any.rows());
-        for (size_t a = 0; a < cell.size(); ++a)
-        {
-          X_any.row(a) = mesh.nodes.row(cell[a]);
-          u_any.row(a) = u.segment<3>(3 * cell[a]).transpose();
-          if (thermal)
-            dT_any(a) = temperature_change(cell[a]);
-        }
+        gather_cell(mesh, c, u, temperature_change, X_any, u_any, dT_any);
         stresses[c] = cell_cauchy_stress(type, X_any, u_any, body_materials[mesh.cell_body[c]], kinematics, c,
                                          mesh.reduced(c) ? Integration::reduced : Integration::full,
                                          thermal ? &dT_any : nullptr, states, mesh.planar_of_cell(c));

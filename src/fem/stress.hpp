@@ -10,6 +10,12 @@
 
 namespace feticon::fem
 {
+/// Cell c's node coordinates X and displacements u_cell (one row per node) and, where
+/// `temperature_change` (per mesh node) is not empty, its nodes' temperature changes dT (else
+/// zeros), from mesh-wide vectors (u: 3 DOFs per mesh node).
+void gather_cell(const mesh::Mesh& mesh, int32_t c, const la::Vector& u, const la::Vector& temperature_change,
+                 Eigen::MatrixX3d& X, Eigen::MatrixX3d& u_cell, Eigen::VectorXd& dT);
+
 /// Volume-averaged Cauchy stress of every cell (Pa), Voigt [11,22,33,12,23,31].
 /// @param u global displacement (3 DOFs per mesh node)
 /// @param temperature_change T - T_0 per mesh node (K); empty: none

@@ -146,22 +146,13 @@ PY
 # A load that trades its amplitude for the ramp between steps: one line.
 sed 's/{set: block_zmax, traction: \[0, 0, -2e6\], amplitude: later}/{set: block_zmax, traction: [0, 0, -2e6]}/' \
   "$work/block.yaml" >"$work/switch.yaml"
-if "$feticon" export "$work/switch.yaml" --format calculix -o "$work/switch" 2>"$work/err.txt" >/dev/null; then
-  echo "a load switching from an amplitude to the ramp was exported"
-  exit 1
-fi
-[ "$(wc -l <"$work/err.txt")" -eq 1 ]
-grep -q "calculix export: step 2: node [0-9]*, direction 3 is loaded without amplitude, in step 1 with" "$work/err.txt"
-echo "bad input: $(cat "$work/err.txt")"
+source "$src/tests/tools/expect_deck_error.sh"
+expect_export_error "$work/switch.yaml" switch \
+  "calculix export: step 2: node [0-9]*, direction 3 is loaded without amplitude, in step 1 with"
 # Loads of two groups on one node direction (the top's traction follows an amplitude, a shear on
 # the side without one shares the top edge's nodes in z): one line, which a deck cannot say.
 sed 's/^  - loads: \[{set: block_zmax, traction: \[0, 0, -4e6\], amplitude: updown}\]$/  - loads: [{set: block_zmax, traction: [0, 0, -4e6], amplitude: updown}, {set: block_xmax, traction: [0, 0, -1e5]}]/' \
   "$work/block.yaml" >"$work/two_groups.yaml"
 grep -q 'block_xmax, traction: \[0, 0, -1e5\]' "$work/two_groups.yaml"
-if "$feticon" export "$work/two_groups.yaml" --format calculix -o "$work/two_groups" 2>"$work/err2.txt" >/dev/null; then
-  echo "a node direction loaded by two amplitude groups was exported"
-  exit 1
-fi
-[ "$(wc -l <"$work/err2.txt")" -eq 1 ]
-grep -q "calculix export: step 1: node [0-9]*, direction 3 is loaded by loads of two amplitudes" "$work/err2.txt"
-echo "bad input: $(cat "$work/err2.txt")"
+expect_export_error "$work/two_groups.yaml" two_groups \
+  "calculix export: step 1: node [0-9]*, direction 3 is loaded by loads of two amplitudes"
