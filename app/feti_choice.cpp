@@ -148,8 +148,13 @@ void choose_count(const io::Settings& settings, const ModelSize& size, const Mem
     out.subdomains_reason = "given";
     return;
   }
-  const double dofs = 3.0 * static_cast<double>(size.nodes);
-  const double target = size.plane_strain ? auto_subdomain_dofs_plane_strain : auto_subdomain_dofs_3d;
+  // 2D cells' factors fill less than the hex layer's at the same node count: their own target,
+  // measured on the 2D Hertz (docs/benchmarks.md: 2 subdomains fastest at 6 306 and 10 080 DOFs,
+  // 4 to 8 at 16 392, 4 to 16 within 2.5 % at 27 592).
+  const double dofs = (size.planar_cells ? 2.0 : 3.0) * static_cast<double>(size.nodes);
+  const double target = size.planar_cells ? auto_subdomain_dofs_planar_cells
+      : size.plane_strain                 ? auto_subdomain_dofs_plane_strain
+                                          : auto_subdomain_dofs_3d;
   const int64_t cap = size.cells > 0 ? size.cells : std::max<int64_t>(1, size.nodes);
   auto clamp = [&](double n) {
     return static_cast<int>(std::min<double>(static_cast<double>(cap), std::max({n, 1.0 * size.bodies, 1.0 * ranks})));
@@ -161,9 +166,10 @@ void choose_count(const io::Settings& settings, const ModelSize& size, const Mem
   out.subdomains_reason = size.mesh_nodes > 0
       ? format("%.0f DOFs, counted as %.0f for hex20's denser factors, at about %.0f DOFs a subdomain",
                3.0 * static_cast<double>(size.mesh_nodes), dofs, target)
+      : size.planar_cells ? format("%.0f DOFs of 2D cells at about %.0f DOFs a subdomain", dofs, target)
       : size.plane_strain
-      ? format("%.0f nodes, %.0f units at 3 a node (the rule's unit, measured on the plane-strain layer; it "
-               "holds for 2D cells, which have 2 DOFs a node: docs/benchmarks.md), at about %.0f a subdomain",
+      ? format("%.0f nodes, %.0f units at 3 a node (the rule's unit, measured on the plane-strain layer), at "
+               "about %.0f a subdomain",
                static_cast<double>(size.nodes), dofs, target)
       : format("%.0f DOFs at about %.0f DOFs a subdomain", dofs, target);
   if (n == cap && n < dofs / target)
@@ -244,9 +250,9 @@ ModelSize model_size(const fem::Problem& problem)
           0,
           quadratic,
           counted != problem.mesh.n_nodes() ? problem.mesh.n_nodes() : 0,
-          problem.eliminated[2] || nonlinear::SolverSettings().has_friction(problem)
-              ? 0
-              : slender_subdomains(problem.mesh)};
+          problem.eliminated[2] || nonlinear::SolverSettings().has_friction(problem) ? 0
+                                                                                     : slender_subdomains(problem.mesh),
+          problem.mesh.dofs_per_node() == 2};
 }
 
 FetiChoice choose_feti(const io::Settings& settings, const ModelSize& size, const MemoryBudget& budget, int ranks)

@@ -47,6 +47,7 @@ struct ModelSize
   int64_t mesh_nodes = 0; ///< the mesh's own node count where it differs from `nodes` (hex20)
   /// 3D: the subdomains that cut every slender body (slender_subdomains) into pieces; 0: none.
   int64_t slender_pieces = 0;
+  bool planar_cells = false; ///< 2D cells (plane or axisymmetric): 2 DOFs a node
 };
 
 /// A 3D body is slender when its bounding box is over `slender_aspect` times longer than thick
@@ -101,8 +102,10 @@ inline FactorStorage factor_storage(const FetiChoice& feti)
 /// The size of `problem`'s mesh as the choice sees it.
 ModelSize model_size(const fem::Problem& problem);
 
-/// DOFs per subdomain that `subdomains = auto` aims at (plane strain, 3D).
+/// DOFs per subdomain that `subdomains = auto` aims at (the plane-strain hex layer in units
+/// of 3 a node, 2D cells, 3D).
 constexpr double auto_subdomain_dofs_plane_strain = 3000;
+constexpr double auto_subdomain_dofs_planar_cells = 4000;
 constexpr double auto_subdomain_dofs_3d = 10000;
 /// The smallest subdomains auto raises the count to for memory: below them a subdomain's
 /// factor hardly shrinks (the fixed bytes per DOF dominate) while the steps keep growing.

@@ -15,12 +15,14 @@ for k in sys.argv[2].split('.'): d=d[k]
 print(d)" "$1/summary.json" "$2"; }
 fail() { echo "auto_settings: $*"; exit 1; }
 
-# 1. Plane strain (the default Hertz problem): Dirichlet, the power of two nearest DOFs / 3000.
-run --output "$work/hertz" --set hertz.refinement=0.5
+# 1. Plane strain (the default Hertz problem, 2D cells): Dirichlet, the power of two nearest
+# DOFs / 4000; at 120 elements across 2a (6 306 DOFs) that is 2, where the hex layer's rule
+# (3 units a node / 3000) gave 4.
+run --output "$work/hertz" --set hertz.refinement=4.4067
 dofs=$(field "$work/hertz" degrees_of_freedom)
-expected=$(/usr/bin/python3 -c "import math,sys; print(max(2, 2 ** round(math.log2(max(1, int(sys.argv[1]) / 3000)))))" "$dofs") # two bodies at least
+expected=$(/usr/bin/python3 -c "import math,sys; print(max(2, 2 ** round(math.log2(max(1, int(sys.argv[1]) / 4000)))))" "$dofs") # two bodies at least
 [[ $(field "$work/hertz" subdomains) == "$expected" ]] || fail "Hertz: $(field "$work/hertz" subdomains) subdomains, expected $expected for $dofs DOFs"
-[[ $(field "$work/hertz" subdomains_reason) == *"units at 3 a node"*"a subdomain"* ]] || fail "Hertz: reason '$(field "$work/hertz" subdomains_reason)'"
+[[ $(field "$work/hertz" subdomains_reason) == *"DOFs of 2D cells at about 4000 DOFs a subdomain"* ]] || fail "Hertz: reason '$(field "$work/hertz" subdomains_reason)'"
 [[ $(field "$work/hertz" preconditioner.choice) == dirichlet ]] || fail "Hertz: preconditioner $(field "$work/hertz" preconditioner.choice)"
 # problem.yaml keeps the choices, so that a restart decomposes the same way on any machine.
 grep -qx "subdomains: $expected" "$work/hertz/problem.yaml" || fail "problem.yaml: $(grep '^subdomains' "$work/hertz/problem.yaml")"
