@@ -297,6 +297,11 @@ std::string LoadHistory::increment_limit(int step) const
       std::to_string(point(step - 1).load_factor) + ": its increments stayed small (cut back, or slow to converge)";
 }
 
+bool LoadHistory::has_automatic_increments() const
+{
+  return std::ranges::any_of(_stages, [](const Stage& stage) { return stage.automatic.has_value(); });
+}
+
 void LoadHistory::increment_done(int step, int iterations)
 {
   const LoadPoint p = point(step);

@@ -99,8 +99,9 @@ public:
     /// load_steps setting).
     bool default_first = false;
     /// Automatic increments grow after easy ones; false keeps them at their initial size (cut
-    /// back where one fails): friction, whose slip reversals the QP does not yet pass from every
-    /// state (fricloop, docs/usage.md).
+    /// back where one fails): friction on slave nodes tied by equations, whose slip reversals
+    /// the QP does not pass from every state (fricloop, nonlinear::SolverSettings::
+    /// tied_friction_slaves).
     bool grow = true;
   };
   /// @brief The history of `problem` by `rules`.
@@ -162,6 +163,9 @@ public:
   /// step at the midpoint of t_{step-1} and t_step (in the fractions of its stage) comes in
   /// as load step `step`, the old one follows as step + 1, and n_steps() grows by one.
   void split(int step);
+
+  /// Whether some stage has automatic increments (a deck's *STATIC without DIRECT).
+  bool has_automatic_increments() const;
 
   /// @brief Whether load step `step` may be halved: always in a fixed stage, in an automatic one
   /// while half its increment is not below the step's minimum.

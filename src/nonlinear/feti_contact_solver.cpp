@@ -489,6 +489,12 @@ FetiContactSolve::FetiContactSolve(const fem::Problem& problem, const SolverSett
     log::info("step " + std::to_string(stage) +
               " asks for several increments and takes one: with small displacements, elastic bodies and no "
               "friction its answer does not depend on the load path");
+  if (_history.has_automatic_increments())
+    if (const int64_t tied = settings.tied_friction_slaves(problem); tied > 0)
+      log::warning(std::to_string(tied) +
+                   " slave nodes of pairs with friction are tied by equations (*EQUATION, a tie "
+                   "or a coupling), which leaves their normal multipliers undetermined: the automatic increments "
+                   "stay at their initial size (cut back where one fails) instead of growing after easy ones");
   if (!comm.serial())
   {
     for (int32_t s = _decomp->first_owned(); s < _decomp->end_owned(); ++s)

@@ -1,6 +1,7 @@
 #include "nonlinear/solver_settings.hpp"
 
 #include "common/error.hpp"
+#include "contact/contact_constraints.hpp"
 
 #include <algorithm>
 
@@ -107,5 +108,34 @@ bool SolverSettings::has_friction(const fem::Problem& problem) const
       if (interaction(problem, pair, step).friction.model != FrictionModel::none)
         return true;
   return false;
+}
+
+int64_t SolverSettings::tied_friction_slaves(const fem::Problem& problem) const
+{
+  std::vector<char> tied(static_cast<size_t>(problem.mesh.n_nodes()), 0);
+  for (const fem::LinearEquation& equation : problem.equations)
+    for (const fem::LinearEquation::Term& term : equation.terms)
+      tied[term.node] = 1;
+  for (const fem::LinearEquation& row : problem.tie_equations) // the tied (coupled) node first
+    if (!row.terms.empty())
+      tied[row.terms.front().node] = 1;
+  std::vector<char> counted(tied.size(), 0);
+  int64_t count = 0;
+  for (int32_t p = 0; p < std::ssize(problem.contacts); ++p)
+  {
+    bool friction = false;
+    for (size_t step = 0; step < problem.steps.size(); ++step)
+      friction = friction || interaction(problem, p, step).friction.model != FrictionModel::none;
+    if (!friction)
+      continue;
+    const fem::ContactPairNames& pair = problem.contacts[p];
+    for (const int32_t node : contact::slave_nodes(problem.mesh, {pair.slave, pair.master, pair.slave_nodes}))
+      if (tied[node] && !counted[node])
+      {
+        counted[node] = 1;
+        ++count;
+      }
+  }
+  return count;
 }
 } // namespace feticon::nonlinear

@@ -113,7 +113,7 @@ struct SolverSettings
                                                       : load_steps,
                              .one_step_per_stage = linear && !friction,
                              .default_first = !auto_load_steps,
-                             .grow = !friction});
+                             .grow = !friction || tied_friction_slaves(problem) == 0});
   }
   /// Load steps of the whole run on `problem` (load_history(problem).n_steps()).
   int steps(const fem::Problem& problem) const { return load_history(problem).n_steps(); }
@@ -200,5 +200,12 @@ struct SolverSettings
   fem::ContactInteraction interaction(const fem::Problem& problem, int32_t pair, size_t step) const;
   /// Whether a pair of `problem` is solved with friction in some step.
   bool has_friction(const fem::Problem& problem) const;
+  /// Slave nodes of pairs with friction that a linear equation ties to other nodes (any term of
+  /// an *EQUATION, the slave of a tie or coupling row). Their normal rows are then linearly
+  /// dependent on those rows (fricloop: four slave nodes tied to one z), which leaves the
+  /// normal multipliers, and with them the friction bounds, undetermined: the increments of such
+  /// a model do not grow (load_history), since the QP does not pass slip reversals from every
+  /// state that grown increments reach (docs/usage.md, "Automatic increments").
+  int64_t tied_friction_slaves(const fem::Problem& problem) const;
 };
 } // namespace feticon::nonlinear

@@ -11,6 +11,7 @@
 # 3. Bad input: minimum above the initial increment, in a deck and in a problem file; *STEP, INC=
 #    (CalculiX's maximum count of increments, default 100) below the increments the step takes,
 #    and INC=0: one line each.
+# 4. Friction: the increments grow, but not where slave nodes are tied by equations (below).
 # Usage: automatic_increments.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -76,6 +77,50 @@ assert len(fixed["steps"]) == 5
 a, b = automatic["contact"]["total_normal_force"], fixed["contact"]["total_normal_force"]
 assert abs(a - b) <= 1e-6 * abs(b), (a, b)
 print(f"problem file: increments {[round(t, 4) for t in taken]}, force {a:.12g} N; 5 fixed: {b:.12g} N")
+PY
+
+# 4. Friction (tests/data/calculix/change_friction.inp: a block pressed with 100 N onto a base and
+#    pushed along x, Coulomb mu = 0.3, then 0.1) with step 2 at *STATIC 0.1, 1.: its increments
+#    grow by the rule; with an *EQUATION that ties two slave nodes' z (their normal rows then
+#    depend on it, and the normal multipliers are not unique: fricloop) they stay at 0.1, with
+#    one warning. Reference for both: the block slides, so the top nodes' reaction along x is
+#    mu N = 30 N and 10 N (to 1e-3, as tests/cli/deck_change_friction.sh).
+/usr/bin/python3 - "$src/tests/data/calculix/change_friction.inp" "$work" <<'PY'
+import sys
+deck, work = sys.argv[1:]
+first, step1, step2, step3 = open(deck).read().split("*STEP\n*STATIC\n")
+grown = first + "*STEP\n*STATIC\n" + step1 + "*STEP\n*STATIC\n0.1, 1.\n" + step2 + "*STEP\n*STATIC\n" + step3
+open(f"{work}/friction.inp", "w").write(grown)
+at = grown.index("*STEP")
+open(f"{work}/tied.inp", "w").write(grown[:at] + "*EQUATION\n2\n1001,3,1.,1002,3,-1.\n" + grown[at:])
+PY
+for deck in friction tied; do
+  "$feticon" run "$work/$deck.inp" --output "$work/$deck" "${settings[@]}" >"$work/$deck.log" 2>&1 || { cat "$work/$deck.log"; exit 1; }
+done
+grep -q "2 slave nodes of pairs with friction are tied by equations" "$work/tied.log" || { cat "$work/tied.log"; exit 1; }
+if grep -q "tied by equations" "$work/friction.log"; then echo "friction: a warning about tied slave nodes"; exit 1; fi
+/usr/bin/python3 - "$work" <<'PY'
+import json
+import sys
+
+import increment_rule
+from calculix_dat import parse_dat
+
+work = sys.argv[1]
+for deck in ("friction", "tied"):
+    summary = json.load(open(f"{work}/{deck}/summary.json"))
+    assert summary["converged"], deck
+    steps = [s for s in summary["steps"] if 1 < s["load_factor"] <= 2 + 1e-12]
+    if deck == "friction":
+        taken = increment_rule.check(steps, 1.0, 0.1, 1e-5, 1.0)
+        assert len(taken) < 10, taken
+    else:
+        taken = [s["load_factor"] - 1 for s in steps]
+        assert all(abs(t - 0.1 * k) <= 1e-12 for t, k in zip(taken, range(1, 11))) and len(taken) == 10, taken
+    totals = [b for b in parse_dat(f"{work}/{deck}/{deck}.dat")["blocks"] if b["kind"] == "total force"]
+    fx = [b["rows"][0][0] for b in totals]  # one block an increment: step 2's last, then step 3's
+    assert len(fx) == len(taken) + 2 and abs(fx[-2] - 30) <= 0.03 and abs(fx[-1] - 10) <= 0.01, fx
+    print(f"{deck}: step 2 in {len(taken)} increments {[round(t, 4) for t in taken]}; reactions {fx[-2]:.6g}, {fx[-1]:.6g} N")
 PY
 
 source "$src/tests/tools/expect_deck_error.sh" # expect_error NAME PATTERN
