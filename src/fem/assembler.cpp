@@ -162,16 +162,11 @@ Assembler::Assembler(const mesh::Mesh& mesh, AssemblyDomain domain, std::vector<
   {
     const int32_t c = _domain.cells[k];
     const size_t points = plastic_points(mesh, _materials, c);
-    // Simo's finite-strain J2 (fem/finite_j2_plasticity.hpp) has no thermal strain and hardens
-    // isotropically.
+    // Simo's finite-strain J2 (fem/finite_j2_plasticity.hpp) has no thermal strain.
     FETICON_CHECK(points == 0 || kinematics == Kinematics::linear || _materials[mesh.cell_body[c]].expansion == 0,
                   "body '" << body_name(static_cast<size_t>(mesh.cell_body[c]))
                            << "' is plastic and expands with temperature: thermal strain in J2 plasticity is "
                               "implemented at small strain only (displacements = small, no NLGEOM)");
-    FETICON_CHECK(points == 0 || kinematics == Kinematics::linear || !_materials[mesh.cell_body[c]].plastic.kinematic,
-                  "body '" << body_name(static_cast<size_t>(mesh.cell_body[c]))
-                           << "' hardens kinematically: kinematic hardening is implemented at small strain only "
-                              "(displacements = small, no NLGEOM)");
     _plastic_offset.push_back(_plastic_offset.back() + static_cast<int64_t>(points));
   }
   for (size_t b = 0; b < _materials.size(); ++b)

@@ -16,6 +16,54 @@ struct Yielded
   Voigt direction = Voigt::Zero(); ///< the trial deviator's, plain shears, unit in the Voigt contraction
 };
 
+/// |X|_C = sqrt(tr((X C)^2)): the norm of the push-forward of a reference-configuration tensor.
+double pushed_norm(const Eigen::Matrix3d& X, const Eigen::Matrix3d& C)
+{
+  const Eigen::Matrix3d XC = X * C;
+  return std::sqrt(std::max(0.0, (XC * XC).trace()));
+}
+
+/// The update of a kinematically hardening point (file comment), from the trial deviator S_tr.
+J2Update kinematic_update(const Material& material, const PlasticPointState& committed, const Eigen::Matrix3d& C,
+                          const Eigen::Matrix3d& Ci, double J, const Eigen::Matrix3d& S_tr, double Ie, Yielded* yielded)
+{
+  const double mu = material.lame_mu(), bulk = material.young / (3 * (1 - 2 * material.poisson));
+  const double j23 = std::cbrt(J * J);
+  const Eigen::Matrix3d beta_iso = tensor_of(committed.back_stress) / j23;
+  const double beta_trace = C.cwiseProduct(beta_iso).sum() / 3;
+  const Eigen::Matrix3d xi = S_tr - (beta_iso - beta_trace * Ci);
+  const double q = std::sqrt(1.5) * pushed_norm(xi, C);
+  const YieldCurve& curve = material.plastic;
+  const double eqps = committed.equivalent_plastic_strain;
+  J2Update out{Voigt::Zero(), committed, false};
+  Eigen::Matrix3d S_dev = S_tr;
+  if (q > J * curve.stress.front() * (1 + 1e-10))
+  {
+    const double mu_bar = mu * Ie - beta_trace, scale = J * mu_bar / mu;
+    FETICON_CHECK(mu_bar > 0,
+                  "a kinematically hardening point's back stress exceeds its shear stiffness (mu_bar = " << mu_bar
+                                                                                                         << " Pa)");
+    // q - 3 mu_bar d = J sigma_y(0) + scale (sigma_y(eqps + d) - sigma_y(eqps)), as plastic_increment solves it.
+    const double d =
+        plastic_increment(curve, mu_bar, q - J * curve.stress.front() + scale * curve.yield_stress(eqps), eqps, scale);
+    const double rise = scale * (curve.yield_stress(eqps + d) - curve.yield_stress(eqps));
+    if (yielded)
+    {
+      const double theta = 1 - 3 * mu_bar * d / q;
+      const Voigt n = voigt_of(xi);
+      *yielded = {mu_bar, theta, 1 / (1 + scale * curve.hardening(eqps + d) / (3 * mu_bar)) - (1 - theta),
+                  n / std::sqrt(n.head<3>().squaredNorm() + 2 * n.tail<3>().squaredNorm())};
+    }
+    S_dev -= 3 * mu_bar * d / q * xi;
+    out.plastic = true;
+    out.state.equivalent_plastic_strain = eqps + d;
+    out.state.plastic_strain -= voigt_of(3 * mu_bar * d / (mu * q) * j23 * xi);
+    out.state.back_stress += voigt_of(rise / q * j23 * xi);
+  }
+  out.stress = voigt_of(bulk * (J * J - 1) / 2 * Ci + S_dev);
+  return out;
+}
+
 /// The update without the tangent (file comment).
 J2Update update(const Material& material, const Voigt& strain, const PlasticPointState& committed,
                 Yielded* yielded = nullptr)
@@ -29,6 +77,8 @@ J2Update update(const Material& material, const Voigt& strain, const PlasticPoin
   const Eigen::Matrix3d Cb = (Eigen::Matrix3d::Identity() + tensor_of(committed.plastic_strain)) / j23;
   const double Ie = (C.cwiseProduct(Cb)).sum() / 3;
   Eigen::Matrix3d S_dev = mu * (Cb - Ie * Ci);
+  if (material.plastic.kinematic)
+    return kinematic_update(material, committed, C, Ci, J, S_dev, Ie, yielded);
   const Eigen::Matrix3d SC = S_dev * C;
   const double q = std::sqrt(1.5 * std::max(0.0, (SC * SC).trace()));
   const double eqps = committed.equivalent_plastic_strain;

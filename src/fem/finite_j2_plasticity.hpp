@@ -15,6 +15,19 @@
 /// S_dev = (1 - 3 mu_bar d / q) S_tr and the state C_p^-1 = J^(2/3) (S_dev / mu + I_e C^-1).
 /// S = K (J^2 - 1) / 2 C^-1 + S_dev, with mu and K of *ELASTIC's E and nu.
 ///
+/// Kinematic hardening (YieldCurve::kinematic; incplas.f with the table as its kinematic curve):
+/// the state adds the back stress beta (PlasticPointState::back_stress, pulled back, 0 at first),
+/// which enters as its isochoric deviator beta_b = J^(-2/3) beta - (C : J^(-2/3) beta / 3) C^-1;
+/// the radius stays J sigma_y(0) and the point yields where q of xi = S_tr - beta_b exceeds it,
+/// with mu_bar = mu I_e - C : J^(-2/3) beta / 3; the increment d solves q - 3 mu_bar d =
+/// J sigma_y(0) + s (sigma_y(eqps + d) - sigma_y(eqps)), s = J mu_bar / mu, and then
+/// S_dev = S_tr - (3 mu_bar d / q) xi, C_p^-1 -= 3 mu_bar d / (mu q) J^(2/3) xi and
+/// beta += s (sigma_y(eqps + d) - sigma_y(eqps)) / q J^(2/3) xi. That is incplas.f's update, but
+/// for the back stress's step: incplas.f takes the slope at the end of the increment times d,
+/// which equals the table's rise within one segment and not across a breakpoint (there its back
+/// stress moves less than its own yield condition assumed; docs/materials.md). At small strain
+/// this is the small-strain kinematic return (fem/j2_plasticity.hpp).
+///
 /// The stored state (PlasticPointState::plastic_strain) is C_p^-1 - I with plain shears. The
 /// tangent dS/dE is taken by central differences of the update (step 1e-6 in each strain
 /// component: truncation 1e-12, round-off 1e-10 of the stress scale) and symmetrized (the exact

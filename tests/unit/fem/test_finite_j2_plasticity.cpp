@@ -1,8 +1,11 @@
 /// Tests of finite-strain J2 plasticity (fem/finite_j2_plasticity.hpp). References: the
 /// small-strain radial return (fem/j2_plasticity.hpp), which the model tends to as the strain
 /// goes to zero; the model's own invariant (a returned state lies on the yield surface); the
-/// tangent against central differences of the stress.
-/// The whole model against CalculiX 2.20 at 50 % stretch: tests/cli/plasticity_nlgeom.sh.
+/// tangent against central differences of the stress. Kinematic hardening likewise: its
+/// small-strain limit is the small-strain kinematic return, and a returned state lies on the
+/// moved yield surface.
+/// The whole model against CalculiX 2.20 at 50 % stretch: tests/cli/plasticity_nlgeom.sh; the
+/// kinematic one over a tension-compression cycle: tests/cli/plasticity_kinematic.sh.
 
 #include "fem/finite_j2_plasticity.hpp"
 
@@ -17,6 +20,13 @@ Material steel()
   Material m{210000., 0.3};
   m.plastic.stress = {250., 450.};
   m.plastic.plastic_strain = {0., 0.5};
+  return m;
+}
+
+Material kinematic_steel()
+{
+  Material m = steel();
+  m.plastic.kinematic = true;
   return m;
 }
 } // namespace
@@ -74,6 +84,43 @@ TEST(FiniteJ2, TangentIsTheStressDerivativeOrPositive)
       }
       EXPECT_LT((tangent - differences).norm(), 1e-6 * tangent.norm()) << e;
     }
+  }
+}
+
+TEST(FiniteJ2, KinematicSmallStrainsGiveTheSmallStrainReturn)
+{
+  // From a state yielded in tension, a strain reversed past the reversed yield (the back stress
+  // at work): S, eqps and the back stress within O(strain) of the small-strain return's.
+  const Voigt load = (Voigt() << 4e-3, -2e-3, -2e-3, 0, 0, 0).finished();
+  const Voigt reverse = (Voigt() << -1e-3, 0.5e-3, 0.5e-3, 1e-4, 0, 0).finished();
+  const J2Update small_1 = j2_return(kinematic_steel(), load, 0, {});
+  const J2Update finite_1 = finite_j2_return(kinematic_steel(), load, {});
+  ASSERT_TRUE(small_1.plastic && finite_1.plastic);
+  EXPECT_LT((finite_1.state.back_stress - small_1.state.back_stress).norm(), 2e-2 * small_1.state.back_stress.norm());
+  const J2Update small_2 = j2_return(kinematic_steel(), reverse, 0, small_1.state);
+  const J2Update finite_2 = finite_j2_return(kinematic_steel(), reverse, finite_1.state);
+  ASSERT_TRUE(small_2.plastic && finite_2.plastic);
+  EXPECT_LT((finite_2.stress - small_2.stress).norm(), 2e-2 * small_2.stress.norm());
+  EXPECT_NEAR(finite_2.state.equivalent_plastic_strain, small_2.state.equivalent_plastic_strain,
+              2e-2 * small_2.state.equivalent_plastic_strain);
+}
+
+TEST(FiniteJ2, KinematicReturnedStateLiesOnTheMovedYieldSurface)
+{
+  // Loaded, then reversed beyond the reversed yield: from each returned state at the same strain
+  // the point is elastic with the same stress.
+  const Voigt load = (Voigt() << 0.3, -0.1, -0.12, 0.05, 0.02, -0.04).finished();
+  const Voigt reverse = (Voigt() << -0.1, 0.05, 0.04, -0.02, 0.01, 0.03).finished();
+  PlasticPointState state;
+  for (const Voigt& strain : {load, reverse})
+  {
+    const J2Update update = finite_j2_return(kinematic_steel(), strain, state);
+    ASSERT_TRUE(update.plastic);
+    EXPECT_GT((update.state.back_stress - state.back_stress).norm(), 0) << "the centre moves";
+    const J2Update again = finite_j2_return(kinematic_steel(), strain, update.state);
+    EXPECT_FALSE(again.plastic);
+    EXPECT_LT((again.stress - update.stress).norm(), 1e-9 * update.stress.norm());
+    state = update.state;
   }
 }
 } // namespace feticon::fem
