@@ -188,6 +188,7 @@ expect "index out of range" "index" -- "$(variant 's/x/x/' plain)" --set loads.5
 expect "mesh too coarse for the subdomains" "subdomains" -- "$(variant 's/x/x/' plain2)" --set subdomains=500
 expect "QP iteration limit" "converge\|iteration" -- --set qp.max_iterations=3 --set hertz.refinement=0.5
 expect "negative QP force tolerance" "qp.force_rtol = -1 is out of range" -- --set qp.force_rtol=-1
+expect "SMALBE rho growth below 1" "smalbe.rho_growth = 0.5 is out of range" -- --set smalbe.rho_growth=0.5
 
 # Input decks (CalculiX's contactenergy.inp mutated): each a line naming file, line and keyword.
 deck_variant() { sed "$1" "$src_dir/tests/data/calculix/contactenergy.inp" > "$work/$2.inp"; echo "$work/$2.inp"; }
