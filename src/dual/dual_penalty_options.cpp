@@ -13,7 +13,7 @@ DualPenaltyOptions::DualPenaltyOptions(const io::Settings& s)
   rho = method == DualMethod::dual_penalty && !s.given("rho") ? 1e3 : s.number("rho");
   smalbe_M0 = s.number("smalbe.M0");
   smalbe_beta = s.number("smalbe.beta");
-  smalbe_rho_growth = s.number("smalbe.rho_growth");
+  smalbe_rho_growth = s.is_auto("smalbe.rho_growth") ? 0.0 : s.number("smalbe.rho_growth");
   rtol = s.number("qp.rtol");
   force_rtol = s.number("qp.force_rtol");
   max_iterations = s.integer("qp.max_iterations");

@@ -101,7 +101,8 @@ qp::SmalbeOptions smalbe_options(const FetiOperators& feti, const CoarseProjecto
   smalbe.rho = options.rho;
   smalbe.M0 = options.smalbe_M0;
   smalbe.beta = options.smalbe_beta;
-  smalbe.rho_growth = options.smalbe_rho_growth;
+  if (options.smalbe_rho_growth > 0) // else auto: the contact solver sets it; SmalbeOptions' own here
+    smalbe.rho_growth = options.smalbe_rho_growth;
   smalbe.max_inner_iterations = options.max_iterations;
   smalbe.mprgp = mprgp;
   if (options.feasibility_tolerance > 0)

@@ -65,7 +65,8 @@ struct DualPenaltyOptions
   qp::MprgpExpansion expansion; ///< MPRGP's expansion step
   double smalbe_M0;             ///< SMALBE-M initial M (scaled units)
   double smalbe_beta;           ///< SMALBE-M: M <- M / beta when L increases too little
-  double smalbe_rho_growth;     ///< SMALBE-M: the least factor of a rho update
+  /// SMALBE-M: the least factor of a rho update; 0: auto (the contact solver's rule)
+  double smalbe_rho_growth;
   /// If > 0: after the solve, this many preconditioned CG steps on the face of the solution
   /// measure the spectrum of M H there (QpCounters::solution_face): a diagnostic of the
   /// preconditioner, longer than the CG runs between MPRGP's restarts.

@@ -76,9 +76,9 @@ std::vector<SettingSpec> make_specs()
        "1000 unless given (its feasibility error falls like 1 / rho)", Type::number, {}, 0, inf, true},
       {"smalbe.M0", "1", "SMALBE-M initial M (scaled units: ||PFP|| = 1)", Type::number, {}, 0, 1e6, true},
       {"smalbe.beta", "2", "SMALBE-M: M <- M / beta when the Lagrangian increases too little", Type::number, {}, 1, 1e6, true},
-      {"smalbe.rho_growth", "10",
-       "SMALBE-M: the least factor rho grows by where ||G lambda - e|| stalls (at most its cube; 1: rho stays)",
-       Type::number, {}, 1, 1e6},
+      {"smalbe.rho_growth", "auto",
+       "SMALBE-M: the least factor rho grows by where ||G lambda - e|| stalls (at most 1000; 1: rho stays), or "
+       "auto: 3 without friction, 10 with (docs/contact.md)", Type::number, {}, 1, 1e6, false, false, true},
       {"eps_n", "100", "primal penalty eps_n as a multiple of max diag K", Type::number, {}, 0, inf, true},
       {"displacements", "large", "large (total Lagrangian, Vondrák et al.'s benchmark) or small (linear elasticity)", Type::text, {"small", "large"}, 0, 0, false},
       {"newton.stiffness", "auto", "FETI outer-loop stiffness: initial (K_0 kept, Vondrák et al.'s "

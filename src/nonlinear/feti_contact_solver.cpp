@@ -1152,6 +1152,12 @@ dual::DualPenaltyOptions FetiContactSolve::qp_options(int k)
   dual::DualPenaltyOptions dual_options = _settings.dual;
   dual_options.schur = _schur.get();
   dual_options.rtol = qp_rtol(k);
+  // rho's least growth at a feasibility stall (smalbe.rho_growth = auto): 3 without friction,
+  // where the stall rule's own estimate then sets rho (the leaf pack at 407k DOFs: rho 3, 1 792
+  // MPRGP steps, against rho 10 and 3 122 with a least growth of 10); 10 with friction, whose QP
+  // stalled at 3 on changefric (docs/contact.md).
+  if (dual_options.smalbe_rho_growth == 0)
+    dual_options.smalbe_rho_growth = _friction ? 10.0 : 3.0;
   // The QP to the accuracy the outer loop asks in force units (qp.force_rtol): where ||b|| is
   // of the order of the load, rtol ||b|| asked about two decades more than the answer shows
   // (docs/benchmarks.md); where the initial gaps make ||b|| many times the load, rtol ||b|| is

@@ -261,10 +261,11 @@ void Smalbe::raise_rho_if_stalled(SolveState& s, int k, double feasibility) cons
   else if (k - s.reference_iteration >= _options.feasibility_window && s.rho < s.rho_max && _options.rho_growth > 1)
   {
     // Observed contraction per outer iteration q ~ 1 - rho s/(h + rho s) (see smalbe.hpp);
-    // rho q/(1 - q) would make it 1/2. Grow by at least rho_growth, at most rho_growth^3.
+    // rho q/(1 - q) would make it 1/2. Grow by at least rho_growth, at most rho_growth_max.
     const double q = std::pow(feasibility / s.reference_feasibility, 1.0 / (k - s.reference_iteration));
     const double wanted = q < 1 ? q / (1 - q) : std::numeric_limits<double>::infinity();
-    const double growth = std::clamp(wanted, _options.rho_growth, std::pow(_options.rho_growth, 3));
+    const double growth =
+        std::clamp(wanted, _options.rho_growth, std::max(_options.rho_growth, _options.rho_growth_max));
     const double new_rho = std::min(s.rho * growth, s.rho_max);
     // From the alpha_bar in use (smaller if MPRGP has halved it); MPRGP still halves
     // alpha_bar whenever an expansion step increases the cost.

@@ -18,8 +18,8 @@
 ///   omega <- omega + rho C x;
 ///   M <- M / beta if L(x, omega) did not increase by at least rho/2 ||Cx||^2;
 ///   if ||Cx|| has not dropped below feasibility_reduction times its reference value within
-///        feasibility_window outer iterations: rho <- rho min(max(q/(1-q), g), g^3), g =
-///        rho_growth, q the observed contraction of ||Cx|| per outer iteration (q/(1-q) is
+///        feasibility_window outer iterations: rho <- rho min(max(q/(1-q), g), g_max), g =
+///        rho_growth, g_max = rho_growth_max, q the observed contraction of ||Cx|| per outer iteration (q/(1-q) is
 ///        the factor that brings the model rate below to 1/2); H and MPRGP's step length
 ///        bound alpha_bar follow the new rho.
 /// Why the rho update: with the bounds active on a face F, the multiplier update is a gradient
@@ -77,9 +77,10 @@ struct SmalbeOptions
   double eta_factor = 0.1; ///< eta = eta_factor ||b||
   int max_outer_iterations = 200;
   int max_inner_iterations = 100000; ///< total MPRGP steps over all outer iterations
-  /// Smallest factor by which rho grows when the feasibility stalls (at most its cube); 1
-  /// disables the update.
+  /// Smallest factor by which rho grows when the feasibility stalls; 1 disables the update.
   double rho_growth = 10.0;
+  /// Largest factor of one update (at least rho_growth).
+  double rho_growth_max = 1000.0;
   /// Stall test: ||Cx|| has not fallen below feasibility_reduction times its reference value
   /// (the value at the last reduction or rho update) within feasibility_window outer iterations.
   double feasibility_reduction = 0.1;

@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <vector>
 
 namespace feticon::qp
@@ -265,6 +267,26 @@ TEST(Smalbe, TakesTheCallersInnerSolver)
   EXPECT_EQ(x, x_default);
   EXPECT_EQ(r.iterations, r_default.iterations);
   EXPECT_EQ(r.rho_updates, r_default.rho_updates);
+}
+
+// The rho update stays within [rho_growth, rho_growth_max] a step (smalbe.hpp's rule): from
+// rho = 1, after u updates rho lies in [3^u, 5^u] for the factors 3 and 5. Reference for the
+// answer: the independent solve (reference_solve), as above.
+TEST(Smalbe, RaisesRhoWithinTheLeastAndLargestGrowth)
+{
+  const Augmented p(make_qp(24, 4, 3));
+  const Reference reference = reference_solve(p.qp);
+  SmalbeOptions o = options(p.rho);
+  o.rho = 1;
+  o.rho_growth = 3;
+  o.rho_growth_max = 5;
+  la::Vector x = la::Vector::Zero(24);
+  const SmalbeReport r = Smalbe(p.Aop, p.C, o).solve(p.qp.b, {p.qp.lower, {}, {}}, x);
+  ASSERT_TRUE(r.converged) << r.reason;
+  ASSERT_GT(r.rho_updates, 0) << "the run should raise rho";
+  EXPECT_GE(r.final_rho, std::pow(3.0, r.rho_updates) * (1 - 1e-12));
+  EXPECT_LE(r.final_rho, std::pow(5.0, r.rho_updates) * (1 + 1e-12));
+  EXPECT_LT((x - reference.x).norm(), 1e-7 * reference.x.norm());
 }
 
 // The caller's own feasibility measure (SmalbeOptions::equality_error): with a loose rtol the
