@@ -122,6 +122,7 @@ std::vector<fem::Coupling> read_couplings(const YAML::Node& list, mesh::Mesh& me
   {
     const YAML::Node c = list[i];
     const std::string key = "couplings." + std::to_string(i);
+    FETICON_CHECK(c.IsMap(), r.source << ": " << key << " must be a map of keys (name, kind, ...)");
     const std::string name = "coupling " + r.text(c["name"], key + ".name");
     FETICON_CHECK(std::ranges::none_of(out, [&](const fem::Coupling& o) { return o.name == name; }),
                   r.source << ": " << key << ".name: a second " << name);

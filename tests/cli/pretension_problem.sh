@@ -12,7 +12,7 @@
 #    answer (1e-8, the QPs' tolerance; measured 1.2e-9);
 #  - bad input, one line each: partner and surface of different node counts, a partner node with no
 #    surface node at its position, a surface paired with itself, a gap on a kinematic coupling, a
-#    force on a pretension section.
+#    force on a pretension section, a coupling that is not a map.
 # Usage: pretension_problem.sh FETICON SOURCE_DIR
 set -euo pipefail
 feticon="$1"
@@ -104,3 +104,6 @@ bad gap_on_kinematic "gap belongs to a pretension coupling" \
   -e 's/^  - {name: preload, kind: pretension.*$/&\n  - {name: tip, kind: kinematic, surface: upper_xmax, reference: [1, 0.5, 7]}/' \
   -e 's/^  - {set: upper_zmax, x: 0, y: 0, z: 0}$/&\n  - {coupling: tip, gap: 0.1}/'
 bad force_on_section "holds a pretension section's tension alone" -e 's/tension: 1e6/force: [1e6, 0, 0]/'
+# A coupling that is not a map (the fuzz driver's mutant 9885, seed 4802: yaml-cpp's own error
+# and exit 2 before).
+bad scalar_coupling "couplings.1 must be a map of keys" -e 's/^supports:$/  - s\nsupports:/'
