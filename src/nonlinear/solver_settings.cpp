@@ -101,12 +101,19 @@ bool SolverSettings::has_nonlinear_law(const fem::Problem& problem) const
   return false;
 }
 
-bool SolverSettings::has_friction(const fem::Problem& problem) const
+bool SolverSettings::has_friction(const fem::Problem& problem, int32_t pair) const
 {
   for (size_t step = 0; step < problem.steps.size(); ++step)
-    for (int32_t pair = 0; pair < std::ssize(problem.contacts); ++pair)
-      if (interaction(problem, pair, step).friction.model != FrictionModel::none)
-        return true;
+    if (interaction(problem, pair, step).friction.model != FrictionModel::none)
+      return true;
+  return false;
+}
+
+bool SolverSettings::has_friction(const fem::Problem& problem) const
+{
+  for (int32_t pair = 0; pair < std::ssize(problem.contacts); ++pair)
+    if (has_friction(problem, pair))
+      return true;
   return false;
 }
 
@@ -123,10 +130,7 @@ int64_t SolverSettings::tied_friction_slaves(const fem::Problem& problem) const
   int64_t count = 0;
   for (int32_t p = 0; p < std::ssize(problem.contacts); ++p)
   {
-    bool friction = false;
-    for (size_t step = 0; step < problem.steps.size(); ++step)
-      friction = friction || interaction(problem, p, step).friction.model != FrictionModel::none;
-    if (!friction)
+    if (!has_friction(problem, p))
       continue;
     const fem::ContactPairNames& pair = problem.contacts[p];
     for (const int32_t node : contact::slave_nodes(problem.mesh, {pair.slave, pair.master, pair.slave_nodes}))

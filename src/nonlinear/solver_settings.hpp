@@ -200,6 +200,8 @@ struct SolverSettings
   fem::ContactInteraction interaction(const fem::Problem& problem, int32_t pair, size_t step) const;
   /// Whether a pair of `problem` is solved with friction in some step.
   bool has_friction(const fem::Problem& problem) const;
+  /// Whether pair `pair` of `problem` is solved with friction in some step.
+  bool has_friction(const fem::Problem& problem, int32_t pair) const;
   /// Slave nodes of pairs with friction that a linear equation ties to other nodes (any term of
   /// an *EQUATION, the slave of a tie or coupling row). Their normal rows are then linearly
   /// dependent on those rows (fricloop: four slave nodes tied to one z), which leaves the

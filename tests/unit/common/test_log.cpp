@@ -14,6 +14,30 @@
 
 using namespace feticon;
 
+namespace
+{
+/// stderr and the log level of one test: warnings printed into `text`, both restored at the end.
+struct CapturedWarnings
+{
+  CapturedWarnings() : level(log::level()), saved(std::cerr.rdbuf(text.rdbuf()))
+  {
+    log::take_warnings(); // whatever earlier tests logged
+    log::set_level(log::Level::warning);
+  }
+  ~CapturedWarnings()
+  {
+    std::cerr.rdbuf(saved);
+    log::set_level(level);
+    log::set_context("");
+  }
+  CapturedWarnings(const CapturedWarnings&) = delete;
+  CapturedWarnings& operator=(const CapturedWarnings&) = delete;
+  std::ostringstream text;
+  log::Level level;
+  std::streambuf* saved;
+};
+} // namespace
+
 TEST(Log, WarningsAreKeptOnceUntilTaken)
 {
   log::take_warnings(); // whatever earlier tests logged
@@ -36,21 +60,14 @@ TEST(Log, WarningsAreKeptOnceUntilTaken)
 // to stderr once when first met and once with its count when the run's warnings are taken.
 TEST(Log, ARepeatedWarningIsWrittenOnceAndCountedOnce)
 {
-  log::take_warnings();
-  const log::Level level = log::level();
-  log::set_level(log::Level::warning);
-  std::ostringstream captured;
-  std::streambuf* saved = std::cerr.rdbuf(captured.rdbuf());
+  CapturedWarnings captured;
   for (int k = 1; k <= 100; ++k)
   {
     log::set_context("load step " + std::to_string(k) + ", outer iteration 1");
     log::warning("rows are dependent");
   }
   const std::vector<std::string> taken = log::take_warnings();
-  std::cerr.rdbuf(saved);
-  log::set_level(level);
-  log::set_context("");
-  EXPECT_EQ(captured.str(),
+  EXPECT_EQ(captured.text.str(),
             "warning: rows are dependent\n"
             "warning: rows are dependent (100 times, first at load step 1, outer iteration 1, "
             "last at load step 100, outer iteration 1)\n");
@@ -62,11 +79,7 @@ TEST(Log, ARepeatedWarningIsWrittenOnceAndCountedOnce)
 // CalculiX's plate, two one-cell bodies taking their kernels from K on the two threads).
 TEST(Log, WarningsFromThreadsStayWholeLines)
 {
-  log::take_warnings();
-  const log::Level level = log::level();
-  log::set_level(log::Level::warning);
-  std::ostringstream captured;
-  std::streambuf* saved = std::cerr.rdbuf(captured.rdbuf());
+  CapturedWarnings captured;
   constexpr int per_thread = 2000;
   std::vector<std::thread> threads;
   for (int t = 0; t < 4; ++t)
@@ -76,10 +89,8 @@ TEST(Log, WarningsFromThreadsStayWholeLines)
     });
   for (std::thread& thread : threads)
     thread.join();
-  std::cerr.rdbuf(saved);
   log::take_warnings();
-  log::set_level(level);
-  std::istringstream lines(captured.str());
+  std::istringstream lines(captured.text.str());
   int count = 0;
   for (std::string line; std::getline(lines, line); ++count)
     ASSERT_TRUE(line.starts_with("warning: thread ") && line.ends_with(std::string(60, 'x')) &&
