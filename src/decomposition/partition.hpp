@@ -24,8 +24,9 @@ struct Partition
 /// parts[i], subdomains of exactly H/h elements per direction).
 Partition partition_structured(const mesh::Mesh& mesh, std::array<int, 3> parts);
 
-/// METIS k-way partition of the cell dual graph (cells adjacent through faces) into
-/// about `n_subdomains` parts, shared among bodies in proportion to their cell counts.
+/// METIS k-way partition of the cell dual graph (cells adjacent through faces, weighed by the
+/// faces' areas: parts compact in space on graded meshes) into about `n_subdomains` parts,
+/// shared among bodies in proportion to their cell counts.
 Partition partition_metis(const mesh::Mesh& mesh, int n_subdomains);
 
 /// Recursive coordinate bisection: each body's cells are halved along the axis of largest

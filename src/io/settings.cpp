@@ -111,7 +111,7 @@ std::vector<SettingSpec> make_specs()
       {"subdomain_cells", "0", "cells per subdomain, (H/h)^3 in 3D or (H/h)^2 for one layer; if > 0 "
                                "it sets the number of subdomains instead of 'subdomains'",
        Type::integer, {}, 0, 1e9, false},
-      {"partitioner", "metis", "metis (k-way, edge cut), rcb (recursive coordinate bisection: box-like "
+      {"partitioner", "metis", "metis (k-way, the cut faces' area least), rcb (recursive coordinate bisection: box-like "
                               "subdomains) or structured (slabs along x)",
        Type::text, {"metis", "rcb", "structured"}, 0, 0, false},
       {"dual.operator", "auto", "F and the Dirichlet preconditioner: implicit (substitutions with the subdomain "

@@ -169,6 +169,41 @@ TEST(Partition, MetisGivesConnectedSubdomainsPerBody)
   EXPECT_THROW(decomposition::partition_metis(m, 1), feticon::Error);
 }
 
+// Reference: geometry. A box 0.5 x 1 x 1 of 32 x 8 x 8 cells graded along x (x = 0.5 t^1.5,
+// t uniform: the cells grow 8.5-fold from x = 0 to 0.5) is halved. Across x the cut is 64
+// faces of 1 m^2 in all; across y, 256 faces of 0.5 m^2. Counting faces (METIS unweighted)
+// takes the x cut at the median cell, x = 0.177, which leaves a slab 5.7 times as wide as it
+// is thick; weighing faces by area takes the y cut: both halves 0.5 x 0.5 x 1, whole along x.
+TEST(Partition, MetisWeighsFacesByAreaAndGivesCompactPartsOnAGradedMesh)
+{
+  mesh::BoxParameters p;
+  p.lengths = Eigen::Vector3d(1, 1, 1);
+  p.nx = 32;
+  p.ny = p.nz = 8;
+  mesh::Mesh m = mesh::generate_box(p);
+  for (int32_t i = 0; i < m.n_nodes(); ++i)
+    m.nodes(i, 0) = 0.5 * std::pow(m.nodes(i, 0), 1.5);
+  const auto partition = decomposition::partition_metis(m, 2);
+  ASSERT_EQ(partition.n_subdomains, 2);
+  for (int32_t s = 0; s < 2; ++s)
+  {
+    double x_lo = 1e300, x_hi = -1e300;
+    int cells = 0;
+    for (int32_t c = 0; c < m.n_cells(); ++c)
+      if (partition.cell_subdomain[c] == s)
+      {
+        ++cells;
+        for (int32_t node : m.cells[c])
+        {
+          x_lo = std::min(x_lo, m.nodes(node, 0));
+          x_hi = std::max(x_hi, m.nodes(node, 0));
+        }
+      }
+    EXPECT_NEAR(x_hi - x_lo, 0.5, 1e-12) << "part " << s << " does not span the graded direction";
+    EXPECT_NEAR(cells, 1024, 0.03 * 1024); // METIS's default imbalance is 3 %
+  }
+}
+
 namespace
 {
 /// Per subdomain: cell count and whether its cells fill the box spanned by their centroids
