@@ -104,9 +104,9 @@ CellFaceGraph cell_face_graph(const mesh::Mesh& mesh)
 /// is the interfaces' area and the subdomains come out compact in space. Measured on graded hex
 /// meshes (docs/benchmarks.md, "METIS weighs faces by area"): a stack of eight bodies, 486k DOFs
 /// in 64 subdomains, 502 -> 163 MPRGP steps; a sphere on a block at 136k DOFs, 412 -> 179;
-/// hertz3d refinement 2, 253 -> 172. The cap of 100 is measured too: without it (the areas'
-/// ratios reach 10^4 on hertz3d) 194, 161 and 248 steps; with 30, 239, 156 and 163; weights
-/// of area^0.5 or area^0.75 did worse on three of the four meshes. Faces within a factor 1.5 of
+/// hertz3d refinement 2, 253 -> 172. The cap of 100 is measured too: without it 194, 161 and
+/// 248 steps; with 30, 239, 156 and 163; weights of area^0.75 did worse on three of the four
+/// meshes (with the leaf pack), of area^0.5 on all four. Faces within a factor 1.5 of
 /// the smallest all weigh 1, so near-uniform meshes keep the partitions they had. On a large
 /// body the cap is lower, so that the weights' sum stays below 2^30: METIS adds them up (over
 /// merged edges while coarsening) in its 32-bit idx_t.
