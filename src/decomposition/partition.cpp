@@ -39,7 +39,7 @@ bool face_graph_connected(const std::vector<idx_t>& xadj, const std::vector<idx_
 struct CellFaceGraph
 {
   std::vector<idx_t> xadj, adjncy;
-  std::vector<double> area; ///< of the face each adjacency crosses
+  std::vector<double> area; ///< of the face each adjacency crosses (where asked for)
 };
 
 /// Area of a face from its corners (a quad's from its diagonals; an edge's length in 2D).
@@ -57,26 +57,30 @@ double face_area(const mesh::Mesh& mesh, const mesh::Face& face)
   }
 }
 
-CellFaceGraph cell_face_graph(const mesh::Mesh& mesh)
+/// With `areas`, also each shared face's area (METIS's weights), computed once per pair of
+/// cells: the sort keeps (corners, 8 cell + local face) and the split of disconnected parts,
+/// which needs no areas, pays nothing for them.
+CellFaceGraph cell_face_graph(const mesh::Mesh& mesh, bool areas = false)
 {
-  std::vector<std::tuple<std::array<int32_t, 4>, int32_t, double>> faces;
+  std::vector<std::pair<std::array<int32_t, 4>, int64_t>> faces;
   for (int32_t c = 0; c < mesh.n_cells(); ++c)
     for (size_t k = 0; k < mesh::cell_type(mesh.cells.kind(c)).faces.size(); ++k)
-    {
-      const mesh::Face face = mesh::cell_face(mesh.cells.kind(c), mesh.cells[c], static_cast<int>(k));
-      faces.emplace_back(mesh::sorted_corners(face), c, face_area(mesh, face));
-    }
+      faces.emplace_back(mesh::sorted_corners(mesh::cell_face(mesh.cells.kind(c), mesh.cells[c], static_cast<int>(k))),
+                         8 * int64_t{c} + static_cast<int64_t>(k));
   std::sort(faces.begin(), faces.end());
   std::vector<std::vector<std::pair<int32_t, double>>> neighbours(mesh.n_cells());
   for (size_t first = 0, last = 0; first < faces.size(); first = last)
   {
-    for (last = first + 1; last < faces.size() && std::get<0>(faces[last]) == std::get<0>(faces[first]);)
+    for (last = first + 1; last < faces.size() && faces[last].first == faces[first].first;)
       ++last;
     if (last - first == 2) // a face of two cells (three or more: a non-manifold face, no neighbours)
     {
-      const double area = std::get<2>(faces[first]);
-      neighbours[std::get<1>(faces[first])].emplace_back(std::get<1>(faces[first + 1]), area);
-      neighbours[std::get<1>(faces[first + 1])].emplace_back(std::get<1>(faces[first]), area);
+      const auto a = static_cast<int32_t>(faces[first].second / 8),
+                 b = static_cast<int32_t>(faces[first + 1].second / 8);
+      const double area =
+          areas ? face_area(mesh, mesh::cell_face(mesh.cells.kind(a), mesh.cells[a], faces[first].second % 8)) : 0.0;
+      neighbours[a].emplace_back(b, area);
+      neighbours[b].emplace_back(a, area);
     }
   }
   CellFaceGraph graph;
@@ -86,7 +90,8 @@ CellFaceGraph cell_face_graph(const mesh::Mesh& mesh)
     for (const auto& [cell, area] : list)
     {
       graph.adjncy.push_back(cell);
-      graph.area.push_back(area);
+      if (areas)
+        graph.area.push_back(area);
     }
     graph.xadj.push_back(static_cast<idx_t>(graph.adjncy.size()));
   }
@@ -309,7 +314,7 @@ Partition partition_structured(const mesh::Mesh& mesh, std::array<int, 3> parts)
 
 Partition partition_metis(const mesh::Mesh& mesh, int n_subdomains)
 {
-  const CellFaceGraph graph = cell_face_graph(mesh);
+  const CellFaceGraph graph = cell_face_graph(mesh, true);
   const std::vector<idx_t>& xadj = graph.xadj;
   const std::vector<idx_t>& adjncy = graph.adjncy;
 
